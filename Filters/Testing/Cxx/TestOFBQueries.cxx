@@ -1,0 +1,193 @@
+// Queries, copies and the point-cloud converter of vtkOFB.
+#include "vtkOFBTestUtilities.h"
+
+#include "vtkIdList.h"
+#include "vtkMath.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkOFBToPolyData.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+using namespace vtkofbtest;
+
+namespace
+{
+vtkSmartPointer<vtkOFB> BunnyOFB(int resolution)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  return bunny ? Build(bunny, resolution) : nullptr;
+}
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, EmptyOFBAnswersNothing)
+{
+  vtkNew<vtkOFB> ofb;
+  const double x[3] = { 0, 0, 0 }, n[3] = { 0, 0, 1 };
+  double y[3];
+  EXPECT_EQ(ofb->GetNumberOfSamples(), 0);
+  EXPECT_EQ(ofb->FindSample(x, n), -1);
+  EXPECT_EQ(ofb->FindClosestSample(x), -1);
+  EXPECT_EQ(ofb->FindClosestSample(x, 1e9), -1);
+  EXPECT_FALSE(ofb->GetSamplePosition(0, y));
+  EXPECT_EQ(ofb->GetSampleAxis(0), -1);
+  EXPECT_EQ(ofb->GetDepthComplexity(), 0);
+  vtkNew<vtkIdList> ids;
+  ids->InsertNextId(7);
+  ofb->FindSamplesInSphere(x, 1e9, ids);
+  EXPECT_EQ(ids->GetNumberOfIds(), 0);
+  std::ostringstream os;
+  ofb->Print(os);
+  EXPECT_NE(os.str().find("NumberOfSamples: 0"), std::string::npos);
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, SphereQueryMatchesBruteForce)
+{
+  vtkSmartPointer<vtkOFB> ofb = BunnyOFB(256);
+  ASSERT_NE(ofb, nullptr);
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  std::vector<double> positions(3 * n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    ASSERT_TRUE(ofb->GetSamplePosition(i, &positions[3 * i]));
+  }
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(7);
+  vtkNew<vtkIdList> ids;
+  for (int q = 0; q < 20; ++q)
+  {
+    // Centre on a random sample, radius 0.5 to 8 cells.
+    random->Next();
+    const vtkIdType c = static_cast<vtkIdType>(random->GetValue() * (n - 1));
+    random->Next();
+    const double radius = (0.5 + 7.5 * random->GetValue()) * ofb->GetCellSize();
+    const double* center = &positions[3 * c];
+    std::set<vtkIdType> expected;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (vtkMath::Distance2BetweenPoints(center, &positions[3 * i]) <= radius * radius)
+      {
+        expected.insert(i);
+      }
+    }
+    ofb->FindSamplesInSphere(center, radius, ids);
+    std::set<vtkIdType> found(ids->begin(), ids->end());
+    EXPECT_EQ(found.size(), static_cast<size_t>(ids->GetNumberOfIds())) << "no id twice";
+    EXPECT_EQ(found, expected) << "query " << q;
+    EXPECT_TRUE(found.count(c));
+    // The closest sample to a sample is itself.
+    EXPECT_EQ(ofb->FindClosestSample(center), c);
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, FindSampleUsesTheGridOfTheNormal)
+{
+  vtkSmartPointer<vtkOFB> ofb = BunnyOFB(256);
+  ASSERT_NE(ofb, nullptr);
+  vtkDataArray* normals = ofb->GetSampleData()->GetNormals();
+  int wrong = 0;
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); i += 97)
+  {
+    double x[3], nrm[3];
+    ofb->GetSamplePosition(i, x);
+    // The grid's own axis as the normal: the sample itself must come back.
+    nrm[0] = nrm[1] = nrm[2] = 0.0;
+    nrm[ofb->GetSampleAxis(i)] = 1.0;
+    wrong += ofb->FindSample(x, nrm) != i;
+    // Moved by a third of a cell along the axis: still found, it is within s.
+    x[ofb->GetSampleAxis(i)] += ofb->GetCellSize() / 3.0;
+    const vtkIdType j = ofb->FindSample(x, nrm);
+    wrong += j < 0 || ofb->GetSampleAxis(j) != ofb->GetSampleAxis(i);
+    (void)normals;
+  }
+  EXPECT_EQ(wrong, 0);
+  // Far from the surface: nothing within one cell.
+  double bounds[6];
+  ofb->GetBounds(bounds);
+  const double outside[3] = { bounds[1] + 10.0, bounds[3] + 10.0, bounds[5] + 10.0 };
+  const double up[3] = { 0, 0, 1 };
+  EXPECT_EQ(ofb->FindSample(outside, up), -1);
+  EXPECT_EQ(ofb->FindClosestSample(outside), -1);
+  const double nan[3] = { std::nan(""), 0, 0 };
+  EXPECT_EQ(ofb->FindClosestSample(nan), -1);
+  EXPECT_EQ(ofb->FindSample(nan, up), -1);
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, ShallowAndDeepCopies)
+{
+  vtkSmartPointer<vtkOFB> ofb = BunnyOFB(128);
+  ASSERT_NE(ofb, nullptr);
+  vtkNew<vtkOFB> shallow;
+  shallow->ShallowCopy(ofb);
+  vtkNew<vtkOFB> deep;
+  deep->DeepCopy(ofb);
+  EXPECT_EQ(shallow->GetNumberOfSamples(), ofb->GetNumberOfSamples());
+  EXPECT_EQ(deep->GetNumberOfSamples(), ofb->GetNumberOfSamples());
+  EXPECT_EQ(shallow->GetDepths(), ofb->GetDepths());
+  EXPECT_NE(deep->GetDepths(), ofb->GetDepths());
+  EXPECT_EQ(deep->GetDepthComplexity(), ofb->GetDepthComplexity());
+  // Painting the deep copy leaves the original alone; the shallow copy shares it.
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetScalars());
+  auto* deepColors = vtkUnsignedCharArray::SafeDownCast(deep->GetSampleData()->GetScalars());
+  auto* shallowColors =
+    vtkUnsignedCharArray::SafeDownCast(shallow->GetSampleData()->GetScalars());
+  ASSERT_NE(colors, nullptr);
+  deepColors->SetValue(0, 17);
+  EXPECT_EQ(colors->GetValue(0), 255);
+  shallowColors->SetValue(0, 42);
+  EXPECT_EQ(colors->GetValue(0), 42);
+  // Memory: at least depth, cell index, colours and normals per sample.
+  EXPECT_GT(ofb->GetBytesPerSample(), 24.0);
+  EXPECT_GT(ofb->GetActualMemorySize(), 0u);
+  // A copy from something that is not an OFB is refused.
+  vtkNew<vtkPolyData> poly;
+  MessageObserver* observer = MessageObserver::New();
+  observer->Watch(deep);
+  deep->ShallowCopy(poly);
+  EXPECT_NE(observer->Errors.find("not a vtkOFB"), std::string::npos);
+  EXPECT_EQ(deep->GetNumberOfSamples(), ofb->GetNumberOfSamples());
+  observer->Delete();
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, PointCloudCarriesEveryArray)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetInputData(bunny);
+  sampler->SetResolution(128);
+  vtkNew<vtkOFBToPolyData> cloud;
+  cloud->SetInputConnection(sampler->GetOutputPort());
+  cloud->GenerateCellIdsOn();
+  cloud->Update();
+  vtkOFB* ofb = sampler->GetOutput();
+  vtkPolyData* out = cloud->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), ofb->GetNumberOfSamples());
+  EXPECT_EQ(out->GetNumberOfVerts(), ofb->GetNumberOfSamples());
+  for (int i = 0; i < ofb->GetSampleData()->GetNumberOfArrays(); ++i)
+  {
+    EXPECT_NE(out->GetPointData()->GetArray(ofb->GetSampleData()->GetArrayName(i)), nullptr);
+  }
+  vtkDataArray* axis = out->GetPointData()->GetArray("GridAxis");
+  ASSERT_NE(axis, nullptr);
+  ASSERT_NE(out->GetPointData()->GetArray("CellIndex"), nullptr);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); i += 13)
+  {
+    double x[3];
+    ofb->GetSamplePosition(i, x);
+    double* y = out->GetPoint(i);
+    EXPECT_DOUBLE_EQ(x[0], y[0]);
+    EXPECT_DOUBLE_EQ(x[2], y[2]);
+    EXPECT_EQ(static_cast<int>(axis->GetTuple1(i)), ofb->GetSampleAxis(i));
+  }
+}

@@ -1,0 +1,395 @@
+// CPU construction: samples on the surface, counts, fill rule, sorting, threads, meshes.
+#include "vtkOFBTestUtilities.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
+#include "vtkMath.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkTriangleFilter.h"
+#include "vtkTypeUInt32Array.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <vector>
+
+using namespace vtkofbtest;
+
+namespace
+{
+/**
+ * Expected number of samples of a sphere of radius r (in cells): each of the six
+ * regions where one normal component dominates projects onto its grid as
+ * {2x^2 + y^2 <= r^2, x^2 + 2y^2 <= r^2}; one sample per unit of projected area.
+ */
+double ExpectedSphereSamples(double r)
+{
+  const int steps = 200000;
+  const double xmax = 1.0 / std::sqrt(2.0);
+  double area = 0.0;
+  for (int i = 0; i < steps; ++i)
+  {
+    const double x = -xmax + (i + 0.5) * (2.0 * xmax / steps);
+    const double y = std::min(std::sqrt(std::max(0.0, 1.0 - 2.0 * x * x)),
+      std::sqrt(std::max(0.0, (1.0 - x * x) / 2.0)));
+    area += 2.0 * y * (2.0 * xmax / steps);
+  }
+  return 6.0 * area * r * r;
+}
+
+/// Random point on the surface, uniform by area.
+struct SurfaceSampler
+{
+  explicit SurfaceSampler(vtkPolyData* mesh)
+    : Mesh(mesh)
+  {
+    double total = 0.0;
+    for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+    {
+      double p[3][3];
+      vtkIdType npts;
+      const vtkIdType* ids;
+      mesh->GetCellPoints(c, npts, ids);
+      for (int k = 0; k < 3; ++k)
+      {
+        mesh->GetPoint(ids[k], p[k]);
+      }
+      double e1[3], e2[3], n[3];
+      vtkMath::Subtract(p[1], p[0], e1);
+      vtkMath::Subtract(p[2], p[0], e2);
+      vtkMath::Cross(e1, e2, n);
+      total += vtkMath::Norm(n);
+      this->Cumulative.push_back(total);
+    }
+    this->Random->SetSeed(1234);
+  }
+  void Next(double x[3])
+  {
+    const double r = this->Uniform() * this->Cumulative.back();
+    const vtkIdType c =
+      std::lower_bound(this->Cumulative.begin(), this->Cumulative.end(), r) - this->Cumulative.begin();
+    vtkIdType npts;
+    const vtkIdType* ids;
+    this->Mesh->GetCellPoints(c, npts, ids);
+    double a = this->Uniform(), b = this->Uniform();
+    if (a + b > 1.0)
+    {
+      a = 1.0 - a;
+      b = 1.0 - b;
+    }
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Mesh->GetPoint(ids[k], p[k]);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      x[k] = p[0][k] + a * (p[1][k] - p[0][k]) + b * (p[2][k] - p[0][k]);
+    }
+  }
+  double Uniform()
+  {
+    this->Random->Next();
+    return this->Random->GetValue();
+  }
+  vtkPolyData* Mesh;
+  std::vector<double> Cumulative;
+  vtkNew<vtkMinimalStandardRandomSequence> Random;
+};
+
+vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* mesh)
+{
+  vtkNew<vtkTriangleFilter> tri;
+  tri->SetInputData(mesh);
+  tri->PassVertsOff();
+  tri->PassLinesOff();
+  tri->Update();
+  vtkSmartPointer<vtkPolyData> out = tri->GetOutput();
+  return out;
+}
+
+void ExpectIdentical(vtkOFB* a, vtkOFB* b)
+{
+  ASSERT_EQ(a->GetNumberOfSamples(), b->GetNumberOfSamples());
+  ASSERT_EQ(a->GetNumberOfCells(), b->GetNumberOfCells());
+  EXPECT_EQ(0,
+    std::memcmp(a->GetCellOffsets()->GetPointer(0), b->GetCellOffsets()->GetPointer(0),
+      sizeof(vtkTypeUInt32) * (a->GetNumberOfCells() + 1)));
+  EXPECT_EQ(0,
+    std::memcmp(a->GetDepths()->GetPointer(0), b->GetDepths()->GetPointer(0),
+      sizeof(float) * a->GetNumberOfSamples()));
+  ASSERT_EQ(a->GetSampleData()->GetNumberOfArrays(), b->GetSampleData()->GetNumberOfArrays());
+  for (int i = 0; i < a->GetSampleData()->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* x = a->GetSampleData()->GetArray(i);
+    vtkDataArray* y = b->GetSampleData()->GetArray(x->GetName());
+    ASSERT_NE(y, nullptr) << x->GetName();
+    EXPECT_EQ(0,
+      std::memcmp(x->GetVoidPointer(0), y->GetVoidPointer(0),
+        x->GetDataSize() * x->GetDataTypeSize()))
+      << x->GetName();
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+TEST(Sampler, SphereSamplesLieOnTheMeshAndMatchTheExpectedCount)
+{
+  vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 256);
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(sphere);
+  locator->BuildLocator();
+  for (int resolution : { 64, 128, 256, 512 })
+  {
+    vtkSmartPointer<vtkOFB> ofb = Build(sphere, resolution);
+    const double s = ofb->GetCellSize();
+    const double expected = ExpectedSphereSamples(1.0 / s);
+    const double n = static_cast<double>(ofb->GetNumberOfSamples());
+    std::cout << "resolution " << resolution << ": " << n << " samples, expected " << expected
+              << " (" << 100.0 * (n - expected) / expected << " %)\n";
+    EXPECT_NEAR(n, expected, 0.02 * expected) << "resolution " << resolution;
+    // Every sample on the mesh, within 1e-3 cell of its nearest triangle.
+    if (resolution > 256)
+    {
+      continue; // the count is enough at the finest level; distances are checked below
+    }
+    double worst = 0.0;
+    vtkNew<vtkGenericCell> cell;
+    for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+    {
+      double x[3], closest[3], d2;
+      vtkIdType cellId;
+      int subId;
+      ofb->GetSamplePosition(i, x);
+      locator->FindClosestPoint(x, closest, cell, cellId, subId, d2);
+      worst = std::max(worst, std::sqrt(d2) / s);
+    }
+    std::cout << "  farthest sample from the mesh: " << worst << " cells\n";
+    EXPECT_LT(worst, 1e-3) << "resolution " << resolution;
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(Sampler, FillRuleGivesNoHoleAndNoDuplicateOnSharedEdges)
+{
+  // A plane whose diagonals pass exactly through cell centres: each of the
+  // (R-2)^2 centres inside is covered exactly once.
+  const int m = 6;   // cells per quad
+  const int quads = 10;
+  const int resolution = m * quads + 2;
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0.0, 0.0, 0.25);
+  plane->SetPoint1(1.0, 0.0, 0.25);
+  plane->SetPoint2(0.0, 1.0, 0.25);
+  plane->SetResolution(quads, quads);
+  plane->Update();
+  vtkSmartPointer<vtkPolyData> mesh = Triangulated(plane->GetOutput());
+  vtkSmartPointer<vtkOFB> ofb = Build(mesh, resolution);
+  EXPECT_EQ(ofb->GetNumberOfSamples(), static_cast<vtkIdType>(m * quads) * (m * quads));
+  EXPECT_EQ(ofb->GetNumberOfSamples(2), ofb->GetNumberOfSamples());
+  EXPECT_EQ(ofb->GetDepthComplexity(), 1);
+}
+
+//------------------------------------------------------------------------------
+TEST(Sampler, CellsAreDepthSortedWithoutDuplicatedSurfacePoints)
+{
+  for (const char* name : { "sphere", "stanford-bunny.obj" })
+  {
+    vtkSmartPointer<vtkPolyData> mesh =
+      std::strcmp(name, "sphere") ? ReadMesh(name) : MakeSphere(1.0, 128);
+    ASSERT_NE(mesh, nullptr) << name;
+    vtkSmartPointer<vtkOFB> ofb = Build(mesh, 256);
+    const vtkTypeUInt32* offsets = ofb->GetCellOffsets()->GetPointer(0);
+    const float* depth = ofb->GetDepths()->GetPointer(0);
+    const double s = ofb->GetCellSize();
+    vtkIdType unsorted = 0, duplicates = 0;
+    for (vtkIdType c = 0; c < ofb->GetNumberOfCells(); ++c)
+    {
+      for (vtkTypeUInt32 i = offsets[c] + 1; i < offsets[c + 1]; ++i)
+      {
+        unsorted += depth[i] < depth[i - 1];
+        // Two samples of one ray within 1e-3 cell are one surface point taken twice.
+        duplicates += (depth[i] - depth[i - 1]) < 1e-3 * s;
+      }
+    }
+    EXPECT_EQ(unsorted, 0) << name;
+    EXPECT_EQ(duplicates, 0) << name;
+    EXPECT_GE(ofb->GetDepthComplexity(), 2) << name;
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(Sampler, IdenticalOutputWithOneAndTwoThreads)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  vtkSMPTools::Initialize(1);
+  vtkSmartPointer<vtkOFB> one = Build(bunny, 512);
+  vtkSMPTools::Initialize(2);
+  vtkSmartPointer<vtkOFB> two = Build(bunny, 512);
+  ASSERT_GT(one->GetNumberOfSamples(), 0);
+  ExpectIdentical(one, two);
+  const std::string backend = vtkSMPTools::GetBackend();
+  if (vtkSMPTools::SetBackend("STDThread"))
+  {
+    vtkSMPTools::Initialize(2);
+    vtkSmartPointer<vtkOFB> std2 = Build(bunny, 512);
+    ExpectIdentical(one, std2);
+    vtkSMPTools::SetBackend(backend.c_str());
+  }
+  vtkSMPTools::Initialize(0);
+}
+
+//------------------------------------------------------------------------------
+TEST(Sampler, ClosestSampleWithinSqrt3CellsOfRandomSurfacePoints)
+{
+  for (const char* name : { "sphere", "stanford-bunny.obj" })
+  {
+    vtkSmartPointer<vtkPolyData> mesh =
+      std::strcmp(name, "sphere") ? Triangulated(ReadMesh(name)) : MakeSphere(1.0, 128);
+    ASSERT_NE(mesh, nullptr);
+    vtkSmartPointer<vtkOFB> ofb = Build(mesh, 512);
+    const double bound = std::sqrt(3.0) * ofb->GetCellSize();
+    SurfaceSampler points(mesh);
+    int misses = 0;
+    double worst = 0.0;
+    for (int i = 0; i < 10000; ++i)
+    {
+      double x[3], y[3];
+      points.Next(x);
+      const vtkIdType id = ofb->FindClosestSample(x);
+      if (id < 0 || !ofb->GetSamplePosition(id, y))
+      {
+        ++misses;
+        continue;
+      }
+      worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(x, y)));
+    }
+    std::cout << name << ": farthest closest sample " << worst / ofb->GetCellSize()
+              << " cells, " << misses << " misses\n";
+    EXPECT_EQ(misses, 0) << name;
+    EXPECT_LE(worst, bound) << name;
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(Sampler, AttributesAreInterpolatedAndVectorsTangent)
+{
+  vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 64);
+  const vtkIdType np = sphere->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> vectors;
+  vectors->SetName("Wind");
+  vectors->SetNumberOfComponents(3);
+  vtkNew<vtkDoubleArray> height;
+  height->SetName("Height");
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("RGB");
+  colors->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double x[3];
+    sphere->GetPoint(i, x);
+    vectors->InsertNextTuple3(1.0, 0.5, 0.25); // constant: not tangent anywhere
+    height->InsertNextValue(x[2]);
+    colors->InsertNextTuple3(x[0] > 0 ? 255 : 0, 10, 20);
+  }
+  sphere->GetPointData()->AddArray(vectors);
+  sphere->GetPointData()->AddArray(height);
+  sphere->GetPointData()->SetScalars(colors);
+
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetInputData(sphere);
+  sampler->SetResolution(128);
+  sampler->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Wind");
+  sampler->Update();
+  vtkOFB* ofb = sampler->GetOutput();
+  vtkPointData* sd = ofb->GetSampleData();
+  vtkFloatArray* normals = vtkFloatArray::SafeDownCast(sd->GetNormals());
+  vtkFloatArray* wind = vtkFloatArray::SafeDownCast(sd->GetArray("Wind"));
+  vtkDataArray* h = sd->GetArray("Height");
+  vtkUnsignedCharArray* c = vtkUnsignedCharArray::SafeDownCast(sd->GetScalars());
+  ASSERT_NE(normals, nullptr);
+  ASSERT_NE(wind, nullptr);
+  ASSERT_NE(h, nullptr);
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(sd->GetVectors(), wind);
+  EXPECT_EQ(h->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(c->GetNumberOfComponents(), 4);
+  double worstTangent = 0.0, worstNormal = 0.0, worstHeight = 0.0;
+  int wrongColor = 0;
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double x[3], n[3], v[3];
+    ofb->GetSamplePosition(i, x);
+    normals->GetTuple(i, n);
+    wind->GetTuple(i, v);
+    worstTangent = std::max(worstTangent, std::fabs(vtkMath::Dot(n, v)));
+    const double r = vtkMath::Norm(x);
+    worstNormal = std::max(worstNormal, 1.0 - vtkMath::Dot(n, x) / r);
+    worstHeight = std::max(worstHeight, std::fabs(h->GetTuple1(i) - x[2]));
+    if (std::fabs(x[0]) > 0.1)
+    {
+      wrongColor += c->GetValue(4 * i) != (x[0] > 0 ? 255 : 0) || c->GetValue(4 * i + 1) != 10 ||
+        c->GetValue(4 * i + 3) != 255;
+    }
+  }
+  EXPECT_LT(worstTangent, 1e-5);
+  EXPECT_LT(worstNormal, 1e-3);
+  EXPECT_LT(worstHeight, 1e-3);
+  EXPECT_EQ(wrongColor, 0);
+}
+
+//------------------------------------------------------------------------------
+TEST(Sampler, RealMeshesBuild)
+{
+  for (const char* name :
+    { "stanford-bunny.obj", "horse.ply", "fandisk.obj", "rocker-arm.obj", "teapot.obj" })
+  {
+    vtkSmartPointer<vtkPolyData> mesh = ReadMesh(name);
+    ASSERT_NE(mesh, nullptr) << name;
+    vtkNew<vtkOFBSampler> sampler;
+    sampler->SetInputData(mesh);
+    sampler->SetResolution(1024);
+    sampler->Update();
+    vtkOFB* ofb = sampler->GetOutput();
+    std::cout << name << ": " << mesh->GetNumberOfPolys() << " polygons, "
+              << ofb->GetNumberOfSamples() << " samples (X " << ofb->GetNumberOfSamples(0)
+              << ", Y " << ofb->GetNumberOfSamples(1) << ", Z " << ofb->GetNumberOfSamples(2)
+              << "), depth complexity " << ofb->GetDepthComplexity(0) << " "
+              << ofb->GetDepthComplexity(1) << " " << ofb->GetDepthComplexity(2) << ", "
+              << ofb->GetBytesPerSample() << " bytes/sample, " << sampler->GetLastBuildTime()
+              << " ms\n";
+    EXPECT_GT(ofb->GetNumberOfSamples(0), 0) << name;
+    EXPECT_GT(ofb->GetNumberOfSamples(1), 0) << name;
+    EXPECT_GT(ofb->GetNumberOfSamples(2), 0) << name;
+    EXPECT_EQ(ofb->GetNumberOfSamples(),
+      ofb->GetNumberOfSamples(0) + ofb->GetNumberOfSamples(1) + ofb->GetNumberOfSamples(2));
+    EXPECT_GE(ofb->GetDepthComplexity(), 2) << name;
+    EXPECT_EQ(ofb->GetSampleData()->GetNumberOfTuples(), ofb->GetNumberOfSamples()) << name;
+    // Every sample inside the frame and with a unit normal.
+    double bounds[6];
+    ofb->GetBounds(bounds);
+    int bad = 0;
+    vtkDataArray* normals = ofb->GetSampleData()->GetNormals();
+    for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); i += 7)
+    {
+      double x[3], n[3];
+      ofb->GetSamplePosition(i, x);
+      normals->GetTuple(i, n);
+      for (int a = 0; a < 3; ++a)
+      {
+        bad += x[a] < bounds[2 * a] || x[a] > bounds[2 * a + 1];
+      }
+      bad += std::fabs(vtkMath::Norm(n) - 1.0) > 1e-4;
+    }
+    EXPECT_EQ(bad, 0) << name;
+  }
+}

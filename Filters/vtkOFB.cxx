@@ -1,0 +1,532 @@
+#include "vtkOFB.h"
+
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkOFB);
+
+//------------------------------------------------------------------------------
+vtkOFB::vtkOFB()
+{
+  this->CellOffsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  this->CellOffsets->SetName("CellOffsets");
+  this->Depths = vtkSmartPointer<vtkFloatArray>::New();
+  this->Depths->SetName("Depths");
+  this->CellIndex = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  this->CellIndex->SetName("CellIndex");
+  this->SampleData = vtkSmartPointer<vtkPointData>::New();
+  this->Origin[0] = this->Origin[1] = this->Origin[2] = 0.0;
+  this->CellSize = 0.0;
+  this->Dimensions[0] = this->Dimensions[1] = this->Dimensions[2] = 0;
+  this->CellBase[0] = this->CellBase[1] = this->CellBase[2] = this->CellBase[3] = 0;
+  this->CellOffsets->SetNumberOfValues(1);
+  this->CellOffsets->SetValue(0, 0);
+}
+
+//------------------------------------------------------------------------------
+vtkOFB::~vtkOFB() = default;
+
+//------------------------------------------------------------------------------
+void vtkOFB::Initialize()
+{
+  this->Superclass::Initialize();
+  this->Origin[0] = this->Origin[1] = this->Origin[2] = 0.0;
+  this->CellSize = 0.0;
+  this->Dimensions[0] = this->Dimensions[1] = this->Dimensions[2] = 0;
+  this->CellBase[0] = this->CellBase[1] = this->CellBase[2] = this->CellBase[3] = 0;
+  // New arrays: a shallow copy may still share the old ones.
+  this->CellOffsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  this->CellOffsets->SetName("CellOffsets");
+  this->CellOffsets->SetNumberOfValues(1);
+  this->CellOffsets->SetValue(0, 0);
+  this->Depths = vtkSmartPointer<vtkFloatArray>::New();
+  this->Depths->SetName("Depths");
+  this->CellIndex = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  this->CellIndex->SetName("CellIndex");
+  this->SampleData = vtkSmartPointer<vtkPointData>::New();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFB::SetFrame(const double origin[3], double cellSize, const vtkIdType dims[3])
+{
+  this->Initialize();
+  if (!(cellSize > 0.0) || !std::isfinite(cellSize) || !std::isfinite(origin[0]) ||
+    !std::isfinite(origin[1]) || !std::isfinite(origin[2]))
+  {
+    vtkErrorMacro("SetFrame: the cell size must be positive and the origin finite.");
+    return false;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (dims[a] < 1)
+    {
+      vtkErrorMacro("SetFrame: every dimension must be at least 1, got " << dims[a] << ".");
+      return false;
+    }
+  }
+  vtkIdType base[4] = { 0, 0, 0, 0 };
+  for (int a = 0; a < 3; ++a)
+  {
+    const double cells =
+      static_cast<double>(dims[(a + 1) % 3]) * static_cast<double>(dims[(a + 2) % 3]);
+    if (cells + base[a] >= static_cast<double>(std::numeric_limits<vtkTypeUInt32>::max()))
+    {
+      vtkErrorMacro("SetFrame: " << cells + base[a]
+                                 << " cells exceed the 2^32 cell indices of an OFB.");
+      return false;
+    }
+    base[a + 1] = base[a] + static_cast<vtkIdType>(cells);
+  }
+  auto offsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  offsets->SetName("CellOffsets");
+  if (!offsets->Allocate(base[3] + 1))
+  {
+    vtkErrorMacro("SetFrame: cannot allocate " << base[3] + 1 << " cell offsets.");
+    return false;
+  }
+  offsets->SetNumberOfValues(base[3] + 1);
+  vtkTypeUInt32* p = offsets->GetPointer(0);
+  vtkSMPTools::Fill(p, p + base[3] + 1, 0u);
+  this->CellOffsets = offsets;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Origin[a] = origin[a];
+    this->Dimensions[a] = dims[a];
+    this->CellBase[a] = base[a];
+  }
+  this->CellBase[3] = base[3];
+  this->CellSize = cellSize;
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFB::AllocateSamples(vtkIdType n)
+{
+  if (n < 0 || n >= static_cast<vtkIdType>(std::numeric_limits<vtkTypeUInt32>::max()))
+  {
+    vtkErrorMacro("AllocateSamples: invalid number of samples " << n << ".");
+    return false;
+  }
+  this->SampleData = vtkSmartPointer<vtkPointData>::New();
+  auto depths = vtkSmartPointer<vtkFloatArray>::New();
+  depths->SetName("Depths");
+  auto index = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  index->SetName("CellIndex");
+  if ((n > 0 && (!depths->Allocate(n) || !index->Allocate(n))))
+  {
+    vtkErrorMacro("AllocateSamples: cannot allocate " << n << " samples.");
+    return false;
+  }
+  depths->SetNumberOfValues(n);
+  index->SetNumberOfValues(n);
+  this->Depths = depths;
+  this->CellIndex = index;
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFB::BuildCellIndex()
+{
+  const vtkIdType nCells = this->CellBase[3];
+  const vtkIdType n = this->Depths->GetNumberOfValues();
+  if (this->CellOffsets->GetNumberOfValues() != nCells + 1 ||
+    this->CellIndex->GetNumberOfValues() != n)
+  {
+    vtkErrorMacro("BuildCellIndex: array sizes do not match the frame.");
+    return false;
+  }
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  if (offsets[0] != 0 || static_cast<vtkIdType>(offsets[nCells]) != n)
+  {
+    vtkErrorMacro("BuildCellIndex: the cell offsets do not run from 0 to the sample count.");
+    return false;
+  }
+  vtkTypeUInt32* index = this->CellIndex->GetPointer(0);
+  bool valid = true;
+  vtkSMPTools::For(0, nCells, 65536,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType c = begin; c < end; ++c)
+      {
+        const vtkTypeUInt32 b = offsets[c];
+        const vtkTypeUInt32 e = offsets[c + 1];
+        if (e < b || static_cast<vtkIdType>(e) > n)
+        {
+          valid = false;
+          return;
+        }
+        for (vtkTypeUInt32 i = b; i < e; ++i)
+        {
+          index[i] = static_cast<vtkTypeUInt32>(c);
+        }
+      }
+    });
+  if (!valid)
+  {
+    vtkErrorMacro("BuildCellIndex: the cell offsets decrease or exceed the sample count.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::GetOrigin(double o[3]) const
+{
+  o[0] = this->Origin[0];
+  o[1] = this->Origin[1];
+  o[2] = this->Origin[2];
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::GetDimensions(vtkIdType d[3]) const
+{
+  d[0] = this->Dimensions[0];
+  d[1] = this->Dimensions[1];
+  d[2] = this->Dimensions[2];
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::GetBounds(double bounds[6]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    bounds[2 * a] = this->Origin[a];
+    bounds[2 * a + 1] = this->Origin[a] + this->Dimensions[a] * this->CellSize;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::GetGridDimensions(int axis, vtkIdType& nu, vtkIdType& nv) const
+{
+  if (axis < 0 || axis > 2)
+  {
+    nu = nv = 0;
+    return;
+  }
+  nu = this->Dimensions[(axis + 1) % 3];
+  nv = this->Dimensions[(axis + 2) % 3];
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::GetNumberOfGridCells(int axis) const
+{
+  if (axis < 0 || axis > 2)
+  {
+    return 0;
+  }
+  return this->CellBase[axis + 1] - this->CellBase[axis];
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::GetNumberOfSamples() const
+{
+  return this->Depths->GetNumberOfValues();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::GetGridFirstSample(int axis) const
+{
+  if (axis < 0 || axis > 3 || this->CellOffsets->GetNumberOfValues() != this->CellBase[3] + 1)
+  {
+    return 0;
+  }
+  return this->CellOffsets->GetValue(this->CellBase[axis]);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::GetNumberOfSamples(int axis) const
+{
+  if (axis < 0 || axis > 2)
+  {
+    return 0;
+  }
+  return this->GetGridFirstSample(axis + 1) - this->GetGridFirstSample(axis);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::GetDepthComplexity(int axis) const
+{
+  if (axis < 0 || axis > 2 || this->GetNumberOfSamples() == 0)
+  {
+    return 0;
+  }
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  vtkTypeUInt32 most = 0;
+  for (vtkIdType c = this->CellBase[axis]; c < this->CellBase[axis + 1]; ++c)
+  {
+    most = std::max(most, offsets[c + 1] - offsets[c]);
+  }
+  return most;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::GetDepthComplexity() const
+{
+  return std::max(
+    { this->GetDepthComplexity(0), this->GetDepthComplexity(1), this->GetDepthComplexity(2) });
+}
+
+//------------------------------------------------------------------------------
+int vtkOFB::GetSampleAxis(vtkIdType id) const
+{
+  if (id < 0 || id >= this->GetNumberOfSamples())
+  {
+    return -1;
+  }
+  const vtkIdType cell = this->CellIndex->GetValue(id);
+  return cell < this->CellBase[1] ? 0 : (cell < this->CellBase[2] ? 1 : 2);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFB::GetSamplePosition(vtkIdType id, double x[3]) const
+{
+  if (id < 0 || id >= this->GetNumberOfSamples())
+  {
+    return false;
+  }
+  const vtkIdType cell = this->CellIndex->GetValue(id);
+  const int a = cell < this->CellBase[1] ? 0 : (cell < this->CellBase[2] ? 1 : 2);
+  const int ua = (a + 1) % 3;
+  const int va = (a + 2) % 3;
+  const vtkIdType local = cell - this->CellBase[a];
+  const vtkIdType nu = this->Dimensions[ua];
+  const vtkIdType iu = local % nu;
+  const vtkIdType iv = local / nu;
+  x[a] = this->Origin[a] + this->Depths->GetValue(id);
+  x[ua] = this->Origin[ua] + (iu + 0.5) * this->CellSize;
+  x[va] = this->Origin[va] + (iv + 0.5) * this->CellSize;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFB::LocateCell(int axis, const double x[3], vtkIdType& cell) const
+{
+  if (this->CellSize <= 0.0)
+  {
+    return false;
+  }
+  const int ua = (axis + 1) % 3;
+  const int va = (axis + 2) % 3;
+  const double fu = std::floor((x[ua] - this->Origin[ua]) / this->CellSize);
+  const double fv = std::floor((x[va] - this->Origin[va]) / this->CellSize);
+  if (!(fu >= 0.0 && fv >= 0.0 && fu < this->Dimensions[ua] && fv < this->Dimensions[va]))
+  {
+    return false;
+  }
+  cell = this->CellBase[axis] + static_cast<vtkIdType>(fv) * this->Dimensions[ua] +
+    static_cast<vtkIdType>(fu);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::FindSample(const double x[3], const double n[3]) const
+{
+  if (this->GetNumberOfSamples() == 0 || !std::isfinite(x[0]) || !std::isfinite(x[1]) ||
+    !std::isfinite(x[2]))
+  {
+    return -1;
+  }
+  int a = 0;
+  double best = std::fabs(n[0]);
+  for (int i = 1; i < 3; ++i)
+  {
+    if (std::fabs(n[i]) > best)
+    {
+      best = std::fabs(n[i]);
+      a = i;
+    }
+  }
+  vtkIdType cell;
+  if (!this->LocateCell(a, x, cell))
+  {
+    return -1;
+  }
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  const float* depths = this->Depths->GetPointer(0);
+  const double d = x[a] - this->Origin[a];
+  const double s = this->CellSize;
+  const vtkIdType begin = offsets[cell];
+  const vtkIdType end = offsets[cell + 1];
+  const vtkIdType i = this->LowerBound(begin, end, static_cast<float>(d));
+  // The closest depth is at i or just before it.
+  vtkIdType result = -1;
+  double bestDist = s;
+  if (i < end && std::fabs(depths[i] - d) <= bestDist)
+  {
+    result = i;
+    bestDist = std::fabs(depths[i] - d);
+  }
+  if (i > begin && std::fabs(depths[i - 1] - d) <= bestDist)
+  {
+    result = i - 1;
+  }
+  return result;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::FindClosestSample(const double x[3]) const
+{
+  return this->FindClosestSample(x, std::sqrt(3.0) * this->CellSize);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::FindClosestSample(const double x[3], double radius) const
+{
+  if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+  {
+    return -1;
+  }
+  vtkIdType result = -1;
+  double best = std::numeric_limits<double>::max();
+  this->ForEachSampleInSphere(x, radius,
+    [&](vtkIdType id, double d2)
+    {
+      if (d2 < best || (d2 == best && id < result))
+      {
+        best = d2;
+        result = id;
+      }
+    });
+  return result;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::FindSamplesInSphere(const double center[3], double radius, vtkIdList* ids) const
+{
+  if (!ids)
+  {
+    return;
+  }
+  ids->Reset();
+  if (!std::isfinite(center[0]) || !std::isfinite(center[1]) || !std::isfinite(center[2]))
+  {
+    return;
+  }
+  this->ForEachSampleInSphere(center, radius, [ids](vtkIdType id, double) { ids->InsertNextId(id); });
+}
+
+//------------------------------------------------------------------------------
+unsigned long vtkOFB::GetActualMemorySize()
+{
+  unsigned long size = this->Superclass::GetActualMemorySize();
+  size += this->CellOffsets->GetActualMemorySize();
+  size += this->Depths->GetActualMemorySize();
+  size += this->CellIndex->GetActualMemorySize();
+  size += this->SampleData->GetActualMemorySize();
+  return size;
+}
+
+//------------------------------------------------------------------------------
+double vtkOFB::GetBytesPerSample()
+{
+  const vtkIdType n = this->GetNumberOfSamples();
+  return n > 0 ? 1024.0 * this->GetActualMemorySize() / n : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::ShallowCopy(vtkDataObject* src)
+{
+  vtkOFB* ofb = vtkOFB::SafeDownCast(src);
+  if (!ofb)
+  {
+    vtkErrorMacro("ShallowCopy: the source is not a vtkOFB.");
+    return;
+  }
+  if (ofb == this)
+  {
+    return;
+  }
+  this->Superclass::ShallowCopy(src);
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Origin[a] = ofb->Origin[a];
+    this->Dimensions[a] = ofb->Dimensions[a];
+  }
+  for (int a = 0; a < 4; ++a)
+  {
+    this->CellBase[a] = ofb->CellBase[a];
+  }
+  this->CellSize = ofb->CellSize;
+  this->CellOffsets = ofb->CellOffsets;
+  this->Depths = ofb->Depths;
+  this->CellIndex = ofb->CellIndex;
+  this->SampleData = vtkSmartPointer<vtkPointData>::New();
+  this->SampleData->ShallowCopy(ofb->SampleData);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::DeepCopy(vtkDataObject* src)
+{
+  vtkOFB* ofb = vtkOFB::SafeDownCast(src);
+  if (!ofb)
+  {
+    vtkErrorMacro("DeepCopy: the source is not a vtkOFB.");
+    return;
+  }
+  if (ofb == this)
+  {
+    return;
+  }
+  this->Superclass::DeepCopy(src);
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Origin[a] = ofb->Origin[a];
+    this->Dimensions[a] = ofb->Dimensions[a];
+  }
+  for (int a = 0; a < 4; ++a)
+  {
+    this->CellBase[a] = ofb->CellBase[a];
+  }
+  this->CellSize = ofb->CellSize;
+  this->CellOffsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  this->CellOffsets->DeepCopy(ofb->CellOffsets);
+  this->Depths = vtkSmartPointer<vtkFloatArray>::New();
+  this->Depths->DeepCopy(ofb->Depths);
+  this->CellIndex = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  this->CellIndex->DeepCopy(ofb->CellIndex);
+  this->SampleData = vtkSmartPointer<vtkPointData>::New();
+  this->SampleData->DeepCopy(ofb->SampleData);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkOFB* vtkOFB::GetData(vtkInformation* info)
+{
+  return info ? vtkOFB::SafeDownCast(info->Get(DATA_OBJECT())) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkOFB* vtkOFB::GetData(vtkInformationVector* v, int i)
+{
+  return vtkOFB::GetData(v->GetInformationObject(i));
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Origin: (" << this->Origin[0] << ", " << this->Origin[1] << ", "
+     << this->Origin[2] << ")\n";
+  os << indent << "CellSize: " << this->CellSize << "\n";
+  os << indent << "Dimensions: (" << this->Dimensions[0] << ", " << this->Dimensions[1] << ", "
+     << this->Dimensions[2] << ")\n";
+  os << indent << "NumberOfCells: " << this->GetNumberOfCells() << "\n";
+  os << indent << "NumberOfSamples: " << this->GetNumberOfSamples() << " (X "
+     << this->GetNumberOfSamples(0) << ", Y " << this->GetNumberOfSamples(1) << ", Z "
+     << this->GetNumberOfSamples(2) << ")\n";
+  os << indent << "DepthComplexity: (" << this->GetDepthComplexity(0) << ", "
+     << this->GetDepthComplexity(1) << ", " << this->GetDepthComplexity(2) << ")\n";
+  os << indent << "SampleData:\n";
+  this->SampleData->PrintSelf(os, indent.GetNextIndent());
+}

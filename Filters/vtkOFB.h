@@ -1,0 +1,321 @@
+/**
+ * @class   vtkOFB
+ * @brief   Orthogonal Fragment Buffer: surface samples on three axis-aligned grids
+ *
+ * vtkOFB stores a surface as samples taken along the rays through the cell centres
+ * of three axis-aligned grids (paper "Sample-based Surface Coloring", section 4).
+ *
+ * The frame is an axis-aligned box with origin `GetOrigin()` and cubic cells of
+ * edge `GetCellSize()` (world units); `GetDimensions()` gives the number of cells
+ * of the box along x, y and z. Grid `a` (0 = X, 1 = Y, 2 = Z) is the plane spanned
+ * by axes `u = (a+1)%3` and `v = (a+2)%3`; it has `dims[u] x dims[v]` cells,
+ * row-major with u fastest. A sample of grid `a` lies on the ray through the
+ * centre of its cell, at `depth` (world units) from the plane `x[a] = origin[a]`.
+ *
+ * Storage is compressed: one prefix-sum array `CellOffsets` over the cells of the
+ * three grids (X first, then Y, then Z; one entry per cell plus one), a depth per
+ * sample, and the global cell index of each sample (so an index gives a position
+ * in O(1)). Within a cell, samples are sorted by increasing depth. Sample
+ * attributes live in `GetSampleData()`, a vtkPointData with one tuple per sample:
+ * the paint colours (RGBA unsigned char, the active scalars), normals (the active
+ * normals), the tangent vector field (the active vectors) and every interpolated
+ * point array of the source surface.
+ *
+ * All queries are const and thread-safe. They return -1 (or nothing) where no
+ * sample qualifies, including on an empty OFB.
+ *
+ * @sa vtkOFBSampler vtkOFBBuilder vtkOFBWriter vtkOFBReader vtkOFBToPolyData
+ */
+
+#ifndef vtkOFB_h
+#define vtkOFB_h
+
+#include "vtkDataObject.h"
+#include "vtkOFBFiltersModule.h" // for export macro
+#include "vtkSmartPointer.h"     // for members
+#include "vtkTypeUInt32Array.h"  // for inline access
+#include "vtkFloatArray.h"       // for inline access
+#include "vtkPointData.h"        // for inline access
+
+#include <algorithm> // for std::lower_bound
+#include <cmath>     // for std::floor
+
+class vtkIdList;
+class vtkInformation;
+class vtkInformationVector;
+
+class VTKOFBFILTERS_EXPORT vtkOFB : public vtkDataObject
+{
+public:
+  static vtkOFB* New();
+  vtkTypeMacro(vtkOFB, vtkDataObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Remove every sample and reset the frame to an empty one.
+   */
+  void Initialize() override;
+
+  /**
+   * Set the frame and allocate the cell offsets of the three grids (all zero).
+   * `origin` is the low corner of the box, `cellSize` (> 0) the edge of a cell in
+   * world units and `dims` the number of cells along x, y and z (each >= 1).
+   * Returns false, leaving the OFB empty, on invalid values or a failed allocation.
+   * Builders call this, then `AllocateSamples`, then fill the arrays.
+   */
+  bool SetFrame(const double origin[3], double cellSize, const vtkIdType dims[3]);
+
+  /**
+   * Allocate `n` samples (depths and cell indices) once the cell offsets are final.
+   * Clears the sample data. Returns false on a failed allocation.
+   */
+  bool AllocateSamples(vtkIdType n);
+
+  /**
+   * Recompute the cell index of every sample from the cell offsets. Call this
+   * after filling `GetCellOffsets()` and `AllocateSamples()`. Returns false if the
+   * offsets are not a valid prefix sum ending at the number of samples.
+   */
+  bool BuildCellIndex();
+
+  ///@{
+  /**
+   * The frame: low corner of the box (world units), cell edge (world units) and
+   * number of cells along x, y and z. An empty OFB has cell size 0.
+   */
+  const double* GetOrigin() const { return this->Origin; }
+  void GetOrigin(double o[3]) const;
+  double GetCellSize() const { return this->CellSize; }
+  const vtkIdType* GetDimensions() const { return this->Dimensions; }
+  void GetDimensions(vtkIdType d[3]) const;
+  void GetBounds(double bounds[6]) const;
+  ///@}
+
+  /**
+   * Number of cells of grid `axis` along its u and v axes.
+   */
+  void GetGridDimensions(int axis, vtkIdType& nu, vtkIdType& nv) const;
+
+  ///@{
+  /**
+   * Cell counts: per grid, and over the three grids.
+   */
+  vtkIdType GetNumberOfGridCells(int axis) const;
+  vtkIdType GetNumberOfCells() const { return this->CellBase[3]; }
+  ///@}
+
+  /**
+   * Global index of the first cell of grid `axis` (0..3; 3 gives the total).
+   */
+  vtkIdType GetGridCellBase(int axis) const { return this->CellBase[axis]; }
+
+  ///@{
+  /**
+   * Sample counts: over the three grids, per grid, and the first sample of a grid.
+   */
+  vtkIdType GetNumberOfSamples() const;
+  vtkIdType GetNumberOfSamples(int axis) const;
+  vtkIdType GetGridFirstSample(int axis) const;
+  ///@}
+
+  ///@{
+  /**
+   * Depth complexity: the most samples in one cell of grid `axis`, or of any grid.
+   */
+  vtkIdType GetDepthComplexity(int axis) const;
+  vtkIdType GetDepthComplexity() const;
+  ///@}
+
+  ///@{
+  /**
+   * The storage arrays. CellOffsets has GetNumberOfCells()+1 entries; Depths and
+   * CellIndex have one entry per sample. Builders and readers fill them.
+   */
+  vtkTypeUInt32Array* GetCellOffsets() { return this->CellOffsets; }
+  vtkFloatArray* GetDepths() { return this->Depths; }
+  vtkTypeUInt32Array* GetCellIndex() { return this->CellIndex; }
+  ///@}
+
+  /**
+   * Sample attributes, one tuple per sample.
+   */
+  vtkPointData* GetSampleData() { return this->SampleData; }
+
+  /**
+   * Grid (0, 1, 2) of a sample, or -1 for an invalid id.
+   */
+  int GetSampleAxis(vtkIdType id) const;
+
+  ///@{
+  /**
+   * Position of sample `id` in world coordinates. Returns false (x unchanged) for
+   * an invalid id.
+   */
+  bool GetSamplePosition(vtkIdType id, double x[3]) const;
+  ///@}
+
+  /**
+   * Closest sample to `x` in the grid whose axis is most aligned with the normal
+   * `n`, looking only in the cell under `x` and at depths in [d - s, d + s]
+   * (binary search). Returns -1 if there is none (paper, section 4.1).
+   */
+  vtkIdType FindSample(const double x[3], const double n[3]) const;
+
+  ///@{
+  /**
+   * Closest sample to `x` over the three grids within `radius` (world units).
+   * The one-argument form uses sqrt(3) cells, the paper's bound on the distance
+   * from a surface point to its nearest sample. Returns -1 if there is none.
+   */
+  vtkIdType FindClosestSample(const double x[3]) const;
+  vtkIdType FindClosestSample(const double x[3], double radius) const;
+  ///@}
+
+  /**
+   * Fill `ids` with every sample within `radius` (world units) of `center`.
+   */
+  void FindSamplesInSphere(const double center[3], double radius, vtkIdList* ids) const;
+
+#ifndef __VTK_WRAP__
+  /**
+   * Call `f(vtkIdType id, double squaredDistance)` for every sample within `radius`
+   * of `center`. Candidates come from the projections of the sphere's bounding box
+   * on the three grids and a binary search on depth; no allocation.
+   */
+  template <typename Functor>
+  void ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const;
+#endif
+
+  ///@{
+  /**
+   * Memory of the sample storage and attributes, in KiB (vtkDataObject convention),
+   * and in bytes per sample.
+   */
+  unsigned long GetActualMemorySize() override;
+  double GetBytesPerSample();
+  ///@}
+
+  ///@{
+  /**
+   * Copy another OFB: shallow copies share the arrays, deep copies duplicate them.
+   */
+  void ShallowCopy(vtkDataObject* src) override;
+  void DeepCopy(vtkDataObject* src) override;
+  ///@}
+
+  /**
+   * Not a vtkDataSet: report VTK_DATA_OBJECT.
+   */
+  int GetDataObjectType() override { return VTK_DATA_OBJECT; }
+
+  ///@{
+  /**
+   * Retrieve an instance from an information object or vector.
+   */
+  static vtkOFB* GetData(vtkInformation* info);
+  static vtkOFB* GetData(vtkInformationVector* v, int i = 0);
+  ///@}
+
+protected:
+  vtkOFB();
+  ~vtkOFB() override;
+
+  /**
+   * Cell (u, v index and global cell index) of point x in grid `axis`; false if
+   * outside the grid.
+   */
+  bool LocateCell(int axis, const double x[3], vtkIdType& cell) const;
+
+  /**
+   * Index of the first sample of [begin, end) whose depth is >= d.
+   */
+  vtkIdType LowerBound(vtkIdType begin, vtkIdType end, float d) const
+  {
+    const float* depths = this->Depths->GetPointer(0);
+    return static_cast<vtkIdType>(std::lower_bound(depths + begin, depths + end, d) - depths);
+  }
+
+  double Origin[3];
+  double CellSize;
+  vtkIdType Dimensions[3];
+  vtkIdType CellBase[4];
+
+  vtkSmartPointer<vtkTypeUInt32Array> CellOffsets;
+  vtkSmartPointer<vtkFloatArray> Depths;
+  vtkSmartPointer<vtkTypeUInt32Array> CellIndex;
+  vtkSmartPointer<vtkPointData> SampleData;
+
+private:
+  vtkOFB(const vtkOFB&) = delete;
+  void operator=(const vtkOFB&) = delete;
+};
+
+#ifndef __VTK_WRAP__
+template <typename Functor>
+void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const
+{
+  if (this->CellSize <= 0.0 || !(radius >= 0.0) || this->GetNumberOfSamples() == 0)
+  {
+    return;
+  }
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  const float* depths = this->Depths->GetPointer(0);
+  const double s = this->CellSize;
+  const double r2 = radius * radius;
+  for (int a = 0; a < 3; ++a)
+  {
+    const int ua = (a + 1) % 3;
+    const int va = (a + 2) % 3;
+    const vtkIdType nu = this->Dimensions[ua];
+    const vtkIdType nv = this->Dimensions[va];
+    // Cells whose centre lies within the projected box [c - r, c + r].
+    const double lu = (center[ua] - radius - this->Origin[ua]) / s - 0.5;
+    const double hu = (center[ua] + radius - this->Origin[ua]) / s - 0.5;
+    const double lv = (center[va] - radius - this->Origin[va]) / s - 0.5;
+    const double hv = (center[va] + radius - this->Origin[va]) / s - 0.5;
+    if (hu < 0.0 || hv < 0.0 || lu > nu - 1 || lv > nv - 1)
+    {
+      continue;
+    }
+    const vtkIdType u0 = std::max<vtkIdType>(0, static_cast<vtkIdType>(std::ceil(lu)));
+    const vtkIdType u1 = std::min<vtkIdType>(nu - 1, static_cast<vtkIdType>(std::floor(hu)));
+    const vtkIdType v0 = std::max<vtkIdType>(0, static_cast<vtkIdType>(std::ceil(lv)));
+    const vtkIdType v1 = std::min<vtkIdType>(nv - 1, static_cast<vtkIdType>(std::floor(hv)));
+    const double d = center[a] - this->Origin[a];
+    const float dLow = static_cast<float>(d - radius);
+    const double dHigh = d + radius;
+    for (vtkIdType iv = v0; iv <= v1; ++iv)
+    {
+      const double dv = this->Origin[va] + (iv + 0.5) * s - center[va];
+      const double dv2 = dv * dv;
+      const vtkIdType rowBase = this->CellBase[a] + iv * nu;
+      for (vtkIdType iu = u0; iu <= u1; ++iu)
+      {
+        const double du = this->Origin[ua] + (iu + 0.5) * s - center[ua];
+        const double duv2 = du * du + dv2;
+        if (duv2 > r2)
+        {
+          continue;
+        }
+        const vtkIdType cell = rowBase + iu;
+        const vtkIdType end = offsets[cell + 1];
+        for (vtkIdType i = this->LowerBound(offsets[cell], end, dLow); i < end; ++i)
+        {
+          if (depths[i] > dHigh)
+          {
+            break;
+          }
+          const double dd = depths[i] - d;
+          const double dist2 = duv2 + dd * dd;
+          if (dist2 <= r2)
+          {
+            f(i, dist2);
+          }
+        }
+      }
+    }
+  }
+}
+#endif
+
+#endif

@@ -1,0 +1,165 @@
+/**
+ * @class   vtkOFBSampler
+ * @brief   Build a vtkOFB from a surface on the CPU (vtkSMPTools)
+ *
+ * vtkOFBSampler scan-converts the triangles of a vtkPolyData into the three grids
+ * of a vtkOFB (paper "Sample-based Surface Coloring", sections 4 and 8). Each
+ * triangle goes to the grid of the axis closest to its face normal and is sampled
+ * at the cell centres it covers, with a top-left fill rule on a fixed-point
+ * lattice (1/4096 cell) so that a shared edge gives neither a hole nor a
+ * duplicate. Depth and attributes are interpolated from the triangle's plane and
+ * barycentric coordinates. Cells are sorted by depth (ties by triangle id), so the
+ * result does not depend on the number of threads.
+ *
+ * Sample arrays: "Colors" (RGBA unsigned char, the paint: the input's point
+ * colours if it has unsigned-char RGB(A) scalars, else DefaultColor), "Normals"
+ * (the input point normals, else area-weighted normals computed here), the vector
+ * field chosen with SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+ * name) (or the input's active point vectors) projected into the tangent plane,
+ * and, with PassPointArrays, every other point array, interpolated.
+ *
+ * Polygons and strips are triangulated; lines and vertices are ignored with a
+ * warning; zero-area triangles are skipped. Empty input, non-finite coordinates,
+ * a surface without triangles, a resolution below 3 or above 65536 and a build
+ * whose memory would exceed MemoryLimit give an error and an empty output.
+ *
+ * @sa vtkOFB vtkOFBBuilder
+ */
+
+#ifndef vtkOFBSampler_h
+#define vtkOFBSampler_h
+
+#include "vtkOFBAlgorithm.h"
+#include "vtkOFBFiltersModule.h" // for export macro
+
+class vtkPolyData;
+class vtkOFBSurface;
+
+class VTKOFBFILTERS_EXPORT vtkOFBSampler : public vtkOFBAlgorithm
+{
+public:
+  static vtkOFBSampler* New();
+  vtkTypeMacro(vtkOFBSampler, vtkOFBAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Number of cells along the longest side of the frame (the input bounds padded
+   * by one cell on every side). Valid range 3..65536; default 1024. The paper uses
+   * 2048. Out-of-range values give an error at update time.
+   */
+  vtkSetMacro(Resolution, int);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Most memory a build may take, in MiB (default 8192). The sampler estimates the
+   * memory of the grids and samples before it allocates them and fails with an
+   * error when the estimate exceeds the limit.
+   */
+  vtkSetClampMacro(MemoryLimit, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MemoryLimit, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Paint colour of the samples when the input has no point colours (or
+   * UseInputColors is off), RGBA 0..255. Default opaque white.
+   */
+  vtkSetVector4Macro(DefaultColor, unsigned char);
+  vtkGetVector4Macro(DefaultColor, unsigned char);
+  ///@}
+
+  ///@{
+  /**
+   * Take the initial paint from the input's unsigned-char RGB(A) point scalars
+   * when present (default on).
+   */
+  vtkSetMacro(UseInputColors, bool);
+  vtkGetMacro(UseInputColors, bool);
+  vtkBooleanMacro(UseInputColors, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Interpolate every other point array of the input into the samples (default on).
+   */
+  vtkSetMacro(PassPointArrays, bool);
+  vtkGetMacro(PassPointArrays, bool);
+  vtkBooleanMacro(PassPointArrays, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Project the vector field into the tangent plane of each sample (default on).
+   */
+  vtkSetMacro(ProjectVectors, bool);
+  vtkGetMacro(ProjectVectors, bool);
+  vtkBooleanMacro(ProjectVectors, bool);
+  ///@}
+
+  /**
+   * Zero-area triangles skipped by the last build.
+   */
+  vtkGetMacro(NumberOfSkippedTriangles, vtkIdType);
+
+  /**
+   * Wall-clock time of the last build, in milliseconds.
+   */
+  vtkGetMacro(LastBuildTime, double);
+
+  /**
+   * Estimated bytes of a build of `input` at the current settings, or -1 if the
+   * input is not valid. Nothing is allocated.
+   */
+  double EstimateMemory(vtkPolyData* input);
+
+protected:
+  vtkOFBSampler();
+  ~vtkOFBSampler() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /**
+   * Validate and triangulate the input, compute normals and collect the arrays.
+   * Returns false after reporting an error.
+   */
+  bool PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface);
+
+  /**
+   * Compute the frame of a prepared surface at the current resolution. Returns
+   * false after reporting an error.
+   */
+  bool ComputeFrame(const vtkOFBSurface& surface, double origin[3], double& cellSize,
+    vtkIdType dims[3]);
+
+  /**
+   * Estimated bytes of a build of `surface` on the given frame: cell offsets and
+   * counters, samples (from the projected area and perimeter of each triangle),
+   * attributes and the build's temporaries. A non-negative `samples` replaces the
+   * estimated sample count by the exact one.
+   */
+  double EstimateBytes(
+    const vtkOFBSurface& surface, const vtkIdType dims[3], double cellSize, double samples = -1.0);
+
+  /**
+   * Scan-convert the prepared surface into `output` on the CPU.
+   */
+  bool SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output);
+
+  int Resolution;
+  vtkIdType MemoryLimit;
+  unsigned char DefaultColor[4];
+  bool UseInputColors;
+  bool PassPointArrays;
+  bool ProjectVectors;
+  vtkIdType NumberOfSkippedTriangles;
+  double LastBuildTime;
+
+private:
+  vtkOFBSampler(const vtkOFBSampler&) = delete;
+  void operator=(const vtkOFBSampler&) = delete;
+};
+
+#endif

@@ -1,0 +1,99 @@
+// Helpers shared by the GoogleTest units: test meshes and OFB construction.
+#ifndef vtkOFBTestUtilities_h
+#define vtkOFBTestUtilities_h
+
+#include "vtkCleanPolyData.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkOFB.h"
+#include "vtkOFBSampler.h"
+#include "vtkPLYReader.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+
+#include <string>
+
+namespace vtkofbtest
+{
+/// Path of a file in the project's Testing/Data.
+inline std::string DataPath(const std::string& name)
+{
+  return std::string(VTKOFB_TEST_DATA_DIR) + "/" + name;
+}
+
+/// Read an .obj or .ply mesh of Testing/Data; null if it cannot be read.
+inline vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& name)
+{
+  const std::string path = DataPath(name);
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (name.size() > 4 && name.substr(name.size() - 4) == ".ply")
+  {
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = reader->GetOutput();
+  }
+  else
+  {
+    vtkNew<vtkOBJReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = reader->GetOutput();
+  }
+  return mesh && mesh->GetNumberOfPolys() > 0 ? mesh : nullptr;
+}
+
+/// A finely triangulated sphere (merged seam points), radius `radius` at the origin.
+inline vtkSmartPointer<vtkPolyData> MakeSphere(double radius = 1.0, int resolution = 256)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(radius);
+  sphere->SetThetaResolution(2 * resolution);
+  sphere->SetPhiResolution(resolution);
+  sphere->LatLongTessellationOn();
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputConnection(sphere->GetOutputPort());
+  clean->Update();
+  vtkSmartPointer<vtkPolyData> out = clean->GetOutput();
+  return out;
+}
+
+/// Records the error and warning events of the objects it observes.
+class MessageObserver : public vtkCommand
+{
+public:
+  static MessageObserver* New() { return new MessageObserver; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    const std::string text = data ? static_cast<const char*>(data) : "";
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) += text + "\n";
+  }
+  void Watch(vtkObject* object)
+  {
+    object->AddObserver(vtkCommand::ErrorEvent, this);
+    object->AddObserver(vtkCommand::WarningEvent, this);
+  }
+  void Clear()
+  {
+    this->Errors.clear();
+    this->Warnings.clear();
+  }
+  std::string Errors;
+  std::string Warnings;
+};
+
+/// Build an OFB of `mesh` on the CPU at `resolution`.
+inline vtkSmartPointer<vtkOFB> Build(vtkPolyData* mesh, int resolution)
+{
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetInputData(mesh);
+  sampler->SetResolution(resolution);
+  sampler->Update();
+  vtkSmartPointer<vtkOFB> ofb = sampler->GetOutput();
+  return ofb;
+}
+}
+
+#endif

@@ -34,6 +34,7 @@
 #include "vtkOFBFiltersModule.h" // for export macro
 #include "vtkSmartPointer.h"     // for members
 #include "vtkTypeUInt32Array.h"  // for inline access
+#include "vtkWrappingHints.h"     // for VTK_SIZEHINT
 #include "vtkFloatArray.h"       // for inline access
 #include "vtkPointData.h"        // for inline access
 
@@ -83,10 +84,10 @@ public:
    * The frame: low corner of the box (world units), cell edge (world units) and
    * number of cells along x, y and z. An empty OFB has cell size 0.
    */
-  const double* GetOrigin() const { return this->Origin; }
+  const double* GetOrigin() const VTK_SIZEHINT(3) { return this->Origin; }
   void GetOrigin(double o[3]) const;
   double GetCellSize() const { return this->CellSize; }
-  const vtkIdType* GetDimensions() const { return this->Dimensions; }
+  const vtkIdType* GetDimensions() const VTK_SIZEHINT(3) { return this->Dimensions; }
   void GetDimensions(vtkIdType d[3]) const;
   void GetBounds(double bounds[6]) const;
   ///@}

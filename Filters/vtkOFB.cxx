@@ -1,6 +1,7 @@
 #include "vtkOFB.h"
 
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
@@ -51,6 +52,8 @@ void vtkOFB::Initialize()
   this->CellIndex = vtkSmartPointer<vtkTypeUInt32Array>::New();
   this->CellIndex->SetName("CellIndex");
   this->SampleData = vtkSmartPointer<vtkPointData>::New();
+  this->ModifiedRanges.clear();
+  this->StructureTime.Modified();
   this->Modified();
 }
 
@@ -130,6 +133,8 @@ bool vtkOFB::AllocateSamples(vtkIdType n)
   index->SetNumberOfValues(n);
   this->Depths = depths;
   this->CellIndex = index;
+  this->ModifiedRanges.clear();
+  this->StructureTime.Modified();
   this->Modified();
   return true;
 }
@@ -416,6 +421,98 @@ void vtkOFB::FindSamplesInSphere(const double center[3], double radius, vtkIdLis
 }
 
 //------------------------------------------------------------------------------
+void vtkOFB::MarkSamplesModified(vtkIdType first, vtkIdType last)
+{
+  first = std::max<vtkIdType>(first, 0);
+  last = std::min(last, this->GetNumberOfSamples());
+  if (first >= last)
+  {
+    return;
+  }
+  vtkTimeStamp now;
+  now.Modified();
+  this->ModifiedRanges.push_back({ first, last, now.GetMTime() });
+  if (this->ModifiedRanges.size() <= 256)
+  {
+    return;
+  }
+  // Merge overlapping or adjacent ranges, keeping the newest time of each merge.
+  auto& ranges = this->ModifiedRanges;
+  std::sort(ranges.begin(), ranges.end(),
+    [](const ModifiedRange& a, const ModifiedRange& b) { return a.First < b.First; });
+  size_t out = 0;
+  for (size_t i = 1; i < ranges.size(); ++i)
+  {
+    if (ranges[i].First <= ranges[out].Last)
+    {
+      ranges[out].Last = std::max(ranges[out].Last, ranges[i].Last);
+      ranges[out].Time = std::max(ranges[out].Time, ranges[i].Time);
+    }
+    else
+    {
+      ranges[++out] = ranges[i];
+    }
+  }
+  ranges.resize(out + 1);
+  if (ranges.size() > 128)
+  {
+    ModifiedRange all = { ranges.front().First, ranges.back().Last, 0 };
+    for (const auto& r : ranges)
+    {
+      all.Time = std::max(all.Time, r.Time);
+    }
+    ranges.assign(1, all);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::MarkAllSamplesModified()
+{
+  this->MarkSamplesModified(0, this->GetNumberOfSamples());
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::GetSampleRangesModifiedSince(vtkMTimeType t, vtkIdTypeArray* ranges) const
+{
+  if (!ranges)
+  {
+    return;
+  }
+  ranges->Initialize();
+  ranges->SetNumberOfComponents(2);
+  const vtkIdType n = this->GetNumberOfSamples();
+  if (n == 0)
+  {
+    return;
+  }
+  if (this->StructureTime.GetMTime() > t)
+  {
+    const vtkIdType all[2] = { 0, n };
+    ranges->InsertNextTypedTuple(all);
+    return;
+  }
+  std::vector<std::pair<vtkIdType, vtkIdType>> newer;
+  for (const auto& r : this->ModifiedRanges)
+  {
+    if (r.Time > t)
+    {
+      newer.emplace_back(r.First, std::min(r.Last, n));
+    }
+  }
+  std::sort(newer.begin(), newer.end());
+  for (size_t i = 0; i < newer.size();)
+  {
+    vtkIdType first = newer[i].first, last = newer[i].second;
+    for (++i; i < newer.size() && newer[i].first <= last; ++i)
+    {
+      last = std::max(last, newer[i].second);
+    }
+    const vtkIdType tuple[2] = { first, last };
+    ranges->InsertNextTypedTuple(tuple);
+  }
+}
+
+//------------------------------------------------------------------------------
 unsigned long vtkOFB::GetActualMemorySize()
 {
   unsigned long size = this->Superclass::GetActualMemorySize();
@@ -462,6 +559,8 @@ void vtkOFB::ShallowCopy(vtkDataObject* src)
   this->CellIndex = ofb->CellIndex;
   this->SampleData = vtkSmartPointer<vtkPointData>::New();
   this->SampleData->ShallowCopy(ofb->SampleData);
+  this->ModifiedRanges.clear();
+  this->StructureTime.Modified();
   this->Modified();
 }
 
@@ -497,6 +596,8 @@ void vtkOFB::DeepCopy(vtkDataObject* src)
   this->CellIndex->DeepCopy(ofb->CellIndex);
   this->SampleData = vtkSmartPointer<vtkPointData>::New();
   this->SampleData->DeepCopy(ofb->SampleData);
+  this->ModifiedRanges.clear();
+  this->StructureTime.Modified();
   this->Modified();
 }
 

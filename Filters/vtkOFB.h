@@ -38,10 +38,14 @@
 #include "vtkFloatArray.h"       // for inline access
 #include "vtkPointData.h"        // for inline access
 
+#include "vtkTimeStamp.h"        // for StructureTime
+
 #include <algorithm> // for std::lower_bound
+#include <vector>    // for ModifiedRanges
 #include <cmath>     // for std::floor
 
 class vtkIdList;
+class vtkIdTypeArray;
 class vtkInformation;
 class vtkInformationVector;
 
@@ -189,6 +193,25 @@ public:
 
   ///@{
   /**
+   * Change tracking, so that a renderer uploads only what changed.
+   * `MarkSamplesModified(first, last)` records that the attributes of samples
+   * [first, last) changed (painting, particles, LIC). It does not call Modified():
+   * whoever changes samples calls Modified() once per stroke or step.
+   * `GetSampleRangesModifiedSince(t, ranges)` fills `ranges` (2 components:
+   * first, last) with the sorted, merged ranges marked after time `t` (a
+   * vtkTimeStamp value such as the time of a consumer's last upload); when the
+   * samples were reallocated after `t` (GetStructureMTime() > t) it gives the
+   * whole range. Old ranges are merged (conservatively) beyond 256 entries.
+   * Not thread-safe: mark from one thread.
+   */
+  void MarkSamplesModified(vtkIdType first, vtkIdType last);
+  void MarkAllSamplesModified();
+  void GetSampleRangesModifiedSince(vtkMTimeType t, vtkIdTypeArray* ranges) const;
+  vtkMTimeType GetStructureMTime() const { return this->StructureTime.GetMTime(); }
+  ///@}
+
+  ///@{
+  /**
    * Memory of the sample storage and attributes, in KiB (vtkDataObject convention),
    * and in bytes per sample.
    */
@@ -245,6 +268,15 @@ protected:
   vtkSmartPointer<vtkFloatArray> Depths;
   vtkSmartPointer<vtkTypeUInt32Array> CellIndex;
   vtkSmartPointer<vtkPointData> SampleData;
+
+  struct ModifiedRange
+  {
+    vtkIdType First;
+    vtkIdType Last;
+    vtkMTimeType Time;
+  };
+  std::vector<ModifiedRange> ModifiedRanges;
+  vtkTimeStamp StructureTime;
 
 private:
   vtkOFB(const vtkOFB&) = delete;

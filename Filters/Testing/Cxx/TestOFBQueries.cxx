@@ -2,6 +2,7 @@
 #include "vtkOFBTestUtilities.h"
 
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkOFBToPolyData.h"
@@ -190,4 +191,65 @@ TEST(Queries, PointCloudCarriesEveryArray)
     EXPECT_DOUBLE_EQ(x[2], y[2]);
     EXPECT_EQ(static_cast<int>(axis->GetTuple1(i)), ofb->GetSampleAxis(i));
   }
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, ModifiedRangesTrackOnlyWhatChanged)
+{
+  vtkSmartPointer<vtkOFB> ofb = BunnyOFB(128);
+  ASSERT_NE(ofb, nullptr);
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  vtkNew<vtkIdTypeArray> ranges;
+  // A consumer that never uploaded gets everything.
+  ofb->GetSampleRangesModifiedSince(0, ranges);
+  ASSERT_EQ(ranges->GetNumberOfTuples(), 1);
+  EXPECT_EQ(ranges->GetValue(0), 0);
+  EXPECT_EQ(ranges->GetValue(1), n);
+  // After an upload at time t, only the marked ranges, merged and clipped.
+  vtkTimeStamp upload;
+  upload.Modified();
+  const vtkMTimeType t = upload.GetMTime();
+  ofb->GetSampleRangesModifiedSince(t, ranges);
+  EXPECT_EQ(ranges->GetNumberOfTuples(), 0);
+  ofb->MarkSamplesModified(100, 150);
+  ofb->MarkSamplesModified(140, 200);
+  ofb->MarkSamplesModified(1000, 1100);
+  ofb->MarkSamplesModified(n - 10, n + 50);
+  ofb->MarkSamplesModified(-5, -1); // nothing
+  ofb->GetSampleRangesModifiedSince(t, ranges);
+  ASSERT_EQ(ranges->GetNumberOfTuples(), 3);
+  EXPECT_EQ(ranges->GetValue(0), 100);
+  EXPECT_EQ(ranges->GetValue(1), 200);
+  EXPECT_EQ(ranges->GetValue(2), 1000);
+  EXPECT_EQ(ranges->GetValue(3), 1100);
+  EXPECT_EQ(ranges->GetValue(4), n - 10);
+  EXPECT_EQ(ranges->GetValue(5), n);
+  // Many small marks stay bounded and still cover every marked sample.
+  vtkTimeStamp second;
+  second.Modified();
+  for (vtkIdType i = 0; i < 1000; ++i)
+  {
+    ofb->MarkSamplesModified(7 * i, 7 * i + 1);
+  }
+  ofb->GetSampleRangesModifiedSince(second.GetMTime(), ranges);
+  vtkIdType covered = 0;
+  for (vtkIdType r = 0; r < ranges->GetNumberOfTuples(); ++r)
+  {
+    for (vtkIdType i = 0; i < 1000; ++i)
+    {
+      covered += 7 * i >= ranges->GetValue(2 * r) && 7 * i < ranges->GetValue(2 * r + 1);
+    }
+  }
+  EXPECT_EQ(covered, 1000);
+  EXPECT_LE(ranges->GetNumberOfTuples(), 257);
+  // A rebuild (reallocation) invalidates everything again.
+  vtkNew<vtkOFB> copy;
+  copy->DeepCopy(ofb);
+  vtkTimeStamp third;
+  third.Modified();
+  copy->GetSampleRangesModifiedSince(third.GetMTime(), ranges);
+  EXPECT_EQ(ranges->GetNumberOfTuples(), 0);
+  copy->Initialize();
+  copy->GetSampleRangesModifiedSince(third.GetMTime(), ranges);
+  EXPECT_EQ(ranges->GetNumberOfTuples(), 0) << "an empty OFB has nothing to upload";
 }

@@ -144,6 +144,15 @@ protected:
     const vtkOFBSurface& surface, const vtkIdType dims[3], double cellSize, double samples = -1.0);
 
   /**
+   * Fill the sample arrays of `output` (its samples already placed and sorted)
+   * from the triangle and barycentric coordinates (w1, w2) of each sample:
+   * colours, normals, the projected vector field and the other point arrays.
+   * Shared by the CPU and OpenGL backends, so both give the same attributes.
+   */
+  bool InterpolateAttributes(const vtkOFBSurface& surface, vtkOFB* output,
+    const vtkTypeUInt32* triangles, const float* w1, const float* w2);
+
+  /**
    * Scan-convert the prepared surface into `output` on the CPU.
    */
   bool SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output);

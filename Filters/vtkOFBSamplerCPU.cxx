@@ -412,6 +412,16 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   this->UpdateProgress(0.7);
 
   // Pass 4: attributes.
+  return this->InterpolateAttributes(surface, output, triP, w1P, w2P);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::InterpolateAttributes(const vtkOFBSurface& surface, vtkOFB* output,
+  const vtkTypeUInt32* triP, const float* w1P, const float* w2P)
+{
+  const vtkIdType n = output->GetNumberOfSamples();
+  const double* P = surface.Points.data();
+  const vtkIdType* T3 = surface.Triangles.data();
   vtkPointData* sd = output->GetSampleData();
   auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
   colors->SetName("Colors");

@@ -8,8 +8,11 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkIdList.h"
 #include "vtkLookupTable.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkOFB.h"
@@ -192,6 +195,32 @@ bool CheckPLY(const std::string& path, std::string& error)
     return false;
   }
   return true;
+}
+
+// Signed volume enclosed by the polygons (fan-triangulated): negative when the
+// faces wind clockwise seen from outside, i.e. the mesh is inside out.
+double SignedVolume(vtkPolyData* mesh)
+{
+  double volume = 0.0;
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkNew<vtkIdList> ids;
+  double p0[3], p1[3], p2[3], c[3];
+  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+  {
+    if (ids->GetNumberOfIds() < 3)
+    {
+      continue;
+    }
+    mesh->GetPoint(ids->GetId(0), p0);
+    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
+    {
+      mesh->GetPoint(ids->GetId(k), p1);
+      mesh->GetPoint(ids->GetId(k + 1), p2);
+      vtkMath::Cross(p1, p2, c);
+      volume += vtkMath::Dot(p0, c) / 6.0;
+    }
+  }
+  return volume;
 }
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error)
@@ -397,6 +426,24 @@ int main(int argc, char* argv[])
     std::cerr << "ofbDemo: the point cloud of the OFB has no GridAxis array\n";
     return EXIT_FAILURE;
   }
+  // Points are lit with the sample normals; an inside-out mesh (horse.ply, for
+  // one) would render dark, so turn its normals around for the picture only.
+  vtkDataArray* normals = cloud->GetPointData()->GetNormals();
+  if (normals && SignedVolume(mesh) < 0.0)
+  {
+    std::cout << "Note:              the mesh is inside out (negative volume); its normals are "
+                 "flipped for display\n";
+    vtkSmartPointer<vtkDataArray> flipped = vtk::TakeSmartPointer(normals->NewInstance());
+    flipped->DeepCopy(normals);
+    for (vtkIdType i = 0; i < flipped->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        flipped->SetComponent(i, c, -flipped->GetComponent(i, c));
+      }
+    }
+    cloud->GetPointData()->SetNormals(flipped);
+  }
 
   vtkNew<vtkLookupTable> gridColors;
   gridColors->SetNumberOfTableValues(3);
@@ -407,7 +454,7 @@ int main(int argc, char* argv[])
   gridColors->Build();
 
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(toPoints->GetOutputPort());
+  mapper->SetInputData(cloud);
   mapper->SetLookupTable(gridColors);
   mapper->SetScalarModeToUsePointFieldData();
   mapper->SelectColorArray("GridAxis");

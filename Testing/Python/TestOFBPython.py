@@ -328,10 +328,17 @@ class BadInput(unittest.TestCase):
         self.assertGreater(builder.GetOutput().GetNumberOfSamples(), 0)
 
     def test_opengl_request_falls_back_to_cpu_with_a_warning(self):
+        # Without a render window and without a display the OpenGL backend cannot
+        # make a context: the builder warns and builds on the CPU.
         source = sphere_source(resolution=16)
         cpu, cpu_events, _ = self.build(source, resolution=48)
-        gl, gl_events, cloud = self.build(source, resolution=48,
-                                          backend=vtkofb.vtkOFBBuilder.OpenGL)
+        display = os.environ.pop("DISPLAY", None)
+        try:
+            gl, gl_events, cloud = self.build(source, resolution=48,
+                                              backend=vtkofb.vtkOFBBuilder.OpenGL)
+        finally:
+            if display is not None:
+                os.environ["DISPLAY"] = display
         self.assertEqual(gl.GetBackend(), vtkofb.vtkOFBBuilder.OpenGL)
         self.assertGreater(gl_events.warnings, 0)
         self.assertEqual(gl_events.errors, 0)
@@ -340,6 +347,24 @@ class BadInput(unittest.TestCase):
         self.assertGreater(gl.GetOutput().GetNumberOfSamples(), 0)
         self.assertEqual(gl.GetOutput().GetNumberOfSamples(), cpu.GetOutput().GetNumberOfSamples())
         self.assertEqual(cloud.GetNumberOfPoints(), gl.GetOutput().GetNumberOfSamples())
+
+    @unittest.skipUnless(os.environ.get("DISPLAY"), "needs a display (run under xvfb-run)")
+    def test_opengl_request_with_a_display(self):
+        # With a display the OpenGL backend builds, or it warns and the CPU does:
+        # never an empty output. Both backends agree on the sample count (0.1 %).
+        source = sphere_source(resolution=16)
+        cpu, _, _ = self.build(source, resolution=48)
+        gl, gl_events, cloud = self.build(source, resolution=48,
+                                          backend=vtkofb.vtkOFBBuilder.OpenGL)
+        self.assertEqual(gl_events.errors, 0)
+        self.assertIn(gl.GetLastBackend(), (vtkofb.vtkOFBBuilder.CPU, vtkofb.vtkOFBBuilder.OpenGL))
+        if gl.GetLastBackend() == vtkofb.vtkOFBBuilder.CPU:
+            self.assertGreater(gl_events.warnings, 0)
+        n_cpu = cpu.GetOutput().GetNumberOfSamples()
+        n_gl = gl.GetOutput().GetNumberOfSamples()
+        self.assertGreater(n_gl, 0)
+        self.assertLessEqual(abs(n_gl - n_cpu), 1e-3 * n_cpu)
+        self.assertEqual(cloud.GetNumberOfPoints(), n_gl)
 
 
 class Bunny(unittest.TestCase):

@@ -1,0 +1,749 @@
+// File I/O: exact round trips, and a clear error with an empty output on every bad file.
+#include "vtkOFBTestUtilities.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkOFBReader.h"
+#include "vtkOFBWriter.h"
+#include "vtkPointData.h"
+#include "vtkSOADataArrayTemplate.h"
+#include "vtkTimerLog.h"
+#include "vtkTypeUInt32Array.h"
+
+#include <vtksys/Directory.hxx>
+#include <vtksys/SystemTools.hxx>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#if defined(_WIN32)
+#include <process.h>
+#define getpid _getpid
+#else
+#include <unistd.h>
+#endif
+
+using namespace vtkofbtest;
+
+namespace
+{
+using Bytes = std::vector<unsigned char>;
+
+/// A fresh directory for one test, removed at the end of the test.
+class TempDirectory
+{
+public:
+  TempDirectory()
+  {
+    static int counter = 0;
+    std::string base = testing::TempDir();
+    if (base.empty())
+    {
+      base = "/tmp/";
+    }
+    if (base.back() != '/')
+    {
+      base += '/';
+    }
+    this->Path = base + "vtkofb-io-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
+    vtksys::SystemTools::RemoveADirectory(this->Path);
+    vtksys::SystemTools::MakeDirectory(this->Path);
+  }
+  ~TempDirectory() { vtksys::SystemTools::RemoveADirectory(this->Path); }
+  std::string File(const std::string& name) const { return this->Path + "/" + name; }
+  std::vector<std::string> List() const
+  {
+    std::vector<std::string> names;
+    vtksys::Directory dir;
+    dir.Load(this->Path);
+    for (unsigned long i = 0; i < dir.GetNumberOfFiles(); ++i)
+    {
+      const std::string name = dir.GetFile(i);
+      if (name != "." && name != "..")
+      {
+        names.push_back(name);
+      }
+    }
+    return names;
+  }
+  std::string Path;
+};
+
+Bytes Load(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void Save(const std::string& path, const Bytes& bytes, size_t size)
+{
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(size));
+}
+
+vtkTypeUInt64 GetLE(const Bytes& b, size_t at, int size)
+{
+  vtkTypeUInt64 v = 0;
+  for (int i = size - 1; i >= 0; --i)
+  {
+    v = (v << 8) | b[at + i];
+  }
+  return v;
+}
+
+void PutLE(Bytes& b, size_t at, vtkTypeUInt64 v, int size)
+{
+  for (int i = 0; i < size; ++i)
+  {
+    b[at + i] = static_cast<unsigned char>(v >> (8 * i));
+  }
+}
+
+/// Recompute the CRC-32 of the section [begin, end), stored at `end`.
+void FixCRC(Bytes& b, size_t begin, size_t end)
+{
+  PutLE(b, end, vtkOFBWriter::UpdateCRC32(0, b.data() + begin, end - begin), 4);
+}
+
+/// Counts the progress events of an algorithm and keeps the last value.
+class ProgressCounter : public vtkCommand
+{
+public:
+  static ProgressCounter* New() { return new ProgressCounter; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    ++this->Count;
+    this->Last = *static_cast<double*>(data);
+  }
+  int Count = 0;
+  double Last = -1.0;
+};
+
+/// Write `ofb` to `path`; returns the errors, Write()'s result in `result`.
+std::string WriteOFB(vtkOFB* ofb,
+  const std::string& path,
+  int* result = nullptr,
+  ProgressCounter* progress = nullptr)
+{
+  vtkNew<vtkOFBWriter> writer;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(writer);
+  if (progress)
+  {
+    writer->AddObserver(vtkCommand::ProgressEvent, progress);
+  }
+  writer->SetInputData(ofb);
+  writer->SetFileName(path.empty() ? nullptr : path.c_str());
+  const int ok = writer->Write();
+  if (result)
+  {
+    *result = ok;
+  }
+  return observer->Errors;
+}
+
+/// Read `path`; returns the output OFB and the errors in `errors`.
+vtkSmartPointer<vtkOFB> ReadOFB(const std::string& path,
+  std::string& errors,
+  ProgressCounter* progress = nullptr)
+{
+  vtkNew<vtkOFBReader> reader;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(reader);
+  if (progress)
+  {
+    reader->AddObserver(vtkCommand::ProgressEvent, progress);
+  }
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  errors = observer->Errors;
+  vtkSmartPointer<vtkOFB> out = reader->GetOutput();
+  return out;
+}
+
+/// Reading `path` must fail with an error that contains `expected` and give an empty OFB.
+void ExpectReadError(const std::string& path, const std::string& expected = "")
+{
+  std::string errors;
+  vtkSmartPointer<vtkOFB> ofb = ReadOFB(path, errors);
+  EXPECT_FALSE(errors.empty());
+  EXPECT_NE(errors.find(expected), std::string::npos) << errors;
+  EXPECT_EQ(ofb->GetNumberOfSamples(), 0);
+  EXPECT_EQ(ofb->GetNumberOfCells(), 0);
+  EXPECT_EQ(ofb->GetCellSize(), 0.0);
+  EXPECT_EQ(ofb->GetSampleData()->GetNumberOfArrays(), 0);
+}
+
+template<typename T>
+bool SameBits(const T* a, const T* b, vtkIdType n)
+{
+  return n == 0 || std::memcmp(a, b, sizeof(T) * static_cast<size_t>(n)) == 0;
+}
+
+/// `b` must be an exact copy of `a`: frame, offsets, depths, cell index, arrays, roles.
+void ExpectSameOFB(vtkOFB* a, vtkOFB* b)
+{
+  EXPECT_EQ(std::memcmp(a->GetOrigin(), b->GetOrigin(), 3 * sizeof(double)), 0);
+  EXPECT_EQ(a->GetCellSize(), b->GetCellSize());
+  for (int k = 0; k < 3; ++k)
+  {
+    EXPECT_EQ(a->GetDimensions()[k], b->GetDimensions()[k]);
+  }
+  ASSERT_EQ(a->GetNumberOfCells(), b->GetNumberOfCells());
+  ASSERT_EQ(a->GetNumberOfSamples(), b->GetNumberOfSamples());
+  const vtkIdType n = a->GetNumberOfSamples();
+  EXPECT_TRUE(SameBits(a->GetCellOffsets()->GetPointer(0),
+    b->GetCellOffsets()->GetPointer(0),
+    a->GetNumberOfCells() + 1));
+  EXPECT_TRUE(SameBits(a->GetDepths()->GetPointer(0), b->GetDepths()->GetPointer(0), n));
+  ASSERT_EQ(b->GetCellIndex()->GetNumberOfValues(), n);
+  EXPECT_TRUE(SameBits(a->GetCellIndex()->GetPointer(0), b->GetCellIndex()->GetPointer(0), n));
+  vtkPointData* sa = a->GetSampleData();
+  vtkPointData* sb = b->GetSampleData();
+  ASSERT_EQ(sa->GetNumberOfArrays(), sb->GetNumberOfArrays());
+  for (int i = 0; i < sa->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* x = sa->GetArray(i);
+    vtkDataArray* y = sb->GetArray(i);
+    ASSERT_TRUE(x && y);
+    const std::string name = x->GetName() ? x->GetName() : "";
+    EXPECT_EQ(name, y->GetName() ? y->GetName() : "");
+    EXPECT_EQ(x->GetDataType(), y->GetDataType()) << name;
+    ASSERT_EQ(x->GetNumberOfComponents(), y->GetNumberOfComponents()) << name;
+    ASSERT_EQ(x->GetNumberOfTuples(), y->GetNumberOfTuples()) << name;
+    const vtkIdType values = x->GetNumberOfValues();
+    if (x->HasStandardMemoryLayout())
+    {
+      EXPECT_TRUE(values == 0 ||
+        std::memcmp(x->GetVoidPointer(0),
+          y->GetVoidPointer(0),
+          static_cast<size_t>(values) * x->GetDataTypeSize()) == 0)
+        << name;
+    }
+    else
+    {
+      for (vtkIdType v = 0; v < values; ++v)
+      {
+        const int c = x->GetNumberOfComponents();
+        ASSERT_EQ(x->GetComponent(v / c, v % c), y->GetComponent(v / c, v % c)) << name;
+      }
+    }
+    for (int k = 0; k < vtkDataSetAttributes::NUM_ATTRIBUTES; ++k)
+    {
+      EXPECT_EQ(sa->GetAbstractAttribute(k) == x, sb->GetAbstractAttribute(k) == y)
+        << name << " role " << k;
+    }
+  }
+}
+
+/// Add a double array "Pressure", a two-component int array "Label", a float vector
+/// field "Flow" and float texture coordinates to the points of `mesh`.
+void AddPointArrays(vtkPolyData* mesh)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> pressure;
+  pressure->SetName("Pressure");
+  vtkNew<vtkIntArray> label;
+  label->SetName("Label");
+  label->SetNumberOfComponents(2);
+  vtkNew<vtkFloatArray> flow;
+  flow->SetName("Flow");
+  flow->SetNumberOfComponents(3);
+  vtkNew<vtkFloatArray> uv;
+  uv->SetName("UV");
+  uv->SetNumberOfComponents(2);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    pressure->InsertNextValue(std::sin(37.0 * p[0]) + p[1] * p[2] / 3.0);
+    const int l[2] = { static_cast<int>(i % 13), -static_cast<int>(i % 1000003) };
+    label->InsertNextTypedTuple(l);
+    const float f[3] = { static_cast<float>(-p[1]), static_cast<float>(p[0]), 0.25f };
+    flow->InsertNextTypedTuple(f);
+    const float t[2] = { static_cast<float>(p[0] + 0.5), static_cast<float>(p[2] * 2.0) };
+    uv->InsertNextTypedTuple(t);
+  }
+  mesh->GetPointData()->AddArray(pressure);
+  mesh->GetPointData()->AddArray(label);
+  mesh->GetPointData()->SetVectors(flow);
+  mesh->GetPointData()->SetTCoords(uv);
+}
+
+/// A small OFB (a sphere at a low resolution) with arrays of several types.
+vtkSmartPointer<vtkOFB> SmallOFB()
+{
+  vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 16);
+  AddPointArrays(sphere);
+  return Build(sphere, 24);
+}
+
+/// Offset of the first sample array in a file of `b`.
+size_t FirstArrayOffset(const Bytes& b)
+{
+  const vtkTypeUInt64 cells = GetLE(b, 72, 8);
+  const vtkTypeUInt64 samples = GetLE(b, 80, 8);
+  return static_cast<size_t>(vtkOFBWriter::HeaderSize + 4 * (cells + 1) + 4 + 4 * samples + 4);
+}
+}
+
+TEST(IO, CRC32KnownValue)
+{
+  EXPECT_EQ(vtkOFBWriter::UpdateCRC32(0, "123456789", 9), 0xCBF43926u);
+  const unsigned int part = vtkOFBWriter::UpdateCRC32(0, "1234", 4);
+  EXPECT_EQ(vtkOFBWriter::UpdateCRC32(part, "56789", 5), 0xCBF43926u);
+  EXPECT_EQ(vtkOFBWriter::UpdateCRC32(0, "", 0), 0u);
+}
+
+TEST(IO, RoundTripBunnyIsExact)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_TRUE(bunny);
+  AddPointArrays(bunny);
+  vtkSmartPointer<vtkOFB> ofb = Build(bunny, 256);
+  ASSERT_GT(ofb->GetNumberOfSamples(), 10000);
+  vtkPointData* sd = ofb->GetSampleData();
+  ASSERT_TRUE(sd->GetArray("Pressure"));
+  ASSERT_TRUE(sd->GetArray("Label"));
+  EXPECT_EQ(sd->GetArray("Pressure")->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(sd->GetArray("Label")->GetDataType(), VTK_INT);
+  EXPECT_TRUE(sd->GetScalars() && sd->GetScalars()->GetDataType() == VTK_UNSIGNED_CHAR);
+  EXPECT_TRUE(sd->GetNormals());
+  EXPECT_TRUE(sd->GetVectors());
+  EXPECT_TRUE(sd->GetTCoords());
+
+  TempDirectory dir;
+  const std::string path = dir.File("bunny.ofb");
+  vtkNew<ProgressCounter> writeProgress;
+  int result = 0;
+  EXPECT_EQ(WriteOFB(ofb, path, &result, writeProgress), "");
+  EXPECT_EQ(result, 1);
+  EXPECT_GT(writeProgress->Count, 2);
+  EXPECT_EQ(writeProgress->Last, 1.0);
+  EXPECT_TRUE(vtkOFBReader::CanReadFile(path.c_str()));
+
+  std::string errors;
+  vtkNew<ProgressCounter> readProgress;
+  vtkSmartPointer<vtkOFB> back = ReadOFB(path, errors, readProgress);
+  EXPECT_EQ(errors, "");
+  EXPECT_GT(readProgress->Count, 2);
+  EXPECT_EQ(readProgress->Last, 1.0);
+  ExpectSameOFB(ofb, back);
+  EXPECT_EQ(dir.List(), std::vector<std::string>{ "bunny.ofb" });
+
+  // Queries on the copy answer like the original.
+  for (vtkIdType id = 0; id < ofb->GetNumberOfSamples(); id += 4099)
+  {
+    double x[3];
+    ASSERT_TRUE(back->GetSamplePosition(id, x));
+    EXPECT_EQ(back->FindClosestSample(x), ofb->FindClosestSample(x));
+  }
+}
+
+TEST(IO, RoundTripEveryNumericTypeAndRole)
+{
+  vtkSmartPointer<vtkOFB> ofb = SmallOFB();
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  ASSERT_GT(n, 100);
+  vtkPointData* sd = ofb->GetSampleData();
+  const int types[] = { VTK_CHAR,
+    VTK_SIGNED_CHAR,
+    VTK_UNSIGNED_CHAR,
+    VTK_SHORT,
+    VTK_UNSIGNED_SHORT,
+    VTK_INT,
+    VTK_UNSIGNED_INT,
+    VTK_LONG,
+    VTK_UNSIGNED_LONG,
+    VTK_LONG_LONG,
+    VTK_UNSIGNED_LONG_LONG,
+    VTK_FLOAT,
+    VTK_DOUBLE,
+    VTK_ID_TYPE };
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  for (const int type : types)
+  {
+    auto array = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(type));
+    array->SetName((std::string("Random ") + array->GetDataTypeAsString()).c_str());
+    array->SetNumberOfComponents(1 + type % 4);
+    array->SetNumberOfTuples(n);
+    // Random bits: NaNs, infinities, denormals and negative zeros must survive.
+    unsigned char* p = static_cast<unsigned char*>(array->GetVoidPointer(0));
+    for (vtkIdType i = 0; i < array->GetNumberOfValues() * array->GetDataTypeSize(); ++i)
+    {
+      random->Next();
+      p[i] = static_cast<unsigned char>(random->GetValue() * 256.0);
+    }
+    sd->AddArray(array);
+  }
+  // A tensor (9 components), a non-contiguous (SOA) array and an unnamed array.
+  vtkNew<vtkDoubleArray> tensor;
+  tensor->SetName("Stress");
+  tensor->SetNumberOfComponents(9);
+  tensor->SetNumberOfTuples(n);
+  tensor->Fill(0.5);
+  sd->SetTensors(tensor);
+  vtkNew<vtkSOADataArrayTemplate<float>> soa;
+  soa->SetName("SOA");
+  soa->SetNumberOfComponents(3);
+  soa->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    soa->SetTuple3(i, i, -i, 0.5 * i);
+  }
+  sd->AddArray(soa);
+  vtkNew<vtkIdTypeArray> unnamed;
+  unnamed->SetNumberOfTuples(n);
+  unnamed->Fill(-7);
+  sd->AddArray(unnamed);
+
+  TempDirectory dir;
+  const std::string path = dir.File("types.ofb");
+  ASSERT_EQ(WriteOFB(ofb, path), "");
+  std::string errors;
+  vtkSmartPointer<vtkOFB> back = ReadOFB(path, errors);
+  EXPECT_EQ(errors, "");
+  ExpectSameOFB(ofb, back);
+  EXPECT_EQ(back->GetSampleData()->GetTensors(), back->GetSampleData()->GetArray("Stress"));
+}
+
+TEST(IO, EmptyRoundTrip)
+{
+  vtkNew<vtkOFB> empty;
+  TempDirectory dir;
+  const std::string path = dir.File("empty.ofb");
+  int result = 0;
+  EXPECT_EQ(WriteOFB(empty, path, &result), "");
+  EXPECT_EQ(result, 1);
+  const Bytes bytes = Load(path);
+  EXPECT_EQ(bytes.size(), static_cast<size_t>(vtkOFBWriter::HeaderSize + 8 + 4 + 8));
+  std::string errors;
+  vtkSmartPointer<vtkOFB> back = ReadOFB(path, errors);
+  EXPECT_EQ(errors, "");
+  EXPECT_EQ(back->GetNumberOfSamples(), 0);
+  EXPECT_EQ(back->GetNumberOfCells(), 0);
+  EXPECT_EQ(back->GetCellSize(), 0.0);
+  ExpectSameOFB(empty, back);
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  EXPECT_EQ(back->FindClosestSample(origin), -1);
+
+  // Every prefix of the empty file is a truncated file.
+  for (size_t size = 0; size < bytes.size(); ++size)
+  {
+    Save(path, bytes, size);
+    ExpectReadError(path, size == 0 ? "empty" : "");
+  }
+}
+
+TEST(IO, TruncatedFiles)
+{
+  vtkSmartPointer<vtkOFB> ofb = SmallOFB();
+  TempDirectory dir;
+  const std::string good = dir.File("good.ofb");
+  const std::string bad = dir.File("bad.ofb");
+  ASSERT_EQ(WriteOFB(ofb, good), "");
+  const Bytes bytes = Load(good);
+  const size_t arrays = FirstArrayOffset(bytes);
+  std::vector<size_t> sizes = { 0,
+    1,
+    7,
+    8,
+    9,
+    50,
+    95,
+    96,
+    97,
+    100,
+    arrays - 4,
+    arrays,
+    arrays + 3,
+    arrays + 40,
+    bytes.size() / 2,
+    bytes.size() - 9,
+    bytes.size() - 8,
+    bytes.size() - 1 };
+  for (size_t size = 101; size < bytes.size(); size += 1009)
+  {
+    sizes.push_back(size);
+  }
+  for (const size_t size : sizes)
+  {
+    SCOPED_TRACE("truncated to " + std::to_string(size) + " of " + std::to_string(bytes.size()));
+    Save(bad, bytes, size);
+    ExpectReadError(bad, size == 0 ? "empty" : "");
+  }
+  // Trailing bytes are rejected too.
+  Bytes longer = bytes;
+  longer.push_back(0);
+  Save(bad, longer, longer.size());
+  ExpectReadError(bad, "unexpected bytes");
+}
+
+TEST(IO, EveryBitFlipIsDetected)
+{
+  vtkSmartPointer<vtkOFB> ofb = SmallOFB();
+  TempDirectory dir;
+  const std::string good = dir.File("good.ofb");
+  const std::string bad = dir.File("bad.ofb");
+  ASSERT_EQ(WriteOFB(ofb, good), "");
+  const Bytes bytes = Load(good);
+  std::vector<size_t> positions;
+  for (size_t p = 0; p < bytes.size(); ++p)
+  {
+    // The header and the first array header in full, every 997th byte, the end in full.
+    const size_t arrays = FirstArrayOffset(bytes);
+    if (p < 160 || (p >= arrays && p < arrays + 48) || p % 997 == 0 || p + 48 > bytes.size())
+    {
+      positions.push_back(p);
+    }
+  }
+  for (const size_t p : positions)
+  {
+    SCOPED_TRACE("bit flip at byte " + std::to_string(p));
+    Bytes flipped = bytes;
+    flipped[p] ^= static_cast<unsigned char>(1u << (p * 5 % 8));
+    Save(bad, flipped, flipped.size());
+    ExpectReadError(bad);
+  }
+  // The intact file still reads.
+  std::string errors;
+  ReadOFB(good, errors);
+  EXPECT_EQ(errors, "");
+}
+
+TEST(IO, ForeignMissingAndUnnamedFiles)
+{
+  TempDirectory dir;
+  // A PNG signature and header, and a Wavefront .obj.
+  const Bytes png = { 0x89,
+    'P',
+    'N',
+    'G',
+    '\r',
+    '\n',
+    0x1a,
+    '\n',
+    0,
+    0,
+    0,
+    13,
+    'I',
+    'H',
+    'D',
+    'R',
+    0,
+    0,
+    0,
+    1,
+    0,
+    0,
+    0,
+    1,
+    8,
+    6,
+    0,
+    0,
+    0 };
+  Save(dir.File("image.png"), png, png.size());
+  ExpectReadError(dir.File("image.png"), "not an OFB file");
+  EXPECT_FALSE(vtkOFBReader::CanReadFile(dir.File("image.png").c_str()));
+  ExpectReadError(DataPath("stanford-bunny.obj"), "not an OFB file");
+  EXPECT_FALSE(vtkOFBReader::CanReadFile(DataPath("stanford-bunny.obj").c_str()));
+  // A short text file.
+  const Bytes text = { 'h', 'i', '\n' };
+  Save(dir.File("hi.txt"), text, text.size());
+  ExpectReadError(dir.File("hi.txt"), "not an OFB file");
+  // Missing file, a directory, no file name.
+  ExpectReadError(dir.File("missing.ofb"), "does not exist");
+  ExpectReadError(dir.Path, "directory");
+  ExpectReadError("", "FileName");
+  // The error names the file.
+  ExpectReadError(dir.File("missing.ofb"), dir.File("missing.ofb"));
+
+  // A reader whose previous read succeeded gives an empty output on a bad file.
+  const std::string good = dir.File("good.ofb");
+  ASSERT_EQ(WriteOFB(SmallOFB(), good), "");
+  vtkNew<vtkOFBReader> reader;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(reader);
+  reader->SetFileName(good.c_str());
+  reader->Update();
+  EXPECT_GT(reader->GetOutput()->GetNumberOfSamples(), 0);
+  reader->SetFileName(dir.File("image.png").c_str());
+  reader->Update();
+  EXPECT_NE(observer->Errors.find("not an OFB file"), std::string::npos);
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfSamples(), 0);
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(IO, ForgedCountsAreRejectedBeforeAllocating)
+{
+  TempDirectory dir;
+  const std::string good = dir.File("good.ofb");
+  const std::string bad = dir.File("bad.ofb");
+  ASSERT_EQ(WriteOFB(SmallOFB(), good), "");
+  const Bytes bytes = Load(good);
+  const vtkTypeUInt64 cells = GetLE(bytes, 72, 8);
+  const vtkTypeUInt64 samples = GetLE(bytes, 80, 8);
+  const size_t h = vtkOFBWriter::HeaderSize - 4;
+  struct Forgery
+  {
+    size_t At;
+    int Size;
+    vtkTypeUInt64 Value;
+    std::string Expected;
+  };
+  const std::vector<Forgery> header = {
+    { 80, 8, vtkTypeUInt64(1) << 60, "sample count" }, // 2^60 samples
+    { 80, 8, 0xFFFFFFFEull, "bytes" },                 // 2^32 - 2 samples
+    { 72, 8, vtkTypeUInt64(1) << 60, "cells" },        // 2^60 cells
+    { 88, 4, 0xFFFFFFFFull, "arrays" },                // 2^32 - 1 arrays
+    { 48, 8, vtkTypeUInt64(1) << 40, "dimensions" },   // a huge dimension
+    { 56, 8, 0, "dimensions" },                        // a zero dimension
+    { 40, 8, 0x7FF8000000000000ull, "frame" },         // a NaN cell size
+    { 8, 4, 2, "version 2" },                          // a newer version
+    { 12, 4, 0x04030201u, "byte-order" },              // big-endian marker
+  };
+  for (const Forgery& f : header)
+  {
+    SCOPED_TRACE("header field at " + std::to_string(f.At));
+    Bytes forged = bytes;
+    PutLE(forged, f.At, f.Value, f.Size);
+    FixCRC(forged, 0, h);
+    Save(bad, forged, forged.size());
+    const double start = vtkTimerLog::GetUniversalTime();
+    ExpectReadError(bad, f.Expected);
+    EXPECT_LT(vtkTimerLog::GetUniversalTime() - start, 2.0);
+  }
+
+  // Sections with a valid checksum but invalid content.
+  const size_t offsets = vtkOFBWriter::HeaderSize;
+  const size_t depths = offsets + 4 * (cells + 1) + 4;
+  const size_t arrays = FirstArrayOffset(bytes);
+  {
+    Bytes forged = bytes; // a decreasing offset
+    PutLE(forged, offsets + 4 * (cells / 2), samples + 1, 4);
+    FixCRC(forged, offsets, depths - 4);
+    Save(bad, forged, forged.size());
+    ExpectReadError(bad, "cell offsets");
+  }
+  {
+    Bytes forged = bytes; // a NaN depth
+    PutLE(forged, depths, 0x7FC00000u, 4);
+    FixCRC(forged, depths, arrays - 4);
+    Save(bad, forged, forged.size());
+    ExpectReadError(bad, "depths");
+  }
+  const size_t name = static_cast<size_t>(GetLE(bytes, arrays, 4));
+  const size_t fields = arrays + 4 + name;
+  const std::vector<Forgery> array = {
+    { fields, 4, 9999, "unknown data type" },             // unknown type
+    { fields + 4, 4, 3, "unknown data type" },            // wrong element size
+    { fields + 8, 4, 0x80000000u, "components" },         // 2^31 components
+    { fields + 8, 4, 0, "components" },                   // no component
+    { fields + 12, 8, samples + 1, "tuples" },            // tuples != samples
+    { fields + 12, 8, vtkTypeUInt64(1) << 62, "tuples" }, // huge tuple count
+    { fields + 20, 4, 1u << 20, "roles" },                // unknown role
+    { fields + 20, 4, 1u << 2, "active" },                // colours as normals
+    { arrays, 4, 0xFFFFFFF0u, "name length" },            // huge name
+  };
+  for (const Forgery& f : array)
+  {
+    SCOPED_TRACE("array field at " + std::to_string(f.At));
+    Bytes forged = bytes;
+    PutLE(forged, f.At, f.Value, f.Size);
+    if (f.At != arrays)
+    {
+      FixCRC(forged, arrays, fields + 24);
+    }
+    Save(bad, forged, forged.size());
+    ExpectReadError(bad, f.Expected);
+  }
+}
+
+TEST(IO, WriterErrorsAndAtomicReplace)
+{
+  TempDirectory dir;
+  const std::string path = dir.File("a.ofb");
+  vtkSmartPointer<vtkOFB> first = SmallOFB();
+  int result = 0;
+  ASSERT_EQ(WriteOFB(first, path, &result), "");
+  EXPECT_EQ(result, 1);
+  const Bytes original = Load(path);
+
+  // No file name; a directory that does not exist.
+  std::string errors = WriteOFB(first, "", &result);
+  EXPECT_NE(errors.find("FileName"), std::string::npos) << errors;
+  EXPECT_EQ(result, 0);
+  errors = WriteOFB(first, dir.File("missing/a.ofb"), &result);
+  EXPECT_NE(errors.find("missing/a.ofb"), std::string::npos) << errors;
+  EXPECT_EQ(result, 0);
+  EXPECT_FALSE(vtksys::SystemTools::FileExists(dir.File("missing")));
+
+  // An inconsistent OFB is refused and the old file is left intact.
+  vtkNew<vtkOFB> broken;
+  broken->DeepCopy(first);
+  vtkNew<vtkFloatArray> wrong;
+  wrong->SetName("Wrong");
+  wrong->SetNumberOfTuples(3);
+  broken->GetSampleData()->AddArray(wrong);
+  errors = WriteOFB(broken, path, &result);
+  EXPECT_NE(errors.find("Wrong"), std::string::npos) << errors;
+  EXPECT_EQ(result, 0);
+  EXPECT_EQ(Load(path), original);
+
+  // So is an OFB that the reader would reject (a NaN depth).
+  vtkNew<vtkOFB> nan;
+  nan->DeepCopy(first);
+  nan->GetDepths()->SetValue(0, std::numeric_limits<float>::quiet_NaN());
+  errors = WriteOFB(nan, path, &result);
+  EXPECT_NE(errors.find("inconsistent"), std::string::npos) << errors;
+  EXPECT_EQ(result, 0);
+  EXPECT_EQ(Load(path), original);
+
+  // A rename that fails (the target is a directory): temporary removed, error.
+  vtksys::SystemTools::MakeDirectory(dir.File("adir"));
+  errors = WriteOFB(first, dir.File("adir"), &result);
+  EXPECT_NE(errors.find("renam"), std::string::npos) << errors;
+  EXPECT_EQ(result, 0);
+  EXPECT_TRUE(vtksys::SystemTools::FileIsDirectory(dir.File("adir")));
+
+  // A successful second write replaces the content, and leaves no temporary file.
+  vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 16);
+  vtkSmartPointer<vtkOFB> second = Build(sphere, 40);
+  ASSERT_NE(second->GetNumberOfSamples(), first->GetNumberOfSamples());
+  ASSERT_EQ(WriteOFB(second, path, &result), "");
+  EXPECT_EQ(result, 1);
+  std::vector<std::string> names = dir.List();
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{ "a.ofb", "adir" }));
+  std::string readErrors;
+  vtkSmartPointer<vtkOFB> back = ReadOFB(path, readErrors);
+  EXPECT_EQ(readErrors, "");
+  ExpectSameOFB(second, back);
+}
+
+TEST(IO, PrintSelf)
+{
+  vtkNew<vtkOFBWriter> writer;
+  writer->SetFileName("out.ofb");
+  std::ostringstream w;
+  writer->Print(w);
+  EXPECT_NE(w.str().find("FileName: out.ofb"), std::string::npos);
+  EXPECT_NE(w.str().find("FormatVersion: 1"), std::string::npos);
+  vtkNew<vtkOFBReader> reader;
+  std::ostringstream r;
+  reader->Print(r);
+  EXPECT_NE(r.str().find("FileName: (none)"), std::string::npos);
+}

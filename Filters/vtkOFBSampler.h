@@ -5,10 +5,12 @@
  * vtkOFBSampler scan-converts the triangles of a vtkPolyData into the three grids
  * of a vtkOFB (paper "Sample-based Surface Coloring", sections 4 and 8). Each
  * triangle goes to the grid of the axis closest to its face normal and is sampled
- * at the cell centres it covers, with a top-left fill rule on a fixed-point
- * lattice (1/4096 cell) so that a shared edge gives neither a hole nor a
- * duplicate. Depth and attributes are interpolated from the triangle's plane and
- * barycentric coordinates. Cells are sorted by depth (ties by triangle id), so the
+ * at the cell centres it covers, with a top-left fill rule (in raster, y-down
+ * coordinates, as Mesa's OpenGL rasterizer) on a fixed-point lattice of 1/256
+ * cell (the subpixel precision of GPU rasterizers), so that a shared edge gives
+ * neither a hole nor a duplicate and the OpenGL backend of vtkOFBBuilder covers
+ * the same cell centres. Depth is the triangle's plane at the cell centre and
+ * attributes are interpolated from barycentric coordinates. Cells are sorted by depth (ties by triangle id), so the
  * result does not depend on the number of threads.
  *
  * Sample arrays: "Colors" (RGBA unsigned char, the paint: the input's point

@@ -21,7 +21,7 @@
 namespace
 {
 /// Sub-cell bits of the fixed-point lattice that decides coverage.
-constexpr int SubBits = 12;
+constexpr int SubBits = 8;
 constexpr double SubScale = static_cast<double>(1 << SubBits);
 
 /// The frame as the rasterizer needs it.
@@ -111,7 +111,10 @@ struct TriangleSetup
   }
 
   /**
-   * Call f(cell, iu, iv) for each cell centre covered, with a top-left rule.
+   * Call f(cell, iu, iv) for each cell centre covered. A centre exactly on an edge
+   * belongs to the triangle for which that edge is a left or bottom edge: the
+   * top-left rule of raster (y-down) coordinates, which is the rule Mesa's OpenGL
+   * rasterizer applies, so that the OpenGL backend covers the same centres.
    */
   template <typename F>
   void Rasterize(const Frame& frame, F&& f) const
@@ -134,7 +137,7 @@ struct TriangleSetup
       return;
     }
     // Edge i runs from vertex i+1 to vertex i+2; inside is E >= 0 (strictly > 0
-    // on edges that are not top-left).
+    // on edges that are not left or bottom edges).
     int64_t dx[3], dy[3], row[3];
     for (int i = 0; i < 3; ++i)
     {
@@ -142,9 +145,9 @@ struct TriangleSetup
       const int k = (i + 2) % 3;
       dx[i] = this->X[k] - this->X[j];
       dy[i] = this->Y[k] - this->Y[j];
-      const bool topLeft = dy[i] < 0 || (dy[i] == 0 && dx[i] < 0);
+      const bool owned = dy[i] < 0 || (dy[i] == 0 && dx[i] > 0);
       row[i] = dx[i] * (v0 * one - this->Y[j]) - dy[i] * (u0 * one - this->X[j]) -
-        (topLeft ? 0 : 1);
+        (owned ? 0 : 1);
     }
     const vtkIdType base = frame.CellBase[a];
     for (int64_t iv = v0; iv <= v1; ++iv)
@@ -362,10 +365,12 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
               offsets[cell] + __atomic_sub_fetch(C + cell, 1u, __ATOMIC_RELAXED);
             double b1 = ts.A1 * iu + ts.B1 * iv + ts.C1;
             double b2 = ts.A2 * iu + ts.B2 * iv + ts.C2;
-            // Cell centres within the fixed-point lattice's error of an edge: clamp.
+            // The depth of the triangle's plane at the cell centre, even for centres
+            // a lattice step outside the triangle (the same point as its neighbour's);
+            // the attributes' barycentrics are clamped to the triangle.
+            depth[slot] = static_cast<float>(ts.D0 + b1 * (ts.D1 - ts.D0) + b2 * (ts.D2 - ts.D0));
             b1 = std::min(std::max(b1, 0.0), 1.0);
             b2 = std::min(std::max(b2, 0.0), 1.0 - b1);
-            depth[slot] = static_cast<float>(ts.D0 + b1 * (ts.D1 - ts.D0) + b2 * (ts.D2 - ts.D0));
             cellOf[slot] = static_cast<vtkTypeUInt32>(cell);
             triP[slot] = static_cast<vtkTypeUInt32>(t);
             w1P[slot] = static_cast<float>(b1);

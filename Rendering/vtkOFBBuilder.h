@@ -7,12 +7,22 @@
  * of backend:
  *
  * - `CPU`: vtkOFBSampler's multi-threaded scan conversion (vtkSMPTools).
- * - `OpenGL`: rasterization in the context of a VTK render window (SetRenderWindow).
- *   Not available in this version: asking for it falls back to the CPU with a
- *   warning.
- * - `Auto` (default): the OpenGL backend on hardware renderers when available,
- *   else the CPU.
+ * - `OpenGL`: rasterization in the context of a VTK render window (SetRenderWindow,
+ *   or an offscreen window the builder makes itself when none is set). A geometry
+ *   shader routes each triangle to the viewport of its grid in a framebuffer
+ *   without attachments; the fragment shader counts samples per cell with SSBO
+ *   atomics; a compute shader scans the counts; a second draw fills depths,
+ *   triangles and barycentric coordinates; a compute shader sorts each cell by
+ *   depth (no limit on depth complexity). The sample arrays are then interpolated
+ *   from the barycentric coordinates by the same code as the CPU backend. Needs
+ *   OpenGL 4.3 (IsSupported). GL state is restored afterwards.
+ * - `Auto` (default): OpenGL when a render window is set whose context supports it
+ *   and is a hardware renderer; the CPU on software renderers (llvmpipe), where
+ *   the multi-threaded CPU sampler is faster, and when no window is set.
  *
+ * Whenever OpenGL was asked for and cannot be used (no display, an old context, a
+ * frame larger than the context's viewports, a GPU allocation failure), the
+ * builder warns and builds on the CPU: it never silently produces nothing.
  * GetLastBackend() tells which backend built the current output.
  *
  * @sa vtkOFBSampler vtkOFB
@@ -24,6 +34,7 @@
 #include "vtkOFBRenderingModule.h" // for export macro
 #include "vtkOFBSampler.h"
 
+class vtkOpenGLRenderWindow;
 class vtkRenderWindow;
 
 class VTKOFBRENDERING_EXPORT vtkOFBBuilder : public vtkOFBSampler
@@ -65,6 +76,12 @@ public:
   vtkGetMacro(LastBackend, int);
 
   /**
+   * Whether the context of `renWin` can run the OpenGL backend (OpenGL 4.3 with
+   * compute shaders, SSBOs and 3 viewports). Makes the context current.
+   */
+  static bool IsSupported(vtkRenderWindow* renWin);
+
+  /**
    * Name of a backend value.
    */
   static const char* GetBackendAsString(int backend);
@@ -74,6 +91,14 @@ protected:
   ~vtkOFBBuilder() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /**
+   * Build with OpenGL in `window`'s context. Returns false (output empty) when the
+   * caller should fall back to the CPU, true when done, including on invalid input
+   * (reported with an error, output empty).
+   */
+  bool BuildWithOpenGL(vtkOpenGLRenderWindow* window, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector);
 
   int Backend;
   int LastBackend;

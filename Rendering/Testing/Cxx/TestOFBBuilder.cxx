@@ -2,11 +2,19 @@
 #include "vtkOFBTestUtilities.h"
 
 #include "vtkOFBBuilder.h"
+#include "vtkActor.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <sstream>
+#include <string>
 
 using namespace vtkofbtest;
 
@@ -28,22 +36,76 @@ TEST(Builder, CPUBackendMatchesTheSampler)
 
 TEST(Builder, OpenGLRequestFallsBackWithAWarning)
 {
+  // No render window and no display to make one: the CPU builds, with a warning.
   vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 32);
+  const char* display = std::getenv("DISPLAY");
+  const std::string saved = display ? display : "";
+  unsetenv("DISPLAY");
   vtkNew<vtkOFBBuilder> builder;
   MessageObserver* observer = MessageObserver::New();
   observer->Watch(builder);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  builder->SetRenderWindow(window);
-  EXPECT_EQ(builder->GetRenderWindow(), window.GetPointer());
   builder->SetInputData(sphere);
   builder->SetResolution(64);
   builder->SetBackendToOpenGL();
   builder->Update();
-  EXPECT_NE(observer->Warnings.find("CPU"), std::string::npos);
+  if (display)
+  {
+    setenv("DISPLAY", saved.c_str(), 1);
+  }
+  EXPECT_NE(observer->Warnings.find("building on the CPU"), std::string::npos);
   EXPECT_EQ(builder->GetLastBackend(), vtkOFBBuilder::CPU);
   EXPECT_GT(builder->GetOutput()->GetNumberOfSamples(), 0);
   observer->Delete();
+}
+
+TEST(Builder, OpenGLBuildLeavesTheWindowsRenderingUnchanged)
+{
+  vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 32);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(sphere);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetViewport(0.1, 0.2, 0.9, 0.8);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(120, 100);
+  window->AddRenderer(renderer);
+  window->Render();
+  if (!vtkOFBBuilder::IsSupported(window))
+  {
+    GTEST_SKIP() << "this machine's OpenGL cannot run the OpenGL backend";
+  }
+  auto grab = [&]()
+  {
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> capture;
+    capture->SetInput(window);
+    capture->ReadFrontBufferOff();
+    capture->Update();
+    vtkSmartPointer<vtkImageData> image = capture->GetOutput();
+    return image;
+  };
+  vtkSmartPointer<vtkImageData> before = grab();
+  vtkNew<vtkOFBBuilder> builder;
+  builder->SetInputData(sphere);
+  builder->SetResolution(128);
+  builder->SetRenderWindow(window);
+  builder->SetBackendToOpenGL();
+  builder->Update();
+  EXPECT_EQ(builder->GetLastBackend(), vtkOFBBuilder::OpenGL);
+  EXPECT_GT(builder->GetOutput()->GetNumberOfSamples(), 0);
+  vtkSmartPointer<vtkImageData> after = grab();
+  vtkDataArray* a = before->GetPointData()->GetScalars();
+  vtkDataArray* b = after->GetPointData()->GetScalars();
+  ASSERT_EQ(a->GetNumberOfValues(), b->GetNumberOfValues());
+  vtkIdType different = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  {
+    different += a->GetVariantValue(i) != b->GetVariantValue(i);
+  }
+  EXPECT_EQ(different, 0) << "the build changed GL state that the renderer relies on";
 }
 
 TEST(Builder, BackendIsClampedAndNamed)

@@ -1,0 +1,144 @@
+/**
+ * @class   vtkOFBPyramid
+ * @brief   Mipmap stack of a vtkOFB: coarser OFBs whose sample arrays are filtered by IDW
+ *
+ * vtkOFBPyramid builds the OFB mipmap hierarchy of the paper "Sample-based Surface
+ * Coloring" (section 4.2). Level 0 is the OFB given with SetInputOFB (not copied).
+ * Level k (k >= 1) samples the surface given with SetSurface with vtkOFBSampler at half
+ * the resolution of level k-1, and every sample array of level k is computed from the
+ * samples of level k-1 by inverse-distance weighting (Resample), so that colours are
+ * low-pass filtered level by level. Levels stop at MinimumResolution cells on the longest
+ * side or at MaximumNumberOfLevels.
+ *
+ * Update() rebuilds the levels when the surface, the structure of level 0 or a setting
+ * changed, and recomputes their arrays when level 0 was modified (its MTime) since the
+ * last computation; UpdateArrays() forces the latter. Both run on the CPU
+ * (vtkSMPTools).
+ *
+ * @sa vtkOFB vtkOFBSampler vtkOFBPolyDataMapper
+ */
+
+#ifndef vtkOFBPyramid_h
+#define vtkOFBPyramid_h
+
+#include "vtkObject.h"
+#include "vtkOFBFiltersModule.h" // for export macro
+#include "vtkSmartPointer.h"     // for members
+#include "vtkTimeStamp.h"        // for members
+
+#include <vector> // for Levels
+
+class vtkOFB;
+class vtkPolyData;
+
+class VTKOFBFILTERS_EXPORT vtkOFBPyramid : public vtkObject
+{
+public:
+  static vtkOFBPyramid* New();
+  vtkTypeMacro(vtkOFBPyramid, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Level 0 of the pyramid (kept by reference, not copied). Default none.
+   */
+  void SetInputOFB(vtkOFB* ofb);
+  vtkGetObjectMacro(InputOFB, vtkOFB);
+  ///@}
+
+  ///@{
+  /**
+   * The surface that the coarser levels sample (normally the one level 0 was built from).
+   * Default none.
+   */
+  void SetSurface(vtkPolyData* surface);
+  vtkGetObjectMacro(Surface, vtkPolyData);
+  ///@}
+
+  ///@{
+  /**
+   * Most levels, level 0 included (1..16, default 8).
+   */
+  vtkSetClampMacro(MaximumNumberOfLevels, int, 1, 16);
+  vtkGetMacro(MaximumNumberOfLevels, int);
+  ///@}
+
+  ///@{
+  /**
+   * Coarsest resolution: no level has fewer cells than this on its longest side
+   * (3..65536, default 8).
+   */
+  vtkSetClampMacro(MinimumResolution, int, 3, 65536);
+  vtkGetMacro(MinimumResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Radius of the IDW filter that computes level k from level k-1, in cells of level k
+   * (default 1, that is two cells of the finer level; at least sqrt(3) cells of level
+   * k-1 are always searched so that every sample finds a neighbour).
+   */
+  vtkSetClampMacro(FilterRadius, double, 0.5, 8.0);
+  vtkGetMacro(FilterRadius, double);
+  ///@}
+
+  /**
+   * Bring the levels up to date. Returns false (with an error) when there is no input
+   * OFB or surface, or a level cannot be sampled; level 0 alone is then available.
+   */
+  bool Update();
+
+  /**
+   * Recompute the sample arrays of levels 1.. from level 0 now.
+   */
+  void UpdateArrays();
+
+  /**
+   * Number of levels, level 0 included (0 without an input OFB).
+   */
+  int GetNumberOfLevels() const;
+
+  /**
+   * Level `k` (0 is the input OFB), or null.
+   */
+  vtkOFB* GetLevel(int k) const;
+
+  ///@{
+  /**
+   * When the levels were last rebuilt, and when their arrays were last computed.
+   */
+  vtkMTimeType GetStructureTime() const { return this->StructureTime.GetMTime(); }
+  vtkMTimeType GetArraysTime() const { return this->ArraysTime.GetMTime(); }
+  ///@}
+
+  /**
+   * Transfer every sample array of `source` to the samples of `target` by inverse-
+   * distance weighting with Shepard weights ((r - t) / (r t))^2 over the source samples
+   * within `radius` (world units) whose normal does not face away from the target
+   * sample's normal; a target sample with no such neighbour takes its closest source
+   * sample within 2 `radius`, else keeps zeros. Arrays of the target with the same name
+   * are replaced. Integer arrays are rounded. Returns false on invalid arguments.
+   */
+  static bool Resample(vtkOFB* source, vtkOFB* target, double radius);
+
+protected:
+  vtkOFBPyramid();
+  ~vtkOFBPyramid() override;
+
+  vtkOFB* InputOFB;
+  vtkPolyData* Surface;
+  int MaximumNumberOfLevels;
+  int MinimumResolution;
+  double FilterRadius;
+
+  std::vector<vtkSmartPointer<vtkOFB>> Levels; // levels 1..
+  vtkTimeStamp StructureTime;
+  vtkTimeStamp ArraysTime;
+  vtkOFB* LastInputOFB; // compared only, never dereferenced
+
+private:
+  vtkOFBPyramid(const vtkOFBPyramid&) = delete;
+  void operator=(const vtkOFBPyramid&) = delete;
+};
+
+#endif

@@ -1,0 +1,459 @@
+#include "vtkOFBShaderStorage.h"
+
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkOFB.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkScalarsToColors.h"
+#include "vtkShaderProgram.h"
+#include "vtkTypeUInt32Array.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace
+{
+// Binding points of the buffers: away from the low points that other code binds.
+constexpr unsigned int BindingBase = 8;
+
+// Bytes per sample of the per-sample buffers.
+size_t BytesPerSample(int id)
+{
+  switch (id)
+  {
+    case vtkOFBShaderStorage::Normals:
+      return 3 * sizeof(float);
+    default:
+      return 4;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkOFBShaderStorage::vtkOFBShaderStorage()
+{
+  for (int i = 0; i < NumberOfBuffers; ++i)
+  {
+    this->Handles[i] = 0;
+    this->Sizes[i] = 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFBShaderStorage::~vtkOFBShaderStorage() = default;
+
+//------------------------------------------------------------------------------
+bool vtkOFBShaderStorage::IsSupported(vtkOpenGLRenderWindow* window, std::string& why)
+{
+  if (!window)
+  {
+    why = "the render window is not an OpenGL one";
+    return false;
+  }
+  window->MakeCurrent();
+  if (!window->IsCurrent())
+  {
+    why = "the render window has no current OpenGL context";
+    return false;
+  }
+  if (!(GLEW_VERSION_4_3 || GLEW_ARB_shader_storage_buffer_object))
+  {
+    why = "the OpenGL context offers neither OpenGL 4.3 nor ARB_shader_storage_buffer_object";
+    return false;
+  }
+  GLint blocks = 0;
+  glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &blocks);
+  GLint bindings = 0;
+  glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
+  if (blocks < NumberOfBuffers || bindings < static_cast<GLint>(BindingBase + NumberOfBuffers))
+  {
+    why = "the OpenGL context offers too few fragment shader storage blocks (" +
+      std::to_string(blocks) + ") or bindings (" + std::to_string(bindings) + ")";
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkOFBShaderStorage::GetBlockName(int id)
+{
+  static const char* names[NumberOfBuffers] = { "ofbOffsetsBlock", "ofbDepthsBlock",
+    "ofbColorsBlock", "ofbScalarsBlock", "ofbIntensityBlock", "ofbNormalsBlock", "ofbLUTBlock" };
+  return (id >= 0 && id < NumberOfBuffers) ? names[id] : "";
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkOFBShaderStorage::GetBindingPoint(int id)
+{
+  return BindingBase + static_cast<unsigned int>(id);
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkOFBShaderStorage::GetArray(vtkOFB* ofb, int id, const Selection& selection)
+{
+  vtkPointData* pd = ofb ? ofb->GetSampleData() : nullptr;
+  if (!pd)
+  {
+    return nullptr;
+  }
+  vtkDataArray* array = nullptr;
+  switch (id)
+  {
+    case Colors:
+    {
+      array = pd->GetArray("Colors");
+      if (!array)
+      {
+        array = pd->GetScalars();
+      }
+      vtkUnsignedCharArray* uc = vtkUnsignedCharArray::SafeDownCast(array);
+      return (uc && (uc->GetNumberOfComponents() == 3 || uc->GetNumberOfComponents() == 4))
+        ? uc
+        : nullptr;
+    }
+    case Scalars:
+      array = selection.ScalarName.empty() ? nullptr : pd->GetArray(selection.ScalarName.c_str());
+      if (array && selection.ScalarComponent >= array->GetNumberOfComponents())
+      {
+        return nullptr;
+      }
+      return array;
+    case Intensity:
+      array =
+        selection.IntensityName.empty() ? nullptr : pd->GetArray(selection.IntensityName.c_str());
+      return array;
+    case Normals:
+      array = pd->GetArray("Normals");
+      if (!array)
+      {
+        array = pd->GetNormals();
+      }
+      return (array && array->GetNumberOfComponents() == 3) ? array : nullptr;
+    default:
+      return nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBShaderStorage::Allocate(int id, size_t bytes)
+{
+  bytes = std::max<size_t>(bytes, 16); // an empty SSBO binding is an error
+  if (this->Handles[id] && this->Sizes[id] == bytes)
+  {
+    return true;
+  }
+  if (!this->Handles[id])
+  {
+    glGenBuffers(1, &this->Handles[id]);
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handles[id]);
+  while (glGetError() != GL_NO_ERROR)
+  {
+  }
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_DRAW);
+  const bool ok = glGetError() == GL_NO_ERROR;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  this->Sizes[id] = ok ? bytes : 0;
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::Upload(int id, size_t offset, size_t bytes, const void* data)
+{
+  if (bytes == 0 || !this->Handles[id] || offset + bytes > this->Sizes[id])
+  {
+    return;
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handles[id]);
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
+    static_cast<GLsizeiptr>(bytes), data);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::UploadArray(int id, vtkDataArray* array, const Selection& selection,
+  vtkIdType first, vtkIdType last, vtkIdType base)
+{
+  if (!array || first >= last)
+  {
+    return;
+  }
+  const size_t n = static_cast<size_t>(last - first);
+  const size_t bps = BytesPerSample(id);
+  const size_t offset = static_cast<size_t>(base + first) * bps;
+  const int nc = array->GetNumberOfComponents();
+  if (id == Colors)
+  {
+    auto* colors = static_cast<vtkUnsignedCharArray*>(array);
+    if (nc == 4)
+    {
+      // RGBA bytes are already the packed little-endian uint the shader unpacks.
+      this->Upload(id, offset, n * 4, colors->GetPointer(4 * first));
+      return;
+    }
+    this->Scratch.resize(n * 4);
+    const unsigned char* src = colors->GetPointer(3 * first);
+    for (size_t i = 0; i < n; ++i)
+    {
+      std::memcpy(&this->Scratch[4 * i], src + 3 * i, 3);
+      this->Scratch[4 * i + 3] = 255;
+    }
+    this->Upload(id, offset, n * 4, this->Scratch.data());
+    return;
+  }
+  this->Scratch.resize(n * bps);
+  float* dst = reinterpret_cast<float*>(this->Scratch.data());
+  if (id == Normals)
+  {
+    for (size_t i = 0; i < n; ++i)
+    {
+      double t[3];
+      array->GetTuple(first + static_cast<vtkIdType>(i), t);
+      dst[3 * i] = static_cast<float>(t[0]);
+      dst[3 * i + 1] = static_cast<float>(t[1]);
+      dst[3 * i + 2] = static_cast<float>(t[2]);
+    }
+  }
+  else
+  {
+    const int component = (id == Scalars) ? selection.ScalarComponent : 0;
+    for (size_t i = 0; i < n; ++i)
+    {
+      const vtkIdType t = first + static_cast<vtkIdType>(i);
+      if (component < 0 && nc > 1)
+      {
+        double sum = 0.0;
+        for (int c = 0; c < nc; ++c)
+        {
+          const double v = array->GetComponent(t, c);
+          sum += v * v;
+        }
+        dst[i] = static_cast<float>(std::sqrt(sum));
+      }
+      else
+      {
+        dst[i] = static_cast<float>(array->GetComponent(t, std::max(component, 0)));
+      }
+    }
+  }
+  this->Upload(id, offset, n * bps, dst);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBShaderStorage::UploadAll(
+  const std::vector<vtkOFB*>& levels, const Selection& selection, std::string& error)
+{
+  this->LevelCellBase.clear();
+  this->LevelSampleBase.clear();
+  this->LevelDims.clear();
+  vtkIdType totalCells = 0;
+  vtkIdType totalSamples = 0;
+  for (vtkOFB* ofb : levels)
+  {
+    const vtkIdType* dims = ofb->GetDimensions();
+    for (int a = 0; a < 3; ++a)
+    {
+      this->LevelCellBase.push_back(static_cast<int>(totalCells + ofb->GetGridCellBase(a)));
+      this->LevelDims.push_back(static_cast<int>(dims[a]));
+    }
+    this->LevelSampleBase.push_back(static_cast<int>(totalSamples));
+    totalCells += ofb->GetNumberOfCells() + 1;
+    totalSamples += ofb->GetNumberOfSamples();
+  }
+  if (totalCells > VTK_INT_MAX || totalSamples > VTK_INT_MAX)
+  {
+    error = "the OFB is too large for 32-bit indices in the shader";
+    return -1;
+  }
+  const size_t ns = static_cast<size_t>(totalSamples);
+  bool ok = this->Allocate(Offsets, static_cast<size_t>(totalCells) * 4) &&
+    this->Allocate(Depths, ns * 4);
+  const int arrays[4] = { Colors, Scalars, Intensity, Normals };
+  const bool wanted[4] = { selection.Colors, !selection.ScalarName.empty(),
+    !selection.IntensityName.empty(), selection.Normals };
+  for (int k = 0; k < 4 && ok; ++k)
+  {
+    if (wanted[k])
+    {
+      ok = this->Allocate(arrays[k], ns * BytesPerSample(arrays[k]));
+    }
+    else if (this->Handles[arrays[k]])
+    {
+      glDeleteBuffers(1, &this->Handles[arrays[k]]);
+      this->Handles[arrays[k]] = 0;
+      this->Sizes[arrays[k]] = 0;
+    }
+  }
+  if (!ok)
+  {
+    error = "could not allocate " + std::to_string(ns) + " samples of GPU memory";
+    this->ReleaseGraphicsResources();
+    return -1;
+  }
+  size_t cellOffset = 0;
+  for (size_t l = 0; l < levels.size(); ++l)
+  {
+    vtkOFB* ofb = levels[l];
+    const vtkIdType nc = ofb->GetNumberOfCells() + 1;
+    this->Upload(Offsets, cellOffset * 4, static_cast<size_t>(nc) * 4,
+      ofb->GetCellOffsets()->GetPointer(0));
+    cellOffset += static_cast<size_t>(nc);
+    // Depths in cells of the level.
+    const vtkIdType n = ofb->GetNumberOfSamples();
+    const float* depths = ofb->GetDepths()->GetPointer(0);
+    const double inv = 1.0 / ofb->GetCellSize();
+    std::vector<float> scaled(static_cast<size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      scaled[i] = static_cast<float>(depths[i] * inv);
+    }
+    this->Upload(Depths, static_cast<size_t>(this->LevelSampleBase[l]) * 4,
+      static_cast<size_t>(n) * 4, scaled.data());
+    for (int k = 0; k < 4; ++k)
+    {
+      if (wanted[k])
+      {
+        this->UploadArray(arrays[k], GetArray(ofb, arrays[k], selection), selection, 0, n,
+          this->LevelSampleBase[l]);
+      }
+    }
+  }
+  vtkOpenGLCheckErrorMacro("failed after uploading the OFB");
+  return totalSamples;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels, int level,
+  const Selection& selection, vtkIdTypeArray* ranges)
+{
+  if (level < 0 || level >= static_cast<int>(levels.size()) ||
+    level >= static_cast<int>(this->LevelSampleBase.size()) || !ranges)
+  {
+    return 0;
+  }
+  vtkOFB* ofb = levels[level];
+  const int arrays[4] = { Colors, Scalars, Intensity, Normals };
+  const bool wanted[4] = { selection.Colors, !selection.ScalarName.empty(),
+    !selection.IntensityName.empty(), selection.Normals };
+  vtkDataArray* sources[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    sources[k] = wanted[k] ? GetArray(ofb, arrays[k], selection) : nullptr;
+  }
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  vtkIdType count = 0;
+  for (vtkIdType r = 0; r < ranges->GetNumberOfTuples(); ++r)
+  {
+    const vtkIdType first = std::max<vtkIdType>(0, ranges->GetTypedComponent(r, 0));
+    const vtkIdType last = std::min(n, ranges->GetTypedComponent(r, 1));
+    if (first >= last)
+    {
+      continue;
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      this->UploadArray(
+        arrays[k], sources[k], selection, first, last, this->LevelSampleBase[level]);
+    }
+    count += last - first;
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::UploadLookupTable(vtkScalarsToColors* lut, const double range[2])
+{
+  if (!lut || !this->Allocate(LUT, LUTSize * 4 * sizeof(float)))
+  {
+    return;
+  }
+  std::vector<float> table(LUTSize * 4);
+  for (int i = 0; i < LUTSize; ++i)
+  {
+    const double v = range[0] + (range[1] - range[0]) * i / (LUTSize - 1.0);
+    double rgb[3];
+    lut->GetColor(v, rgb);
+    table[4 * i] = static_cast<float>(rgb[0]);
+    table[4 * i + 1] = static_cast<float>(rgb[1]);
+    table[4 * i + 2] = static_cast<float>(rgb[2]);
+    table[4 * i + 3] = static_cast<float>(lut->GetOpacity(v));
+  }
+  this->Upload(LUT, 0, table.size() * sizeof(float), table.data());
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::Bind()
+{
+  for (int i = 0; i < NumberOfBuffers; ++i)
+  {
+    if (this->Handles[i])
+    {
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GetBindingPoint(i), this->Handles[i]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::Unbind()
+{
+  for (int i = 0; i < NumberOfBuffers; ++i)
+  {
+    if (this->Handles[i])
+    {
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GetBindingPoint(i), 0);
+    }
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::SetBlockBindings(vtkShaderProgram* program)
+{
+  if (!program || program->GetHandle() == 0)
+  {
+    return;
+  }
+  const GLuint handle = static_cast<GLuint>(program->GetHandle());
+  for (int i = 0; i < NumberOfBuffers; ++i)
+  {
+    const GLuint index = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, GetBlockName(i));
+    if (index != GL_INVALID_INDEX)
+    {
+      glShaderStorageBlockBinding(handle, index, GetBindingPoint(i));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+size_t vtkOFBShaderStorage::GetMemorySize() const
+{
+  size_t total = 0;
+  for (int i = 0; i < NumberOfBuffers; ++i)
+  {
+    total += this->Sizes[i];
+  }
+  return total;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::ReleaseGraphicsResources()
+{
+  for (int i = 0; i < NumberOfBuffers; ++i)
+  {
+    if (this->Handles[i] && this->Window)
+    {
+      glDeleteBuffers(1, &this->Handles[i]);
+    }
+    this->Handles[i] = 0;
+    this->Sizes[i] = 0;
+  }
+  this->LevelCellBase.clear();
+  this->LevelSampleBase.clear();
+  this->LevelDims.clear();
+}

@@ -23,7 +23,7 @@ vtkOFBPyramid::vtkOFBPyramid()
   , Surface(nullptr)
   , MaximumNumberOfLevels(8)
   , MinimumResolution(8)
-  , FilterRadius(1.0)
+  , FilterRadius(1.5)
   , LastInputOFB(nullptr)
 {
 }
@@ -228,11 +228,10 @@ bool vtkOFBPyramid::Resample(vtkOFB* source, vtkOFB* target, double radius)
           closestD2 = d2;
           closest = j;
         }
-        if (d2 <= r * r)
+        if (d2 < r * r)
         {
-          const double t = std::max(std::sqrt(d2), 1e-6 * r);
-          const double w = (r - t) / (r * t);
-          accumulate(j, w * w + 1e-30);
+          const double q = 1.0 - d2 / (r * r);
+          accumulate(j, q * q);
         }
       });
       if (wsum <= 0.0 && closest >= 0)

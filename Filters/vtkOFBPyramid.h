@@ -6,7 +6,7 @@
  * Coloring" (section 4.2). Level 0 is the OFB given with SetInputOFB (not copied).
  * Level k (k >= 1) samples the surface given with SetSurface with vtkOFBSampler at half
  * the resolution of level k-1, and every sample array of level k is computed from the
- * samples of level k-1 by inverse-distance weighting (Resample), so that colours are
+ * samples of level k-1 by distance-weighted averaging (Resample), so that colours are
  * low-pass filtered level by level. Levels stop at MinimumResolution cells on the longest
  * side or at MaximumNumberOfLevels.
  *
@@ -74,9 +74,9 @@ public:
 
   ///@{
   /**
-   * Radius of the IDW filter that computes level k from level k-1, in cells of level k
-   * (default 1, that is two cells of the finer level; at least sqrt(3) cells of level
-   * k-1 are always searched so that every sample finds a neighbour).
+   * Radius of the filter that computes level k from level k-1, in cells of level k
+   * (default 1.5, that is three cells of the finer level; at least sqrt(3) cells of
+   * level k-1 are always used so that every sample finds a neighbour).
    */
   vtkSetClampMacro(FilterRadius, double, 0.5, 8.0);
   vtkGetMacro(FilterRadius, double);
@@ -112,12 +112,15 @@ public:
   ///@}
 
   /**
-   * Transfer every sample array of `source` to the samples of `target` by inverse-
-   * distance weighting with Shepard weights ((r - t) / (r t))^2 over the source samples
-   * within `radius` (world units) whose normal does not face away from the target
-   * sample's normal; a target sample with no such neighbour takes its closest source
-   * sample within 2 `radius`, else keeps zeros. Arrays of the target with the same name
-   * are replaced. Integer arrays are rounded. Returns false on invalid arguments.
+   * Transfer every sample array of `source` to the samples of `target` by distance-
+   * weighted averaging over the source samples within `radius` (world units) whose
+   * normal does not face away from the target sample's normal, with the smooth compact
+   * weight (1 - t^2 / r^2)^2 of the distance t (a low-pass filter: unlike Shepard's
+   * 1/t^p weights it does not favour the nearest sample, so patterns finer than the
+   * target average out instead of aliasing). A target sample with no such neighbour takes
+   * its closest source sample within 2 `radius`, else keeps zeros. Arrays of the target
+   * with the same name are replaced. Integer arrays are rounded. Returns false on
+   * invalid arguments.
    */
   static bool Resample(vtkOFB* source, vtkOFB* target, double radius);
 

@@ -1,0 +1,401 @@
+// GoogleTest units of vtkOFBPolyDataMapper: colour read-back, incremental uploads, colour
+// sources, several viewports, GL state, bad input and PrintSelf. They open render windows
+// (run under xvfb-run).
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkOFB.h"
+#include "vtkOFBMapperTestHelpers.h"
+#include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBSampler.h"
+#include "vtkOFBTestUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtk_glew.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <sstream>
+
+namespace
+{
+using Pixel = std::array<int, 3>;
+
+struct Scene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkOFBPolyDataMapper> Mapper;
+  vtkSmartPointer<vtkOFB> OFB;
+  vtkSmartPointer<vtkPolyData> Surface;
+
+  Scene(int ofbResolution = 128, int size = 100)
+  {
+    this->Surface = vtkofbtest::MakeSphere(1.0, 24);
+    this->OFB = vtkofbtest::Build(this->Surface, ofbResolution);
+    this->Mapper->SetInputData(this->Surface);
+    this->Mapper->SetOFB(this->OFB);
+    this->Actor->SetMapper(this->Mapper);
+    this->Renderer->AddActor(this->Actor);
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Window->SetSize(size, size);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->ResetCamera();
+  }
+
+  void Fill(unsigned char r, unsigned char g, unsigned char b)
+  {
+    vtkofbtest::Paint(this->OFB, [&](const double*, unsigned char rgba[4]) {
+      rgba[0] = r;
+      rgba[1] = g;
+      rgba[2] = b;
+      rgba[3] = 255;
+    });
+  }
+};
+
+Pixel ReadPixel(vtkRenderWindow* window, int x, int y)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  const unsigned char* p =
+    static_cast<unsigned char*>(grab->GetOutput()->GetScalarPointer(x, y, 0));
+  return { p[0], p[1], p[2] };
+}
+
+Pixel Centre(vtkRenderWindow* window)
+{
+  const int* size = window->GetSize();
+  return ReadPixel(window, size[0] / 2, size[1] / 2);
+}
+
+bool IsRed(const Pixel& p)
+{
+  return p[0] > 150 && p[1] < 40 && p[2] < 40;
+}
+}
+
+TEST(OFBPolyDataMapper, AllRedOFBGivesARedCentrePixel)
+{
+  Scene scene;
+  scene.Fill(255, 0, 0);
+  scene.Window->Render();
+  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  const Pixel p = Centre(scene.Window);
+  EXPECT_TRUE(IsRed(p)) << p[0] << " " << p[1] << " " << p[2];
+}
+
+TEST(OFBPolyDataMapper, EveryLookupModeReadsTheOFB)
+{
+  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::Mipmapped; ++mode)
+  {
+    Scene scene;
+    scene.Fill(0, 0, 255);
+    scene.Mapper->SetLookupMode(mode);
+    scene.Window->Render();
+    EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+    const Pixel p = Centre(scene.Window);
+    EXPECT_TRUE(p[2] > 150 && p[0] < 40 && p[1] < 40)
+      << vtkOFBPolyDataMapper::GetLookupModeAsString(mode) << ": " << p[0] << " " << p[1] << " "
+      << p[2];
+  }
+}
+
+TEST(OFBPolyDataMapper, PaintingUploadsOnlyTheModifiedSamples)
+{
+  Scene scene(256);
+  scene.Fill(255, 0, 0);
+  scene.Window->Render();
+  const vtkIdType n = scene.OFB->GetNumberOfSamples();
+  EXPECT_EQ(scene.Mapper->GetLastUploadedSampleCount(), n);
+  scene.Window->Render();
+  EXPECT_EQ(scene.Mapper->GetLastUploadedSampleCount(), 0);
+
+  // One stroke: 100 samples, contiguous.
+  vtkUnsignedCharArray* colors = vtkofbtest::GetColors(scene.OFB);
+  const unsigned char green[4] = { 0, 255, 0, 255 };
+  for (vtkIdType i = 1000; i < 1100; ++i)
+  {
+    colors->SetTypedTuple(i, green);
+  }
+  scene.OFB->MarkSamplesModified(1000, 1100);
+  scene.OFB->Modified();
+  scene.Window->Render();
+  EXPECT_EQ(scene.Mapper->GetLastUploadedSampleCount(), 100);
+  EXPECT_LT(100 * 100, n) << "the OFB should be much larger than the stroke";
+
+  // Another stroke: 100 scattered samples, one dab each.
+  for (vtkIdType k = 0; k < 100; ++k)
+  {
+    const vtkIdType i = (k * 7919) % n;
+    colors->SetTypedTuple(i, green);
+    scene.OFB->MarkSamplesModified(i, i + 1);
+  }
+  scene.OFB->Modified();
+  scene.Window->Render();
+  EXPECT_GE(scene.Mapper->GetLastUploadedSampleCount(), 95); // a few may coincide
+  EXPECT_LE(scene.Mapper->GetLastUploadedSampleCount(), 100);
+}
+
+TEST(OFBPolyDataMapper, IncrementalUploadReachesTheScreen)
+{
+  Scene scene;
+  scene.Fill(255, 0, 0);
+  scene.Window->Render();
+  ASSERT_TRUE(IsRed(Centre(scene.Window)));
+  // Repaint the samples near the point facing the camera, (0, 0, 1), in green.
+  vtkUnsignedCharArray* colors = vtkofbtest::GetColors(scene.OFB);
+  const unsigned char green[4] = { 0, 255, 0, 255 };
+  vtkIdType marked = 0;
+  for (vtkIdType i = 0; i < scene.OFB->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    scene.OFB->GetSamplePosition(i, x);
+    if (x[0] * x[0] + x[1] * x[1] < 0.04 && x[2] > 0.0)
+    {
+      colors->SetTypedTuple(i, green);
+      scene.OFB->MarkSamplesModified(i, i + 1);
+      ++marked;
+    }
+  }
+  scene.OFB->Modified();
+  scene.Window->Render();
+  // Hundreds of one-sample marks: vtkOFB may merge them conservatively, up to everything.
+  EXPECT_GE(scene.Mapper->GetLastUploadedSampleCount(), marked);
+  EXPECT_LE(scene.Mapper->GetLastUploadedSampleCount(), scene.OFB->GetNumberOfSamples());
+  const Pixel p = Centre(scene.Window);
+  EXPECT_TRUE(p[1] > 150 && p[0] < 40) << p[0] << " " << p[1] << " " << p[2];
+}
+
+TEST(OFBPolyDataMapper, OFBFromAPipelineConnection)
+{
+  Scene scene;
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetInputData(scene.Surface);
+  sampler->SetResolution(64);
+  sampler->SetDefaultColor(255, 0, 0, 255);
+  sampler->UseInputColorsOff();
+  scene.Mapper->SetOFBConnection(sampler->GetOutputPort());
+  scene.Window->Render();
+  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_EQ(scene.Mapper->GetOFB(), sampler->GetOutput());
+  EXPECT_TRUE(IsRed(Centre(scene.Window)));
+}
+
+TEST(OFBPolyDataMapper, ScalarsThroughTheLookupTableWithIntensity)
+{
+  Scene scene;
+  const vtkIdType n = scene.OFB->GetNumberOfSamples();
+  vtkNew<vtkFloatArray> height;
+  height->SetName("Height");
+  height->SetNumberOfTuples(n);
+  vtkNew<vtkFloatArray> intensity;
+  intensity->SetName("LIC");
+  intensity->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    scene.OFB->GetSamplePosition(i, x);
+    height->SetValue(i, static_cast<float>(x[2]));
+    intensity->SetValue(i, 0.5f);
+  }
+  scene.OFB->GetSampleData()->AddArray(height);
+  scene.OFB->GetSampleData()->AddArray(intensity);
+  scene.OFB->Modified();
+
+  vtkNew<vtkLookupTable> lut; // red at the low end, blue at the high end
+  lut->SetHueRange(0.0, 0.6667);
+  lut->Build();
+  scene.Mapper->SetLookupTable(lut);
+  scene.Mapper->SetScalarRange(-1.0, 1.0);
+  scene.Mapper->SetColorSourceToScalars();
+  scene.Mapper->SetScalarArrayName("Height");
+  scene.Window->Render();
+  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  Pixel p = Centre(scene.Window); // z = 1: the high end
+  EXPECT_TRUE(p[2] > 150 && p[0] < 40 && p[1] < 40) << p[0] << " " << p[1] << " " << p[2];
+
+  scene.Mapper->SetScalarRange(1.0, 3.0); // z = 1 is now the low end
+  scene.Window->Render();
+  p = Centre(scene.Window);
+  EXPECT_TRUE(IsRed(p)) << p[0] << " " << p[1] << " " << p[2];
+
+  scene.Mapper->SetIntensityArrayName("LIC");
+  scene.Mapper->IntensityModulationOn();
+  scene.Window->Render();
+  const Pixel half = Centre(scene.Window);
+  EXPECT_NEAR(half[0], p[0] / 2, 12);
+
+  scene.Mapper->SetIntensityWeight(0.0);
+  scene.Window->Render();
+  EXPECT_NEAR(Centre(scene.Window)[0], p[0], 6);
+}
+
+TEST(OFBPolyDataMapper, PaintedNormalsShadeTheSurface)
+{
+  Scene scene;
+  scene.Fill(255, 0, 0);
+  scene.Mapper->UsePaintedNormalsOn();
+  scene.Window->Render();
+  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_TRUE(IsRed(Centre(scene.Window)));
+  // Normals painted to face away sideways darken the centre.
+  vtkDataArray* normals = scene.OFB->GetSampleData()->GetArray("Normals");
+  ASSERT_NE(normals, nullptr);
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+  {
+    normals->SetTuple3(i, 1.0, 0.0, 0.05);
+  }
+  scene.OFB->MarkAllSamplesModified();
+  scene.OFB->Modified();
+  scene.Window->Render();
+  EXPECT_LT(Centre(scene.Window)[0], 60);
+}
+
+TEST(OFBPolyDataMapper, SeveralViewportsAndRestoredBindings)
+{
+  Scene scene(128, 200);
+  scene.Fill(255, 0, 0);
+  scene.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+  vtkNew<vtkRenderer> second;
+  second->SetViewport(0.5, 0.0, 1.0, 1.0);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(scene.Mapper); // the same mapper in a second renderer
+  second->AddActor(actor);
+  scene.Window->AddRenderer(second);
+  second->ResetCamera();
+  scene.Renderer->ResetCamera();
+  scene.Window->Render();
+  EXPECT_TRUE(IsRed(ReadPixel(scene.Window, 50, 100)));
+  EXPECT_TRUE(IsRed(ReadPixel(scene.Window, 150, 100)));
+
+  // No shader storage buffer is left bound.
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(scene.Window);
+  ASSERT_NE(gl, nullptr);
+  gl->MakeCurrent();
+  GLint bound = -1;
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &bound);
+  EXPECT_EQ(bound, 0);
+  for (GLuint i = 0; i < 16; ++i)
+  {
+    GLint b = -1;
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &b);
+    EXPECT_EQ(b, 0) << "binding point " << i;
+  }
+  EXPECT_GT(scene.Mapper->GetGPUMemorySize(), 0);
+  scene.Mapper->ReleaseGraphicsResources(scene.Window);
+  EXPECT_EQ(scene.Mapper->GetGPUMemorySize(), 0);
+  // It renders again after a release.
+  scene.Window->Render();
+  EXPECT_TRUE(IsRed(ReadPixel(scene.Window, 50, 100)));
+}
+
+TEST(OFBPolyDataMapper, NoOFBWarnsAndRendersThePropertyColour)
+{
+  Scene scene;
+  scene.Mapper->SetOFB(nullptr);
+  scene.Actor->GetProperty()->SetColor(0.0, 1.0, 0.0);
+  vtkNew<vtkofbtest::MessageObserver> messages;
+  messages->Watch(scene.Mapper);
+  scene.Window->Render();
+  scene.Window->Render();
+  EXPECT_FALSE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_NE(messages->Warnings.find("No OFB"), std::string::npos) << messages->Warnings;
+  EXPECT_EQ(messages->Warnings.find("No OFB"), messages->Warnings.rfind("No OFB"))
+    << "warned more than once";
+  const Pixel p = Centre(scene.Window);
+  EXPECT_TRUE(p[1] > 150 && p[0] < 40) << p[0] << " " << p[1] << " " << p[2];
+}
+
+TEST(OFBPolyDataMapper, EmptyOFBWarns)
+{
+  Scene scene;
+  vtkNew<vtkOFB> empty;
+  scene.Mapper->SetOFB(empty);
+  vtkNew<vtkofbtest::MessageObserver> messages;
+  messages->Watch(scene.Mapper);
+  scene.Window->Render();
+  EXPECT_FALSE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_NE(messages->Warnings.find("empty"), std::string::npos) << messages->Warnings;
+  // An OFB without colours falls back too.
+  scene.Mapper->SetOFB(scene.OFB);
+  scene.OFB->GetSampleData()->RemoveArray("Colors");
+  scene.OFB->Modified();
+  scene.Window->Render();
+  EXPECT_FALSE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_NE(messages->Warnings.find("Colors"), std::string::npos) << messages->Warnings;
+}
+
+TEST(OFBPolyDataMapper, MeshAndOFBMismatchWarnsAndKeepsThePropertyColour)
+{
+  Scene scene;
+  scene.Fill(255, 0, 0);
+  vtkNew<vtkTransform> shift;
+  shift->Translate(5.0, 0.0, 0.0);
+  vtkNew<vtkTransformPolyDataFilter> move;
+  move->SetInputData(scene.Surface);
+  move->SetTransform(shift);
+  move->Update();
+  scene.Mapper->SetInputData(move->GetOutput());
+  scene.Actor->GetProperty()->SetColor(0.0, 1.0, 0.0);
+  scene.Renderer->ResetCamera();
+  vtkNew<vtkofbtest::MessageObserver> messages;
+  messages->Watch(scene.Mapper);
+  scene.Window->Render();
+  EXPECT_NE(messages->Warnings.find("beyond"), std::string::npos) << messages->Warnings;
+  const Pixel p = Centre(scene.Window);
+  EXPECT_TRUE(p[1] > 150 && p[0] < 40) << p[0] << " " << p[1] << " " << p[2];
+}
+
+TEST(OFBPolyDataMapper, MissingArraysFallBackWithWarnings)
+{
+  Scene scene;
+  scene.Fill(255, 0, 0);
+  scene.Mapper->SetColorSourceToScalars();
+  scene.Mapper->SetScalarArrayName("NoSuchArray");
+  scene.Mapper->SetIntensityArrayName("NoLIC");
+  scene.Mapper->IntensityModulationOn();
+  vtkNew<vtkofbtest::MessageObserver> messages;
+  messages->Watch(scene.Mapper);
+  scene.Window->Render();
+  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_NE(messages->Warnings.find("NoSuchArray"), std::string::npos) << messages->Warnings;
+  EXPECT_NE(messages->Warnings.find("NoLIC"), std::string::npos) << messages->Warnings;
+  EXPECT_TRUE(IsRed(Centre(scene.Window)));
+}
+
+TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)
+{
+  vtkNew<vtkOFBPolyDataMapper> mapper;
+  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::Nearest);
+  EXPECT_EQ(mapper->GetColorSource(), vtkOFBPolyDataMapper::Paint);
+  EXPECT_NEAR(mapper->GetInterpolationRadius(), 1.7320508, 1e-6);
+  mapper->SetLookupMode(99);
+  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::Mipmapped);
+  mapper->SetIntensityWeight(3.0);
+  EXPECT_EQ(mapper->GetIntensityWeight(), 1.0);
+  EXPECT_EQ(mapper->GetOFB(), nullptr);
+  std::ostringstream os;
+  mapper->Print(os);
+  for (const char* name : { "OFB:", "LookupMode: Mipmapped", "InterpolationRadius",
+         "MipmapBias", "MaximumNumberOfMipmapLevels", "MinimumMipmapResolution", "ColorSource",
+         "ScalarArrayName", "ScalarComponent", "IntensityArrayName", "IntensityModulation",
+         "IntensityWeight", "UsePaintedNormals", "LastUploadedSampleCount", "GPUMemorySize" })
+  {
+    EXPECT_NE(os.str().find(name), std::string::npos) << name;
+  }
+}

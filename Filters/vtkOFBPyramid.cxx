@@ -79,15 +79,17 @@ bool vtkOFBPyramid::Update()
       return false;
     }
     const vtkIdType* dims = this->InputOFB->GetDimensions();
-    int resolution = static_cast<int>(std::max({ dims[0], dims[1], dims[2] }));
+    // The sampler pads the frame by one cell on each side: halve the unpadded cells so
+    // that the cell size doubles from level to level.
+    const int finest = static_cast<int>(std::max({ dims[0], dims[1], dims[2] })) - 2;
     vtkNew<vtkOFBSampler> sampler;
     sampler->SetInputData(this->Surface);
     sampler->UseInputColorsOff();
     sampler->PassPointArraysOff();
     for (int k = 1; k < this->MaximumNumberOfLevels; ++k)
     {
-      resolution /= 2;
-      if (resolution < this->MinimumResolution)
+      const int resolution = (finest >> k) + 2;
+      if ((finest >> k) < 1 || resolution < this->MinimumResolution)
       {
         break;
       }

@@ -1,0 +1,189 @@
+// GoogleTest units of vtkOFBPyramid: levels, filtering of the sample arrays, updates,
+// Resample, bad input and PrintSelf.
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkOFB.h"
+#include "vtkOFBPyramid.h"
+#include "vtkOFBTestUtilities.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+vtkUnsignedCharArray* Colors(vtkOFB* ofb)
+{
+  return vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
+}
+
+void Fill(vtkOFB* ofb, unsigned char r, unsigned char g, unsigned char b)
+{
+  const unsigned char c[4] = { r, g, b, 255 };
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    Colors(ofb)->SetTypedTuple(i, c);
+  }
+  ofb->MarkAllSamplesModified();
+  ofb->Modified();
+}
+}
+
+TEST(OFBPyramid, LevelsHalveTheResolution)
+{
+  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
+  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 128);
+  vtkNew<vtkOFBPyramid> pyramid;
+  pyramid->SetInputOFB(ofb);
+  pyramid->SetSurface(sphere);
+  pyramid->SetMinimumResolution(8);
+  ASSERT_TRUE(pyramid->Update());
+  ASSERT_GE(pyramid->GetNumberOfLevels(), 4);
+  EXPECT_EQ(pyramid->GetLevel(0), ofb.Get());
+  EXPECT_EQ(pyramid->GetLevel(pyramid->GetNumberOfLevels()), nullptr);
+  for (int k = 1; k < pyramid->GetNumberOfLevels(); ++k)
+  {
+    vtkOFB* finer = pyramid->GetLevel(k - 1);
+    vtkOFB* level = pyramid->GetLevel(k);
+    ASSERT_NE(level, nullptr);
+    EXPECT_GT(level->GetNumberOfSamples(), 0);
+    EXPECT_LT(level->GetNumberOfSamples(), finer->GetNumberOfSamples());
+    EXPECT_NEAR(level->GetCellSize() / finer->GetCellSize(), 2.0, 0.2) << "level " << k;
+    const vtkIdType* dims = level->GetDimensions();
+    EXPECT_GE(std::max({ dims[0], dims[1], dims[2] }), 8);
+  }
+  pyramid->SetMaximumNumberOfLevels(2);
+  ASSERT_TRUE(pyramid->Update());
+  EXPECT_EQ(pyramid->GetNumberOfLevels(), 2);
+}
+
+TEST(OFBPyramid, ConstantColourIsKeptAndFinePatternsAverageOut)
+{
+  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
+  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 128);
+  Fill(ofb, 10, 200, 30);
+  vtkNew<vtkOFBPyramid> pyramid;
+  pyramid->SetInputOFB(ofb);
+  pyramid->SetSurface(sphere);
+  ASSERT_TRUE(pyramid->Update());
+  for (int k = 1; k < pyramid->GetNumberOfLevels(); ++k)
+  {
+    vtkUnsignedCharArray* colors = Colors(pyramid->GetLevel(k));
+    ASSERT_NE(colors, nullptr);
+    for (vtkIdType i = 0; i < colors->GetNumberOfTuples(); i += 7)
+    {
+      EXPECT_EQ(colors->GetTypedComponent(i, 1), 200) << "level " << k << " sample " << i;
+    }
+  }
+
+  // A checker of one-cell squares, black and white: two levels down it is grey.
+  const double s = ofb->GetCellSize();
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    ofb->GetSamplePosition(i, x);
+    const long k = static_cast<long>(std::floor(x[0] / s) + std::floor(x[1] / s) +
+      std::floor(x[2] / s));
+    const unsigned char v = (k % 2 == 0) ? 0 : 255;
+    const unsigned char c[4] = { v, v, v, 255 };
+    Colors(ofb)->SetTypedTuple(i, c);
+  }
+  ofb->Modified();
+  const vtkMTimeType before = pyramid->GetArraysTime();
+  ASSERT_TRUE(pyramid->Update());
+  EXPECT_GT(pyramid->GetArraysTime(), before);
+  vtkOFB* coarse = pyramid->GetLevel(2);
+  double sum = 0.0;
+  double sum2 = 0.0;
+  const vtkIdType n = coarse->GetNumberOfSamples();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = Colors(coarse)->GetTypedComponent(i, 0);
+    sum += v;
+    sum2 += v * v;
+  }
+  const double mean = sum / n;
+  const double stddev = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
+  EXPECT_NEAR(mean, 127.5, 30.0);
+  EXPECT_LT(stddev, 40.0) << "the checker should average out, not alias";
+
+  // Nothing changed: no recomputation.
+  const vtkMTimeType after = pyramid->GetArraysTime();
+  ASSERT_TRUE(pyramid->Update());
+  EXPECT_EQ(pyramid->GetArraysTime(), after);
+}
+
+TEST(OFBPyramid, ResampleTransfersFloatArrays)
+{
+  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
+  vtkSmartPointer<vtkOFB> fine = vtkofbtest::Build(sphere, 128);
+  vtkSmartPointer<vtkOFB> coarse = vtkofbtest::Build(sphere, 48);
+  vtkNew<vtkFloatArray> height;
+  height->SetName("Height");
+  height->SetNumberOfTuples(fine->GetNumberOfSamples());
+  for (vtkIdType i = 0; i < fine->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    fine->GetSamplePosition(i, x);
+    height->SetValue(i, static_cast<float>(x[2]));
+  }
+  fine->GetSampleData()->AddArray(height);
+  ASSERT_TRUE(vtkOFBPyramid::Resample(fine, coarse, coarse->GetCellSize()));
+  vtkDataArray* out = coarse->GetSampleData()->GetArray("Height");
+  ASSERT_NE(out, nullptr);
+  ASSERT_EQ(out->GetNumberOfTuples(), coarse->GetNumberOfSamples());
+  for (vtkIdType i = 0; i < coarse->GetNumberOfSamples(); i += 5)
+  {
+    double x[3];
+    coarse->GetSamplePosition(i, x);
+    EXPECT_NEAR(out->GetComponent(i, 0), x[2], 1.5 * coarse->GetCellSize()) << i;
+  }
+  EXPECT_FALSE(vtkOFBPyramid::Resample(nullptr, coarse, 1.0));
+  EXPECT_FALSE(vtkOFBPyramid::Resample(fine, nullptr, 1.0));
+  EXPECT_FALSE(vtkOFBPyramid::Resample(fine, coarse, 0.0));
+  vtkNew<vtkOFB> empty;
+  EXPECT_FALSE(vtkOFBPyramid::Resample(empty, coarse, 1.0));
+}
+
+TEST(OFBPyramid, BadInputGivesAnErrorAndNoLevels)
+{
+  vtkNew<vtkOFBPyramid> pyramid;
+  vtkNew<vtkofbtest::MessageObserver> messages;
+  messages->Watch(pyramid);
+  EXPECT_FALSE(pyramid->Update());
+  EXPECT_FALSE(messages->Errors.empty());
+  EXPECT_EQ(pyramid->GetNumberOfLevels(), 0);
+  EXPECT_EQ(pyramid->GetLevel(0), nullptr);
+
+  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 16);
+  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 64);
+  pyramid->SetInputOFB(ofb);
+  messages->Clear();
+  EXPECT_FALSE(pyramid->Update()); // no surface
+  EXPECT_NE(messages->Errors.find("surface"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(pyramid->GetNumberOfLevels(), 1);
+
+  vtkNew<vtkOFB> empty;
+  pyramid->SetInputOFB(empty);
+  pyramid->SetSurface(sphere);
+  messages->Clear();
+  EXPECT_FALSE(pyramid->Update());
+  EXPECT_FALSE(messages->Errors.empty());
+}
+
+TEST(OFBPyramid, PrintSelfShowsEverySetting)
+{
+  vtkNew<vtkOFBPyramid> pyramid;
+  pyramid->SetMaximumNumberOfLevels(40);
+  EXPECT_EQ(pyramid->GetMaximumNumberOfLevels(), 16);
+  std::ostringstream os;
+  pyramid->Print(os);
+  for (const char* name : { "InputOFB", "Surface", "MaximumNumberOfLevels: 16",
+         "MinimumResolution", "FilterRadius", "NumberOfLevels" })
+  {
+    EXPECT_NE(os.str().find(name), std::string::npos) << name;
+  }
+}

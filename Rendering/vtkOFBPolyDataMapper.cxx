@@ -616,6 +616,7 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(
   program->SetUniform1iv("ofbLevelSampleBase", nl, this->Storage->GetLevelSampleBase().data());
   program->SetUniformf("ofbMipmapBias", static_cast<float>(this->MipmapBias));
   program->SetUniformf("ofbRadius", static_cast<float>(this->InterpolationRadius));
+  program->SetUniformi("ofbNumberOfGrids", 3);
 
   if (this->SourceScalars)
   {

@@ -422,7 +422,8 @@ void vtkOFBShaderStorage::SetBlockBindings(vtkShaderProgram* program)
   const GLuint handle = static_cast<GLuint>(program->GetHandle());
   for (int i = 0; i < NumberOfBuffers; ++i)
   {
-    const GLuint index = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, GetBlockName(i));
+    const GLuint index =
+      glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, GetBlockName(i));
     if (index != GL_INVALID_INDEX)
     {
       glShaderStorageBlockBinding(handle, index, GetBindingPoint(i));

@@ -1,6 +1,6 @@
 /**
  * @class   vtkOFBShaderStorage
- * @brief   Shader storage buffers holding one or more vtkOFB levels for vtkOFBPolyDataMapper (private)
+ * @brief   Shader storage buffers holding vtkOFB levels for vtkOFBPolyDataMapper (private)
  *
  * Owns the OpenGL shader storage buffer objects (SSBOs) that the lookup fragment shader
  * (shaders/vtkOFBLookupFS.glsl) reads: cell offsets and depths of every level (the
@@ -91,7 +91,8 @@ public:
    * (2 components: first, last) only. Returns the number of samples uploaded.
    */
   vtkIdType UploadRanges(
-    const std::vector<vtkOFB*>& levels, int level, const Selection& selection, vtkIdTypeArray* ranges);
+    const std::vector<vtkOFB*>& levels, int level, const Selection& selection,
+    vtkIdTypeArray* ranges);
 
   /**
    * Sample `lut` at LUTSize equal steps over [range[0], range[1]] into the LUT buffer.

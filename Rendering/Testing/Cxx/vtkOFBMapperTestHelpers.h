@@ -19,7 +19,8 @@ inline vtkUnsignedCharArray* GetColors(vtkOFB* ofb)
 }
 
 /// Set every sample's colour from its position; marks all samples modified.
-inline void Paint(vtkOFB* ofb, const std::function<void(const double x[3], unsigned char rgba[4])>& f)
+inline void Paint(
+  vtkOFB* ofb, const std::function<void(const double x[3], unsigned char rgba[4])>& f)
 {
   vtkUnsignedCharArray* colors = GetColors(ofb);
   if (!colors)
@@ -39,7 +40,8 @@ inline void Paint(vtkOFB* ofb, const std::function<void(const double x[3], unsig
 }
 
 /// A 3-D checker of cubes of edge `size` (world units), colours a and b.
-inline void PaintChecker(vtkOFB* ofb, double size, const unsigned char a[4], const unsigned char b[4])
+inline void PaintChecker(
+  vtkOFB* ofb, double size, const unsigned char a[4], const unsigned char b[4])
 {
   Paint(ofb, [&](const double x[3], unsigned char rgba[4]) {
     const long k = static_cast<long>(std::floor(x[0] / size) + std::floor(x[1] / size) +

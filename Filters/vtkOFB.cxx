@@ -456,12 +456,31 @@ void vtkOFB::MarkSamplesModified(vtkIdType first, vtkIdType last)
   ranges.resize(out + 1);
   if (ranges.size() > 128)
   {
-    ModifiedRange all = { ranges.front().First, ranges.back().Last, 0 };
-    for (const auto& r : ranges)
+    // Still many scattered ranges: close the smallest gaps first, so that a
+    // consumer re-sends a few samples in between rather than everything.
+    std::vector<vtkIdType> gaps(ranges.size() - 1);
+    for (size_t i = 0; i + 1 < ranges.size(); ++i)
     {
-      all.Time = std::max(all.Time, r.Time);
+      gaps[i] = ranges[i + 1].First - ranges[i].Last;
     }
-    ranges.assign(1, all);
+    std::vector<vtkIdType> sorted = gaps;
+    const size_t close = ranges.size() - 64;
+    std::nth_element(sorted.begin(), sorted.begin() + (close - 1), sorted.end());
+    const vtkIdType threshold = sorted[close - 1];
+    size_t kept = 0;
+    for (size_t i = 1; i < ranges.size(); ++i)
+    {
+      if (gaps[i - 1] <= threshold)
+      {
+        ranges[kept].Last = ranges[i].Last;
+        ranges[kept].Time = std::max(ranges[kept].Time, ranges[i].Time);
+      }
+      else
+      {
+        ranges[++kept] = ranges[i];
+      }
+    }
+    ranges.resize(kept + 1);
   }
 }
 

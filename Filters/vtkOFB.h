@@ -201,7 +201,8 @@ public:
    * first, last) with the sorted, merged ranges marked after time `t` (a
    * vtkTimeStamp value such as the time of a consumer's last upload); when the
    * samples were reallocated after `t` (GetStructureMTime() > t) it gives the
-   * whole range. Old ranges are merged (conservatively) beyond 256 entries.
+   * whole range. Beyond 256 entries, ranges are merged across their smallest gaps
+   * (conservatively: a merged range may include unchanged samples).
    * Not thread-safe: mark from one thread.
    */
   void MarkSamplesModified(vtkIdType first, vtkIdType last);

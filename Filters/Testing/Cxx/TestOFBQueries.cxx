@@ -242,6 +242,25 @@ TEST(Queries, ModifiedRangesTrackOnlyWhatChanged)
   }
   EXPECT_EQ(covered, 1000);
   EXPECT_LE(ranges->GetNumberOfTuples(), 257);
+  // Scattered strokes (10 clusters of 100 dabs) stay far smaller than the whole.
+  vtkTimeStamp strokes;
+  strokes.Modified();
+  for (vtkIdType c = 0; c < 10; ++c)
+  {
+    for (vtkIdType i = 0; i < 100; ++i)
+    {
+      const vtkIdType first = c * (n / 10) + 3 * i;
+      ofb->MarkSamplesModified(first, first + 2);
+    }
+  }
+  ofb->GetSampleRangesModifiedSince(strokes.GetMTime(), ranges);
+  vtkIdType length = 0;
+  for (vtkIdType r = 0; r < ranges->GetNumberOfTuples(); ++r)
+  {
+    length += ranges->GetValue(2 * r + 1) - ranges->GetValue(2 * r);
+  }
+  EXPECT_GE(length, 2000);
+  EXPECT_LT(length, n / 10) << "merging must not grow to the whole OFB";
   // A rebuild (reallocation) invalidates everything again.
   vtkNew<vtkOFB> copy;
   copy->DeepCopy(ofb);

@@ -1,0 +1,150 @@
+// OpenGL against CPU construction of vtkOFBBuilder, measured in the same run.
+//
+//   ofbBuilderBenchmark [--repetitions N] [--resolutions 512,1024,2048] [mesh ...]
+//
+// Prints, per mesh and resolution, the median build time of each backend, the
+// samples per second and the ratio OpenGL / CPU. Run it under xvfb-run on a
+// machine without a GPU (Mesa llvmpipe), or on a GPU machine with a display.
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkOFB.h"
+#include "vtkOFBBuilder.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPLYReader.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkSMPTools.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> Read(const std::string& path)
+{
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply")
+  {
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = reader->GetOutput();
+  }
+  else
+  {
+    vtkNew<vtkOBJReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = reader->GetOutput();
+  }
+  return mesh;
+}
+
+/// Median build time (ms) of `reps` builds after one warm-up; -1 if the backend did not run.
+double Time(vtkOFBBuilder* builder, int backend, int reps, vtkIdType& samples)
+{
+  builder->SetBackend(backend);
+  std::vector<double> times;
+  for (int r = 0; r <= reps; ++r)
+  {
+    builder->Modified();
+    builder->Update();
+    if (builder->GetLastBackend() != backend)
+    {
+      return -1.0;
+    }
+    if (r > 0)
+    {
+      times.push_back(builder->GetLastBuildTime());
+    }
+  }
+  samples = builder->GetOutput()->GetNumberOfSamples();
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+}
+
+int main(int argc, char* argv[])
+{
+  int reps = 5;
+  std::vector<int> resolutions = { 512, 1024, 2048 };
+  std::vector<std::string> meshes;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--repetitions" && i + 1 < argc)
+    {
+      reps = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (arg == "--resolutions" && i + 1 < argc)
+    {
+      resolutions.clear();
+      std::stringstream list(argv[++i]);
+      std::string item;
+      while (std::getline(list, item, ','))
+      {
+        resolutions.push_back(std::atoi(item.c_str()));
+      }
+    }
+    else
+    {
+      meshes.push_back(arg);
+    }
+  }
+  if (meshes.empty())
+  {
+    meshes = { VTKOFB_DATA_DIR "/stanford-bunny.obj", VTKOFB_DATA_DIR "/horse.ply" };
+  }
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(8, 8);
+  if (!vtkOFBBuilder::IsSupported(window))
+  {
+    std::printf("This OpenGL context cannot run the OpenGL backend (needs 4.3).\n");
+    return 1;
+  }
+  vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  gl->MakeCurrent();
+  std::printf("OpenGL renderer: %s (%s)\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
+    reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+  std::printf("CPU: vtkSMPTools %s backend, %d threads\n", vtkSMPTools::GetBackend(),
+    vtkSMPTools::GetEstimatedNumberOfThreads());
+  std::printf("Median of %d builds after a warm-up.\n\n", reps);
+  std::printf("%-20s %6s %11s %10s %10s %10s %10s %9s\n", "mesh", "res", "samples", "CPU ms",
+    "CPU MS/s", "GL ms", "GL MS/s", "GL/CPU");
+  for (const std::string& path : meshes)
+  {
+    vtkSmartPointer<vtkPolyData> mesh = Read(path);
+    if (!mesh || mesh->GetNumberOfPolys() == 0)
+    {
+      std::printf("cannot read %s\n", path.c_str());
+      return 1;
+    }
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    for (int resolution : resolutions)
+    {
+      vtkNew<vtkOFBBuilder> builder;
+      builder->SetInputData(mesh);
+      builder->SetResolution(resolution);
+      builder->SetRenderWindow(window);
+      vtkIdType cpuSamples = 0, glSamples = 0;
+      const double cpu = Time(builder, vtkOFBBuilder::CPU, reps, cpuSamples);
+      const double ogl = Time(builder, vtkOFBBuilder::OpenGL, reps, glSamples);
+      if (ogl < 0.0)
+      {
+        std::printf("%-20s %6d: the OpenGL backend fell back to the CPU\n", name.c_str(), resolution);
+        continue;
+      }
+      std::printf("%-20s %6d %11lld %10.1f %10.1f %10.1f %10.1f %9.2f%s\n", name.c_str(),
+        resolution, static_cast<long long>(cpuSamples), cpu, cpuSamples / cpu / 1000.0, ogl,
+        glSamples / ogl / 1000.0, ogl / cpu, cpuSamples == glSamples ? "" : "  (counts differ)");
+    }
+  }
+  return 0;
+}

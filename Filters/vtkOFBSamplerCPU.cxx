@@ -1,11 +1,28 @@
-// The CPU scan conversion of vtkOFBSampler: count, prefix sum, fill, sort, attributes.
+// The CPU scan conversion of vtkOFBSampler.
+//
+// The cells of the three grids are cut into bands of whole rows; a band is a
+// contiguous range of global cells and therefore of samples. Every triangle is set
+// up once (vtkOFBTriangleRaster: grid, fixed-point edges, plane), then listed in
+// the bands its rows cross. Pass 1 finds, band by band, the spans (covered cells)
+// of its triangles' rows and its number of samples. After a scan over the band
+// totals, pass 2 takes each band on its own, while its data is in cache: samples
+// per cell and their prefix sum (the cell offsets), then the fragments of its
+// triangles in increasing id, a triangle at a time (depth, barycentrics and
+// attributes, vtkOFBSampleShader), each given the next slot of its cell, and last
+// cell by cell the fragments sorted by depth (stably: ties stay in triangle order)
+// and written to the samples. A band belongs to one thread (no atomics) and is
+// computed the same way whatever the number of threads, so the output does not
+// depend on it.
 
 #include "vtkOFBSampler.h"
 
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
+#include "vtkOFBSampleShader.h"
 #include "vtkOFBSurface.h"
+#include "vtkOFBTriangleRaster.h"
 #include "vtkPointData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
@@ -13,238 +30,532 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <new>
 #include <type_traits>
 #include <vector>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace
 {
-/// Sub-cell bits of the fixed-point lattice that decides coverage.
-constexpr int SubBits = 8;
-constexpr double SubScale = static_cast<double>(1 << SubBits);
+/// Cells of a band (rounded to whole rows): a few hundred KiB of offsets and samples.
+constexpr vtkIdType BandCells = 16384;
 
-/// The frame as the rasterizer needs it.
-struct Frame
+/// Triangles per chunk of the setup pass.
+constexpr vtkIdType SetupChunk = 4096;
+
+/**
+ * Ask for transparent huge pages on a large array before its first touch:
+ * faulting in a 2 MiB page costs much less than faulting in 512 pages of 4 KiB,
+ * and the first touch of a fresh array otherwise dominates a build.
+ */
+void AdviseHugePages(void* data, size_t bytes)
 {
-  double Origin[3];
-  double InvCell;
-  vtkIdType Dims[3];
-  vtkIdType CellBase[3];
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const uintptr_t huge = uintptr_t(1) << 21;
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + huge - 1) & ~(huge - 1);
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(huge - 1);
+  if (end > begin)
+  {
+    madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+  }
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
+void AdviseHugePages(vtkDataArray* array)
+{
+  AdviseHugePages(
+    array->GetVoidPointer(0), static_cast<size_t>(array->GetDataSize()) * array->GetDataTypeSize());
+}
+
+/**
+ * A band: rows [Row0, Row1) of grid Axis, that is cells [Cell0, Cell1), and its
+ * samples [First, First + Count). Its triangles are BandTris[TriBegin, TriEnd),
+ * the non-empty spans of their rows Spans[SpanBegin, SpanEnd).
+ */
+struct Band
+{
+  int Axis;
+  vtkIdType Row0, Row1;
+  vtkIdType Cell0, Cell1;
+  vtkIdType First, Count;
+  vtkIdType TriBegin, TriEnd;
+  vtkIdType SpanBegin, SpanEnd;
+};
+
+/// Cells [Lo, Hi] of row Row covered by triangle Tri.
+struct SpanRecord
+{
+  vtkTypeUInt32 Tri;
+  int32_t Row, Lo, Hi;
 };
 
 /**
- * One triangle set up for its grid: fixed-point vertices in cell units (cell
- * centres on the integer lattice), counter-clockwise, and the linear functions
- * that give depth and barycentric coordinates at a cell centre.
+ * The sample arrays of a build: colours, normals, the vector field and the other
+ * point arrays of the surface, allocated for n samples (uninitialised).
  */
-struct TriangleSetup
+struct SampleArrays
 {
-  int Axis;
-  int64_t X[3], Y[3];
-  // w1 = A1*U + B1*V + C1, w2 = A2*U + B2*V + C2 (true, unsnapped geometry).
-  double A1, B1, C1, A2, B2, C2;
-  double D0, D1, D2; // depths of the vertices (world units from the grid plane)
+  vtkSmartPointer<vtkUnsignedCharArray> Colors;
+  vtkSmartPointer<vtkFloatArray> Normals;
+  vtkSmartPointer<vtkFloatArray> Vectors;
+  std::vector<vtkSmartPointer<vtkDataArray>> Others;
 
-  bool Setup(const double* P, const vtkIdType* tri, const Frame& f)
+  SampleArrays(const vtkOFBSurface& surface, vtkIdType n)
   {
-    const double* p0 = P + 3 * tri[0];
-    const double* p1 = P + 3 * tri[1];
-    const double* p2 = P + 3 * tri[2];
-    double e1[3], e2[3];
+    this->Colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    this->Colors->SetName("Colors");
+    this->Colors->SetNumberOfComponents(4);
+    this->Colors->SetNumberOfTuples(n);
+    this->Normals = vtkSmartPointer<vtkFloatArray>::New();
+    this->Normals->SetName("Normals");
+    this->Normals->SetNumberOfComponents(3);
+    this->Normals->SetNumberOfTuples(n);
+    AdviseHugePages(this->Colors);
+    AdviseHugePages(this->Normals);
+    if (surface.Vectors)
+    {
+      this->Vectors = vtkSmartPointer<vtkFloatArray>::New();
+      this->Vectors->SetName(surface.Vectors->GetName());
+      this->Vectors->SetNumberOfComponents(3);
+      this->Vectors->SetNumberOfTuples(n);
+      AdviseHugePages(this->Vectors);
+    }
+    for (const auto& in : surface.Arrays)
+    {
+      vtkSmartPointer<vtkDataArray> out = vtk::TakeSmartPointer(in->NewInstance());
+      out->SetName(in->GetName());
+      out->SetNumberOfComponents(in->GetNumberOfComponents());
+      out->SetNumberOfTuples(n);
+      AdviseHugePages(out);
+      this->Others.push_back(out);
+    }
+  }
+
+  /// Hand the arrays to the sample data (only those that were interpolated).
+  void Attach(const vtkOFBSurface& surface, vtkPointData* sd, const std::vector<bool>& done)
+  {
+    sd->SetScalars(this->Colors);
+    sd->SetNormals(this->Normals);
+    if (this->Vectors)
+    {
+      sd->SetVectors(this->Vectors);
+    }
+    for (size_t k = 0; k < this->Others.size(); ++k)
+    {
+      if (!done[k])
+      {
+        continue;
+      }
+      if (static_cast<int>(k) == surface.TCoordsIndex)
+      {
+        sd->SetTCoords(this->Others[k]);
+      }
+      else
+      {
+        sd->AddArray(this->Others[k]);
+      }
+    }
+  }
+};
+
+/**
+ * Per-thread scratch of pass 2: the fragments of a band in the order they are
+ * made (depth, barycentrics, triangle, attributes), and the fragment of each of
+ * its samples.
+ */
+struct BandScratch
+{
+  std::vector<float> Depth, W1, W2, N[3], V[3], Tmp;
+  std::vector<unsigned char> RGBA;
+  std::vector<vtkTypeUInt32> Tri, Order;
+
+  void Reserve(vtkIdType n, bool vectors, bool colors)
+  {
+    if (static_cast<vtkIdType>(this->Depth.size()) >= n)
+    {
+      return;
+    }
+    for (auto* v :
+      { &this->Depth, &this->W1, &this->W2, &this->N[0], &this->N[1], &this->N[2], &this->Tmp })
+    {
+      v->resize(n);
+    }
+    this->Tri.resize(n);
+    this->Order.resize(n);
+    for (int k = 0; vectors && k < 3; ++k)
+    {
+      this->V[k].resize(n);
+    }
+    this->RGBA.resize(colors ? 4 * n : 0);
+  }
+
+  /// Where Shader::Shade writes the attributes of fragments [f, ...).
+  vtkOFBSampleShader::Run RunAt(vtkIdType f)
+  {
+    vtkOFBSampleShader::Run run;
     for (int k = 0; k < 3; ++k)
     {
-      e1[k] = p1[k] - p0[k];
-      e2[k] = p2[k] - p0[k];
+      run.N[k] = this->N[k].data() + f;
+      run.V[k] = this->V[k].empty() ? nullptr : this->V[k].data() + f;
     }
-    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-      e1[0] * e2[1] - e1[1] * e2[0] };
-    int a = 0;
-    if (std::fabs(n[1]) > std::fabs(n[a]))
-    {
-      a = 1;
-    }
-    if (std::fabs(n[2]) > std::fabs(n[a]))
-    {
-      a = 2;
-    }
-    this->Axis = a;
-    const int ua = (a + 1) % 3;
-    const int va = (a + 2) % 3;
-    const double* p[3] = { p0, p1, p2 };
-    double U[3], V[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      U[i] = (p[i][ua] - f.Origin[ua]) * f.InvCell - 0.5;
-      V[i] = (p[i][va] - f.Origin[va]) * f.InvCell - 0.5;
-      this->X[i] = static_cast<int64_t>(std::llround(U[i] * SubScale));
-      this->Y[i] = static_cast<int64_t>(std::llround(V[i] * SubScale));
-    }
-    const int64_t area =
-      (this->X[1] - this->X[0]) * (this->Y[2] - this->Y[0]) -
-      (this->Y[1] - this->Y[0]) * (this->X[2] - this->X[0]);
-    if (area == 0)
-    {
-      return false; // covers no cell centre
-    }
-    const double denom = (U[1] - U[0]) * (V[2] - V[0]) - (V[1] - V[0]) * (U[2] - U[0]);
-    if (denom == 0.0)
+    run.RGBA = this->RGBA.empty() ? nullptr : this->RGBA.data() + 4 * f;
+    run.Scratch = this->Tmp.data() + f;
+    return run;
+  }
+};
+
+/// Where pass 2 writes.
+struct Output
+{
+  vtkTypeUInt32* Offsets;
+  float* Depth;
+  vtkTypeUInt32* CellIndex;
+  unsigned char* Colors;
+  float* Normals;
+  float* Vectors;
+  std::vector<vtkDataArray*> Others; // the other arrays that are interpolated
+  std::vector<vtkDataArray*> OthersIn;
+};
+
+/**
+ * A CPU build: the triangles set up, the bands with their triangles and spans,
+ * and the passes over one band.
+ */
+class BandBuilder
+{
+public:
+  BandBuilder(const vtkOFBSurface& surface, const vtkOFBRasterFrame& frame)
+    : Surface(surface)
+    , F(frame)
+    , Shading(surface)
+  {
+  }
+
+  /// Set up every triangle (in parallel); false if the setups cannot be allocated.
+  bool SetupTriangles()
+  {
+    const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
+    this->Setups.reset(new (std::nothrow) vtkOFBTriangleRaster[nTris]);
+    if (!this->Setups)
     {
       return false;
     }
-    this->D0 = p0[a] - f.Origin[a];
-    this->D1 = p1[a] - f.Origin[a];
-    this->D2 = p2[a] - f.Origin[a];
-    const double inv = 1.0 / denom;
-    this->A1 = (V[2] - V[0]) * inv;
-    this->B1 = -(U[2] - U[0]) * inv;
-    this->C1 = -(this->A1 * U[0] + this->B1 * V[0]);
-    this->A2 = -(V[1] - V[0]) * inv;
-    this->B2 = (U[1] - U[0]) * inv;
-    this->C2 = -(this->A2 * U[0] + this->B2 * V[0]);
-    if (area < 0)
-    {
-      std::swap(this->X[1], this->X[2]);
-      std::swap(this->Y[1], this->Y[2]);
-    }
+    AdviseHugePages(this->Setups.get(), sizeof(vtkOFBTriangleRaster) * nTris);
+    const double* P = this->Surface.Points.data();
+    const vtkIdType* T3 = this->Surface.Triangles.data();
+    vtkOFBTriangleRaster* setups = this->Setups.get();
+    const vtkOFBRasterFrame& f = this->F;
+    vtkSMPTools::For(0, nTris, SetupChunk,
+      [=, &f](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType t = begin; t < end; ++t)
+        {
+          setups[t].Setup(P, T3 + 3 * t, f);
+        }
+      });
     return true;
   }
 
   /**
-   * Call f(cell, iu, iv) for each cell centre covered. A centre exactly on an edge
-   * belongs to the triangle for which that edge is a left or bottom edge: the
-   * top-left rule of raster (y-down) coordinates, which is the rule Mesa's OpenGL
-   * rasterizer applies, so that the OpenGL backend covers the same centres.
+   * Cut the grids into bands of whole rows, list the triangles of each band in
+   * increasing id and reserve room for the spans of their rows. False if the
+   * spans cannot be allocated.
    */
-  template <typename F>
-  void Rasterize(const Frame& frame, F&& f) const
+  bool MakeBands()
   {
-    const int a = this->Axis;
-    const vtkIdType nu = frame.Dims[(a + 1) % 3];
-    const vtkIdType nv = frame.Dims[(a + 2) % 3];
-    const int64_t one = int64_t(1) << SubBits;
-    const int64_t minX = std::min({ this->X[0], this->X[1], this->X[2] });
-    const int64_t maxX = std::max({ this->X[0], this->X[1], this->X[2] });
-    const int64_t minY = std::min({ this->Y[0], this->Y[1], this->Y[2] });
-    const int64_t maxY = std::max({ this->Y[0], this->Y[1], this->Y[2] });
-    // Cells whose centre (iu * one, iv * one) lies in the bounding box.
-    const int64_t u0 = std::max<int64_t>(0, (minX + one - 1) >> SubBits);
-    const int64_t u1 = std::min<int64_t>(nu - 1, maxX >> SubBits);
-    const int64_t v0 = std::max<int64_t>(0, (minY + one - 1) >> SubBits);
-    const int64_t v1 = std::min<int64_t>(nv - 1, maxY >> SubBits);
-    if (u0 > u1 || v0 > v1)
+    vtkIdType firstBand[3], rowsPerBand[3];
+    for (int a = 0; a < 3; ++a)
     {
-      return;
-    }
-    // Edge i runs from vertex i+1 to vertex i+2; inside is E >= 0 (strictly > 0
-    // on edges that are not left or bottom edges).
-    int64_t dx[3], dy[3], row[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      const int j = (i + 1) % 3;
-      const int k = (i + 2) % 3;
-      dx[i] = this->X[k] - this->X[j];
-      dy[i] = this->Y[k] - this->Y[j];
-      const bool owned = dy[i] < 0 || (dy[i] == 0 && dx[i] > 0);
-      row[i] = dx[i] * (v0 * one - this->Y[j]) - dy[i] * (u0 * one - this->X[j]) -
-        (owned ? 0 : 1);
-    }
-    const vtkIdType base = frame.CellBase[a];
-    for (int64_t iv = v0; iv <= v1; ++iv)
-    {
-      int64_t e0 = row[0], e1 = row[1], e2 = row[2];
-      const vtkIdType rowCell = base + iv * nu;
-      for (int64_t iu = u0; iu <= u1; ++iu)
+      const vtkIdType nu = this->F.Dims[(a + 1) % 3];
+      const vtkIdType nv = this->F.Dims[(a + 2) % 3];
+      rowsPerBand[a] = std::max<vtkIdType>(1, std::min(nv, BandCells / nu));
+      firstBand[a] = static_cast<vtkIdType>(this->Bands.size());
+      for (vtkIdType r = 0; r < nv; r += rowsPerBand[a])
       {
-        if ((e0 | e1 | e2) >= 0)
-        {
-          f(rowCell + iu, iu, iv);
-        }
-        e0 -= dy[0] * one;
-        e1 -= dy[1] * one;
-        e2 -= dy[2] * one;
+        Band band;
+        band.Axis = a;
+        band.Row0 = r;
+        band.Row1 = std::min(nv, r + rowsPerBand[a]);
+        band.Cell0 = this->F.CellBase[a] + band.Row0 * nu;
+        band.Cell1 = this->F.CellBase[a] + band.Row1 * nu;
+        band.First = band.Count = band.TriBegin = band.TriEnd = 0;
+        band.SpanBegin = band.SpanEnd = 0;
+        this->Bands.push_back(band);
       }
-      row[0] += dx[0] * one;
-      row[1] += dx[1] * one;
-      row[2] += dx[2] * one;
     }
-  }
-};
-
-/// Exclusive prefix sum of counts into offsets (n + 1 entries); returns the total.
-uint64_t PrefixSum(const vtkTypeUInt32* counts, vtkTypeUInt32* offsets, vtkIdType n)
-{
-  const vtkIdType blockSize = 1 << 16;
-  const vtkIdType nBlocks = (n + blockSize - 1) / blockSize;
-  std::vector<uint64_t> sums(nBlocks + 1, 0);
-  vtkSMPTools::For(0, nBlocks, 1,
-    [&](vtkIdType b0, vtkIdType b1)
+    // Counting sort of the (triangle, band) pairs by band; rows of each band.
+    const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
+    const vtkOFBTriangleRaster* setups = this->Setups.get();
+    const size_t nBands = this->Bands.size();
+    std::vector<vtkIdType> start(nBands + 1, 0), rows(nBands + 1, 0);
+    for (int pass = 0; pass < 2; ++pass)
     {
-      for (vtkIdType b = b0; b < b1; ++b)
+      for (vtkIdType t = 0; t < nTris; ++t)
       {
-        uint64_t s = 0;
-        const vtkIdType end = std::min(n, (b + 1) * blockSize);
-        for (vtkIdType i = b * blockSize; i < end; ++i)
+        const vtkOFBTriangleRaster& ts = setups[t];
+        if (ts.Axis < 0)
         {
-          s += counts[i];
+          continue;
         }
-        sums[b + 1] = s;
-      }
-    });
-  for (vtkIdType b = 0; b < nBlocks; ++b)
-  {
-    sums[b + 1] += sums[b];
-  }
-  const uint64_t total = sums[nBlocks];
-  if (total >= UINT32_MAX)
-  {
-    return total;
-  }
-  vtkSMPTools::For(0, nBlocks, 1,
-    [&](vtkIdType b0, vtkIdType b1)
-    {
-      for (vtkIdType b = b0; b < b1; ++b)
-      {
-        auto s = static_cast<vtkTypeUInt32>(sums[b]);
-        const vtkIdType end = std::min(n, (b + 1) * blockSize);
-        for (vtkIdType i = b * blockSize; i < end; ++i)
+        const vtkIdType b0 = firstBand[ts.Axis] + ts.V0 / rowsPerBand[ts.Axis];
+        const vtkIdType b1 = firstBand[ts.Axis] + ts.V1 / rowsPerBand[ts.Axis];
+        for (vtkIdType b = b0; b <= b1; ++b)
         {
-          offsets[i] = s;
-          s += counts[i];
-        }
-      }
-    });
-  offsets[n] = static_cast<vtkTypeUInt32>(total);
-  return total;
-}
-
-/// Barycentric interpolation of an array-of-structures array into the samples.
-template <typename T>
-void InterpolateArray(const T* in, T* out, int nc, vtkIdType n, const vtkTypeUInt32* tri,
-  const float* w1, const float* w2, const vtkIdType* T3)
-{
-  vtkSMPTools::For(0, n, 4096,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const vtkIdType* t = T3 + 3 * static_cast<vtkIdType>(tri[i]);
-        const double b1 = w1[i], b2 = w2[i], b0 = 1.0 - b1 - b2;
-        for (int k = 0; k < nc; ++k)
-        {
-          const double v = b0 * in[t[0] * nc + k] + b1 * in[t[1] * nc + k] + b2 * in[t[2] * nc + k];
-          if (std::is_integral<T>::value)
+          if (pass == 0)
           {
-            out[i * nc + k] = static_cast<T>(std::llround(v));
+            ++start[b + 1];
+            rows[b + 1] += std::min<vtkIdType>(ts.V1, this->Bands[b].Row1 - 1) -
+              std::max<vtkIdType>(ts.V0, this->Bands[b].Row0) + 1;
           }
           else
           {
-            out[i * nc + k] = static_cast<T>(v);
+            this->BandTris[start[b]++] = static_cast<vtkTypeUInt32>(t);
           }
         }
       }
-    });
-}
+      if (pass == 0)
+      {
+        for (size_t b = 0; b < nBands; ++b)
+        {
+          start[b + 1] += start[b];
+          rows[b + 1] += rows[b];
+          this->Bands[b].TriBegin = start[b];
+          this->Bands[b].TriEnd = start[b + 1];
+          this->Bands[b].SpanBegin = this->Bands[b].SpanEnd = rows[b];
+        }
+        this->BandTris.resize(start.back());
+      }
+    }
+    this->Spans.reset(new (std::nothrow) SpanRecord[std::max<vtkIdType>(1, rows.back())]);
+    if (!this->Spans)
+    {
+      return false;
+    }
+    AdviseHugePages(this->Spans.get(), sizeof(SpanRecord) * rows.back());
+    return true;
+  }
+
+  /// Pass 1: the non-empty spans of a band's rows and its number of samples.
+  void SpanBand(Band& band) const
+  {
+    SpanRecord* spans = this->Spans.get();
+    vtkIdType end = band.SpanBegin;
+    vtkIdType total = 0;
+    for (vtkIdType i = band.TriBegin; i < band.TriEnd; ++i)
+    {
+      const vtkTypeUInt32 t = this->BandTris[i];
+      const vtkOFBTriangleRaster& ts = this->Setups[t];
+      const int64_t v0 = std::max<int64_t>(ts.V0, band.Row0);
+      const int64_t v1 = std::min<int64_t>(ts.V1, band.Row1 - 1);
+      for (int64_t iv = v0; iv <= v1; ++iv)
+      {
+        int64_t lo, hi;
+        ts.Span(iv, lo, hi);
+        if (lo <= hi)
+        {
+          spans[end++] = { t, static_cast<int32_t>(iv), static_cast<int32_t>(lo),
+            static_cast<int32_t>(hi) };
+          total += hi - lo + 1;
+        }
+      }
+    }
+    band.SpanEnd = end;
+    band.Count = total;
+  }
+
+  /**
+   * Pass 2 over a band: its offsets; its fragments, a triangle at a time (depth,
+   * barycentrics, attributes), each given the next slot of its cell; then cell by
+   * cell, the fragments sorted by depth (stable: equal depths stay in triangle
+   * order) and written to the samples.
+   */
+  void FillBand(const Band& band, const Output& out, BandScratch& s) const
+  {
+    // offsets[c + 1] (zero from SetFrame): the number of samples of cell c, then
+    // the start of cell c, then (once the fragments are placed) its end.
+    const SpanRecord* spans = this->Spans.get();
+    vtkTypeUInt32* cursor = out.Offsets + 1;
+    const vtkIdType rowLength = this->F.Dims[(band.Axis + 1) % 3];
+    const vtkIdType base = this->F.CellBase[band.Axis];
+    for (vtkIdType i = band.SpanBegin; i < band.SpanEnd; ++i)
+    {
+      const SpanRecord& span = spans[i];
+      vtkTypeUInt32* row = cursor + base + span.Row * rowLength;
+      for (int32_t iu = span.Lo; iu <= span.Hi; ++iu)
+      {
+        ++row[iu];
+      }
+    }
+    auto start = static_cast<vtkTypeUInt32>(band.First);
+    for (vtkIdType c = band.Cell0; c < band.Cell1; ++c)
+    {
+      const vtkTypeUInt32 count = cursor[c];
+      cursor[c] = start;
+      start += count;
+    }
+
+    s.Reserve(band.Count, out.Vectors != nullptr, this->Shading.C != nullptr);
+    vtkTypeUInt32* order = s.Order.data(); // fragment of each sample of the band
+    vtkTypeUInt32 f = 0;
+    for (vtkIdType first = band.SpanBegin, end = first; first < band.SpanEnd; first = end)
+    {
+      const vtkTypeUInt32 t = spans[first].Tri;
+      const vtkOFBTriangleRaster& ts = this->Setups[t];
+      const vtkTypeUInt32 f0 = f;
+      for (end = first; end < band.SpanEnd && spans[end].Tri == t; ++end)
+      {
+        const SpanRecord& span = spans[end];
+        SpanSamples(ts, span, f, s);
+        vtkTypeUInt32* cell = cursor + base + span.Row * rowLength;
+        for (int32_t iu = span.Lo; iu <= span.Hi; ++iu)
+        {
+          order[cell[iu]++ - band.First] = f++;
+        }
+      }
+      std::fill(s.Tri.begin() + f0, s.Tri.begin() + f, t);
+      this->Shading.Shade(t, f - f0, s.W1.data() + f0, s.W2.data() + f0, s.RunAt(f0));
+    }
+    this->WriteSamples(band, out, s);
+  }
+
+  const vtkOFBSurface& Surface;
+  const vtkOFBRasterFrame F;
+  const vtkOFBSampleShader Shading;
+  std::unique_ptr<vtkOFBTriangleRaster[]> Setups;
+  std::vector<Band> Bands;
+  std::vector<vtkTypeUInt32> BandTris;
+  std::unique_ptr<SpanRecord[]> Spans;
+
+private:
+  /**
+   * Depth (the triangle's plane at the cell centre, even for centres a lattice
+   * step outside the triangle: the same point as its neighbour's) and barycentrics
+   * (clamped to the triangle) of the samples of a span, from index `at` of the
+   * scratch. The barycentrics are linear along the span: when they are inside the
+   * triangle at both ends, they are everywhere and the clamp is skipped (a loop
+   * that vectorizes).
+   */
+  static void SpanSamples(
+    const vtkOFBTriangleRaster& ts, const SpanRecord& span, int at, BandScratch& s)
+  {
+    // w = A * iu + B * iv + C, evaluated in this order for every sample.
+    const double a1 = ts.A1, a2 = ts.A2, c1 = ts.C1, c2 = ts.C2;
+    const double row1 = ts.B1 * span.Row;
+    const double row2 = ts.B2 * span.Row;
+    const double d0 = ts.D0, d10 = ts.D1 - ts.D0, d20 = ts.D2 - ts.D0;
+    const int n = span.Hi - span.Lo + 1;
+    const double lo = span.Lo, hi = span.Hi;
+    const double b1Lo = a1 * lo + row1 + c1, b1Hi = a1 * hi + row1 + c1;
+    const double b2Lo = a2 * lo + row2 + c2, b2Hi = a2 * hi + row2 + c2;
+    const double margin = 1e-9;
+    const bool inside = std::min(b1Lo, b1Hi) > margin && std::min(b2Lo, b2Hi) > margin &&
+      std::min(1.0 - b1Lo - b2Lo, 1.0 - b1Hi - b2Hi) > margin;
+    float* depth = s.Depth.data() + at;
+    float* w1 = s.W1.data() + at;
+    float* w2 = s.W2.data() + at;
+    if (inside)
+    {
+      for (int k = 0; k < n; ++k)
+      {
+        const double iu = span.Lo + k;
+        const double b1 = a1 * iu + row1 + c1;
+        const double b2 = a2 * iu + row2 + c2;
+        depth[k] = static_cast<float>(d0 + b1 * d10 + b2 * d20);
+        w1[k] = static_cast<float>(b1);
+        w2[k] = static_cast<float>(b2);
+      }
+      return;
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      const double iu = span.Lo + k;
+      double b1 = a1 * iu + row1 + c1;
+      double b2 = a2 * iu + row2 + c2;
+      depth[k] = static_cast<float>(d0 + b1 * d10 + b2 * d20);
+      b1 = std::min(std::max(b1, 0.0), 1.0);
+      b2 = std::min(std::max(b2, 0.0), 1.0 - b1);
+      w1[k] = static_cast<float>(b1);
+      w2[k] = static_cast<float>(b2);
+    }
+  }
+
+  /**
+   * Cell by cell, sort the band's fragments by depth (insertion sort of the
+   * fragment order; stable) and write them to the samples of the cell.
+   */
+  void WriteSamples(const Band& band, const Output& out, BandScratch& s) const
+  {
+    const vtkTypeUInt32* cursor = out.Offsets + 1; // end of each cell
+    vtkTypeUInt32* order = s.Order.data(); // fragment of each sample of the band
+    const float* depth = s.Depth.data();
+    const float* nx = s.N[0].data();
+    const float* ny = s.N[1].data();
+    const float* nz = s.N[2].data();
+    const bool colors = this->Shading.C != nullptr;
+    const unsigned char* rgba = colors ? s.RGBA.data() : this->Shading.DefaultColor;
+    const int stride = colors ? 4 : 0;
+    float* outDepth = out.Depth;
+    vtkTypeUInt32* outCell = out.CellIndex;
+    float* outNormals = out.Normals;
+    unsigned char* outColors = out.Colors;
+    const vtkIdType first = band.First;
+    vtkIdType b = first;
+    for (vtkIdType c = band.Cell0; c < band.Cell1; ++c)
+    {
+      const vtkIdType e = cursor[c];
+      if (e == b)
+      {
+        continue; // most cells are empty
+      }
+      for (vtkIdType i = b + 1 - first; i < e - first; ++i)
+      {
+        const vtkTypeUInt32 f = order[i];
+        vtkIdType j = i;
+        for (; j > b - first && depth[order[j - 1]] > depth[f]; --j)
+        {
+          order[j] = order[j - 1];
+        }
+        order[j] = f;
+      }
+      for (vtkIdType i = b; i < e; ++i)
+      {
+        const vtkIdType f = order[i - first];
+        outDepth[i] = depth[f];
+        outCell[i] = static_cast<vtkTypeUInt32>(c);
+        float* normal = outNormals + 3 * i;
+        normal[0] = nx[f];
+        normal[1] = ny[f];
+        normal[2] = nz[f];
+        std::memcpy(outColors + 4 * i, rgba + stride * f, 4);
+      }
+      b = e;
+    }
+    if (out.Vectors)
+    {
+      float* outVectors = out.Vectors + 3 * band.First;
+      for (vtkIdType i = 0; i < band.Count; ++i)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          outVectors[3 * i + k] = s.V[k][order[i]];
+        }
+      }
+    }
+    for (size_t k = 0; k < out.Others.size(); ++k)
+    {
+      vtkOFBSampleShader::InterpolateArray(out.OthersIn[k], out.Others[k], band.First, band.Count,
+        this->Surface.Triangles.data(), s.Tri.data(), s.W1.data(), s.W2.data(), order);
+    }
+  }
+};
 }
 
 //------------------------------------------------------------------------------
@@ -269,7 +580,7 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   {
     return false;
   }
-  Frame frame;
+  vtkOFBRasterFrame frame;
   for (int a = 0; a < 3; ++a)
   {
     frame.Origin[a] = origin[a];
@@ -277,32 +588,29 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
     frame.CellBase[a] = output->GetGridCellBase(a);
   }
   frame.InvCell = 1.0 / cellSize;
-  const vtkIdType nCells = output->GetNumberOfCells();
-  const vtkIdType nTris = surface.GetNumberOfTriangles();
-  const double* P = surface.Points.data();
-  const vtkIdType* T3 = surface.Triangles.data();
 
-  std::unique_ptr<vtkTypeUInt32[]> counts(new (std::nothrow) vtkTypeUInt32[nCells]);
-  if (!counts)
+  BandBuilder builder(surface, frame);
+  if (!builder.SetupTriangles())
   {
-    vtkErrorMacro("Cannot allocate the counters of " << nCells << " cells.");
+    vtkErrorMacro(
+      "Cannot allocate the setup of " << surface.GetNumberOfTriangles() << " triangles.");
     return false;
   }
-  vtkTypeUInt32* C = counts.get();
-  vtkSMPTools::Fill(C, C + nCells, 0u);
+  if (!builder.MakeBands())
+  {
+    vtkErrorMacro("Cannot allocate the spans of the triangles' rows.");
+    return false;
+  }
+  std::vector<Band>& bands = builder.Bands;
+  const vtkIdType nBands = static_cast<vtkIdType>(bands.size());
 
-  // Pass 1: count the samples of each cell.
-  vtkSMPTools::For(0, nTris, 256,
+  // Pass 1: the spans and samples of each band.
+  vtkSMPTools::For(0, nBands, 1,
     [&](vtkIdType begin, vtkIdType end)
     {
-      TriangleSetup ts;
-      for (vtkIdType t = begin; t < end; ++t)
+      for (vtkIdType b = begin; b < end; ++b)
       {
-        if (ts.Setup(P, T3 + 3 * t, frame))
-        {
-          ts.Rasterize(frame, [C](vtkIdType cell, int64_t, int64_t)
-            { __atomic_fetch_add(C + cell, 1u, __ATOMIC_RELAXED); });
-        }
+        builder.SpanBand(bands[b]);
       }
     });
   this->UpdateProgress(0.3);
@@ -310,9 +618,12 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   {
     return false;
   }
-
-  vtkTypeUInt32* offsets = output->GetCellOffsets()->GetPointer(0);
-  const uint64_t total = PrefixSum(C, offsets, nCells);
+  uint64_t total = 0;
+  for (Band& band : bands)
+  {
+    band.First = static_cast<vtkIdType>(total);
+    total += static_cast<uint64_t>(band.Count);
+  }
   if (total >= UINT32_MAX)
   {
     vtkErrorMacro("The OFB would hold " << total << " samples, more than 2^32. Lower the "
@@ -328,96 +639,45 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
                                 << this->MemoryLimit << " MiB.");
     return false;
   }
-
   if (!output->AllocateSamples(n))
   {
     return false;
   }
-  std::unique_ptr<vtkTypeUInt32[]> triOf(new (std::nothrow) vtkTypeUInt32[n > 0 ? n : 1]);
-  std::unique_ptr<float[]> w1(new (std::nothrow) float[n > 0 ? n : 1]);
-  std::unique_ptr<float[]> w2(new (std::nothrow) float[n > 0 ? n : 1]);
-  if (!triOf || !w1 || !w2)
+  SampleArrays arrays(surface, n);
+  Output out;
+  vtkTypeUInt32* offsets = output->GetCellOffsets()->GetPointer(0);
+  out.Offsets = offsets;
+  out.Depth = output->GetDepths()->GetPointer(0);
+  out.CellIndex = output->GetCellIndex()->GetPointer(0);
+  out.Colors = arrays.Colors->GetPointer(0);
+  out.Normals = arrays.Normals->GetPointer(0);
+  out.Vectors = arrays.Vectors ? arrays.Vectors->GetPointer(0) : nullptr;
+  std::vector<bool> interpolable;
+  for (size_t k = 0; k < surface.Arrays.size(); ++k)
   {
-    vtkErrorMacro("Cannot allocate the temporaries of " << n << " samples.");
-    return false;
-  }
-  float* depth = output->GetDepths()->GetPointer(0);
-  vtkTypeUInt32* cellOf = output->GetCellIndex()->GetPointer(0);
-  vtkTypeUInt32* triP = triOf.get();
-  float* w1P = w1.get();
-  float* w2P = w2.get();
-
-  // Pass 2: fill depth, cell, triangle and barycentrics; the counters run back to 0.
-  vtkSMPTools::For(0, nTris, 256,
-    [&](vtkIdType begin, vtkIdType end)
+    interpolable.push_back(vtkOFBSampleShader::IsInterpolable(surface.Arrays[k]));
+    if (interpolable.back())
     {
-      TriangleSetup ts;
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        if (!ts.Setup(P, T3 + 3 * t, frame))
-        {
-          continue;
-        }
-        ts.Rasterize(frame,
-          [&](vtkIdType cell, int64_t iu, int64_t iv)
-          {
-            const vtkTypeUInt32 slot =
-              offsets[cell] + __atomic_sub_fetch(C + cell, 1u, __ATOMIC_RELAXED);
-            double b1 = ts.A1 * iu + ts.B1 * iv + ts.C1;
-            double b2 = ts.A2 * iu + ts.B2 * iv + ts.C2;
-            // The depth of the triangle's plane at the cell centre, even for centres
-            // a lattice step outside the triangle (the same point as its neighbour's);
-            // the attributes' barycentrics are clamped to the triangle.
-            depth[slot] = static_cast<float>(ts.D0 + b1 * (ts.D1 - ts.D0) + b2 * (ts.D2 - ts.D0));
-            b1 = std::min(std::max(b1, 0.0), 1.0);
-            b2 = std::min(std::max(b2, 0.0), 1.0 - b1);
-            cellOf[slot] = static_cast<vtkTypeUInt32>(cell);
-            triP[slot] = static_cast<vtkTypeUInt32>(t);
-            w1P[slot] = static_cast<float>(b1);
-            w2P[slot] = static_cast<float>(b2);
-          });
-      }
-    });
-  counts.reset();
-  this->UpdateProgress(0.6);
-  if (this->GetAbortExecute())
-  {
-    return false;
+      out.OthersIn.push_back(surface.Arrays[k]);
+      out.Others.push_back(arrays.Others[k]);
+    }
   }
 
-  // Pass 3: sort each cell by (depth, triangle): deterministic whatever the threads.
-  vtkSMPTools::For(0, nCells, 4096,
+  // Pass 2: each band on its own.
+  vtkSMPThreadLocal<BandScratch> scratch;
+  vtkSMPTools::For(0, nBands, 1,
     [&](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType c = begin; c < end; ++c)
+      BandScratch& local = scratch.Local();
+      for (vtkIdType b = begin; b < end; ++b)
       {
-        const vtkTypeUInt32 b = offsets[c];
-        const vtkTypeUInt32 e = offsets[c + 1];
-        for (vtkTypeUInt32 i = b + 1; i < e; ++i)
-        {
-          const float d = depth[i];
-          const vtkTypeUInt32 t = triP[i];
-          const float x1 = w1P[i], x2 = w2P[i];
-          vtkTypeUInt32 j = i;
-          while (j > b && (depth[j - 1] > d || (depth[j - 1] == d && triP[j - 1] > t)))
-          {
-            depth[j] = depth[j - 1];
-            triP[j] = triP[j - 1];
-            w1P[j] = w1P[j - 1];
-            w2P[j] = w2P[j - 1];
-            --j;
-          }
-          depth[j] = d;
-          triP[j] = t;
-          w1P[j] = x1;
-          w2P[j] = x2;
-        }
+        builder.FillBand(bands[b], out, local);
       }
     });
-  this->UpdateProgress(0.7);
-
-  // Pass 4: attributes.
-  return this->InterpolateAttributes(surface, output, triP, w1P, w2P);
+  offsets[output->GetNumberOfCells()] = static_cast<vtkTypeUInt32>(n);
+  arrays.Attach(surface, output->GetSampleData(), interpolable);
+  this->UpdateProgress(0.85);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -425,143 +685,54 @@ bool vtkOFBSampler::InterpolateAttributes(const vtkOFBSurface& surface, vtkOFB* 
   const vtkTypeUInt32* triP, const float* w1P, const float* w2P)
 {
   const vtkIdType n = output->GetNumberOfSamples();
-  const double* P = surface.Points.data();
-  const vtkIdType* T3 = surface.Triangles.data();
-  vtkPointData* sd = output->GetSampleData();
-  auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  colors->SetName("Colors");
-  colors->SetNumberOfComponents(4);
-  colors->SetNumberOfTuples(n);
-  auto normals = vtkSmartPointer<vtkFloatArray>::New();
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(n);
-  vtkSmartPointer<vtkFloatArray> vectors;
-  if (surface.Vectors)
-  {
-    vectors = vtkSmartPointer<vtkFloatArray>::New();
-    vectors->SetName(surface.Vectors->GetName());
-    vectors->SetNumberOfComponents(3);
-    vectors->SetNumberOfTuples(n);
-  }
-  unsigned char* outC = colors->GetPointer(0);
-  float* outN = normals->GetPointer(0);
-  float* outV = vectors ? vectors->GetPointer(0) : nullptr;
-  const float* inN = surface.Normals.data();
-  const float* inV =
-    surface.Vectors ? vtkFloatArray::SafeDownCast(surface.Vectors)->GetPointer(0) : nullptr;
-  const unsigned char* inC = surface.Colors ? surface.Colors->GetPointer(0) : nullptr;
-  const int ncC = surface.Colors ? surface.Colors->GetNumberOfComponents() : 0;
-  const unsigned char* defaultColor = surface.DefaultColor;
-  const bool project = surface.ProjectVectors;
+  SampleArrays arrays(surface, n);
+  unsigned char* outC = arrays.Colors->GetPointer(0);
+  float* outN = arrays.Normals->GetPointer(0);
+  float* outV = arrays.Vectors ? arrays.Vectors->GetPointer(0) : nullptr;
+  const vtkOFBSampleShader shader(surface);
   vtkSMPTools::For(0, n, 4096,
     [&](vtkIdType begin, vtkIdType end)
     {
+      float nrm[3], vec[3], tmp;
+      vtkOFBSampleShader::Run run;
+      for (int k = 0; k < 3; ++k)
+      {
+        run.N[k] = nrm + k;
+        run.V[k] = vec + k;
+      }
+      run.Scratch = &tmp;
       for (vtkIdType i = begin; i < end; ++i)
       {
-        const vtkIdType* t = T3 + 3 * static_cast<vtkIdType>(triP[i]);
-        const float b1 = w1P[i], b2 = w2P[i], b0 = 1.0f - b1 - b2;
-        const float* n0 = inN + 3 * t[0];
-        const float* n1 = inN + 3 * t[1];
-        const float* n2 = inN + 3 * t[2];
-        float nrm[3];
-        for (int k = 0; k < 3; ++k)
+        run.RGBA = outC + 4 * i;
+        shader.Shade(triP[i], 1, w1P + i, w2P + i, run);
+        if (!shader.C)
         {
-          nrm[k] = b0 * n0[k] + b1 * n1[k] + b2 * n2[k];
+          std::memcpy(run.RGBA, shader.DefaultColor, 4);
         }
-        float len2 = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
-        if (!(len2 > 1e-12f))
-        {
-          // Opposing or missing point normals: use the face normal.
-          const double* p0 = P + 3 * t[0];
-          const double* p1 = P + 3 * t[1];
-          const double* p2 = P + 3 * t[2];
-          const double e1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
-          const double e2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
-          nrm[0] = static_cast<float>(e1[1] * e2[2] - e1[2] * e2[1]);
-          nrm[1] = static_cast<float>(e1[2] * e2[0] - e1[0] * e2[2]);
-          nrm[2] = static_cast<float>(e1[0] * e2[1] - e1[1] * e2[0]);
-          len2 = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
-        }
-        const float inv = len2 > 0.0f ? 1.0f / std::sqrt(len2) : 0.0f;
-        for (int k = 0; k < 3; ++k)
-        {
-          nrm[k] *= inv;
-          outN[3 * i + k] = nrm[k];
-        }
+        std::copy(nrm, nrm + 3, outN + 3 * i);
         if (outV)
         {
-          float v[3];
-          for (int k = 0; k < 3; ++k)
-          {
-            v[k] = b0 * inV[3 * t[0] + k] + b1 * inV[3 * t[1] + k] + b2 * inV[3 * t[2] + k];
-          }
-          if (project)
-          {
-            const float vn = v[0] * nrm[0] + v[1] * nrm[1] + v[2] * nrm[2];
-            for (int k = 0; k < 3; ++k)
-            {
-              v[k] -= vn * nrm[k];
-            }
-          }
-          for (int k = 0; k < 3; ++k)
-          {
-            outV[3 * i + k] = v[k];
-          }
-        }
-        if (inC)
-        {
-          for (int k = 0; k < ncC; ++k)
-          {
-            const float c = b0 * inC[ncC * t[0] + k] + b1 * inC[ncC * t[1] + k] +
-              b2 * inC[ncC * t[2] + k];
-            outC[4 * i + k] = static_cast<unsigned char>(std::min(255.0f, c + 0.5f));
-          }
-          if (ncC == 3)
-          {
-            outC[4 * i + 3] = 255;
-          }
-        }
-        else
-        {
-          for (int k = 0; k < 4; ++k)
-          {
-            outC[4 * i + k] = defaultColor[k];
-          }
+          std::copy(vec, vec + 3, outV + 3 * i);
         }
       }
     });
-  sd->SetScalars(colors);
-  sd->SetNormals(normals);
-  if (vectors)
-  {
-    sd->SetVectors(vectors);
-  }
   this->UpdateProgress(0.85);
-
+  std::vector<bool> interpolable;
   for (size_t k = 0; k < surface.Arrays.size(); ++k)
   {
     vtkDataArray* in = surface.Arrays[k];
-    vtkSmartPointer<vtkDataArray> out = vtk::TakeSmartPointer(in->NewInstance());
-    out->SetName(in->GetName());
-    out->SetNumberOfComponents(in->GetNumberOfComponents());
-    out->SetNumberOfTuples(n);
-    const int nc = in->GetNumberOfComponents();
-    switch (in->GetDataType())
+    vtkDataArray* outArray = arrays.Others[k];
+    interpolable.push_back(vtkOFBSampleShader::IsInterpolable(in));
+    if (interpolable.back())
     {
-      vtkTemplateMacro(InterpolateArray(static_cast<const VTK_TT*>(in->GetVoidPointer(0)),
-        static_cast<VTK_TT*>(out->GetVoidPointer(0)), nc, n, triP, w1P, w2P, T3));
-      default:
-        continue;
-    }
-    if (static_cast<int>(k) == surface.TCoordsIndex)
-    {
-      sd->SetTCoords(out);
-    }
-    else
-    {
-      sd->AddArray(out);
+      vtkSMPTools::For(0, n, 4096,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          vtkOFBSampleShader::InterpolateArray(in, outArray, begin, end - begin,
+            surface.Triangles.data(), triP + begin, w1P + begin, w2P + begin, nullptr);
+        });
     }
   }
+  arrays.Attach(surface, output->GetSampleData(), interpolable);
   return true;
 }

@@ -1,0 +1,241 @@
+/**
+ * @class   vtkOFBSampleShader
+ * @brief   Attributes of OFB samples from their triangle and barycentrics (private)
+ *
+ * Attributes of the samples of a triangle, n at a time (structure of arrays, so
+ * that the loops vectorize): unit normals (the face normal where the point normals
+ * cancel), the vector field projected into the tangent plane, RGBA colours, and
+ * the other point arrays of the surface. The CPU backend of vtkOFBSampler and
+ * vtkOFBSampler::InterpolateAttributes (used by the OpenGL backend) both use it,
+ * so both give the same attributes.
+ */
+
+#ifndef vtkOFBSampleShader_h
+#define vtkOFBSampleShader_h
+
+#include "vtkFloatArray.h"
+#include "vtkOFBSurface.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <type_traits>
+
+struct vtkOFBSampleShader
+{
+  const double* P;
+  const vtkIdType* T3;
+  const float* N;
+  const float* V;
+  const unsigned char* C;
+  int NC;
+  unsigned char DefaultColor[4];
+  bool Project;
+
+  explicit vtkOFBSampleShader(const vtkOFBSurface& s)
+    : P(s.Points.data())
+    , T3(s.Triangles.data())
+    , N(s.Normals.data())
+    , V(s.Vectors ? vtkFloatArray::SafeDownCast(s.Vectors)->GetPointer(0) : nullptr)
+    , C(s.Colors ? s.Colors->GetPointer(0) : nullptr)
+    , NC(s.Colors ? s.Colors->GetNumberOfComponents() : 0)
+    , Project(s.ProjectVectors)
+  {
+    std::memcpy(this->DefaultColor, s.DefaultColor, 4);
+  }
+
+  /**
+   * Where a run of samples goes: normals and vectors by component, colours 4 bytes
+   * a sample (written only when the surface has colours), and room for n floats
+   * of temporaries.
+   */
+  struct Run
+  {
+    float* N[3];
+    float* V[3];
+    unsigned char* RGBA;
+    float* Scratch;
+  };
+
+  /// Attributes of n samples of triangle tri at barycentrics (w1, w2).
+  void Shade(vtkIdType tri, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  {
+    const vtkIdType* t = this->T3 + 3 * tri;
+    // The point normals interpolated, a component at a time (loops that vectorize).
+    for (int k = 0; k < 3; ++k)
+    {
+      const float c0 = this->N[3 * t[0] + k];
+      const float c1 = this->N[3 * t[1] + k];
+      const float c2 = this->N[3 * t[2] + k];
+      float* nk = out.N[k];
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        nk[i] = (1.0f - w1[i] - w2[i]) * c0 + w1[i] * c1 + w2[i] * c2;
+      }
+    }
+    // Normalized; the face normal where the point normals are opposed or missing.
+    float* nx = out.N[0];
+    float* ny = out.N[1];
+    float* nz = out.N[2];
+    float* len2 = out.Scratch;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      len2[i] = nx[i] * nx[i] + ny[i] * ny[i] + nz[i] * nz[i];
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (!(len2[i] > 1e-12f))
+      {
+        float face[3];
+        this->FaceNormal(t, face);
+        len2[i] = face[0] * face[0] + face[1] * face[1] + face[2] * face[2];
+        const bool zero = !(len2[i] > 0.0f);
+        nx[i] = zero ? 0.0f : face[0];
+        ny[i] = zero ? 0.0f : face[1];
+        nz[i] = zero ? 0.0f : face[2];
+        len2[i] = zero ? 1.0f : len2[i];
+      }
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      len2[i] = 1.0f / std::sqrt(len2[i]);
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      nx[i] *= len2[i];
+      ny[i] *= len2[i];
+      nz[i] *= len2[i];
+    }
+    if (this->V)
+    {
+      this->ShadeVectors(t, n, w1, w2, out);
+    }
+    if (this->C)
+    {
+      this->ShadeColors(t, n, w1, w2, out.RGBA);
+    }
+  }
+
+  /// The face normal of triangle t (length: twice its area).
+  void FaceNormal(const vtkIdType* t, float face[3]) const
+  {
+    const double* p0 = this->P + 3 * t[0];
+    const double* p1 = this->P + 3 * t[1];
+    const double* p2 = this->P + 3 * t[2];
+    const double e1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+    const double e2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+    face[0] = static_cast<float>(e1[1] * e2[2] - e1[2] * e2[1]);
+    face[1] = static_cast<float>(e1[2] * e2[0] - e1[0] * e2[2]);
+    face[2] = static_cast<float>(e1[0] * e2[1] - e1[1] * e2[0]);
+  }
+
+  /// The vector field interpolated, projected into the plane of the normals.
+  void ShadeVectors(
+    const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const float v0 = this->V[3 * t[0] + k];
+      const float v1 = this->V[3 * t[1] + k];
+      const float v2 = this->V[3 * t[2] + k];
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        out.V[k][i] = (1.0f - w1[i] - w2[i]) * v0 + w1[i] * v1 + w2[i] * v2;
+      }
+    }
+    if (!this->Project)
+    {
+      return;
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const float vn =
+        out.V[0][i] * out.N[0][i] + out.V[1][i] * out.N[1][i] + out.V[2][i] * out.N[2][i];
+      for (int k = 0; k < 3; ++k)
+      {
+        out.V[k][i] -= vn * out.N[k][i];
+      }
+    }
+  }
+
+  /// The point colours interpolated, rounded (RGB gets an opaque alpha).
+  void ShadeColors(
+    const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, unsigned char* rgba) const
+  {
+    const int nc = this->NC;
+    for (int k = 0; k < nc; ++k)
+    {
+      const float c0 = this->C[nc * t[0] + k];
+      const float c1 = this->C[nc * t[1] + k];
+      const float c2 = this->C[nc * t[2] + k];
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        const float c = (1.0f - w1[i] - w2[i]) * c0 + w1[i] * c1 + w2[i] * c2;
+        rgba[4 * i + k] = static_cast<unsigned char>(std::min(255.0f, c + 0.5f));
+      }
+    }
+    for (vtkIdType i = 0; nc == 3 && i < n; ++i)
+    {
+      rgba[4 * i + 3] = 255;
+    }
+  }
+
+  /**
+   * Barycentric interpolation of an array-of-structures array into n samples:
+   * sample i from fragment f = order[i] (i without order), of triangle tri[f] at
+   * barycentrics (w1[f], w2[f]).
+   */
+  template<typename T>
+  static void InterpolateTuples(const T* in, T* out, int nc, vtkIdType n, const vtkIdType* T3,
+    const vtkTypeUInt32* tri, const float* w1, const float* w2, const vtkTypeUInt32* order)
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const vtkIdType f = order ? order[i] : i;
+      const vtkIdType* t = T3 + 3 * static_cast<vtkIdType>(tri[f]);
+      const double b1 = w1[f], b2 = w2[f], b0 = 1.0 - b1 - b2;
+      for (int k = 0; k < nc; ++k)
+      {
+        const double v = b0 * in[t[0] * nc + k] + b1 * in[t[1] * nc + k] + b2 * in[t[2] * nc + k];
+        if (std::is_integral<T>::value)
+        {
+          out[i * nc + k] = static_cast<T>(std::llround(v));
+        }
+        else
+        {
+          out[i * nc + k] = static_cast<T>(v);
+        }
+      }
+    }
+  }
+
+  /// Interpolate samples [first, first + n) of one of the surface's other arrays.
+  static bool InterpolateArray(vtkDataArray* in, vtkDataArray* out, vtkIdType first, vtkIdType n,
+    const vtkIdType* T3, const vtkTypeUInt32* tri, const float* w1, const float* w2,
+    const vtkTypeUInt32* order)
+  {
+    const int nc = in->GetNumberOfComponents();
+    switch (in->GetDataType())
+    {
+      vtkTemplateMacro(InterpolateTuples(static_cast<const VTK_TT*>(in->GetVoidPointer(0)),
+        static_cast<VTK_TT*>(out->GetVoidPointer(first * nc)), nc, n, T3, tri, w1, w2, order));
+      default:
+        return false;
+    }
+    return true;
+  }
+
+  /// Whether InterpolateArray handles arrays of this type.
+  static bool IsInterpolable(vtkDataArray* array)
+  {
+    switch (array->GetDataType())
+    {
+      vtkTemplateMacro(return true);
+      default:
+        return false;
+    }
+  }
+};
+
+#endif

@@ -1,0 +1,177 @@
+/**
+ * @class   vtkOFBTriangleRaster
+ * @brief   A triangle set up for scan conversion into an OFB grid (private)
+ *
+ * Used by the CPU backend of vtkOFBSampler (vtkOFBSamplerCPU.cxx). Each triangle
+ * goes to the grid of the axis closest to its face normal. Coverage is decided on
+ * a fixed-point lattice of 1/2^SubBits cell (cell centres on its integer multiples
+ * of 2^SubBits) by three edge functions, inside where all are >= 0: edge i at cell
+ * (iu, iv) is Edge[i] + StepV[i] * (iv - V0) + StepU[i] * (iu - U0). A centre
+ * exactly on an edge belongs to the triangle for which that edge is a left or
+ * bottom edge: the top-left rule of raster (y-down) coordinates, as Mesa's OpenGL
+ * rasterizer, so that the OpenGL backend covers the same centres and a shared edge
+ * gives neither a hole nor a duplicate. Depth and barycentrics are linear
+ * functions of the cell, from the true (unsnapped) geometry.
+ */
+
+#ifndef vtkOFBTriangleRaster_h
+#define vtkOFBTriangleRaster_h
+
+#include "vtkType.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+/// The frame of an OFB as the rasterizer needs it.
+struct vtkOFBRasterFrame
+{
+  double Origin[3];
+  double InvCell;
+  vtkIdType Dims[3];
+  vtkIdType CellBase[3];
+};
+
+struct vtkOFBTriangleRaster
+{
+  /// Sub-cell bits of the fixed-point lattice that decides coverage.
+  static constexpr int SubBits = 8;
+  // With at most 65536 cells a side, lattice coordinates stay below 2^(16 + SubBits)
+  // and edge functions below 2^(33 + 2 SubBits): exact in double precision (Span)
+  // while SubBits <= 9.
+  static_assert(SubBits <= 9, "edge functions must stay exact in double precision");
+
+  int Axis;           // grid, or -1 when the triangle covers no cell centre
+  int U0, U1, V0, V1; // cells of the bounding box, clipped to the grid (inclusive)
+  int64_t Edge[3], StepU[3], StepV[3];
+  // w1 = A1*iu + B1*iv + C1, w2 = A2*iu + B2*iv + C2
+  double A1, B1, C1, A2, B2, C2;
+  double D0, D1, D2; // depths of the vertices (world units from the grid plane)
+
+  /// Set up triangle `tri` (three point ids) of the points P (xyz) for frame f.
+  void Setup(const double* P, const vtkIdType* tri, const vtkOFBRasterFrame& f)
+  {
+    this->Axis = -1;
+    const double* p[3] = { P + 3 * tri[0], P + 3 * tri[1], P + 3 * tri[2] };
+    double e1[3], e2[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      e1[k] = p[1][k] - p[0][k];
+      e2[k] = p[2][k] - p[0][k];
+    }
+    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+      e1[0] * e2[1] - e1[1] * e2[0] };
+    int a = 0;
+    if (std::fabs(n[1]) > std::fabs(n[a]))
+    {
+      a = 1;
+    }
+    if (std::fabs(n[2]) > std::fabs(n[a]))
+    {
+      a = 2;
+    }
+    const int ua = (a + 1) % 3;
+    const int va = (a + 2) % 3;
+    const int64_t one = int64_t(1) << SubBits;
+    double U[3], V[3];
+    int64_t X[3], Y[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      U[i] = (p[i][ua] - f.Origin[ua]) * f.InvCell - 0.5;
+      V[i] = (p[i][va] - f.Origin[va]) * f.InvCell - 0.5;
+      X[i] = static_cast<int64_t>(std::llround(U[i] * one));
+      Y[i] = static_cast<int64_t>(std::llround(V[i] * one));
+    }
+    const int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
+    const double denom = (U[1] - U[0]) * (V[2] - V[0]) - (V[1] - V[0]) * (U[2] - U[0]);
+    if (area == 0 || denom == 0.0)
+    {
+      return; // covers no cell centre
+    }
+    if (area < 0)
+    {
+      std::swap(X[1], X[2]);
+      std::swap(Y[1], Y[2]);
+    }
+    // Cells whose centre lies in the bounding box, clipped to the grid.
+    const int64_t minX = std::min({ X[0], X[1], X[2] });
+    const int64_t maxX = std::max({ X[0], X[1], X[2] });
+    const int64_t minY = std::min({ Y[0], Y[1], Y[2] });
+    const int64_t maxY = std::max({ Y[0], Y[1], Y[2] });
+    const int64_t u0 = std::max<int64_t>(0, (minX + one - 1) >> SubBits);
+    const int64_t u1 = std::min<int64_t>(f.Dims[ua] - 1, maxX >> SubBits);
+    const int64_t v0 = std::max<int64_t>(0, (minY + one - 1) >> SubBits);
+    const int64_t v1 = std::min<int64_t>(f.Dims[va] - 1, maxY >> SubBits);
+    if (u0 > u1 || v0 > v1)
+    {
+      return;
+    }
+    this->U0 = static_cast<int>(u0);
+    this->U1 = static_cast<int>(u1);
+    this->V0 = static_cast<int>(v0);
+    this->V1 = static_cast<int>(v1);
+    // Edge i runs from vertex i+1 to vertex i+2; strictly inside (> 0) on the edges
+    // that are not left or bottom edges.
+    for (int i = 0; i < 3; ++i)
+    {
+      const int j = (i + 1) % 3;
+      const int k = (i + 2) % 3;
+      const int64_t dx = X[k] - X[j];
+      const int64_t dy = Y[k] - Y[j];
+      const bool owned = dy < 0 || (dy == 0 && dx > 0);
+      this->Edge[i] = dx * (v0 * one - Y[j]) - dy * (u0 * one - X[j]) - (owned ? 0 : 1);
+      this->StepU[i] = -dy * one;
+      this->StepV[i] = dx * one;
+    }
+    this->D0 = p[0][a] - f.Origin[a];
+    this->D1 = p[1][a] - f.Origin[a];
+    this->D2 = p[2][a] - f.Origin[a];
+    const double inv = 1.0 / denom;
+    this->A1 = (V[2] - V[0]) * inv;
+    this->B1 = -(U[2] - U[0]) * inv;
+    this->C1 = -(this->A1 * U[0] + this->B1 * V[0]);
+    this->A2 = -(V[1] - V[0]) * inv;
+    this->B2 = (U[1] - U[0]) * inv;
+    this->C2 = -(this->A2 * U[0] + this->B2 * V[0]);
+    this->Axis = a;
+  }
+
+  /**
+   * The covered cells [first, last] of row iv (first > last when none). Each edge
+   * function is linear along the row and bounds the span on one side, at its root
+   * k = -e / s (k = iu - U0). The edge functions are integers below 2^51, exact in
+   * double precision, and a correctly rounded quotient of them never crosses an
+   * integer (its error is far below 1 / |s|, the spacing of their fractions), so
+   * the ceiling or floor of the floating-point root is the exact bound.
+   */
+  void Span(int64_t iv, int64_t& first, int64_t& last) const
+  {
+    const int64_t width = this->U1 - this->U0;
+    int64_t lo = 0, hi = width;
+    for (int i = 0; i < 3; ++i)
+    {
+      const int64_t e = this->Edge[i] + this->StepV[i] * (iv - this->V0);
+      const int64_t s = this->StepU[i];
+      if (s == 0)
+      {
+        hi = e < 0 ? -1 : hi;
+        continue;
+      }
+      const double root = -static_cast<double>(e) / static_cast<double>(s);
+      const double k = std::min(std::max(root, -1.0), width + 1.0);
+      const int64_t t = static_cast<int64_t>(k); // truncated: floor or ceiling of k
+      if (s > 0)
+      {
+        lo = std::max(lo, t + (static_cast<double>(t) < k)); // inside from ceil(root)
+      }
+      else
+      {
+        hi = std::min(hi, t - (static_cast<double>(t) > k)); // inside up to floor(root)
+      }
+    }
+    first = this->U0 + lo;
+    last = this->U0 + hi;
+  }
+};
+
+#endif

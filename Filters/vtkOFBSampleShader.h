@@ -186,7 +186,7 @@ struct vtkOFBSampleShader
    * sample i from fragment f = order[i] (i without order), of triangle tri[f] at
    * barycentrics (w1[f], w2[f]).
    */
-  template<typename T>
+  template <typename T>
   static void InterpolateTuples(const T* in, T* out, int nc, vtkIdType n, const vtkIdType* T3,
     const vtkTypeUInt32* tri, const float* w1, const float* w2, const vtkTypeUInt32* order)
   {

@@ -3,6 +3,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArrayRange.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -19,8 +20,10 @@
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 vtkStandardNewMacro(vtkOFBSampler);
 
@@ -46,6 +49,275 @@ bool IsColorArray(vtkDataArray* array)
 {
   return array && array->GetDataType() == VTK_UNSIGNED_CHAR &&
     (array->GetNumberOfComponents() == 3 || array->GetNumberOfComponents() == 4);
+}
+
+/**
+ * Items per chunk of the parallel loops below. Their per-chunk results are combined
+ * in chunk order, so that nothing depends on the number of threads.
+ */
+constexpr vtkIdType Chunk = 16384;
+
+/// Copy n values to doubles in parallel; the index of the first non-finite one, or -1.
+template <typename T>
+vtkIdType CopyValues(const T* in, vtkIdType nValues, double* out)
+{
+  const vtkIdType nChunks = (nValues + Chunk - 1) / Chunk;
+  std::vector<vtkIdType> firstBad(nChunks, -1);
+  vtkSMPTools::For(0, nChunks, 1,
+    [&](vtkIdType c0, vtkIdType c1)
+    {
+      for (vtkIdType c = c0; c < c1; ++c)
+      {
+        const vtkIdType end = std::min(nValues, (c + 1) * Chunk);
+        for (vtkIdType i = c * Chunk; i < end; ++i)
+        {
+          out[i] = static_cast<double>(in[i]);
+          if (!std::isfinite(out[i]) && firstBad[c] < 0)
+          {
+            firstBad[c] = i;
+          }
+        }
+      }
+    });
+  for (const vtkIdType bad : firstBad)
+  {
+    if (bad >= 0)
+    {
+      return bad;
+    }
+  }
+  return -1;
+}
+
+/**
+ * Copy the point coordinates (3 components) into `out` as doubles; the index of
+ * the first point with a non-finite coordinate, or -1.
+ */
+vtkIdType CopyPoints(vtkDataArray* points, double* out)
+{
+  const vtkIdType nValues = 3 * points->GetNumberOfTuples();
+  vtkIdType bad = -1;
+  if (auto* f = vtkFloatArray::FastDownCast(points))
+  {
+    bad = CopyValues(f->GetPointer(0), nValues, out);
+  }
+  else if (auto* d = vtkDoubleArray::FastDownCast(points))
+  {
+    bad = CopyValues(d->GetPointer(0), nValues, out);
+  }
+  else
+  {
+    const auto range = vtk::DataArrayValueRange<3>(points);
+    for (vtkIdType i = 0; i < nValues && bad < 0; ++i)
+    {
+      out[i] = range[i];
+      bad = std::isfinite(out[i]) ? -1 : i;
+    }
+  }
+  return bad < 0 ? -1 : bad / 3;
+}
+
+/**
+ * The triangles of a cell array with non-zero area, in order, and the bounds of
+ * their points, found in parallel.
+ */
+struct TriangleCollector
+{
+  const double* P;
+  vtkIdType NumberOfPoints;
+  vtkIdType Skipped = 0;
+
+  TriangleCollector(const double* points, vtkIdType nPoints)
+    : P(points)
+    , NumberOfPoints(nPoints)
+  {
+  }
+
+  /// False if a triangle has a point id out of range.
+  bool Collect(vtkCellArray* cells, vtkOFBSurface& surface)
+  {
+    if (cells->IsHomogeneous() == 3 && cells->IsStorage64Bit())
+    {
+      return this->Collect(cells->GetConnectivityArray64()->GetPointer(0),
+        cells->GetNumberOfCells(), surface);
+    }
+    if (cells->IsHomogeneous() == 3)
+    {
+      return this->Collect(cells->GetConnectivityArray32()->GetPointer(0),
+        cells->GetNumberOfCells(), surface);
+    }
+    // Mixed cells (not left by the triangulation in practice): their triangles.
+    std::vector<vtkIdType> ids;
+    auto iter = vtk::TakeSmartPointer(cells->NewIterator());
+    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+    {
+      vtkIdType npts;
+      const vtkIdType* pts;
+      iter->GetCurrentCell(npts, pts);
+      if (npts == 3)
+      {
+        ids.insert(ids.end(), pts, pts + 3);
+      }
+    }
+    return this->Collect(ids.data(), static_cast<vtkIdType>(ids.size() / 3), surface);
+  }
+
+  template <typename IdT>
+  bool Collect(const IdT* ids, vtkIdType n, vtkOFBSurface& surface)
+  {
+    const vtkIdType nChunks = (n + Chunk - 1) / Chunk;
+    std::vector<vtkIdType> kept(nChunks + 1, 0);
+    std::vector<double> bounds(6 * nChunks);
+    std::vector<unsigned char> valid(n), badIds(nChunks, 0);
+    vtkSMPTools::For(0, nChunks, 1,
+      [&](vtkIdType c0, vtkIdType c1)
+      {
+        for (vtkIdType c = c0; c < c1; ++c)
+        {
+          kept[c + 1] = this->Check(ids, c * Chunk, std::min(n, (c + 1) * Chunk), valid.data(),
+            &bounds[6 * c], badIds[c]);
+        }
+      });
+    if (std::find(badIds.begin(), badIds.end(), 1) != badIds.end())
+    {
+      return false;
+    }
+    for (vtkIdType c = 0; c < nChunks; ++c)
+    {
+      kept[c + 1] += kept[c];
+    }
+    this->Skipped = n - kept[nChunks];
+    surface.Triangles.resize(3 * kept[nChunks]);
+    vtkIdType* out = surface.Triangles.data();
+    vtkSMPTools::For(0, nChunks, 1,
+      [&](vtkIdType c0, vtkIdType c1)
+      {
+        for (vtkIdType c = c0; c < c1; ++c)
+        {
+          vtkIdType k = 3 * kept[c];
+          for (vtkIdType t = c * Chunk; t < std::min(n, (c + 1) * Chunk); ++t)
+          {
+            for (int j = 0; valid[t] && j < 3; ++j)
+            {
+              out[k++] = static_cast<vtkIdType>(ids[3 * t + j]);
+            }
+          }
+        }
+      });
+    // Bounds of the points the triangles use (min and max: exact in any order).
+    double* b = surface.Bounds;
+    b[0] = b[2] = b[4] = VTK_DOUBLE_MAX;
+    b[1] = b[3] = b[5] = -VTK_DOUBLE_MAX;
+    for (vtkIdType c = 0; c < nChunks; ++c)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        b[2 * k] = std::min(b[2 * k], bounds[6 * c + 2 * k]);
+        b[2 * k + 1] = std::max(b[2 * k + 1], bounds[6 * c + 2 * k + 1]);
+      }
+    }
+    return true;
+  }
+
+  /**
+   * Triangles [begin, end): flags of those with non-zero area, their count and
+   * bounds; badId is set to 1 if one has a point id out of range.
+   */
+  template <typename IdT>
+  vtkIdType Check(const IdT* ids, vtkIdType begin, vtkIdType end, unsigned char* valid,
+    double bounds[6], unsigned char& badId) const
+  {
+    bounds[0] = bounds[2] = bounds[4] = VTK_DOUBLE_MAX;
+    bounds[1] = bounds[3] = bounds[5] = -VTK_DOUBLE_MAX;
+    vtkIdType count = 0;
+    for (vtkIdType t = begin; t < end; ++t)
+    {
+      const IdT* tri = ids + 3 * t;
+      valid[t] = 0;
+      if (tri[0] < 0 || tri[1] < 0 || tri[2] < 0 || tri[0] >= this->NumberOfPoints ||
+        tri[1] >= this->NumberOfPoints || tri[2] >= this->NumberOfPoints)
+      {
+        badId = 1;
+        continue;
+      }
+      const double* p0 = this->P + 3 * tri[0];
+      const double* p1 = this->P + 3 * tri[1];
+      const double* p2 = this->P + 3 * tri[2];
+      double e1[3], e2[3], n[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        e1[k] = p1[k] - p0[k];
+        e2[k] = p2[k] - p0[k];
+      }
+      vtkMath::Cross(e1, e2, n);
+      if (vtkMath::Dot(n, n) == 0.0)
+      {
+        continue;
+      }
+      valid[t] = 1;
+      ++count;
+      for (const double* p : { p0, p1, p2 })
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          bounds[2 * k] = std::min(bounds[2 * k], p[k]);
+          bounds[2 * k + 1] = std::max(bounds[2 * k + 1], p[k]);
+        }
+      }
+    }
+    return count;
+  }
+};
+
+/**
+ * Area-weighted point normals of the surface's triangles: face normals in
+ * parallel, summed per point in triangle order (as a serial loop would, whatever
+ * the number of threads), normalized in parallel.
+ */
+void AreaWeightedNormals(vtkOFBSurface& surface)
+{
+  const double* P = surface.Points.data();
+  const vtkIdType* T = surface.Triangles.data();
+  const vtkIdType nTris = surface.GetNumberOfTriangles();
+  const vtkIdType nPoints = static_cast<vtkIdType>(surface.Points.size() / 3);
+  std::vector<double> face(3 * nTris);
+  vtkSMPTools::For(0, nTris, Chunk,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        double e1[3], e2[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          e1[k] = P[3 * T[3 * t + 1] + k] - P[3 * T[3 * t] + k];
+          e2[k] = P[3 * T[3 * t + 2] + k] - P[3 * T[3 * t] + k];
+        }
+        vtkMath::Cross(e1, e2, &face[3 * t]); // length is twice the area: area weighting
+      }
+    });
+  std::vector<double> acc(3 * nPoints, 0.0);
+  for (vtkIdType t = 0; t < nTris; ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        acc[3 * T[3 * t + c] + k] += face[3 * t + k];
+      }
+    }
+  }
+  vtkSMPTools::For(0, nPoints, Chunk,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const double len = vtkMath::Norm(&acc[3 * i]);
+        for (int k = 0; k < 3; ++k)
+        {
+          surface.Normals[3 * i + k] = len > 0.0 ? static_cast<float>(acc[3 * i + k] / len) : 0.0f;
+        }
+      }
+    });
 }
 }
 
@@ -117,19 +389,12 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
   // Points, checked finite.
   const vtkIdType nPoints = input->GetNumberOfPoints();
   surface.Points.resize(3 * nPoints);
+  const vtkIdType badPoint = CopyPoints(input->GetPoints()->GetData(), surface.Points.data());
+  if (badPoint >= 0)
   {
-    const auto range = vtk::DataArrayValueRange<3>(input->GetPoints()->GetData());
-    vtkIdType i = 0;
-    for (const double value : range)
-    {
-      if (!std::isfinite(value))
-      {
-        vtkErrorMacro("The input has non-finite (NaN or Inf) point coordinates, point "
-          << i / 3 << ".");
-        return false;
-      }
-      surface.Points[i++] = value;
-    }
+    vtkErrorMacro(
+      "The input has non-finite (NaN or Inf) point coordinates, point " << badPoint << ".");
+    return false;
   }
 
   // Triangles: the input's own cells when they are all triangles, else a triangulation.
@@ -148,40 +413,13 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     triangulate->Update();
     mesh = triangulate->GetOutput();
   }
-  const double* P = surface.Points.data();
-  surface.Triangles.reserve(3 * mesh->GetNumberOfPolys());
+  TriangleCollector triangles(surface.Points.data(), nPoints);
+  if (!triangles.Collect(mesh->GetPolys(), surface))
   {
-    auto iter = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
-    {
-      vtkIdType npts;
-      const vtkIdType* ids;
-      iter->GetCurrentCell(npts, ids);
-      if (npts != 3)
-      {
-        continue;
-      }
-      if (ids[0] < 0 || ids[1] < 0 || ids[2] < 0 || ids[0] >= nPoints || ids[1] >= nPoints ||
-        ids[2] >= nPoints)
-      {
-        vtkErrorMacro("The input has a polygon with an invalid point id.");
-        return false;
-      }
-      double e1[3], e2[3], n[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        e1[k] = P[3 * ids[1] + k] - P[3 * ids[0] + k];
-        e2[k] = P[3 * ids[2] + k] - P[3 * ids[0] + k];
-      }
-      vtkMath::Cross(e1, e2, n);
-      if (vtkMath::Dot(n, n) == 0.0)
-      {
-        ++this->NumberOfSkippedTriangles;
-        continue;
-      }
-      surface.Triangles.insert(surface.Triangles.end(), ids, ids + 3);
-    }
+    vtkErrorMacro("The input has a polygon with an invalid point id.");
+    return false;
   }
+  this->NumberOfSkippedTriangles = triangles.Skipped;
   if (this->NumberOfSkippedTriangles > 0)
   {
     vtkWarningMacro("Skipped " << this->NumberOfSkippedTriangles << " zero-area triangles.");
@@ -192,73 +430,33 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     return false;
   }
 
-  // Bounds of the points the triangles use.
-  double* b = surface.Bounds;
-  b[0] = b[2] = b[4] = VTK_DOUBLE_MAX;
-  b[1] = b[3] = b[5] = -VTK_DOUBLE_MAX;
-  for (const vtkIdType id : surface.Triangles)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      b[2 * k] = std::min(b[2 * k], P[3 * id + k]);
-      b[2 * k + 1] = std::max(b[2 * k + 1], P[3 * id + k]);
-    }
-  }
-
   // Normals: the input's point normals, else area-weighted ones.
   vtkPointData* pd = input->GetPointData();
   vtkDataArray* inNormals = pd->GetNormals();
-  surface.Normals.assign(3 * nPoints, 0.0f);
+  surface.Normals.resize(3 * nPoints);
   if (inNormals && inNormals->GetNumberOfComponents() == 3 &&
     inNormals->GetNumberOfTuples() == nPoints)
   {
-    for (vtkIdType i = 0; i < nPoints; ++i)
-    {
-      double n[3];
-      inNormals->GetTuple(i, n);
-      const double len = vtkMath::Norm(n);
-      if (std::isfinite(len) && len > 0.0)
+    vtkSMPTools::For(0, nPoints, Chunk,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        for (int k = 0; k < 3; ++k)
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          surface.Normals[3 * i + k] = static_cast<float>(n[k] / len);
+          double n[3];
+          inNormals->GetTuple(i, n);
+          const double len = vtkMath::Norm(n);
+          const bool unit = std::isfinite(len) && len > 0.0;
+          for (int k = 0; k < 3; ++k)
+          {
+            surface.Normals[3 * i + k] = unit ? static_cast<float>(n[k] / len) : 0.0f;
+          }
         }
-      }
-    }
+      });
   }
   else
   {
     inNormals = nullptr;
-    std::vector<double> acc(3 * nPoints, 0.0);
-    const vtkIdType* T = surface.Triangles.data();
-    for (vtkIdType t = 0; t < surface.GetNumberOfTriangles(); ++t)
-    {
-      double e1[3], e2[3], n[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        e1[k] = P[3 * T[3 * t + 1] + k] - P[3 * T[3 * t] + k];
-        e2[k] = P[3 * T[3 * t + 2] + k] - P[3 * T[3 * t] + k];
-      }
-      vtkMath::Cross(e1, e2, n); // length is twice the area: area weighting
-      for (int c = 0; c < 3; ++c)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          acc[3 * T[3 * t + c] + k] += n[k];
-        }
-      }
-    }
-    for (vtkIdType i = 0; i < nPoints; ++i)
-    {
-      const double len = vtkMath::Norm(&acc[3 * i]);
-      if (len > 0.0)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          surface.Normals[3 * i + k] = static_cast<float>(acc[3 * i + k] / len);
-        }
-      }
-    }
+    AreaWeightedNormals(surface);
   }
 
   // The vector field: the array chosen with SetInputArrayToProcess, else the vectors.
@@ -382,24 +580,42 @@ double vtkOFBSampler::EstimateMemory(vtkPolyData* input)
 double vtkOFBSampler::EstimateBytes(
   const vtkOFBSurface& surface, const vtkIdType dims[3], double cellSize, double samples)
 {
-  // Projected area and perimeter of each triangle on its grid, in cells.
+  // Projected area and perimeter of each triangle on its grid, in cells (summed per
+  // chunk in parallel, then over the chunks in order).
   const double* P = surface.Points.data();
   const vtkIdType* T = surface.Triangles.data();
-  const bool estimate = samples < 0.0;
-  samples = estimate ? 0.0 : samples;
-  for (vtkIdType t = 0; estimate && t < surface.GetNumberOfTriangles(); ++t)
+  if (samples < 0.0)
   {
-    double e1[3], e2[3], e3[3], n[3];
-    for (int k = 0; k < 3; ++k)
+    const vtkIdType nTris = surface.GetNumberOfTriangles();
+    const vtkIdType nChunks = (nTris + Chunk - 1) / Chunk;
+    std::vector<double> sums(nChunks, 0.0);
+    vtkSMPTools::For(0, nChunks, 1,
+      [&](vtkIdType c0, vtkIdType c1)
+      {
+        for (vtkIdType c = c0; c < c1; ++c)
+        {
+          for (vtkIdType t = c * Chunk; t < std::min(nTris, (c + 1) * Chunk); ++t)
+          {
+            double e1[3], e2[3], e3[3], n[3];
+            for (int k = 0; k < 3; ++k)
+            {
+              e1[k] = P[3 * T[3 * t + 1] + k] - P[3 * T[3 * t] + k];
+              e2[k] = P[3 * T[3 * t + 2] + k] - P[3 * T[3 * t] + k];
+              e3[k] = e2[k] - e1[k];
+            }
+            vtkMath::Cross(e1, e2, n);
+            const double area =
+              0.5 * std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
+            const double perimeter = vtkMath::Norm(e1) + vtkMath::Norm(e2) + vtkMath::Norm(e3);
+            sums[c] += area / (cellSize * cellSize) + 0.5 * perimeter / cellSize + 1.0;
+          }
+        }
+      });
+    samples = 0.0;
+    for (const double sum : sums)
     {
-      e1[k] = P[3 * T[3 * t + 1] + k] - P[3 * T[3 * t] + k];
-      e2[k] = P[3 * T[3 * t + 2] + k] - P[3 * T[3 * t] + k];
-      e3[k] = e2[k] - e1[k];
+      samples += sum;
     }
-    vtkMath::Cross(e1, e2, n);
-    const double area = 0.5 * std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
-    const double perimeter = vtkMath::Norm(e1) + vtkMath::Norm(e2) + vtkMath::Norm(e3);
-    samples += area / (cellSize * cellSize) + 0.5 * perimeter / cellSize + 1.0;
   }
   double cells = 0.0;
   for (int a = 0; a < 3; ++a)

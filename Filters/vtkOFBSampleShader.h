@@ -58,7 +58,7 @@ struct vtkOFBSampleShader
     float* Scratch;
   };
 
-  /// Attributes of n samples of triangle tri at barycentrics (w1, w2).
+  /// Attributes of n samples of triangle tri at barycentrics (w1, w2) in the triangle.
   void Shade(vtkIdType tri, vtkIdType n, const float* w1, const float* w2, const Run& out) const
   {
     const vtkIdType* t = this->T3 + 3 * tri;
@@ -83,7 +83,19 @@ struct vtkOFBSampleShader
     {
       len2[i] = nx[i] * nx[i] + ny[i] * ny[i] + nz[i] * nz[i];
     }
-    for (vtkIdType i = 0; i < n; ++i)
+    // With clamped barycentrics, |n|^2 is at least the smallest dot product of two
+    // point normals: when that is clearly positive, no sample needs the face normal.
+    float smallest = 1.0f;
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = i; j < 3; ++j)
+      {
+        const float* a = this->N + 3 * t[i];
+        const float* b = this->N + 3 * t[j];
+        smallest = std::min(smallest, a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+      }
+    }
+    for (vtkIdType i = 0; !(smallest > 1e-3f) && i < n; ++i)
     {
       if (!(len2[i] > 1e-12f))
       {

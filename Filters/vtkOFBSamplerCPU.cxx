@@ -515,7 +515,16 @@ private:
       {
         continue; // most cells are empty
       }
-      for (vtkIdType i = b + 1 - first; i < e - first; ++i)
+      if (e - b == 2)
+      {
+        // The most common case after one sample (a ray through a closed surface),
+        // without a branch on the unpredictable order.
+        const vtkTypeUInt32 f0 = order[b - first], f1 = order[b + 1 - first];
+        const bool swap = depth[f0] > depth[f1];
+        order[b - first] = swap ? f1 : f0;
+        order[b + 1 - first] = swap ? f0 : f1;
+      }
+      for (vtkIdType i = b + 1 - first; e - b > 2 && i < e - first; ++i)
       {
         const vtkTypeUInt32 f = order[i];
         vtkIdType j = i;

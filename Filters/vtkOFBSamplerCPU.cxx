@@ -266,10 +266,9 @@ public:
 
   /**
    * Cut the grids into bands of whole rows, list the triangles of each band in
-   * increasing id and reserve room for the spans of their rows. False if the
-   * spans cannot be allocated.
+   * increasing id and count the rows of their spans (SpanRows).
    */
-  bool MakeBands()
+  void MakeBands()
   {
     vtkIdType firstBand[3], rowsPerBand[3];
     for (int a = 0; a < 3; ++a)
@@ -334,12 +333,18 @@ public:
         this->BandTris.resize(start.back());
       }
     }
-    this->Spans.reset(new (std::nothrow) SpanRecord[std::max<vtkIdType>(1, rows.back())]);
+    this->SpanRows = rows.back();
+  }
+
+  /// Room for the spans of the bands' rows; false if it cannot be allocated.
+  bool AllocateSpans()
+  {
+    this->Spans.reset(new (std::nothrow) SpanRecord[std::max<vtkIdType>(1, this->SpanRows)]);
     if (!this->Spans)
     {
       return false;
     }
-    AdviseHugePages(this->Spans.get(), sizeof(SpanRecord) * rows.back());
+    AdviseHugePages(this->Spans.get(), sizeof(SpanRecord) * this->SpanRows);
     return true;
   }
 
@@ -433,6 +438,7 @@ public:
   std::vector<Band> Bands;
   std::vector<vtkTypeUInt32> BandTris;
   std::unique_ptr<SpanRecord[]> Spans;
+  vtkIdType SpanRows = 0;
 
 private:
   /**
@@ -605,9 +611,21 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
       "Cannot allocate the setup of " << surface.GetNumberOfTriangles() << " triangles.");
     return false;
   }
-  if (!builder.MakeBands())
+  builder.MakeBands();
+  // The spans (one record per row of a triangle) are a temporary the estimate
+  // does not count: check them too before allocating them.
+  const double spanBytes = static_cast<double>(builder.SpanRows) * sizeof(SpanRecord);
+  if (estimate + spanBytes > limit)
   {
-    vtkErrorMacro("Cannot allocate the spans of the triangles' rows.");
+    vtkErrorMacro("Resolution " << this->Resolution << " needs about "
+                                << (estimate + spanBytes) / 1048576.0
+                                << " MiB, over the memory limit of " << this->MemoryLimit
+                                << " MiB. Lower the resolution or raise MemoryLimit.");
+    return false;
+  }
+  if (!builder.AllocateSpans())
+  {
+    vtkErrorMacro("Cannot allocate the spans of " << builder.SpanRows << " rows.");
     return false;
   }
   std::vector<Band>& bands = builder.Bands;
@@ -640,7 +658,8 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
     return false;
   }
   const vtkIdType n = static_cast<vtkIdType>(total);
-  const double exact = this->EstimateBytes(surface, dims, cellSize, static_cast<double>(n));
+  const double exact =
+    this->EstimateBytes(surface, dims, cellSize, static_cast<double>(n)) + spanBytes;
   if (exact > limit)
   {
     vtkErrorMacro("Resolution " << this->Resolution << " gives " << n << " samples needing "

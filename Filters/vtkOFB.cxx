@@ -585,51 +585,36 @@ double vtkOFB::GetBytesPerSample()
 //------------------------------------------------------------------------------
 void vtkOFB::ShallowCopy(vtkDataObject* src)
 {
-  vtkOFB* ofb = vtkOFB::SafeDownCast(src);
-  if (!ofb)
-  {
-    vtkErrorMacro("ShallowCopy: the source is not a vtkOFB.");
-    return;
-  }
-  if (ofb == this)
-  {
-    return;
-  }
-  this->Superclass::ShallowCopy(src);
-  for (int a = 0; a < 3; ++a)
-  {
-    this->Origin[a] = ofb->Origin[a];
-    this->Dimensions[a] = ofb->Dimensions[a];
-  }
-  for (int a = 0; a < 4; ++a)
-  {
-    this->CellBase[a] = ofb->CellBase[a];
-  }
-  this->CellSize = ofb->CellSize;
-  this->CellOffsets = ofb->CellOffsets;
-  this->Depths = ofb->Depths;
-  this->CellIndex = ofb->CellIndex;
-  this->SampleData = vtkSmartPointer<vtkPointData>::New();
-  this->SampleData->ShallowCopy(ofb->SampleData);
-  this->ModifiedRanges.clear();
-  this->StructureTime.Modified();
-  this->Modified();
+  this->CopyFrom(src, false);
 }
 
 //------------------------------------------------------------------------------
 void vtkOFB::DeepCopy(vtkDataObject* src)
 {
+  this->CopyFrom(src, true);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::CopyFrom(vtkDataObject* src, bool deep)
+{
   vtkOFB* ofb = vtkOFB::SafeDownCast(src);
   if (!ofb)
   {
-    vtkErrorMacro("DeepCopy: the source is not a vtkOFB.");
+    vtkErrorMacro((deep ? "DeepCopy" : "ShallowCopy") << ": the source is not a vtkOFB.");
     return;
   }
   if (ofb == this)
   {
     return;
   }
-  this->Superclass::DeepCopy(src);
+  if (deep)
+  {
+    this->Superclass::DeepCopy(src);
+  }
+  else
+  {
+    this->Superclass::ShallowCopy(src);
+  }
   for (int a = 0; a < 3; ++a)
   {
     this->Origin[a] = ofb->Origin[a];
@@ -640,14 +625,24 @@ void vtkOFB::DeepCopy(vtkDataObject* src)
     this->CellBase[a] = ofb->CellBase[a];
   }
   this->CellSize = ofb->CellSize;
-  this->CellOffsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
-  this->CellOffsets->DeepCopy(ofb->CellOffsets);
-  this->Depths = vtkSmartPointer<vtkFloatArray>::New();
-  this->Depths->DeepCopy(ofb->Depths);
-  this->CellIndex = vtkSmartPointer<vtkTypeUInt32Array>::New();
-  this->CellIndex->DeepCopy(ofb->CellIndex);
   this->SampleData = vtkSmartPointer<vtkPointData>::New();
-  this->SampleData->DeepCopy(ofb->SampleData);
+  if (deep)
+  {
+    this->CellOffsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
+    this->CellOffsets->DeepCopy(ofb->CellOffsets);
+    this->Depths = vtkSmartPointer<vtkFloatArray>::New();
+    this->Depths->DeepCopy(ofb->Depths);
+    this->CellIndex = vtkSmartPointer<vtkTypeUInt32Array>::New();
+    this->CellIndex->DeepCopy(ofb->CellIndex);
+    this->SampleData->DeepCopy(ofb->SampleData);
+  }
+  else
+  {
+    this->CellOffsets = ofb->CellOffsets;
+    this->Depths = ofb->Depths;
+    this->CellIndex = ofb->CellIndex;
+    this->SampleData->ShallowCopy(ofb->SampleData);
+  }
   this->ModifiedRanges.clear();
   this->StructureTime.Modified();
   this->Modified();

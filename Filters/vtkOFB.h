@@ -252,6 +252,11 @@ protected:
   bool LocateCell(int axis, const double x[3], vtkIdType& cell) const;
 
   /**
+   * Shallow or deep copy of another OFB (error if `src` is not one).
+   */
+  void CopyFrom(vtkDataObject* src, bool deep);
+
+  /**
    * Index of the first sample of [begin, end) whose depth is >= d.
    */
   vtkIdType LowerBound(vtkIdType begin, vtkIdType end, float d) const

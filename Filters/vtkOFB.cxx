@@ -600,7 +600,7 @@ void vtkOFB::CopyFrom(vtkDataObject* src, bool deep)
   vtkOFB* ofb = vtkOFB::SafeDownCast(src);
   if (!ofb)
   {
-    vtkErrorMacro((deep ? "DeepCopy" : "ShallowCopy") << ": the source is not a vtkOFB.");
+    vtkErrorMacro(<< (deep ? "DeepCopy" : "ShallowCopy") << ": the source is not a vtkOFB.");
     return;
   }
   if (ofb == this)

@@ -4,8 +4,10 @@
 #   scripts/demo.sh            install the packages it needs (when any is missing),
 #                              configure a Release build in build/, build it, then run
 #                              ofbDemo on the bundled Stanford bunny under Xvfb: it
-#                              prints the OFB's statistics and writes ofb-demo.png in
-#                              the project root.
+#                              prints the OFB's statistics and the mapper's frame time
+#                              and writes ofb-demo.png (the samples coloured by grid
+#                              beside the surface drawn by vtkOFBPolyDataMapper) in the
+#                              project root.
 #
 # Extra arguments go to ofbDemo, e.g. `scripts/demo.sh --resolution 2048` or
 # `scripts/demo.sh Testing/Data/horse.ply --output horse.png` (relative paths are
@@ -70,7 +72,7 @@ i=0
 while [ "$i" -lt "${#ARGS[@]}" ]; do
   case "${ARGS[$i]}" in
     -o|--output) HAVE_OUTPUT=1; i=$((i + 1)) ;;
-    -r|--resolution|-b|--backend|--width|--height) i=$((i + 1)) ;;
+    -r|--resolution|-b|--backend|-l|--lookup|--width|--height) i=$((i + 1)) ;;
     -*) ;;
     *) HAVE_MESH=1 ;;
   esac

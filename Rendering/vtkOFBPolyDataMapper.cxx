@@ -29,6 +29,13 @@
 
 vtkStandardNewMacro(vtkOFBPolyDataMapper);
 
+namespace
+{
+// Above this many samples in a cell, the lookups binary-search a cell's depths before their
+// linear scans (OFB_DEEP_CELLS); below, the scans alone read fewer words.
+constexpr int DeepCellSamples = 8;
+}
+
 //------------------------------------------------------------------------------
 vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   : LookupMode(Nearest)
@@ -49,6 +56,7 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , SourceScalars(false)
   , UseIntensity(false)
   , UseNormals(false)
+  , DeepCells(false)
   , Storage(new vtkOFBShaderStorage)
   , Pyramid(vtkOFBPyramid::New())
   , Ranges(vtkIdTypeArray::New())
@@ -420,8 +428,9 @@ void vtkOFBPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   std::ostringstream key;
   if (this->OFBActive)
   {
+    this->DeepCells = this->Storage->GetMaximumCellSamples() > DeepCellSamples;
     key << this->LookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity << "|"
-        << this->UseNormals;
+        << this->UseNormals << "|" << this->DeepCells;
   }
   if (key.str() != this->ShaderKey)
   {
@@ -480,10 +489,15 @@ void vtkOFBPolyDataMapper::ReplaceShaderValues(
       shaders[vtkShader::Geometry]->SetSource(gs);
     }
 
-    // Fragment shader: storage blocks, the lookup, and the colour it gives.
+    // Fragment shader: storage blocks, the lookup, and the colour it gives. Bit casts read
+    // the depths packed with the colours (ARB_shader_bit_encoding, checked by
+    // vtkOFBShaderStorage::IsSupported); gl_HelperInvocation (ARB_ES3_1_compatibility, used
+    // where the context offers it) keeps helper lanes out of the lookup fallbacks.
     vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
       "//VTK::System::Dec\n"
-      "#extension GL_ARB_shader_storage_buffer_object : require\n");
+      "#extension GL_ARB_shader_storage_buffer_object : require\n"
+      "#extension GL_ARB_shader_bit_encoding : enable\n"
+      "#extension GL_ARB_ES3_1_compatibility : enable\n");
     std::ostringstream defines;
     defines << "//VTK::Color::Dec\n"
             << "#define OFB_MODE " << this->LookupMode << "\n"
@@ -499,6 +513,10 @@ void vtkOFBPolyDataMapper::ReplaceShaderValues(
     if (this->UseNormals)
     {
       defines << "#define OFB_USE_NORMALS 1\n";
+    }
+    if (this->DeepCells)
+    {
+      defines << "#define OFB_DEEP_CELLS 1\n";
     }
     vtkShaderProgram::Substitute(fs, "//VTK::Color::Dec", defines.str() + vtkOFBLookupFS);
     vtkShaderProgram::Substitute(fs, "//VTK::UniformFlow::Impl",
@@ -616,7 +634,7 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(
   program->SetUniform1iv("ofbLevelSampleBase", nl, this->Storage->GetLevelSampleBase().data());
   program->SetUniformf("ofbMipmapBias", static_cast<float>(this->MipmapBias));
   program->SetUniformf("ofbRadius", static_cast<float>(this->InterpolationRadius));
-  program->SetUniformi("ofbNumberOfGrids", 3);
+  program->SetUniformi("ofbNearestVisits", 15); // 3 grids + 2x2 cells in each of the 3
 
   if (this->SourceScalars)
   {

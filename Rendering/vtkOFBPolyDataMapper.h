@@ -12,11 +12,13 @@
  * The vertex shader passes the model-coordinate position (in OFB cells) to the fragment
  * shader; the OFB lives in shader storage buffers (OpenGL 4.3). Lookup modes:
  * - Nearest (default): the closest sample in the cell under the point at depths within one
- *   cell (binary search, as vtkOFB::FindSample), in the grid most aligned with the
- *   triangle's geometric normal (computed per fragment from screen-space derivatives of
- *   the position: the normal vtkOFBSampler routes a triangle by, so the grid that holds
- *   its samples), else the next most aligned grid, else the last one, else the closest
- *   sample within InterpolationRadius in the 2x2 nearest cells of all three grids.
+ *   cell (as vtkOFB::FindSample), in the grid most aligned with the triangle's geometric
+ *   normal (computed per fragment from screen-space derivatives of the position: the normal
+ *   vtkOFBSampler routes a triangle by, so the grid that holds its samples), else the next
+ *   most aligned grid, else the last one, else the closest sample within
+ *   InterpolationRadius in the 2x2 nearest cells of all three grids. On the Stanford bunny
+ *   (1024-cell OFB, 1280x1024 window, Mesa llvmpipe) a frame takes about 1.3 times as long
+ *   as with vtkPolyDataMapper and vertex colours (Testing/Benchmarks/ofbMapperBenchmark).
  * - InverseDistance: Shepard-weighted samples within sqrt(3) cells in the 3x3 cells
  *   around the point in all three grids.
  * - Mipmapped: InverseDistance on a pyramid of coarser OFBs (vtkOFBPyramid, built on
@@ -247,6 +249,7 @@ protected:
   bool SourceScalars;
   bool UseIntensity;
   bool UseNormals;
+  bool DeepCells;
   std::string ShaderKey;
   vtkTimeStamp ShaderKeyTime;
 

@@ -27,11 +27,31 @@ size_t BytesPerSample(int id)
 {
   switch (id)
   {
+    case vtkOFBShaderStorage::Samples:
+      return 2 * sizeof(vtkTypeUInt32); // depth, colour attribute
     case vtkOFBShaderStorage::Normals:
       return 3 * sizeof(float);
     default:
       return 4;
   }
+}
+
+// Scalar value of tuple t of `array`: component `component`, or the magnitude when it is
+// negative and the array has several components.
+float ScalarValue(vtkDataArray* array, vtkIdType t, int component)
+{
+  const int nc = array->GetNumberOfComponents();
+  if (component < 0 && nc > 1)
+  {
+    double sum = 0.0;
+    for (int c = 0; c < nc; ++c)
+    {
+      const double v = array->GetComponent(t, c);
+      sum += v * v;
+    }
+    return static_cast<float>(std::sqrt(sum));
+  }
+  return static_cast<float>(array->GetComponent(t, std::max(component, 0)));
 }
 }
 
@@ -67,6 +87,11 @@ bool vtkOFBShaderStorage::IsSupported(vtkOpenGLRenderWindow* window, std::string
     why = "the OpenGL context offers neither OpenGL 4.3 nor ARB_shader_storage_buffer_object";
     return false;
   }
+  if (!(GLEW_VERSION_3_3 || GLEW_ARB_shader_bit_encoding))
+  {
+    why = "the OpenGL context offers neither OpenGL 3.3 nor ARB_shader_bit_encoding";
+    return false;
+  }
   GLint blocks = 0;
   glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &blocks);
   GLint bindings = 0;
@@ -83,8 +108,8 @@ bool vtkOFBShaderStorage::IsSupported(vtkOpenGLRenderWindow* window, std::string
 //------------------------------------------------------------------------------
 const char* vtkOFBShaderStorage::GetBlockName(int id)
 {
-  static const char* names[NumberOfBuffers] = { "ofbOffsetsBlock", "ofbDepthsBlock",
-    "ofbColorsBlock", "ofbScalarsBlock", "ofbIntensityBlock", "ofbNormalsBlock", "ofbLUTBlock" };
+  static const char* names[NumberOfBuffers] = { "ofbOffsetsBlock", "ofbSamplesBlock",
+    "ofbIntensityBlock", "ofbNormalsBlock", "ofbLUTBlock" };
   return (id >= 0 && id < NumberOfBuffers) ? names[id] : "";
 }
 
@@ -177,8 +202,8 @@ void vtkOFBShaderStorage::Upload(int id, size_t offset, size_t bytes, const void
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBShaderStorage::UploadArray(int id, vtkDataArray* array, const Selection& selection,
-  vtkIdType first, vtkIdType last, vtkIdType base)
+void vtkOFBShaderStorage::UploadArray(
+  int id, vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base)
 {
   if (!array || first >= last)
   {
@@ -187,26 +212,6 @@ void vtkOFBShaderStorage::UploadArray(int id, vtkDataArray* array, const Selecti
   const size_t n = static_cast<size_t>(last - first);
   const size_t bps = BytesPerSample(id);
   const size_t offset = static_cast<size_t>(base + first) * bps;
-  const int nc = array->GetNumberOfComponents();
-  if (id == Colors)
-  {
-    auto* colors = static_cast<vtkUnsignedCharArray*>(array);
-    if (nc == 4)
-    {
-      // RGBA bytes are already the packed little-endian uint the shader unpacks.
-      this->Upload(id, offset, n * 4, colors->GetPointer(4 * first));
-      return;
-    }
-    this->Scratch.resize(n * 4);
-    const unsigned char* src = colors->GetPointer(3 * first);
-    for (size_t i = 0; i < n; ++i)
-    {
-      std::memcpy(&this->Scratch[4 * i], src + 3 * i, 3);
-      this->Scratch[4 * i + 3] = 255;
-    }
-    this->Upload(id, offset, n * 4, this->Scratch.data());
-    return;
-  }
   this->Scratch.resize(n * bps);
   float* dst = reinterpret_cast<float*>(this->Scratch.data());
   if (id == Normals)
@@ -222,27 +227,58 @@ void vtkOFBShaderStorage::UploadArray(int id, vtkDataArray* array, const Selecti
   }
   else
   {
-    const int component = (id == Scalars) ? selection.ScalarComponent : 0;
     for (size_t i = 0; i < n; ++i)
     {
-      const vtkIdType t = first + static_cast<vtkIdType>(i);
-      if (component < 0 && nc > 1)
-      {
-        double sum = 0.0;
-        for (int c = 0; c < nc; ++c)
-        {
-          const double v = array->GetComponent(t, c);
-          sum += v * v;
-        }
-        dst[i] = static_cast<float>(std::sqrt(sum));
-      }
-      else
-      {
-        dst[i] = static_cast<float>(array->GetComponent(t, std::max(component, 0)));
-      }
+      dst[i] = ScalarValue(array, first + static_cast<vtkIdType>(i), 0);
     }
   }
   this->Upload(id, offset, n * bps, dst);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::UploadSamples(vtkOFB* ofb, vtkDataArray* attribute,
+  const Selection& selection, vtkIdType first, vtkIdType last, vtkIdType base)
+{
+  if (first >= last)
+  {
+    return;
+  }
+  const size_t n = static_cast<size_t>(last - first);
+  this->Scratch.resize(n * BytesPerSample(Samples));
+  vtkTypeUInt32* dst = reinterpret_cast<vtkTypeUInt32*>(this->Scratch.data());
+  // Depths in cells of the level.
+  const float* depths = ofb->GetDepths()->GetPointer(first);
+  const double inv = 1.0 / ofb->GetCellSize();
+  for (size_t i = 0; i < n; ++i)
+  {
+    const float depth = static_cast<float>(depths[i] * inv);
+    std::memcpy(&dst[2 * i], &depth, 4);
+    dst[2 * i + 1] = 0;
+  }
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(attribute);
+  if (selection.Colors && colors)
+  {
+    // RGBA bytes are the packed little-endian uint the shader unpacks.
+    const int nc = colors->GetNumberOfComponents();
+    const unsigned char* src = colors->GetPointer(nc * first);
+    for (size_t i = 0; i < n; ++i)
+    {
+      unsigned char rgba[4] = { 0, 0, 0, 255 };
+      std::memcpy(rgba, src + nc * i, std::min(nc, 4));
+      std::memcpy(&dst[2 * i + 1], rgba, 4);
+    }
+  }
+  else if (!selection.Colors && attribute)
+  {
+    for (size_t i = 0; i < n; ++i)
+    {
+      const float value =
+        ScalarValue(attribute, first + static_cast<vtkIdType>(i), selection.ScalarComponent);
+      std::memcpy(&dst[2 * i + 1], &value, 4);
+    }
+  }
+  this->Upload(Samples, static_cast<size_t>(base + first) * BytesPerSample(Samples),
+    n * BytesPerSample(Samples), dst);
 }
 
 //------------------------------------------------------------------------------
@@ -273,11 +309,10 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
   }
   const size_t ns = static_cast<size_t>(totalSamples);
   bool ok = this->Allocate(Offsets, static_cast<size_t>(totalCells) * 4) &&
-    this->Allocate(Depths, ns * 4);
-  const int arrays[4] = { Colors, Scalars, Intensity, Normals };
-  const bool wanted[4] = { selection.Colors, !selection.ScalarName.empty(),
-    !selection.IntensityName.empty(), selection.Normals };
-  for (int k = 0; k < 4 && ok; ++k)
+    this->Allocate(Samples, ns * BytesPerSample(Samples));
+  const int arrays[2] = { Intensity, Normals };
+  const bool wanted[2] = { !selection.IntensityName.empty(), selection.Normals };
+  for (int k = 0; k < 2 && ok; ++k)
   {
     if (wanted[k])
     {
@@ -297,30 +332,30 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
     return -1;
   }
   size_t cellOffset = 0;
+  this->MaximumCellSamples = 0;
   for (size_t l = 0; l < levels.size(); ++l)
   {
     vtkOFB* ofb = levels[l];
     const vtkIdType nc = ofb->GetNumberOfCells() + 1;
+    const vtkTypeUInt32* offsets = ofb->GetCellOffsets()->GetPointer(0);
+    vtkTypeUInt32 most = 0;
+    for (vtkIdType c = 0; c + 1 < nc; ++c)
+    {
+      most = std::max(most, offsets[c + 1] - offsets[c]);
+    }
+    this->MaximumCellSamples = std::max(this->MaximumCellSamples, static_cast<int>(most));
     this->Upload(Offsets, cellOffset * 4, static_cast<size_t>(nc) * 4,
       ofb->GetCellOffsets()->GetPointer(0));
     cellOffset += static_cast<size_t>(nc);
-    // Depths in cells of the level.
     const vtkIdType n = ofb->GetNumberOfSamples();
-    const float* depths = ofb->GetDepths()->GetPointer(0);
-    const double inv = 1.0 / ofb->GetCellSize();
-    std::vector<float> scaled(static_cast<size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      scaled[i] = static_cast<float>(depths[i] * inv);
-    }
-    this->Upload(Depths, static_cast<size_t>(this->LevelSampleBase[l]) * 4,
-      static_cast<size_t>(n) * 4, scaled.data());
-    for (int k = 0; k < 4; ++k)
+    this->UploadSamples(ofb, GetArray(ofb, selection.Colors ? Colors : Scalars, selection),
+      selection, 0, n, this->LevelSampleBase[l]);
+    for (int k = 0; k < 2; ++k)
     {
       if (wanted[k])
       {
-        this->UploadArray(arrays[k], GetArray(ofb, arrays[k], selection), selection, 0, n,
-          this->LevelSampleBase[l]);
+        this->UploadArray(
+          arrays[k], GetArray(ofb, arrays[k], selection), 0, n, this->LevelSampleBase[l]);
       }
     }
   }
@@ -338,11 +373,11 @@ vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels, 
     return 0;
   }
   vtkOFB* ofb = levels[level];
-  const int arrays[4] = { Colors, Scalars, Intensity, Normals };
-  const bool wanted[4] = { selection.Colors, !selection.ScalarName.empty(),
-    !selection.IntensityName.empty(), selection.Normals };
-  vtkDataArray* sources[4];
-  for (int k = 0; k < 4; ++k)
+  vtkDataArray* attribute = GetArray(ofb, selection.Colors ? Colors : Scalars, selection);
+  const int arrays[2] = { Intensity, Normals };
+  const bool wanted[2] = { !selection.IntensityName.empty(), selection.Normals };
+  vtkDataArray* sources[2];
+  for (int k = 0; k < 2; ++k)
   {
     sources[k] = wanted[k] ? GetArray(ofb, arrays[k], selection) : nullptr;
   }
@@ -356,10 +391,10 @@ vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels, 
     {
       continue;
     }
-    for (int k = 0; k < 4; ++k)
+    this->UploadSamples(ofb, attribute, selection, first, last, this->LevelSampleBase[level]);
+    for (int k = 0; k < 2; ++k)
     {
-      this->UploadArray(
-        arrays[k], sources[k], selection, first, last, this->LevelSampleBase[level]);
+      this->UploadArray(arrays[k], sources[k], first, last, this->LevelSampleBase[level]);
     }
     count += last - first;
   }
@@ -457,4 +492,5 @@ void vtkOFBShaderStorage::ReleaseGraphicsResources()
   this->LevelCellBase.clear();
   this->LevelSampleBase.clear();
   this->LevelDims.clear();
+  this->MaximumCellSamples = 0;
 }

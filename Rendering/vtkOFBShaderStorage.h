@@ -3,11 +3,13 @@
  * @brief   Shader storage buffers holding vtkOFB levels for vtkOFBPolyDataMapper (private)
  *
  * Owns the OpenGL shader storage buffer objects (SSBOs) that the lookup fragment shader
- * (shaders/vtkOFBLookupFS.glsl) reads: cell offsets and depths of every level (the
- * structure), and per-sample arrays (paint colours as packed RGBA8, scalars, intensity and
- * normals as floats), each buffer holding the levels one after the other. Uploads
- * are whole (structure change) or partial (glBufferSubData of modified sample ranges of
- * level 0). Buffers are bound to fixed binding points only around a draw and unbound
+ * (shaders/vtkOFBLookupFS.glsl) reads: the cell offsets of every level, the samples (two
+ * 32-bit words per sample: the depth, in cells of its level, and the colour attribute next
+ * to it, either the paint colour as packed RGBA8 or a scalar as a float, so that one read
+ * gives both and they share a cache line), and optional per-sample arrays (intensity as
+ * floats, normals as three floats). Each buffer holds the levels one after the other.
+ * Uploads are whole (structure change) or partial (glBufferSubData of modified sample
+ * ranges). Buffers are bound to fixed binding points only around a draw and unbound
  * afterwards. All calls need the owning window's context current.
  */
 
@@ -32,13 +34,19 @@ public:
   enum BufferId
   {
     Offsets = 0,
-    Depths,
-    Colors,
-    Scalars,
+    Samples,
     Intensity,
     Normals,
     LUT,
     NumberOfBuffers
+  };
+
+  /// The colour attributes that GetArray resolves besides Intensity and Normals: one of them
+  /// is the second word of every sample in the Samples buffer.
+  enum AttributeId
+  {
+    Colors = NumberOfBuffers,
+    Scalars
   };
 
   /// Most levels a storage holds (size of the shader's per-level uniform arrays).
@@ -70,8 +78,9 @@ public:
 
   /**
    * Whether `window` offers shader storage buffers in fragment shaders (OpenGL 4.3 or
-   * ARB_shader_storage_buffer_object, enough fragment storage blocks). Makes the context
-   * current. `why` says what is missing.
+   * ARB_shader_storage_buffer_object, enough fragment storage blocks) and float bit casts
+   * in shaders (OpenGL 3.3 or ARB_shader_bit_encoding). Makes the context current. `why`
+   * says what is missing.
    */
   static bool IsSupported(vtkOpenGLRenderWindow* window, std::string& why);
 
@@ -81,6 +90,8 @@ public:
 
   /**
    * Upload the structure (offsets, depths) and the selected arrays of every level.
+   * With selection.Colors the samples carry the paint colours, else the scalars named by
+   * selection.ScalarName.
    * Returns the number of samples uploaded, or -1 on failure (`error` says why).
    */
   vtkIdType UploadAll(const std::vector<vtkOFB*>& levels, const Selection& selection,
@@ -112,6 +123,9 @@ public:
   const std::vector<int>& GetLevelSampleBase() const { return this->LevelSampleBase; }
   const std::vector<int>& GetLevelDims() const { return this->LevelDims; }
 
+  /// The most samples in one cell over the uploaded levels (their depth complexity).
+  int GetMaximumCellSamples() const { return this->MaximumCellSamples; }
+
   /// Bytes of GPU memory held.
   size_t GetMemorySize() const;
 
@@ -122,7 +136,8 @@ public:
   static const char* GetBlockName(int id);
   static unsigned int GetBindingPoint(int id);
 
-  /// The array of `ofb` that a buffer reads under `selection` (null if missing or unusable).
+  /// The array of `ofb` that an attribute (Colors, Scalars) or a buffer (Intensity, Normals)
+  /// reads under `selection` (null if missing or unusable).
   static vtkDataArray* GetArray(vtkOFB* ofb, int id, const Selection& selection);
 
 private:
@@ -131,8 +146,9 @@ private:
 
   bool Allocate(int id, size_t bytes);
   void Upload(int id, size_t offset, size_t bytes, const void* data);
-  void UploadArray(int id, vtkDataArray* array, const Selection& selection, vtkIdType first,
-    vtkIdType last, vtkIdType base);
+  void UploadArray(int id, vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base);
+  void UploadSamples(vtkOFB* ofb, vtkDataArray* attribute, const Selection& selection,
+    vtkIdType first, vtkIdType last, vtkIdType base);
 
   vtkOpenGLRenderWindow* Window = nullptr;
   unsigned int Handles[NumberOfBuffers];
@@ -140,6 +156,7 @@ private:
   std::vector<int> LevelCellBase;   // 3 per level: first offsets entry of grid a
   std::vector<int> LevelSampleBase; // 1 per level
   std::vector<int> LevelDims;       // 3 per level
+  int MaximumCellSamples = 0;
   std::vector<unsigned char> Scratch;
 };
 

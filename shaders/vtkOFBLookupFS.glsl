@@ -5,29 +5,40 @@
 // The mapper defines before this text:
 //   OFB_MODE            0 nearest sample, 1 inverse-distance weighting, 2 mipmapped IDW
 //   OFB_MAX_LEVELS      size of the per-level uniform arrays
-//   OFB_SOURCE_SCALARS  colour from a float sample array through a lookup table, else paint
+//   OFB_SOURCE_SCALARS  colour from a float sample attribute through a lookup table, else paint
 //   OFB_USE_INTENSITY   a float sample array modulates the colour
 //   OFB_USE_NORMALS     painted normals replace the interpolated normal for shading
+//   OFB_DEEP_CELLS      some cell holds many samples: binary searches before the linear scans
+// and enables GL_ARB_shader_bit_encoding and (where offered) GL_ARB_ES3_1_compatibility.
 //
 // Units: every position here is in cells of the level being read, measured from the
 // low corner of that level's frame; depths are uploaded in the same unit.
 // Storage (std430 shader storage blocks, bound by the mapper):
 //   ofbOffsets  per level, one prefix sum over the cells of grids X, Y, Z (plus one entry),
 //               relative to the level's first sample
-//   ofbDepths   per sample, depth along the grid axis, sorted within a cell
-//   ofbColors   per sample, RGBA8 packed in a uint (red in the low byte)
-//   ofbScalars, ofbIntensity per sample (float); ofbNormals three floats per sample
+//   ofbSamples  per sample, two words: x the depth along the grid axis (float bits; sorted
+//               within a cell), y the colour attribute next to it, so that one read gives
+//               both: RGBA8 packed in a uint (red in the low byte), or with
+//               OFB_SOURCE_SCALARS the scalar (float bits)
+//   ofbIntensity per sample (float); ofbNormals three floats per sample
 //   ofbLUT      the lookup table sampled at equal steps over the scalar range
+//
+// Performance notes (Mesa llvmpipe, where these shaders run on the CPU): a fragment shader
+// runs on groups of 8 fragments, most of them partly covered when triangles are small; both
+// sides of every branch execute under a mask, a loop runs its body at least once and then
+// until no fragment of the group needs another iteration, and every storage-buffer read
+// visits the 8 lanes one by one. So the code that a fragment rarely needs is not skipped,
+// it costs its full length every time: the lookups below keep it short, as loops whose
+// first iteration is the common case, and read as few words as possible. Helper lanes
+// (uncovered fragments that only feed derivatives) leave the loops after the first
+// iteration: their extrapolated positions would otherwise keep a group in the fallbacks.
 
 layout(std430) readonly buffer ofbOffsetsBlock { uint ofbOffsets[]; };
-layout(std430) readonly buffer ofbDepthsBlock { float ofbDepths[]; };
+layout(std430) readonly buffer ofbSamplesBlock { uvec2 ofbSamples[]; };
 #ifdef OFB_SOURCE_SCALARS
-layout(std430) readonly buffer ofbScalarsBlock { float ofbScalars[]; };
 layout(std430) readonly buffer ofbLUTBlock { vec4 ofbLUT[]; };
 uniform vec2 ofbScalarRange; // x: low end, y: 1 / (high - low)
 uniform int ofbLUTSize;
-#else
-layout(std430) readonly buffer ofbColorsBlock { uint ofbColors[]; };
 #endif
 #ifdef OFB_USE_INTENSITY
 layout(std430) readonly buffer ofbIntensityBlock { float ofbIntensity[]; };
@@ -46,9 +57,17 @@ uniform int ofbLevelCellBase[3 * OFB_MAX_LEVELS]; // first entry of grid a in of
 uniform int ofbLevelSampleBase[OFB_MAX_LEVELS];   // first sample of the level
 uniform float ofbMipmapBias;
 uniform float ofbRadius; // IDW radius in cells (sqrt(3))
-uniform int ofbNumberOfGrids; // 3; a uniform so that loops over grids are not unrolled
+// 15, the cells a Nearest lookup may visit: a uniform, so that the compiler keeps the loop
+// (unrolled, its rare iterations would run for every fragment)
+uniform int ofbNearestVisits;
 
 in vec3 ofbGridVSOutput; // level-0 grid position of the fragment, in cells
+
+#if defined(GL_ARB_ES3_1_compatibility) || __VERSION__ >= 450
+#define OFB_HELPER_INVOCATION gl_HelperInvocation
+#else
+#define OFB_HELPER_INVOCATION false
+#endif
 
 struct ofbAccum
 {
@@ -76,12 +95,13 @@ vec4 ofbUnpackColor(uint c)
            float(c >> 24u)) / 255.0;
 }
 
-void ofbAccumulate(inout ofbAccum acc, int i, float w)
+// Add sample i, whose colour attribute (ofbSamples[i].y) is attr, with weight w.
+void ofbAccumulate(inout ofbAccum acc, int i, uint attr, float w)
 {
 #ifdef OFB_SOURCE_SCALARS
-  acc.scalar += w * ofbScalars[i];
+  acc.scalar += w * uintBitsToFloat(attr);
 #else
-  acc.color += w * ofbUnpackColor(ofbColors[i]);
+  acc.color += w * ofbUnpackColor(attr);
 #endif
 #ifdef OFB_USE_INTENSITY
   acc.intensity += w * ofbIntensity[i];
@@ -92,182 +112,160 @@ void ofbAccumulate(inout ofbAccum acc, int i, float w)
   acc.weight += w;
 }
 
-// Sample range [first, end) of cell (iu, iv) of grid a of level L; false outside the grid.
-bool ofbCellRange(int L, int a, int iu, int iv, out int first, out int end)
+// Grid a of level L: g as (u, v, depth) in that grid, its cells along u and v, and the
+// ofbOffsets entry of its first cell (selects, no dynamic indexing of vectors).
+void ofbGridFrame(int L, int a, vec3 g, out vec3 uvd, out ivec2 n, out int cellBase)
 {
-  int nu = ofbLevelDims[3 * L + (a + 1) % 3];
-  int nv = ofbLevelDims[3 * L + (a + 2) % 3];
-  first = 0;
-  end = 0;
-  if (iu < 0 || iv < 0 || iu >= nu || iv >= nv)
-  {
-    return false;
-  }
-  int cell = ofbLevelCellBase[3 * L + a] + iv * nu + iu;
-  int base = ofbLevelSampleBase[L];
-  first = base + int(ofbOffsets[cell]);
-  end = base + int(ofbOffsets[cell + 1]);
-  return first < end;
+  uvd = a == 0 ? g.yzx : (a == 1 ? g.zxy : g.xyz);
+  ivec3 dims = ivec3(ofbLevelDims[3 * L], ofbLevelDims[3 * L + 1], ofbLevelDims[3 * L + 2]);
+  n = a == 0 ? dims.yz : (a == 1 ? dims.zx : dims.xy);
+  cellBase = ofbLevelCellBase[3 * L + a];
 }
 
-// First index of [first, end) whose depth is >= d (binary search).
-int ofbLowerBound(int first, int end, float d)
+// Sample range [first, end) of cell c of a grid of level L with n cells whose first cell is
+// entry cellBase of ofbOffsets; empty outside the grid or without `use`. No branch.
+void ofbCellRange(int L, int cellBase, ivec2 n, ivec2 c, bool use, out int first, out int end)
 {
-  int lo = first;
+  bool inside = use && all(greaterThanEqual(c, ivec2(0))) && all(lessThan(c, n));
+  int cell = cellBase + (inside ? c.y * n.x + c.x : 0);
+  first = ofbLevelSampleBase[L] + int(ofbOffsets[cell]);
+  end = inside ? ofbLevelSampleBase[L] + int(ofbOffsets[cell + 1]) : first;
+}
+
+// Where the scan of [first, end) for depths >= low starts: with OFB_DEEP_CELLS the first
+// sample at depth >= low (binary search), else `first` (a cell holds a few samples, and
+// a linear scan that stops early reads fewer words than a search and its checks).
+int ofbScanStart(int first, int end, float low)
+{
+#ifdef OFB_DEEP_CELLS
   int hi = end;
-  while (lo < hi)
+  while (first < hi)
   {
-    int mid = (lo + hi) / 2;
-    if (ofbDepths[mid] < d)
+    int mid = (first + hi) >> 1;
+    if (uintBitsToFloat(ofbSamples[mid].x) < low)
     {
-      lo = mid + 1;
+      first = mid + 1;
     }
     else
     {
       hi = mid;
     }
   }
-  return lo;
+#endif
+  return first;
 }
 
-// Closest sample of grid a to g (level L units), in the cell under g and at depths within
-// one cell (paper 4.1). Returns the sample index or -1; dist2 gets its squared distance.
-int ofbNearestInGrid(int L, int a, vec3 g, out float dist2)
+// Nearest sample (vtkOFB::FindSample, paper 4.1, then fallbacks): the closest sample in
+// depth within one cell, in the cell under g of the grid most aligned with the normal n
+// (the grid that the sampler routed the fragment's triangle to); where there is none, the
+// same in the next most aligned grid, then in the last one; where still none (along the
+// borders between the regions of the grids), the closest sample within ofbRadius in the
+// 2x2 cells nearest to g of all three grids, X first. Ties go to the lower depth, then to
+// the earlier cell. The 15 cell visits are the iterations of one loop whose first
+// iteration is the common case (see the performance notes above).
+ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
 {
-  dist2 = 1.0e30;
-  float u = g[(a + 1) % 3];
-  float v = g[(a + 2) % 3];
-  float d = g[a];
-  int iu = int(floor(u));
-  int iv = int(floor(v));
-  int first;
-  int end;
-  if (!ofbCellRange(L, a, iu, iv, first, end))
-  {
-    return -1;
-  }
-  int i = ofbLowerBound(first, end, d);
+  vec3 an = abs(n);
+  int a0 = (an.x >= an.y && an.x >= an.z) ? 0 : (an.y >= an.z ? 1 : 2);
+  int b = a0 == 2 ? 0 : a0 + 1;
+  int c = a0 == 0 ? 2 : a0 - 1;
+  float nb = b == 0 ? an.x : (b == 1 ? an.y : an.z);
+  float nc = c == 0 ? an.x : (c == 1 ? an.y : an.z);
+  int a1 = nb >= nc ? b : c;
+  int a2 = nb >= nc ? c : b;
+  float r2 = ofbRadius * ofbRadius;
   int best = -1;
-  float bestDD = 1.0;
-  if (i < end && abs(ofbDepths[i] - d) <= bestDD)
+  float bestScore = 0.0;
+  uint bestAttr = 0u;
+  for (int k = 0; k < ofbNearestVisits; ++k)
   {
-    best = i;
-    bestDD = abs(ofbDepths[i] - d);
-  }
-  if (i > first && abs(ofbDepths[i - 1] - d) <= bestDD)
-  {
-    best = i - 1;
-    bestDD = abs(ofbDepths[i - 1] - d);
-  }
-  if (best >= 0)
-  {
-    float du = u - (float(iu) + 0.5);
-    float dv = v - (float(iv) + 0.5);
-    dist2 = du * du + dv * dv + bestDD * bestDD;
-  }
-  return best;
-}
-
-// Visit the samples of grid a within radius r of g in the 3x3 cells around the cell under g
-// (paper 4.2), or with `near` only in the 2x2 cells whose centres are closest to g. With
-// idw, accumulate them with Shepard weights ((r - t) / (r t))^2; without, keep the closest
-// one in `closest` / `closestDist2`.
-void ofbGatherGrid(int L, int a, vec3 g, float r, bool idw, bool near, inout ofbAccum acc,
-  inout int closest, inout float closestDist2)
-{
-  float u = g[(a + 1) % 3];
-  float v = g[(a + 2) % 3];
-  float d = g[a];
-  int u0 = near ? int(floor(u - 0.5)) : int(floor(u)) - 1;
-  int v0 = near ? int(floor(v - 0.5)) : int(floor(v)) - 1;
-  int u1 = near ? u0 + 1 : u0 + 2;
-  int v1 = near ? v0 + 1 : v0 + 2;
-  float r2 = r * r;
-  for (int jv = v0; jv <= v1; ++jv)
-  {
-    float dv = v - (float(jv) + 0.5);
-    for (int ju = u0; ju <= u1; ++ju)
+    // k < 3: the cell under g in grids a0, a1, a2, by depth within one cell;
+    // k >= 3: cell (k - 3) & 3 of the 2x2 nearest cells of grid (k - 3) >> 2, by distance.
+    bool near = k >= 3;
+    int j = k - 3;
+    int a = k == 0 ? a0 : (k == 1 ? a1 : (k == 2 ? a2 : j >> 2));
+    vec3 uvd;
+    ivec2 cells;
+    int cellBase;
+    ofbGridFrame(L, a, g, uvd, cells, cellBase);
+    ivec2 cell = near ? ivec2(floor(uvd.xy - 0.5)) + ivec2(j & 1, (j >> 1) & 1)
+                      : ivec2(floor(uvd.xy));
+    vec2 duv = uvd.xy - (vec2(cell) + 0.5);
+    float duv2 = near ? dot(duv, duv) : 0.0;
+    float limit = near ? r2 : 1.0;
+    int first;
+    int end;
+    ofbCellRange(L, cellBase, cells, cell, duv2 <= limit, first, end);
+    // Depths are sorted: past the first sample at or above g, the distance only grows.
+    for (int i = ofbScanStart(first, end, uvd.z - (near ? ofbRadius : 1.0)); i < end; ++i)
     {
-      float du = u - (float(ju) + 0.5);
-      float duv2 = du * du + dv * dv;
-      int first;
-      int end;
-      if (duv2 > r2 || !ofbCellRange(L, a, ju, jv, first, end))
+      uvec2 s = ofbSamples[i];
+      float dd = uintBitsToFloat(s.x) - uvd.z;
+      float score = duv2 + dd * dd;
+      if (score <= limit && (best < 0 || score < bestScore))
       {
-        continue;
+        best = i;
+        bestScore = score;
+        bestAttr = s.y;
       }
-      for (int i = ofbLowerBound(first, end, d - r); i < end; ++i)
+      if (dd >= 0.0)
       {
-        float dd = ofbDepths[i] - d;
-        if (dd > r)
-        {
-          break;
-        }
-        float t2 = duv2 + dd * dd;
-        if (t2 > r2)
-        {
-          continue;
-        }
-        if (idw)
-        {
-          float t = max(sqrt(t2), 1.0e-3);
-          float w = (r - t) / (r * t);
-          ofbAccumulate(acc, i, w * w + 1.0e-12);
-        }
-        else if (t2 < closestDist2)
-        {
-          closest = i;
-          closestDist2 = t2;
-        }
+        break;
       }
     }
+    if (OFB_HELPER_INVOCATION || (k < 3 && best >= 0))
+    {
+      break;
+    }
   }
-}
-
-// Inverse-distance weighted samples of the three grids of level L around g.
-ofbAccum ofbLookupIDW(int L, vec3 g)
-{
   ofbAccum acc = ofbAccumInit();
-  int closest = -1;
-  float closestDist2 = 1.0e30;
-  for (int a = 0; a < 3; ++a)
+  if (best >= 0)
   {
-    ofbGatherGrid(L, a, g, ofbRadius, true, false, acc, closest, closestDist2);
+    ofbAccumulate(acc, best, bestAttr, 1.0);
   }
   return acc;
 }
 
-// Nearest sample: the grid most aligned with the normal n first (as vtkOFB::FindSample),
-// then the next most aligned grid, then the last one, then the closest sample within
-// ofbRadius in the 2x2 cells nearest to g in all grids (rare: where none of the cells under
-// g has a sample within one cell of depth).
-// The fallbacks are loops whose condition depends on the fragment and whose trip count is a
-// uniform (so that the compiler does not unroll them into branches): a software rasterizer
-// (llvmpipe) runs both sides of a branch under a mask, but leaves a loop as soon as no
-// fragment of the group needs it, so the common case stays cheap (3x faster on llvmpipe).
-ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
+// Inverse-distance weighted samples within ofbRadius of g (level L units) in the 3x3 cells
+// around the cell under g in all three grids (paper 4.2), with Shepard weights
+// ((r - t) / (r t))^2; grids X, Y, Z in turn, rows of cells v then u, samples by depth.
+ofbAccum ofbLookupIDW(int L, vec3 g)
 {
   ofbAccum acc = ofbAccumInit();
-  vec3 an = abs(n);
-  int a0 = (an.x >= an.y && an.x >= an.z) ? 0 : (an.y >= an.z ? 1 : 2);
-  int b = (a0 + 1) % 3;
-  int c = (a0 + 2) % 3;
-  ivec3 order = an[b] >= an[c] ? ivec3(a0, b, c) : ivec3(a0, c, b);
-  float dist2;
-  int best = -1;
-  for (int k = 0; best < 0 && k < ofbNumberOfGrids; ++k)
+  float r = ofbRadius;
+  float r2 = r * r;
+  for (int k = 0; k < 27; ++k)
   {
-    best = ofbNearestInGrid(L, order[k], g, dist2);
-  }
-  bool gather = best < 0;
-  float bestDist2 = 1.0e30;
-  for (int a = 0; gather && a < ofbNumberOfGrids; ++a)
-  {
-    ofbGatherGrid(L, a, g, ofbRadius, false, true, acc, best, bestDist2);
-  }
-  if (best >= 0)
-  {
-    ofbAccumulate(acc, best, 1.0);
+    int a = k >= 18 ? 2 : (k >= 9 ? 1 : 0);
+    int j = k - 9 * a;
+    int jv = j >= 6 ? 1 : (j >= 3 ? 0 : -1);
+    int ju = j - 3 * jv - 4;
+    vec3 uvd;
+    ivec2 cells;
+    int cellBase;
+    ofbGridFrame(L, a, g, uvd, cells, cellBase);
+    ivec2 cell = ivec2(floor(uvd.xy)) + ivec2(ju, jv);
+    vec2 duv = uvd.xy - (vec2(cell) + 0.5);
+    float duv2 = dot(duv, duv);
+    int first;
+    int end;
+    ofbCellRange(L, cellBase, cells, cell, duv2 <= r2, first, end);
+    for (int i = ofbScanStart(first, end, uvd.z - r); i < end; ++i)
+    {
+      uvec2 s = ofbSamples[i];
+      float dd = uintBitsToFloat(s.x) - uvd.z;
+      if (dd > r)
+      {
+        break;
+      }
+      float t2 = duv2 + dd * dd;
+      if (t2 <= r2)
+      {
+        float t = max(sqrt(t2), 1.0e-3);
+        float w = (r - t) / (r * t);
+        ofbAccumulate(acc, i, s.y, w * w + 1.0e-12);
+      }
+    }
   }
   return acc;
 }

@@ -4,9 +4,20 @@
 // Not a test: run it by hand, under xvfb-run on a headless machine:
 //   xvfb-run -a -s "-screen 0 1280x1024x24" ofbMapperBenchmark [options]
 // Options: --mesh FILE (.obj/.ply), --resolution N (OFB cells, default 1024),
-// --frames N (timed frames per mapper, default 30), --width W --height H (1280x1024).
+// --frames N (timed frames per mapper and round, default 30), --rounds N (default 3),
+// --warmup N (untimed frames before each timing, default 3), --modes LIST (comma-separated
+// subset of nearest,idw,mipmapped; default all), --width W --height H (1280x1024),
+// --images PREFIX (write PREFIX<k>-<mapper>.ppm of the first view of every mapper).
+// Fairness: one window, renderer, actor, property and headlight for every mapper; each
+// timing starts from the same camera and turns it once around the surface; the mappers
+// take turns within every round (so that a change of machine load hits all of them), and
+// the medians over the rounds are compared. The frame time includes the clear and the
+// copy of the frame to the X server, which are the same for every mapper. Besides the
+// wall-clock times (the goal's measure) it prints the CPU time of the process (llvmpipe's
+// rendering threads included), which other load on a shared machine disturbs less.
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkOFB.h"
@@ -22,14 +33,20 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <string>
+#include <vector>
+
+#include <sys/resource.h>
 
 namespace
 {
@@ -77,11 +94,31 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   return out;
 }
 
-// Milliseconds per frame of `frames` renders (after warm-up) while the camera turns.
-double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, int frames)
+struct FrameTime
+{
+  double Wall; // ms per frame
+  double CPU;  // ms of CPU time of this process (all threads) per frame
+};
+
+double CPUMilliseconds()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return 1e3 * (usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+    1e-3 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+// Milliseconds per frame of `frames` renders while the camera turns once around the
+// surface, after `warmup` untimed renders. Every call starts from the same camera, so
+// every mapper draws the same views; Render() returns after glFinish
+// (WaitForCompletion) so that each frame's work is counted in full.
+FrameTime TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, vtkCamera* start,
+  int frames, int warmup)
 {
   vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-  for (int i = 0; i < 3; ++i)
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->DeepCopy(start);
+  for (int i = 0; i < warmup; ++i)
   {
     window->Render();
   }
@@ -89,10 +126,11 @@ double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, int frames)
   {
     gl->WaitForCompletion();
   }
-  const auto start = std::chrono::steady_clock::now();
+  const auto begin = std::chrono::steady_clock::now();
+  const double cpuBegin = CPUMilliseconds();
   for (int i = 0; i < frames; ++i)
   {
-    renderer->GetActiveCamera()->Azimuth(360.0 / frames);
+    camera->Azimuth(360.0 / frames);
     window->Render();
     if (gl)
     {
@@ -100,7 +138,34 @@ double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, int frames)
     }
   }
   const auto stop = std::chrono::steady_clock::now();
-  return std::chrono::duration<double, std::milli>(stop - start).count() / frames;
+  const double cpuStop = CPUMilliseconds();
+  camera->DeepCopy(start);
+  return { std::chrono::duration<double, std::milli>(stop - begin).count() / frames,
+    (cpuStop - cpuBegin) / frames };
+}
+
+// Binary PPM of an RGB image (VTK's rows run bottom to top).
+void WritePPM(const std::string& path, vtkImageData* image)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  std::ofstream out(path, std::ios::binary);
+  out << "P6\n" << dims[0] << " " << dims[1] << "\n255\n";
+  for (int y = dims[1] - 1; y >= 0; --y)
+  {
+    out.write(static_cast<const char*>(image->GetScalarPointer(0, y, 0)), 3 * dims[0]);
+  }
+}
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 }
 
@@ -109,8 +174,13 @@ int main(int argc, char* argv[])
   std::string mesh = std::string(VTKOFB_BENCHMARK_DATA_DIR) + "/stanford-bunny.obj";
   int resolution = 1024;
   int frames = 30;
+  int rounds = 3;
+  int warmup = 3;
   int width = 1280;
   int height = 1024;
+  std::string images;
+  std::vector<int> modes = { vtkOFBPolyDataMapper::Nearest,
+    vtkOFBPolyDataMapper::InverseDistance, vtkOFBPolyDataMapper::Mipmapped };
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -127,6 +197,14 @@ int main(int argc, char* argv[])
     {
       frames = std::max(1, std::atoi(argv[++i]));
     }
+    else if (arg == "--rounds" && hasValue)
+    {
+      rounds = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (arg == "--warmup" && hasValue)
+    {
+      warmup = std::max(0, std::atoi(argv[++i]));
+    }
     else if (arg == "--width" && hasValue)
     {
       width = std::atoi(argv[++i]);
@@ -135,10 +213,44 @@ int main(int argc, char* argv[])
     {
       height = std::atoi(argv[++i]);
     }
+    else if (arg == "--images" && hasValue)
+    {
+      images = argv[++i];
+    }
+    else if (arg == "--modes" && hasValue)
+    {
+      modes.clear();
+      std::string list = argv[++i];
+      size_t begin = 0;
+      while (begin <= list.size())
+      {
+        const size_t comma = std::min(list.find(',', begin), list.size());
+        const std::string name = list.substr(begin, comma - begin);
+        if (name == "nearest")
+        {
+          modes.push_back(vtkOFBPolyDataMapper::Nearest);
+        }
+        else if (name == "idw")
+        {
+          modes.push_back(vtkOFBPolyDataMapper::InverseDistance);
+        }
+        else if (name == "mipmapped")
+        {
+          modes.push_back(vtkOFBPolyDataMapper::Mipmapped);
+        }
+        else if (!name.empty())
+        {
+          std::cerr << "Unknown mode " << name << "\n";
+          return 1;
+        }
+        begin = comma + 1;
+      }
+    }
     else
     {
       std::cout << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
-                   "[--width W] [--height H]\n";
+                   "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped] [--width W] "
+                   "[--height H] [--images PREFIX]\n";
       return arg == "--help" ? 0 : 1;
     }
   }
@@ -199,56 +311,119 @@ int main(int argc, char* argv[])
   vtkNew<vtkActor> actor;
   renderer->AddActor(actor);
 
+  // The mappers: the peer first, then one OFB mapper per mode, all kept alive so that
+  // every round only switches the actor's mapper.
   vtkNew<vtkPolyDataMapper> peer;
   peer->SetInputData(colored);
-  actor->SetMapper(peer);
-  renderer->ResetCamera();
-  window->Render();
-  const std::string renderer_name =
-    window->ReportCapabilities() ? window->ReportCapabilities() : "";
-  const double peerMs = TimeFrames(window, renderer, frames);
-
-  std::cout << "ofbMapperBenchmark: " << mesh << "\n"
-            << "  triangles " << surface->GetNumberOfPolys() << ", OFB resolution "
-            << resolution << ", samples " << ofb->GetNumberOfSamples() << ", window " << width
-            << "x" << height << ", " << frames << " frames per mapper\n";
-  const std::string::size_type at = renderer_name.find("OpenGL renderer string:");
-  if (at != std::string::npos)
-  {
-    std::cout << "  " << renderer_name.substr(at, renderer_name.find('\n', at) - at) << "\n";
-  }
-  std::cout << std::fixed << std::setprecision(2);
-  std::cout << "  vtkPolyDataMapper, vertex colours        " << std::setw(8) << peerMs
-            << " ms/frame\n";
-
-  const int modes[3] = { vtkOFBPolyDataMapper::Nearest, vtkOFBPolyDataMapper::InverseDistance,
-    vtkOFBPolyDataMapper::Mipmapped };
-  double nearestRatio = 0.0;
+  std::vector<vtkSmartPointer<vtkMapper>> mappers(1, peer.Get());
+  std::vector<std::string> names(1, "vtkPolyDataMapper, vertex colours");
   for (int mode : modes)
   {
     vtkNew<vtkOFBPolyDataMapper> mapper;
     mapper->SetInputData(surface);
     mapper->SetOFB(ofb);
     mapper->SetLookupMode(mode);
-    actor->SetMapper(mapper);
+    mappers.emplace_back(mapper.Get());
+    names.push_back(
+      std::string("vtkOFBPolyDataMapper, ") + vtkOFBPolyDataMapper::GetLookupModeAsString(mode));
+  }
+
+  actor->SetMapper(peer);
+  renderer->ResetCamera();
+  window->Render();
+  vtkNew<vtkCamera> start;
+  start->DeepCopy(renderer->GetActiveCamera());
+  for (size_t m = 1; m < mappers.size(); ++m)
+  {
+    actor->SetMapper(mappers[m]);
     window->Render();
-    if (!mapper->GetLastRenderUsedOFB())
+    if (!vtkOFBPolyDataMapper::SafeDownCast(mappers[m])->GetLastRenderUsedOFB())
     {
       std::cerr << "vtkOFBPolyDataMapper could not use the OFB on this context.\n";
       return 1;
     }
-    const double ms = TimeFrames(window, renderer, frames);
+  }
+  const std::string capabilities =
+    window->ReportCapabilities() ? window->ReportCapabilities() : "";
+
+  std::cout << "ofbMapperBenchmark: " << mesh << "\n"
+            << "  triangles " << surface->GetNumberOfPolys() << ", OFB resolution "
+            << resolution << ", samples " << ofb->GetNumberOfSamples() << ", depth complexity "
+            << ofb->GetDepthComplexity() << ", window " << width << "x" << height << ", "
+            << frames << " frames per mapper and round, " << rounds << " rounds\n";
+  const std::string::size_type at = capabilities.find("OpenGL renderer string:");
+  if (at != std::string::npos)
+  {
+    std::cout << "  " << capabilities.substr(at, capabilities.find('\n', at) - at) << "\n";
+  }
+  std::cout << std::fixed << std::setprecision(2);
+
+  std::vector<std::vector<double>> wall(mappers.size());
+  std::vector<std::vector<double>> cpu(mappers.size());
+  std::vector<std::vector<double>> roundRatios(mappers.size());
+  std::cout << "  per round, wall ms/frame (CPU ms/frame of this process):\n";
+  for (int r = 0; r < rounds; ++r)
+  {
+    std::cout << "  round " << r + 1 << ":";
+    for (size_t m = 0; m < mappers.size(); ++m)
+    {
+      actor->SetMapper(mappers[m]);
+      const FrameTime t = TimeFrames(window, renderer, start, frames, warmup);
+      wall[m].push_back(t.Wall);
+      cpu[m].push_back(t.CPU);
+      roundRatios[m].push_back(t.Wall / wall[0].back());
+      std::cout << " " << t.Wall << " (" << t.CPU << ")";
+    }
+    std::cout << std::endl;
+  }
+
+  // The goal compares wall-clock frame times; CPU time is less sensitive to other load.
+  const double peerMs = Median(wall[0]);
+  const double peerCPU = Median(cpu[0]);
+  std::cout << "  medians over the rounds: wall ms/frame, ratio to the peer; CPU ms/frame, "
+               "ratio; median of the per-round wall ratios\n";
+  std::cout << "  " << std::left << std::setw(40) << names[0] << std::right << std::setw(8)
+            << peerMs << "          " << std::setw(8) << peerCPU << "\n";
+  double nearestRatio = -1.0;
+  for (size_t m = 1; m < mappers.size(); ++m)
+  {
+    const double ms = Median(wall[m]);
     const double ratio = ms / peerMs;
-    if (mode == vtkOFBPolyDataMapper::Nearest)
+    if (modes[m - 1] == vtkOFBPolyDataMapper::Nearest)
     {
       nearestRatio = ratio;
     }
-    std::cout << "  vtkOFBPolyDataMapper, " << std::left << std::setw(18)
-              << vtkOFBPolyDataMapper::GetLookupModeAsString(mode) << std::right << std::setw(8)
-              << ms << " ms/frame, ratio " << ratio << "\n";
-    mapper->ReleaseGraphicsResources(window);
+    std::cout << "  " << std::left << std::setw(40) << names[m] << std::right << std::setw(8)
+              << ms << " " << std::setw(6) << ratio << "x " << std::setw(8) << Median(cpu[m])
+              << " " << std::setw(6) << Median(cpu[m]) / peerCPU << "x " << std::setw(6)
+              << Median(roundRatios[m]) << "x\n";
   }
-  std::cout << "  goal: Nearest at most 2x the vertex-colour mapper: "
-            << (nearestRatio <= 2.0 ? "met" : "NOT met") << " (" << nearestRatio << "x)\n";
+  if (!images.empty())
+  {
+    const char* files[4] = { "peer", "nearest", "idw", "mipmapped" };
+    for (size_t m = 0; m < mappers.size(); ++m)
+    {
+      actor->SetMapper(mappers[m]);
+      renderer->GetActiveCamera()->DeepCopy(start);
+      window->Render();
+      vtkNew<vtkWindowToImageFilter> grab;
+      grab->SetInput(window);
+      grab->ReadFrontBufferOff();
+      grab->ShouldRerenderOff();
+      grab->SetInputBufferTypeToRGB();
+      grab->Update();
+      WritePPM(images + std::to_string(m) + "-" + files[m == 0 ? 0 : 1 + modes[m - 1]] + ".ppm",
+        grab->GetOutput());
+    }
+  }
+  for (size_t m = 1; m < mappers.size(); ++m)
+  {
+    mappers[m]->ReleaseGraphicsResources(window);
+  }
+  if (nearestRatio >= 0.0)
+  {
+    std::cout << "  goal: Nearest at most 2x the vertex-colour mapper: "
+              << (nearestRatio <= 2.0 ? "met" : "NOT met") << " (" << nearestRatio << "x)\n";
+  }
   return 0;
 }

@@ -115,6 +115,43 @@ TEST(OFBPolyDataMapper, EveryLookupModeReadsTheOFB)
   }
 }
 
+// Every fragment finds a sample: also along the borders between the regions of the three
+// grids, where the cell under a point in the grid of its triangle and in the other grids
+// can hold no sample within one cell and the Nearest lookup falls back to the neighbouring
+// cells. A fragment without a sample would keep the property colour (green).
+TEST(OFBPolyDataMapper, NoFragmentKeepsThePropertyColour)
+{
+  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::Mipmapped; ++mode)
+  {
+    Scene scene(128, 300);
+    scene.Fill(255, 0, 0);
+    scene.Actor->GetProperty()->SetColor(0.0, 1.0, 0.0);
+    scene.Mapper->SetLookupMode(mode);
+    scene.Renderer->GetActiveCamera()->Elevation(35);
+    scene.Renderer->GetActiveCamera()->Azimuth(40);
+    scene.Window->Render();
+    ASSERT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(scene.Window);
+    grab->ReadFrontBufferOff();
+    grab->ShouldRerenderOff();
+    grab->Update();
+    vtkImageData* image = grab->GetOutput();
+    const int* dims = image->GetDimensions();
+    const int nc = image->GetNumberOfScalarComponents();
+    const unsigned char* p = static_cast<unsigned char*>(image->GetScalarPointer());
+    int red = 0;
+    int green = 0;
+    for (int i = 0; i < dims[0] * dims[1]; ++i, p += nc)
+    {
+      red += p[0] > p[1] + 10 ? 1 : 0;
+      green += p[1] > p[0] + 10 ? 1 : 0;
+    }
+    EXPECT_GT(red, dims[0] * dims[1] / 8) << vtkOFBPolyDataMapper::GetLookupModeAsString(mode);
+    EXPECT_EQ(green, 0) << vtkOFBPolyDataMapper::GetLookupModeAsString(mode);
+  }
+}
+
 TEST(OFBPolyDataMapper, PaintingUploadsOnlyTheModifiedSamples)
 {
   Scene scene(256);

@@ -1,4 +1,5 @@
 #include "vtkOFB.h"
+#include "vtkOFBHugePages.h"
 
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -9,39 +10,9 @@
 #include "vtkSMPTools.h"
 
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 vtkStandardNewMacro(vtkOFB);
-
-namespace
-{
-/**
- * Ask for transparent huge pages on a large array before its first touch:
- * faulting in a 2 MiB page costs much less than faulting in 512 pages of 4 KiB,
- * and the first touch of fresh arrays otherwise dominates building an OFB.
- */
-void AdviseHugePages(vtkDataArray* array)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  const uintptr_t huge = uintptr_t(1) << 21;
-  const uintptr_t data = reinterpret_cast<uintptr_t>(array->GetVoidPointer(0));
-  const uintptr_t bytes = static_cast<uintptr_t>(array->GetDataSize()) * array->GetDataTypeSize();
-  const uintptr_t begin = (data + huge - 1) & ~(huge - 1);
-  const uintptr_t end = (data + bytes) & ~(huge - 1);
-  if (end > begin)
-  {
-    madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-  }
-#else
-  (void)array;
-#endif
-}
-}
 
 //------------------------------------------------------------------------------
 vtkOFB::vtkOFB()
@@ -126,7 +97,7 @@ bool vtkOFB::SetFrame(const double origin[3], double cellSize, const vtkIdType d
     return false;
   }
   offsets->SetNumberOfValues(base[3] + 1);
-  AdviseHugePages(offsets);
+  vtkofb::AdviseHugePages(offsets);
   vtkTypeUInt32* p = offsets->GetPointer(0);
   vtkSMPTools::Fill(p, p + base[3] + 1, 0u);
   this->CellOffsets = offsets;
@@ -162,8 +133,8 @@ bool vtkOFB::AllocateSamples(vtkIdType n)
   }
   depths->SetNumberOfValues(n);
   index->SetNumberOfValues(n);
-  AdviseHugePages(depths);
-  AdviseHugePages(index);
+  vtkofb::AdviseHugePages(depths);
+  vtkofb::AdviseHugePages(index);
   this->Depths = depths;
   this->CellIndex = index;
   this->ModifiedRanges.clear();

@@ -15,6 +15,7 @@
 // depend on it.
 
 #include "vtkOFBSampler.h"
+#include "vtkOFBHugePages.h"
 
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
@@ -36,10 +37,6 @@
 #include <type_traits>
 #include <vector>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 namespace
 {
 /// Cells of a band (rounded to whole rows): a few hundred KiB of offsets and samples.
@@ -47,33 +44,6 @@ constexpr vtkIdType BandCells = 16384;
 
 /// Triangles per chunk of the setup pass.
 constexpr vtkIdType SetupChunk = 4096;
-
-/**
- * Ask for transparent huge pages on a large array before its first touch:
- * faulting in a 2 MiB page costs much less than faulting in 512 pages of 4 KiB,
- * and the first touch of a fresh array otherwise dominates a build.
- */
-void AdviseHugePages(void* data, size_t bytes)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  const uintptr_t huge = uintptr_t(1) << 21;
-  const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + huge - 1) & ~(huge - 1);
-  const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(huge - 1);
-  if (end > begin)
-  {
-    madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-  }
-#else
-  (void)data;
-  (void)bytes;
-#endif
-}
-
-void AdviseHugePages(vtkDataArray* array)
-{
-  AdviseHugePages(
-    array->GetVoidPointer(0), static_cast<size_t>(array->GetDataSize()) * array->GetDataTypeSize());
-}
 
 /**
  * A band: rows [Row0, Row1) of grid Axis, that is cells [Cell0, Cell1), and its
@@ -118,15 +88,15 @@ struct SampleArrays
     this->Normals->SetName("Normals");
     this->Normals->SetNumberOfComponents(3);
     this->Normals->SetNumberOfTuples(n);
-    AdviseHugePages(this->Colors);
-    AdviseHugePages(this->Normals);
+    vtkofb::AdviseHugePages(this->Colors);
+    vtkofb::AdviseHugePages(this->Normals);
     if (surface.Vectors)
     {
       this->Vectors = vtkSmartPointer<vtkFloatArray>::New();
       this->Vectors->SetName(surface.Vectors->GetName());
       this->Vectors->SetNumberOfComponents(3);
       this->Vectors->SetNumberOfTuples(n);
-      AdviseHugePages(this->Vectors);
+      vtkofb::AdviseHugePages(this->Vectors);
     }
     for (const auto& in : surface.Arrays)
     {
@@ -134,7 +104,7 @@ struct SampleArrays
       out->SetName(in->GetName());
       out->SetNumberOfComponents(in->GetNumberOfComponents());
       out->SetNumberOfTuples(n);
-      AdviseHugePages(out);
+      vtkofb::AdviseHugePages(out);
       this->Others.push_back(out);
     }
   }
@@ -248,7 +218,7 @@ public:
     {
       return false;
     }
-    AdviseHugePages(this->Setups.get(), sizeof(vtkOFBTriangleRaster) * nTris);
+    vtkofb::AdviseHugePages(this->Setups.get(), sizeof(vtkOFBTriangleRaster) * nTris);
     const double* P = this->Surface.Points.data();
     const vtkIdType* T3 = this->Surface.Triangles.data();
     vtkOFBTriangleRaster* setups = this->Setups.get();
@@ -344,7 +314,7 @@ public:
     {
       return false;
     }
-    AdviseHugePages(this->Spans.get(), sizeof(SpanRecord) * this->SpanRows);
+    vtkofb::AdviseHugePages(this->Spans.get(), sizeof(SpanRecord) * this->SpanRows);
     return true;
   }
 

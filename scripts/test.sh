@@ -16,44 +16,9 @@ cd "$ROOT"
 BUILD_DIR="${BUILD_DIR:-build}"
 JOBS="${JOBS:-$(nproc)}"
 
-# Debian packages the build, the tests and the benchmarks need. libvtk9-dev's CMake
-# package needs the -dev packages it depends on (TBB for vtkSMPTools among them);
-# python3-numpy is for vtkmodules.util.numpy_support in the Python tests;
-# libgl1-mesa-dri gives llvmpipe, the OpenGL implementation under Xvfb.
-PACKAGES=(
-  cmake g++ make
-  libvtk9-dev python3-vtk9 python3-numpy libtbb-dev
-  libglm-dev libopenimageio-dev libopenvdb-dev libgtest-dev
-  xvfb xauth libgl1-mesa-dri
-)
-
-install_packages() {
-  local missing=() pkg
-  for pkg in "${PACKAGES[@]}"; do
-    if [ "$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null)" != "install ok installed" ]; then
-      missing+=("$pkg")
-    fi
-  done
-  if [ "${#missing[@]}" -eq 0 ]; then
-    echo "test.sh: all ${#PACKAGES[@]} packages are installed, skipping apt-get"
-    return
-  fi
-  echo "test.sh: installing packages (missing: ${missing[*]})"
-  local sudo=()
-  if [ "$(id -u)" -ne 0 ]; then
-    if command -v sudo >/dev/null 2>&1; then
-      sudo=(sudo)
-    else
-      echo "test.sh: not root and no sudo: install ${missing[*]} first" >&2
-      exit 1
-    fi
-  fi
-  "${sudo[@]}" apt-get update
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
-    apt-get install -y --no-install-recommends "${PACKAGES[@]}"
-}
-
-install_packages
+# shellcheck source=scripts/packages.sh
+source "$ROOT/scripts/packages.sh"
+install_packages test.sh
 
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$BUILD_DIR" -- -j"$JOBS"

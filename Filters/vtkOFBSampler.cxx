@@ -563,6 +563,27 @@ bool vtkOFBSampler::ComputeFrame(
 }
 
 //------------------------------------------------------------------------------
+bool vtkOFBSampler::SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output)
+{
+  double origin[3], cellSize;
+  vtkIdType dims[3];
+  if (!this->ComputeFrame(surface, origin, cellSize, dims))
+  {
+    return false;
+  }
+  const double limit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
+  const double estimate = this->EstimateBytes(surface, dims, cellSize);
+  if (estimate > limit)
+  {
+    vtkErrorMacro("Resolution " << this->Resolution << " needs about " << estimate / 1048576.0
+                                << " MiB, over the memory limit of " << this->MemoryLimit
+                                << " MiB. Lower the resolution or raise MemoryLimit.");
+    return false;
+  }
+  return output->SetFrame(origin, cellSize, dims);
+}
+
+//------------------------------------------------------------------------------
 double vtkOFBSampler::EstimateMemory(vtkPolyData* input)
 {
   vtkOFBSurface surface;

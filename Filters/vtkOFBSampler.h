@@ -137,6 +137,13 @@ protected:
     vtkIdType dims[3]);
 
   /**
+   * Compute the frame of `surface`, check the build's estimated memory against
+   * MemoryLimit (before any large allocation) and set the frame of `output`.
+   * Returns false after reporting an error.
+   */
+  bool SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output);
+
+  /**
    * Estimated bytes of a build of `surface` on the given frame: cell offsets and
    * counters, samples (from the projected area and perimeter of each triangle),
    * attributes and the build's temporaries. A non-negative `samples` replaces the

@@ -546,25 +546,15 @@ private:
 //------------------------------------------------------------------------------
 bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
 {
-  double origin[3], cellSize;
-  vtkIdType dims[3];
-  if (!this->ComputeFrame(surface, origin, cellSize, dims))
+  if (!this->SetUpFrame(surface, output))
   {
     return false;
   }
+  const double* origin = output->GetOrigin();
+  const vtkIdType* dims = output->GetDimensions();
+  const double cellSize = output->GetCellSize();
   const double limit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
   const double estimate = this->EstimateBytes(surface, dims, cellSize);
-  if (estimate > limit)
-  {
-    vtkErrorMacro("Resolution " << this->Resolution << " needs about " << estimate / 1048576.0
-                                << " MiB, over the memory limit of " << this->MemoryLimit
-                                << " MiB. Lower the resolution or raise MemoryLimit.");
-    return false;
-  }
-  if (!output->SetFrame(origin, cellSize, dims))
-  {
-    return false;
-  }
   vtkOFBRasterFrame frame;
   for (int a = 0; a < 3; ++a)
   {

@@ -113,27 +113,15 @@ bool vtkOFBBuilder::BuildWithOpenGL(
   const double start = vtkTimerLog::GetUniversalTime();
   this->UpdateProgress(0.0);
   vtkOFBSurface surface;
-  double origin[3], cellSize;
-  vtkIdType dims[3];
-  if (!this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, origin, cellSize, dims))
+  if (!this->PrepareSurface(input, surface) || !this->SetUpFrame(surface, output))
   {
-    // Invalid input: the error is reported; the CPU path would report it again.
-    this->LastBackend = OpenGL;
+    // Invalid input or too much memory: reported; the CPU path would report it again.
+    output->Initialize();
     return true;
   }
+  const vtkIdType* dims = output->GetDimensions();
+  const double cellSize = output->GetCellSize();
   const double limit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
-  const double estimate = this->EstimateBytes(surface, dims, cellSize);
-  if (estimate > limit)
-  {
-    vtkErrorMacro("Resolution " << this->Resolution << " needs about " << estimate / 1048576.0
-                                << " MiB, over the memory limit of " << this->MemoryLimit
-                                << " MiB. Lower the resolution or raise MemoryLimit.");
-    return true;
-  }
-  if (!output->SetFrame(origin, cellSize, dims))
-  {
-    return true;
-  }
   this->UpdateProgress(0.1);
   // Bytes per sample of the build: from the estimate's formula with one sample.
   const double perSample = this->EstimateBytes(surface, dims, cellSize, 1.0) -

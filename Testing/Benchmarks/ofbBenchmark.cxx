@@ -9,11 +9,10 @@
 // or paths to .obj/.ply files. Every measurement is taken after one untimed warm-up
 // build and reported as the best and the median of the repetitions.
 
+#include "vtkOFBReadMesh.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkOFB.h"
 #include "vtkOFBSampler.h"
-#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
@@ -160,26 +159,6 @@ std::string MeshPath(const std::string& name)
     return name;
   }
   return std::string(VTKOFB_BENCHMARK_DATA_DIR) + "/" + name;
-}
-
-vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
-{
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply")
-  {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  else
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  return mesh && mesh->GetNumberOfPolys() > 0 ? mesh : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -437,7 +416,7 @@ int main(int argc, char* argv[])
   for (const std::string& name : options.Meshes)
   {
     const std::string path = MeshPath(name);
-    vtkSmartPointer<vtkPolyData> mesh = ReadMesh(path);
+    vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(path);
     if (!mesh)
     {
       std::fprintf(stderr, "cannot read a mesh with polygons from '%s'\n", path.c_str());

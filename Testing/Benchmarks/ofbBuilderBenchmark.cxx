@@ -5,12 +5,11 @@
 // Prints, per mesh and resolution, the median build time of each backend, the
 // samples per second and the ratio OpenGL / CPU. Run it under xvfb-run on a
 // machine without a GPU (Mesa llvmpipe), or on a GPU machine with a display.
+#include "vtkOFBReadMesh.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkOFB.h"
 #include "vtkOFBBuilder.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkPLYReader.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkSMPTools.h"
@@ -25,26 +24,6 @@
 
 namespace
 {
-vtkSmartPointer<vtkPolyData> Read(const std::string& path)
-{
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply")
-  {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  else
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  return mesh;
-}
-
 /// Median build time (ms) of `reps` builds after one warm-up; -1 if the backend did not run.
 double Time(vtkOFBBuilder* builder, int backend, int reps, vtkIdType& samples)
 {
@@ -120,7 +99,7 @@ int main(int argc, char* argv[])
     "CPU MS/s", "GL ms", "GL MS/s", "GL/CPU");
   for (const std::string& path : meshes)
   {
-    vtkSmartPointer<vtkPolyData> mesh = Read(path);
+    vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(path);
     if (!mesh || mesh->GetNumberOfPolys() == 0)
     {
       std::printf("cannot read %s\n", path.c_str());

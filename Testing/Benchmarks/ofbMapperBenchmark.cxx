@@ -15,16 +15,15 @@
 // copy of the frame to the X server, which are the same for every mapper. Besides the
 // wall-clock times (the goal's measure) it prints the CPU time of the process (llvmpipe's
 // rendering threads included), which other load on a shared machine disturbs less.
+#include "vtkOFBReadMesh.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkOFB.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBSampler.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -65,24 +64,11 @@ void ColorAt(const double x[3], const double bounds[6], unsigned char rgba[4])
   rgba[3] = 255;
 }
 
+/// The mesh with point normals (both mappers shade with the same normals).
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 {
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply")
-  {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  else
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  if (!mesh || mesh->GetNumberOfPolys() == 0)
+  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(path);
+  if (!mesh)
   {
     return nullptr;
   }

@@ -5,10 +5,9 @@
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkOFB.h"
+#include "vtkOFBReadMesh.h"
 #include "vtkOFBSampler.h"
-#include "vtkPLYReader.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
@@ -26,23 +25,7 @@ inline std::string DataPath(const std::string& name)
 /// Read an .obj or .ply mesh of Testing/Data; null if it cannot be read.
 inline vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& name)
 {
-  const std::string path = DataPath(name);
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (name.size() > 4 && name.substr(name.size() - 4) == ".ply")
-  {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  else
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  return mesh && mesh->GetNumberOfPolys() > 0 ? mesh : nullptr;
+  return ReadMeshFile(DataPath(name));
 }
 
 /// A finely triangulated sphere (merged seam points), radius `radius` at the origin.

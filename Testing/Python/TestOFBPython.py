@@ -24,7 +24,8 @@ SOURCE_DIR = os.path.abspath(
     sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
 
 CLASSES = ("vtkOFB", "vtkOFBAlgorithm", "vtkOFBSampler", "vtkOFBBuilder",
-           "vtkOFBToPolyData", "vtkOFBSamplePicker")
+           "vtkOFBToPolyData", "vtkOFBSamplePicker", "vtkOFBWriter", "vtkOFBReader",
+           "vtkOFBPyramid", "vtkOFBPolyDataMapper")
 
 
 class Events:
@@ -368,6 +369,50 @@ class BadInput(unittest.TestCase):
 
 
 class Bunny(unittest.TestCase):
+    @unittest.skipUnless(os.environ.get("DISPLAY"), "needs a display (xvfb-run)")
+    def test_paint_with_numpy_and_render_through_the_mapper(self):
+        """A script paints the OFB through numpy and the mapper shows the paint."""
+        from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
+                                                 vtkWindowToImageFilter)
+        import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (object factories)
+        sphere = vtkSphereSource()
+        sphere.SetThetaResolution(32)
+        sphere.SetPhiResolution(16)
+        builder = vtkofb.vtkOFBBuilder()
+        builder.SetInputConnection(sphere.GetOutputPort())
+        builder.SetResolution(128)
+        builder.SetBackendToCPU()
+        builder.Update()
+        ofb = builder.GetOutput()
+        colors = numpy_support.vtk_to_numpy(ofb.GetSampleData().GetScalars())
+        colors[:] = (255, 0, 0, 255)  # a view of the OFB's own array: paint it red
+        ofb.MarkAllSamplesModified()
+        ofb.Modified()
+        mapper = vtkofb.vtkOFBPolyDataMapper()
+        mapper.SetInputConnection(sphere.GetOutputPort())
+        mapper.SetOFB(ofb)
+        mapper.SetLookupModeToNearest()
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        actor.GetProperty().SetColor(0.0, 1.0, 0.0)  # green if the OFB were not used
+        actor.GetProperty().SetAmbient(1.0)
+        actor.GetProperty().SetDiffuse(0.0)
+        renderer = vtkRenderer()
+        renderer.AddActor(actor)
+        window = vtkRenderWindow()
+        window.SetOffScreenRendering(1)
+        window.SetSize(64, 64)
+        window.AddRenderer(renderer)
+        window.Render()
+        capture = vtkWindowToImageFilter()
+        capture.SetInput(window)
+        capture.ReadFrontBufferOff()
+        capture.Update()
+        image = numpy_support.vtk_to_numpy(capture.GetOutput().GetPointData().GetScalars())
+        centre = image.reshape(64, 64, -1)[32, 32]
+        self.assertGreater(int(centre[0]), 200)
+        self.assertLess(int(centre[1]), 50)
+
     def test_bundled_bunny(self):
         path = os.path.join(SOURCE_DIR, "Testing", "Data", "stanford-bunny.obj")
         self.assertTrue(os.path.isfile(path), path)

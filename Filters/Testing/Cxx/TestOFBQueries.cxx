@@ -5,6 +5,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
+#include "vtkExecutive.h"
 #include "vtkOFBToPolyData.h"
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
@@ -273,4 +274,26 @@ TEST(Queries, ModifiedRangesTrackOnlyWhatChanged)
   copy->Initialize();
   copy->GetSampleRangesModifiedSince(third.GetMTime(), ranges);
   EXPECT_EQ(ranges->GetNumberOfTuples(), 0) << "an empty OFB has nothing to upload";
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, PointCloudOfAnEmptyOFBIsEmpty)
+{
+  vtkNew<vtkOFB> empty;
+  vtkNew<vtkOFBToPolyData> cloud;
+  cloud->SetInputData(empty);
+  cloud->Update();
+  EXPECT_EQ(cloud->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(cloud->GetOutput()->GetNumberOfVerts(), 0);
+  // A polydata is not an OFB: the pipeline refuses it, no crash, empty output.
+  vtkNew<vtkPolyData> poly;
+  vtkNew<vtkOFBToPolyData> wrong;
+  MessageObserver* observer = MessageObserver::New();
+  observer->Watch(wrong);
+  wrong->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, observer);
+  wrong->SetInputData(poly);
+  wrong->Update();
+  EXPECT_FALSE(observer->Errors.empty());
+  EXPECT_EQ(wrong->GetOutput()->GetNumberOfPoints(), 0);
+  observer->Delete();
 }

@@ -1,9 +1,19 @@
-// Helpers of the vtkOFBPolyDataMapper tests: painting patterns into OFB colours.
+// Helpers of the vtkOFBPolyDataMapper tests: painting patterns into OFB colours, and
+// image tests comparing two lookup modes side by side.
 #ifndef vtkOFBMapperTestHelpers_h
 #define vtkOFBMapperTestHelpers_h
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBPolyDataMapper.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
@@ -19,8 +29,8 @@ inline vtkUnsignedCharArray* GetColors(vtkOFB* ofb)
 }
 
 /// Set every sample's colour from its position; marks all samples modified.
-inline void Paint(
-  vtkOFB* ofb, const std::function<void(const double x[3], unsigned char rgba[4])>& f)
+inline void Paint(vtkOFB* ofb,
+  const std::function<void(const double x[3], unsigned char rgba[4])>& f)
 {
   vtkUnsignedCharArray* colors = GetColors(ofb);
   if (!colors)
@@ -40,18 +50,65 @@ inline void Paint(
 }
 
 /// A 3-D checker of cubes of edge `size` (world units), colours a and b.
-inline void PaintChecker(
-  vtkOFB* ofb, double size, const unsigned char a[4], const unsigned char b[4])
+inline void PaintChecker(vtkOFB* ofb,
+  double size,
+  const unsigned char a[4],
+  const unsigned char b[4])
 {
-  Paint(ofb, [&](const double x[3], unsigned char rgba[4]) {
-    const long k = static_cast<long>(std::floor(x[0] / size) + std::floor(x[1] / size) +
-      std::floor(x[2] / size));
-    const unsigned char* c = (k % 2 == 0) ? a : b;
-    for (int i = 0; i < 4; ++i)
+  Paint(ofb,
+    [&](const double x[3], unsigned char rgba[4])
     {
-      rgba[i] = c[i];
-    }
-  });
+      const long k = static_cast<long>(
+        std::floor(x[0] / size) + std::floor(x[1] / size) + std::floor(x[2] / size));
+      const unsigned char* c = (k % 2 == 0) ? a : b;
+      for (int i = 0; i < 4; ++i)
+      {
+        rgba[i] = c[i];
+      }
+    });
+}
+
+/**
+ * Render `surface` coloured by `ofb` with lookup mode `left` in the left half of a
+ * 400x200 window and `right` in the right half, camera zoomed by `zoom`, and
+ * compare with the test's baseline. Returns the test's exit code (0 on success).
+ */
+inline int CompareLookupModes(int argc,
+  char* argv[],
+  vtkPolyData* surface,
+  vtkOFB* ofb,
+  int left,
+  int right,
+  const double background[3],
+  double zoom)
+{
+  vtkNew<vtkRenderWindow> renWin;
+  renWin->SetSize(400, 200);
+  for (int v = 0; v < 2; ++v)
+  {
+    vtkNew<vtkOFBPolyDataMapper> mapper;
+    mapper->SetInputData(surface);
+    mapper->SetOFB(ofb);
+    mapper->SetLookupMode(v == 0 ? left : right);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetViewport(0.5 * v, 0.0, 0.5 * (v + 1), 1.0);
+    renderer->AddActor(actor);
+    renderer->SetBackground(background[0], background[1], background[2]);
+    renderer->ResetCamera();
+    renderer->GetActiveCamera()->Zoom(zoom);
+    renWin->AddRenderer(renderer);
+  }
+  renWin->Render();
+  int retVal = vtkRegressionTestImage(renWin);
+  if (retVal == vtkRegressionTester::DO_INTERACTOR)
+  {
+    vtkNew<vtkRenderWindowInteractor> iren;
+    iren->SetRenderWindow(renWin);
+    iren->Start();
+  }
+  return !retVal;
 }
 }
 

@@ -43,26 +43,42 @@ uint WorkGroupScan(inout uint value)
   return total;
 }
 
+// Exclusive scan of 2048 values, 8 per invocation, in place; returns their total.
+uint BlockScan(inout uint values[8])
+{
+  uint sum = 0u;
+  for (uint i = 0u; i < 8u; ++i)
+  {
+    uint value = values[i];
+    values[i] = sum;
+    sum += value;
+  }
+  uint prefix = sum;
+  uint total = WorkGroupScan(prefix);
+  for (uint i = 0u; i < 8u; ++i)
+  {
+    values[i] += prefix;
+  }
+  return total;
+}
+
 void main()
 {
   uint id = gl_LocalInvocationID.x;
 #if KERNEL == 0
   uint block = firstBlock + gl_WorkGroupID.x;
   uint first = block * 2048u + id * 8u;
-  uint local[8];
-  uint sum = 0u;
+  uint values[8];
   for (uint i = 0u; i < 8u; ++i)
   {
-    local[i] = sum;
-    sum += (first + i < numberOfValues) ? counts[first + i] : 0u;
+    values[i] = (first + i < numberOfValues) ? counts[first + i] : 0u;
   }
-  uint prefix = sum;
-  uint total = WorkGroupScan(prefix);
+  uint total = BlockScan(values);
   for (uint i = 0u; i < 8u; ++i)
   {
     if (first + i < numberOfValues)
     {
-      offsets[first + i] = prefix + local[i];
+      offsets[first + i] = values[i];
     }
   }
   if (id == 0u)
@@ -74,20 +90,17 @@ void main()
   for (uint chunk = 0u; chunk < numberOfValues; chunk += 2048u)
   {
     uint first = chunk + id * 8u;
-    uint local[8];
-    uint sum = 0u;
+    uint values[8];
     for (uint i = 0u; i < 8u; ++i)
     {
-      local[i] = sum;
-      sum += (first + i < numberOfValues) ? blockSums[first + i] : 0u;
+      values[i] = (first + i < numberOfValues) ? blockSums[first + i] : 0u;
     }
-    uint prefix = sum;
-    uint total = WorkGroupScan(prefix);
+    uint total = BlockScan(values);
     for (uint i = 0u; i < 8u; ++i)
     {
       if (first + i < numberOfValues)
       {
-        blockSums[first + i] = carry + prefix + local[i];
+        blockSums[first + i] = carry + values[i];
       }
     }
     carry += total;

@@ -9,9 +9,7 @@
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBTestUtilities.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
-#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 
 int TestOFBMapperChecker(int argc, char* argv[])
@@ -45,12 +43,5 @@ int TestOFBMapperChecker(int argc, char* argv[])
     return 1;
   }
 
-  int retVal = vtkRegressionTestImage(renWin);
-  if (retVal == vtkRegressionTester::DO_INTERACTOR)
-  {
-    vtkNew<vtkRenderWindowInteractor> iren;
-    iren->SetRenderWindow(renWin);
-    iren->Start();
-  }
-  return !retVal;
+  return vtkofbtest::CompareWithBaseline(argc, argv, renWin);
 }

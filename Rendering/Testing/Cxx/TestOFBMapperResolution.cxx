@@ -10,9 +10,7 @@
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBTestUtilities.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
-#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 
 #include <cmath>
@@ -89,12 +87,5 @@ int TestOFBMapperResolution(int argc, char* argv[])
     return 1;
   }
 
-  int retVal = vtkRegressionTestImage(renWin);
-  if (retVal == vtkRegressionTester::DO_INTERACTOR)
-  {
-    vtkNew<vtkRenderWindowInteractor> iren;
-    iren->SetRenderWindow(renWin);
-    iren->Start();
-  }
-  return !retVal;
+  return vtkofbtest::CompareWithBaseline(argc, argv, renWin);
 }

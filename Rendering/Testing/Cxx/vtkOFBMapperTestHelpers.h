@@ -69,6 +69,22 @@ inline void PaintChecker(vtkOFB* ofb,
 }
 
 /**
+ * Compare the rendered window with the test's baseline image (interactive with -I).
+ * Returns the test's exit code (0 on success).
+ */
+inline int CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* renWin)
+{
+  int retVal = vtkRegressionTestImage(renWin);
+  if (retVal == vtkRegressionTester::DO_INTERACTOR)
+  {
+    vtkNew<vtkRenderWindowInteractor> iren;
+    iren->SetRenderWindow(renWin);
+    iren->Start();
+  }
+  return !retVal;
+}
+
+/**
  * Render `surface` coloured by `ofb` with lookup mode `left` in the left half of a
  * 400x200 window and `right` in the right half, camera zoomed by `zoom`, and
  * compare with the test's baseline. Returns the test's exit code (0 on success).
@@ -101,14 +117,7 @@ inline int CompareLookupModes(int argc,
     renWin->AddRenderer(renderer);
   }
   renWin->Render();
-  int retVal = vtkRegressionTestImage(renWin);
-  if (retVal == vtkRegressionTester::DO_INTERACTOR)
-  {
-    vtkNew<vtkRenderWindowInteractor> iren;
-    iren->SetRenderWindow(renWin);
-    iren->Start();
-  }
-  return !retVal;
+  return CompareWithBaseline(argc, argv, renWin);
 }
 }
 

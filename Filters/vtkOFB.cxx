@@ -10,6 +10,7 @@
 #include "vtkSMPTools.h"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 vtkStandardNewMacro(vtkOFB);
@@ -38,6 +39,13 @@ vtkOFB::~vtkOFB() = default;
 //------------------------------------------------------------------------------
 void vtkOFB::Initialize()
 {
+  this->Spares.clear();
+  this->Reset();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::Reset()
+{
   this->Superclass::Initialize();
   this->Origin[0] = this->Origin[1] = this->Origin[2] = 0.0;
   this->CellSize = 0.0;
@@ -59,9 +67,77 @@ void vtkOFB::Initialize()
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFB::SetFrame(const double origin[3], double cellSize, const vtkIdType dims[3])
+void vtkOFB::Recycle()
 {
+  // An array is free when this OFB (or its sample data, itself held by nobody
+  // else) holds the only reference.
+  std::vector<vtkSmartPointer<vtkDataArray>> spares = std::move(this->Spares);
+  auto keep = [&spares](vtkDataArray* array)
+  {
+    if (array && array->GetReferenceCount() == 1 && array->HasStandardMemoryLayout())
+    {
+      spares.emplace_back(array);
+    }
+  };
+  keep(this->CellOffsets);
+  keep(this->Depths);
+  keep(this->CellIndex);
+  if (this->SampleData->GetReferenceCount() == 1)
+  {
+    for (int i = 0; i < this->SampleData->GetNumberOfArrays(); ++i)
+    {
+          keep(this->SampleData->GetArray(i));
+    }
+  }
   this->Initialize();
+  this->Spares = std::move(spares);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::PrepareForNewData()
+{
+  this->Recycle();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::ReleaseSpareArrays()
+{
+  this->Spares.clear();
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataArray> vtkOFB::TakeSpareArray(
+  const char* name, int dataType, int numberOfComponents, vtkIdType numberOfTuples)
+{
+  for (auto it = this->Spares.begin(); name && it != this->Spares.end(); ++it)
+  {
+    vtkDataArray* array = *it;
+    if (array->GetDataType() != dataType || array->GetNumberOfComponents() != numberOfComponents ||
+      !array->GetName() || std::strcmp(array->GetName(), name) != 0 ||
+      array->GetSize() < numberOfTuples * numberOfComponents)
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> taken = *it;
+    this->Spares.erase(it);
+    // As a new array: no lookup table, no cached ranges or other information.
+    taken->SetNumberOfTuples(numberOfTuples);
+    taken->SetLookupTable(nullptr);
+    if (taken->HasInformation())
+    {
+      taken->GetInformation()->Clear();
+    }
+    taken->Modified();
+    return taken;
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFB::SetFrame(
+  const double origin[3], double cellSize, const vtkIdType dims[3], bool zeroOffsets)
+{
+  this->Reset();
   if (!(cellSize > 0.0) || !std::isfinite(cellSize) || !std::isfinite(origin[0]) ||
     !std::isfinite(origin[1]) || !std::isfinite(origin[2]))
   {
@@ -89,17 +165,26 @@ bool vtkOFB::SetFrame(const double origin[3], double cellSize, const vtkIdType d
     }
     base[a + 1] = base[a] + static_cast<vtkIdType>(cells);
   }
-  auto offsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
-  offsets->SetName("CellOffsets");
-  if (!offsets->Allocate(base[3] + 1))
+  vtkSmartPointer<vtkTypeUInt32Array> offsets = vtkTypeUInt32Array::SafeDownCast(
+    this->TakeSpareArray("CellOffsets", VTK_TYPE_UINT32, 1, base[3] + 1));
+  if (!offsets)
   {
-    vtkErrorMacro("SetFrame: cannot allocate " << base[3] + 1 << " cell offsets.");
-    return false;
+    offsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
+    offsets->SetName("CellOffsets");
+    if (!offsets->Allocate(base[3] + 1))
+    {
+      vtkErrorMacro("SetFrame: cannot allocate " << base[3] + 1 << " cell offsets.");
+      return false;
+    }
+    offsets->SetNumberOfValues(base[3] + 1);
+    vtkofb::AdviseHugePages(offsets);
   }
-  offsets->SetNumberOfValues(base[3] + 1);
-  vtkofb::AdviseHugePages(offsets);
   vtkTypeUInt32* p = offsets->GetPointer(0);
-  vtkSMPTools::Fill(p, p + base[3] + 1, 0u);
+  if (zeroOffsets)
+  {
+    vtkSMPTools::Fill(p, p + base[3] + 1, 0u);
+  }
+  p[0] = 0;
   this->CellOffsets = offsets;
   for (int a = 0; a < 3; ++a)
   {
@@ -122,19 +207,34 @@ bool vtkOFB::AllocateSamples(vtkIdType n)
     return false;
   }
   this->SampleData = vtkSmartPointer<vtkPointData>::New();
-  auto depths = vtkSmartPointer<vtkFloatArray>::New();
-  depths->SetName("Depths");
-  auto index = vtkSmartPointer<vtkTypeUInt32Array>::New();
-  index->SetName("CellIndex");
-  if ((n > 0 && (!depths->Allocate(n) || !index->Allocate(n))))
+  vtkSmartPointer<vtkFloatArray> depths =
+    vtkFloatArray::SafeDownCast(this->TakeSpareArray("Depths", VTK_FLOAT, 1, n));
+  vtkSmartPointer<vtkTypeUInt32Array> index =
+    vtkTypeUInt32Array::SafeDownCast(this->TakeSpareArray("CellIndex", VTK_TYPE_UINT32, 1, n));
+  if (!depths)
   {
-    vtkErrorMacro("AllocateSamples: cannot allocate " << n << " samples.");
-    return false;
+    depths = vtkSmartPointer<vtkFloatArray>::New();
+    depths->SetName("Depths");
+    if (n > 0 && !depths->Allocate(n))
+    {
+      vtkErrorMacro("AllocateSamples: cannot allocate " << n << " depths.");
+      return false;
+    }
+    depths->SetNumberOfValues(n);
+    vtkofb::AdviseHugePages(depths);
   }
-  depths->SetNumberOfValues(n);
-  index->SetNumberOfValues(n);
-  vtkofb::AdviseHugePages(depths);
-  vtkofb::AdviseHugePages(index);
+  if (!index)
+  {
+    index = vtkSmartPointer<vtkTypeUInt32Array>::New();
+    index->SetName("CellIndex");
+    if (n > 0 && !index->Allocate(n))
+    {
+      vtkErrorMacro("AllocateSamples: cannot allocate " << n << " cell indices.");
+      return false;
+    }
+    index->SetNumberOfValues(n);
+    vtkofb::AdviseHugePages(index);
+  }
   this->Depths = depths;
   this->CellIndex = index;
   this->ModifiedRanges.clear();
@@ -578,6 +678,7 @@ void vtkOFB::CopyFrom(vtkDataObject* src, bool deep)
   {
     return;
   }
+  this->Spares.clear();
   if (deep)
   {
     this->Superclass::DeepCopy(src);
@@ -646,6 +747,7 @@ void vtkOFB::PrintSelf(ostream& os, vtkIndent indent)
      << this->GetNumberOfSamples(2) << ")\n";
   os << indent << "DepthComplexity: (" << this->GetDepthComplexity(0) << ", "
      << this->GetDepthComplexity(1) << ", " << this->GetDepthComplexity(2) << ")\n";
+  os << indent << "NumberOfSpareArrays: " << this->Spares.size() << "\n";
   os << indent << "SampleData:\n";
   this->SampleData->PrintSelf(os, indent.GetNextIndent());
 }

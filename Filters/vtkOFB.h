@@ -66,9 +66,48 @@ public:
    * `origin` is the low corner of the box, `cellSize` (> 0) the edge of a cell in
    * world units and `dims` the number of cells along x, y and z (each >= 1).
    * Returns false, leaving the OFB empty, on invalid values or a failed allocation.
-   * Builders call this, then `AllocateSamples`, then fill the arrays.
+   * Builders call this, then `AllocateSamples`, then fill the arrays. A builder
+   * that writes every offset itself may pass `zeroOffsets` false to leave them
+   * uninitialized.
    */
-  bool SetFrame(const double origin[3], double cellSize, const vtkIdType dims[3]);
+  bool SetFrame(
+    const double origin[3], double cellSize, const vtkIdType dims[3], bool zeroOffsets = true);
+
+  ///@{
+  /**
+   * Rebuilding in place. `Recycle()` empties the OFB as `Initialize()` does but
+   * keeps the arrays that nothing else references (cell offsets, depths, cell
+   * indices, sample arrays) as spares: the next `SetFrame` and `AllocateSamples`
+   * reuse their memory when it is large enough, and a builder takes sample arrays
+   * with `TakeSpareArray`. A rebuild then writes over memory the process already
+   * has instead of having the system clear fresh pages. `ReleaseSpareArrays()`
+   * (and `Initialize()`) frees the spares left; builders call it when done.
+   */
+  void Recycle();
+  void ReleaseSpareArrays();
+  ///@}
+
+  /**
+   * Called by the pipeline before an algorithm produces new data in this OFB:
+   * Recycle() (as vtkImageData, which keeps its memory for reuse). vtkOFBAlgorithm
+   * releases the spares its RequestData did not take.
+   */
+  void PrepareForNewData() override;
+
+  ///@{
+  /// The number of spare arrays (see Recycle()).
+  vtkIdType GetNumberOfSpareArrays() const { return static_cast<vtkIdType>(this->Spares.size()); }
+  ///@}
+
+#ifndef __VTK_WRAP__
+  /**
+   * A spare array (see Recycle()) named `name`, of type `dataType`, with
+   * `numberOfComponents` components and room for `numberOfTuples` tuples, resized
+   * to them (its values are stale); null when there is none.
+   */
+  vtkSmartPointer<vtkDataArray> TakeSpareArray(
+    const char* name, int dataType, int numberOfComponents, vtkIdType numberOfTuples);
+#endif
 
   /**
    * Allocate `n` samples (depths and cell indices) once the cell offsets are final.
@@ -249,6 +288,9 @@ protected:
    * Cell (u, v index and global cell index) of point x in grid `axis`; false if
    * outside the grid.
    */
+  /// Initialize() but for the spares.
+  void Reset();
+
   bool LocateCell(int axis, const double x[3], vtkIdType& cell) const;
 
   /**
@@ -274,6 +316,7 @@ protected:
   vtkSmartPointer<vtkFloatArray> Depths;
   vtkSmartPointer<vtkTypeUInt32Array> CellIndex;
   vtkSmartPointer<vtkPointData> SampleData;
+  std::vector<vtkSmartPointer<vtkDataArray>> Spares; // see Recycle()
 
   struct ModifiedRange
   {

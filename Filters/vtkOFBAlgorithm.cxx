@@ -55,7 +55,16 @@ vtkTypeBool vtkOFBAlgorithm::ProcessRequest(
   }
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
   {
-    return this->RequestData(request, inInfo, outInfo);
+    const int result = this->RequestData(request, inInfo, outInfo);
+    // Free the memory of the previous outputs that RequestData did not reuse.
+    for (int i = 0; i < outInfo->GetNumberOfInformationObjects(); ++i)
+    {
+      if (vtkOFB* ofb = vtkOFB::GetData(outInfo, i))
+      {
+        ofb->ReleaseSpareArrays();
+      }
+    }
+    return result;
   }
   return this->Superclass::ProcessRequest(request, inInfo, outInfo);
 }

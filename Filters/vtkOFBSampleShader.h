@@ -22,6 +22,13 @@
 #include <cstring>
 #include <type_traits>
 
+// Outputs that alias nothing else, so that the loops below vectorize.
+#if defined(__GNUC__) || defined(__clang__) || defined(_MSC_VER)
+#define VTK_OFB_RESTRICT __restrict
+#else
+#define VTK_OFB_RESTRICT
+#endif
+
 struct vtkOFBSampleShader
 {
   const double* P;
@@ -61,28 +68,20 @@ struct vtkOFBSampleShader
   /// Attributes of n samples of triangle tri at barycentrics (w1, w2) in the triangle.
   void Shade(vtkIdType tri, vtkIdType n, const float* w1, const float* w2, const Run& out) const
   {
-    const vtkIdType* t = this->T3 + 3 * tri;
-    // The point normals interpolated, a component at a time (loops that vectorize).
-    for (int k = 0; k < 3; ++k)
-    {
-      const float c0 = this->N[3 * t[0] + k];
-      const float c1 = this->N[3 * t[1] + k];
-      const float c2 = this->N[3 * t[2] + k];
-      float* nk = out.N[k];
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        nk[i] = (1.0f - w1[i] - w2[i]) * c0 + w1[i] * c1 + w2[i] * c2;
-      }
-    }
-    // Normalized; the face normal where the point normals are opposed or missing.
+    this->Shade(this->T3 + 3 * tri, n, w1, w2, out);
+  }
+
+  /// The same for the triangle of point ids t[3].
+  void Shade(const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  {
+    // The point normals interpolated and their squared length, in one loop that
+    // vectorizes (structure of arrays).
     float* nx = out.N[0];
     float* ny = out.N[1];
     float* nz = out.N[2];
     float* len2 = out.Scratch;
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      len2[i] = nx[i] * nx[i] + ny[i] * ny[i] + nz[i] * nz[i];
-    }
+    InterpolateNormals(n, w1, w2, this->N + 3 * t[0], this->N + 3 * t[1], this->N + 3 * t[2], nx,
+      ny, nz, len2);
     // With clamped barycentrics, |n|^2 is at least the smallest dot product of two
     // point normals: when that is clearly positive, no sample needs the face normal.
     float smallest = 1.0f;
@@ -111,13 +110,10 @@ struct vtkOFBSampleShader
     }
     for (vtkIdType i = 0; i < n; ++i)
     {
-      len2[i] = 1.0f / std::sqrt(len2[i]);
-    }
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      nx[i] *= len2[i];
-      ny[i] *= len2[i];
-      nz[i] *= len2[i];
+      const float inv = 1.0f / std::sqrt(len2[i]);
+      nx[i] *= inv;
+      ny[i] *= inv;
+      nz[i] *= inv;
     }
     if (this->V)
     {
@@ -126,6 +122,31 @@ struct vtkOFBSampleShader
     if (this->C)
     {
       this->ShadeColors(t, n, w1, w2, out.RGBA);
+    }
+  }
+
+  /**
+   * Normals n0, n1, n2 interpolated at n barycentrics (w1, w2), by component, and
+   * their squared length (restrict: the loop vectorizes).
+   */
+  static void InterpolateNormals(vtkIdType n, const float* VTK_OFB_RESTRICT w1,
+    const float* VTK_OFB_RESTRICT w2, const float* n0, const float* n1, const float* n2,
+    float* VTK_OFB_RESTRICT nx, float* VTK_OFB_RESTRICT ny, float* VTK_OFB_RESTRICT nz,
+    float* VTK_OFB_RESTRICT len2)
+  {
+    const float x0 = n0[0], y0 = n0[1], z0 = n0[2];
+    const float x1 = n1[0], y1 = n1[1], z1 = n1[2];
+    const float x2 = n2[0], y2 = n2[1], z2 = n2[2];
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const float b1 = w1[i], b2 = w2[i], b0 = 1.0f - b1 - b2;
+      const float x = b0 * x0 + b1 * x1 + b2 * x2;
+      const float y = b0 * y0 + b1 * y1 + b2 * y2;
+      const float z = b0 * z0 + b1 * z1 + b2 * z2;
+      nx[i] = x;
+      ny[i] = y;
+      nz[i] = z;
+      len2[i] = x * x + y * y + z * z;
     }
   }
 

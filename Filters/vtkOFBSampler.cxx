@@ -344,7 +344,8 @@ int vtkOFBSampler::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkOFB* output = vtkOFB::GetData(outputVector);
-  output->Initialize();
+  output->Recycle(); // a rebuild reuses the memory of the previous output
+
   this->NumberOfSkippedTriangles = 0;
   this->LastBuildTime = 0.0;
 
@@ -353,6 +354,7 @@ int vtkOFBSampler::RequestData(
   this->UpdateProgress(0.0);
   if (!this->PrepareSurface(input, surface))
   {
+    output->Initialize();
     return 1;
   }
   this->UpdateProgress(0.05);
@@ -361,6 +363,7 @@ int vtkOFBSampler::RequestData(
     output->Initialize();
     return 1;
   }
+  output->ReleaseSpareArrays();
   this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
   this->UpdateProgress(1.0);
   return 1;
@@ -563,7 +566,7 @@ bool vtkOFBSampler::ComputeFrame(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSampler::SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output)
+bool vtkOFBSampler::SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets)
 {
   double origin[3], cellSize;
   vtkIdType dims[3];
@@ -580,7 +583,7 @@ bool vtkOFBSampler::SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output)
                                 << " MiB. Lower the resolution or raise MemoryLimit.");
     return false;
   }
-  return output->SetFrame(origin, cellSize, dims);
+  return output->SetFrame(origin, cellSize, dims, zeroOffsets);
 }
 
 //------------------------------------------------------------------------------

@@ -1,18 +1,19 @@
 // The CPU scan conversion of vtkOFBSampler.
 //
-// The cells of the three grids are cut into bands of whole rows; a band is a
-// contiguous range of global cells and therefore of samples. Every triangle is set
-// up once (vtkOFBTriangleRaster: grid, fixed-point edges, plane), then listed in
-// the bands its rows cross. Pass 1 finds, band by band, the spans (covered cells)
-// of its triangles' rows and its number of samples. After a scan over the band
-// totals, pass 2 takes each band on its own, while its data is in cache: samples
-// per cell and their prefix sum (the cell offsets), then the fragments of its
-// triangles in increasing id, a triangle at a time (depth, barycentrics and
-// attributes, vtkOFBSampleShader), each given the next slot of its cell, and last
-// cell by cell the fragments sorted by depth (stably: ties stay in triangle order)
-// and written to the samples. A band belongs to one thread (no atomics) and is
-// computed the same way whatever the number of threads, so the output does not
-// depend on it.
+// The cells of the three grids are cut into bands of 2^k whole rows; a band is a
+// contiguous range of global cells and therefore of samples. The triangles are
+// set up (vtkOFBTriangleRaster: grid, fixed-point edges, plane) in the order of
+// the band of their lowest vertex, so that a band reads its setups from nearby
+// memory, and listed in the bands their rows cross. Pass 1 finds, band by band,
+// the spans (covered cells) of its triangles' rows and its number of samples.
+// After a scan over the band totals, pass 2 takes each band on its own, while its
+// data is in cache: the samples of each cell and their prefix sum (the cell
+// offsets, written once); the fragments of its triangles, a triangle at a time
+// (depth, barycentrics and attributes, vtkOFBSampleShader), each given the next
+// slot of its cell; the slots of each cell sorted by (depth, triangle id), the
+// order of the OpenGL backend; and the samples written in slot order. A band
+// belongs to one thread (no atomics) and is computed the same way whatever the
+// number of threads, so the output does not depend on it.
 
 #include "vtkOFBSampler.h"
 #include "vtkOFBHugePages.h"
@@ -34,6 +35,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <numeric>
 #include <type_traits>
 #include <vector>
 
@@ -78,35 +80,43 @@ struct SampleArrays
   vtkSmartPointer<vtkFloatArray> Vectors;
   std::vector<vtkSmartPointer<vtkDataArray>> Others;
 
-  SampleArrays(const vtkOFBSurface& surface, vtkIdType n)
+  /// Reuses the spare arrays of `ofb` (vtkOFB::Recycle) that fit.
+  SampleArrays(const vtkOFBSurface& surface, vtkIdType n, vtkOFB* ofb)
   {
-    this->Colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    this->Colors->SetName("Colors");
-    this->Colors->SetNumberOfComponents(4);
-    this->Colors->SetNumberOfTuples(n);
-    this->Normals = vtkSmartPointer<vtkFloatArray>::New();
-    this->Normals->SetName("Normals");
-    this->Normals->SetNumberOfComponents(3);
-    this->Normals->SetNumberOfTuples(n);
-    vtkofb::AdviseHugePages(this->Colors);
-    vtkofb::AdviseHugePages(this->Normals);
+    this->Colors = vtkUnsignedCharArray::SafeDownCast(
+      NewArray(ofb, "Colors", VTK_UNSIGNED_CHAR, nullptr, 4, n));
+    this->Normals = vtkFloatArray::SafeDownCast(NewArray(ofb, "Normals", VTK_FLOAT, nullptr, 3, n));
     if (surface.Vectors)
     {
-      this->Vectors = vtkSmartPointer<vtkFloatArray>::New();
-      this->Vectors->SetName(surface.Vectors->GetName());
-      this->Vectors->SetNumberOfComponents(3);
-      this->Vectors->SetNumberOfTuples(n);
-      vtkofb::AdviseHugePages(this->Vectors);
+      this->Vectors = vtkFloatArray::SafeDownCast(
+        NewArray(ofb, surface.Vectors->GetName(), VTK_FLOAT, nullptr, 3, n));
     }
     for (const auto& in : surface.Arrays)
     {
-      vtkSmartPointer<vtkDataArray> out = vtk::TakeSmartPointer(in->NewInstance());
-      out->SetName(in->GetName());
-      out->SetNumberOfComponents(in->GetNumberOfComponents());
-      out->SetNumberOfTuples(n);
-      vtkofb::AdviseHugePages(out);
-      this->Others.push_back(out);
+      this->Others.push_back(
+        NewArray(ofb, in->GetName(), in->GetDataType(), in, in->GetNumberOfComponents(), n));
     }
+  }
+
+  /**
+   * n tuples of a spare array of `ofb` of this name and type (and of the class of
+   * `like` when given), else of a new one.
+   */
+  static vtkSmartPointer<vtkDataArray> NewArray(
+    vtkOFB* ofb, const char* name, int type, vtkDataArray* like, int nc, vtkIdType n)
+  {
+    vtkSmartPointer<vtkDataArray> array = ofb->TakeSpareArray(name, type, nc, n);
+    if (array && (!like || std::strcmp(array->GetClassName(), like->GetClassName()) == 0))
+    {
+      return array;
+    }
+    array = vtk::TakeSmartPointer(
+      like ? like->NewInstance() : vtkDataArray::CreateDataArray(type));
+    array->SetName(name);
+    array->SetNumberOfComponents(nc);
+    array->SetNumberOfTuples(n);
+    vtkofb::AdviseHugePages(array);
+    return array;
   }
 
   /// Hand the arrays to the sample data (only those that were interpolated).
@@ -138,21 +148,26 @@ struct SampleArrays
 
 /**
  * Per-thread scratch of pass 2: the fragments of a band in the order they are
- * made (depth, barycentrics, triangle, attributes), and the fragment of each of
- * its samples.
+ * made (depth, barycentrics, triangle, attributes); the fragment and the cell of
+ * each of its slots (samples); the slots of each of its cells.
  */
 struct BandScratch
 {
   std::vector<float> Depth, W1, W2, N[3], V[3], Tmp;
   std::vector<unsigned char> RGBA;
-  std::vector<vtkTypeUInt32> Tri, Order;
+  std::vector<vtkTypeUInt32> Tri, Order, CellOf, Slot, Multi;
 
-  void Reserve(vtkIdType n, bool vectors, bool colors)
+  void Reserve(vtkIdType n, vtkIdType nCells, bool vectors, bool colors)
   {
+    if (static_cast<vtkIdType>(this->Slot.size()) < nCells)
+    {
+      this->Slot.resize(nCells);
+    }
     if (static_cast<vtkIdType>(this->Depth.size()) >= n)
     {
       return;
     }
+    this->CellOf.resize(n);
     for (auto* v :
       { &this->Depth, &this->W1, &this->W2, &this->N[0], &this->N[1], &this->N[2], &this->Tmp })
     {
@@ -196,8 +211,8 @@ struct Output
 };
 
 /**
- * A CPU build: the triangles set up, the bands with their triangles and spans,
- * and the passes over one band.
+ * A CPU build: the bands, the triangles sorted by band and set up, the triangles
+ * and spans of each band, and the passes over one band.
  */
 class BandBuilder
 {
@@ -209,7 +224,42 @@ public:
   {
   }
 
-  /// Set up every triangle (in parallel); false if the setups cannot be allocated.
+  /**
+   * Cut each grid into bands of 2^Shift[a] whole rows, at most BandCells cells
+   * (one row where a row is longer).
+   */
+  void CutBands()
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const vtkIdType nu = this->F.Dims[(a + 1) % 3];
+      const vtkIdType nv = this->F.Dims[(a + 2) % 3];
+      this->Shift[a] = 0;
+      while ((nu << (this->Shift[a] + 1)) <= BandCells)
+      {
+        ++this->Shift[a];
+      }
+      this->FirstBand[a] = static_cast<vtkIdType>(this->Bands.size());
+      for (vtkIdType r = 0; r < nv; r += vtkIdType(1) << this->Shift[a])
+      {
+        Band band;
+        band.Axis = a;
+        band.Row0 = r;
+        band.Row1 = std::min(nv, r + (vtkIdType(1) << this->Shift[a]));
+        band.Cell0 = this->F.CellBase[a] + band.Row0 * nu;
+        band.Cell1 = this->F.CellBase[a] + band.Row1 * nu;
+        band.First = band.Count = band.TriBegin = band.TriEnd = 0;
+        band.SpanBegin = band.SpanEnd = 0;
+        this->Bands.push_back(band);
+      }
+    }
+  }
+
+  /**
+   * Set up every triangle (in parallel), in the order of the band of their lowest
+   * vertex (a counting sort, stable), so that a band reads its setups from nearby
+   * memory; false if the setups cannot be allocated.
+   */
   bool SetupTriangles()
   {
     const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
@@ -221,86 +271,90 @@ public:
     vtkofb::AdviseHugePages(this->Setups.get(), sizeof(vtkOFBTriangleRaster) * nTris);
     const double* P = this->Surface.Points.data();
     const vtkIdType* T3 = this->Surface.Triangles.data();
-    vtkOFBTriangleRaster* setups = this->Setups.get();
     const vtkOFBRasterFrame& f = this->F;
+    std::vector<vtkTypeUInt32> key(nTris), order(nTris);
     vtkSMPTools::For(0, nTris, SetupChunk,
-      [=, &f](vtkIdType begin, vtkIdType end)
+      [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType t = begin; t < end; ++t)
         {
-          setups[t].Setup(P, T3 + 3 * t, f);
+          const double* p[3] = { P + 3 * T3[3 * t], P + 3 * T3[3 * t + 1], P + 3 * T3[3 * t + 2] };
+          const int a = vtkOFBTriangleRaster::DominantAxis(p[0], p[1], p[2]);
+          const int va = (a + 2) % 3;
+          const double v = std::min({ p[0][va], p[1][va], p[2][va] });
+          const double row = std::floor((v - f.Origin[va]) * f.InvCell - 0.5);
+          const double last = static_cast<double>(f.Dims[va] - 1);
+          const auto r = static_cast<vtkIdType>(std::min(std::max(row, 0.0), last));
+          key[t] = static_cast<vtkTypeUInt32>(this->FirstBand[a] + (r >> this->Shift[a]));
+        }
+      });
+    std::vector<vtkIdType> start(this->Bands.size() + 1, 0);
+    for (vtkIdType t = 0; t < nTris; ++t)
+    {
+      ++start[key[t] + 1];
+    }
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    for (vtkIdType t = 0; t < nTris; ++t)
+    {
+      order[start[key[t]]++] = static_cast<vtkTypeUInt32>(t);
+    }
+    vtkOFBTriangleRaster* setups = this->Setups.get();
+    this->Ranges.resize(nTris);
+    vtkSMPTools::For(0, nTris, SetupChunk,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          vtkOFBTriangleRaster& ts = setups[i];
+          ts.Setup(P, T3 + 3 * static_cast<vtkIdType>(order[i]), f);
+          ts.Tri = order[i];
+          BandRange& range = this->Ranges[i];
+          range.B0 = 1;
+          range.B1 = 0;
+          if (ts.Axis >= 0)
+          {
+            range.B0 = static_cast<vtkTypeUInt32>(
+              this->FirstBand[ts.Axis] + (ts.V0 >> this->Shift[ts.Axis]));
+            range.B1 = static_cast<vtkTypeUInt32>(
+              this->FirstBand[ts.Axis] + (ts.V1 >> this->Shift[ts.Axis]));
+            range.V0 = ts.V0;
+            range.V1 = ts.V1;
+          }
         }
       });
     return true;
   }
 
-  /**
-   * Cut the grids into bands of whole rows, list the triangles of each band in
-   * increasing id and count the rows of their spans (SpanRows).
-   */
-  void MakeBands()
+  /// List the triangles of each band in setup order and count the rows of their spans.
+  void ListBandTriangles()
   {
-    vtkIdType firstBand[3], rowsPerBand[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      const vtkIdType nu = this->F.Dims[(a + 1) % 3];
-      const vtkIdType nv = this->F.Dims[(a + 2) % 3];
-      rowsPerBand[a] = std::max<vtkIdType>(1, std::min(nv, BandCells / nu));
-      firstBand[a] = static_cast<vtkIdType>(this->Bands.size());
-      for (vtkIdType r = 0; r < nv; r += rowsPerBand[a])
-      {
-        Band band;
-        band.Axis = a;
-        band.Row0 = r;
-        band.Row1 = std::min(nv, r + rowsPerBand[a]);
-        band.Cell0 = this->F.CellBase[a] + band.Row0 * nu;
-        band.Cell1 = this->F.CellBase[a] + band.Row1 * nu;
-        band.First = band.Count = band.TriBegin = band.TriEnd = 0;
-        band.SpanBegin = band.SpanEnd = 0;
-        this->Bands.push_back(band);
-      }
-    }
-    // Counting sort of the (triangle, band) pairs by band; rows of each band.
-    const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
-    const vtkOFBTriangleRaster* setups = this->Setups.get();
     const size_t nBands = this->Bands.size();
     std::vector<vtkIdType> start(nBands + 1, 0), rows(nBands + 1, 0);
-    for (int pass = 0; pass < 2; ++pass)
+    for (const BandRange& range : this->Ranges)
     {
-      for (vtkIdType t = 0; t < nTris; ++t)
+      for (vtkTypeUInt32 b = range.B0; b <= range.B1; ++b)
       {
-        const vtkOFBTriangleRaster& ts = setups[t];
-        if (ts.Axis < 0)
-        {
-          continue;
-        }
-        const vtkIdType b0 = firstBand[ts.Axis] + ts.V0 / rowsPerBand[ts.Axis];
-        const vtkIdType b1 = firstBand[ts.Axis] + ts.V1 / rowsPerBand[ts.Axis];
-        for (vtkIdType b = b0; b <= b1; ++b)
-        {
-          if (pass == 0)
-          {
-            ++start[b + 1];
-            rows[b + 1] += std::min<vtkIdType>(ts.V1, this->Bands[b].Row1 - 1) -
-              std::max<vtkIdType>(ts.V0, this->Bands[b].Row0) + 1;
-          }
-          else
-          {
-            this->BandTris[start[b]++] = static_cast<vtkTypeUInt32>(t);
-          }
-        }
+        ++start[b + 1];
+        rows[b + 1] += std::min<vtkIdType>(range.V1, this->Bands[b].Row1 - 1) -
+          std::max<vtkIdType>(range.V0, this->Bands[b].Row0) + 1;
       }
-      if (pass == 0)
+    }
+    for (size_t b = 0; b < nBands; ++b)
+    {
+      start[b + 1] += start[b];
+      rows[b + 1] += rows[b];
+      this->Bands[b].TriBegin = start[b];
+      this->Bands[b].TriEnd = start[b + 1];
+      this->Bands[b].SpanBegin = this->Bands[b].SpanEnd = rows[b];
+    }
+    this->BandTris.resize(start.back());
+    const vtkIdType nTris = static_cast<vtkIdType>(this->Ranges.size());
+    for (vtkIdType i = 0; i < nTris; ++i)
+    {
+      const BandRange& range = this->Ranges[i];
+      for (vtkTypeUInt32 b = range.B0; b <= range.B1; ++b)
       {
-        for (size_t b = 0; b < nBands; ++b)
-        {
-          start[b + 1] += start[b];
-          rows[b + 1] += rows[b];
-          this->Bands[b].TriBegin = start[b];
-          this->Bands[b].TriEnd = start[b + 1];
-          this->Bands[b].SpanBegin = this->Bands[b].SpanEnd = rows[b];
-        }
-        this->BandTris.resize(start.back());
+        this->BandTris[start[b]++] = static_cast<vtkTypeUInt32>(i);
       }
     }
     this->SpanRows = rows.back();
@@ -347,57 +401,66 @@ public:
   }
 
   /**
-   * Pass 2 over a band: its offsets; its fragments, a triangle at a time (depth,
-   * barycentrics, attributes), each given the next slot of its cell; then cell by
-   * cell, the fragments sorted by depth (stable: equal depths stay in triangle
-   * order) and written to the samples.
+   * Pass 2 over a band: the samples of each cell and the cell offsets; its
+   * fragments, a triangle at a time (depth, barycentrics, attributes), each given
+   * the next slot of its cell; the slots of each cell sorted by (depth, triangle);
+   * and the samples written in slot order.
    */
   void FillBand(const Band& band, const Output& out, BandScratch& s) const
   {
-    // offsets[c + 1] (zero from SetFrame): the number of samples of cell c, then
-    // the start of cell c, then (once the fragments are placed) its end.
     const SpanRecord* spans = this->Spans.get();
-    vtkTypeUInt32* cursor = out.Offsets + 1;
+    const vtkIdType nCells = band.Cell1 - band.Cell0;
     const vtkIdType rowLength = this->F.Dims[(band.Axis + 1) % 3];
-    const vtkIdType base = this->F.CellBase[band.Axis];
+    s.Reserve(band.Count, nCells, out.Vectors != nullptr, this->Shading.C != nullptr);
+    // slot[c]: the samples of the band's cell c, then its first slot, then (once
+    // the fragments are placed) its end.
+    vtkTypeUInt32* slot = s.Slot.data();
+    std::fill(slot, slot + nCells, 0u);
     for (vtkIdType i = band.SpanBegin; i < band.SpanEnd; ++i)
     {
       const SpanRecord& span = spans[i];
-      vtkTypeUInt32* row = cursor + base + span.Row * rowLength;
+      vtkTypeUInt32* row = slot + (span.Row - band.Row0) * rowLength;
       for (int32_t iu = span.Lo; iu <= span.Hi; ++iu)
       {
         ++row[iu];
       }
     }
-    auto start = static_cast<vtkTypeUInt32>(band.First);
-    for (vtkIdType c = band.Cell0; c < band.Cell1; ++c)
+    vtkTypeUInt32* offsets = out.Offsets + band.Cell0;
+    const auto first = static_cast<vtkTypeUInt32>(band.First);
+    vtkTypeUInt32 start = 0;
+    for (vtkIdType c = 0; c < nCells; ++c)
     {
-      const vtkTypeUInt32 count = cursor[c];
-      cursor[c] = start;
+      const vtkTypeUInt32 count = slot[c];
+      slot[c] = start;
+      offsets[c] = first + start;
       start += count;
     }
 
-    s.Reserve(band.Count, out.Vectors != nullptr, this->Shading.C != nullptr);
-    vtkTypeUInt32* order = s.Order.data(); // fragment of each sample of the band
+    vtkTypeUInt32* order = s.Order.data(); // fragment of each slot
+    vtkTypeUInt32* cellOf = s.CellOf.data(); // cell of each slot
     vtkTypeUInt32 f = 0;
-    for (vtkIdType first = band.SpanBegin, end = first; first < band.SpanEnd; first = end)
+    for (vtkIdType begin = band.SpanBegin, end = begin; begin < band.SpanEnd; begin = end)
     {
-      const vtkTypeUInt32 t = spans[first].Tri;
-      const vtkOFBTriangleRaster& ts = this->Setups[t];
+      const vtkOFBTriangleRaster& ts = this->Setups[spans[begin].Tri];
       const vtkTypeUInt32 f0 = f;
-      for (end = first; end < band.SpanEnd && spans[end].Tri == t; ++end)
+      for (end = begin; end < band.SpanEnd && spans[end].Tri == spans[begin].Tri; ++end)
       {
         const SpanRecord& span = spans[end];
         SpanSamples(ts, span, f, s);
-        vtkTypeUInt32* cell = cursor + base + span.Row * rowLength;
+        const vtkIdType rowStart = (span.Row - band.Row0) * rowLength;
+        vtkTypeUInt32* cell = slot + rowStart;
+        auto c = static_cast<vtkTypeUInt32>(band.Cell0 + rowStart + span.Lo);
         for (int32_t iu = span.Lo; iu <= span.Hi; ++iu)
         {
-          order[cell[iu]++ - band.First] = f++;
+          const vtkTypeUInt32 k = cell[iu]++;
+          order[k] = f++;
+          cellOf[k] = c++;
         }
       }
-      std::fill(s.Tri.begin() + f0, s.Tri.begin() + f, t);
-      this->Shading.Shade(t, f - f0, s.W1.data() + f0, s.W2.data() + f0, s.RunAt(f0));
+      std::fill(s.Tri.begin() + f0, s.Tri.begin() + f, ts.Tri);
+      this->Shading.Shade(ts.Ids, f - f0, s.W1.data() + f0, s.W2.data() + f0, s.RunAt(f0));
     }
+    SortCells(band.Count, s);
     this->WriteSamples(band, out, s);
   }
 
@@ -411,6 +474,17 @@ public:
   vtkIdType SpanRows = 0;
 
 private:
+  /// The bands [B0, B1] and rows [V0, V1] of a set-up triangle (none when B0 > B1).
+  struct BandRange
+  {
+    vtkTypeUInt32 B0, B1;
+    int32_t V0, V1;
+  };
+
+  int Shift[3] = { 0, 0, 0 };
+  vtkIdType FirstBand[3] = { 0, 0, 0 };
+  std::vector<BandRange> Ranges;
+
   /**
    * Depth (the triangle's plane at the cell centre, even for centres a lattice
    * step outside the triangle: the same point as its neighbour's) and barycentrics
@@ -464,13 +538,73 @@ private:
   }
 
   /**
-   * Cell by cell, sort the band's fragments by depth (insertion sort of the
-   * fragment order; stable) and write them to the samples of the cell.
+   * Sort the slots of each cell by (depth, triangle), the order of the OpenGL
+   * backend. One pass of compare-exchanges of neighbours of the same cell, with no
+   * branch on their unpredictable order, sorts the cells of two samples (the most
+   * common case after one); the cells of three or more are then insertion sorted.
    */
-  void WriteSamples(const Band& band, const Output& out, BandScratch& s) const
+  static void SortCells(vtkIdType n, BandScratch& s)
   {
-    const vtkTypeUInt32* cursor = out.Offsets + 1; // end of each cell
-    vtkTypeUInt32* order = s.Order.data(); // fragment of each sample of the band
+    vtkTypeUInt32* order = s.Order.data();
+    const vtkTypeUInt32* cellOf = s.CellOf.data();
+    const float* depth = s.Depth.data();
+    const vtkTypeUInt32* tri = s.Tri.data();
+    auto before = [&](vtkTypeUInt32 f, vtkTypeUInt32 g)
+    { return (depth[f] < depth[g]) | ((depth[f] == depth[g]) & (tri[f] < tri[g])); };
+    s.Multi.clear();
+    if (n < 2)
+    {
+      return;
+    }
+    vtkTypeUInt32 carried = order[0]; // the larger of the pair so far
+    for (vtkIdType k = 1; k < n; ++k)
+    {
+      const vtkTypeUInt32 next = order[k];
+      const bool swap = (cellOf[k] == cellOf[k - 1]) & before(next, carried);
+      order[k - 1] = swap ? next : carried;
+      carried = swap ? carried : next;
+      if (k >= 2 && cellOf[k - 2] == cellOf[k])
+      {
+        s.Multi.push_back(static_cast<vtkTypeUInt32>(k)); // a third sample in a cell
+      }
+    }
+    order[n - 1] = carried;
+    vtkIdType done = -1; // end of the last cell sorted
+    for (const vtkTypeUInt32 k : s.Multi)
+    {
+      if (static_cast<vtkIdType>(k) < done)
+      {
+        continue;
+      }
+      vtkIdType b = k;
+      while (b > 0 && cellOf[b - 1] == cellOf[k])
+      {
+        --b;
+      }
+      vtkIdType e = k + 1;
+      while (e < n && cellOf[e] == cellOf[k])
+      {
+        ++e;
+      }
+      for (vtkIdType i = b + 1; i < e; ++i)
+      {
+        const vtkTypeUInt32 f = order[i];
+        vtkIdType j = i;
+        for (; j > b && before(f, order[j - 1]); --j)
+        {
+          order[j] = order[j - 1];
+        }
+        order[j] = f;
+      }
+      done = e;
+    }
+  }
+
+  /// Write the samples of a band in slot order from their fragments.
+  void WriteSamples(const Band& band, const Output& out, const BandScratch& s) const
+  {
+    const vtkIdType n = band.Count;
+    const vtkTypeUInt32* order = s.Order.data();
     const float* depth = s.Depth.data();
     const float* nx = s.N[0].data();
     const float* ny = s.N[1].data();
@@ -478,59 +612,27 @@ private:
     const bool colors = this->Shading.C != nullptr;
     const unsigned char* rgba = colors ? s.RGBA.data() : this->Shading.DefaultColor;
     const int stride = colors ? 4 : 0;
-    float* outDepth = out.Depth;
-    vtkTypeUInt32* outCell = out.CellIndex;
-    float* outNormals = out.Normals;
-    unsigned char* outColors = out.Colors;
-    const vtkIdType first = band.First;
-    vtkIdType b = first;
-    for (vtkIdType c = band.Cell0; c < band.Cell1; ++c)
+    float* outDepth = out.Depth + band.First;
+    float* outNormals = out.Normals + 3 * band.First;
+    unsigned char* outColors = out.Colors + 4 * band.First;
+    std::copy(s.CellOf.data(), s.CellOf.data() + n, out.CellIndex + band.First);
+    for (vtkIdType k = 0; k < n; ++k)
     {
-      const vtkIdType e = cursor[c];
-      if (e == b)
-      {
-        continue; // most cells are empty
-      }
-      if (e - b == 2)
-      {
-        // The most common case after one sample (a ray through a closed surface),
-        // without a branch on the unpredictable order.
-        const vtkTypeUInt32 f0 = order[b - first], f1 = order[b + 1 - first];
-        const bool swap = depth[f0] > depth[f1];
-        order[b - first] = swap ? f1 : f0;
-        order[b + 1 - first] = swap ? f0 : f1;
-      }
-      for (vtkIdType i = b + 1 - first; e - b > 2 && i < e - first; ++i)
-      {
-        const vtkTypeUInt32 f = order[i];
-        vtkIdType j = i;
-        for (; j > b - first && depth[order[j - 1]] > depth[f]; --j)
-        {
-          order[j] = order[j - 1];
-        }
-        order[j] = f;
-      }
-      for (vtkIdType i = b; i < e; ++i)
-      {
-        const vtkIdType f = order[i - first];
-        outDepth[i] = depth[f];
-        outCell[i] = static_cast<vtkTypeUInt32>(c);
-        float* normal = outNormals + 3 * i;
-        normal[0] = nx[f];
-        normal[1] = ny[f];
-        normal[2] = nz[f];
-        std::memcpy(outColors + 4 * i, rgba + stride * f, 4);
-      }
-      b = e;
+      const vtkTypeUInt32 f = order[k];
+      outDepth[k] = depth[f];
+      outNormals[3 * k] = nx[f];
+      outNormals[3 * k + 1] = ny[f];
+      outNormals[3 * k + 2] = nz[f];
+      std::memcpy(outColors + 4 * k, rgba + stride * f, 4);
     }
     if (out.Vectors)
     {
       float* outVectors = out.Vectors + 3 * band.First;
-      for (vtkIdType i = 0; i < band.Count; ++i)
+      for (vtkIdType k = 0; k < n; ++k)
       {
-        for (int k = 0; k < 3; ++k)
+        for (int c = 0; c < 3; ++c)
         {
-          outVectors[3 * i + k] = s.V[k][order[i]];
+          outVectors[3 * k + c] = s.V[c][order[k]];
         }
       }
     }
@@ -546,7 +648,7 @@ private:
 //------------------------------------------------------------------------------
 bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
 {
-  if (!this->SetUpFrame(surface, output))
+  if (!this->SetUpFrame(surface, output, false))
   {
     return false;
   }
@@ -565,13 +667,14 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   frame.InvCell = 1.0 / cellSize;
 
   BandBuilder builder(surface, frame);
+  builder.CutBands();
   if (!builder.SetupTriangles())
   {
     vtkErrorMacro(
       "Cannot allocate the setup of " << surface.GetNumberOfTriangles() << " triangles.");
     return false;
   }
-  builder.MakeBands();
+  builder.ListBandTriangles();
   // The spans (one record per row of a triangle) are a temporary the estimate
   // does not count: check them too before allocating them.
   const double spanBytes = static_cast<double>(builder.SpanRows) * sizeof(SpanRecord);
@@ -631,7 +734,7 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   {
     return false;
   }
-  SampleArrays arrays(surface, n);
+  SampleArrays arrays(surface, n, output);
   Output out;
   vtkTypeUInt32* offsets = output->GetCellOffsets()->GetPointer(0);
   out.Offsets = offsets;
@@ -673,7 +776,7 @@ bool vtkOFBSampler::InterpolateAttributes(const vtkOFBSurface& surface, vtkOFB* 
   const vtkTypeUInt32* triP, const float* w1P, const float* w2P)
 {
   const vtkIdType n = output->GetNumberOfSamples();
-  SampleArrays arrays(surface, n);
+  SampleArrays arrays(surface, n, output);
   unsigned char* outC = arrays.Colors->GetPointer(0);
   float* outN = arrays.Normals->GetPointer(0);
   float* outV = arrays.Vectors ? arrays.Vectors->GetPointer(0) : nullptr;

@@ -41,23 +41,25 @@ struct vtkOFBTriangleRaster
   // while SubBits <= 9.
   static_assert(SubBits <= 9, "edge functions must stay exact in double precision");
 
+  // Read by the span pass: the grid, the rows and the edge functions.
   int Axis;           // grid, or -1 when the triangle covers no cell centre
   int U0, U1, V0, V1; // cells of the bounding box, clipped to the grid (inclusive)
   int64_t Edge[3], StepU[3], StepV[3];
+  // Read by the sample pass: barycentrics, depths and the triangle.
   // w1 = A1*iu + B1*iv + C1, w2 = A2*iu + B2*iv + C2
   double A1, B1, C1, A2, B2, C2;
-  double D0, D1, D2; // depths of the vertices (world units from the grid plane)
+  double D0, D1, D2;   // depths of the vertices (world units from the grid plane)
+  vtkIdType Ids[3];    // point ids of the vertices
+  vtkTypeUInt32 Tri;   // index of the triangle in the surface
 
-  /// Set up triangle `tri` (three point ids) of the points P (xyz) for frame f.
-  void Setup(const double* P, const vtkIdType* tri, const vtkOFBRasterFrame& f)
+  /// The grid of a triangle: the axis of the largest component of its normal.
+  static int DominantAxis(const double* p0, const double* p1, const double* p2)
   {
-    this->Axis = -1;
-    const double* p[3] = { P + 3 * tri[0], P + 3 * tri[1], P + 3 * tri[2] };
     double e1[3], e2[3];
     for (int k = 0; k < 3; ++k)
     {
-      e1[k] = p[1][k] - p[0][k];
-      e2[k] = p[2][k] - p[0][k];
+      e1[k] = p1[k] - p0[k];
+      e2[k] = p2[k] - p0[k];
     }
     const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
       e1[0] * e2[1] - e1[1] * e2[0] };
@@ -70,6 +72,18 @@ struct vtkOFBTriangleRaster
     {
       a = 2;
     }
+    return a;
+  }
+
+  /// Set up triangle `tri` (three point ids) of the points P (xyz) for frame f.
+  void Setup(const double* P, const vtkIdType* tri, const vtkOFBRasterFrame& f)
+  {
+    this->Axis = -1;
+    this->Ids[0] = tri[0];
+    this->Ids[1] = tri[1];
+    this->Ids[2] = tri[2];
+    const double* p[3] = { P + 3 * tri[0], P + 3 * tri[1], P + 3 * tri[2] };
+    const int a = DominantAxis(p[0], p[1], p[2]);
     const int ua = (a + 1) % 3;
     const int va = (a + 2) % 3;
     const int64_t one = int64_t(1) << SubBits;

@@ -249,6 +249,74 @@ TEST(Sampler, IdenticalOutputWithOneAndTwoThreads)
 }
 
 //------------------------------------------------------------------------------
+TEST(Sampler, RebuildReusesTheMemoryOfArraysNobodyElseHolds)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetInputData(bunny);
+  sampler->SetResolution(256);
+  sampler->Update();
+  vtkOFB* output = sampler->GetOutput();
+  ASSERT_GT(output->GetNumberOfSamples(), 0);
+  vtkNew<vtkOFB> reference;
+  reference->DeepCopy(output);
+  const void* depths = output->GetDepths()->GetVoidPointer(0);
+  const void* normals = output->GetSampleData()->GetNormals()->GetVoidPointer(0);
+
+  // A rebuild writes over the same memory and gives the same OFB.
+  sampler->Modified();
+  sampler->Update();
+  EXPECT_EQ(output->GetDepths()->GetVoidPointer(0), depths);
+  EXPECT_EQ(output->GetSampleData()->GetNormals()->GetVoidPointer(0), normals);
+  EXPECT_EQ(output->GetNumberOfSpareArrays(), 0);
+  ExpectIdentical(reference, output);
+
+  // Arrays another OFB shares are left alone.
+  vtkNew<vtkOFB> held;
+  held->ShallowCopy(output);
+  sampler->SetResolution(200);
+  sampler->Update();
+  EXPECT_NE(output->GetDepths()->GetVoidPointer(0), held->GetDepths()->GetVoidPointer(0));
+  ExpectIdentical(reference, held);
+  ExpectIdentical(Build(bunny, 200), output);
+
+  // Smaller and larger rebuilds over recycled memory equal fresh builds.
+  for (const int resolution : { 128, 300 })
+  {
+    sampler->SetResolution(resolution);
+    sampler->Update();
+    EXPECT_EQ(output->GetNumberOfSpareArrays(), 0);
+    ExpectIdentical(Build(bunny, resolution), output);
+  }
+
+  // A failed rebuild leaves an empty OFB holding no spare memory.
+  sampler->SetResolution(0);
+  vtkNew<MessageObserver> errors;
+  sampler->AddObserver(vtkCommand::ErrorEvent, errors);
+  sampler->Update();
+  EXPECT_EQ(output->GetNumberOfSamples(), 0);
+  EXPECT_EQ(output->GetNumberOfSpareArrays(), 0);
+
+  // Recycle keeps only unshared arrays; Initialize frees them.
+  vtkNew<vtkOFB> copy;
+  copy->DeepCopy(reference);
+  vtkSmartPointer<vtkDataArray> kept = copy->GetSampleData()->GetNormals();
+  copy->Recycle();
+  EXPECT_EQ(copy->GetNumberOfSamples(), 0);
+  EXPECT_EQ(copy->GetNumberOfSpareArrays(), 4); // offsets, depths, cell index, colours
+  EXPECT_EQ(copy->TakeSpareArray("Normals", VTK_FLOAT, 3, 1), nullptr);
+  EXPECT_EQ(copy->TakeSpareArray("Depths", VTK_FLOAT, 1, reference->GetNumberOfSamples() + 1),
+    nullptr);
+  vtkSmartPointer<vtkDataArray> depthsBack =
+    copy->TakeSpareArray("Depths", VTK_FLOAT, 1, reference->GetNumberOfSamples() / 2);
+  ASSERT_NE(depthsBack, nullptr);
+  EXPECT_EQ(depthsBack->GetNumberOfTuples(), reference->GetNumberOfSamples() / 2);
+  copy->Initialize();
+  EXPECT_EQ(copy->GetNumberOfSpareArrays(), 0);
+}
+
+//------------------------------------------------------------------------------
 TEST(Sampler, ClosestSampleWithinSqrt3CellsOfRandomSurfacePoints)
 {
   for (const char* name : { "sphere", "stanford-bunny.obj" })

@@ -336,7 +336,10 @@ vtkOFBSampler::vtkOFBSampler()
 }
 
 //------------------------------------------------------------------------------
-vtkOFBSampler::~vtkOFBSampler() = default;
+vtkOFBSampler::~vtkOFBSampler()
+{
+  this->ReleaseBuffers();
+}
 
 //------------------------------------------------------------------------------
 int vtkOFBSampler::RequestData(

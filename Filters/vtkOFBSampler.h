@@ -25,6 +25,12 @@
  * a surface without triangles, a resolution below 3 or above 65536 and a build
  * whose memory would exceed MemoryLimit give an error and an empty output.
  *
+ * Rebuilding (an update after a change of input or setting) writes over the
+ * memory of the previous output where nothing else holds its arrays (see
+ * vtkOFB::Recycle) and over the sampler's own build buffers (a few hundred bytes
+ * per triangle of the last input), which it keeps between updates;
+ * ReleaseBuffers() frees them.
+ *
  * @sa vtkOFB vtkOFBBuilder
  */
 
@@ -36,6 +42,7 @@
 
 class vtkPolyData;
 class vtkOFBSurface;
+class vtkOFBSamplerBuffers;
 
 class VTKOFBFILTERS_EXPORT vtkOFBSampler : public vtkOFBAlgorithm
 {
@@ -112,6 +119,12 @@ public:
   vtkGetMacro(LastBuildTime, double);
 
   /**
+   * Free the build buffers the CPU backend keeps between updates (triangle setups
+   * and spans, a few hundred bytes per triangle); the next update allocates them again.
+   */
+  void ReleaseBuffers();
+
+  /**
    * Estimated bytes of a build of `input` at the current settings, or -1 if the
    * input is not valid. Nothing is allocated.
    */
@@ -175,6 +188,7 @@ protected:
   bool ProjectVectors;
   vtkIdType NumberOfSkippedTriangles;
   double LastBuildTime;
+  vtkOFBSamplerBuffers* Buffers = nullptr;
 
 private:
   vtkOFBSampler(const vtkOFBSampler&) = delete;

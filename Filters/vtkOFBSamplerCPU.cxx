@@ -211,16 +211,72 @@ struct Output
 };
 
 /**
+ * An uninitialized array kept from build to build (see vtkOFBSamplerBuffers): a
+ * rebuild writes over memory it already has.
+ */
+template <typename T>
+struct Buffer
+{
+  std::unique_ptr<T[]> Data;
+  size_t Capacity = 0;
+
+  /// Room for n items (a new array when much smaller); false if it cannot be allocated.
+  bool Reserve(vtkIdType count)
+  {
+    const size_t n = static_cast<size_t>(std::max<vtkIdType>(count, 1));
+    if (n <= this->Capacity && n >= this->Capacity / 4)
+    {
+      return true;
+    }
+    this->Data.reset();
+    this->Capacity = 0;
+    this->Data.reset(new (std::nothrow) T[n]);
+    if (!this->Data)
+    {
+      return false;
+    }
+    this->Capacity = n;
+    vtkofb::AdviseHugePages(this->Data.get(), sizeof(T) * n);
+    return true;
+  }
+
+  T* Get() const { return this->Data.get(); }
+};
+
+/// The bands [B0, B1] and rows [V0, V1] of a set-up triangle (none when B0 > B1).
+struct BandRange
+{
+  vtkTypeUInt32 B0, B1;
+  int32_t V0, V1;
+};
+}
+
+/// The buffers of the CPU backend, kept by the sampler between builds.
+class vtkOFBSamplerBuffers
+{
+public:
+  Buffer<vtkOFBTriangleRaster> Setups;
+  Buffer<SpanRecord> Spans;
+  Buffer<BandRange> Ranges;
+  Buffer<vtkTypeUInt32> Key, Order, BandTris;
+  vtkSMPThreadLocal<BandScratch> Scratch;
+};
+
+namespace
+{
+/**
  * A CPU build: the bands, the triangles sorted by band and set up, the triangles
  * and spans of each band, and the passes over one band.
  */
 class BandBuilder
 {
 public:
-  BandBuilder(const vtkOFBSurface& surface, const vtkOFBRasterFrame& frame)
+  BandBuilder(
+    const vtkOFBSurface& surface, const vtkOFBRasterFrame& frame, vtkOFBSamplerBuffers& buffers)
     : Surface(surface)
     , F(frame)
     , Shading(surface)
+    , B(buffers)
   {
   }
 
@@ -263,16 +319,18 @@ public:
   bool SetupTriangles()
   {
     const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
-    this->Setups.reset(new (std::nothrow) vtkOFBTriangleRaster[nTris]);
-    if (!this->Setups)
+    if (!this->B.Setups.Reserve(nTris) || !this->B.Ranges.Reserve(nTris) ||
+      !this->B.Key.Reserve(nTris) || !this->B.Order.Reserve(nTris))
     {
       return false;
     }
-    vtkofb::AdviseHugePages(this->Setups.get(), sizeof(vtkOFBTriangleRaster) * nTris);
+    this->Setups = this->B.Setups.Get();
+    this->Ranges = this->B.Ranges.Get();
     const double* P = this->Surface.Points.data();
     const vtkIdType* T3 = this->Surface.Triangles.data();
     const vtkOFBRasterFrame& f = this->F;
-    std::vector<vtkTypeUInt32> key(nTris), order(nTris);
+    vtkTypeUInt32* key = this->B.Key.Get();
+    vtkTypeUInt32* order = this->B.Order.Get();
     vtkSMPTools::For(0, nTris, SetupChunk,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -298,8 +356,7 @@ public:
     {
       order[start[key[t]]++] = static_cast<vtkTypeUInt32>(t);
     }
-    vtkOFBTriangleRaster* setups = this->Setups.get();
-    this->Ranges.resize(nTris);
+    vtkOFBTriangleRaster* setups = this->Setups;
     vtkSMPTools::For(0, nTris, SetupChunk,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -325,13 +382,18 @@ public:
     return true;
   }
 
-  /// List the triangles of each band in setup order and count the rows of their spans.
-  void ListBandTriangles()
+  /**
+   * List the triangles of each band in setup order and count the rows of their
+   * spans; false if the lists cannot be allocated.
+   */
+  bool ListBandTriangles()
   {
     const size_t nBands = this->Bands.size();
+    const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
     std::vector<vtkIdType> start(nBands + 1, 0), rows(nBands + 1, 0);
-    for (const BandRange& range : this->Ranges)
+    for (vtkIdType i = 0; i < nTris; ++i)
     {
+      const BandRange& range = this->Ranges[i];
       for (vtkTypeUInt32 b = range.B0; b <= range.B1; ++b)
       {
         ++start[b + 1];
@@ -347,8 +409,11 @@ public:
       this->Bands[b].TriEnd = start[b + 1];
       this->Bands[b].SpanBegin = this->Bands[b].SpanEnd = rows[b];
     }
-    this->BandTris.resize(start.back());
-    const vtkIdType nTris = static_cast<vtkIdType>(this->Ranges.size());
+    if (!this->B.BandTris.Reserve(start.back()))
+    {
+      return false;
+    }
+    this->BandTris = this->B.BandTris.Get();
     for (vtkIdType i = 0; i < nTris; ++i)
     {
       const BandRange& range = this->Ranges[i];
@@ -358,24 +423,24 @@ public:
       }
     }
     this->SpanRows = rows.back();
+    return true;
   }
 
   /// Room for the spans of the bands' rows; false if it cannot be allocated.
   bool AllocateSpans()
   {
-    this->Spans.reset(new (std::nothrow) SpanRecord[std::max<vtkIdType>(1, this->SpanRows)]);
-    if (!this->Spans)
+    if (!this->B.Spans.Reserve(this->SpanRows))
     {
       return false;
     }
-    vtkofb::AdviseHugePages(this->Spans.get(), sizeof(SpanRecord) * this->SpanRows);
+    this->Spans = this->B.Spans.Get();
     return true;
   }
 
   /// Pass 1: the non-empty spans of a band's rows and its number of samples.
   void SpanBand(Band& band) const
   {
-    SpanRecord* spans = this->Spans.get();
+    SpanRecord* spans = this->Spans;
     vtkIdType end = band.SpanBegin;
     vtkIdType total = 0;
     for (vtkIdType i = band.TriBegin; i < band.TriEnd; ++i)
@@ -408,7 +473,7 @@ public:
    */
   void FillBand(const Band& band, const Output& out, BandScratch& s) const
   {
-    const SpanRecord* spans = this->Spans.get();
+    const SpanRecord* spans = this->Spans;
     const vtkIdType nCells = band.Cell1 - band.Cell0;
     const vtkIdType rowLength = this->F.Dims[(band.Axis + 1) % 3];
     s.Reserve(band.Count, nCells, out.Vectors != nullptr, this->Shading.C != nullptr);
@@ -467,23 +532,17 @@ public:
   const vtkOFBSurface& Surface;
   const vtkOFBRasterFrame F;
   const vtkOFBSampleShader Shading;
-  std::unique_ptr<vtkOFBTriangleRaster[]> Setups;
+  vtkOFBSamplerBuffers& B;
+  vtkOFBTriangleRaster* Setups = nullptr;
+  BandRange* Ranges = nullptr;
   std::vector<Band> Bands;
-  std::vector<vtkTypeUInt32> BandTris;
-  std::unique_ptr<SpanRecord[]> Spans;
+  vtkTypeUInt32* BandTris = nullptr;
+  SpanRecord* Spans = nullptr;
   vtkIdType SpanRows = 0;
 
 private:
-  /// The bands [B0, B1] and rows [V0, V1] of a set-up triangle (none when B0 > B1).
-  struct BandRange
-  {
-    vtkTypeUInt32 B0, B1;
-    int32_t V0, V1;
-  };
-
   int Shift[3] = { 0, 0, 0 };
   vtkIdType FirstBand[3] = { 0, 0, 0 };
-  std::vector<BandRange> Ranges;
 
   /**
    * Depth (the triangle's plane at the cell centre, even for centres a lattice
@@ -666,7 +725,11 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   }
   frame.InvCell = 1.0 / cellSize;
 
-  BandBuilder builder(surface, frame);
+  if (!this->Buffers)
+  {
+    this->Buffers = new vtkOFBSamplerBuffers;
+  }
+  BandBuilder builder(surface, frame, *this->Buffers);
   builder.CutBands();
   if (!builder.SetupTriangles())
   {
@@ -674,7 +737,12 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
       "Cannot allocate the setup of " << surface.GetNumberOfTriangles() << " triangles.");
     return false;
   }
-  builder.ListBandTriangles();
+  if (!builder.ListBandTriangles())
+  {
+    vtkErrorMacro("Cannot allocate the band lists of " << surface.GetNumberOfTriangles()
+                                                       << " triangles.");
+    return false;
+  }
   // The spans (one record per row of a triangle) are a temporary the estimate
   // does not count: check them too before allocating them.
   const double spanBytes = static_cast<double>(builder.SpanRows) * sizeof(SpanRecord);
@@ -755,7 +823,7 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   }
 
   // Pass 2: each band on its own.
-  vtkSMPThreadLocal<BandScratch> scratch;
+  vtkSMPThreadLocal<BandScratch>& scratch = this->Buffers->Scratch;
   vtkSMPTools::For(0, nBands, 1,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -826,4 +894,11 @@ bool vtkOFBSampler::InterpolateAttributes(const vtkOFBSurface& surface, vtkOFB* 
   }
   arrays.Attach(surface, output->GetSampleData(), interpolable);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSampler::ReleaseBuffers()
+{
+  delete this->Buffers;
+  this->Buffers = nullptr;
 }

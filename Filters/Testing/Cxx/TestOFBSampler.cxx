@@ -289,6 +289,11 @@ TEST(Sampler, RebuildReusesTheMemoryOfArraysNobodyElseHolds)
     EXPECT_EQ(output->GetNumberOfSpareArrays(), 0);
     ExpectIdentical(Build(bunny, resolution), output);
   }
+  // Without the kept build buffers, the same OFB again.
+  sampler->ReleaseBuffers();
+  sampler->SetResolution(256);
+  sampler->Update();
+  ExpectIdentical(reference, output);
 
   // A failed rebuild leaves an empty OFB holding no spare memory.
   sampler->SetResolution(0);

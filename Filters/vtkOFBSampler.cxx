@@ -569,7 +569,8 @@ bool vtkOFBSampler::ComputeFrame(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSampler::SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets)
+bool vtkOFBSampler::SetUpFrame(
+  const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets, double* estimateOut)
 {
   double origin[3], cellSize;
   vtkIdType dims[3];
@@ -579,6 +580,10 @@ bool vtkOFBSampler::SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, boo
   }
   const double limit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
   const double estimate = this->EstimateBytes(surface, dims, cellSize);
+  if (estimateOut)
+  {
+    *estimateOut = estimate;
+  }
   if (estimate > limit)
   {
     vtkErrorMacro("Resolution " << this->Resolution << " needs about " << estimate / 1048576.0

@@ -153,9 +153,11 @@ protected:
    * Compute the frame of `surface`, check the build's estimated memory against
    * MemoryLimit (before any large allocation) and set the frame of `output`
    * (its cell offsets zero, or uninitialized for a backend that writes them all).
+   * The estimated bytes go to `estimate` when given.
    * Returns false after reporting an error.
    */
-  bool SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets = true);
+  bool SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets = true,
+    double* estimate = nullptr);
 
   /**
    * Estimated bytes of a build of `surface` on the given frame: cell offsets and

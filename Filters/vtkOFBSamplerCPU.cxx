@@ -707,7 +707,8 @@ private:
 //------------------------------------------------------------------------------
 bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
 {
-  if (!this->SetUpFrame(surface, output, false))
+  double estimate = 0.0;
+  if (!this->SetUpFrame(surface, output, false, &estimate))
   {
     return false;
   }
@@ -715,7 +716,6 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   const vtkIdType* dims = output->GetDimensions();
   const double cellSize = output->GetCellSize();
   const double limit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
-  const double estimate = this->EstimateBytes(surface, dims, cellSize);
   vtkOFBRasterFrame frame;
   for (int a = 0; a < 3; ++a)
   {

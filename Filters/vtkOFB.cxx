@@ -15,6 +15,32 @@
 
 vtkStandardNewMacro(vtkOFB);
 
+namespace
+{
+/**
+ * n values in a spare array of `ofb` of this name and type (see vtkOFB::Recycle),
+ * else in a new one; null if it cannot be allocated.
+ */
+template <typename ArrayT>
+vtkSmartPointer<ArrayT> SpareOrNew(vtkOFB* ofb, const char* name, int type, vtkIdType n)
+{
+  vtkSmartPointer<ArrayT> array = ArrayT::SafeDownCast(ofb->TakeSpareArray(name, type, 1, n));
+  if (array)
+  {
+    return array;
+  }
+  array = vtkSmartPointer<ArrayT>::New();
+  array->SetName(name);
+  if (n > 0 && !array->Allocate(n))
+  {
+    return nullptr;
+  }
+  array->SetNumberOfValues(n);
+  vtkofb::AdviseHugePages(array);
+  return array;
+}
+}
+
 //------------------------------------------------------------------------------
 vtkOFB::vtkOFB()
 {
@@ -165,19 +191,12 @@ bool vtkOFB::SetFrame(
     }
     base[a + 1] = base[a] + static_cast<vtkIdType>(cells);
   }
-  vtkSmartPointer<vtkTypeUInt32Array> offsets = vtkTypeUInt32Array::SafeDownCast(
-    this->TakeSpareArray("CellOffsets", VTK_TYPE_UINT32, 1, base[3] + 1));
+  vtkSmartPointer<vtkTypeUInt32Array> offsets =
+    SpareOrNew<vtkTypeUInt32Array>(this, "CellOffsets", VTK_TYPE_UINT32, base[3] + 1);
   if (!offsets)
   {
-    offsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
-    offsets->SetName("CellOffsets");
-    if (!offsets->Allocate(base[3] + 1))
-    {
-      vtkErrorMacro("SetFrame: cannot allocate " << base[3] + 1 << " cell offsets.");
-      return false;
-    }
-    offsets->SetNumberOfValues(base[3] + 1);
-    vtkofb::AdviseHugePages(offsets);
+    vtkErrorMacro("SetFrame: cannot allocate " << base[3] + 1 << " cell offsets.");
+    return false;
   }
   vtkTypeUInt32* p = offsets->GetPointer(0);
   if (zeroOffsets)
@@ -207,33 +226,13 @@ bool vtkOFB::AllocateSamples(vtkIdType n)
     return false;
   }
   this->SampleData = vtkSmartPointer<vtkPointData>::New();
-  vtkSmartPointer<vtkFloatArray> depths =
-    vtkFloatArray::SafeDownCast(this->TakeSpareArray("Depths", VTK_FLOAT, 1, n));
+  vtkSmartPointer<vtkFloatArray> depths = SpareOrNew<vtkFloatArray>(this, "Depths", VTK_FLOAT, n);
   vtkSmartPointer<vtkTypeUInt32Array> index =
-    vtkTypeUInt32Array::SafeDownCast(this->TakeSpareArray("CellIndex", VTK_TYPE_UINT32, 1, n));
-  if (!depths)
+    SpareOrNew<vtkTypeUInt32Array>(this, "CellIndex", VTK_TYPE_UINT32, n);
+  if (!depths || !index)
   {
-    depths = vtkSmartPointer<vtkFloatArray>::New();
-    depths->SetName("Depths");
-    if (n > 0 && !depths->Allocate(n))
-    {
-      vtkErrorMacro("AllocateSamples: cannot allocate " << n << " depths.");
-      return false;
-    }
-    depths->SetNumberOfValues(n);
-    vtkofb::AdviseHugePages(depths);
-  }
-  if (!index)
-  {
-    index = vtkSmartPointer<vtkTypeUInt32Array>::New();
-    index->SetName("CellIndex");
-    if (n > 0 && !index->Allocate(n))
-    {
-      vtkErrorMacro("AllocateSamples: cannot allocate " << n << " cell indices.");
-      return false;
-    }
-    index->SetNumberOfValues(n);
-    vtkofb::AdviseHugePages(index);
+    vtkErrorMacro("AllocateSamples: cannot allocate " << n << " samples.");
+    return false;
   }
   this->Depths = depths;
   this->CellIndex = index;

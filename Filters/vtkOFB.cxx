@@ -112,7 +112,7 @@ void vtkOFB::Recycle()
   {
     for (int i = 0; i < this->SampleData->GetNumberOfArrays(); ++i)
     {
-          keep(this->SampleData->GetArray(i));
+      keep(this->SampleData->GetArray(i));
     }
   }
   this->Initialize();

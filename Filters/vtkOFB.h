@@ -81,7 +81,8 @@ public:
    * reuse their memory when it is large enough, and a builder takes sample arrays
    * with `TakeSpareArray`. A rebuild then writes over memory the process already
    * has instead of having the system clear fresh pages. `ReleaseSpareArrays()`
-   * (and `Initialize()`) frees the spares left; builders call it when done.
+   * (and `Initialize()`, `ShallowCopy()`, `DeepCopy()`) frees the spares left;
+   * vtkOFBAlgorithm calls it after each RequestData.
    */
   void Recycle();
   void ReleaseSpareArrays();
@@ -94,10 +95,8 @@ public:
    */
   void PrepareForNewData() override;
 
-  ///@{
   /// The number of spare arrays (see Recycle()).
   vtkIdType GetNumberOfSpareArrays() const { return static_cast<vtkIdType>(this->Spares.size()); }
-  ///@}
 
 #ifndef __VTK_WRAP__
   /**
@@ -284,13 +283,13 @@ protected:
   vtkOFB();
   ~vtkOFB() override;
 
+  /// Initialize() but for the spares (see Recycle()).
+  void Reset();
+
   /**
    * Cell (u, v index and global cell index) of point x in grid `axis`; false if
    * outside the grid.
    */
-  /// Initialize() but for the spares.
-  void Reset();
-
   bool LocateCell(int axis, const double x[3], vtkIdType& cell) const;
 
   /**

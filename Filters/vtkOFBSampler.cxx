@@ -347,8 +347,9 @@ int vtkOFBSampler::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkOFB* output = vtkOFB::GetData(outputVector);
-  output->Recycle(); // a rebuild reuses the memory of the previous output
-
+  // The pipeline has recycled the previous output (vtkOFB::PrepareForNewData):
+  // SetFrame, AllocateSamples and the sample arrays reuse its memory, and
+  // vtkOFBAlgorithm frees what is left after this.
   this->NumberOfSkippedTriangles = 0;
   this->LastBuildTime = 0.0;
 
@@ -357,7 +358,6 @@ int vtkOFBSampler::RequestData(
   this->UpdateProgress(0.0);
   if (!this->PrepareSurface(input, surface))
   {
-    output->Initialize();
     return 1;
   }
   this->UpdateProgress(0.05);
@@ -366,7 +366,6 @@ int vtkOFBSampler::RequestData(
     output->Initialize();
     return 1;
   }
-  output->ReleaseSpareArrays();
   this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
   this->UpdateProgress(1.0);
   return 1;

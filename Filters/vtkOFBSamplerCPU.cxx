@@ -157,29 +157,36 @@ struct BandScratch
   std::vector<unsigned char> RGBA;
   std::vector<vtkTypeUInt32> Tri, Order, CellOf, Slot, Multi;
 
+  /**
+   * Room for n fragments and nCells cells, each array on its own: the scratch is
+   * kept from build to build, whose surfaces may differ in vectors and colours.
+   */
   void Reserve(vtkIdType n, vtkIdType nCells, bool vectors, bool colors)
   {
-    if (static_cast<vtkIdType>(this->Slot.size()) < nCells)
+    auto grow = [](auto& v, vtkIdType size)
     {
-      this->Slot.resize(nCells);
-    }
-    if (static_cast<vtkIdType>(this->Depth.size()) >= n)
-    {
-      return;
-    }
-    this->CellOf.resize(n);
+      if (static_cast<vtkIdType>(v.size()) < size)
+      {
+        v.resize(size);
+      }
+    };
+    grow(this->Slot, nCells);
     for (auto* v :
       { &this->Depth, &this->W1, &this->W2, &this->N[0], &this->N[1], &this->N[2], &this->Tmp })
     {
-      v->resize(n);
+      grow(*v, n);
     }
-    this->Tri.resize(n);
-    this->Order.resize(n);
+    grow(this->Tri, n);
+    grow(this->Order, n);
+    grow(this->CellOf, n);
     for (int k = 0; vectors && k < 3; ++k)
     {
-      this->V[k].resize(n);
+      grow(this->V[k], n);
     }
-    this->RGBA.resize(colors ? 4 * n : 0);
+    if (colors)
+    {
+      grow(this->RGBA, 4 * n);
+    }
   }
 
   /// Where Shader::Shade writes the attributes of fragments [f, ...).

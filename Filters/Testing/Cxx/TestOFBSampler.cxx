@@ -295,6 +295,30 @@ TEST(Sampler, RebuildReusesTheMemoryOfArraysNobodyElseHolds)
   sampler->Update();
   ExpectIdentical(reference, output);
 
+  // A rebuild of a surface with vectors and colours after one without them.
+  vtkNew<vtkPolyData> painted;
+  painted->DeepCopy(bunny);
+  vtkNew<vtkFloatArray> vectors;
+  vectors->SetName("Flow");
+  vectors->SetNumberOfComponents(3);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetName("Colors");
+  rgb->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < painted->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    painted->GetPoint(i, x);
+    vectors->InsertNextTuple3(-x[1], x[0], 0.5);
+    rgb->InsertNextTuple3(i % 256, (3 * i) % 256, 128);
+  }
+  painted->GetPointData()->SetVectors(vectors);
+  painted->GetPointData()->SetScalars(rgb);
+  sampler->SetInputData(painted);
+  sampler->Update();
+  ASSERT_NE(output->GetSampleData()->GetArray("Flow"), nullptr);
+  ExpectIdentical(Build(painted, 256), output);
+  sampler->SetInputData(bunny);
+
   // A failed rebuild leaves an empty OFB holding no spare memory.
   sampler->SetResolution(0);
   vtkNew<MessageObserver> errors;
@@ -311,6 +335,9 @@ TEST(Sampler, RebuildReusesTheMemoryOfArraysNobodyElseHolds)
   EXPECT_EQ(copy->GetNumberOfSamples(), 0);
   EXPECT_EQ(copy->GetNumberOfSpareArrays(), 4); // offsets, depths, cell index, colours
   EXPECT_EQ(copy->TakeSpareArray("Normals", VTK_FLOAT, 3, 1), nullptr);
+  EXPECT_EQ(copy->TakeSpareArray(nullptr, VTK_FLOAT, 1, 1), nullptr);
+  EXPECT_EQ(copy->TakeSpareArray("Depths", VTK_DOUBLE, 1, 1), nullptr);
+  EXPECT_EQ(copy->TakeSpareArray("Depths", VTK_FLOAT, 3, 1), nullptr);
   EXPECT_EQ(copy->TakeSpareArray("Depths", VTK_FLOAT, 1, reference->GetNumberOfSamples() + 1),
     nullptr);
   vtkSmartPointer<vtkDataArray> depthsBack =

@@ -37,9 +37,8 @@ struct vtkOFBTriangleRaster
   /// Sub-cell bits of the fixed-point lattice that decides coverage.
   static constexpr int SubBits = 8;
   // With at most 65536 cells a side, lattice coordinates stay below 2^(16 + SubBits)
-  // and edge functions below 2^(33 + 2 SubBits): exact in double precision (Span)
-  // while SubBits <= 9.
-  static_assert(SubBits <= 9, "edge functions must stay exact in double precision");
+  // and edge functions below 2^(33 + 2 SubBits): int64_t while SubBits <= 14.
+  static_assert(SubBits <= 14, "edge functions must fit in 64-bit integers");
 
   // Read by the span pass: the grid, the rows and the edge functions.
   int Axis;           // grid, or -1 when the triangle covers no cell centre
@@ -48,9 +47,8 @@ struct vtkOFBTriangleRaster
   // Read by the sample pass: barycentrics, depths and the triangle.
   // w1 = A1*iu + B1*iv + C1, w2 = A2*iu + B2*iv + C2
   double A1, B1, C1, A2, B2, C2;
-  double D0, D1, D2;   // depths of the vertices (world units from the grid plane)
-  vtkIdType Ids[3];    // point ids of the vertices
-  vtkTypeUInt32 Tri;   // index of the triangle in the surface
+  double D0, D1, D2; // depths of the vertices (world units from the grid plane)
+  vtkTypeUInt32 Tri; // index of the triangle in the surface
 
   /// The grid of a triangle: the axis of the largest component of its normal.
   static int DominantAxis(const double* p0, const double* p1, const double* p2)
@@ -61,8 +59,9 @@ struct vtkOFBTriangleRaster
       e1[k] = p1[k] - p0[k];
       e2[k] = p2[k] - p0[k];
     }
-    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-      e1[0] * e2[1] - e1[1] * e2[0] };
+    const double n[3] = {
+      e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]
+    };
     int a = 0;
     if (std::fabs(n[1]) > std::fabs(n[a]))
     {
@@ -75,15 +74,25 @@ struct vtkOFBTriangleRaster
     return a;
   }
 
-  /// Set up triangle `tri` (three point ids) of the points P (xyz) for frame f.
-  void Setup(const double* P, const vtkIdType* tri, const vtkOFBRasterFrame& f)
+  /**
+   * x rounded to the nearest integer, halves away from zero (std::llround, inline):
+   * for |x| < 2^62, where the truncation and the remainder are exact.
+   */
+  static int64_t Round(double x)
+  {
+    const auto t = static_cast<int64_t>(x);
+    const double rest = x - static_cast<double>(t);
+    return t + (rest >= 0.5) - (rest <= -0.5);
+  }
+
+  /**
+   * Set up triangle `tri` (three point ids) of the points P (xyz) for frame f, in
+   * the grid of axis a (its DominantAxis).
+   */
+  void Setup(const double* P, const vtkIdType* tri, int a, const vtkOFBRasterFrame& f)
   {
     this->Axis = -1;
-    this->Ids[0] = tri[0];
-    this->Ids[1] = tri[1];
-    this->Ids[2] = tri[2];
     const double* p[3] = { P + 3 * tri[0], P + 3 * tri[1], P + 3 * tri[2] };
-    const int a = DominantAxis(p[0], p[1], p[2]);
     const int ua = (a + 1) % 3;
     const int va = (a + 2) % 3;
     const int64_t one = int64_t(1) << SubBits;
@@ -93,8 +102,8 @@ struct vtkOFBTriangleRaster
     {
       U[i] = (p[i][ua] - f.Origin[ua]) * f.InvCell - 0.5;
       V[i] = (p[i][va] - f.Origin[va]) * f.InvCell - 0.5;
-      X[i] = static_cast<int64_t>(std::llround(U[i] * one));
-      Y[i] = static_cast<int64_t>(std::llround(V[i] * one));
+      X[i] = Round(U[i] * one);
+      Y[i] = Round(V[i] * one);
     }
     const int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
     const double denom = (U[1] - U[0]) * (V[2] - V[0]) - (V[1] - V[0]) * (U[2] - U[0]);
@@ -151,41 +160,94 @@ struct vtkOFBTriangleRaster
   }
 
   /**
-   * The covered cells [first, last] of row iv (first > last when none). Each edge
-   * function is linear along the row and bounds the span on one side, at its root
-   * k = -e / s (k = iu - U0). The edge functions are integers below 2^51, exact in
-   * double precision, and a correctly rounded quotient of them never crosses an
-   * integer (its error is far below 1 / |s|, the spacing of their fractions), so
-   * the ceiling or floor of the floating-point root is the exact bound.
+   * The covered cells of the rows of a set-up triangle, one row after the other,
+   * in exact integer arithmetic. Each edge function e + s * k (k = iu - U0) bounds
+   * the span on one side, at its root -e / s: from below by ceil(-e / s) =
+   * -floor(e / s) when s > 0, from above by floor(e / |s|) when s < 0 (a
+   * horizontal edge, s = 0, covers the whole row or none of it). The walker keeps
+   * floor(e / |s|) and its remainder and steps them from row to row: a division
+   * per edge on the first row, additions after it.
    */
-  void Span(int64_t iv, int64_t& first, int64_t& last) const
+  class RowWalker
   {
-    const int64_t width = this->U1 - this->U0;
-    int64_t lo = 0, hi = width;
-    for (int i = 0; i < 3; ++i)
+  public:
+    /// Start at row iv of triangle t.
+    RowWalker(const vtkOFBTriangleRaster& t, int64_t iv)
+      : Width(t.U1 - t.U0)
+      , U0(t.U0)
     {
-      const int64_t e = this->Edge[i] + this->StepV[i] * (iv - this->V0);
-      const int64_t s = this->StepU[i];
-      if (s == 0)
+      for (int i = 0; i < 3; ++i)
       {
-        hi = e < 0 ? -1 : hi;
-        continue;
-      }
-      const double root = -static_cast<double>(e) / static_cast<double>(s);
-      const double k = std::min(std::max(root, -1.0), width + 1.0);
-      const int64_t t = static_cast<int64_t>(k); // truncated: floor or ceiling of k
-      if (s > 0)
-      {
-        lo = std::max(lo, t + (static_cast<double>(t) < k)); // inside from ceil(root)
-      }
-      else
-      {
-        hi = std::min(hi, t - (static_cast<double>(t) > k)); // inside up to floor(root)
+        const int64_t e = t.Edge[i] + t.StepV[i] * (iv - t.V0);
+        const int64_t s = t.StepU[i];
+        this->Sign[i] = (s > 0) - (s < 0);
+        this->M[i] = s < 0 ? -s : s;
+        if (s == 0)
+        {
+          this->Q[i] = e;
+          this->R[i] = 0;
+          this->DQ[i] = t.StepV[i];
+          this->DR[i] = 0;
+          this->M[i] = 1;
+          continue;
+        }
+        this->Q[i] = FloorDiv(e, this->M[i]);
+        this->R[i] = e - this->Q[i] * this->M[i];
+        this->DQ[i] = FloorDiv(t.StepV[i], this->M[i]);
+        this->DR[i] = t.StepV[i] - this->DQ[i] * this->M[i];
       }
     }
-    first = this->U0 + lo;
-    last = this->U0 + hi;
-  }
+
+    /// The covered cells [first, last] of the current row (first > last when none).
+    void Span(int64_t& first, int64_t& last) const
+    {
+      int64_t lo = 0, hi = this->Width;
+      for (int i = 0; i < 3; ++i)
+      {
+        const int64_t q = this->Q[i];
+        if (this->Sign[i] > 0)
+        {
+          lo = std::max(lo, -q);
+        }
+        else if (this->Sign[i] < 0)
+        {
+          hi = std::min(hi, q);
+        }
+        else if (q < 0)
+        {
+          hi = -1; // outside a horizontal edge
+        }
+      }
+      first = this->U0 + lo;
+      last = this->U0 + hi;
+    }
+
+    /// Go to the next row.
+    void Next()
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        this->Q[i] += this->DQ[i];
+        this->R[i] += this->DR[i];
+        const bool carry = this->R[i] >= this->M[i];
+        this->Q[i] += carry;
+        this->R[i] -= carry ? this->M[i] : 0;
+      }
+    }
+
+  private:
+    int64_t Q[3], R[3], M[3], DQ[3], DR[3];
+    int Sign[3];
+    int64_t Width;
+    int64_t U0;
+
+    /// floor(a / m) for m > 0.
+    static int64_t FloorDiv(int64_t a, int64_t m)
+    {
+      const int64_t q = a / m;
+      return q - ((a % m != 0) & (a < 0));
+    }
+  };
 };
 
 #endif

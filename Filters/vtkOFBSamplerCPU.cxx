@@ -541,7 +541,7 @@ public:
         }
       }
       std::fill(s.Tri.begin() + f0, s.Tri.begin() + f, ts.Tri);
-      this->Shading.Shade(ts.Tri, f - f0, s.W1.data() + f0, s.W2.data() + f0, s.RunAt(f0));
+      this->Shading.Shade(ts.Ids, f - f0, s.W1.data() + f0, s.W2.data() + f0, s.RunAt(f0));
     }
     SortCells(band.Count, s);
     this->WriteSamples(band, out, s);

@@ -48,6 +48,7 @@ struct vtkOFBTriangleRaster
   // w1 = A1*iu + B1*iv + C1, w2 = A2*iu + B2*iv + C2
   double A1, B1, C1, A2, B2, C2;
   double D0, D1, D2; // depths of the vertices (world units from the grid plane)
+  vtkIdType Ids[3];  // point ids of the vertices (beside the plane: no other lookup)
   vtkTypeUInt32 Tri; // index of the triangle in the surface
 
   /// The grid of a triangle: the axis of the largest component of its normal.
@@ -92,6 +93,9 @@ struct vtkOFBTriangleRaster
   void Setup(const double* P, const vtkIdType* tri, int a, const vtkOFBRasterFrame& f)
   {
     this->Axis = -1;
+    this->Ids[0] = tri[0];
+    this->Ids[1] = tri[1];
+    this->Ids[2] = tri[2];
     const double* p[3] = { P + 3 * tri[0], P + 3 * tri[1], P + 3 * tri[2] };
     const int ua = (a + 1) % 3;
     const int va = (a + 2) % 3;

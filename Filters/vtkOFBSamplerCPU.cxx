@@ -173,7 +173,7 @@ struct BandScratch
         v.resize(size);
       }
     };
-    grow(this->Slot, nCells);
+    grow(this->Slot, nCells + 1);
     for (auto* v :
       { &this->Depth, &this->W1, &this->W2, &this->N[0], &this->N[1], &this->N[2], &this->Tmp })
     {
@@ -495,28 +495,52 @@ public:
     const vtkIdType nCells = band.Cell1 - band.Cell0;
     const vtkIdType rowLength = this->F.Dims[(band.Axis + 1) % 3];
     s.Reserve(band.Count, nCells, out.Vectors != nullptr, this->Shading.C != nullptr);
-    // slot[c]: the samples of the band's cell c, then its first slot, then (once
-    // the fragments are placed) its end.
+    // slot[c]: the change in the number of samples from cell c - 1 to cell c (+1
+    // where a span starts, -1 after it ends), then the first slot of cell c, then
+    // (once the fragments are placed) its end.
     vtkTypeUInt32* slot = s.Slot.data();
-    std::fill(slot, slot + nCells, 0u);
+    std::fill(slot, slot + nCells + 1, 0u);
     for (vtkIdType i = band.SpanBegin; i < band.SpanEnd; ++i)
     {
       const SpanRecord& span = spans[i];
       vtkTypeUInt32* row = slot + (span.Row - band.Row0) * rowLength;
-      for (int32_t iu = span.Lo; iu <= span.Hi; ++iu)
-      {
-        ++row[iu];
-      }
+      ++row[span.Lo];
+      --row[span.Hi + 1];
     }
+    // Their prefix sum is the number of samples of each cell, and its prefix sum
+    // the first slot. Eight cells with no sample and no change (empty space, most
+    // of a grid) only get their offsets.
     vtkTypeUInt32* offsets = out.Offsets + band.Cell0;
     const auto first = static_cast<vtkTypeUInt32>(band.First);
-    vtkTypeUInt32 start = 0;
-    for (vtkIdType c = 0; c < nCells; ++c)
+    vtkTypeUInt32 count = 0, start = 0;
+    auto cell = [&](vtkIdType c)
     {
-      const vtkTypeUInt32 count = slot[c];
+      count += slot[c];
       slot[c] = start;
       offsets[c] = first + start;
       start += count;
+    };
+    vtkIdType c = 0;
+    for (; c + 8 <= nCells; c += 8)
+    {
+      vtkTypeUInt32 any = count;
+      for (int k = 0; k < 8; ++k)
+      {
+        any |= slot[c + k];
+      }
+      if (any == 0)
+      {
+        std::fill(offsets + c, offsets + c + 8, first + start);
+        continue;
+      }
+      for (int k = 0; k < 8; ++k)
+      {
+        cell(c + k);
+      }
+    }
+    for (; c < nCells; ++c)
+    {
+      cell(c);
     }
 
     vtkTypeUInt32* order = s.Order.data();   // fragment of each slot

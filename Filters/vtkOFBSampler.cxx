@@ -438,10 +438,21 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     vtkSMPTools::For(0, nPoints, Chunk,
       [&](vtkIdType begin, vtkIdType end)
       {
+        auto* floats = vtkFloatArray::FastDownCast(inNormals);
         for (vtkIdType i = begin; i < end; ++i)
         {
           double n[3];
-          inNormals->GetTuple(i, n);
+          if (floats)
+          {
+            const float* f = floats->GetPointer(3 * i);
+            n[0] = f[0];
+            n[1] = f[1];
+            n[2] = f[2];
+          }
+          else
+          {
+            inNormals->GetTuple(i, n);
+          }
           const double len = vtkMath::Norm(n);
           const bool unit = std::isfinite(len) && len > 0.0;
           for (int k = 0; k < 3; ++k)

@@ -271,8 +271,8 @@ struct TriangleCollector
 
 /**
  * Area-weighted point normals of the surface's triangles: the face normals summed
- * per point in triangle order (one pass, as fast as the memory it reads: the same
- * sums whatever the number of threads), normalized in parallel.
+ * per point in triangle order, in one serial pass (the same sums whatever the
+ * number of threads), normalized in parallel.
  */
 void AreaWeightedNormals(vtkOFBSurface& surface)
 {
@@ -435,10 +435,10 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
   if (inNormals && inNormals->GetNumberOfComponents() == 3 &&
     inNormals->GetNumberOfTuples() == nPoints)
   {
+    vtkFloatArray* floats = vtkFloatArray::FastDownCast(inNormals); // read directly
     vtkSMPTools::For(0, nPoints, Chunk,
       [&](vtkIdType begin, vtkIdType end)
       {
-        auto* floats = vtkFloatArray::FastDownCast(inNormals);
         for (vtkIdType i = begin; i < end; ++i)
         {
           double n[3];

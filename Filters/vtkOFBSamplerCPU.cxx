@@ -15,8 +15,8 @@
 // belongs to one thread (no atomics) and is computed the same way whatever the
 // number of threads, so the output does not depend on it.
 
-#include "vtkOFBHugePages.h"
 #include "vtkOFBSampler.h"
+#include "vtkOFBHugePages.h"
 
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
@@ -83,8 +83,8 @@ struct SampleArrays
   /// Reuses the spare arrays of `ofb` (vtkOFB::Recycle) that fit.
   SampleArrays(const vtkOFBSurface& surface, vtkIdType n, vtkOFB* ofb)
   {
-    this->Colors =
-      vtkUnsignedCharArray::SafeDownCast(NewArray(ofb, "Colors", VTK_UNSIGNED_CHAR, nullptr, 4, n));
+    this->Colors = vtkUnsignedCharArray::SafeDownCast(
+      NewArray(ofb, "Colors", VTK_UNSIGNED_CHAR, nullptr, 4, n));
     this->Normals = vtkFloatArray::SafeDownCast(NewArray(ofb, "Normals", VTK_FLOAT, nullptr, 3, n));
     if (surface.Vectors)
     {
@@ -102,19 +102,16 @@ struct SampleArrays
    * n tuples of a spare array of `ofb` of this name and type (and of the class of
    * `like` when given), else of a new one.
    */
-  static vtkSmartPointer<vtkDataArray> NewArray(vtkOFB* ofb,
-    const char* name,
-    int type,
-    vtkDataArray* like,
-    int nc,
-    vtkIdType n)
+  static vtkSmartPointer<vtkDataArray> NewArray(
+    vtkOFB* ofb, const char* name, int type, vtkDataArray* like, int nc, vtkIdType n)
   {
     vtkSmartPointer<vtkDataArray> array = ofb->TakeSpareArray(name, type, nc, n);
     if (array && (!like || std::strcmp(array->GetClassName(), like->GetClassName()) == 0))
     {
       return array;
     }
-    array = vtk::TakeSmartPointer(like ? like->NewInstance() : vtkDataArray::CreateDataArray(type));
+    array = vtk::TakeSmartPointer(
+      like ? like->NewInstance() : vtkDataArray::CreateDataArray(type));
     array->SetName(name);
     array->SetNumberOfComponents(nc);
     array->SetNumberOfTuples(n);
@@ -224,7 +221,7 @@ struct Output
  * An uninitialized array kept from build to build (see vtkOFBSamplerBuffers): a
  * rebuild writes over memory it already has.
  */
-template<typename T>
+template <typename T>
 struct Buffer
 {
   std::unique_ptr<T[]> Data;
@@ -281,9 +278,8 @@ namespace
 class BandBuilder
 {
 public:
-  BandBuilder(const vtkOFBSurface& surface,
-    const vtkOFBRasterFrame& frame,
-    vtkOFBSamplerBuffers& buffers)
+  BandBuilder(
+    const vtkOFBSurface& surface, const vtkOFBRasterFrame& frame, vtkOFBSamplerBuffers& buffers)
     : Surface(surface)
     , F(frame)
     , Shading(surface)
@@ -342,9 +338,7 @@ public:
     const vtkOFBRasterFrame& f = this->F;
     vtkTypeUInt32* key = this->B.Key.Get();
     vtkTypeUInt32* order = this->B.Order.Get();
-    vtkSMPTools::For(0,
-      nTris,
-      SetupChunk,
+    vtkSMPTools::For(0, nTris, SetupChunk,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType t = begin; t < end; ++t)
@@ -370,9 +364,7 @@ public:
       order[start[key[t]]++] = static_cast<vtkTypeUInt32>(t);
     }
     vtkOFBTriangleRaster* setups = this->Setups;
-    vtkSMPTools::For(0,
-      nTris,
-      SetupChunk,
+    vtkSMPTools::For(0, nTris, SetupChunk,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
@@ -380,7 +372,7 @@ public:
           vtkOFBTriangleRaster& ts = setups[i];
           const vtkTypeUInt32 t = order[i];
           ts.Setup(P, T3 + 3 * static_cast<vtkIdType>(t), this->Bands[key[t]].Axis, f);
-          ts.Tri = order[i];
+          ts.Tri = t;
           BandRange& range = this->Ranges[i];
           range.B0 = 1;
           range.B1 = 0;
@@ -472,9 +464,8 @@ public:
         walker.Span(lo, hi);
         if (lo <= hi)
         {
-          spans[end++] = {
-            t, static_cast<int32_t>(iv), static_cast<int32_t>(lo), static_cast<int32_t>(hi)
-          };
+          spans[end++] = { t, static_cast<int32_t>(iv), static_cast<int32_t>(lo),
+            static_cast<int32_t>(hi) };
           total += hi - lo + 1;
         }
       }
@@ -543,7 +534,7 @@ public:
       cell(c);
     }
 
-    vtkTypeUInt32* order = s.Order.data();   // fragment of each slot
+    vtkTypeUInt32* order = s.Order.data(); // fragment of each slot
     vtkTypeUInt32* cellOf = s.CellOf.data(); // cell of each slot
     vtkTypeUInt32 f = 0;
     for (vtkIdType begin = band.SpanBegin, end = begin; begin < band.SpanEnd; begin = end)
@@ -594,10 +585,8 @@ private:
    * triangle at both ends, they are everywhere and the clamp is skipped (a loop
    * that vectorizes).
    */
-  static void SpanSamples(const vtkOFBTriangleRaster& ts,
-    const SpanRecord& span,
-    int at,
-    BandScratch& s)
+  static void SpanSamples(
+    const vtkOFBTriangleRaster& ts, const SpanRecord& span, int at, BandScratch& s)
   {
     // w = A * iu + B * iv + C, evaluated in this order for every sample.
     const double a1 = ts.A1, a2 = ts.A2, c1 = ts.C1, c2 = ts.C2;
@@ -741,15 +730,8 @@ private:
     }
     for (size_t k = 0; k < out.Others.size(); ++k)
     {
-      vtkOFBSampleShader::InterpolateArray(out.OthersIn[k],
-        out.Others[k],
-        band.First,
-        band.Count,
-        this->Surface.Triangles.data(),
-        s.Tri.data(),
-        s.W1.data(),
-        s.W2.data(),
-        order);
+      vtkOFBSampleShader::InterpolateArray(out.OthersIn[k], out.Others[k], band.First, band.Count,
+        this->Surface.Triangles.data(), s.Tri.data(), s.W1.data(), s.W2.data(), order);
     }
   }
 };
@@ -790,8 +772,8 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   }
   if (!builder.ListBandTriangles())
   {
-    vtkErrorMacro(
-      "Cannot allocate the band lists of " << surface.GetNumberOfTriangles() << " triangles.");
+    vtkErrorMacro("Cannot allocate the band lists of " << surface.GetNumberOfTriangles()
+                                                       << " triangles.");
     return false;
   }
   // The spans (one record per row of a triangle) are a temporary the estimate
@@ -814,9 +796,7 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
   const vtkIdType nBands = static_cast<vtkIdType>(bands.size());
 
   // Pass 1: the spans and samples of each band.
-  vtkSMPTools::For(0,
-    nBands,
-    1,
+  vtkSMPTools::For(0, nBands, 1,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType b = begin; b < end; ++b)
@@ -877,9 +857,7 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
 
   // Pass 2: each band on its own.
   vtkSMPThreadLocal<BandScratch>& scratch = this->Buffers->Scratch;
-  vtkSMPTools::For(0,
-    nBands,
-    1,
+  vtkSMPTools::For(0, nBands, 1,
     [&](vtkIdType begin, vtkIdType end)
     {
       BandScratch& local = scratch.Local();
@@ -895,11 +873,8 @@ bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSampler::InterpolateAttributes(const vtkOFBSurface& surface,
-  vtkOFB* output,
-  const vtkTypeUInt32* triP,
-  const float* w1P,
-  const float* w2P)
+bool vtkOFBSampler::InterpolateAttributes(const vtkOFBSurface& surface, vtkOFB* output,
+  const vtkTypeUInt32* triP, const float* w1P, const float* w2P)
 {
   const vtkIdType n = output->GetNumberOfSamples();
   SampleArrays arrays(surface, n, output);
@@ -907,9 +882,7 @@ bool vtkOFBSampler::InterpolateAttributes(const vtkOFBSurface& surface,
   float* outN = arrays.Normals->GetPointer(0);
   float* outV = arrays.Vectors ? arrays.Vectors->GetPointer(0) : nullptr;
   const vtkOFBSampleShader shader(surface);
-  vtkSMPTools::For(0,
-    n,
-    4096,
+  vtkSMPTools::For(0, n, 4096,
     [&](vtkIdType begin, vtkIdType end)
     {
       float nrm[3], vec[3], tmp;
@@ -944,20 +917,11 @@ bool vtkOFBSampler::InterpolateAttributes(const vtkOFBSurface& surface,
     interpolable.push_back(vtkOFBSampleShader::IsInterpolable(in));
     if (interpolable.back())
     {
-      vtkSMPTools::For(0,
-        n,
-        4096,
+      vtkSMPTools::For(0, n, 4096,
         [&](vtkIdType begin, vtkIdType end)
         {
-          vtkOFBSampleShader::InterpolateArray(in,
-            outArray,
-            begin,
-            end - begin,
-            surface.Triangles.data(),
-            triP + begin,
-            w1P + begin,
-            w2P + begin,
-            nullptr);
+          vtkOFBSampleShader::InterpolateArray(in, outArray, begin, end - begin,
+            surface.Triangles.data(), triP + begin, w1P + begin, w2P + begin, nullptr);
         });
     }
   }

@@ -47,9 +47,9 @@ struct vtkOFBTriangleRaster
   // Read by the sample pass: barycentrics, depths and the triangle.
   // w1 = A1*iu + B1*iv + C1, w2 = A2*iu + B2*iv + C2
   double A1, B1, C1, A2, B2, C2;
-  double D0, D1, D2; // depths of the vertices (world units from the grid plane)
-  vtkIdType Ids[3];  // point ids of the vertices (beside the plane: no other lookup)
-  vtkTypeUInt32 Tri; // index of the triangle in the surface
+  double D0, D1, D2;   // depths of the vertices (world units from the grid plane)
+  vtkIdType Ids[3];    // point ids of the vertices (beside the plane: no other lookup)
+  vtkTypeUInt32 Tri;   // index of the triangle in the surface
 
   /// The grid of a triangle: the axis of the largest component of its normal.
   static int DominantAxis(const double* p0, const double* p1, const double* p2)
@@ -60,9 +60,8 @@ struct vtkOFBTriangleRaster
       e1[k] = p1[k] - p0[k];
       e2[k] = p2[k] - p0[k];
     }
-    const double n[3] = {
-      e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]
-    };
+    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+      e1[0] * e2[1] - e1[1] * e2[0] };
     int a = 0;
     if (std::fabs(n[1]) > std::fabs(n[a]))
     {

@@ -51,8 +51,11 @@ struct vtkOFBTriangleRaster
   vtkIdType Ids[3];    // point ids of the vertices (beside the plane: no other lookup)
   vtkTypeUInt32 Tri;   // index of the triangle in the surface
 
-  /// The grid of a triangle: the axis of the largest component of its normal.
-  static int DominantAxis(const double* p0, const double* p1, const double* p2)
+  /**
+   * The grid of a triangle: the axis of the largest component of its normal n;
+   * `front` tells whether n points against that axis (n[a] < 0).
+   */
+  static int DominantAxis(const double* p0, const double* p1, const double* p2, bool& front)
   {
     double e1[3], e2[3];
     for (int k = 0; k < 3; ++k)
@@ -71,6 +74,7 @@ struct vtkOFBTriangleRaster
     {
       a = 2;
     }
+    front = n[a] < 0.0;
     return a;
   }
 

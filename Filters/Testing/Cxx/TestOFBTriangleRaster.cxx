@@ -31,7 +31,8 @@ vtkOFBTriangleRaster SetUpTriangle(const double* p, const vtkOFBRasterFrame& f)
 {
   const vtkIdType ids[3] = { 0, 1, 2 };
   vtkOFBTriangleRaster t;
-  t.Setup(p, ids, vtkOFBTriangleRaster::DominantAxis(p, p + 3, p + 6), f);
+  bool front;
+  t.Setup(p, ids, vtkOFBTriangleRaster::DominantAxis(p, p + 3, p + 6, front), f);
   return t;
 }
 

@@ -572,8 +572,8 @@ bool vtkOFBSampler::ComputeFrame(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSampler::SetUpFrame(
-  const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets, double* estimateOut)
+bool vtkOFBSampler::SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets,
+  double* estimateOut, bool estimateSamples)
 {
   double origin[3], cellSize;
   vtkIdType dims[3];
@@ -582,7 +582,8 @@ bool vtkOFBSampler::SetUpFrame(
     return false;
   }
   const double limit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
-  const double estimate = this->EstimateBytes(surface, dims, cellSize);
+  const double estimate =
+    this->EstimateBytes(surface, dims, cellSize, estimateSamples ? -1.0 : 0.0);
   if (estimateOut)
   {
     *estimateOut = estimate;

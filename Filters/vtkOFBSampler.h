@@ -153,11 +153,14 @@ protected:
    * Compute the frame of `surface`, check the build's estimated memory against
    * MemoryLimit (before any large allocation) and set the frame of `output`
    * (its cell offsets zero, or uninitialized for a backend that writes them all).
-   * The estimated bytes go to `estimate` when given.
+   * The estimated bytes go to `estimate` when given. A backend that counts its
+   * samples exactly, and checks them before allocating them, passes
+   * `estimateSamples` false: the estimate then leaves the samples out (and
+   * saves a pass over the triangles).
    * Returns false after reporting an error.
    */
   bool SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets = true,
-    double* estimate = nullptr);
+    double* estimate = nullptr, bool estimateSamples = true);
 
   /**
    * Estimated bytes of a build of `surface` on the given frame: cell offsets and

@@ -344,6 +344,7 @@ public:
     const vtkOFBRasterFrame& f = this->F;
     vtkTypeUInt32* key = this->B.Key.Get();
     vtkTypeUInt32* order = this->B.Order.Get();
+    const int rowBits = std::max({ this->Shift[0], this->Shift[1], this->Shift[2] });
     vtkSMPTools::For(0, nTris, SetupChunk,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -358,10 +359,11 @@ public:
           const double last = static_cast<double>(f.Dims[va] - 1);
           const auto r = static_cast<vtkIdType>(std::min(std::max(row, 0.0), last));
           const vtkIdType band = this->FirstBand[a] + (r >> this->Shift[a]);
-          key[t] = static_cast<vtkTypeUInt32>(2 * band + (front ? 0 : 1));
+          const vtkIdType inBand = r & ((vtkIdType(1) << this->Shift[a]) - 1);
+          key[t] = static_cast<vtkTypeUInt32>(((2 * band + (front ? 0 : 1)) << rowBits) + inBand);
         }
       });
-    std::vector<vtkIdType> start(2 * this->Bands.size() + 1, 0);
+    std::vector<vtkIdType> start((2 * this->Bands.size() << rowBits) + 1, 0);
     for (vtkIdType t = 0; t < nTris; ++t)
     {
       ++start[key[t] + 1];
@@ -379,7 +381,7 @@ public:
         {
           vtkOFBTriangleRaster& ts = setups[i];
           const vtkTypeUInt32 t = order[i];
-          ts.Setup(P, T3 + 3 * static_cast<vtkIdType>(t), this->Bands[key[t] / 2].Axis, f);
+          ts.Setup(P, T3 + 3 * static_cast<vtkIdType>(t), this->Bands[key[t] >> (rowBits + 1)].Axis, f);
           ts.Tri = t;
           BandRange& range = this->Ranges[i];
           range.B0 = 1;
@@ -400,45 +402,65 @@ public:
 
   /**
    * List the triangles of each band in setup order and count the rows of their
-   * spans; false if the lists cannot be allocated.
+   * spans; false if the lists cannot be allocated. In parallel over chunks of
+   * triangles: the triangles and rows of each band in each chunk, their prefix
+   * sums in (band, chunk) order, then each chunk's part of the lists.
    */
   bool ListBandTriangles()
   {
-    const size_t nBands = this->Bands.size();
+    const vtkIdType nBands = static_cast<vtkIdType>(this->Bands.size());
     const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
-    std::vector<vtkIdType> start(nBands + 1, 0), rows(nBands + 1, 0);
-    for (vtkIdType i = 0; i < nTris; ++i)
+    const vtkIdType nChunks = (nTris + SetupChunk - 1) / SetupChunk;
+    // start[c * nBands + b], rows[...]: the triangles and rows of band b in chunk c.
+    std::vector<vtkIdType> start(nChunks * nBands, 0), rows(nChunks * nBands, 0);
+    auto forChunks = [&](auto&& fn)
     {
-      const BandRange& range = this->Ranges[i];
-      for (vtkTypeUInt32 b = range.B0; b <= range.B1; ++b)
+      vtkSMPTools::For(0, nChunks, 1,
+        [&](vtkIdType c0, vtkIdType c1)
+        {
+          for (vtkIdType c = c0; c < c1; ++c)
+          {
+            const vtkIdType end = std::min(nTris, (c + 1) * SetupChunk);
+            for (vtkIdType i = c * SetupChunk; i < end; ++i)
+            {
+              const BandRange& range = this->Ranges[i];
+              for (vtkTypeUInt32 b = range.B0; b <= range.B1; ++b)
+              {
+                fn(c * nBands + b, range, b, static_cast<vtkTypeUInt32>(i));
+              }
+            }
+          }
+        });
+    };
+    forChunks(
+      [&](vtkIdType cb, const BandRange& range, vtkTypeUInt32 b, vtkTypeUInt32)
       {
-        ++start[b + 1];
-        rows[b + 1] += std::min<vtkIdType>(range.V1, this->Bands[b].Row1 - 1) -
+        ++start[cb];
+        rows[cb] += std::min<vtkIdType>(range.V1, this->Bands[b].Row1 - 1) -
           std::max<vtkIdType>(range.V0, this->Bands[b].Row0) + 1;
-      }
-    }
-    for (size_t b = 0; b < nBands; ++b)
+      });
+    vtkIdType tris = 0, spans = 0;
+    for (vtkIdType b = 0; b < nBands; ++b)
     {
-      start[b + 1] += start[b];
-      rows[b + 1] += rows[b];
-      this->Bands[b].TriBegin = start[b];
-      this->Bands[b].TriEnd = start[b + 1];
-      this->Bands[b].SpanBegin = this->Bands[b].SpanEnd = rows[b];
+      this->Bands[b].TriBegin = tris;
+      this->Bands[b].SpanBegin = this->Bands[b].SpanEnd = spans;
+      for (vtkIdType c = 0; c < nChunks; ++c)
+      {
+        const vtkIdType cb = c * nBands + b;
+        std::swap(tris, start[cb]);
+        tris += start[cb];
+        spans += rows[cb];
+      }
+      this->Bands[b].TriEnd = tris;
     }
-    if (!this->B.BandTris.Reserve(start.back()))
+    if (!this->B.BandTris.Reserve(tris))
     {
       return false;
     }
     this->BandTris = this->B.BandTris.Get();
-    for (vtkIdType i = 0; i < nTris; ++i)
-    {
-      const BandRange& range = this->Ranges[i];
-      for (vtkTypeUInt32 b = range.B0; b <= range.B1; ++b)
-      {
-        this->BandTris[start[b]++] = static_cast<vtkTypeUInt32>(i);
-      }
-    }
-    this->SpanRows = rows.back();
+    forChunks([&](vtkIdType cb, const BandRange&, vtkTypeUInt32, vtkTypeUInt32 i)
+      { this->BandTris[start[cb]++] = i; });
+    this->SpanRows = spans;
     return true;
   }
 
@@ -722,8 +744,10 @@ private:
 //------------------------------------------------------------------------------
 bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
 {
+  // The samples are counted exactly after the setup and checked against the
+  // limit before they are allocated: the first estimate is of the cells only.
   double estimate = 0.0;
-  if (!this->SetUpFrame(surface, output, false, &estimate))
+  if (!this->SetUpFrame(surface, output, false, &estimate, false))
   {
     return false;
   }

@@ -68,22 +68,18 @@ struct vtkOFBSampleShader
   /// Attributes of n samples of triangle tri at barycentrics (w1, w2) in the triangle.
   void Shade(vtkIdType tri, vtkIdType n, const float* w1, const float* w2, const Run& out) const
   {
-    this->Shade(this->T3 + 3 * tri, n, w1, w2, out);
+    const vtkIdType* t = this->T3 + 3 * tri;
+    this->Shade(t, n, w1, w2, out, this->MayCancel(t));
   }
 
-  /// The same for the triangle of point ids t[3].
-  void Shade(const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  /**
+   * Whether interpolated point normals of the triangle of point ids t[3] may
+   * cancel. With clamped barycentrics, |n|^2 is at least the smallest dot product
+   * of two point normals: when that is clearly positive, no sample needs the face
+   * normal.
+   */
+  bool MayCancel(const vtkIdType* t) const
   {
-    // The point normals interpolated and their squared length, in one loop that
-    // vectorizes (structure of arrays).
-    float* nx = out.N[0];
-    float* ny = out.N[1];
-    float* nz = out.N[2];
-    float* len2 = out.Scratch;
-    InterpolateNormals(n, w1, w2, this->N + 3 * t[0], this->N + 3 * t[1], this->N + 3 * t[2], nx,
-      ny, nz, len2);
-    // With clamped barycentrics, |n|^2 is at least the smallest dot product of two
-    // point normals: when that is clearly positive, no sample needs the face normal.
     float smallest = 1.0f;
     for (int i = 0; i < 3; ++i)
     {
@@ -94,7 +90,25 @@ struct vtkOFBSampleShader
         smallest = std::min(smallest, a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
       }
     }
-    for (vtkIdType i = 0; !(smallest > 1e-3f) && i < n; ++i)
+    return !(smallest > 1e-3f);
+  }
+
+  /**
+   * The same for the triangle of point ids t[3], whose normals may cancel or not
+   * (MayCancel, known to the caller).
+   */
+  void Shade(const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out,
+    bool mayCancel) const
+  {
+    // The point normals interpolated and their squared length, in one loop that
+    // vectorizes (structure of arrays).
+    float* nx = out.N[0];
+    float* ny = out.N[1];
+    float* nz = out.N[2];
+    float* len2 = out.Scratch;
+    InterpolateNormals(n, w1, w2, this->N + 3 * t[0], this->N + 3 * t[1], this->N + 3 * t[2], nx,
+      ny, nz, len2);
+    for (vtkIdType i = 0; mayCancel && i < n; ++i)
     {
       if (!(len2[i] > 1e-12f))
       {

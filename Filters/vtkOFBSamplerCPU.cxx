@@ -383,6 +383,7 @@ public:
           const vtkTypeUInt32 t = order[i];
           ts.Setup(P, T3 + 3 * static_cast<vtkIdType>(t), this->Bands[key[t] >> (rowBits + 1)].Axis, f);
           ts.Tri = t;
+          ts.MayCancel = this->Shading.MayCancel(ts.Ids);
           BandRange& range = this->Ranges[i];
           range.B0 = 1;
           range.B1 = 0;
@@ -586,7 +587,8 @@ public:
         }
       }
       std::fill(s.Tri.begin() + f0, s.Tri.begin() + f, ts.Tri);
-      this->Shading.Shade(ts.Ids, f - f0, s.W1.data() + f0, s.W2.data() + f0, s.RunAt(f0));
+      this->Shading.Shade(
+        ts.Ids, f - f0, s.W1.data() + f0, s.W2.data() + f0, s.RunAt(f0), ts.MayCancel);
     }
     SortCells(band.Count, s);
     this->WriteSamples(band, out, s);

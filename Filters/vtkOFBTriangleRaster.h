@@ -42,6 +42,7 @@ struct vtkOFBTriangleRaster
 
   // Read by the span pass: the grid, the rows and the edge functions.
   int Axis;           // grid, or -1 when the triangle covers no cell centre
+  bool MayCancel;     // its point normals may cancel (set by the sampler)
   int U0, U1, V0, V1; // cells of the bounding box, clipped to the grid (inclusive)
   int64_t Edge[3], StepU[3], StepV[3];
   // Read by the sample pass: barycentrics, depths and the triangle.

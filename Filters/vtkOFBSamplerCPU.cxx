@@ -153,21 +153,30 @@ struct SampleArrays
 
 /**
  * Per-thread scratch of pass 2: the fragments of a band in the order they are
- * made (depth, barycentrics, triangle, attributes); the fragment and the cell of
- * each of its slots (samples); the slots of each of its cells.
+ * made (depth, attributes); the fragment and the cell of each of its slots
+ * (samples); the slots of each of its cells; the first fragment and the triangle
+ * of each triangle (visit) of the band. The barycentrics and the triangle of each
+ * fragment are kept for the whole band only when other point arrays are
+ * interpolated from them after the sort (KeepFragments); else the barycentrics
+ * are those of the current triangle only, and the band's scratch stays small
+ * enough for the cache.
  */
 struct BandScratch
 {
   std::vector<float> Depth, W1, W2, N[3], V[3], Tmp;
   std::vector<unsigned char> RGBA;
-  std::vector<vtkTypeUInt32> Tri, Order, CellOf, Slot;
+  std::vector<vtkTypeUInt32> Tri, Order, CellOf, Slot, VisitStart, VisitTri;
+  bool KeepFragments = false;
 
   /**
    * Room for n fragments and nCells cells, each array on its own: the scratch is
    * kept from build to build, whose surfaces may differ in vectors and colours.
    */
-  void Reserve(vtkIdType n, vtkIdType nCells, bool vectors, bool colors)
+  void Reserve(vtkIdType n, vtkIdType nCells, bool vectors, bool colors, bool keep)
   {
+    this->KeepFragments = keep;
+    this->VisitStart.clear();
+    this->VisitTri.clear();
     auto grow = [](auto& v, vtkIdType size)
     {
       if (static_cast<vtkIdType>(v.size()) < size)
@@ -181,7 +190,10 @@ struct BandScratch
     {
       grow(*v, n);
     }
-    grow(this->Tri, n);
+    if (keep)
+    {
+      grow(this->Tri, n);
+    }
     grow(this->Order, n);
     grow(this->CellOf, n);
     for (int k = 0; vectors && k < 3; ++k)
@@ -194,6 +206,17 @@ struct BandScratch
     }
   }
 
+  /// The triangle of fragment f.
+  vtkTypeUInt32 TriangleOf(vtkTypeUInt32 f) const
+  {
+    if (this->KeepFragments)
+    {
+      return this->Tri[f];
+    }
+    const auto it = std::upper_bound(this->VisitStart.begin(), this->VisitStart.end(), f);
+    return this->VisitTri[(it - this->VisitStart.begin()) - 1];
+  }
+
   /// Where Shader::Shade writes the attributes of fragments [f, ...).
   vtkOFBSampleShader::Run RunAt(vtkIdType f)
   {
@@ -204,7 +227,7 @@ struct BandScratch
       run.V[k] = this->V[k].empty() ? nullptr : this->V[k].data() + f;
     }
     run.RGBA = this->RGBA.empty() ? nullptr : this->RGBA.data() + 4 * f;
-    run.Scratch = this->Tmp.data() + f;
+    run.Scratch = this->Tmp.data(); // only for one call
     return run;
   }
 };
@@ -516,7 +539,8 @@ public:
     const SpanRecord* spans = this->Spans;
     const vtkIdType nCells = band.Cell1 - band.Cell0;
     const vtkIdType rowLength = this->F.Dims[(band.Axis + 1) % 3];
-    s.Reserve(band.Count, nCells, out.Vectors != nullptr, this->Shading.C != nullptr);
+    s.Reserve(band.Count, nCells, out.Vectors != nullptr, this->Shading.C != nullptr,
+      !out.Others.empty());
     // slot[c]: the change in the number of samples from cell c - 1 to cell c (+1
     // where a span starts, -1 after it ends), then the first slot of cell c, then
     // (once the fragments are placed) its end.
@@ -572,10 +596,11 @@ public:
     {
       const vtkOFBTriangleRaster& ts = this->Setups[spans[begin].Tri];
       const vtkTypeUInt32 f0 = f;
+      const vtkTypeUInt32 w0 = s.KeepFragments ? 0 : f0; // first fragment in W1, W2
       for (end = begin; end < band.SpanEnd && spans[end].Tri == spans[begin].Tri; ++end)
       {
         const SpanRecord& span = spans[end];
-        SpanSamples(ts, span, f, s);
+        SpanSamples(ts, span, s.Depth.data() + f, s.W1.data() + f - w0, s.W2.data() + f - w0);
         const vtkIdType rowStart = (span.Row - band.Row0) * rowLength;
         vtkTypeUInt32* cell = slot + rowStart;
         auto c = static_cast<vtkTypeUInt32>(band.Cell0 + rowStart + span.Lo);
@@ -586,9 +611,14 @@ public:
           cellOf[k] = c++;
         }
       }
-      std::fill(s.Tri.begin() + f0, s.Tri.begin() + f, ts.Tri);
-      this->Shading.Shade(
-        ts.Ids, f - f0, s.W1.data() + f0, s.W2.data() + f0, s.RunAt(f0), ts.MayCancel);
+      if (s.KeepFragments)
+      {
+        std::fill(s.Tri.begin() + f0, s.Tri.begin() + f, ts.Tri);
+      }
+      s.VisitStart.push_back(f0);
+      s.VisitTri.push_back(ts.Tri);
+      this->Shading.Shade(ts.Ids, f - f0, s.W1.data() + f0 - w0, s.W2.data() + f0 - w0,
+        s.RunAt(f0), ts.MayCancel);
     }
     SortCells(band.Count, s);
     this->WriteSamples(band, out, s);
@@ -612,13 +642,12 @@ private:
   /**
    * Depth (the triangle's plane at the cell centre, even for centres a lattice
    * step outside the triangle: the same point as its neighbour's) and barycentrics
-   * (clamped to the triangle) of the samples of a span, from index `at` of the
-   * scratch. The barycentrics are linear along the span: when they are inside the
+   * (clamped to the triangle) of the samples of a span, to depth[0, n), w1 and w2. The barycentrics are linear along the span: when they are inside the
    * triangle at both ends, they are everywhere and the clamp is skipped (a loop
    * that vectorizes).
    */
-  static void SpanSamples(
-    const vtkOFBTriangleRaster& ts, const SpanRecord& span, int at, BandScratch& s)
+  static void SpanSamples(const vtkOFBTriangleRaster& ts, const SpanRecord& span,
+    float* VTK_OFB_RESTRICT depth, float* VTK_OFB_RESTRICT w1, float* VTK_OFB_RESTRICT w2)
   {
     // w = A * iu + B * iv + C, evaluated in this order for every sample.
     const double a1 = ts.A1, a2 = ts.A2, c1 = ts.C1, c2 = ts.C2;
@@ -632,9 +661,6 @@ private:
     const double margin = 1e-9;
     const bool inside = std::min(b1Lo, b1Hi) > margin && std::min(b2Lo, b2Hi) > margin &&
       std::min(1.0 - b1Lo - b2Lo, 1.0 - b1Hi - b2Hi) > margin;
-    float* depth = s.Depth.data() + at;
-    float* w1 = s.W1.data() + at;
-    float* w2 = s.W2.data() + at;
     if (inside)
     {
       for (int k = 0; k < n; ++k)
@@ -673,9 +699,9 @@ private:
     vtkTypeUInt32* order = s.Order.data();
     const vtkTypeUInt32* cellOf = s.CellOf.data();
     const float* depth = s.Depth.data();
-    const vtkTypeUInt32* tri = s.Tri.data();
-    auto before = [&](vtkTypeUInt32 f, vtkTypeUInt32 g)
-    { return depth[f] < depth[g] || (depth[f] == depth[g] && tri[f] < tri[g]); };
+    auto before = [&](vtkTypeUInt32 f, vtkTypeUInt32 g) {
+      return depth[f] < depth[g] || (depth[f] == depth[g] && s.TriangleOf(f) < s.TriangleOf(g));
+    };
     float last = n > 0 ? depth[order[0]] : 0.0f;
     for (vtkIdType k = 1; k < n; ++k)
     {

@@ -1,6 +1,7 @@
 // CPU construction: samples on the surface, counts, fill rule, sorting, threads, meshes.
 #include "vtkOFBTestUtilities.h"
 
+#include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
@@ -8,6 +9,7 @@
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkTriangleFilter.h"
@@ -223,6 +225,90 @@ TEST(Sampler, CellsAreDepthSortedWithoutDuplicatedSurfacePoints)
     EXPECT_EQ(unsorted, 0) << name;
     EXPECT_EQ(duplicates, 0) << name;
     EXPECT_GE(ofb->GetDepthComplexity(), 2) << name;
+  }
+}
+
+//------------------------------------------------------------------------------
+// Two coincident copies of a plane, the second (blue, later triangle ids) wound the
+// other way: it faces against the z grid's axis and is set up first, so its
+// fragments arrive first in each cell. Samples of equal depth must still come in
+// triangle order (as the OpenGL backend orders them): red, then blue, in every cell,
+// with and without another point array interpolated after the sort.
+TEST(Sampler, EqualDepthsComeInTriangleOrder)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(7, 5);
+  plane->Update();
+  vtkPolyData* quads = plane->GetOutput();
+  const vtkIdType nPoints = quads->GetNumberOfPoints();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> tris;
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetNumberOfComponents(3);
+  colors->SetName("Colors");
+  vtkNew<vtkFloatArray> label;
+  label->SetName("Label");
+  for (int copy = 0; copy < 2; ++copy)
+  {
+    for (vtkIdType i = 0; i < nPoints; ++i)
+    {
+      points->InsertNextPoint(quads->GetPoint(i));
+      const unsigned char rgb[3] = { static_cast<unsigned char>(copy ? 0 : 255), 0,
+        static_cast<unsigned char>(copy ? 255 : 0) };
+      colors->InsertNextTypedTuple(rgb);
+      label->InsertNextValue(static_cast<float>(copy + 1));
+    }
+  }
+  for (int copy = 0; copy < 2; ++copy)
+  {
+    for (vtkIdType c = 0; c < quads->GetNumberOfCells(); ++c)
+    {
+      vtkIdType n;
+      const vtkIdType* q;
+      quads->GetCellPoints(c, n, q);
+      const vtkIdType base = copy * nPoints;
+      const vtkIdType a[3] = { base + q[0], base + q[1], base + q[2] };
+      const vtkIdType b[3] = { base + q[0], base + q[2], base + q[3] };
+      const vtkIdType ra[3] = { a[0], a[2], a[1] };
+      const vtkIdType rb[3] = { b[0], b[2], b[1] };
+      tris->InsertNextCell(3, copy ? ra : a);
+      tris->InsertNextCell(3, copy ? rb : b);
+    }
+  }
+  for (const bool withLabel : { false, true })
+  {
+    vtkNew<vtkPolyData> mesh;
+    mesh->SetPoints(points);
+    mesh->SetPolys(tris);
+    mesh->GetPointData()->SetScalars(colors);
+    if (withLabel)
+    {
+      mesh->GetPointData()->AddArray(label);
+    }
+    vtkSmartPointer<vtkOFB> ofb = Build(mesh, 32);
+    const vtkTypeUInt32* offsets = ofb->GetCellOffsets()->GetPointer(0);
+    auto* rgba = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetScalars());
+    vtkDataArray* labels = ofb->GetSampleData()->GetArray("Label");
+    ASSERT_NE(rgba, nullptr);
+    ASSERT_EQ(labels != nullptr, withLabel);
+    vtkIdType pairs = 0, wrong = 0;
+    for (vtkIdType c = 0; c < ofb->GetNumberOfCells(); ++c)
+    {
+      const vtkTypeUInt32 first = offsets[c];
+      if (offsets[c + 1] == first)
+      {
+        continue;
+      }
+      ASSERT_EQ(offsets[c + 1] - first, 2u) << "cell " << c;
+      ++pairs;
+      wrong += rgba->GetValue(4 * first) != 255 || rgba->GetValue(4 * first + 6) != 255;
+      if (labels)
+      {
+        wrong += labels->GetComponent(first, 0) != 1.0 || labels->GetComponent(first + 1, 0) != 2.0;
+      }
+    }
+    EXPECT_GT(pairs, 500) << "withLabel " << withLabel;
+    EXPECT_EQ(wrong, 0) << "withLabel " << withLabel;
   }
 }
 

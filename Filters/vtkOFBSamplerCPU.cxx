@@ -642,7 +642,8 @@ private:
   /**
    * Depth (the triangle's plane at the cell centre, even for centres a lattice
    * step outside the triangle: the same point as its neighbour's) and barycentrics
-   * (clamped to the triangle) of the samples of a span, to depth[0, n), w1 and w2. The barycentrics are linear along the span: when they are inside the
+   * (clamped to the triangle) of the n samples of a span, to depth[0, n), w1 and
+   * w2. The barycentrics are linear along the span: when they are inside the
    * triangle at both ends, they are everywhere and the clamp is skipped (a loop
    * that vectorizes).
    */

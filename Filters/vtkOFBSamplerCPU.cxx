@@ -664,14 +664,16 @@ private:
       std::min(1.0 - b1Lo - b2Lo, 1.0 - b1Hi - b2Hi) > margin;
     if (inside)
     {
+      // Linear along the span: from its first cell in steps of one cell.
+      const double dLo = d0 + b1Lo * d10 + b2Lo * d20;
+      const double dStep = a1 * d10 + a2 * d20;
+      const auto f1 = static_cast<float>(b1Lo), s1 = static_cast<float>(a1);
+      const auto f2 = static_cast<float>(b2Lo), s2 = static_cast<float>(a2);
       for (int k = 0; k < n; ++k)
       {
-        const double iu = span.Lo + k;
-        const double b1 = a1 * iu + row1 + c1;
-        const double b2 = a2 * iu + row2 + c2;
-        depth[k] = static_cast<float>(d0 + b1 * d10 + b2 * d20);
-        w1[k] = static_cast<float>(b1);
-        w2[k] = static_cast<float>(b2);
+        depth[k] = static_cast<float>(dLo + k * dStep);
+        w1[k] = f1 + static_cast<float>(k) * s1;
+        w2[k] = f2 + static_cast<float>(k) * s2;
       }
       return;
     }

@@ -348,9 +348,9 @@ public:
 
   /**
    * Set up every triangle (in parallel), in the order of the band of their lowest
-   * vertex, so that a band reads its setups from nearby memory, and in each band
-   * those facing against the grid's axis before the others (a counting sort,
-   * stable); false if the setups cannot be allocated.
+   * vertex, so that a band reads its setups from nearby memory, in each band those
+   * facing against the grid's axis before the others (see SortCells), then by that
+   * lowest row (a counting sort, stable); false if the setups cannot be allocated.
    */
   bool SetupTriangles()
   {
@@ -693,9 +693,9 @@ private:
   /**
    * Sort the slots of each cell by (depth, triangle), the order of the OpenGL
    * backend: an insertion sort, whose inner loop seldom runs. The fragments of a
-   * cell mostly arrive in depth order: a band sets up (and so lists) the triangles
-   * of each of its bands facing its grid's axis first, and on a closed surface the
-   * first sample of a cell enters it, the next leaves it.
+   * cell mostly arrive in depth order: the triangles of each band facing against
+   * its grid's axis are set up (and so listed) before the others, and on a closed
+   * surface the first sample of a cell enters it, the next leaves it.
    */
   static void SortCells(vtkIdType n, BandScratch& s)
   {

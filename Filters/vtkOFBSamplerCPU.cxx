@@ -321,10 +321,13 @@ public:
    */
   void CutBands()
   {
+    vtkIdType rows = 0;
     for (int a = 0; a < 3; ++a)
     {
       const vtkIdType nu = this->F.Dims[(a + 1) % 3];
       const vtkIdType nv = this->F.Dims[(a + 2) % 3];
+      this->FirstKey[a] = 2 * rows;
+      rows += nv;
       this->Shift[a] = 0;
       while ((nu << (this->Shift[a] + 1)) <= BandCells)
       {
@@ -367,7 +370,6 @@ public:
     const vtkOFBRasterFrame& f = this->F;
     vtkTypeUInt32* key = this->B.Key.Get();
     vtkTypeUInt32* order = this->B.Order.Get();
-    const int rowBits = std::max({ this->Shift[0], this->Shift[1], this->Shift[2] });
     vtkSMPTools::For(0, nTris, SetupChunk,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -381,12 +383,14 @@ public:
           const double row = std::floor((v - f.Origin[va]) * f.InvCell - 0.5);
           const double last = static_cast<double>(f.Dims[va] - 1);
           const auto r = static_cast<vtkIdType>(std::min(std::max(row, 0.0), last));
-          const vtkIdType band = this->FirstBand[a] + (r >> this->Shift[a]);
-          const vtkIdType inBand = r & ((vtkIdType(1) << this->Shift[a]) - 1);
-          key[t] = static_cast<vtkTypeUInt32>(((2 * band + (front ? 0 : 1)) << rowBits) + inBand);
+          // Band b of rows [Row0, Row1) has keys FirstKey + 2 Row0 + [0, 2 (Row1 - Row0)):
+          // first those facing against the axis, then the others, each by row.
+          const vtkIdType row0 = (r >> this->Shift[a]) << this->Shift[a];
+          const vtkIdType rows = std::min(f.Dims[va], row0 + (vtkIdType(1) << this->Shift[a])) - row0;
+          key[t] = static_cast<vtkTypeUInt32>(this->FirstKey[a] + row0 + r + (front ? 0 : rows));
         }
       });
-    std::vector<vtkIdType> start((2 * this->Bands.size() << rowBits) + 1, 0);
+    std::vector<vtkIdType> start(this->FirstKey[2] + 2 * this->F.Dims[1] + 1, 0);
     for (vtkIdType t = 0; t < nTris; ++t)
     {
       ++start[key[t] + 1];
@@ -404,7 +408,7 @@ public:
         {
           vtkOFBTriangleRaster& ts = setups[i];
           const vtkTypeUInt32 t = order[i];
-          ts.Setup(P, T3 + 3 * static_cast<vtkIdType>(t), this->Bands[key[t] >> (rowBits + 1)].Axis, f);
+          ts.Setup(P, T3 + 3 * static_cast<vtkIdType>(t), this->AxisOfKey(key[t]), f);
           ts.Tri = t;
           ts.MayCancel = this->Shading.MayCancel(ts.Ids);
           BandRange& range = this->Ranges[i];
@@ -638,6 +642,13 @@ public:
 private:
   int Shift[3] = { 0, 0, 0 };
   vtkIdType FirstBand[3] = { 0, 0, 0 };
+  vtkIdType FirstKey[3] = { 0, 0, 0 }; // setup order keys of each grid (SetupTriangles)
+
+  /// The grid of a setup order key.
+  int AxisOfKey(vtkTypeUInt32 key) const
+  {
+    return key >= this->FirstKey[2] ? 2 : (key >= this->FirstKey[1] ? 1 : 0);
+  }
 
   /**
    * Depth (the triangle's plane at the cell centre, even for centres a lattice

@@ -93,8 +93,10 @@ struct BandScratch
   bool KeepFragments = false;
 
   /**
-   * Room for n fragments and nCells cells, each array on its own: the scratch is
-   * kept from build to build, whose surfaces may differ in vectors and colours.
+   * Start a band: room for n fragments and nCells cells, each array on its own
+   * (the scratch is kept from build to build, whose surfaces may differ in vectors
+   * and colours), an empty list of the band's triangles, and whether the
+   * fragments' barycentrics and triangles are kept for the whole band.
    */
   void Reserve(vtkIdType n, vtkIdType nCells, bool vectors, bool colors, bool keep)
   {
@@ -130,13 +132,9 @@ struct BandScratch
     }
   }
 
-  /// The triangle of fragment f.
+  /// The triangle of fragment f (from the list of the band's triangles).
   vtkTypeUInt32 TriangleOf(vtkTypeUInt32 f) const
   {
-    if (this->KeepFragments)
-    {
-      return this->Tri[f];
-    }
     const auto it = std::upper_bound(this->VisitStart.begin(), this->VisitStart.end(), f);
     return this->VisitTri[(it - this->VisitStart.begin()) - 1];
   }

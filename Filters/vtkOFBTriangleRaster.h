@@ -42,7 +42,6 @@ struct vtkOFBTriangleRaster
 
   // Read by the span pass: the grid, the rows and the edge functions.
   int Axis;           // grid, or -1 when the triangle covers no cell centre
-  bool MayCancel;     // its point normals may cancel (set by the sampler)
   int U0, U1, V0, V1; // cells of the bounding box, clipped to the grid (inclusive)
   int64_t Edge[3], StepU[3], StepV[3];
   // Read by the sample pass: barycentrics, depths and the triangle.
@@ -51,6 +50,7 @@ struct vtkOFBTriangleRaster
   double D0, D1, D2;   // depths of the vertices (world units from the grid plane)
   vtkIdType Ids[3];    // point ids of the vertices (beside the plane: no other lookup)
   vtkTypeUInt32 Tri;   // index of the triangle in the surface
+  bool MayCancel;      // its point normals may cancel (set by the sampler, not by Setup)
 
   /**
    * The grid of a triangle: the axis of the largest component of its normal n;

@@ -6,7 +6,7 @@
  * contiguous range of global cells and therefore of samples. The triangles are
  * set up (vtkOFBTriangleRaster: grid, fixed-point edges, plane) in the order of
  * the band of their lowest vertex, so that a band reads its setups from nearby
- * memory, those facing against the grid's axis first (see SortCells), and listed
+ * memory, those entering the surface first (see SortCells), and listed
  * in the bands their rows cross. Pass 1 finds, band by band, the spans (covered
  * cells) of its triangles' rows and its number of samples. After a scan over the
  * band totals, pass 2 takes each band on its own, while its data is in cache: the
@@ -89,14 +89,14 @@ struct BandScratch
 {
   std::vector<float> Depth, W1, W2, N[3], V[3], Tmp;
   std::vector<unsigned char> RGBA;
-  std::vector<vtkTypeUInt32> Tri, Order, CellOf, Slot, VisitStart, VisitTri;
+  std::vector<vtkTypeUInt32> Tri, Order, Slot, VisitStart, VisitTri;
   bool KeepFragments = false;
 
   /**
-   * Start a band: room for n fragments and nCells cells, each array on its own
-   * (the scratch is kept from build to build, whose surfaces may differ in vectors
-   * and colours), an empty list of the band's triangles, and whether the
-   * fragments' barycentrics and triangles are kept for the whole band.
+   * Start a band: room for n fragments (8 more for SpanSamples) and nCells cells,
+   * each array on its own (the scratch is kept from build to build, whose surfaces
+   * may differ in vectors and colours), an empty list of the band's triangles, and
+   * whether the fragments' barycentrics and triangles are kept for the whole band.
    */
   void Reserve(vtkIdType n, vtkIdType nCells, bool vectors, bool colors, bool keep)
   {
@@ -114,14 +114,13 @@ struct BandScratch
     for (auto* v :
       { &this->Depth, &this->W1, &this->W2, &this->N[0], &this->N[1], &this->N[2], &this->Tmp })
     {
-      grow(*v, n);
+      grow(*v, n + 8);
     }
     if (keep)
     {
       grow(this->Tri, n);
     }
     grow(this->Order, n);
-    grow(this->CellOf, n);
     for (int k = 0; vectors && k < 3; ++k)
     {
       grow(this->V[k], n);
@@ -246,8 +245,11 @@ public:
   /**
    * Set up every triangle (in parallel), in the order of the band of their lowest
    * vertex, so that a band reads its setups from nearby memory, in each band those
-   * facing against the grid's axis before the others (see SortCells), then by that
-   * lowest row (a counting sort, stable); false if the setups cannot be allocated.
+   * that enter the surface before the others (see SortCells), then by that lowest
+   * row (a counting sort, stable); false if the setups cannot be allocated. The
+   * triangles facing against their grid's axis enter a surface wound outwards,
+   * those facing along it one wound inwards (six times the volume it encloses,
+   * the sum of p0 . n over its triangles, is negative).
    */
   bool SetupTriangles();
 
@@ -301,7 +303,8 @@ private:
    * (clamped to the triangle) of the n samples of a span, to depth[0, n), w1 and
    * w2. The barycentrics are linear along the span: when they are inside the
    * triangle at both ends, they are everywhere and the clamp is skipped (a loop
-   * that vectorizes).
+   * that vectorizes; one of 8 samples for a shorter span, whose trip count the
+   * branch predictor knows: the arrays have room for 8 more).
    */
   static void SpanSamples(const vtkOFBTriangleRaster& ts, const SpanRecord& span,
     float* VTK_OFB_RESTRICT depth, float* VTK_OFB_RESTRICT w1, float* VTK_OFB_RESTRICT w2);
@@ -309,11 +312,11 @@ private:
   /**
    * Sort the slots of each cell by (depth, triangle), the order of the OpenGL
    * backend: an insertion sort, whose inner loop seldom runs. The fragments of a
-   * cell mostly arrive in depth order: the triangles of each band facing against
-   * its grid's axis are set up (and so listed) before the others, and on a closed
-   * surface the first sample of a cell enters it, the next leaves it.
+   * cell mostly arrive in depth order: the triangles of each band that enter the
+   * surface are set up (and so listed) before the others, and on a closed surface
+   * the first sample of a cell enters it, the next leaves it.
    */
-  static void SortCells(vtkIdType n, BandScratch& s);
+  static void SortCells(vtkIdType n, const vtkTypeUInt32* cellOf, BandScratch& s);
 
   /// Write the samples of a band in slot order from their fragments.
   void WriteSamples(const Band& band, const Output& out, const BandScratch& s) const;

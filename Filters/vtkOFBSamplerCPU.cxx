@@ -164,26 +164,59 @@ bool BandBuilder::SetupTriangles()
   const vtkOFBRasterFrame& f = this->F;
   vtkTypeUInt32* key = this->B.Key.Get();
   vtkTypeUInt32* order = this->B.Order.Get();
-  vtkSMPTools::For(0, nTris, SetupChunk,
-    [&](vtkIdType begin, vtkIdType end)
+  // Six times the signed volume the triangles enclose, by chunk (a sum that does
+  // not depend on the number of threads): negative when they are wound inwards.
+  const vtkIdType nChunks = (nTris + SetupChunk - 1) / SetupChunk;
+  std::vector<double> volume(nChunks, 0.0);
+  vtkSMPTools::For(0, nChunks, 1,
+    [&](vtkIdType c0, vtkIdType c1)
     {
-      for (vtkIdType t = begin; t < end; ++t)
+      for (vtkIdType c = c0; c < c1; ++c)
       {
-        const double* p[3] = { P + 3 * T3[3 * t], P + 3 * T3[3 * t + 1], P + 3 * T3[3 * t + 2] };
-        bool front;
-        const int a = vtkOFBTriangleRaster::DominantAxis(p[0], p[1], p[2], front);
-        const int va = (a + 2) % 3;
-        const double v = std::min({ p[0][va], p[1][va], p[2][va] });
-        const double row = std::floor((v - f.Origin[va]) * f.InvCell - 0.5);
-        const double last = static_cast<double>(f.Dims[va] - 1);
-        const auto r = static_cast<vtkIdType>(std::min(std::max(row, 0.0), last));
-        // Band b of rows [Row0, Row1) has keys FirstKey + 2 Row0 + [0, 2 (Row1 - Row0)):
-        // first those facing against the axis, then the others, each by row.
-        const vtkIdType row0 = (r >> this->Shift[a]) << this->Shift[a];
-        const vtkIdType rows = std::min(f.Dims[va], row0 + (vtkIdType(1) << this->Shift[a])) - row0;
-        key[t] = static_cast<vtkTypeUInt32>(this->FirstKey[a] + row0 + r + (front ? 0 : rows));
+        double sum = 0.0;
+        for (vtkIdType t = c * SetupChunk; t < std::min(nTris, (c + 1) * SetupChunk); ++t)
+        {
+          const double* p[3] = { P + 3 * T3[3 * t], P + 3 * T3[3 * t + 1],
+            P + 3 * T3[3 * t + 2] };
+          bool front;
+          double n[3];
+          const int a = vtkOFBTriangleRaster::DominantAxis(p[0], p[1], p[2], front, n);
+          sum += p[0][0] * n[0] + p[0][1] * n[1] + p[0][2] * n[2];
+          const int va = (a + 2) % 3;
+          const double v = std::min({ p[0][va], p[1][va], p[2][va] });
+          const double row = std::floor((v - f.Origin[va]) * f.InvCell - 0.5);
+          const double last = static_cast<double>(f.Dims[va] - 1);
+          const auto r = static_cast<vtkIdType>(std::min(std::max(row, 0.0), last));
+          // Band b of rows [Row0, Row1) has keys FirstKey + 2 Row0 + [0, 2 (Row1 - Row0)):
+          // first those facing against the axis (entering a surface wound outwards),
+          // then the others, each by row.
+          const vtkIdType row0 = (r >> this->Shift[a]) << this->Shift[a];
+          const vtkIdType rows =
+            std::min(f.Dims[va], row0 + (vtkIdType(1) << this->Shift[a])) - row0;
+          key[t] = static_cast<vtkTypeUInt32>(this->FirstKey[a] + row0 + r + (front ? 0 : rows));
+        }
+        volume[c] = sum;
       }
     });
+  if (std::accumulate(volume.begin(), volume.end(), 0.0) < 0.0)
+  {
+    // Wound inwards: the triangles facing along the axis enter a closed surface.
+    // Swap the two halves of each band's keys so that they come first.
+    std::vector<vtkTypeUInt32> swapped(this->FirstKey[2] + 2 * this->F.Dims[1]);
+    for (const Band& band : this->Bands)
+    {
+      const vtkIdType k0 = this->FirstKey[band.Axis] + 2 * band.Row0;
+      const vtkIdType rows = band.Row1 - band.Row0;
+      for (vtkIdType x = 0; x < 2 * rows; ++x)
+      {
+        swapped[k0 + x] = static_cast<vtkTypeUInt32>(k0 + (x < rows ? x + rows : x - rows));
+      }
+    }
+    for (vtkIdType t = 0; t < nTris; ++t)
+    {
+      key[t] = swapped[key[t]];
+    }
+  }
   std::vector<vtkIdType> start(this->FirstKey[2] + 2 * this->F.Dims[1] + 1, 0);
   for (vtkIdType t = 0; t < nTris; ++t)
   {

@@ -32,16 +32,22 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
     --row[span.Hi + 1];
   }
   // Their prefix sum is the number of samples of each cell, and its prefix sum
-  // the first slot. Eight cells with no sample and no change (empty space, most
-  // of a grid) only get their offsets.
+  // the first slot; the cell index of each slot is written here. Eight cells with
+  // no sample and no change (empty space, most of a grid) only get their offsets.
   vtkTypeUInt32* offsets = out.Offsets + band.Cell0;
+  vtkTypeUInt32* cellOf = out.CellIndex + band.First; // cell of each slot
   const auto first = static_cast<vtkTypeUInt32>(band.First);
+  const auto cell0 = static_cast<vtkTypeUInt32>(band.Cell0);
   vtkTypeUInt32 count = 0, start = 0;
   auto cell = [&](vtkIdType c)
   {
     count += slot[c];
     slot[c] = start;
     offsets[c] = first + start;
+    for (vtkTypeUInt32 k = 0; k < count; ++k)
+    {
+      cellOf[start + k] = cell0 + static_cast<vtkTypeUInt32>(c);
+    }
     start += count;
   };
   vtkIdType c = 0;
@@ -68,7 +74,6 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
   }
 
   vtkTypeUInt32* order = s.Order.data(); // fragment of each slot
-  vtkTypeUInt32* cellOf = s.CellOf.data(); // cell of each slot
   vtkTypeUInt32 f = 0;
   for (vtkIdType begin = band.SpanBegin, end = begin; begin < band.SpanEnd; begin = end)
   {
@@ -81,12 +86,9 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
       SpanSamples(ts, span, s.Depth.data() + f, s.W1.data() + f - w0, s.W2.data() + f - w0);
       const vtkIdType rowStart = (span.Row - band.Row0) * rowLength;
       vtkTypeUInt32* cell = slot + rowStart;
-      auto c = static_cast<vtkTypeUInt32>(band.Cell0 + rowStart + span.Lo);
       for (int32_t iu = span.Lo; iu <= span.Hi; ++iu)
       {
-        const vtkTypeUInt32 k = cell[iu]++;
-        order[k] = f++;
-        cellOf[k] = c++;
+        order[cell[iu]++] = f++;
       }
     }
     if (s.KeepFragments)
@@ -98,7 +100,7 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
     this->Shading.Shade(ts.Ids, f - f0, s.W1.data() + f0 - w0, s.W2.data() + f0 - w0,
       s.RunAt(f0), ts.MayCancel);
   }
-  SortCells(band.Count, s);
+  SortCells(band.Count, cellOf, s);
   this->WriteSamples(band, out, s);
 }
 
@@ -125,6 +127,16 @@ void BandBuilder::SpanSamples(const vtkOFBTriangleRaster& ts, const SpanRecord& 
     const double dStep = a1 * d10 + a2 * d20;
     const auto f1 = static_cast<float>(b1Lo), s1 = static_cast<float>(a1);
     const auto f2 = static_cast<float>(b2Lo), s2 = static_cast<float>(a2);
+    if (n <= 8)
+    {
+      for (int k = 0; k < 8; ++k)
+      {
+        depth[k] = static_cast<float>(dLo + k * dStep);
+        w1[k] = f1 + static_cast<float>(k) * s1;
+        w2[k] = f2 + static_cast<float>(k) * s2;
+      }
+      return;
+    }
     for (int k = 0; k < n; ++k)
     {
       depth[k] = static_cast<float>(dLo + k * dStep);
@@ -147,10 +159,9 @@ void BandBuilder::SpanSamples(const vtkOFBTriangleRaster& ts, const SpanRecord& 
 }
 
 //------------------------------------------------------------------------------
-void BandBuilder::SortCells(vtkIdType n, BandScratch& s)
+void BandBuilder::SortCells(vtkIdType n, const vtkTypeUInt32* cellOf, BandScratch& s)
 {
   vtkTypeUInt32* order = s.Order.data();
-  const vtkTypeUInt32* cellOf = s.CellOf.data();
   const float* depth = s.Depth.data();
   auto before = [&](vtkTypeUInt32 f, vtkTypeUInt32 g) {
     return depth[f] < depth[g] || (depth[f] == depth[g] && s.TriangleOf(f) < s.TriangleOf(g));
@@ -192,7 +203,6 @@ void BandBuilder::WriteSamples(const Band& band, const Output& out, const BandSc
   float* outDepth = out.Depth + band.First;
   float* outNormals = out.Normals + 3 * band.First;
   unsigned char* outColors = out.Colors + 4 * band.First;
-  std::copy(s.CellOf.data(), s.CellOf.data() + n, out.CellIndex + band.First);
   for (vtkIdType k = 0; k < n; ++k)
   {
     const vtkTypeUInt32 f = order[k];

@@ -53,10 +53,12 @@ struct vtkOFBTriangleRaster
   bool MayCancel;      // its point normals may cancel (set by the sampler, not by Setup)
 
   /**
-   * The grid of a triangle: the axis of the largest component of its normal n;
-   * `front` tells whether n points against that axis (n[a] < 0).
+   * The grid of a triangle: the axis of the largest component of its normal n
+   * (twice its area, by its winding; copied to `normal` when given); `front`
+   * tells whether n points against that axis (n[a] < 0).
    */
-  static int DominantAxis(const double* p0, const double* p1, const double* p2, bool& front)
+  static int DominantAxis(const double* p0, const double* p1, const double* p2, bool& front,
+    double* normal = nullptr)
   {
     double e1[3], e2[3];
     for (int k = 0; k < 3; ++k)
@@ -76,6 +78,10 @@ struct vtkOFBTriangleRaster
       a = 2;
     }
     front = n[a] < 0.0;
+    if (normal)
+    {
+      std::copy(n, n + 3, normal);
+    }
     return a;
   }
 

@@ -105,10 +105,17 @@ struct vtkOFBSampleShader
     float* nx = out.N[0];
     float* ny = out.N[1];
     float* nz = out.N[2];
+    if (!mayCancel)
+    {
+      InterpolateUnitNormals(
+        n, w1, w2, this->N + 3 * t[0], this->N + 3 * t[1], this->N + 3 * t[2], nx, ny, nz);
+      this->ShadeOthers(t, n, w1, w2, out);
+      return;
+    }
     float* len2 = out.Scratch;
     InterpolateNormals(n, w1, w2, this->N + 3 * t[0], this->N + 3 * t[1], this->N + 3 * t[2], nx,
       ny, nz, len2);
-    for (vtkIdType i = 0; mayCancel && i < n; ++i)
+    for (vtkIdType i = 0; i < n; ++i)
     {
       if (!(len2[i] > 1e-12f))
       {
@@ -129,6 +136,13 @@ struct vtkOFBSampleShader
       ny[i] *= inv;
       nz[i] *= inv;
     }
+    this->ShadeOthers(t, n, w1, w2, out);
+  }
+
+  /// The vectors and colours of n samples (Shade, once their normals are known).
+  void ShadeOthers(
+    const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  {
     if (this->V)
     {
       this->ShadeVectors(t, n, w1, w2, out);
@@ -161,6 +175,30 @@ struct vtkOFBSampleShader
       ny[i] = y;
       nz[i] = z;
       len2[i] = x * x + y * y + z * z;
+    }
+  }
+
+  /**
+   * The same normalized, in one loop, where they cannot cancel (the same
+   * operations: the same floats).
+   */
+  static void InterpolateUnitNormals(vtkIdType n, const float* VTK_OFB_RESTRICT w1,
+    const float* VTK_OFB_RESTRICT w2, const float* n0, const float* n1, const float* n2,
+    float* VTK_OFB_RESTRICT nx, float* VTK_OFB_RESTRICT ny, float* VTK_OFB_RESTRICT nz)
+  {
+    const float x0 = n0[0], y0 = n0[1], z0 = n0[2];
+    const float x1 = n1[0], y1 = n1[1], z1 = n1[2];
+    const float x2 = n2[0], y2 = n2[1], z2 = n2[2];
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const float b1 = w1[i], b2 = w2[i], b0 = 1.0f - b1 - b2;
+      const float x = b0 * x0 + b1 * x1 + b2 * x2;
+      const float y = b0 * y0 + b1 * y1 + b2 * y2;
+      const float z = b0 * z0 + b1 * z1 + b2 * z2;
+      const float inv = 1.0f / std::sqrt(x * x + y * y + z * z);
+      nx[i] = x * inv;
+      ny[i] = y * inv;
+      nz[i] = z * inv;
     }
   }
 

@@ -49,6 +49,16 @@ namespace vtkofb
  */
 constexpr vtkIdType BandCells = 65536;
 
+/// Ask for the cache line of p ahead of its use (a hint; nothing where unsupported).
+inline void Prefetch(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
 /// Triangles per chunk of the setup pass.
 constexpr vtkIdType SetupChunk = 4096;
 

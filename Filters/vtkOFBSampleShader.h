@@ -22,6 +22,10 @@
 #include <cstring>
 #include <type_traits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 // Outputs that alias nothing else, so that the loops below vectorize.
 #if defined(__GNUC__) || defined(__clang__) || defined(_MSC_VER)
 #define VTK_OFB_RESTRICT __restrict
@@ -95,10 +99,12 @@ struct vtkOFBSampleShader
 
   /**
    * The same for the triangle of point ids t[3], whose normals may cancel or not
-   * (MayCancel, known to the caller).
+   * (MayCancel, known to the caller). `padded`: w1, w2 and the normals have room
+   * for n rounded up to a multiple of 4, whose normals may then be computed from
+   * whatever those extra w1, w2 hold (finite floats).
    */
   void Shade(const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out,
-    bool mayCancel) const
+    bool mayCancel, bool padded = false) const
   {
     // The point normals interpolated and their squared length, in one loop that
     // vectorizes (structure of arrays).
@@ -107,8 +113,8 @@ struct vtkOFBSampleShader
     float* nz = out.N[2];
     if (!mayCancel)
     {
-      InterpolateUnitNormals(
-        n, w1, w2, this->N + 3 * t[0], this->N + 3 * t[1], this->N + 3 * t[2], nx, ny, nz);
+      InterpolateUnitNormals(padded ? (n + 3) & ~vtkIdType(3) : n, w1, w2, this->N + 3 * t[0],
+        this->N + 3 * t[1], this->N + 3 * t[2], nx, ny, nz);
       this->ShadeOthers(t, n, w1, w2, out);
       return;
     }
@@ -180,22 +186,46 @@ struct vtkOFBSampleShader
 
   /**
    * The same normalized, in one loop, where they cannot cancel (the same
-   * operations: the same floats).
+   * operations: the same floats), four at a time, then one at a time. The squared
+   * length, at least 1e-3 where they cannot cancel, is kept from zero for the
+   * padding of Shade.
    */
   static void InterpolateUnitNormals(vtkIdType n, const float* VTK_OFB_RESTRICT w1,
     const float* VTK_OFB_RESTRICT w2, const float* n0, const float* n1, const float* n2,
     float* VTK_OFB_RESTRICT nx, float* VTK_OFB_RESTRICT ny, float* VTK_OFB_RESTRICT nz)
   {
-    const float x0 = n0[0], y0 = n0[1], z0 = n0[2];
-    const float x1 = n1[0], y1 = n1[1], z1 = n1[2];
-    const float x2 = n2[0], y2 = n2[1], z2 = n2[2];
-    for (vtkIdType i = 0; i < n; ++i)
+    vtkIdType i = 0;
+#if defined(__SSE2__)
+    const __m128 x0 = _mm_set1_ps(n0[0]), y0 = _mm_set1_ps(n0[1]), z0 = _mm_set1_ps(n0[2]);
+    const __m128 x1 = _mm_set1_ps(n1[0]), y1 = _mm_set1_ps(n1[1]), z1 = _mm_set1_ps(n1[2]);
+    const __m128 x2 = _mm_set1_ps(n2[0]), y2 = _mm_set1_ps(n2[1]), z2 = _mm_set1_ps(n2[2]);
+    const __m128 one = _mm_set1_ps(1.0f), tiny = _mm_set1_ps(1e-30f);
+    auto dot = [](__m128 b0, __m128 b1, __m128 b2, __m128 v0, __m128 v1, __m128 v2)
+    {
+      return _mm_add_ps(
+        _mm_add_ps(_mm_mul_ps(b0, v0), _mm_mul_ps(b1, v1)), _mm_mul_ps(b2, v2));
+    };
+    for (; i + 4 <= n; i += 4)
+    {
+      const __m128 b1 = _mm_loadu_ps(w1 + i), b2 = _mm_loadu_ps(w2 + i);
+      const __m128 b0 = _mm_sub_ps(_mm_sub_ps(one, b1), b2);
+      const __m128 x = dot(b0, b1, b2, x0, x1, x2);
+      const __m128 y = dot(b0, b1, b2, y0, y1, y2);
+      const __m128 z = dot(b0, b1, b2, z0, z1, z2);
+      const __m128 inv =
+        _mm_div_ps(one, _mm_sqrt_ps(_mm_max_ps(dot(x, y, z, x, y, z), tiny)));
+      _mm_storeu_ps(nx + i, _mm_mul_ps(x, inv));
+      _mm_storeu_ps(ny + i, _mm_mul_ps(y, inv));
+      _mm_storeu_ps(nz + i, _mm_mul_ps(z, inv));
+    }
+#endif
+    for (; i < n; ++i)
     {
       const float b1 = w1[i], b2 = w2[i], b0 = 1.0f - b1 - b2;
-      const float x = b0 * x0 + b1 * x1 + b2 * x2;
-      const float y = b0 * y0 + b1 * y1 + b2 * y2;
-      const float z = b0 * z0 + b1 * z1 + b2 * z2;
-      const float inv = 1.0f / std::sqrt(x * x + y * y + z * z);
+      const float x = b0 * n0[0] + b1 * n1[0] + b2 * n2[0];
+      const float y = b0 * n0[1] + b1 * n1[1] + b2 * n2[1];
+      const float z = b0 * n0[2] + b1 * n1[2] + b2 * n2[2];
+      const float inv = 1.0f / std::sqrt(std::max(x * x + y * y + z * z, 1e-30f));
       nx[i] = x * inv;
       ny[i] = y * inv;
       nz[i] = z * inv;

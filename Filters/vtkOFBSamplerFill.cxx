@@ -103,7 +103,7 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
     s.VisitStart.push_back(f0);
     s.VisitTri.push_back(ts.Tri);
     this->Shading.Shade(ts.Ids, f - f0, s.W1.data() + f0 - w0, s.W2.data() + f0 - w0,
-      s.RunAt(f0), ts.MayCancel);
+      s.RunAt(f0), ts.MayCancel, true);
   }
   SortCells(band.Count, cellOf, s);
   this->WriteSamples(band, out, s);

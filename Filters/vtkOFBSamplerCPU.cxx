@@ -82,8 +82,11 @@ struct SampleArrays
       like ? like->NewInstance() : vtkDataArray::CreateDataArray(type));
     array->SetName(name);
     array->SetNumberOfComponents(nc);
-    array->SetNumberOfTuples(n);
-    vtkofb::AdviseHugePages(array);
+    if (!vtkofb::AllocateOnHugePages(array, n))
+    {
+      array->SetNumberOfTuples(n);
+      vtkofb::AdviseHugePages(array);
+    }
     return array;
   }
 

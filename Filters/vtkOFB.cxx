@@ -31,10 +31,6 @@ vtkSmartPointer<ArrayT> SpareOrNew(vtkOFB* ofb, const char* name, int type, vtkI
   }
   array = vtkSmartPointer<ArrayT>::New();
   array->SetName(name);
-  if (vtkofb::AllocateOnHugePages(array, n))
-  {
-    return array;
-  }
   if (n > 0 && !array->Allocate(n))
   {
     return nullptr;

@@ -82,11 +82,8 @@ struct SampleArrays
       like ? like->NewInstance() : vtkDataArray::CreateDataArray(type));
     array->SetName(name);
     array->SetNumberOfComponents(nc);
-    if (!vtkofb::AllocateOnHugePages(array, n))
-    {
-      array->SetNumberOfTuples(n);
-      vtkofb::AdviseHugePages(array);
-    }
+    array->SetNumberOfTuples(n);
+    vtkofb::AdviseHugePages(array);
     return array;
   }
 

@@ -7,13 +7,11 @@
 #include "vtkGenericCell.h"
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
-#include "vtkOFBHugePages.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkReverseSense.h"
+#include "vtkPoints.h"
 #include "vtkSMPTools.h"
-#include "vtkSOADataArrayTemplate.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkTriangleFilter.h"
 #include "vtkTypeUInt32Array.h"
@@ -22,7 +20,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
 #include <cstring>
 #include <iostream>
 #include <vector>
@@ -367,72 +364,6 @@ TEST(Sampler, WindingDoesNotChangeTheSamples)
     }
   }
   EXPECT_EQ(unsorted, 0);
-}
-
-//------------------------------------------------------------------------------
-// The sampler's output arrays of 4 MiB or more get their own mapping on 2 MiB
-// boundaries (not the heap's pages, which earlier allocations may have mapped in
-// 4 KiB pages); they must hold, grow, copy and free like any array.
-TEST(Sampler, LargeOutputArraysOnTheirOwnHugePages)
-{
-  vtkNew<vtkFloatArray> small;
-  small->SetNumberOfComponents(3);
-  EXPECT_FALSE(vtkofb::AllocateOnHugePages(small, 1000));
-  EXPECT_EQ(small->GetNumberOfTuples(), 0);
-  vtkNew<vtkSOADataArrayTemplate<float>> soa;
-  soa->SetNumberOfComponents(3);
-  EXPECT_FALSE(vtkofb::AllocateOnHugePages(soa, 1 << 20));
-  vtkNew<vtkFloatArray> large;
-  large->SetNumberOfComponents(3);
-  const vtkIdType n = 1 << 20;
-  if (!vtkofb::AllocateOnHugePages(large, n))
-  {
-    GTEST_SKIP() << "no huge pages on this system";
-  }
-  ASSERT_EQ(large->GetNumberOfTuples(), n);
-  EXPECT_EQ(reinterpret_cast<uintptr_t>(large->GetPointer(0)) % (uintptr_t(1) << 21), 0u);
-  for (vtkIdType i = 0; i < 3 * n; ++i)
-  {
-    large->SetValue(i, static_cast<float>(i));
-  }
-  vtkNew<vtkFloatArray> copy;
-  copy->DeepCopy(large);
-  const float extra[3] = { -1.0f, -2.0f, -3.0f };
-  large->InsertNextTuple(extra); // grows: copied out of the mapping, which is freed
-  ASSERT_EQ(large->GetNumberOfTuples(), n + 1);
-  vtkIdType wrong = 0;
-  for (vtkIdType i = 0; i < 3 * n; ++i)
-  {
-    wrong += large->GetValue(i) != static_cast<float>(i) || copy->GetValue(i) != large->GetValue(i);
-  }
-  EXPECT_EQ(wrong, 0);
-  EXPECT_EQ(large->GetValue(3 * n + 2), -3.0f);
-
-  // A build's large arrays are on such mappings, and a shallow copy outlives it.
-  vtkSmartPointer<vtkOFB> shallow = vtkSmartPointer<vtkOFB>::New();
-  {
-    vtkSmartPointer<vtkOFB> ofb = Build(ReadMesh("stanford-bunny.obj"), 1024);
-    ASSERT_GT(ofb->GetNumberOfSamples(), 1000000);
-    for (vtkDataArray* array : { static_cast<vtkDataArray*>(ofb->GetDepths()),
-           ofb->GetSampleData()->GetNormals(), static_cast<vtkDataArray*>(ofb->GetCellOffsets()) })
-    {
-      EXPECT_EQ(reinterpret_cast<uintptr_t>(array->GetVoidPointer(0)) % (uintptr_t(1) << 21), 0u)
-        << array->GetName();
-    }
-    shallow->ShallowCopy(ofb);
-  }
-  const float* depth = shallow->GetDepths()->GetPointer(0);
-  const vtkTypeUInt32* offsets = shallow->GetCellOffsets()->GetPointer(0);
-  vtkIdType unsorted = 0;
-  for (vtkIdType c = 0; c < shallow->GetNumberOfCells(); ++c)
-  {
-    for (vtkTypeUInt32 i = offsets[c] + 1; i < offsets[c + 1]; ++i)
-    {
-      unsorted += depth[i] < depth[i - 1];
-    }
-  }
-  EXPECT_EQ(unsorted, 0);
-  EXPECT_EQ(offsets[shallow->GetNumberOfCells()], shallow->GetNumberOfSamples());
 }
 
 //------------------------------------------------------------------------------

@@ -98,7 +98,7 @@ struct SpanRecord
 struct BandScratch
 {
   std::vector<float> Depth, W1, W2, N[3], V[3], Tmp;
-  std::vector<unsigned char> RGBA;
+  std::vector<unsigned char> RGBA, Touched;
   std::vector<vtkTypeUInt32> Tri, Order, Slot, VisitStart, VisitTri;
   bool KeepFragments = false;
 
@@ -121,6 +121,7 @@ struct BandScratch
       }
     };
     grow(this->Slot, nCells + 1);
+    grow(this->Touched, nCells / 8 + 1);
     for (auto* v :
       { &this->Depth, &this->W1, &this->W2, &this->N[0], &this->N[1], &this->N[2], &this->Tmp })
     {

@@ -29,16 +29,21 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
   // (once the fragments are placed) its end.
   vtkTypeUInt32* slot = s.Slot.data();
   std::fill(slot, slot + nCells + 1, 0u);
+  unsigned char* touched = s.Touched.data(); // groups of 8 cells with a change
+  std::fill(touched, touched + nCells / 8 + 1, 0);
   for (vtkIdType i = band.SpanBegin; i < band.SpanEnd; ++i)
   {
     const SpanRecord& span = spans[i];
-    vtkTypeUInt32* row = slot + (span.Row - band.Row0) * rowLength;
-    ++row[span.Lo];
-    --row[span.Hi + 1];
+    const vtkIdType rowStart = (span.Row - band.Row0) * rowLength;
+    ++slot[rowStart + span.Lo];
+    --slot[rowStart + span.Hi + 1];
+    touched[(rowStart + span.Lo) >> 3] = 1;
+    touched[(rowStart + span.Hi + 1) >> 3] = 1;
   }
   // Their prefix sum is the number of samples of each cell, and its prefix sum
   // the first slot; the cell index of each slot is written here. Eight cells with
-  // no sample and no change (empty space, most of a grid) only get their offsets.
+  // no sample and no change (empty space, most of a grid: `touched` marks the
+  // groups of eight with a change) only get their offsets.
   vtkTypeUInt32* offsets = out.Offsets + band.Cell0;
   vtkTypeUInt32* cellOf = out.CellIndex + band.First; // cell of each slot
   const auto first = static_cast<vtkTypeUInt32>(band.First);
@@ -58,12 +63,7 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
   vtkIdType c = 0;
   for (; c + 8 <= nCells; c += 8)
   {
-    vtkTypeUInt32 any = count;
-    for (int k = 0; k < 8; ++k)
-    {
-      any |= slot[c + k];
-    }
-    if (any == 0)
+    if ((count | touched[c >> 3]) == 0)
     {
       std::fill(offsets + c, offsets + c + 8, first + start);
       continue;

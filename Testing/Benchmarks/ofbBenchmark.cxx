@@ -10,6 +10,10 @@
 // build and reported as the best and the median of the repetitions; rebuilds write
 // over the memory of the previous output and the sampler's kept buffers. The
 // warm-up, the first build of a new sampler into fresh memory, is reported too.
+// OpenVDB runs in a process of its own (this program with --openvdb-peer MESH
+// RESOLUTION, which builds the OFB untimed and times OpenVDB storing its
+// samples): its millions of small allocations, once freed, would otherwise stay
+// in this process's heap in 4 KiB pages, where the next OFB's arrays would land.
 
 #include "vtkOFBReadMesh.h"
 #include "vtkNew.h"
@@ -25,6 +29,10 @@
 
 #ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
 #include <openvdb/openvdb.h>
+#endif
+
+#if defined(__unix__)
+#include <unistd.h>
 #endif
 
 #include <algorithm>
@@ -74,6 +82,8 @@ struct Options
   int Repetitions = 5;
   int Threads = 0;
   bool OpenVDB = true;
+  std::string PeerMesh; // --openvdb-peer: time OpenVDB for this mesh and resolution
+  int PeerResolution = 0;
 };
 
 void Usage(const char* argv0)
@@ -133,6 +143,11 @@ bool ParseOptions(int argc, char* argv[], Options& options)
     else if (arg == "--threads" && hasValue)
     {
       options.Threads = std::max(0, std::atoi(argv[++i]));
+    }
+    else if (arg == "--openvdb-peer" && i + 2 < argc)
+    {
+      options.PeerMesh = argv[++i];
+      options.PeerResolution = std::atoi(argv[++i]);
     }
     else
     {
@@ -358,6 +373,44 @@ VDBResult BuildVDB(const SamplePayload& p, vtkOFB* ofb, int nThreads)
 }
 #endif
 
+#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
+/**
+ * The OpenVDB peer, in its own process: build the OFB of `mesh` at `resolution`
+ * (untimed), time OpenVDB storing its samples, print one line "peer" and the
+ * results.
+ */
+int RunPeer(const std::string& mesh, int resolution, int repetitions, int nThreads)
+{
+  vtkSmartPointer<vtkPolyData> polyData = vtkofbtest::ReadMeshFile(MeshPath(mesh));
+  if (!polyData)
+  {
+    return 1;
+  }
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetInputData(polyData);
+  sampler->SetResolution(resolution);
+  sampler->Update();
+  vtkOFB* ofb = sampler->GetOutput();
+  const SamplePayload payload = ExtractSamples(ofb);
+  std::vector<double> t1, tn;
+  VDBResult result;
+  for (int r = -1; r < repetitions; ++r)
+  {
+    result = BuildVDB(payload, ofb, 1);
+    const VDBResult parallel = BuildVDB(payload, ofb, nThreads);
+    if (r >= 0)
+    {
+      t1.push_back(result.Seconds);
+      tn.push_back(parallel.Seconds);
+    }
+  }
+  const Timing one = Summarize(t1), many = Summarize(tn);
+  std::printf("peer %.9g %.9g %.9g %.9g %.17g %llu\n", one.Best, one.Median, many.Best,
+    many.Median, result.Bytes, static_cast<unsigned long long>(result.Voxels));
+  return 0;
+}
+#endif
+
 /// One row of the results.
 struct Row
 {
@@ -373,6 +426,45 @@ struct Row
   double VDBBytes = 0.0;
   uint64_t VDBVoxels = 0;
 };
+
+#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
+/// `text` quoted for the shell.
+std::string Quoted(const std::string& text)
+{
+  std::string quoted = "'";
+  for (const char c : text)
+  {
+    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  }
+  return quoted + "'";
+}
+
+/// Run the OpenVDB peer of `row` in a process of its own; false if it fails.
+bool RunPeerProcess(const std::string& self, int repetitions, int nThreads, Row& row)
+{
+  const std::string command = Quoted(self) + " --openvdb-peer " + Quoted(row.Mesh) + " " +
+    std::to_string(row.Resolution) + " --repetitions " + std::to_string(repetitions) +
+    " --threads " + std::to_string(nThreads);
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe)
+  {
+    return false;
+  }
+  char line[512];
+  bool found = false;
+  while (std::fgets(line, sizeof(line), pipe))
+  {
+    unsigned long long voxels = 0;
+    if (std::sscanf(line, "peer %lf %lf %lf %lf %lf %llu", &row.VDB1.Best, &row.VDB1.Median,
+          &row.VDBN.Best, &row.VDBN.Median, &row.VDBBytes, &voxels) == 6)
+    {
+      row.VDBVoxels = voxels;
+      found = true;
+    }
+  }
+  return pclose(pipe) == 0 && found;
+}
+#endif
 }
 
 //------------------------------------------------------------------------------
@@ -389,6 +481,21 @@ int main(int argc, char* argv[])
     vtkSMPTools::Initialize(options.Threads);
   }
   const int nThreads = vtkSMPTools::GetEstimatedNumberOfThreads();
+#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
+  if (!options.PeerMesh.empty())
+  {
+    openvdb::initialize();
+    return RunPeer(options.PeerMesh, options.PeerResolution, options.Repetitions, nThreads);
+  }
+  // This program, for its OpenVDB peer.
+  std::string self = argv[0];
+  char exe[4096];
+  const ssize_t length = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+  if (length > 0)
+  {
+    self.assign(exe, static_cast<size_t>(length));
+  }
+#endif
   std::printf("ofbBenchmark: VTK %s, SMP backend %s, %d threads (hardware: %u), %d "
               "repetitions after one warm-up\n",
     vtkVersion::GetVTKVersion(), vtkSMPTools::GetBackend(), nThreads,
@@ -468,24 +575,14 @@ int main(int argc, char* argv[])
 #ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
       if (useVDB)
       {
-        const SamplePayload payload = ExtractSamples(ofb);
-        std::vector<double> t1, tn;
-        VDBResult result;
-        for (int r = -1; r < options.Repetitions; ++r)
+        sampler->RemoveAllInputs(); // its memory back before the peer runs
+        ofb->Initialize();
+        row.HasVDB = RunPeerProcess(self, options.Repetitions, nThreads, row);
+        if (!row.HasVDB)
         {
-          result = BuildVDB(payload, ofb, 1);
-          const VDBResult parallel = BuildVDB(payload, ofb, nThreads);
-          if (r >= 0)
-          {
-            t1.push_back(result.Seconds);
-            tn.push_back(parallel.Seconds);
-          }
+          std::fprintf(stderr, "%s at %d: the OpenVDB peer failed\n", name.c_str(), resolution);
+          return 1;
         }
-        row.HasVDB = true;
-        row.VDB1 = Summarize(t1);
-        row.VDBN = Summarize(tn);
-        row.VDBBytes = result.Bytes;
-        row.VDBVoxels = result.Voxels;
       }
 #endif
       std::printf("  resolution %5d: %lld samples, OFB best %.1f ms, median %.1f ms%s\n",

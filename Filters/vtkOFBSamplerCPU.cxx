@@ -255,7 +255,8 @@ bool BandBuilder::SetupTriangles()
         const vtkTypeUInt32 t = order[i];
         ts.Setup(P, T3 + 3 * static_cast<vtkIdType>(t), this->AxisOfKey(key[t]), f);
         ts.Tri = t;
-        ts.MayCancel = this->Shading.MayCancel(ts.Ids);
+        const vtkIdType ids[3] = { ts.Ids[0], ts.Ids[1], ts.Ids[2] };
+        ts.MayCancel = this->Shading.MayCancel(ids);
         BandRange& range = this->Ranges[i];
         range.B0 = 1;
         range.B1 = 0;
@@ -378,6 +379,15 @@ void BandBuilder::SpanBand(Band& band) const
 //------------------------------------------------------------------------------
 bool vtkOFBSampler::SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output)
 {
+  // Point and triangle ids are kept in 32 bits (vtkOFBTriangleRaster).
+  const auto nPoints = static_cast<uint64_t>(surface.Points.size() / 3);
+  const auto nTriangles = static_cast<uint64_t>(surface.GetNumberOfTriangles());
+  if (nPoints >= UINT32_MAX || nTriangles >= UINT32_MAX)
+  {
+    vtkErrorMacro("The CPU backend samples surfaces of fewer than 2^32 points and triangles; "
+      << "this one has " << nPoints << " points and " << nTriangles << " triangles.");
+    return false;
+  }
   // The samples are counted exactly after the setup and checked against the
   // limit before they are allocated: the first estimate is of the cells only.
   double estimate = 0.0;

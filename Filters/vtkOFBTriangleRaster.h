@@ -6,7 +6,7 @@
  * goes to the grid of the axis closest to its face normal. Coverage is decided on
  * a fixed-point lattice of 1/2^SubBits cell (cell centres on its integer multiples
  * of 2^SubBits) by three edge functions, inside where all are >= 0: edge i at cell
- * (iu, iv) is Edge[i] + StepV[i] * (iv - V0) + StepU[i] * (iu - U0). A centre
+ * (iu, iv) is Edge[i] + StepV(i) * (iv - V0) + StepU(i) * (iu - U0). A centre
  * exactly on an edge belongs to the triangle for which that edge is a left or
  * bottom edge: the top-left rule of raster (y-down) coordinates, as Mesa's OpenGL
  * rasterizer, so that the OpenGL backend covers the same centres and a shared edge
@@ -40,17 +40,31 @@ struct vtkOFBTriangleRaster
   // and edge functions below 2^(33 + 2 SubBits): int64_t while SubBits <= 14.
   static_assert(SubBits <= 14, "edge functions must fit in 64-bit integers");
 
-  // Read by the span pass: the grid, the rows and the edge functions.
-  int Axis;           // grid, or -1 when the triangle covers no cell centre
-  int U0, U1, V0, V1; // cells of the bounding box, clipped to the grid (inclusive)
-  int64_t Edge[3], StepU[3], StepV[3];
+  // 160 bytes a triangle, written once and read by both passes: kept small.
+  // Read by the span pass: the rows and the edge functions.
+  int64_t Edge[3];        // edge functions at (U0, V0)
+  int32_t DX[3], DY[3];   // lattice vectors of the edges (coordinates < 2^(16 + SubBits))
+  int32_t U0, U1, V0, V1; // cells of the bounding box, clipped to the grid (inclusive)
   // Read by the sample pass: barycentrics, depths and the triangle.
   // w1 = A1*iu + B1*iv + C1, w2 = A2*iu + B2*iv + C2
   double A1, B1, C1, A2, B2, C2;
-  double D0, D1, D2;   // depths of the vertices (world units from the grid plane)
-  vtkIdType Ids[3];    // point ids of the vertices (beside the plane: no other lookup)
-  vtkTypeUInt32 Tri;   // index of the triangle in the surface
-  bool MayCancel;      // its point normals may cancel (set by the sampler, not by Setup)
+  double D0, D1, D2;      // depths of the vertices (world units from the grid plane)
+  vtkTypeUInt32 Ids[3];   // point ids of the vertices (beside the plane: no other lookup)
+  vtkTypeUInt32 Tri;      // index of the triangle in the surface
+  int8_t Axis;            // grid, or -1 when the triangle covers no cell centre
+  bool MayCancel;         // its point normals may cancel (set by the sampler, not by Setup)
+
+  ///@{
+  /// The change of edge function i from a cell to the next along u, and along v.
+  int64_t StepU(int i) const
+  {
+    return -static_cast<int64_t>(this->DY[i]) * (int64_t(1) << SubBits);
+  }
+  int64_t StepV(int i) const
+  {
+    return static_cast<int64_t>(this->DX[i]) * (int64_t(1) << SubBits);
+  }
+  ///@}
 
   /**
    * The grid of a triangle: the axis of the largest component of its normal n
@@ -97,15 +111,15 @@ struct vtkOFBTriangleRaster
   }
 
   /**
-   * Set up triangle `tri` (three point ids) of the points P (xyz) for frame f, in
-   * the grid of axis a (its DominantAxis).
+   * Set up triangle `tri` (three point ids, below 2^32) of the points P (xyz) for
+   * frame f, in the grid of axis a (its DominantAxis).
    */
   void Setup(const double* P, const vtkIdType* tri, int a, const vtkOFBRasterFrame& f)
   {
     this->Axis = -1;
-    this->Ids[0] = tri[0];
-    this->Ids[1] = tri[1];
-    this->Ids[2] = tri[2];
+    this->Ids[0] = static_cast<vtkTypeUInt32>(tri[0]);
+    this->Ids[1] = static_cast<vtkTypeUInt32>(tri[1]);
+    this->Ids[2] = static_cast<vtkTypeUInt32>(tri[2]);
     const double* p[3] = { P + 3 * tri[0], P + 3 * tri[1], P + 3 * tri[2] };
     const int ua = (a + 1) % 3;
     const int va = (a + 2) % 3;
@@ -157,8 +171,8 @@ struct vtkOFBTriangleRaster
       const int64_t dy = Y[k] - Y[j];
       const bool owned = dy < 0 || (dy == 0 && dx > 0);
       this->Edge[i] = dx * (v0 * one - Y[j]) - dy * (u0 * one - X[j]) - (owned ? 0 : 1);
-      this->StepU[i] = -dy * one;
-      this->StepV[i] = dx * one;
+      this->DX[i] = static_cast<int32_t>(dx);
+      this->DY[i] = static_cast<int32_t>(dy);
     }
     this->D0 = p[0][a] - f.Origin[a];
     this->D1 = p[1][a] - f.Origin[a];
@@ -170,7 +184,7 @@ struct vtkOFBTriangleRaster
     this->A2 = -(V[1] - V[0]) * inv;
     this->B2 = (U[1] - U[0]) * inv;
     this->C2 = -(this->A2 * U[0] + this->B2 * V[0]);
-    this->Axis = a;
+    this->Axis = static_cast<int8_t>(a);
   }
 
   /**
@@ -192,23 +206,24 @@ struct vtkOFBTriangleRaster
     {
       for (int i = 0; i < 3; ++i)
       {
-        const int64_t e = t.Edge[i] + t.StepV[i] * (iv - t.V0);
-        const int64_t s = t.StepU[i];
+        const int64_t stepV = t.StepV(i);
+        const int64_t e = t.Edge[i] + stepV * (iv - t.V0);
+        const int64_t s = t.StepU(i);
         this->Sign[i] = (s > 0) - (s < 0);
         this->M[i] = s < 0 ? -s : s;
         if (s == 0)
         {
           this->Q[i] = e;
           this->R[i] = 0;
-          this->DQ[i] = t.StepV[i];
+          this->DQ[i] = stepV;
           this->DR[i] = 0;
           this->M[i] = 1;
           continue;
         }
         this->Q[i] = FloorDiv(e, this->M[i]);
         this->R[i] = e - this->Q[i] * this->M[i];
-        this->DQ[i] = FloorDiv(t.StepV[i], this->M[i]);
-        this->DR[i] = t.StepV[i] - this->DQ[i] * this->M[i];
+        this->DQ[i] = FloorDiv(stepV, this->M[i]);
+        this->DR[i] = stepV - this->DQ[i] * this->M[i];
       }
     }
 

@@ -41,7 +41,7 @@ bool Inside(const vtkOFBTriangleRaster& t, int64_t iu, int64_t iv)
 {
   for (int i = 0; i < 3; ++i)
   {
-    if (t.Edge[i] + t.StepV[i] * (iv - t.V0) + t.StepU[i] * (iu - t.U0) < 0)
+    if (t.Edge[i] + t.StepV(i) * (iv - t.V0) + t.StepU(i) * (iu - t.U0) < 0)
     {
       return false;
     }

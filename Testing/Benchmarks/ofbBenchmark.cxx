@@ -9,7 +9,8 @@
 // or paths to .obj/.ply files. Every measurement is taken after one untimed warm-up
 // build and reported as the best and the median of the repetitions; rebuilds write
 // over the memory of the previous output and the sampler's kept buffers. The
-// warm-up, the first build of a new sampler into fresh memory, is reported too.
+// warm-up, the first build of a new sampler into new memory (fresh to the process
+// where the earlier builds used less), is reported too.
 // OpenVDB runs in a process of its own (this program with --openvdb-peer MESH
 // RESOLUTION, which builds the OFB untimed and times OpenVDB storing its
 // samples): its millions of small allocations, once freed, would otherwise stay
@@ -613,7 +614,7 @@ int main(int argc, char* argv[])
   }
   std::printf("best, median: rebuilds (Modified + Update), which write over the previous "
               "output's and the sampler's memory;\nfirst: the first build of a new sampler, "
-              "into fresh memory. out GB/s: the OFB's bytes (GetActualMemorySize) / best\n"
+              "into new memory. out GB/s: the OFB's bytes (GetActualMemorySize) / best\n"
               "build time; %% bw: of the measured triad bandwidth %.2f GB/s\n",
     bw.Triad / 1e9);
 

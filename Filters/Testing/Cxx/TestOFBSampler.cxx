@@ -9,8 +9,8 @@
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
-#include "vtkReverseSense.h"
 #include "vtkPoints.h"
+#include "vtkReverseSense.h"
 #include "vtkSMPTools.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkTriangleFilter.h"
@@ -336,11 +336,12 @@ TEST(Sampler, WindingDoesNotChangeTheSamples)
   ASSERT_EQ(inwards->GetNumberOfSamples(), outwards->GetNumberOfSamples());
   const vtkIdType n = inwards->GetNumberOfSamples();
   EXPECT_EQ(0,
-    std::memcmp(inwards->GetCellOffsets()->GetPointer(0), outwards->GetCellOffsets()->GetPointer(0),
+    std::memcmp(inwards->GetCellOffsets()->GetPointer(0),
+      outwards->GetCellOffsets()->GetPointer(0),
       sizeof(vtkTypeUInt32) * (inwards->GetNumberOfCells() + 1)));
   EXPECT_EQ(0,
     std::memcmp(inwards->GetDepths()->GetPointer(0), outwards->GetDepths()->GetPointer(0),
-      sizeof(float) * n));
+      sizeof(float) * static_cast<size_t>(n)));
   vtkDataArray* n1 = inwards->GetSampleData()->GetNormals();
   vtkDataArray* n2 = outwards->GetSampleData()->GetNormals();
   ASSERT_TRUE(n1 && n2);

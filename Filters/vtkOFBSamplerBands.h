@@ -87,13 +87,14 @@ struct SpanRecord
 
 /**
  * Per-thread scratch of pass 2: the fragments of a band in the order they are
- * made (depth, attributes); the fragment and the cell of each of its slots
- * (samples); the slots of each of its cells; the first fragment and the triangle
- * of each triangle (visit) of the band. The barycentrics and the triangle of each
- * fragment are kept for the whole band only when other point arrays are
- * interpolated from them after the sort (KeepFragments); else the barycentrics
- * are those of the current triangle only, and the band's scratch stays small
- * enough for the cache.
+ * made (depth, attributes); the fragment of each of its slots (samples; their
+ * cells are written straight to the output's cell indices); the slots of each of
+ * its cells, and which groups of 8 cells the spans change (Touched); the first
+ * fragment and the triangle of each triangle (visit) of the band. The
+ * barycentrics and the triangle of each fragment are kept for the whole band only
+ * when other point arrays are interpolated from them after the sort
+ * (KeepFragments); else the barycentrics are those of the current triangle only,
+ * and the band's scratch stays small enough for the cache.
  */
 struct BandScratch
 {

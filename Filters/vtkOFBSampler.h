@@ -22,8 +22,9 @@
  *
  * Polygons and strips are triangulated; lines and vertices are ignored with a
  * warning; zero-area triangles are skipped. Empty input, non-finite coordinates,
- * a surface without triangles, a resolution below 3 or above 65536 and a build
- * whose memory would exceed MemoryLimit give an error and an empty output.
+ * a surface without triangles, a resolution below 3 or above 65536, a surface of
+ * 2^32 points or triangles or more, and a build whose memory would exceed
+ * MemoryLimit give an error and an empty output.
  *
  * Rebuilding (an update after a change of input or setting) writes over the
  * memory of the previous output where nothing else holds its arrays (see

@@ -255,7 +255,8 @@ bool BandBuilder::SetupTriangles()
         const vtkTypeUInt32 t = order[i];
         ts.Setup(P, T3 + 3 * static_cast<vtkIdType>(t), this->AxisOfKey(key[t]), f);
         ts.Tri = t;
-        const vtkIdType ids[3] = { ts.Ids[0], ts.Ids[1], ts.Ids[2] };
+        vtkIdType ids[3];
+        ts.GetPointIds(ids);
         ts.MayCancel = this->Shading.MayCancel(ids);
         BandRange& range = this->Ranges[i];
         range.B0 = 1;

@@ -102,7 +102,8 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
     }
     s.VisitStart.push_back(f0);
     s.VisitTri.push_back(ts.Tri);
-    const vtkIdType ids[3] = { ts.Ids[0], ts.Ids[1], ts.Ids[2] };
+    vtkIdType ids[3];
+    ts.GetPointIds(ids);
     this->Shading.Shade(ids, f - f0, s.W1.data() + f0 - w0, s.W2.data() + f0 - w0,
       s.RunAt(f0), ts.MayCancel, true);
   }

@@ -54,6 +54,14 @@ struct vtkOFBTriangleRaster
   int8_t Axis;            // grid, or -1 when the triangle covers no cell centre
   bool MayCancel;         // its point normals may cancel (set by the sampler, not by Setup)
 
+  /// The point ids of the vertices, as the sample shader takes them.
+  void GetPointIds(vtkIdType ids[3]) const
+  {
+    ids[0] = this->Ids[0];
+    ids[1] = this->Ids[1];
+    ids[2] = this->Ids[2];
+  }
+
   ///@{
   /// The change of edge function i from a cell to the next along u, and along v.
   int64_t StepU(int i) const

@@ -496,6 +496,12 @@ int main(int argc, char* argv[])
   {
     self.assign(exe, static_cast<size_t>(length));
   }
+#else
+  if (!options.PeerMesh.empty())
+  {
+    std::fprintf(stderr, "--openvdb-peer: OpenVDB was not found at configure time\n");
+    return 1;
+  }
 #endif
   std::printf("ofbBenchmark: VTK %s, SMP backend %s, %d threads (hardware: %u), %d "
               "repetitions after one warm-up\n",

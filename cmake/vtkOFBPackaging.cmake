@@ -127,8 +127,19 @@ endif ()
 string(REPLACE ";" ", " CPACK_DEBIAN_PACKAGE_DEPENDS "${vtkofb_deb_depends}")
 # find_package(vtkofb) needs VTK's CMake package and headers.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libvtk9-dev (>= ${VTK_MAJOR_VERSION}.${VTK_MINOR_VERSION})")
-# A shlibs file and the ldconfig trigger for the libraries.
+# A shlibs file and the ldconfig trigger for the libraries. (CPack warns that the
+# Python extension modules have no soname: they are not libraries to link.)
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
+if (VTKOFB_WRAP_PYTHON)
+  # Removal also removes the byte code Python wrote into the package's directory.
+  if (NOT DEFINED CPACK_PACKAGING_INSTALL_PREFIX)
+    set(CPACK_PACKAGING_INSTALL_PREFIX "/usr")
+  endif ()
+  configure_file("${CMAKE_CURRENT_LIST_DIR}/vtkofb-prerm.in"
+    "${PROJECT_BINARY_DIR}/CMakeFiles/deb/prerm" @ONLY)
+  set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA "${PROJECT_BINARY_DIR}/CMakeFiles/deb/prerm")
+  set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
+endif ()
 if (NOT DEFINED CPACK_GENERATOR)
   set(CPACK_GENERATOR "DEB")
 endif ()

@@ -15,6 +15,7 @@ endif ()
 
 run(info "${DPKG_DEB}" --info "${packages}")
 expect("${info_output}" "Package: vtkofb\n" "the package name")
+expect("${info_output}" " prerm " "the prerm script that removes Python's byte code")
 expect("${info_output}" "Depends:[^\n]*libvtk9\\.1" "a dependency on libvtk9.1")
 if (WRAP_PYTHON)
   expect("${info_output}" "Depends:[^\n]*python3-vtk9" "a dependency on python3-vtk9")

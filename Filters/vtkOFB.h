@@ -287,8 +287,9 @@ protected:
   void Reset();
 
   /**
-   * Cell (u, v index and global cell index) of point x in grid `axis`; false if
-   * outside the grid.
+   * Set `cell` to the global index of the cell of grid `axis` under point x (the
+   * cell whose square contains x projected on the grid); false, `cell` unchanged,
+   * if x projects outside the grid.
    */
   bool LocateCell(int axis, const double x[3], vtkIdType& cell) const;
 

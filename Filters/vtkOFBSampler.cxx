@@ -9,6 +9,7 @@
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkOFB.h"
+#include "vtkOFBCPUSampler.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -326,12 +327,22 @@ vtkOFBSampler::vtkOFBSampler()
 {
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 255;
   this->DefaultColor[3] = 255;
+  this->CPUBackend = vtk::TakeSmartPointer(vtkOFBCPUSampler::New());
 }
 
 //------------------------------------------------------------------------------
-vtkOFBSampler::~vtkOFBSampler()
+vtkOFBSampler::~vtkOFBSampler() = default;
+
+//------------------------------------------------------------------------------
+void vtkOFBSampler::ReleaseBuffers()
 {
-  this->ReleaseBuffers();
+  this->CPUBackend->ReleaseBuffers();
+}
+
+//------------------------------------------------------------------------------
+vtkOFBSamplerBackend* vtkOFBSampler::SelectBackend()
+{
+  return this->CPUBackend;
 }
 
 //------------------------------------------------------------------------------
@@ -347,21 +358,53 @@ int vtkOFBSampler::RequestData(
   this->LastBuildTime = 0.0;
 
   const double start = vtkTimerLog::GetUniversalTime();
-  vtkOFBSurface surface;
+  vtkOFBSamplerBackend* backend = this->SelectBackend();
+  this->LastBuildBackend = backend;
   this->UpdateProgress(0.0);
-  if (!this->PrepareSurface(input, surface))
+  vtkOFBSurface surface;
+  vtkOFBSamplerBackend::Job job;
+  job.Surface = &surface;
+  job.Output = output;
+  job.MemoryLimit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
+  job.Algorithm = this;
+  if (!this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, job))
   {
+    output->Initialize();
     return 1;
   }
   this->UpdateProgress(0.05);
-  if (!this->SampleOnCPU(surface, output))
+  if (this->RunBackend(backend, job) != vtkOFBSamplerBackend::Built)
   {
-    output->Initialize();
     return 1;
   }
   this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBSamplerBackend::Result vtkOFBSampler::RunBackend(
+  vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job)
+{
+  vtkOFBSamplerBackend::Result result = backend->Sample(job);
+  if (result == vtkOFBSamplerBackend::Unavailable && backend != this->CPUBackend)
+  {
+    vtkWarningMacro("The " << backend->GetBackendName() << " build failed (" << job.Error
+                           << "); building on the CPU instead.");
+    job.Output->Initialize();
+    job.Error.clear();
+    this->LastBuildBackend = this->CPUBackend;
+    result = this->CPUBackend->Sample(job);
+  }
+  if (result != vtkOFBSamplerBackend::Built)
+  {
+    if (!job.Error.empty())
+    {
+      vtkErrorMacro(<< job.Error);
+    }
+    job.Output->Initialize();
+  }
+  return result;
 }
 
 //------------------------------------------------------------------------------
@@ -546,8 +589,7 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSampler::ComputeFrame(
-  const vtkOFBSurface& surface, double origin[3], double& cellSize, vtkIdType dims[3])
+bool vtkOFBSampler::ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBackend::Job& job)
 {
   if (this->Resolution < 3 || this->Resolution > 65536)
   {
@@ -561,116 +603,28 @@ bool vtkOFBSampler::ComputeFrame(
     vtkErrorMacro("The input bounds are degenerate: nothing to sample.");
     return false;
   }
-  cellSize = longest / (this->Resolution - 2);
+  const double cellSize = longest / (this->Resolution - 2);
+  job.CellSize = cellSize;
   for (int a = 0; a < 3; ++a)
   {
     const double cells = std::ceil((b[2 * a + 1] - b[2 * a]) / cellSize - 1e-9);
-    dims[a] = std::max<vtkIdType>(1, static_cast<vtkIdType>(cells)) + 2;
-    origin[a] = 0.5 * (b[2 * a] + b[2 * a + 1]) - 0.5 * dims[a] * cellSize;
+    job.Dimensions[a] = std::max<vtkIdType>(1, static_cast<vtkIdType>(cells)) + 2;
+    job.Origin[a] = 0.5 * (b[2 * a] + b[2 * a + 1]) - 0.5 * job.Dimensions[a] * cellSize;
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkOFBSampler::SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets,
-  double* estimateOut, bool estimateSamples)
-{
-  double origin[3], cellSize;
-  vtkIdType dims[3];
-  if (!this->ComputeFrame(surface, origin, cellSize, dims))
-  {
-    return false;
-  }
-  const double limit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
-  const double estimate =
-    this->EstimateBytes(surface, dims, cellSize, estimateSamples ? -1.0 : 0.0);
-  if (estimateOut)
-  {
-    *estimateOut = estimate;
-  }
-  if (estimate > limit)
-  {
-    vtkErrorMacro("Resolution " << this->Resolution << " needs about " << estimate / 1048576.0
-                                << " MiB, over the memory limit of " << this->MemoryLimit
-                                << " MiB. Lower the resolution or raise MemoryLimit.");
-    return false;
-  }
-  return output->SetFrame(origin, cellSize, dims, zeroOffsets);
 }
 
 //------------------------------------------------------------------------------
 double vtkOFBSampler::EstimateMemory(vtkPolyData* input)
 {
   vtkOFBSurface surface;
-  double origin[3], cellSize;
-  vtkIdType dims[3];
-  if (!this->PrepareSurface(input, surface) ||
-    !this->ComputeFrame(surface, origin, cellSize, dims))
+  vtkOFBSamplerBackend::Job job;
+  if (!this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, job))
   {
     return -1.0;
   }
-  return this->EstimateBytes(surface, dims, cellSize);
-}
-
-//------------------------------------------------------------------------------
-double vtkOFBSampler::EstimateBytes(
-  const vtkOFBSurface& surface, const vtkIdType dims[3], double cellSize, double samples)
-{
-  // Projected area and perimeter of each triangle on its grid, in cells (summed per
-  // chunk in parallel, then over the chunks in order).
-  const double* P = surface.Points.data();
-  const vtkIdType* T = surface.Triangles.data();
-  if (samples < 0.0)
-  {
-    const vtkIdType nTris = surface.GetNumberOfTriangles();
-    const vtkIdType nChunks = (nTris + Chunk - 1) / Chunk;
-    std::vector<double> sums(nChunks, 0.0);
-    vtkSMPTools::For(0, nChunks, 1,
-      [&](vtkIdType c0, vtkIdType c1)
-      {
-        for (vtkIdType c = c0; c < c1; ++c)
-        {
-          for (vtkIdType t = c * Chunk; t < std::min(nTris, (c + 1) * Chunk); ++t)
-          {
-            double e1[3], e2[3], e3[3], n[3];
-            for (int k = 0; k < 3; ++k)
-            {
-              e1[k] = P[3 * T[3 * t + 1] + k] - P[3 * T[3 * t] + k];
-              e2[k] = P[3 * T[3 * t + 2] + k] - P[3 * T[3 * t] + k];
-              e3[k] = e2[k] - e1[k];
-            }
-            vtkMath::Cross(e1, e2, n);
-            const double area =
-              0.5 * std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
-            const double perimeter = vtkMath::Norm(e1) + vtkMath::Norm(e2) + vtkMath::Norm(e3);
-            sums[c] += area / (cellSize * cellSize) + 0.5 * perimeter / cellSize + 1.0;
-          }
-        }
-      });
-    samples = 0.0;
-    for (const double sum : sums)
-    {
-      samples += sum;
-    }
-  }
-  double cells = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    cells += static_cast<double>(dims[(a + 1) % 3]) * static_cast<double>(dims[(a + 2) % 3]);
-  }
-  // Per sample: depth, cell index, colour, normal, the build's temporaries
-  // (triangle, two barycentrics), the vector field and the other arrays.
-  double perSample = 4 + 4 + 4 + 12 + 12;
-  if (surface.Vectors)
-  {
-    perSample += 12;
-  }
-  for (const auto& array : surface.Arrays)
-  {
-    perSample += array->GetNumberOfComponents() * array->GetDataTypeSize();
-  }
-  // Per cell: the offsets and the build's counters.
-  return cells * 8.0 + samples * perSample;
+  const double samples = vtkOFBSamplerBackend::EstimateSamples(surface, job.CellSize);
+  return this->CPUBackend->EstimateBytes(surface, job.Dimensions, samples);
 }
 
 //------------------------------------------------------------------------------

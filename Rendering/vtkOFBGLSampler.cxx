@@ -1,8 +1,10 @@
 #include "vtkOFBGLSampler.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
 #include "vtkOFBSurface.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkTypeUInt32Array.h"
@@ -144,6 +146,92 @@ void Download(GLuint b, size_t bytes, void* out)
 }
 }
 
+vtkStandardNewMacro(vtkOFBGLSampler);
+
+//------------------------------------------------------------------------------
+vtkOFBGLSampler::vtkOFBGLSampler() = default;
+
+//------------------------------------------------------------------------------
+vtkOFBGLSampler::~vtkOFBGLSampler() = default;
+
+//------------------------------------------------------------------------------
+void vtkOFBGLSampler::SetRenderWindow(vtkOpenGLRenderWindow* window)
+{
+  if (this->RenderWindow != window)
+  {
+    this->RenderWindow = window;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBGLSampler::EstimateWorkBytes(vtkIdType points, vtkIdType triangles, double samples) const
+{
+  // On the host: the points in cell units (doubles), the 32-bit indices, and the
+  // interleaved barycentrics read back beside the two arrays interpolation takes.
+  return 24.0 * static_cast<double>(points) + 12.0 * static_cast<double>(triangles) +
+    8.0 * samples;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
+{
+  const vtkOFBSurface& surface = *job.Surface;
+  vtkOFB* output = job.Output;
+  vtkOpenGLRenderWindow* window = this->RenderWindow;
+  if (!window)
+  {
+    job.Error = "no render window";
+    return Unavailable;
+  }
+  const double samples = vtkOFBSamplerBackend::EstimateSamples(surface, job.CellSize);
+  const bool zeroOffsets = true; // the scan writes them from zero counts
+  if (!vtkOFBSamplerBackend::CheckMemoryLimit(
+        this->EstimateBytes(surface, job.Dimensions, samples), job.MemoryLimit, job.Error) ||
+    !output->SetFrame(job.Origin, job.CellSize, job.Dimensions, zeroOffsets))
+  {
+    return Failed;
+  }
+  if (job.Algorithm)
+  {
+    job.Algorithm->UpdateProgress(0.1);
+  }
+  std::vector<vtkTypeUInt32> triangles;
+  std::vector<float> barycentrics;
+  window->PushContext();
+  const bool rasterized = this->Rasterize(window, job, triangles, barycentrics);
+  window->PopContext();
+  if (!rasterized)
+  {
+    return Unavailable;
+  }
+  if (job.Algorithm)
+  {
+    job.Algorithm->UpdateProgress(0.7);
+  }
+  const vtkIdType n = output->GetNumberOfSamples();
+  std::vector<float> w1(n), w2(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    w1[i] = barycentrics[2 * i];
+    w2[i] = barycentrics[2 * i + 1];
+  }
+  barycentrics.clear();
+  if (!output->BuildCellIndex() ||
+    !vtkOFBSamplerBackend::InterpolateAttributes(surface, output, triangles.data(), w1.data(), w2.data()))
+  {
+    return Failed;
+  }
+  return Built;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBGLSampler::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RenderWindow: " << this->RenderWindow.GetPointer() << "\n";
+}
+
 //------------------------------------------------------------------------------
 bool vtkOFBGLSampler::IsSupported(vtkOpenGLRenderWindow* window, std::string& why)
 {
@@ -196,10 +284,12 @@ bool vtkOFBGLSampler::IsSoftwareRenderer(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBGLSampler::Sample(vtkOpenGLRenderWindow* window, const vtkOFBSurface& surface,
-  vtkOFB* output, double limitBytes, double bytesPerSample,
-  std::vector<vtkTypeUInt32>& triangles, std::vector<float>& barycentrics, std::string& error)
+bool vtkOFBGLSampler::Rasterize(vtkOpenGLRenderWindow* window, Job& job,
+  std::vector<vtkTypeUInt32>& triangles, std::vector<float>& barycentrics)
 {
+  const vtkOFBSurface& surface = *job.Surface;
+  vtkOFB* output = job.Output;
+  std::string& error = job.Error;
   if (!vtkOFBGLSampler::IsSupported(window, error))
   {
     return false;
@@ -380,11 +470,9 @@ bool vtkOFBGLSampler::Sample(vtkOpenGLRenderWindow* window, const vtkOFBSurface&
       glBindBuffer(GL_SHADER_STORAGE_BUFFER, offsets);
       glBufferSubData(GL_SHADER_STORAGE_BUFFER, nCells * sizeof(GLuint), sizeof(GLuint), &total);
       const vtkIdType n = total;
-      if (output->GetCellOffsets()->GetNumberOfValues() * 8.0 + n * bytesPerSample > limitBytes)
+      if (!vtkOFBSamplerBackend::CheckMemoryLimit(
+            this->EstimateBytes(surface, dims, static_cast<double>(n)), job.MemoryLimit, error))
       {
-        std::ostringstream os;
-        os << n << " samples exceed the memory limit";
-        error = os.str();
         return false;
       }
 

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBSampler);
@@ -94,7 +95,7 @@ vtkIdType CopyValues(const T* in, vtkIdType nValues, double* out)
  * Copy the point coordinates (3 components) into `out` as doubles; the index of
  * the first point with a non-finite coordinate, or -1.
  */
-vtkIdType CopyPoints(vtkDataArray* points, double* out)
+vtkIdType CopyPointCoordinates(vtkDataArray* points, double* out)
 {
   const vtkIdType nValues = 3 * points->GetNumberOfTuples();
   vtkIdType bad = -1;
@@ -313,6 +314,33 @@ void AreaWeightedNormals(vtkOFBSurface& surface)
       }
     });
 }
+
+/**
+ * The point arrays of `pd` (of `nPoints` tuples) to interpolate into the samples:
+ * every named, non-bit array but those already used (`used`: normals, vectors,
+ * colours) or named as the samples' own arrays.
+ */
+void CollectOtherArrays(vtkPointData* pd, vtkIdType nPoints,
+  std::initializer_list<vtkDataArray*> used, vtkOFBSurface& surface)
+{
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = pd->GetArray(i);
+    if (!array || std::find(used.begin(), used.end(), array) != used.end() ||
+      array->GetDataType() == VTK_BIT || array->GetNumberOfTuples() != nPoints ||
+      !array->GetName() || !std::strcmp(array->GetName(), "Colors") ||
+      !std::strcmp(array->GetName(), "Normals") ||
+      (surface.Vectors && !std::strcmp(array->GetName(), surface.Vectors->GetName())))
+    {
+      continue;
+    }
+    if (array == pd->GetTCoords())
+    {
+      surface.TCoordsIndex = static_cast<int>(surface.Arrays.size());
+    }
+    surface.Arrays.push_back(AsAOS(array));
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -410,6 +438,29 @@ vtkOFBSamplerBackend::Result vtkOFBSampler::RunBackend(
 //------------------------------------------------------------------------------
 bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
 {
+  if (!this->CheckInputCells(input) || !this->CopyPoints(input, surface) ||
+    !this->CollectTriangles(input, surface))
+  {
+    return false;
+  }
+  vtkDataArray* normals = this->PrepareNormals(input, surface);
+  vtkDataArray* vectors = nullptr;
+  if (!this->SelectVectors(input, surface, vectors))
+  {
+    return false;
+  }
+  vtkDataArray* colors = this->SelectColors(input, surface);
+  if (this->PassPointArrays)
+  {
+    CollectOtherArrays(
+      input->GetPointData(), input->GetNumberOfPoints(), { normals, vectors, colors }, surface);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::CheckInputCells(vtkPolyData* input)
+{
   if (!input || input->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro("The input surface is empty: no points.");
@@ -426,18 +477,26 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     vtkErrorMacro("The input has no polygons or triangle strips: nothing to sample.");
     return false;
   }
+  return true;
+}
 
-  // Points, checked finite.
-  const vtkIdType nPoints = input->GetNumberOfPoints();
-  surface.Points.resize(3 * nPoints);
-  const vtkIdType badPoint = CopyPoints(input->GetPoints()->GetData(), surface.Points.data());
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::CopyPoints(vtkPolyData* input, vtkOFBSurface& surface)
+{
+  surface.Points.resize(3 * input->GetNumberOfPoints());
+  const vtkIdType badPoint = CopyPointCoordinates(input->GetPoints()->GetData(), surface.Points.data());
   if (badPoint >= 0)
   {
     vtkErrorMacro(
       "The input has non-finite (NaN or Inf) point coordinates, point " << badPoint << ".");
     return false;
   }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface)
+{
   // Triangles: the input's own cells when they are all triangles, else a triangulation.
   vtkSmartPointer<vtkPolyData> mesh = input;
   vtkCellArray* polys = input->GetPolys();
@@ -454,7 +513,7 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     triangulate->Update();
     mesh = triangulate->GetOutput();
   }
-  TriangleCollector triangles(surface.Points.data(), nPoints);
+  TriangleCollector triangles(surface.Points.data(), input->GetNumberOfPoints());
   if (!triangles.Collect(mesh->GetPolys(), surface))
   {
     vtkErrorMacro("The input has a polygon with an invalid point id.");
@@ -470,10 +529,15 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     vtkErrorMacro("The input has no triangle of non-zero area: nothing to sample.");
     return false;
   }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+vtkDataArray* vtkOFBSampler::PrepareNormals(vtkPolyData* input, vtkOFBSurface& surface)
+{
+  const vtkIdType nPoints = input->GetNumberOfPoints();
   // Normals: the input's point normals, else area-weighted ones.
-  vtkPointData* pd = input->GetPointData();
-  vtkDataArray* inNormals = pd->GetNormals();
+  vtkDataArray* inNormals = input->GetPointData()->GetNormals();
   surface.Normals.resize(3 * nPoints);
   if (inNormals && inNormals->GetNumberOfComponents() == 3 &&
     inNormals->GetNumberOfTuples() == nPoints)
@@ -510,9 +574,13 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     inNormals = nullptr;
     AreaWeightedNormals(surface);
   }
+  return inNormals;
+}
 
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::SelectVectors(vtkPolyData* input, vtkOFBSurface& surface, vtkDataArray*& vectors)
+{
   // The vector field: the array chosen with SetInputArrayToProcess, else the vectors.
-  vtkDataArray* vectors = nullptr;
   vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
   if (arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_ASSOCIATION()))
   {
@@ -527,7 +595,7 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
   }
   else
   {
-    vectors = pd->GetVectors();
+    vectors = input->GetPointData()->GetVectors();
   }
   if (vectors && vectors->GetNumberOfComponents() != 3)
   {
@@ -544,7 +612,13 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     surface.Vectors = v;
   }
   surface.ProjectVectors = this->ProjectVectors;
+  return true;
+}
 
+//------------------------------------------------------------------------------
+vtkDataArray* vtkOFBSampler::SelectColors(vtkPolyData* input, vtkOFBSurface& surface)
+{
+  vtkPointData* pd = input->GetPointData();
   // Initial paint.
   std::memcpy(surface.DefaultColor, this->DefaultColor, 4);
   vtkDataArray* colors = nullptr;
@@ -563,29 +637,7 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
   {
     surface.Colors = vtkUnsignedCharArray::SafeDownCast(AsAOS(colors));
   }
-
-  // Every other point array.
-  if (this->PassPointArrays)
-  {
-    for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
-    {
-      vtkDataArray* array = pd->GetArray(i);
-      if (!array || array == inNormals || array == vectors || array == colors ||
-        array->GetDataType() == VTK_BIT || array->GetNumberOfTuples() != nPoints ||
-        !array->GetName() || !std::strcmp(array->GetName(), "Colors") ||
-        !std::strcmp(array->GetName(), "Normals") ||
-        (surface.Vectors && !std::strcmp(array->GetName(), surface.Vectors->GetName())))
-      {
-        continue;
-      }
-      if (array == pd->GetTCoords())
-      {
-        surface.TCoordsIndex = static_cast<int>(surface.Arrays.size());
-      }
-      surface.Arrays.push_back(AsAOS(array));
-    }
-  }
-  return true;
+  return colors;
 }
 
 //------------------------------------------------------------------------------

@@ -47,6 +47,7 @@
 #include "vtkSmartPointer.h"       // for CPUBackend
 #include "vtkWeakPointer.h"        // for LastBuildBackend
 
+class vtkDataArray;
 class vtkPolyData;
 class vtkOFBSurface;
 
@@ -172,11 +173,20 @@ private:
   vtkOFBSampler(const vtkOFBSampler&) = delete;
   void operator=(const vtkOFBSampler&) = delete;
 
+  ///@{
   /**
-   * Validate and triangulate the input, compute normals and collect the arrays.
-   * Returns false after reporting an error.
+   * Validate and triangulate the input, compute normals and collect the arrays
+   * (PrepareSurface), in these steps. Those returning bool return false after
+   * reporting an error.
    */
   bool PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface);
+  bool CheckInputCells(vtkPolyData* input);
+  bool CopyPoints(vtkPolyData* input, vtkOFBSurface& surface);
+  bool CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface);
+  vtkDataArray* PrepareNormals(vtkPolyData* input, vtkOFBSurface& surface);
+  bool SelectVectors(vtkPolyData* input, vtkOFBSurface& surface, vtkDataArray*& vectors);
+  vtkDataArray* SelectColors(vtkPolyData* input, vtkOFBSurface& surface);
+  ///@}
 
   /**
    * Compute the frame of a prepared surface at the current resolution into `job`.

@@ -57,11 +57,23 @@ bool BandBuilder::SetupTriangles()
   }
   this->Setups = this->B.Setups.Get();
   this->Ranges = this->B.Ranges.Get();
+  if (this->ComputeSetupKeys() < 0.0)
+  {
+    this->PutInwardKeysFirst();
+  }
+  this->SortBySetupKey();
+  this->SetUpInOrder();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double BandBuilder::ComputeSetupKeys()
+{
+  const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
   const double* P = this->Surface.Points.data();
   const vtkIdType* T3 = this->Surface.Triangles.data();
   const vtkOFBRasterFrame& f = this->F;
   vtkTypeUInt32* key = this->B.Key.Get();
-  vtkTypeUInt32* order = this->B.Order.Get();
   // Six times the signed volume the triangles enclose, by chunk (a sum that does
   // not depend on the number of threads): negative when they are wound inwards.
   const vtkIdType nChunks = (nTris + SetupChunk - 1) / SetupChunk;
@@ -96,25 +108,38 @@ bool BandBuilder::SetupTriangles()
         volume[c] = sum;
       }
     });
-  if (std::accumulate(volume.begin(), volume.end(), 0.0) < 0.0)
+  return std::accumulate(volume.begin(), volume.end(), 0.0);
+}
+
+//------------------------------------------------------------------------------
+void BandBuilder::PutInwardKeysFirst()
+{
+  // Wound inwards: the triangles facing along the axis enter a closed surface.
+  // Swap the two halves of each band's keys so that they come first.
+  const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
+  vtkTypeUInt32* key = this->B.Key.Get();
+  std::vector<vtkTypeUInt32> swapped(this->FirstKey[2] + 2 * this->F.Dims[1]);
+  for (const Band& band : this->Bands)
   {
-    // Wound inwards: the triangles facing along the axis enter a closed surface.
-    // Swap the two halves of each band's keys so that they come first.
-    std::vector<vtkTypeUInt32> swapped(this->FirstKey[2] + 2 * this->F.Dims[1]);
-    for (const Band& band : this->Bands)
+    const vtkIdType k0 = this->FirstKey[band.Axis] + 2 * band.Row0;
+    const vtkIdType rows = band.Row1 - band.Row0;
+    for (vtkIdType x = 0; x < 2 * rows; ++x)
     {
-      const vtkIdType k0 = this->FirstKey[band.Axis] + 2 * band.Row0;
-      const vtkIdType rows = band.Row1 - band.Row0;
-      for (vtkIdType x = 0; x < 2 * rows; ++x)
-      {
-        swapped[k0 + x] = static_cast<vtkTypeUInt32>(k0 + (x < rows ? x + rows : x - rows));
-      }
-    }
-    for (vtkIdType t = 0; t < nTris; ++t)
-    {
-      key[t] = swapped[key[t]];
+      swapped[k0 + x] = static_cast<vtkTypeUInt32>(k0 + (x < rows ? x + rows : x - rows));
     }
   }
+  for (vtkIdType t = 0; t < nTris; ++t)
+  {
+    key[t] = swapped[key[t]];
+  }
+}
+
+//------------------------------------------------------------------------------
+void BandBuilder::SortBySetupKey()
+{
+  const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
+  const vtkTypeUInt32* key = this->B.Key.Get();
+  vtkTypeUInt32* order = this->B.Order.Get();
   std::vector<vtkIdType> start(this->FirstKey[2] + 2 * this->F.Dims[1] + 1, 0);
   for (vtkIdType t = 0; t < nTris; ++t)
   {
@@ -125,6 +150,17 @@ bool BandBuilder::SetupTriangles()
   {
     order[start[key[t]]++] = static_cast<vtkTypeUInt32>(t);
   }
+}
+
+//------------------------------------------------------------------------------
+void BandBuilder::SetUpInOrder()
+{
+  const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
+  const double* P = this->Surface.Points.data();
+  const vtkIdType* T3 = this->Surface.Triangles.data();
+  const vtkOFBRasterFrame& f = this->F;
+  const vtkTypeUInt32* key = this->B.Key.Get();
+  const vtkTypeUInt32* order = this->B.Order.Get();
   vtkOFBTriangleRaster* setups = this->Setups;
   vtkSMPTools::For(0, nTris, SetupChunk,
     [&](vtkIdType begin, vtkIdType end)
@@ -170,8 +206,8 @@ bool BandBuilder::SetupTriangles()
         }
       }
     });
-  return true;
 }
+
 
 //------------------------------------------------------------------------------
 bool BandBuilder::ListBandTriangles()

@@ -303,6 +303,21 @@ private:
   vtkIdType FirstBand[3] = { 0, 0, 0 };
   vtkIdType FirstKey[3] = { 0, 0, 0 }; // setup order keys of each grid (SetupTriangles)
 
+  ///@{
+  /**
+   * The steps of SetupTriangles: the setup order key of every triangle (the band
+   * and row of its lowest vertex, entering or leaving; returns six times the
+   * volume the triangles enclose), the keys swapped so that the triangles
+   * entering a surface wound inwards come first, the triangles sorted by key (a
+   * counting sort, stable), and every triangle set up in that order (in
+   * parallel) with its band range.
+   */
+  double ComputeSetupKeys();
+  void PutInwardKeysFirst();
+  void SortBySetupKey();
+  void SetUpInOrder();
+  ///@}
+
   /// The grid of a setup order key.
   int AxisOfKey(vtkTypeUInt32 key) const
   {

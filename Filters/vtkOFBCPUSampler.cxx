@@ -209,7 +209,7 @@ void vtkOFBCPUSampler::FillBands(BandBuilder& builder, Job& job, vtkIdType sampl
   std::vector<bool> interpolated;
   for (size_t k = 0; k < surface.Arrays.size(); ++k)
   {
-    interpolated.push_back(vtkOFBSampleShader::IsInterpolable(surface.Arrays[k]));
+    interpolated.push_back(vtkOFBAttributeInterpolator::IsInterpolable(surface.Arrays[k]));
     if (interpolated.back())
     {
       out.OthersIn.push_back(surface.Arrays[k]);

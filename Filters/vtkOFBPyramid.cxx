@@ -263,7 +263,6 @@ vtkOFBPyramid::vtkOFBPyramid()
   , MaximumNumberOfLevels(8)
   , MinimumResolution(8)
   , FilterRadius(1.5)
-  , LastInputOFB(nullptr)
 {
 }
 
@@ -295,11 +294,11 @@ vtkOFB* vtkOFBPyramid::GetLevel(int k) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPyramid::Update()
+bool vtkOFBPyramid::UpdateLevels()
 {
   if (!this->InputOFB || this->InputOFB->GetNumberOfSamples() == 0)
   {
-    vtkErrorMacro("Update: no input OFB, or an empty one.");
+    vtkErrorMacro("UpdateLevels: no input OFB, or an empty one.");
     this->Levels.clear();
     return false;
   }
@@ -314,7 +313,7 @@ bool vtkOFBPyramid::Update()
     this->StructureTime.Modified();
     if (this->MaximumNumberOfLevels > 1 && !this->Surface)
     {
-      vtkErrorMacro("Update: no surface to sample the coarser levels from.");
+      vtkErrorMacro("UpdateLevels: no surface to sample the coarser levels from.");
       return false;
     }
     const vtkIdType* dims = this->InputOFB->GetDimensions();
@@ -337,7 +336,7 @@ bool vtkOFBPyramid::Update()
       vtkOFB* out = sampler->GetOutput();
       if (!out || out->GetNumberOfSamples() == 0)
       {
-        vtkErrorMacro("Update: level " << k << " could not be sampled.");
+        vtkErrorMacro("UpdateLevels: level " << k << " could not be sampled.");
         this->Levels.clear();
         return false;
       }

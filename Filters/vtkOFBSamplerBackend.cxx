@@ -4,7 +4,7 @@
 #include "vtkMath.h"
 #include "vtkOFB.h"
 #include "vtkOFBSampleArrays.h"
-#include "vtkOFBSampleShader.h"
+#include "vtkOFBAttributeInterpolator.h"
 #include "vtkOFBSurface.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
@@ -152,25 +152,25 @@ bool vtkOFBSamplerBackend::InterpolateAttributes(const vtkOFBSurface& surface, v
   unsigned char* outColors = arrays.Colors->GetPointer(0);
   float* outNormals = arrays.Normals->GetPointer(0);
   float* outVectors = arrays.Vectors ? arrays.Vectors->GetPointer(0) : nullptr;
-  const vtkOFBSampleShader shader(surface);
+  const vtkOFBAttributeInterpolator interpolator(surface);
   vtkSMPTools::For(0, n, 4096,
     [&](vtkIdType begin, vtkIdType end)
     {
       float normal[3], vector[3], scratch;
-      vtkOFBSampleShader::Run run;
+      vtkOFBAttributeInterpolator::Run run;
       for (int k = 0; k < 3; ++k)
       {
-        run.N[k] = normal + k;
-        run.V[k] = vector + k;
+        run.Normals[k] = normal + k;
+        run.Vectors[k] = vector + k;
       }
       run.Scratch = &scratch;
       for (vtkIdType i = begin; i < end; ++i)
       {
         run.RGBA = outColors + 4 * i;
-        shader.Shade(triangles[i], 1, w1 + i, w2 + i, run);
-        if (!shader.C)
+        interpolator.Interpolate(triangles[i], 1, w1 + i, w2 + i, run);
+        if (!interpolator.PointColors)
         {
-          std::memcpy(run.RGBA, shader.DefaultColor, 4);
+          std::memcpy(run.RGBA, interpolator.DefaultColor, 4);
         }
         std::copy(normal, normal + 3, outNormals + 3 * i);
         if (outVectors)
@@ -184,13 +184,13 @@ bool vtkOFBSamplerBackend::InterpolateAttributes(const vtkOFBSurface& surface, v
   {
     vtkDataArray* in = surface.Arrays[k];
     vtkDataArray* out = arrays.Others[k];
-    interpolated.push_back(vtkOFBSampleShader::IsInterpolable(in));
+    interpolated.push_back(vtkOFBAttributeInterpolator::IsInterpolable(in));
     if (interpolated.back())
     {
       vtkSMPTools::For(0, n, 4096,
         [&](vtkIdType begin, vtkIdType end)
         {
-          vtkOFBSampleShader::InterpolateArray(in, out, begin, end - begin,
+          vtkOFBAttributeInterpolator::InterpolateArray(in, out, begin, end - begin,
             surface.Triangles.data(), triangles + begin, w1 + begin, w2 + begin, nullptr);
         });
     }

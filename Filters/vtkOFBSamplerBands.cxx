@@ -21,8 +21,8 @@ void BandBuilder::CutBands()
   vtkIdType rows = 0;
   for (int a = 0; a < 3; ++a)
   {
-    const vtkIdType nu = this->F.Dims[(a + 1) % 3];
-    const vtkIdType nv = this->F.Dims[(a + 2) % 3];
+    const vtkIdType nu = this->Frame.Dims[(a + 1) % 3];
+    const vtkIdType nv = this->Frame.Dims[(a + 2) % 3];
     this->FirstKey[a] = 2 * rows;
     rows += nv;
     this->Shift[a] = 0;
@@ -30,15 +30,15 @@ void BandBuilder::CutBands()
     {
       ++this->Shift[a];
     }
-    this->FirstBand[a] = static_cast<vtkIdType>(this->Bands.size());
+    this->FirstBandOfGrid[a] = static_cast<vtkIdType>(this->Bands.size());
     for (vtkIdType r = 0; r < nv; r += vtkIdType(1) << this->Shift[a])
     {
       Band band;
       band.Axis = a;
       band.Row0 = r;
       band.Row1 = std::min(nv, r + (vtkIdType(1) << this->Shift[a]));
-      band.Cell0 = this->F.CellBase[a] + band.Row0 * nu;
-      band.Cell1 = this->F.CellBase[a] + band.Row1 * nu;
+      band.Cell0 = this->Frame.CellBase[a] + band.Row0 * nu;
+      band.Cell1 = this->Frame.CellBase[a] + band.Row1 * nu;
       band.First = band.Count = band.TriBegin = band.TriEnd = 0;
       band.SpanBegin = band.SpanEnd = 0;
       this->Bands.push_back(band);
@@ -50,13 +50,13 @@ void BandBuilder::CutBands()
 bool BandBuilder::SetupTriangles()
 {
   const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
-  if (!this->B.Setups.Reserve(nTris) || !this->B.Ranges.Reserve(nTris) ||
-    !this->B.Key.Reserve(nTris) || !this->B.Order.Reserve(nTris))
+  if (!this->Buffers.Setups.Reserve(nTris) || !this->Buffers.Ranges.Reserve(nTris) ||
+    !this->Buffers.Key.Reserve(nTris) || !this->Buffers.Order.Reserve(nTris))
   {
     return false;
   }
-  this->Setups = this->B.Setups.Get();
-  this->Ranges = this->B.Ranges.Get();
+  this->Setups = this->Buffers.Setups.Get();
+  this->Ranges = this->Buffers.Ranges.Get();
   if (this->ComputeSetupKeys() < 0.0)
   {
     this->PutInwardKeysFirst();
@@ -72,8 +72,8 @@ double BandBuilder::ComputeSetupKeys()
   const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
   const double* P = this->Surface.Points.data();
   const vtkIdType* T3 = this->Surface.Triangles.data();
-  const vtkOFBRasterFrame& f = this->F;
-  vtkTypeUInt32* key = this->B.Key.Get();
+  const vtkOFBRasterFrame& f = this->Frame;
+  vtkTypeUInt32* key = this->Buffers.Key.Get();
   // Six times the signed volume the triangles enclose, by chunk (a sum that does
   // not depend on the number of threads): negative when they are wound inwards.
   const vtkIdType nChunks = (nTris + SetupChunk - 1) / SetupChunk;
@@ -117,8 +117,8 @@ void BandBuilder::PutInwardKeysFirst()
   // Wound inwards: the triangles facing along the axis enter a closed surface.
   // Swap the two halves of each band's keys so that they come first.
   const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
-  vtkTypeUInt32* key = this->B.Key.Get();
-  std::vector<vtkTypeUInt32> swapped(this->FirstKey[2] + 2 * this->F.Dims[1]);
+  vtkTypeUInt32* key = this->Buffers.Key.Get();
+  std::vector<vtkTypeUInt32> swapped(this->FirstKey[2] + 2 * this->Frame.Dims[1]);
   for (const Band& band : this->Bands)
   {
     const vtkIdType k0 = this->FirstKey[band.Axis] + 2 * band.Row0;
@@ -138,9 +138,9 @@ void BandBuilder::PutInwardKeysFirst()
 void BandBuilder::SortBySetupKey()
 {
   const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
-  const vtkTypeUInt32* key = this->B.Key.Get();
-  vtkTypeUInt32* order = this->B.Order.Get();
-  std::vector<vtkIdType> start(this->FirstKey[2] + 2 * this->F.Dims[1] + 1, 0);
+  const vtkTypeUInt32* key = this->Buffers.Key.Get();
+  vtkTypeUInt32* order = this->Buffers.Order.Get();
+  std::vector<vtkIdType> start(this->FirstKey[2] + 2 * this->Frame.Dims[1] + 1, 0);
   for (vtkIdType t = 0; t < nTris; ++t)
   {
     ++start[key[t] + 1];
@@ -158,9 +158,9 @@ void BandBuilder::SetUpInOrder()
   const vtkIdType nTris = this->Surface.GetNumberOfTriangles();
   const double* P = this->Surface.Points.data();
   const vtkIdType* T3 = this->Surface.Triangles.data();
-  const vtkOFBRasterFrame& f = this->F;
-  const vtkTypeUInt32* key = this->B.Key.Get();
-  const vtkTypeUInt32* order = this->B.Order.Get();
+  const vtkOFBRasterFrame& f = this->Frame;
+  const vtkTypeUInt32* key = this->Buffers.Key.Get();
+  const vtkTypeUInt32* order = this->Buffers.Order.Get();
   vtkOFBTriangleRaster* setups = this->Setups;
   vtkSMPTools::For(0, nTris, SetupChunk,
     [&](vtkIdType begin, vtkIdType end)
@@ -191,18 +191,18 @@ void BandBuilder::SetUpInOrder()
         ts.Tri = t;
         vtkIdType ids[3];
         ts.GetPointIds(ids);
-        ts.MayCancel = this->Shading.MayCancel(ids);
+        ts.MayCancel = this->Interpolator.MayCancel(ids);
         BandRange& range = this->Ranges[i];
-        range.B0 = 1;
-        range.B1 = 0;
+        range.FirstBand = 1;
+        range.LastBand = 0;
         if (ts.Axis >= 0)
         {
-          range.B0 = static_cast<vtkTypeUInt32>(
-            this->FirstBand[ts.Axis] + (ts.V0 >> this->Shift[ts.Axis]));
-          range.B1 = static_cast<vtkTypeUInt32>(
-            this->FirstBand[ts.Axis] + (ts.V1 >> this->Shift[ts.Axis]));
-          range.V0 = ts.V0;
-          range.V1 = ts.V1;
+          range.FirstBand = static_cast<vtkTypeUInt32>(
+            this->FirstBandOfGrid[ts.Axis] + (ts.V0 >> this->Shift[ts.Axis]));
+          range.LastBand = static_cast<vtkTypeUInt32>(
+            this->FirstBandOfGrid[ts.Axis] + (ts.V1 >> this->Shift[ts.Axis]));
+          range.FirstRow = ts.V0;
+          range.LastRow = ts.V1;
         }
       }
     });
@@ -228,7 +228,7 @@ bool BandBuilder::ListBandTriangles()
           for (vtkIdType i = c * SetupChunk; i < end; ++i)
           {
             const BandRange& range = this->Ranges[i];
-            for (vtkTypeUInt32 b = range.B0; b <= range.B1; ++b)
+            for (vtkTypeUInt32 b = range.FirstBand; b <= range.LastBand; ++b)
             {
               fn(c * nBands + b, range, b, static_cast<vtkTypeUInt32>(i));
             }
@@ -240,8 +240,8 @@ bool BandBuilder::ListBandTriangles()
     [&](vtkIdType cb, const BandRange& range, vtkTypeUInt32 b, vtkTypeUInt32)
     {
       ++start[cb];
-      rows[cb] += std::min<vtkIdType>(range.V1, this->Bands[b].Row1 - 1) -
-        std::max<vtkIdType>(range.V0, this->Bands[b].Row0) + 1;
+      rows[cb] += std::min<vtkIdType>(range.LastRow, this->Bands[b].Row1 - 1) -
+        std::max<vtkIdType>(range.FirstRow, this->Bands[b].Row0) + 1;
     });
   vtkIdType tris = 0, spans = 0;
   for (vtkIdType b = 0; b < nBands; ++b)
@@ -257,11 +257,11 @@ bool BandBuilder::ListBandTriangles()
     }
     this->Bands[b].TriEnd = tris;
   }
-  if (!this->B.BandTris.Reserve(tris))
+  if (!this->Buffers.BandTris.Reserve(tris))
   {
     return false;
   }
-  this->BandTris = this->B.BandTris.Get();
+  this->BandTris = this->Buffers.BandTris.Get();
   forChunks([&](vtkIdType cb, const BandRange&, vtkTypeUInt32, vtkTypeUInt32 i)
     { this->BandTris[start[cb]++] = i; });
   this->SpanRows = spans;
@@ -271,11 +271,11 @@ bool BandBuilder::ListBandTriangles()
 //------------------------------------------------------------------------------
 bool BandBuilder::AllocateSpans()
 {
-  if (!this->B.Spans.Reserve(this->SpanRows))
+  if (!this->Buffers.Spans.Reserve(this->SpanRows))
   {
     return false;
   }
-  this->Spans = this->B.Spans.Get();
+  this->Spans = this->Buffers.Spans.Get();
   return true;
 }
 

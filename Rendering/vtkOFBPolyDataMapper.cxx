@@ -322,7 +322,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren, vtkActor* act)
     this->Pyramid->SetMaximumNumberOfLevels(
       std::min(this->MaximumNumberOfMipmapLevels, vtkOFBShaderStorage::MaximumNumberOfLevels));
     this->Pyramid->SetMinimumResolution(this->MinimumMipmapResolution);
-    if (this->Pyramid->Update())
+    if (this->Pyramid->UpdateLevels())
     {
       for (int k = 1; k < this->Pyramid->GetNumberOfLevels(); ++k)
       {

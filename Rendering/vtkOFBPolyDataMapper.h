@@ -16,9 +16,9 @@
  *   normal (computed per fragment from screen-space derivatives of the position: the normal
  *   vtkOFBSampler routes a triangle by, so the grid that holds its samples), else the next
  *   most aligned grid, else the last one, else the closest sample within
- *   InterpolationRadius in the 2x2 nearest cells of all three grids. On the Stanford bunny
- *   (1024-cell OFB, 1280x1024 window, Mesa llvmpipe) a frame takes about 1.3 times as long
- *   as with vtkPolyDataMapper and vertex colours (Testing/Benchmarks/ofbMapperBenchmark).
+ *   InterpolationRadius in the 2x2 nearest cells of all three grids. The frame time
+ *   against vtkPolyDataMapper with vertex colours is measured by
+ *   Testing/Benchmarks/ofbMapperBenchmark (docs/performance.md, "Mapper history").
  * - InverseDistance: Shepard-weighted samples within sqrt(3) cells in the 3x3 cells
  *   around the point in all three grids.
  * - Mipmapped: InverseDistance on a pyramid of coarser OFBs (vtkOFBPyramid, built on
@@ -39,6 +39,12 @@
  * Without an OFB, with an empty one, or on a context without shader storage buffers, the
  * mapper renders like vtkOpenGLPolyDataMapper and warns once.
  *
+ * A render is a short sequence of named steps (RenderPiece): UpdateOFBInput, CheckOFB,
+ * PrepareContext, SelectArrays, CheckSurfaceInFrame, then the GPU-side steps of the private
+ * helper vtkOFBShaderStorage (levels, uploads, lookup table), which owns every GPU resource
+ * and what was uploaded; the shader code goes in through vtkOpenGLPolyDataMapper's
+ * per-aspect hooks (ReplaceShaderColor, ReplaceShaderNormal, ReplaceShaderPositionVC).
+ *
  * @sa vtkOFB vtkOFBSampler vtkOFBBuilder vtkOFBPyramid
  */
 
@@ -48,15 +54,16 @@
 #include "vtkOFBRenderingModule.h" // for export macro
 #include "vtkOpenGLPolyDataMapper.h"
 
+#include "vtkWeakPointer.h" // for WarnedOFB
+
+#include <memory> // for std::unique_ptr
 #include <set>    // for Warnings
 #include <string> // for Warnings
 
 class vtkAlgorithmOutput;
-class vtkIdTypeArray;
 class vtkOFB;
-class vtkOFBPyramid;
 class vtkOFBShaderStorage;
-class vtkOpenGLRenderWindow;
+struct vtkOFBShaderStorageSelection;
 
 class VTKOFBRENDERING_EXPORT vtkOFBPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
@@ -210,18 +217,46 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
-  void ReplaceShaderValues(
+  ///@{
+  /**
+   * vtkOpenGLPolyDataMapper's per-aspect shader hooks: the position in OFB cells
+   * (PositionVC), the lookup and the colour it gives (Color), the painted normals (Normal).
+   */
+  void ReplaceShaderPositionVC(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderLight(
+  void ReplaceShaderColor(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderNormal(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  ///@}
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
+  ///@{
   /**
-   * Update input port 1, check the OFB and the context, build the pyramid and upload
-   * what changed. Returns whether this render colours from the OFB.
+   * The steps of a render. PrepareOFB runs them in order and returns whether this render
+   * colours from the OFB: UpdateOFBInput (update input port 1, return its OFB),
+   * CheckOFB (present, not empty), PrepareContext (the window offers what the lookup
+   * needs), SelectArrays (which sample arrays the shader reads, with fallbacks),
+   * CheckSurfaceInFrame (warn when the surface leaves the OFB's frame), UploadOFB (the
+   * levels and what changed of them), UploadLookupTable (Scalars source only);
+   * UpdateShaderKey notes a change of the shader's variant.
    */
-  bool PrepareOFB(vtkRenderer* ren, vtkActor* act);
+  bool PrepareOFB(vtkRenderer* ren);
+  vtkOFB* UpdateOFBInput();
+  bool CheckOFB(vtkOFB* ofb);
+  bool PrepareContext(vtkRenderer* ren);
+  bool SelectArrays(vtkOFB* ofb, vtkOFBShaderStorageSelection& selection);
+  void CheckSurfaceInFrame(vtkOFB* ofb);
+  bool UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorageSelection& selection);
+  void UploadLookupTable();
+  void UpdateShaderKey();
+  ///@}
+
+  /**
+   * Set "ofbNormalMatrix" (model to view normals) on `program`.
+   */
+  void SetNormalMatrix(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act);
 
   /**
    * Warn once per distinct message, until the OFB or a setting changes.
@@ -253,20 +288,11 @@ protected:
   std::string ShaderKey;
   vtkTimeStamp ShaderKeyTime;
 
-  vtkOFBShaderStorage* Storage;
-  vtkOFBPyramid* Pyramid;
-  vtkIdTypeArray* Ranges;
-  vtkTimeStamp UploadTime;
-  std::string UploadKey;
-  vtkOFB* UploadedOFB; // compared only, never dereferenced
-  vtkMTimeType UploadedPyramidTime;
-  vtkMTimeType UploadedLUTTime;
-  double UploadedLUTRange[2];
-  vtkOpenGLRenderWindow* CheckedWindow; // compared only
-  bool CheckedWindowSupported;
-  std::string CheckedWindowReason;
+  // The GPU state and what was uploaded.
+  std::unique_ptr<vtkOFBShaderStorage> Storage;
+
   std::set<std::string> Warnings;
-  vtkOFB* WarnedOFB; // compared only
+  vtkWeakPointer<vtkOFB> WarnedOFB;
   vtkMTimeType WarnedMTime;
 
 private:

@@ -4,6 +4,7 @@
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkOFB.h"
+#include "vtkOFBPyramid.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <sstream>
 
 namespace
 {
@@ -66,7 +68,197 @@ vtkOFBShaderStorage::vtkOFBShaderStorage()
 }
 
 //------------------------------------------------------------------------------
-vtkOFBShaderStorage::~vtkOFBShaderStorage() = default;
+vtkOFBShaderStorage::~vtkOFBShaderStorage()
+{
+  // Buffers still held here belong to a window that outlived the mapper: free them in that
+  // window's context when it is current, else leave them to it.
+  if (this->Window && this->GetMemorySize() > 0 && this->Window->IsCurrent())
+  {
+    this->FreeBuffers();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBShaderStorage::SetContext(vtkOpenGLRenderWindow* window, std::string& why)
+{
+  if (!window || window != this->CheckedWindow)
+  {
+    this->CheckedWindow = window;
+    this->CheckedWindowSupported = IsSupported(window, this->CheckedWindowReason);
+  }
+  if (!this->CheckedWindowSupported)
+  {
+    why = this->CheckedWindowReason;
+    return false;
+  }
+  if (window != this->Window)
+  {
+    if (this->Window)
+    {
+      this->Window->MakeCurrent();
+      this->FreeBuffers();
+      window->MakeCurrent();
+    }
+    this->Window = window;
+    this->ForgetUploads();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBShaderStorage::UpdateLevels(
+  vtkOFB* ofb, vtkPolyData* surface, bool mipmapped, int maximumLevels, int minimumResolution)
+{
+  this->Levels.assign(1, ofb);
+  if (!mipmapped)
+  {
+    if (this->Pyramid->GetInputOFB())
+    {
+      this->Pyramid->SetInputOFB(nullptr);
+      this->Pyramid->SetSurface(nullptr);
+    }
+    return true;
+  }
+  this->Pyramid->SetInputOFB(ofb);
+  this->Pyramid->SetSurface(surface);
+  this->Pyramid->SetMaximumNumberOfLevels(std::min(maximumLevels, MaximumNumberOfLevels));
+  this->Pyramid->SetMinimumResolution(minimumResolution);
+  if (!this->Pyramid->UpdateLevels())
+  {
+    return false;
+  }
+  for (int k = 1; k < this->Pyramid->GetNumberOfLevels(); ++k)
+  {
+    this->Levels.push_back(this->Pyramid->GetLevel(k));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBShaderStorage::UploadChanges(const Selection& selection, std::string& error)
+{
+  vtkOFB* ofb = this->Levels.empty() ? nullptr : this->Levels[0];
+  if (!ofb || !this->Window)
+  {
+    error = "no OFB or no window";
+    return -1;
+  }
+  std::ostringstream key;
+  key << this->Levels.size() << "|" << selection.Colors << "|" << selection.ScalarName << "|"
+      << selection.ScalarComponent << "|" << selection.IntensityName << "|" << selection.Normals;
+  const bool mipmapped = this->Levels.size() > 1;
+  const bool full = ofb != this->UploadedOFB || key.str() != this->UploadKey ||
+    ofb->GetStructureMTime() > this->UploadTime.GetMTime() ||
+    (mipmapped && this->Pyramid->GetStructureTime() > this->UploadedPyramidTime) ||
+    this->GetMemorySize() == 0;
+  this->Window->MakeCurrent();
+  vtkIdType count = 0;
+  if (full)
+  {
+    count = this->UploadAll(this->Levels, selection, error);
+    if (count < 0)
+    {
+      this->UploadedOFB = nullptr;
+      return -1;
+    }
+    this->UploadedOFB = ofb;
+    this->UploadKey = key.str();
+  }
+  else
+  {
+    ofb->GetSampleRangesModifiedSince(this->UploadTime.GetMTime(), this->Ranges);
+    count = this->UploadRanges(this->Levels, 0, selection, this->Ranges);
+    if (mipmapped)
+    {
+      count += this->UploadCoarseLevels(selection);
+    }
+  }
+  this->UploadedPyramidTime = this->Pyramid->GetStructureTime();
+  this->UploadTime.Modified();
+  return count;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection)
+{
+  // Level 0 changed since the last upload: filter the coarser levels' colours again.
+  if (this->Ranges->GetNumberOfTuples() > 0 &&
+    this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
+  {
+    this->Pyramid->UpdateArrays();
+  }
+  if (this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
+  {
+    return 0;
+  }
+  vtkIdType count = 0;
+  for (size_t k = 1; k < this->Levels.size(); ++k)
+  {
+    this->Ranges->Initialize();
+    this->Ranges->SetNumberOfComponents(2);
+    const vtkIdType all[2] = { 0, this->Levels[k]->GetNumberOfSamples() };
+    this->Ranges->InsertNextTypedTuple(all);
+    count += this->UploadRanges(this->Levels, static_cast<int>(k), selection, this->Ranges);
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::UpdateLookupTable(vtkScalarsToColors* lut, const double range[2])
+{
+  if (!lut)
+  {
+    return;
+  }
+  if (lut->GetMTime() > this->UploadedLUTTime || range[0] != this->UploadedLUTRange[0] ||
+    range[1] != this->UploadedLUTRange[1])
+  {
+    this->UploadLookupTable(lut, range);
+    this->UploadedLUTTime = lut->GetMTime();
+    this->UploadedLUTRange[0] = range[0];
+    this->UploadedLUTRange[1] = range[1];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::SetUniforms(vtkShaderProgram* program, bool scalars)
+{
+  vtkOFB* ofb = this->UploadedOFB;
+  if (!program || !ofb)
+  {
+    return;
+  }
+  this->SetBlockBindings(program);
+  // Level l's position is the level-0 position (in level-0 cells) scaled and shifted.
+  const int nl = std::min(this->GetNumberOfLevels(), static_cast<int>(this->Levels.size()));
+  const double* origin = ofb->GetOrigin();
+  const double s = ofb->GetCellSize();
+  float transforms[4 * MaximumNumberOfLevels] = { 0.0f };
+  for (int l = 0; l < nl; ++l)
+  {
+    vtkOFB* level = this->Levels[l];
+    const double sl = level->GetCellSize();
+    const double* ol = level->GetOrigin();
+    for (int i = 0; i < 3; ++i)
+    {
+      transforms[4 * l + i] = static_cast<float>((origin[i] - ol[i]) / sl);
+    }
+    transforms[4 * l + 3] = static_cast<float>(s / sl);
+  }
+  program->SetUniformi("ofbNumberOfLevels", nl);
+  program->SetUniform4fv("ofbLevelTransform", nl, transforms);
+  program->SetUniform1iv("ofbLevelDims", 3 * nl, this->LevelDims.data());
+  program->SetUniform1iv("ofbLevelCellBase", 3 * nl, this->LevelCellBase.data());
+  program->SetUniform1iv("ofbLevelSampleBase", nl, this->LevelSampleBase.data());
+  if (scalars)
+  {
+    const double span = this->UploadedLUTRange[1] - this->UploadedLUTRange[0];
+    const float range[2] = { static_cast<float>(this->UploadedLUTRange[0]),
+      static_cast<float>(span != 0.0 ? 1.0 / span : 0.0) };
+    program->SetUniform2f("ofbScalarRange", range);
+    program->SetUniformi("ofbLUTSize", LUTSize);
+  }
+}
 
 //------------------------------------------------------------------------------
 bool vtkOFBShaderStorage::IsSupported(vtkOpenGLRenderWindow* window, std::string& why)
@@ -328,7 +520,7 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
   if (!ok)
   {
     error = "could not allocate " + std::to_string(ns) + " samples of GPU memory";
-    this->ReleaseGraphicsResources();
+    this->FreeBuffers();
     return -1;
   }
   size_t cellOffset = 0;
@@ -478,7 +670,27 @@ size_t vtkOFBShaderStorage::GetMemorySize() const
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBShaderStorage::ReleaseGraphicsResources()
+void vtkOFBShaderStorage::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Window && (!window || window == static_cast<vtkWindow*>(this->Window)))
+  {
+    this->Window->MakeCurrent();
+    this->FreeBuffers();
+    this->Window = nullptr;
+    this->CheckedWindow = nullptr;
+    this->ForgetUploads();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::ForgetUploads()
+{
+  this->UploadedOFB = nullptr;
+  this->UploadedLUTTime = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::FreeBuffers()
 {
   for (int i = 0; i < NumberOfBuffers; ++i)
   {

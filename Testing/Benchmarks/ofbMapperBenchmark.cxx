@@ -157,7 +157,7 @@ double Median(std::vector<double> v)
 
 int main(int argc, char* argv[])
 {
-  std::string mesh = std::string(VTKOFB_BENCHMARK_DATA_DIR) + "/stanford-bunny.obj";
+  std::string mesh = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
   int resolution = 1024;
   int frames = 30;
   int rounds = 3;

@@ -20,20 +20,49 @@ function (vtkofb_use_test_data)
 endfunction ()
 
 #[==[
-vtkofb_mark_display_tests(<test>...)
+vtkofb_mark_display_tests(
+  [EXECUTABLES <target>...]
+  [TESTS <test>...]
+  [DIRECTORY])
 
-Tests that open a window (render windows, offscreen ones included) share the one X
-display of `xvfb-run`; run concurrently under `ctest -j N` they can lose the server
-connection. This gives them a common RESOURCE_LOCK, so that ctest runs at most one
-of them at a time (the other tests still run beside it), and the label `display`
-(`ctest -L display` runs only them).
+For tests that open windows (render windows, offscreen ones included). They share the
+one X display of `xvfb-run`, which fails two ways under `ctest -j N` and even serially:
+an X server resets when its last client disconnects, and a window opened during the
+reset cannot connect ("bad X server connection").
+
+- EXECUTABLES: the test programs keep a connection to the display open for their whole
+  run (Testing/Cxx/vtkOFBKeepDisplayOpen.cxx is linked in), so that a test that closes a
+  window and opens another never meets a reset.
+- TESTS, DIRECTORY (every test added so far in the calling directory): the tests get a
+  common RESOURCE_LOCK, so that ctest runs at most one of them at a time (the other
+  tests still run beside it), and the label `display` (`ctest -L display` runs them).
+
+vtkofb_add_gtests(... DISPLAY ...) does both for GoogleTest executables.
 #]==]
 function (vtkofb_mark_display_tests)
-  if (NOT ARGN)
-    return ()
+  cmake_parse_arguments(PARSE_ARGV 0 _vtkofb_display "DIRECTORY" "" "EXECUTABLES;TESTS")
+  if (_vtkofb_display_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "vtkofb_mark_display_tests: unknown arguments "
+      "'${_vtkofb_display_UNPARSED_ARGUMENTS}' (use EXECUTABLES, TESTS or DIRECTORY)")
   endif ()
-  set_property(TEST ${ARGN} APPEND PROPERTY RESOURCE_LOCK vtkofb_display)
-  set_property(TEST ${ARGN} APPEND PROPERTY LABELS display)
+  if (NOT TARGET X11::X11)
+    find_package(X11 QUIET)
+  endif ()
+  foreach (target IN LISTS _vtkofb_display_EXECUTABLES)
+    if (TARGET X11::X11)
+      target_sources("${target}" PRIVATE "${_vtkofb_root}/Testing/Cxx/vtkOFBKeepDisplayOpen.cxx")
+      target_link_libraries("${target}" PRIVATE X11::X11)
+    endif ()
+  endforeach ()
+  set(tests ${_vtkofb_display_TESTS})
+  if (_vtkofb_display_DIRECTORY)
+    get_property(directory_tests DIRECTORY PROPERTY TESTS)
+    list(APPEND tests ${directory_tests})
+  endif ()
+  if (tests)
+    set_property(TEST ${tests} APPEND PROPERTY RESOURCE_LOCK vtkofb_display)
+    set_property(TEST ${tests} APPEND PROPERTY LABELS display)
+  endif ()
 endfunction ()
 
 #[==[
@@ -60,6 +89,7 @@ function (vtkofb_add_gtests name)
   vtkofb_use_test_data("${name}")
   set(properties TIMEOUT "${_vtkofb_gtests_TIMEOUT}")
   if (_vtkofb_gtests_DISPLAY)
+    vtkofb_mark_display_tests(EXECUTABLES "${name}")
     list(APPEND properties RESOURCE_LOCK vtkofb_display LABELS display)
   endif ()
   gtest_discover_tests("${name}"

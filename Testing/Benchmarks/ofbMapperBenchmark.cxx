@@ -157,7 +157,7 @@ double Median(std::vector<double> v)
 
 struct Options
 {
-  std::string Mesh = std::string(VTKOFB_BENCHMARK_DATA_DIR) + "/stanford-bunny.obj";
+  std::string Mesh = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
   int Resolution = 1024;
   int Frames = 30;
   int Rounds = 3;

@@ -316,6 +316,19 @@ void AreaWeightedNormals(vtkOFBSurface& surface)
 }
 
 /**
+ * The triangles of a cell array of polygons or strips (n - 2 for a cell of n
+ * points), from its sizes alone.
+ */
+vtkIdType CountTriangles(vtkCellArray* cells)
+{
+  if (!cells)
+  {
+    return 0;
+  }
+  return std::max<vtkIdType>(0, cells->GetNumberOfConnectivityIds() - 2 * cells->GetNumberOfCells());
+}
+
+/**
  * The point arrays of `pd` (of `nPoints` tuples) to interpolate into the samples:
  * every named, non-bit array but those already used (`used`: normals, vectors,
  * colours) or named as the samples' own arrays.
@@ -395,7 +408,8 @@ int vtkOFBSampler::RequestData(
   job.Output = output;
   job.MemoryLimit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
   job.Algorithm = this;
-  if (!this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, job))
+  if (!this->CheckInputCells(input) || !this->CheckInputMemory(input, backend, job) ||
+    !this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, job))
   {
     output->Initialize();
     return 1;
@@ -438,8 +452,7 @@ vtkOFBSamplerBackend::Result vtkOFBSampler::RunBackend(
 //------------------------------------------------------------------------------
 bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
 {
-  if (!this->CheckInputCells(input) || !this->CopyPoints(input, surface) ||
-    !this->CollectTriangles(input, surface))
+  if (!this->CopyPoints(input, surface) || !this->CollectTriangles(input, surface))
   {
     return false;
   }
@@ -475,6 +488,21 @@ bool vtkOFBSampler::CheckInputCells(vtkPolyData* input)
   if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     vtkErrorMacro("The input has no polygons or triangle strips: nothing to sample.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::CheckInputMemory(
+  vtkPolyData* input, vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job)
+{
+  const vtkIdType points = input->GetNumberOfPoints();
+  const vtkIdType triangles = CountTriangles(input->GetPolys()) + CountTriangles(input->GetStrips());
+  if (!vtkOFBSamplerBackend::CheckMemoryLimit(
+        backend->EstimateBytes(points, triangles), job.MemoryLimit, job.Error))
+  {
+    vtkErrorMacro(<< job.Error);
     return false;
   }
   return true;
@@ -671,7 +699,8 @@ double vtkOFBSampler::EstimateMemory(vtkPolyData* input)
 {
   vtkOFBSurface surface;
   vtkOFBSamplerBackend::Job job;
-  if (!this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, job))
+  if (!this->CheckInputCells(input) || !this->PrepareSurface(input, surface) ||
+    !this->ComputeFrame(surface, job))
   {
     return -1.0;
   }

@@ -71,8 +71,11 @@ public:
   ///@{
   /**
    * Most memory a build may take, in MiB (default 8192). The sampler estimates the
-   * memory of the grids and samples before it allocates them and fails with an
-   * error when the estimate exceeds the limit.
+   * memory of the build (its copy of the surface, the backend's per-triangle
+   * buffers, the grids, the samples and their arrays) before it allocates any of
+   * it, and fails with an error when the estimate exceeds the limit: first from
+   * the input's numbers of points and triangles, before the surface is copied,
+   * then on the frame, and again as the backend counts its spans and samples.
    */
   vtkSetClampMacro(MemoryLimit, vtkIdType, 1, VTK_ID_MAX);
   vtkGetMacro(MemoryLimit, vtkIdType);
@@ -132,8 +135,9 @@ public:
   void ReleaseBuffers();
 
   /**
-   * Estimated bytes of a build of `input` at the current settings, or -1 if the
-   * input is not valid. Nothing is allocated.
+   * Estimated bytes of a build of `input` at the current settings on the CPU (the
+   * copy of the surface, the per-triangle buffers, the grids and the estimated
+   * samples), or -1 if the input is not valid. Only the surface is prepared.
    */
   double EstimateMemory(vtkPolyData* input);
 
@@ -173,6 +177,20 @@ private:
   vtkOFBSampler(const vtkOFBSampler&) = delete;
   void operator=(const vtkOFBSampler&) = delete;
 
+  /**
+   * Whether the input has points and polygons or strips (warning about lines and
+   * vertices). Returns false after reporting an error.
+   */
+  bool CheckInputCells(vtkPolyData* input);
+
+  /**
+   * Check the memory of the build against MemoryLimit from the input's numbers of
+   * points and triangles alone, before anything is copied (a lower bound of the
+   * checks that follow). Returns false after reporting an error.
+   */
+  bool CheckInputMemory(
+    vtkPolyData* input, vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job);
+
   ///@{
   /**
    * Validate and triangulate the input, compute normals and collect the arrays
@@ -180,7 +198,6 @@ private:
    * reporting an error.
    */
   bool PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface);
-  bool CheckInputCells(vtkPolyData* input);
   bool CopyPoints(vtkPolyData* input, vtkOFBSurface& surface);
   bool CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface);
   vtkDataArray* PrepareNormals(vtkPolyData* input, vtkOFBSurface& surface);

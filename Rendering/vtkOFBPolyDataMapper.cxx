@@ -1,6 +1,7 @@
 #include "vtkOFBPolyDataMapper.h"
 
 #include "vtkActor.h"
+#include "vtkIdTypeArray.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkInformation.h"
 #include "vtkMatrix3x3.h"
@@ -20,6 +21,7 @@
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,6 +50,9 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , IntensityArrayName(nullptr)
   , IntensityModulation(false)
   , IntensityWeight(1.0)
+  , LICColorMode(COLOR_MODE_BLEND)
+  , LICIntensity(0.8)
+  , MapModeBias(0.0)
   , UsePaintedNormals(false)
   , LastUploadedSampleCount(0)
   , LastRenderUsedOFB(false)
@@ -57,6 +62,8 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , UseNormals(false)
   , DeepCells(false)
   , Storage(new vtkOFBShaderStorage)
+  , AlphaTranslucent(false)
+  , AlphaHint(0)
   , WarnedMTime(0)
 {
   this->SetNumberOfInputPorts(2);
@@ -134,9 +141,114 @@ const char* vtkOFBPolyDataMapper::GetColorSourceAsString(int source)
 }
 
 //------------------------------------------------------------------------------
+const char* vtkOFBPolyDataMapper::GetLICColorModeAsString(int mode)
+{
+  switch (mode)
+  {
+    case COLOR_MODE_BLEND:
+      return "COLOR_MODE_BLEND";
+    case COLOR_MODE_MAP:
+      return "COLOR_MODE_MAP";
+    default:
+      return "Unknown";
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkIdType vtkOFBPolyDataMapper::GetGPUMemorySize()
 {
   return static_cast<vtkIdType>(this->Storage->GetMemorySize());
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPolyDataMapper::GetUploadedBytes()
+{
+  return static_cast<vtkIdType>(this->Storage->GetUploadedBytes());
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::HasTranslucentPolygonalGeometry()
+{
+  this->UpdateOFBProducer();
+  vtkOFB* ofb = this->GetOFB();
+  if (!ofb || ofb->GetNumberOfSamples() == 0)
+  {
+    return this->Superclass::HasTranslucentPolygonalGeometry();
+  }
+  vtkOFBShaderStorage::Selection selection;
+  selection.ScalarName = this->ScalarArrayName ? this->ScalarArrayName : "";
+  selection.ScalarComponent = this->ScalarComponent;
+  if (this->ColorSource == Scalars &&
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Scalars, selection))
+  {
+    vtkScalarsToColors* lut = this->GetLookupTable();
+    lut->Build();
+    return lut->IsOpaque() == 0;
+  }
+  return this->HasTranslucentColors(ofb);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::HasTranslucentColors(vtkOFB* ofb)
+{
+  vtkOFBShaderStorage::Selection selection;
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Colors, selection));
+  if (!colors || colors->GetNumberOfComponents() != 4)
+  {
+    return false;
+  }
+  const vtkIdType n = std::min(colors->GetNumberOfTuples(), ofb->GetNumberOfSamples());
+  const unsigned char* rgba = colors->GetPointer(0);
+  // First sample of [first, last) with alpha below 255, or -1.
+  auto findTranslucent = [rgba](vtkIdType first, vtkIdType last) -> vtkIdType {
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      if (rgba[4 * i + 3] != 255)
+      {
+        return i;
+      }
+    }
+    return -1;
+  };
+  const bool changed = ofb != this->AlphaOFB || colors != this->AlphaColors ||
+    ofb->GetStructureMTime() > this->AlphaTime.GetMTime() ||
+    colors->GetMTime() > this->AlphaTime.GetMTime();
+  vtkNew<vtkIdTypeArray> ranges;
+  if (!changed)
+  {
+    ofb->GetSampleRangesModifiedSince(this->AlphaTime.GetMTime(), ranges);
+    if (ranges->GetNumberOfTuples() == 0)
+    {
+      return this->AlphaTranslucent;
+    }
+  }
+  vtkIdType found = -1;
+  if (!changed && !this->AlphaTranslucent)
+  {
+    // Opaque so far: only the modified samples can have made it translucent.
+    for (vtkIdType r = 0; r < ranges->GetNumberOfTuples() && found < 0; ++r)
+    {
+      found = findTranslucent(std::max<vtkIdType>(0, ranges->GetTypedComponent(r, 0)),
+        std::min(n, ranges->GetTypedComponent(r, 1)));
+    }
+  }
+  else
+  {
+    // A full scan, from where the last translucent sample was (likely still translucent).
+    const vtkIdType hint = std::min(std::max<vtkIdType>(this->AlphaHint, 0), n);
+    found = findTranslucent(hint, n);
+    if (found < 0)
+    {
+      found = findTranslucent(0, hint);
+    }
+  }
+  this->AlphaOFB = ofb;
+  this->AlphaColors = colors;
+  this->AlphaTime.Modified();
+  this->AlphaTranslucent = found >= 0;
+  this->AlphaHint = found >= 0 ? found : 0;
+  return this->AlphaTranslucent;
 }
 
 //------------------------------------------------------------------------------
@@ -195,7 +307,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
-vtkOFB* vtkOFBPolyDataMapper::UpdateOFBInput()
+void vtkOFBPolyDataMapper::UpdateOFBProducer()
 {
   if (this->GetNumberOfInputConnections(1) > 0)
   {
@@ -205,6 +317,12 @@ vtkOFB* vtkOFBPolyDataMapper::UpdateOFBInput()
       producer->Update();
     }
   }
+}
+
+//------------------------------------------------------------------------------
+vtkOFB* vtkOFBPolyDataMapper::UpdateOFBInput()
+{
+  this->UpdateOFBProducer();
   vtkOFB* ofb = this->GetOFB();
   if (ofb != this->WarnedOFB || this->GetMTime() > this->WarnedMTime)
   {
@@ -369,7 +487,7 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
   {
     this->DeepCells = this->Storage->GetMaximumCellSamples() > DeepCellSamples;
     key << this->LookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity << "|"
-        << this->UseNormals << "|" << this->DeepCells;
+        << this->UseNormals << "|" << this->DeepCells << "|" << this->LICColorMode;
   }
   if (key.str() != this->ShaderKey)
   {
@@ -441,7 +559,8 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(
     std::ostringstream defines;
     defines << "//VTK::Color::Dec\n"
             << "#define OFB_MODE " << this->LookupMode << "\n"
-            << "#define OFB_MAX_LEVELS " << vtkOFBShaderStorage::MaximumNumberOfLevels << "\n";
+            << "#define OFB_MAX_LEVELS " << vtkOFBShaderStorage::MaximumNumberOfLevels << "\n"
+            << "#define OFB_LIC_MODE " << this->LICColorMode << "\n";
     const std::pair<bool, const char*> flags[] = { { this->SourceScalars, "OFB_SOURCE_SCALARS" },
       { this->UseIntensity, "OFB_USE_INTENSITY" }, { this->UseNormals, "OFB_USE_NORMALS" },
       { this->DeepCells, "OFB_DEEP_CELLS" } };
@@ -547,6 +666,8 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(
   if (this->UseIntensity)
   {
     program->SetUniformf("ofbIntensityWeight", static_cast<float>(this->IntensityWeight));
+    program->SetUniformf("ofbLICIntensity", static_cast<float>(this->LICIntensity));
+    program->SetUniformf("ofbMapModeBias", static_cast<float>(this->MapModeBias));
   }
   if (this->UseNormals && program->IsUniformUsed("ofbNormalMatrix"))
   {
@@ -597,8 +718,12 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "IntensityModulation: " << (this->IntensityModulation ? "On" : "Off") << "\n";
   os << indent << "IntensityWeight: " << this->IntensityWeight << "\n";
+  os << indent << "LICColorMode: " << GetLICColorModeAsString(this->LICColorMode) << "\n";
+  os << indent << "LICIntensity: " << this->LICIntensity << "\n";
+  os << indent << "MapModeBias: " << this->MapModeBias << "\n";
   os << indent << "UsePaintedNormals: " << (this->UsePaintedNormals ? "On" : "Off") << "\n";
   os << indent << "LastUploadedSampleCount: " << this->LastUploadedSampleCount << "\n";
   os << indent << "LastRenderUsedOFB: " << (this->LastRenderUsedOFB ? "true" : "false") << "\n";
   os << indent << "GPUMemorySize: " << this->Storage->GetMemorySize() << " bytes\n";
+  os << indent << "UploadedBytes: " << this->Storage->GetUploadedBytes() << "\n";
 }

@@ -166,23 +166,70 @@ vtkIdType vtkOFBShaderStorage::UploadChanges(const Selection& selection, std::st
   }
   else
   {
+    const unsigned int whole = this->UploadChangedArrays(selection, count);
     ofb->GetSampleRangesModifiedSince(this->UploadTime.GetMTime(), this->Ranges);
-    count = this->UploadRanges(this->Levels, 0, selection, this->Ranges);
+    count += this->UploadRanges(this->Levels, 0, selection, this->Ranges, AllArrays & ~whole);
     if (mipmapped)
     {
-      count += this->UploadCoarseLevels(selection);
+      count += this->UploadCoarseLevels(selection, whole != 0);
     }
   }
+  this->RecordArrays(selection);
   this->UploadedPyramidTime = this->Pyramid->GetStructureTime();
   this->UploadTime.Modified();
   return count;
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection)
+unsigned int vtkOFBShaderStorage::UploadChangedArrays(
+  const Selection& selection, vtkIdType& count)
 {
-  // Level 0 changed since the last upload: filter the coarser levels' colours again.
-  if (this->Ranges->GetNumberOfTuples() > 0 &&
+  vtkOFB* ofb = this->Levels[0];
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  const int base = this->LevelSampleBase.empty() ? 0 : this->LevelSampleBase[0];
+  const int ids[3] = { Samples, Intensity, Normals };
+  const bool wanted[3] = { true, !selection.IntensityName.empty(), selection.Normals };
+  unsigned int whole = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkDataArray* array = !wanted[k] ? nullptr
+      : GetArray(ofb, ids[k] == Samples ? (selection.Colors ? Colors : Scalars) : ids[k],
+          selection);
+    if (!array ||
+      (array == this->UploadedArrays[ids[k]] &&
+        array->GetMTime() <= this->UploadTime.GetMTime()))
+    {
+      continue;
+    }
+    if (ids[k] == Samples)
+    {
+      this->UploadSamples(ofb, array, selection, 0, n, base);
+    }
+    else
+    {
+      this->UploadArray(ids[k], array, 0, n, base);
+    }
+    whole |= 1u << ids[k];
+    count = n;
+  }
+  return whole;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::RecordArrays(const Selection& selection)
+{
+  vtkOFB* ofb = this->Levels[0];
+  this->UploadedArrays[Samples] = GetArray(ofb, selection.Colors ? Colors : Scalars, selection);
+  this->UploadedArrays[Intensity] =
+    selection.IntensityName.empty() ? nullptr : GetArray(ofb, Intensity, selection);
+  this->UploadedArrays[Normals] = selection.Normals ? GetArray(ofb, Normals, selection) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection, bool arraysChanged)
+{
+  // Level 0 changed since the last upload: filter the coarser levels' attributes again.
+  if ((arraysChanged || this->Ranges->GetNumberOfTuples() > 0) &&
     this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
   {
     this->Pyramid->UpdateArrays();
@@ -390,6 +437,7 @@ void vtkOFBShaderStorage::Upload(int id, size_t offset, size_t bytes, const void
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handles[id]);
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
     static_cast<GLsizeiptr>(bytes), data);
+  this->UploadedBytes += bytes;
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
@@ -557,17 +605,23 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
 
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels, int level,
-  const Selection& selection, vtkIdTypeArray* ranges)
+  const Selection& selection, vtkIdTypeArray* ranges, unsigned int buffers)
 {
+  if (!(buffers & AllArrays))
+  {
+    return 0;
+  }
   if (level < 0 || level >= static_cast<int>(levels.size()) ||
     level >= static_cast<int>(this->LevelSampleBase.size()) || !ranges)
   {
     return 0;
   }
   vtkOFB* ofb = levels[level];
+  const bool samples = (buffers & (1u << Samples)) != 0;
   vtkDataArray* attribute = GetArray(ofb, selection.Colors ? Colors : Scalars, selection);
   const int arrays[2] = { Intensity, Normals };
-  const bool wanted[2] = { !selection.IntensityName.empty(), selection.Normals };
+  const bool wanted[2] = { !selection.IntensityName.empty() && (buffers & (1u << Intensity)),
+    selection.Normals && (buffers & (1u << Normals)) };
   vtkDataArray* sources[2];
   for (int k = 0; k < 2; ++k)
   {
@@ -583,7 +637,10 @@ vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels, 
     {
       continue;
     }
-    this->UploadSamples(ofb, attribute, selection, first, last, this->LevelSampleBase[level]);
+    if (samples)
+    {
+      this->UploadSamples(ofb, attribute, selection, first, last, this->LevelSampleBase[level]);
+    }
     for (int k = 0; k < 2; ++k)
     {
       this->UploadArray(arrays[k], sources[k], first, last, this->LevelSampleBase[level]);

@@ -74,6 +74,9 @@ public:
     Scalars
   };
 
+  /// Bit masks of the per-sample buffers that hold attributes (UploadRanges).
+  static constexpr unsigned int AllArrays = (1u << Samples) | (1u << Intensity) | (1u << Normals);
+
   /// Most levels a storage holds (size of the shader's per-level uniform arrays).
   static constexpr int MaximumNumberOfLevels = 16;
 
@@ -110,9 +113,11 @@ public:
    * coarsest with `minimumResolution` cells on its longest side). Returns false when the
    * pyramid could not be built (level 0 alone is used then).
    *
-   * UploadChanges: upload every level on a structure or selection change, else level 0's
-   * sample ranges modified since the last upload (and the pyramid's levels when their
-   * colours were filtered again). Returns the number of samples sent, -1 on failure
+   * UploadChanges: upload every level on a structure or selection change; else, of level 0,
+   * each selected array that is new or was Modified() since the last upload as a whole
+   * (a re-convolved LIC array alone), then the sample ranges marked modified since
+   * (vtkOFB::MarkSamplesModified) of the other arrays (and the pyramid's levels when
+   * their attributes were filtered again). Returns the number of samples sent, -1 on failure
    * (`error` says why).
    *
    * UpdateLookupTable: sample `lut` over `range` into the LUT buffer when either changed.
@@ -146,9 +151,8 @@ public:
    * Upload the selected arrays of level `level` over the sample ranges `ranges`
    * (2 components: first, last) only. Returns the number of samples uploaded.
    */
-  vtkIdType UploadRanges(
-    const std::vector<vtkOFB*>& levels, int level, const Selection& selection,
-    vtkIdTypeArray* ranges);
+  vtkIdType UploadRanges(const std::vector<vtkOFB*>& levels, int level,
+    const Selection& selection, vtkIdTypeArray* ranges, unsigned int buffers = AllArrays);
 
   /**
    * Sample `lut` at LUTSize equal steps over [range[0], range[1]] into the LUT buffer.
@@ -174,6 +178,9 @@ public:
   /// Bytes of GPU memory held.
   size_t GetMemorySize() const;
 
+  /// Bytes sent to the GPU since the storage was created.
+  size_t GetUploadedBytes() const { return this->UploadedBytes; }
+
   /**
    * Free the buffers in their window's context and forget what was uploaded, when
    * `window` is that window or null.
@@ -194,7 +201,9 @@ private:
 
   void FreeBuffers();
   void ForgetUploads();
-  vtkIdType UploadCoarseLevels(const Selection& selection);
+  vtkIdType UploadCoarseLevels(const Selection& selection, bool arraysChanged);
+  unsigned int UploadChangedArrays(const Selection& selection, vtkIdType& count);
+  void RecordArrays(const Selection& selection);
   bool Allocate(int id, size_t bytes);
   void Upload(int id, size_t offset, size_t bytes, const void* data);
   void UploadArray(int id, vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base);
@@ -216,6 +225,8 @@ private:
   vtkMTimeType UploadedPyramidTime = 0;
   vtkMTimeType UploadedLUTTime = 0;
   double UploadedLUTRange[2] = { 0.0, 0.0 };
+  size_t UploadedBytes = 0;
+  vtkWeakPointer<vtkDataArray> UploadedArrays[NumberOfBuffers]; // level 0's, per buffer
 
   unsigned int Handles[NumberOfBuffers];
   size_t Sizes[NumberOfBuffers];

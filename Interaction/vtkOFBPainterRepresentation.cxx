@@ -1,18 +1,21 @@
 #include "vtkOFBPainterRepresentation.h"
 
 #include "vtkActor.h"
-#include "vtkAppendPolyData.h"
+#include "vtkCellArray.h"
 #include "vtkCellPicker.h"
-#include "vtkLineSource.h"
+#include "vtkDataSet.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBPainter.h"
 #include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRegularPolygonSource.h"
 #include "vtkRenderer.h"
+#include "vtkStaticCellLocator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,9 +58,10 @@ vtkOFBPainterRepresentation::vtkOFBPainterRepresentation()
   , PiecePainted(false)
   , StrokePieces(0)
   , StrokeSamplesChanged(0)
-  , Ring(vtkRegularPolygonSource::New())
-  , Tick(vtkLineSource::New())
-  , CursorGeometry(vtkAppendPolyData::New())
+  , ConformCursor(true)
+  , CursorPolyData(vtkPolyData::New())
+  , PickLocator(vtkStaticCellLocator::New())
+  , PickLocatorInstalled(false)
   , CursorMapper(vtkPolyDataMapper::New())
   , CursorActor(vtkActor::New())
   , CursorProperty(vtkProperty::New())
@@ -82,11 +86,9 @@ vtkOFBPainterRepresentation::vtkOFBPainterRepresentation()
   painter->Delete();
 
   this->Picker->PickFromListOff();
-  this->Ring->GeneratePolygonOff();
-  this->Ring->GeneratePolylineOn();
-  this->CursorGeometry->AddInputConnection(this->Ring->GetOutputPort());
-  this->CursorGeometry->AddInputConnection(this->Tick->GetOutputPort());
-  this->CursorMapper->SetInputConnection(this->CursorGeometry->GetOutputPort());
+  vtkNew<vtkPoints> points;
+  this->CursorPolyData->SetPoints(points);
+  this->CursorMapper->SetInputData(this->CursorPolyData);
   this->CursorActor->SetMapper(this->CursorMapper);
   this->CursorActor->PickableOff();
   this->CursorActor->VisibilityOff();
@@ -101,9 +103,8 @@ vtkOFBPainterRepresentation::~vtkOFBPainterRepresentation()
   this->SetPainter(nullptr);
   this->SetPaintedProp(nullptr);
   this->Picker->Delete();
-  this->Ring->Delete();
-  this->Tick->Delete();
-  this->CursorGeometry->Delete();
+  this->CursorPolyData->Delete();
+  this->PickLocator->Delete();
   this->CursorMapper->Delete();
   this->CursorActor->Delete();
   this->CursorProperty->Delete();
@@ -419,6 +420,7 @@ bool vtkOFBPainterRepresentation::PickSurface(double x, double y)
   {
     return false;
   }
+  this->UpdatePickLocator();
   this->Picker->SetTolerance(this->PickTolerance);
   if (!this->Picker->Pick(x, y, 0.0, this->Renderer) || this->Picker->GetCellId() < 0)
   {
@@ -432,6 +434,35 @@ bool vtkOFBPainterRepresentation::PickSurface(double x, double y)
     this->CursorNormal[2] = 1.0;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterRepresentation::UpdatePickLocator()
+{
+  // A cell locator on the painted actor's surface: vtkCellPicker otherwise intersects the
+  // ray with every cell, and the widget picks at every mouse move.
+  vtkActor* actor = vtkActor::SafeDownCast(this->PaintedProp);
+  vtkDataSet* surface =
+    actor && actor->GetMapper() ? actor->GetMapper()->GetInputAsDataSet() : nullptr;
+  if (!surface || surface->GetNumberOfCells() == 0)
+  {
+    if (this->PickLocatorInstalled)
+    {
+      this->Picker->RemoveAllLocators();
+      this->PickLocatorInstalled = false;
+    }
+    return;
+  }
+  if (surface != this->PickLocator->GetDataSet() ||
+    surface->GetMTime() > this->PickLocator->GetMTime() || !this->PickLocatorInstalled)
+  {
+    this->PickLocator->SetDataSet(surface);
+    this->PickLocator->BuildLocator();
+    this->PickLocator->Modified();
+    this->Picker->RemoveAllLocators();
+    this->Picker->AddLocator(this->PickLocator);
+    this->PickLocatorInstalled = true;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -549,21 +580,60 @@ void vtkOFBPainterRepresentation::BuildRepresentation()
   {
     return;
   }
-  const double r = brush->GetRadius();
-  double center[3], tip[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    center[i] = this->CursorPosition[i] + this->CursorLift * r * this->CursorNormal[i];
-    tip[i] = this->CursorPosition[i] + 0.5 * r * this->CursorNormal[i];
-  }
-  this->Ring->SetNumberOfSides(this->CursorResolution);
-  this->Ring->SetCenter(center);
-  this->Ring->SetNormal(this->CursorNormal);
-  this->Ring->SetRadius(r);
-  this->Tick->SetPoint1(this->CursorPosition);
-  this->Tick->SetPoint2(tip);
+  this->BuildCursorGeometry(brush->GetRadius());
   this->UpdateCursorColor();
   this->BuildTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterRepresentation::BuildCursorGeometry(double r)
+{
+  // A ring of radius r around the cursor in the tangent plane; with ConformCursor each
+  // point moves to the nearest OFB sample (the ring then lies on the surface, where the
+  // volume brush's sphere cuts it). Lifted along the normal toward the viewer, so that the
+  // surface hides less of it, and a tick along the normal.
+  const int n = this->CursorResolution;
+  double u[3], v[3];
+  vtkMath::Perpendiculars(this->CursorNormal, u, v, 0.0);
+  vtkOFB* ofb = this->ConformCursor ? this->GetOFB() : nullptr;
+  const double lift = this->CursorLift * r + (ofb ? 0.5 * ofb->GetCellSize() : 0.0);
+  vtkPoints* points = this->CursorPolyData->GetPoints();
+  points->SetNumberOfPoints(n + 2);
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(n + 1);
+  for (int k = 0; k < n; ++k)
+  {
+    const double a = 2.0 * vtkMath::Pi() * k / n;
+    double p[3], q[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      p[i] = this->CursorPosition[i] + r * (std::cos(a) * u[i] + std::sin(a) * v[i]);
+    }
+    const vtkIdType id = ofb ? ofb->FindClosestSample(p, 0.5 * r) : -1;
+    if (id >= 0 && ofb->GetSamplePosition(id, q))
+    {
+      std::copy_n(q, 3, p);
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      p[i] += lift * this->CursorNormal[i];
+    }
+    points->SetPoint(k, p);
+    lines->InsertCellPoint(k);
+  }
+  lines->InsertCellPoint(0);
+  double tip[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    tip[i] = this->CursorPosition[i] + 0.5 * r * this->CursorNormal[i];
+  }
+  points->SetPoint(n, this->CursorPosition);
+  points->SetPoint(n + 1, tip);
+  const vtkIdType tick[2] = { n, n + 1 };
+  lines->InsertNextCell(2, tick);
+  this->CursorPolyData->SetLines(lines);
+  points->Modified();
+  this->CursorPolyData->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -623,6 +693,7 @@ void vtkOFBPainterRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumJump: " << this->MaximumJump << "\n";
   os << indent << "CursorResolution: " << this->CursorResolution << "\n";
   os << indent << "CursorLift: " << this->CursorLift << "\n";
+  os << indent << "ConformCursor: " << (this->ConformCursor ? "On" : "Off") << "\n";
   os << indent << "CursorProperty: " << this->CursorProperty << "\n";
   os << indent << "RadiusFactor: " << this->RadiusFactor << "\n";
   os << indent << "StrengthStep: " << this->StrengthStep << "\n";

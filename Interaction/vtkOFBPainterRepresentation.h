@@ -5,9 +5,10 @@
  * vtkOFBPainterRepresentation is the vtkWidgetRepresentation of vtkOFBPainterWidget. It
  * picks the surface under the mouse with a vtkCellPicker (restricted to the painted prop
  * when one is given with SetPaintedProp), shows the brush there as a ring of the brush's
- * radius in the plane of the surface (centred on the picked point, aligned with the picked
- * normal, lifted a little along it so that it is not hidden by the surface) with a short
- * tick along the normal, and paints through a vtkOFBPainter: StartWidgetInteraction begins
+ * radius around the picked point, in the plane of the surface (aligned with the picked
+ * normal) and drawn onto the surface through the OFB's samples (ConformCursor), lifted a
+ * little along the normal so that the surface hides little of it, with a short tick along
+ * the normal, and paints through a vtkOFBPainter: StartWidgetInteraction begins
  * a stroke, WidgetInteraction continues it to the surface point under the mouse (the
  * painter places dabs at its Spacing along the path), EndWidgetInteraction ends it (one
  * undo step per stroke).
@@ -42,16 +43,15 @@
 #include <vector> // for Palette
 
 class vtkActor;
-class vtkAppendPolyData;
 class vtkCellPicker;
-class vtkLineSource;
 class vtkOFB;
 class vtkOFBBrush;
 class vtkOFBPainter;
 class vtkPolyDataMapper;
+class vtkPolyData;
 class vtkProp;
 class vtkProperty;
-class vtkRegularPolygonSource;
+class vtkStaticCellLocator;
 
 class VTKOFBINTERACTION_EXPORT vtkOFBPainterRepresentation : public vtkWidgetRepresentation
 {
@@ -119,13 +119,19 @@ public:
 
   ///@{
   /**
-   * The cursor: the ring's number of sides (default 64) and its lift off the surface
-   * along the normal, as a fraction of the brush radius (default 0.05).
+   * The cursor: the ring's number of points (default 64); its lift along the normal, as
+   * a fraction of the brush radius (default 0.05; plus half a cell with ConformCursor);
+   * ConformCursor (default on) moves each ring point to the nearest OFB sample, so that
+   * the ring follows the surface where the brush's sphere cuts it, instead of lying flat
+   * in the tangent plane.
    */
   vtkSetClampMacro(CursorResolution, int, 8, 1024);
   vtkGetMacro(CursorResolution, int);
   vtkSetClampMacro(CursorLift, double, 0.0, 1.0);
   vtkGetMacro(CursorLift, double);
+  vtkSetMacro(ConformCursor, bool);
+  vtkGetMacro(ConformCursor, bool);
+  vtkBooleanMacro(ConformCursor, bool);
   ///@}
 
   /**
@@ -248,6 +254,10 @@ protected:
   bool PickSurface(double x, double y);
   // Continue the stroke to the last picked point, lifting the pen over a miss or a jump.
   void ContinueStroke(bool hit);
+  // Keep the picker's cell locator on the painted actor's surface up to date.
+  void UpdatePickLocator();
+  // The cursor's ring and tick for brush radius r.
+  void BuildCursorGeometry(double r);
   // The cursor colour for the brush's target.
   void UpdateCursorColor();
   // Undo (or redo) the painter steps of the last widget stroke.
@@ -277,9 +287,10 @@ protected:
   vtkIdType StrokeSamplesChanged;
 
   // The cursor: a ring in the surface's plane and a tick along the normal.
-  vtkRegularPolygonSource* Ring;
-  vtkLineSource* Tick;
-  vtkAppendPolyData* CursorGeometry;
+  bool ConformCursor;
+  vtkPolyData* CursorPolyData;
+  vtkStaticCellLocator* PickLocator;
+  bool PickLocatorInstalled;
   vtkPolyDataMapper* CursorMapper;
   vtkActor* CursorActor;
   vtkProperty* CursorProperty;

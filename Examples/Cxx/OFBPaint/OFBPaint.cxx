@@ -2,7 +2,7 @@
 //
 // Usage: OFBPaint [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb]
 //                 [--save paint.ofb] [--width W] [--height H]
-//                 [--strokes strokes.txt --image out.png]
+//                 [--strokes strokes.txt --image out.png] [--play events.log]
 //
 // Without a mesh it opens Testing/Data/stanford-bunny.obj of the source tree. The surface
 // is drawn by vtkOFBPolyDataMapper from an OFB built at --resolution (default 1024) and
@@ -16,8 +16,8 @@
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkCellPicker.h"
 #include "vtkCommand.h"
+#include "vtkInteractorEventRecorder.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkOFB.h"
@@ -46,6 +46,7 @@
 #include "vtkXMLPolyDataReader.h"
 #include "vtksys/SystemTools.hxx"
 
+#include <algorithm>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -96,7 +97,9 @@ void Usage(const char* argv0)
        "  --save FILE      where 's' saves and 'l' loads (default <mesh name>.ofb); the\n"
        "                   headless mode saves the painted OFB there when given\n"
        "  --strokes FILE   replay a stroke file without a window on screen (format in\n"
-       "                   Examples/Cxx/OFBPaint/ofbPaintStrokes.h), with --image OUT.png\n";
+       "                   Examples/Cxx/OFBPaint/ofbPaintStrokes.h), with --image OUT.png\n"
+       "  --play FILE      play recorded mouse and key events (vtkInteractorEventRecorder's\n"
+       "                   format) in the window, then exit: a scripted session\n";
 }
 
 bool ParseInt(const std::string& text, int low, int high, int& value)
@@ -180,7 +183,7 @@ public:
   bool Setup(const std::map<std::string, std::string>& options,
     const std::string& meshPath,
     bool headless);
-  int RunInteractive();
+  int RunInteractive(const std::string& play);
   int RunHeadless(const std::string& strokes, const std::string& image);
 
 private:
@@ -295,11 +298,7 @@ bool PaintApp::SaveOFB(const std::string& path)
 
 bool PaintApp::Screenshot(const std::string& path)
 {
-  // The picture without the help and the cursor.
-  const int help = this->Help->GetVisibility();
-  const int status = this->Status->GetVisibility();
-  this->Help->VisibilityOff();
-  this->Status->VisibilityOff();
+  // The window as it shows (hide the help with 'h' first for the picture alone).
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(this->Window);
   grab->SetInputBufferTypeToRGB();
@@ -310,8 +309,6 @@ bool PaintApp::Screenshot(const std::string& path)
   writer->SetFileName(path.c_str());
   writer->SetInputConnection(grab->GetOutputPort());
   writer->Write();
-  this->Help->SetVisibility(help);
-  this->Status->SetVisibility(status);
   const bool ok = errors->Count == 0 && SystemTools::FileExists(path, true);
   if (!ok)
   {
@@ -341,16 +338,15 @@ void PaintApp::ResetView(double azimuth, double elevation, double zoom)
 
 bool PaintApp::PickPixel(double x, double y, double p[3])
 {
-  vtkNew<vtkCellPicker> picker;
-  picker->SetTolerance(0.0005);
-  picker->PickFromListOn();
-  picker->AddPickList(this->Actor);
+  // The widget's picker, with its cell locator on the surface.
   const int height = this->Window->GetSize()[1];
-  if (!picker->Pick(x, height - 1 - y, 0.0, this->Renderer) || picker->GetCellId() < 0)
+  vtkOFBPainterRepresentation* rep = this->Widget->GetPainterRepresentation();
+  if (rep->ComputeInteractionState(static_cast<int>(x), static_cast<int>(height - 1 - y)) !=
+    vtkOFBPainterRepresentation::OnSurface)
   {
     return false;
   }
-  picker->GetPickPosition(p);
+  rep->GetCursorPosition(p);
   return true;
 }
 }
@@ -375,7 +371,27 @@ void PaintApp::UpdateTexts(const std::string& message)
        << "    l  load it    p  "
           "screenshot (PNG)\nr  reset the view    h  hide this help    q  quit";
   this->Help->SetInput(help.str().c_str());
-  const std::string status = rep->GetBrushDescription() + (message.empty() ? "" : "\n" + message);
+  // The brush in two lines: size, strength and colour; falloff, target and blend mode.
+  vtkOFBBrush* brush = rep->GetBrush();
+  const double* c = brush->GetColor();
+  double named[4];
+  const bool isPalette =
+    rep->GetPaletteColor(rep->GetPaletteIndex(), named) && std::equal(named, named + 4, c);
+  std::ostringstream line;
+  line << std::setprecision(3) << "radius " << brush->GetRadius() / this->OFB->GetCellSize()
+       << " cells   strength " << brush->GetStrength() << "   colour ";
+  if (isPalette && rep->GetPaletteIndex() < 9)
+  {
+    line << rep->GetPaletteIndex() + 1 << " " << PaletteNames[rep->GetPaletteIndex()];
+  }
+  else
+  {
+    line << std::setprecision(2) << c[0] << " " << c[1] << " " << c[2] << " " << c[3];
+  }
+  line << "\nfalloff " << vtkOFBBrush::GetFalloffAsString(brush->GetFalloff()) << "   target "
+       << vtkOFBBrush::GetTargetAsString(brush->GetTarget()) << "   blend "
+       << vtkOFBBrush::GetBlendModeAsString(brush->GetBlendMode());
+  const std::string status = line.str() + (message.empty() ? "" : "\n" + message);
   this->Status->SetInput(status.c_str());
 }
 
@@ -475,6 +491,7 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
 
   vtkOFBPainterRepresentation* rep = this->Widget->GetPainterRepresentation();
   rep->SetPaintedProp(this->Actor);
+  rep->SetRenderer(this->Renderer); // for the headless mode's picks (On() sets it too)
   this->Widget->SetInteractor(this->Interactor);
 
   const std::string& load = options.at("--load");
@@ -487,13 +504,15 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
   return true;
 }
 
-int PaintApp::RunInteractive()
+int PaintApp::RunInteractive(const std::string& play)
 {
   for (vtkTextActor* text : { this->Help.Get(), this->Status.Get() })
   {
     text->GetTextProperty()->SetFontSize(15);
     text->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
     text->GetTextProperty()->SetShadow(1);
+    text->GetTextProperty()->SetBackgroundColor(0.1, 0.1, 0.12);
+    text->GetTextProperty()->SetBackgroundOpacity(0.35);
     this->Renderer->AddViewProp(text);
   }
   this->Help->GetTextProperty()->SetVerticalJustificationToTop();
@@ -514,6 +533,22 @@ int PaintApp::RunInteractive()
   this->Widget->On();
   this->Interactor->Initialize();
   this->Window->Render();
+  if (!play.empty())
+  {
+    // A scripted session: the recorded events, then exit.
+    vtkNew<ErrorCounter> errors;
+    vtkNew<vtkInteractorEventRecorder> recorder;
+    recorder->AddObserver(vtkCommand::ErrorEvent, errors);
+    recorder->SetInteractor(this->Interactor);
+    recorder->SetFileName(play.c_str());
+    recorder->Play();
+    if (errors->Count > 0)
+    {
+      std::cerr << "OFBPaint: cannot play '" << play << "': " << errors->Last << "\n";
+      return EXIT_FAILURE;
+    }
+    return EXIT_SUCCESS;
+  }
   this->Interactor->Start();
   return EXIT_SUCCESS;
 }
@@ -561,7 +596,8 @@ int main(int argc, char* argv[])
     { "--width", "1200" },
     { "--height", "900" },
     { "--strokes", "" },
-    { "--image", "" } };
+    { "--image", "" },
+    { "--play", "" } };
   std::string meshPath;
   for (int i = 1; i < argc; ++i)
   {
@@ -599,5 +635,5 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   return headless ? app.RunHeadless(options["--strokes"], options["--image"])
-                  : app.RunInteractive();
+                  : app.RunInteractive(options["--play"]);
 }

@@ -1,8 +1,13 @@
 #include "ofbPaintStrokes.h"
 
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBPainter.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 
 #include <algorithm>
 #include <cctype>
@@ -102,16 +107,21 @@ private:
 bool Replay::Point(const double p[3], double pressure)
 {
   ++this->Statistics.Points;
-  this->Statistics.SamplesChanged += this->InStroke ? this->Painter->StrokeTo(p, pressure)
-                                                    : [&]
+  if (this->InStroke)
   {
-    // A single dab: the pressure scales the strength as it does in a stroke.
-    const double strength = this->Brush->GetStrength();
-    this->Brush->SetStrength(strength * pressure);
-    const vtkIdType changed = this->Painter->Dab(p);
-    this->Brush->SetStrength(strength);
-    return changed;
-  }();
+    this->Statistics.SamplesChanged += this->Painter->StrokeTo(p, pressure);
+    return true;
+  }
+  // A single dab, with its pressure as the painter's per-dab "Pressure" array.
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(p);
+  vtkNew<vtkDoubleArray> pressures;
+  pressures->SetName("Pressure");
+  pressures->InsertNextValue(pressure);
+  vtkNew<vtkPolyData> dab;
+  dab->SetPoints(points);
+  dab->GetPointData()->AddArray(pressures);
+  this->Statistics.SamplesChanged += this->Painter->Dabs(dab);
   return true;
 }
 

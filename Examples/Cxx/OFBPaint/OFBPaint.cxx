@@ -499,7 +499,8 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
   {
     return false;
   }
-  rep->GetBrush()->SetRadiusInCells(8.0, this->OFB);
+  // A brush of 1.5 % of the surface's diagonal, whatever the OFB's resolution.
+  rep->GetBrush()->SetRadius(0.015 * this->Surface->GetLength());
   this->ResetView(0.0, 0.0, 1.0);
   return true;
 }

@@ -25,7 +25,8 @@
  *   alpha).
  * - `1` to `9`: palette colour 1 to 9; `c`: next palette colour.
  * - `u` or Ctrl+Z: undo the last stroke; `U` (Shift+U), Ctrl+Y or Ctrl+Shift+Z: redo.
- * Other keys go to the interactor style (`r` resets the camera, `q` quits, ...).
+ * Other keys go to the interactor style (`r` resets the camera, `q` quits, ...). The
+ * widget is switched with On() and Off(): KeyPressActivation is off, so `i` is not taken.
  *
  * Events: StartInteractionEvent when a stroke starts (before its first dab),
  * InteractionEvent after each move of a stroke, EndInteractionEvent when it ends: one

@@ -1,0 +1,640 @@
+// OFBPaint: paint a surface with the mouse through its Orthogonal Fragment Buffer.
+//
+// Usage: OFBPaint [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb]
+//                 [--save paint.ofb] [--width W] [--height H]
+//                 [--strokes strokes.txt --image out.png] [--play events.log]
+//
+// Without a mesh it opens Testing/Data/stanford-bunny.obj of the source tree. The surface
+// is drawn by vtkOFBPolyDataMapper from an OFB built at --resolution (default 1024) and
+// painted with vtkOFBPainterWidget: left-drag paints, the other buttons move the camera,
+// 'h' shows the keys. With --strokes and --image it runs without a window on screen:
+// it replays the stroke file (format in ofbPaintStrokes.h) and writes the picture.
+
+#include "ofbPaintStrokes.h"
+
+#include "vtkAbstractPolyDataReader.h"
+#include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkInteractorEventRecorder.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkOFB.h"
+#include "vtkOFBBrush.h"
+#include "vtkOFBPainter.h"
+#include "vtkOFBPainterRepresentation.h"
+#include "vtkOFBPainterWidget.h"
+#include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBReader.h"
+#include "vtkOFBSampler.h"
+#include "vtkOFBWriter.h"
+#include "vtkPLYReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkTriangleFilter.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <algorithm>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace
+{
+using SystemTools = vtksys::SystemTools;
+
+const char* const PaletteNames[9] = { "red",
+  "orange",
+  "yellow",
+  "green",
+  "cyan",
+  "blue",
+  "purple",
+  "white",
+  "black" };
+
+// Counts error events and keeps the last message (VTK's text without its file and line).
+class ErrorCounter : public vtkCommand
+{
+public:
+  static ErrorCounter* New() { return new ErrorCounter; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    ++this->Count;
+    std::string text = data ? static_cast<const char*>(data) : "";
+    const std::string::size_type start = text.find("): ");
+    text = start == std::string::npos ? text : text.substr(start + 3);
+    this->Last = text.substr(0, text.find_last_not_of(" \n") + 1);
+  }
+  int Count = 0;
+  std::string Last;
+};
+
+void Usage(const char* argv0)
+{
+  std::cerr
+    << "Usage: " << argv0
+    << " [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb] [--save paint.ofb]\n"
+       "       [--width W] [--height H] [--strokes strokes.txt --image out.png]\n"
+       "Paint the surface (default stanford-bunny.obj) with the mouse; 'h' lists the keys.\n"
+       "  --resolution N   OFB cells along the longest side (default 1024)\n"
+       "  --load FILE      start from a painted OFB saved before (key 's')\n"
+       "  --save FILE      where 's' saves and 'l' loads (default <mesh name>.ofb); the\n"
+       "                   headless mode saves the painted OFB there when given\n"
+       "  --strokes FILE   replay a stroke file without a window on screen (format in\n"
+       "                   Examples/Cxx/OFBPaint/ofbPaintStrokes.h), with --image OUT.png\n"
+       "  --play FILE      play recorded mouse and key events (vtkInteractorEventRecorder's\n"
+       "                   format) in the window, then exit: a scripted session\n";
+}
+
+bool ParseInt(const std::string& text, int low, int high, int& value)
+{
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  const bool ok = !text.empty() && !*end && v >= low && v <= high;
+  value = ok ? static_cast<int>(v) : value;
+  return ok;
+}
+
+// The surface of an OBJ, PLY, STL or VTP file as triangles with point normals, or null
+// with `error` set.
+vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, std::string& error)
+{
+  const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (!SystemTools::FileExists(path, true))
+  {
+    error = "no such file";
+    return nullptr;
+  }
+  if (ext == ".obj")
+  {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(path.c_str());
+    reader = obj;
+  }
+  else if (ext == ".ply" && vtkPLYReader::CanReadFile(path.c_str()))
+  {
+    auto ply = vtkSmartPointer<vtkPLYReader>::New();
+    ply->SetFileName(path.c_str());
+    reader = ply;
+  }
+  else if (ext == ".stl")
+  {
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(path.c_str());
+    reader = stl;
+  }
+  else if (ext == ".vtp")
+  {
+    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    vtp->SetFileName(path.c_str());
+    reader = vtp;
+  }
+  else
+  {
+    error = ext == ".ply" ? "not a readable PLY file"
+                          : "unsupported extension '" + ext + "' (use .obj, .ply, .stl or .vtp)";
+    return nullptr;
+  }
+  vtkNew<ErrorCounter> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(reader->GetOutputPort());
+  triangles->PassLinesOff();
+  triangles->PassVertsOff();
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(triangles->GetOutputPort());
+  normals->SplittingOff(); // keep the points: the OFB interpolates point arrays
+  normals->Update();
+  vtkSmartPointer<vtkPolyData> surface = normals->GetOutput();
+  if (errors->Count > 0)
+  {
+    error = errors->Last.empty() ? "the reader failed" : errors->Last;
+    return nullptr;
+  }
+  if (surface->GetNumberOfPolys() == 0)
+  {
+    error = "no polygons in the file";
+    return nullptr;
+  }
+  return surface;
+}
+
+// The application: the surface, its OFB, the window and the painter widget.
+class PaintApp
+{
+public:
+  bool Setup(const std::map<std::string, std::string>& options,
+    const std::string& meshPath,
+    bool headless);
+  int RunInteractive(const std::string& play);
+  int RunHeadless(const std::string& strokes, const std::string& image);
+
+private:
+  bool BuildOFB(int resolution);
+  bool LoadOFB(const std::string& path);
+  bool SaveOFB(const std::string& path);
+  bool Screenshot(const std::string& path);
+  void UseOFB(vtkOFB* ofb);
+  void ResetView(double azimuth, double elevation, double zoom);
+  bool PickPixel(double x, double y, double p[3]);
+  void UpdateTexts(const std::string& message);
+  static void OnKey(vtkObject*, unsigned long, void* clientData, void*);
+  static void OnWidget(vtkObject*, unsigned long event, void* clientData, void*);
+
+  std::string MeshPath;
+  std::string SavePath;
+  vtkSmartPointer<vtkPolyData> Surface;
+  vtkSmartPointer<vtkOFB> OFB;
+  vtkNew<vtkOFBPolyDataMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderWindowInteractor> Interactor;
+  vtkNew<vtkOFBPainterWidget> Widget;
+  vtkNew<vtkTextActor> Help;
+  vtkNew<vtkTextActor> Status;
+  vtkNew<vtkCallbackCommand> KeyCallback;
+  vtkNew<vtkCallbackCommand> WidgetCallback;
+  int Screenshots = 0;
+  bool SaveRequested = false; // --save given: the headless mode saves the painted OFB
+};
+
+bool PaintApp::BuildOFB(int resolution)
+{
+  vtkNew<vtkOFBSampler> sampler;
+  vtkNew<ErrorCounter> errors;
+  sampler->AddObserver(vtkCommand::ErrorEvent, errors);
+  sampler->SetInputData(this->Surface);
+  sampler->SetResolution(resolution);
+  sampler->Update();
+  vtkOFB* ofb = sampler->GetOutput();
+  if (errors->Count > 0 || !ofb || ofb->GetNumberOfSamples() == 0)
+  {
+    std::cerr << "OFBPaint: building the OFB at resolution " << resolution << " failed"
+              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+    return false;
+  }
+  this->UseOFB(ofb);
+  std::cout << "OFB: " << ofb->GetNumberOfSamples() << " samples at resolution " << resolution
+            << " (cell size " << ofb->GetCellSize() << ")\n";
+  return true;
+}
+
+void PaintApp::UseOFB(vtkOFB* ofb)
+{
+  this->OFB = ofb;
+  this->Mapper->SetOFB(ofb);
+  this->Widget->GetPainterRepresentation()->SetOFB(ofb);
+}
+
+bool PaintApp::LoadOFB(const std::string& path)
+{
+  vtkNew<vtkOFBReader> reader;
+  vtkNew<ErrorCounter> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkOFB* ofb = reader->GetOutput();
+  if (errors->Count > 0 || !ofb || ofb->GetNumberOfSamples() == 0)
+  {
+    std::cerr << "OFBPaint: cannot load '" << path << "'"
+              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+    return false;
+  }
+  // An OFB of another surface would colour this one with unrelated paint: its frame is the
+  // surface's bounds padded by a cell and rounded up to whole cells.
+  const double* b = this->Surface->GetBounds();
+  const double* origin = ofb->GetOrigin();
+  const vtkIdType* dims = ofb->GetDimensions();
+  const double s = ofb->GetCellSize();
+  for (int a = 0; a < 3; ++a)
+  {
+    const double high = origin[a] + dims[a] * s;
+    if (b[2 * a] < origin[a] || b[2 * a + 1] > high || b[2 * a] - origin[a] > 2.0 * s ||
+      high - b[2 * a + 1] > 3.0 * s)
+    {
+      std::cerr << "OFBPaint: '" << path << "' was not built from this surface\n";
+      return false;
+    }
+  }
+  vtkSmartPointer<vtkOFB> copy = ofb; // keep it past the reader
+  this->UseOFB(copy);
+  std::cout << "Loaded " << path << " (" << ofb->GetNumberOfSamples() << " samples)\n";
+  return true;
+}
+
+bool PaintApp::SaveOFB(const std::string& path)
+{
+  vtkNew<vtkOFBWriter> writer;
+  vtkNew<ErrorCounter> errors;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer->SetInputData(this->OFB);
+  writer->SetFileName(path.c_str());
+  const bool ok = writer->Write() == 1 && errors->Count == 0;
+  if (!ok)
+  {
+    std::cerr << "OFBPaint: cannot save '" << path << "'"
+              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+  }
+  return ok;
+}
+
+bool PaintApp::Screenshot(const std::string& path)
+{
+  // The window as it shows (hide the help with 'h' first for the picture alone).
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(this->Window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  vtkNew<ErrorCounter> errors;
+  vtkNew<vtkPNGWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  const bool ok = errors->Count == 0 && SystemTools::FileExists(path, true);
+  if (!ok)
+  {
+    std::cerr << "OFBPaint: cannot write '" << path << "'"
+              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+  }
+  return ok;
+}
+
+// The default view looks at the front of the model (the bunny's face: y up, head toward
+// -x), turned by `azimuth` and `elevation` degrees and zoomed by `zoom`.
+void PaintApp::ResetView(double azimuth, double elevation, double zoom)
+{
+  double center[3];
+  this->Surface->GetCenter(center);
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  camera->SetFocalPoint(center);
+  camera->SetPosition(center[0], center[1], center[2] + 1.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->Azimuth(-35.0 + azimuth);
+  camera->Elevation(10.0 + elevation);
+  camera->OrthogonalizeViewUp();
+  this->Renderer->ResetCamera();
+  camera->Zoom(1.2 * zoom);
+  this->Window->Render();
+}
+
+bool PaintApp::PickPixel(double x, double y, double p[3])
+{
+  // The widget's picker, with its cell locator on the surface.
+  const int height = this->Window->GetSize()[1];
+  vtkOFBPainterRepresentation* rep = this->Widget->GetPainterRepresentation();
+  if (rep->ComputeInteractionState(static_cast<int>(x), static_cast<int>(height - 1 - y)) !=
+    vtkOFBPainterRepresentation::OnSurface)
+  {
+    return false;
+  }
+  rep->GetCursorPosition(p);
+  return true;
+}
+}
+
+namespace
+{
+void PaintApp::UpdateTexts(const std::string& message)
+{
+  vtkOFBPainterRepresentation* rep = this->Widget->GetPainterRepresentation();
+  std::ostringstream help;
+  help << "Left-drag on the surface: paint    other buttons: camera\n"
+          "+ / -  brush radius      ] / [  strength\n"
+          "f  falloff    t  target (colour, normal, smear)    b  blend mode\n"
+          "1-9  colour:";
+  for (int i = 0; i < 9; ++i)
+  {
+    help << " " << i + 1 << " " << PaletteNames[i];
+  }
+  help << "\nc  next colour    u or Ctrl+Z  undo    U or Ctrl+Y  redo\n"
+          "s  save "
+       << SystemTools::GetFilenameName(this->SavePath)
+       << "    l  load it    p  "
+          "screenshot (PNG)\nr  reset the view    h  hide this help    q  quit";
+  this->Help->SetInput(help.str().c_str());
+  // The brush in two lines: size, strength and colour; falloff, target and blend mode.
+  vtkOFBBrush* brush = rep->GetBrush();
+  const double* c = brush->GetColor();
+  double named[4];
+  const bool isPalette =
+    rep->GetPaletteColor(rep->GetPaletteIndex(), named) && std::equal(named, named + 4, c);
+  std::ostringstream line;
+  line << std::setprecision(3) << "radius " << brush->GetRadius() / this->OFB->GetCellSize()
+       << " cells   strength " << brush->GetStrength() << "   colour ";
+  if (isPalette && rep->GetPaletteIndex() < 9)
+  {
+    line << rep->GetPaletteIndex() + 1 << " " << PaletteNames[rep->GetPaletteIndex()];
+  }
+  else
+  {
+    line << std::setprecision(2) << c[0] << " " << c[1] << " " << c[2] << " " << c[3];
+  }
+  line << "\nfalloff " << vtkOFBBrush::GetFalloffAsString(brush->GetFalloff()) << "   target "
+       << vtkOFBBrush::GetTargetAsString(brush->GetTarget()) << "   blend "
+       << vtkOFBBrush::GetBlendModeAsString(brush->GetBlendMode());
+  const std::string status = line.str() + (message.empty() ? "" : "\n" + message);
+  this->Status->SetInput(status.c_str());
+}
+
+void PaintApp::OnWidget(vtkObject*, unsigned long event, void* clientData, void*)
+{
+  auto* self = static_cast<PaintApp*>(clientData);
+  vtkOFBPainterRepresentation* rep = self->Widget->GetPainterRepresentation();
+  std::string message;
+  if (event == vtkCommand::EndInteractionEvent)
+  {
+    message = "stroke: " + std::to_string(rep->GetStrokeSamplesChanged()) + " samples painted";
+  }
+  self->UpdateTexts(message);
+}
+
+void PaintApp::OnKey(vtkObject*, unsigned long, void* clientData, void*)
+{
+  auto* self = static_cast<PaintApp*>(clientData);
+  if (self->Widget->IsPainting() || self->Interactor->GetControlKey())
+  {
+    return;
+  }
+  std::string message;
+  switch (self->Interactor->GetKeyCode())
+  {
+    case 'h':
+      self->Help->SetVisibility(!self->Help->GetVisibility());
+      break;
+    case 's':
+      message = self->SaveOFB(self->SavePath) ? "saved " + self->SavePath
+                                              : "could not save " + self->SavePath;
+      break;
+    case 'l':
+      message = self->LoadOFB(self->SavePath) ? "loaded " + self->SavePath
+                                              : "could not load " + self->SavePath;
+      break;
+    case 'p':
+    {
+      std::ostringstream name;
+      name << "ofbpaint-" << std::setw(3) << std::setfill('0') << self->Screenshots++ << ".png";
+      message =
+        self->Screenshot(name.str()) ? "wrote " + name.str() : "could not write " + name.str();
+      break;
+    }
+    case 'r':
+      self->ResetView(0.0, 0.0, 1.0);
+      break;
+    default:
+      return; // the widget's keys and the interactor style's
+  }
+  self->KeyCallback->SetAbortFlag(1);
+  self->UpdateTexts(message);
+  self->Window->Render();
+}
+
+bool PaintApp::Setup(const std::map<std::string, std::string>& options,
+  const std::string& meshPath,
+  bool headless)
+{
+  this->MeshPath = meshPath;
+  std::string error;
+  this->Surface = ReadSurface(meshPath, error);
+  if (!this->Surface)
+  {
+    std::cerr << "OFBPaint: cannot read '" << meshPath << "': " << error << "\n";
+    return false;
+  }
+  int resolution = 0, width = 0, height = 0;
+  if (!ParseInt(options.at("--resolution"), 8, 8192, resolution) ||
+    !ParseInt(options.at("--width"), 64, 8192, width) ||
+    !ParseInt(options.at("--height"), 64, 8192, height))
+  {
+    std::cerr << "OFBPaint: --resolution must be in [8, 8192], --width and --height in "
+                 "[64, 8192]\n";
+    return false;
+  }
+  this->SaveRequested = !options.at("--save").empty();
+  this->SavePath = options.at("--save").empty()
+    ? SystemTools::GetFilenameWithoutLastExtension(meshPath) + ".ofb"
+    : options.at("--save");
+
+  this->Mapper->SetInputData(this->Surface);
+  this->Mapper->UsePaintedNormalsOn(); // the normal target's bumps show in the shading
+  this->Actor->SetMapper(this->Mapper);
+  this->Actor->GetProperty()->SetAmbient(0.2);
+  this->Actor->GetProperty()->SetDiffuse(0.8);
+  this->Actor->GetProperty()->SetSpecular(0.15);
+  this->Renderer->AddActor(this->Actor);
+  this->Renderer->GradientBackgroundOn();
+  this->Renderer->SetBackground(0.42, 0.45, 0.5);
+  this->Renderer->SetBackground2(0.82, 0.84, 0.88);
+  this->Window->AddRenderer(this->Renderer);
+  this->Window->SetSize(width, height);
+  this->Window->SetWindowName("OFBPaint");
+  this->Window->SetOffScreenRendering(headless);
+  this->Interactor->SetRenderWindow(this->Window);
+
+  vtkOFBPainterRepresentation* rep = this->Widget->GetPainterRepresentation();
+  rep->SetPaintedProp(this->Actor);
+  rep->SetRenderer(this->Renderer); // for the headless mode's picks (On() sets it too)
+  this->Widget->SetInteractor(this->Interactor);
+
+  const std::string& load = options.at("--load");
+  if (!(load.empty() ? this->BuildOFB(resolution) : this->LoadOFB(load)))
+  {
+    return false;
+  }
+  // A brush of 1.5 % of the surface's diagonal, whatever the OFB's resolution.
+  rep->GetBrush()->SetRadius(0.015 * this->Surface->GetLength());
+  this->ResetView(0.0, 0.0, 1.0);
+  return true;
+}
+
+int PaintApp::RunInteractive(const std::string& play)
+{
+  for (vtkTextActor* text : { this->Help.Get(), this->Status.Get() })
+  {
+    text->GetTextProperty()->SetFontSize(15);
+    text->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+    text->GetTextProperty()->SetShadow(1);
+    text->GetTextProperty()->SetBackgroundColor(0.1, 0.1, 0.12);
+    text->GetTextProperty()->SetBackgroundOpacity(0.35);
+    this->Renderer->AddViewProp(text);
+  }
+  this->Help->GetTextProperty()->SetVerticalJustificationToTop();
+  this->Help->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  this->Help->SetPosition(0.01, 0.985);
+  this->Status->SetPosition(10, 10);
+
+  this->KeyCallback->SetCallback(PaintApp::OnKey);
+  this->KeyCallback->SetClientData(this);
+  this->Interactor->AddObserver(vtkCommand::CharEvent, this->KeyCallback, 1.0);
+  this->WidgetCallback->SetCallback(PaintApp::OnWidget);
+  this->WidgetCallback->SetClientData(this);
+  for (unsigned long e : { vtkCommand::EndInteractionEvent, vtkCommand::WidgetModifiedEvent })
+  {
+    this->Widget->AddObserver(e, this->WidgetCallback);
+  }
+  this->UpdateTexts("");
+  this->Widget->On();
+  this->Interactor->Initialize();
+  this->Window->Render();
+  if (!play.empty())
+  {
+    // A scripted session: the recorded events, then exit.
+    vtkNew<ErrorCounter> errors;
+    vtkNew<vtkInteractorEventRecorder> recorder;
+    recorder->AddObserver(vtkCommand::ErrorEvent, errors);
+    recorder->SetInteractor(this->Interactor);
+    recorder->SetFileName(play.c_str());
+    recorder->Play();
+    if (errors->Count > 0)
+    {
+      std::cerr << "OFBPaint: cannot play '" << play << "': " << errors->Last << "\n";
+      return EXIT_FAILURE;
+    }
+    return EXIT_SUCCESS;
+  }
+  this->Interactor->Start();
+  return EXIT_SUCCESS;
+}
+
+int PaintApp::RunHeadless(const std::string& strokes, const std::string& image)
+{
+  ofbpaint::StrokeStatistics statistics;
+  std::string error;
+  const bool ok = ofbpaint::ReplayStrokes(
+    strokes,
+    this->Widget->GetPainterRepresentation()->GetPainter(),
+    [this](double x, double y, double p[3]) { return this->PickPixel(x, y, p); },
+    [this](double azimuth, double elevation, double zoom)
+    { this->ResetView(azimuth, elevation, zoom); },
+    statistics,
+    error);
+  if (!ok)
+  {
+    std::cerr << "OFBPaint: " << error << "\n";
+    return EXIT_FAILURE;
+  }
+  std::cout << "Replayed " << strokes << ": " << statistics.Strokes << " strokes, "
+            << statistics.Points << " points (" << statistics.SkippedPoints
+            << " pixel points off the surface skipped), " << statistics.SamplesChanged
+            << " samples changed\n";
+  this->Window->Render();
+  if (!this->Screenshot(image))
+  {
+    return EXIT_FAILURE;
+  }
+  std::cout << "Wrote " << image << "\n";
+  if (this->SaveRequested && !this->SaveOFB(this->SavePath))
+  {
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  std::map<std::string, std::string> options = { { "--resolution", "1024" },
+    { "--load", "" },
+    { "--save", "" },
+    { "--width", "1200" },
+    { "--height", "900" },
+    { "--strokes", "" },
+    { "--image", "" },
+    { "--play", "" } };
+  std::string meshPath;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help")
+    {
+      Usage(argv[0]);
+      return EXIT_SUCCESS;
+    }
+    if (options.count(arg) && i + 1 < argc)
+    {
+      options[arg] = argv[++i];
+    }
+    else if (!arg.empty() && arg[0] != '-' && meshPath.empty())
+    {
+      meshPath = arg;
+    }
+    else
+    {
+      std::cerr << "OFBPaint: unexpected argument '" << arg << "'\n";
+      Usage(argv[0]);
+      return EXIT_FAILURE;
+    }
+  }
+  const bool headless = !options["--strokes"].empty() || !options["--image"].empty();
+  if (headless && (options["--strokes"].empty() || options["--image"].empty()))
+  {
+    std::cerr << "OFBPaint: --strokes and --image go together\n";
+    return EXIT_FAILURE;
+  }
+  meshPath = meshPath.empty() ? VTKOFB_DATA_DIR "/stanford-bunny.obj" : meshPath;
+  PaintApp app;
+  if (!app.Setup(options, meshPath, headless))
+  {
+    return EXIT_FAILURE;
+  }
+  return headless ? app.RunHeadless(options["--strokes"], options["--image"])
+                  : app.RunInteractive(options["--play"]);
+}

@@ -1,0 +1,62 @@
+// ofbPaintCheckImage: count the pixels of a PNG whose colour is dominated by one channel,
+// for the test of OFBPaint's headless mode (does the picture show the paint?).
+//
+// Usage: ofbPaintCheckImage IMAGE.png red|green|blue MIN [MAX]
+//
+// A pixel counts when its channel is at least 60 and at least 1.8 times each of the other
+// two (shaded paint of that colour; not the grey background, nor white or grey surface).
+// Exits 0 when the count is in [MIN, MAX] (MAX default unbounded), 1 otherwise.
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+int main(int argc, char* argv[])
+{
+  if (argc < 4 || argc > 5)
+  {
+    std::cerr << "Usage: " << argv[0] << " IMAGE.png red|green|blue MIN [MAX]\n";
+    return EXIT_FAILURE;
+  }
+  const std::string channelName = argv[2];
+  const int channel =
+    channelName == "red" ? 0 : (channelName == "green" ? 1 : (channelName == "blue" ? 2 : -1));
+  const long long low = std::atoll(argv[3]);
+  const long long high = argc == 5 ? std::atoll(argv[4]) : -1;
+  vtkNew<vtkPNGReader> reader;
+  if (channel < 0 || !reader->CanReadFile(argv[1]))
+  {
+    std::cerr << "ofbPaintCheckImage: "
+              << (channel < 0 ? "bad channel '" + channelName + "'"
+                              : std::string("cannot read '") + argv[1] + "'")
+              << "\n";
+    return EXIT_FAILURE;
+  }
+  reader->SetFileName(argv[1]);
+  reader->Update();
+  auto* pixels =
+    vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetScalars());
+  if (!pixels || pixels->GetNumberOfComponents() < 3)
+  {
+    std::cerr << "ofbPaintCheckImage: '" << argv[1] << "' is not an RGB image\n";
+    return EXIT_FAILURE;
+  }
+  long long count = 0;
+  for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
+  {
+    const double c = pixels->GetTypedComponent(i, channel);
+    const double o1 = pixels->GetTypedComponent(i, (channel + 1) % 3);
+    const double o2 = pixels->GetTypedComponent(i, (channel + 2) % 3);
+    count += c >= 60.0 && c >= 1.8 * o1 && c >= 1.8 * o2;
+  }
+  const bool ok = count >= low && (high < 0 || count <= high);
+  std::cout << argv[1] << ": " << count << " " << channelName << " pixels of "
+            << pixels->GetNumberOfTuples() << " (expected " << low << " to "
+            << (high < 0 ? std::string("any") : std::to_string(high)) << ")\n";
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

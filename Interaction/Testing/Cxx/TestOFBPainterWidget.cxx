@@ -1,0 +1,478 @@
+// vtkOFBPainterWidget: a recorded stroke over the bunny, the keys, pen lifts and bad set-ups.
+#include "vtkOFBTestUtilities.h"
+
+#include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCellPicker.h"
+#include "vtkInteractorEventRecorder.h"
+#include "vtkMath.h"
+#include "vtkOFBBrush.h"
+#include "vtkOFBPainter.h"
+#include "vtkOFBPainterRepresentation.h"
+#include "vtkOFBPainterWidget.h"
+#include "vtkOFBPolyDataMapper.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace vtkofbtest;
+
+namespace
+{
+const int WindowSize = 300;
+const double RadiusInCells = 4.0;
+
+// Counts the widget's events and copies the OFB's colours when a stroke ends.
+struct EventLog
+{
+  int Start = 0;
+  int Interaction = 0;
+  int End = 0;
+  int Modified = 0;
+  vtkOFB* OFB = nullptr;
+  vtkRenderWindowInteractor* Interactor = nullptr;
+  bool Render = false; // whether frames are drawn outside strokes
+  std::vector<unsigned char> ColorsAtEnd;
+};
+
+std::vector<unsigned char> CopyColors(vtkOFB* ofb)
+{
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
+  return colors ? std::vector<unsigned char>(
+                    colors->GetPointer(0), colors->GetPointer(0) + colors->GetNumberOfValues())
+                : std::vector<unsigned char>();
+}
+
+void OnWidgetEvent(vtkObject*, unsigned long event, void* clientData, void*)
+{
+  auto* log = static_cast<EventLog*>(clientData);
+  switch (event)
+  {
+    case vtkCommand::StartInteractionEvent:
+      ++log->Start;
+      log->Interactor->SetEnableRender(false);
+      break;
+    case vtkCommand::InteractionEvent:
+      ++log->Interaction;
+      break;
+    case vtkCommand::EndInteractionEvent:
+      ++log->End;
+      log->ColorsAtEnd = CopyColors(log->OFB);
+      log->Interactor->SetEnableRender(log->Render);
+      break;
+    default:
+      ++log->Modified;
+      break;
+  }
+}
+
+// The bunny rendered through vtkOFBPolyDataMapper from its OFB, with an interactor and a
+// painter widget enabled on it (brush radius RadiusInCells cells, palette colour 1).
+struct PaintScene
+{
+  vtkSmartPointer<vtkPolyData> Bunny;
+  vtkSmartPointer<vtkOFB> OFB;
+  vtkNew<vtkOFBPolyDataMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderWindowInteractor> Interactor;
+  vtkNew<vtkOFBPainterWidget> Widget;
+  vtkNew<vtkCallbackCommand> Callback;
+  EventLog Log;
+
+  // `render`: whether the widget's Render() calls draw (the tests of the keys and of the
+  // stroke logic need no pictures, and llvmpipe frames are slow on a loaded machine). With
+  // it, the frames during a stroke are skipped all the same: the frame after the stroke
+  // uploads the samples it changed.
+  bool Setup(bool render = false)
+  {
+    this->Bunny = ReadMesh("stanford-bunny.obj");
+    if (!this->Bunny)
+    {
+      return false;
+    }
+    this->OFB = Build(this->Bunny, 512);
+    this->Mapper->SetInputData(this->Bunny);
+    this->Mapper->SetOFB(this->OFB);
+    this->Actor->SetMapper(this->Mapper);
+    this->Renderer->AddActor(this->Actor);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetSize(WindowSize, WindowSize);
+    this->Window->AddRenderer(this->Renderer);
+    this->Interactor->SetRenderWindow(this->Window);
+    this->Renderer->ResetCamera();
+    this->Window->Render();
+    this->Interactor->SetEnableRender(render);
+    this->Log.Render = render;
+
+    vtkOFBPainterRepresentation* rep = this->Widget->GetPainterRepresentation();
+    rep->SetOFB(this->OFB);
+    rep->SetPaintedProp(this->Actor);
+    rep->GetBrush()->SetRadiusInCells(RadiusInCells, this->OFB);
+    this->Widget->SetInteractor(this->Interactor);
+    this->Widget->On();
+
+    this->Log.OFB = this->OFB;
+    this->Log.Interactor = this->Interactor;
+    this->Callback->SetCallback(OnWidgetEvent);
+    this->Callback->SetClientData(&this->Log);
+    for (unsigned long e : { vtkCommand::StartInteractionEvent,
+           vtkCommand::InteractionEvent,
+           vtkCommand::EndInteractionEvent,
+           vtkCommand::WidgetModifiedEvent })
+    {
+      this->Widget->AddObserver(e, this->Callback);
+    }
+    return true;
+  }
+
+  void Event(unsigned long event,
+    int x,
+    int y,
+    char key = 0,
+    const char* sym = nullptr,
+    bool ctrl = false,
+    bool shift = false)
+  {
+    this->Interactor->SetEventInformation(x, y, ctrl, shift, key, 0, sym);
+    this->Interactor->InvokeEvent(event);
+  }
+
+  void Key(char key, const char* sym, bool ctrl = false, bool shift = false)
+  {
+    this->Event(vtkCommand::CharEvent, 150, 150, key, sym, ctrl, shift);
+  }
+
+  // The surface point under display position (x, y), as the widget picks it.
+  bool Pick(int x, int y, double p[3])
+  {
+    vtkNew<vtkCellPicker> picker;
+    picker->SetTolerance(this->Widget->GetPainterRepresentation()->GetPickTolerance());
+    picker->PickFromListOn();
+    picker->AddPickList(this->Actor);
+    if (!picker->Pick(x, y, 0.0, this->Renderer) || picker->GetCellId() < 0)
+    {
+      return false;
+    }
+    picker->GetPickPosition(p);
+    return true;
+  }
+};
+
+// The display positions of a recorded stream's events from the left button press up to
+// (not including) the release: where the stroke went.
+std::vector<std::array<int, 2>> StrokePositions(const std::string& path)
+{
+  std::ifstream in(path);
+  std::vector<std::array<int, 2>> positions;
+  std::string line;
+  bool down = false;
+  while (std::getline(in, line))
+  {
+    std::istringstream words(line);
+    std::string event;
+    std::array<int, 2> xy;
+    if (!(words >> event >> xy[0] >> xy[1]) || event[0] == '#')
+    {
+      continue;
+    }
+    down =
+      event == "LeftButtonPressEvent" ? true : (event == "LeftButtonReleaseEvent" ? false : down);
+    if (down && (event == "LeftButtonPressEvent" || event == "MouseMoveEvent"))
+    {
+      positions.push_back(xy);
+    }
+  }
+  return positions;
+}
+
+double DistanceToPolyline(const double x[3], const std::vector<std::array<double, 3>>& path)
+{
+  double best = VTK_DOUBLE_MAX;
+  for (size_t k = 0; k < path.size(); ++k)
+  {
+    const double* a = path[k].data();
+    const double* b = path[k + 1 < path.size() ? k + 1 : k].data();
+    double ab[3], ax[3];
+    vtkMath::Subtract(b, a, ab);
+    vtkMath::Subtract(x, a, ax);
+    const double len2 = vtkMath::Dot(ab, ab);
+    const double t = len2 > 0.0 ? vtkMath::ClampValue(vtkMath::Dot(ax, ab) / len2, 0.0, 1.0) : 0.0;
+    double c[3] = { a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2] };
+    best = std::min(best, std::sqrt(vtkMath::Distance2BetweenPoints(x, c)));
+  }
+  return best;
+}
+}
+
+TEST(PainterWidget, RecordedStrokePaintsAlongThePathAndUndoRestores)
+{
+  PaintScene scene;
+  ASSERT_TRUE(scene.Setup(true));
+  const std::vector<unsigned char> before = CopyColors(scene.OFB);
+  ASSERT_FALSE(before.empty());
+
+  // The surface points of the recorded path, picked as the widget picks them.
+  const std::string stream = std::string(VTKOFB_INTERACTION_DATA_DIR) + "/PainterWidgetStroke.log";
+  std::vector<std::array<double, 3>> path;
+  for (const auto& xy : StrokePositions(stream))
+  {
+    std::array<double, 3> p;
+    ASSERT_TRUE(scene.Pick(xy[0], xy[1], p.data()))
+      << "the recorded stroke stays on the bunny at (" << xy[0] << ", " << xy[1] << ")";
+    path.push_back(p);
+  }
+  ASSERT_GE(path.size(), 10u);
+
+  vtkNew<vtkInteractorEventRecorder> recorder;
+  recorder->SetInteractor(scene.Interactor);
+  recorder->SetFileName(stream.c_str());
+  recorder->Play();
+
+  // One stroke: one Start/End pair, an InteractionEvent per dragged move.
+  EXPECT_EQ(scene.Log.Start, 1);
+  EXPECT_EQ(scene.Log.End, 1);
+  EXPECT_GE(scene.Log.Interaction, static_cast<int>(path.size()));
+  EXPECT_EQ(scene.Widget->GetNumberOfStrokes(), 1);
+
+  // The paint at the stroke's end: changed along the path, nowhere farther than the radius.
+  const std::vector<unsigned char>& painted = scene.Log.ColorsAtEnd;
+  ASSERT_EQ(painted.size(), before.size());
+  const double radius = scene.Widget->GetPainterRepresentation()->GetBrush()->GetRadius();
+  const double tolerance = 1e-6 * radius;
+  vtkIdType changed = 0, outside = 0;
+  double farthest = 0.0;
+  const vtkIdType n = scene.OFB->GetNumberOfSamples();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (std::equal(before.begin() + 4 * i, before.begin() + 4 * i + 4, painted.begin() + 4 * i))
+    {
+      continue;
+    }
+    ++changed;
+    double x[3];
+    scene.OFB->GetSamplePosition(i, x);
+    const double d = DistanceToPolyline(x, path);
+    farthest = std::max(farthest, d);
+    outside += d > radius + tolerance;
+  }
+  EXPECT_GT(changed, 0);
+  EXPECT_EQ(outside, 0) << "farthest changed sample at " << farthest / radius << " radii";
+  for (const auto& p : path)
+  {
+    const vtkIdType id = scene.OFB->FindClosestSample(p.data());
+    ASSERT_GE(id, 0);
+    EXPECT_FALSE(
+      std::equal(before.begin() + 4 * id, before.begin() + 4 * id + 4, painted.begin() + 4 * id))
+      << "the sample under the path at (" << p[0] << ", " << p[1] << ", " << p[2]
+      << ") kept its colour";
+  }
+
+  // The stream ends with the undo key: every colour is back, bit for bit, and the frame
+  // after it uploaded the restored samples only.
+  EXPECT_EQ(CopyColors(scene.OFB), before);
+  EXPECT_EQ(scene.Log.Modified, 1);
+  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_GE(scene.Mapper->GetLastUploadedSampleCount(), changed);
+  EXPECT_LT(scene.Mapper->GetLastUploadedSampleCount(), n / 4);
+}
+
+TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
+{
+  PaintScene scene;
+  ASSERT_TRUE(scene.Setup());
+  vtkOFBPainterRepresentation* rep = scene.Widget->GetPainterRepresentation();
+  vtkOFBBrush* brush = rep->GetBrush();
+  const double r0 = brush->GetRadius();
+
+  scene.Key('+', "plus");
+  EXPECT_NEAR(brush->GetRadius(), r0 * 1.25, 1e-12 * r0);
+  scene.Key('-', "minus");
+  scene.Key('-', "minus");
+  EXPECT_NEAR(brush->GetRadius(), r0 / 1.25, 1e-12 * r0);
+
+  brush->SetStrength(0.5);
+  scene.Key(']', "bracketright");
+  EXPECT_NEAR(brush->GetStrength(), 0.6, 1e-12);
+  for (int i = 0; i < 12; ++i)
+  {
+    scene.Key('[', "bracketleft");
+  }
+  EXPECT_EQ(brush->GetStrength(), 0.0);
+  brush->SetStrength(1.0);
+
+  // Falloffs cycle through the seven curves, skipping Custom.
+  brush->SetFalloff(vtkOFBBrush::Constant);
+  std::vector<int> falloffs;
+  for (int i = 0; i < 7; ++i)
+  {
+    scene.Key('f', "f");
+    falloffs.push_back(brush->GetFalloff());
+  }
+  EXPECT_EQ(falloffs,
+    (std::vector<int>{ vtkOFBBrush::Linear,
+      vtkOFBBrush::Smooth,
+      vtkOFBBrush::Sphere,
+      vtkOFBBrush::Root,
+      vtkOFBBrush::Sharp,
+      vtkOFBBrush::Gaussian,
+      vtkOFBBrush::Constant }));
+
+  scene.Key('t', "t");
+  EXPECT_EQ(brush->GetTarget(), vtkOFBBrush::NormalTarget);
+  scene.Key('t', "t");
+  EXPECT_EQ(brush->GetTarget(), vtkOFBBrush::SmearTarget);
+  scene.Key('t', "t");
+  EXPECT_EQ(brush->GetTarget(), vtkOFBBrush::ColorTarget);
+
+  scene.Key('b', "b");
+  EXPECT_EQ(brush->GetBlendMode(), vtkOFBBrush::Add);
+  brush->SetBlendMode(vtkOFBBrush::Mix);
+
+  double rgba[4];
+  scene.Key('6', "6");
+  ASSERT_TRUE(rep->GetPaletteColor(5, rgba));
+  EXPECT_EQ(rep->GetPaletteIndex(), 5);
+  for (int c = 0; c < 4; ++c)
+  {
+    EXPECT_EQ(brush->GetColor()[c], rgba[c]);
+  }
+  scene.Key('c', "c");
+  EXPECT_EQ(rep->GetPaletteIndex(), 6);
+
+  const int modifiedBefore = scene.Log.Modified;
+  scene.Key('r', "r"); // not a painting key: left to the interactor style
+  EXPECT_EQ(scene.Log.Modified, modifiedBefore);
+
+  // Undo with Ctrl+Z (X11's control character 26), redo with Shift+U and Ctrl+Y.
+  const std::vector<unsigned char> before = CopyColors(scene.OFB);
+  scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
+  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::OnSurface);
+  scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
+  scene.Event(vtkCommand::MouseMoveEvent, 160, 152);
+  scene.Event(vtkCommand::LeftButtonReleaseEvent, 160, 152);
+  const std::vector<unsigned char> painted = CopyColors(scene.OFB);
+  ASSERT_NE(painted, before);
+  scene.Key(26, "z", true);
+  EXPECT_EQ(CopyColors(scene.OFB), before);
+  scene.Key('U', "U", false, true);
+  EXPECT_EQ(CopyColors(scene.OFB), painted);
+  scene.Key('u', "u");
+  EXPECT_EQ(CopyColors(scene.OFB), before);
+  scene.Key(25, "y", true);
+  EXPECT_EQ(CopyColors(scene.OFB), painted);
+
+  // With the shortcuts off the keys do nothing.
+  scene.Widget->KeyboardShortcutsOff();
+  const double r1 = brush->GetRadius();
+  scene.Key('+', "plus");
+  EXPECT_EQ(brush->GetRadius(), r1);
+}
+
+TEST(PainterWidget, StrokeLeavingTheSurfaceIsOneUndoStep)
+{
+  PaintScene scene;
+  ASSERT_TRUE(scene.Setup());
+  const std::vector<unsigned char> before = CopyColors(scene.OFB);
+  // On the bunny, off it (the window's corner), back on it: the pen lifts over the gap.
+  scene.Event(vtkCommand::MouseMoveEvent, 140, 150);
+  scene.Event(vtkCommand::LeftButtonPressEvent, 140, 150);
+  scene.Event(vtkCommand::MouseMoveEvent, 145, 150);
+  scene.Event(vtkCommand::MouseMoveEvent, 3, 3);
+  scene.Event(vtkCommand::MouseMoveEvent, 165, 155);
+  scene.Event(vtkCommand::MouseMoveEvent, 170, 155);
+  scene.Event(vtkCommand::LeftButtonReleaseEvent, 170, 155);
+  EXPECT_EQ(scene.Log.Start, 1);
+  EXPECT_EQ(scene.Log.End, 1);
+  const std::vector<unsigned char> painted = CopyColors(scene.OFB);
+  ASSERT_NE(painted, before);
+
+  // Nothing painted between the two pieces: the sample half-way stays unpainted.
+  double a[3], b[3], mid[3];
+  ASSERT_TRUE(scene.Pick(145, 150, a));
+  ASSERT_TRUE(scene.Pick(165, 155, b));
+  const double radius = scene.Widget->GetPainterRepresentation()->GetBrush()->GetRadius();
+  if (std::sqrt(vtkMath::Distance2BetweenPoints(a, b)) > 3.0 * radius)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      mid[i] = 0.5 * (a[i] + b[i]);
+    }
+    scene.OFB->ForEachSampleInSphere(mid,
+      0.4 * radius,
+      [&](vtkIdType id, double)
+      {
+        EXPECT_TRUE(std::equal(
+          before.begin() + 4 * id, before.begin() + 4 * id + 4, painted.begin() + 4 * id))
+          << "sample " << id << " between the pieces was painted";
+      });
+  }
+
+  EXPECT_GT(scene.Widget->GetPainterRepresentation()->Undo(), 0);
+  EXPECT_EQ(CopyColors(scene.OFB), before);
+  EXPECT_GT(scene.Widget->GetPainterRepresentation()->Redo(), 0);
+  EXPECT_EQ(CopyColors(scene.OFB), painted);
+}
+
+TEST(PainterWidget, PressOffTheSurfaceIsLeftToTheStyle)
+{
+  PaintScene scene;
+  ASSERT_TRUE(scene.Setup());
+  const std::vector<unsigned char> before = CopyColors(scene.OFB);
+  scene.Event(vtkCommand::MouseMoveEvent, 3, 3);
+  EXPECT_EQ(scene.Widget->GetPainterRepresentation()->GetInteractionState(),
+    vtkOFBPainterRepresentation::Outside);
+  scene.Event(vtkCommand::LeftButtonPressEvent, 3, 3);
+  scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
+  scene.Event(vtkCommand::LeftButtonReleaseEvent, 150, 150);
+  EXPECT_EQ(scene.Log.Start, 0);
+  EXPECT_EQ(CopyColors(scene.OFB), before);
+}
+
+TEST(PainterWidget, ClearErrorsWithoutOFBOrPainter)
+{
+  PaintScene scene;
+  ASSERT_TRUE(scene.Setup());
+  vtkOFBPainterRepresentation* rep = scene.Widget->GetPainterRepresentation();
+  MessageObserver* observer = MessageObserver::New();
+  observer->Watch(rep);
+
+  rep->SetOFB(nullptr);
+  scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
+  scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
+  scene.Event(vtkCommand::LeftButtonReleaseEvent, 150, 150);
+  EXPECT_NE(observer->Errors.find("no OFB"), std::string::npos) << observer->Errors;
+  EXPECT_EQ(scene.Log.Start, 0);
+
+  observer->Clear();
+  rep->SetPainter(nullptr);
+  EXPECT_EQ(rep->GetBrush(), nullptr);
+  scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
+  scene.Event(vtkCommand::LeftButtonReleaseEvent, 150, 150);
+  EXPECT_NE(observer->Errors.find("no painter"), std::string::npos) << observer->Errors;
+  observer->Clear();
+  scene.Key('+', "plus");
+  scene.Key('u', "u");
+  EXPECT_NE(observer->Errors.find("no painter"), std::string::npos);
+  EXPECT_EQ(scene.Log.Start, 0);
+
+  std::ostringstream os;
+  rep->Print(os);
+  scene.Widget->Print(os);
+  EXPECT_NE(os.str().find("RadiusFactor: 1.25"), std::string::npos);
+  EXPECT_NE(os.str().find("KeyboardShortcuts: On"), std::string::npos);
+  observer->Delete();
+}

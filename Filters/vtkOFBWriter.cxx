@@ -39,7 +39,7 @@ vtkStandardNewMacro(vtkOFBWriter);
 
 namespace
 {
-namespace fmt = vtkofb::format;
+namespace format = vtkofb::format;
 
 /// What the writer writes: the OFB's storage and sample arrays, and the file size.
 struct Contents
@@ -170,10 +170,10 @@ struct Sink
     {
       const size_t n = static_cast<size_t>(std::min<vtkTypeUInt64>(chunk, count - first));
       const unsigned char* src = p + first * elementSize;
-      if (!fmt::HostIsLittleEndian() && elementSize > 1)
+      if (!format::HostIsLittleEndian() && elementSize > 1)
       {
         this->Swapped.assign(src, src + n * elementSize);
-        fmt::SwapLittleEndian(this->Swapped.data(), n, elementSize);
+        format::SwapLittleEndian(this->Swapped.data(), n, elementSize);
         src = this->Swapped.data();
       }
       this->Raw(src, n * elementSize);
@@ -185,7 +185,7 @@ struct Sink
   void EndSection()
   {
     std::vector<unsigned char> bytes;
-    fmt::PutLE(bytes, this->CRC, 4);
+    format::PutLE(bytes, this->CRC, 4);
     this->Raw(bytes.data(), bytes.size());
     this->CRC = 0;
   }
@@ -193,20 +193,20 @@ struct Sink
   void Header(vtkOFB* ofb, const Contents& c)
   {
     std::vector<unsigned char> bytes(vtkOFBWriter::Magic, vtkOFBWriter::Magic + 8);
-    fmt::PutLE(bytes, vtkOFBWriter::GetFormatVersion(), 4);
-    fmt::PutLE(bytes, vtkOFBWriter::ByteOrderMark, 4);
+    format::PutLE(bytes, vtkOFBWriter::GetFormatVersion(), 4);
+    format::PutLE(bytes, vtkOFBWriter::ByteOrderMark, 4);
     for (int a = 0; a < 3; ++a)
     {
-      fmt::PutDouble(bytes, ofb->GetOrigin()[a]);
+      format::PutDouble(bytes, ofb->GetOrigin()[a]);
     }
-    fmt::PutDouble(bytes, ofb->GetCellSize());
+    format::PutDouble(bytes, ofb->GetCellSize());
     for (int a = 0; a < 3; ++a)
     {
-      fmt::PutLE(bytes, static_cast<vtkTypeUInt64>(ofb->GetDimensions()[a]), 8);
+      format::PutLE(bytes, static_cast<vtkTypeUInt64>(ofb->GetDimensions()[a]), 8);
     }
-    fmt::PutLE(bytes, static_cast<vtkTypeUInt64>(c.NumberOfCells), 8);
-    fmt::PutLE(bytes, static_cast<vtkTypeUInt64>(c.NumberOfSamples), 8);
-    fmt::PutLE(bytes, c.Arrays.size(), 4);
+    format::PutLE(bytes, static_cast<vtkTypeUInt64>(c.NumberOfCells), 8);
+    format::PutLE(bytes, static_cast<vtkTypeUInt64>(c.NumberOfSamples), 8);
+    format::PutLE(bytes, c.Arrays.size(), 4);
     this->Raw(bytes.data(), bytes.size());
     this->EndSection();
   }
@@ -226,13 +226,13 @@ struct Sink
       vtkDataArray* array = c.Arrays[i];
       const std::string name = array->GetName() ? array->GetName() : "";
       std::vector<unsigned char> bytes;
-      fmt::PutLE(bytes, name.size(), 4);
+      format::PutLE(bytes, name.size(), 4);
       bytes.insert(bytes.end(), name.begin(), name.end());
-      fmt::PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetDataType()), 4);
-      fmt::PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetDataTypeSize()), 4);
-      fmt::PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetNumberOfComponents()), 4);
-      fmt::PutLE(bytes, static_cast<vtkTypeUInt64>(c.NumberOfSamples), 8);
-      fmt::PutLE(bytes, c.Roles[i], 4);
+      format::PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetDataType()), 4);
+      format::PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetDataTypeSize()), 4);
+      format::PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetNumberOfComponents()), 4);
+      format::PutLE(bytes, static_cast<vtkTypeUInt64>(c.NumberOfSamples), 8);
+      format::PutLE(bytes, c.Roles[i], 4);
       this->Raw(bytes.data(), bytes.size());
       this->EndSection();
       this->Values(c.NumberOfSamples > 0 ? array->GetVoidPointer(0) : nullptr,

@@ -60,8 +60,8 @@
  * the error code (Write() then returns 0). An empty OFB can be written and reads
  * back empty. An inconsistent OFB (offsets that do not match the frame or the
  * samples, arrays whose tuple count is not the sample count) and non-numeric
- * sample arrays (strings, variants, bits) are refused before the file is touched. Not stored: component
- * names, array information keys, lookup tables, field data.
+ * sample arrays (strings, variants, bits) are refused before the file is touched. Not stored:
+ * component names, array information keys, lookup tables, field data.
  *
  * @sa vtkOFBReader vtkOFB
  */

@@ -16,9 +16,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 #include <set>
 #include <sstream>
+#include <vector>
 
 using namespace vtkofbtest;
 

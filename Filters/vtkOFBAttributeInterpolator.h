@@ -1,6 +1,6 @@
 /**
  * @class   vtkOFBAttributeInterpolator
- * @brief   Attributes of OFB samples interpolated from their triangle and barycentrics, on the CPU (private)
+ * @brief   OFB sample attributes interpolated on the CPU from triangle and barycentrics (private)
  *
  * Attributes of the samples of a triangle, n at a time (structure of arrays, so
  * that the loops vectorize): unit normals (the face normal where the point normals
@@ -72,7 +72,8 @@ struct vtkOFBAttributeInterpolator
   };
 
   /// Attributes of n samples of triangle tri at barycentrics (w1, w2) in the triangle.
-  void Interpolate(vtkIdType tri, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  void Interpolate(
+    vtkIdType tri, vtkIdType n, const float* w1, const float* w2, const Run& out) const
   {
     const vtkIdType* t = this->TrianglePointIds + 3 * tri;
     this->Interpolate(t, n, w1, w2, out, this->MayCancel(t));
@@ -105,7 +106,8 @@ struct vtkOFBAttributeInterpolator
    * for n rounded up to a multiple of 4, whose normals may then be computed from
    * whatever those extra w1, w2 hold (finite floats).
    */
-  void Interpolate(const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out,
+  void Interpolate(const vtkIdType* t, vtkIdType n, const float* w1, const float* w2,
+    const Run& out,
     bool mayCancel, bool padded = false) const
   {
     // The point normals interpolated and their squared length, in one loop that
@@ -115,13 +117,15 @@ struct vtkOFBAttributeInterpolator
     float* nz = out.Normals[2];
     if (!mayCancel)
     {
-      InterpolateUnitNormals(padded ? (n + 3) & ~vtkIdType(3) : n, w1, w2, this->PointNormals + 3 * t[0],
+      InterpolateUnitNormals(padded ? (n + 3) & ~vtkIdType(3) : n, w1, w2,
+        this->PointNormals + 3 * t[0],
         this->PointNormals + 3 * t[1], this->PointNormals + 3 * t[2], nx, ny, nz);
       this->InterpolateVectorsAndColors(t, n, w1, w2, out);
       return;
     }
     float* len2 = out.Scratch;
-    InterpolateNormals(n, w1, w2, this->PointNormals + 3 * t[0], this->PointNormals + 3 * t[1], this->PointNormals + 3 * t[2], nx,
+    InterpolateNormals(n, w1, w2, this->PointNormals + 3 * t[0], this->PointNormals + 3 * t[1],
+      this->PointNormals + 3 * t[2], nx,
       ny, nz, len2);
     for (vtkIdType i = 0; i < n; ++i)
     {
@@ -267,8 +271,8 @@ struct vtkOFBAttributeInterpolator
     }
     for (vtkIdType i = 0; i < n; ++i)
     {
-      const float vn =
-        out.Vectors[0][i] * out.Normals[0][i] + out.Vectors[1][i] * out.Normals[1][i] + out.Vectors[2][i] * out.Normals[2][i];
+      const float vn = out.Vectors[0][i] * out.Normals[0][i] +
+        out.Vectors[1][i] * out.Normals[1][i] + out.Vectors[2][i] * out.Normals[2][i];
       for (int k = 0; k < 3; ++k)
       {
         out.Vectors[k][i] -= vn * out.Normals[k][i];
@@ -304,7 +308,8 @@ struct vtkOFBAttributeInterpolator
    * barycentrics (w1[f], w2[f]).
    */
   template <typename T>
-  static void InterpolateTuples(const T* in, T* out, int nc, vtkIdType n, const vtkIdType* trianglePointIds,
+  static void InterpolateTuples(const T* in, T* out, int nc, vtkIdType n,
+    const vtkIdType* trianglePointIds,
     const vtkTypeUInt32* tri, const float* w1, const float* w2, const vtkTypeUInt32* order)
   {
     for (vtkIdType i = 0; i < n; ++i)
@@ -336,7 +341,8 @@ struct vtkOFBAttributeInterpolator
     switch (in->GetDataType())
     {
       vtkTemplateMacro(InterpolateTuples(static_cast<const VTK_TT*>(in->GetVoidPointer(0)),
-        static_cast<VTK_TT*>(out->GetVoidPointer(first * nc)), nc, n, trianglePointIds, tri, w1, w2, order));
+        static_cast<VTK_TT*>(out->GetVoidPointer(first * nc)), nc, n, trianglePointIds, tri, w1,
+        w2, order));
       default:
         return false;
     }

@@ -325,7 +325,8 @@ vtkIdType CountTriangles(vtkCellArray* cells)
   {
     return 0;
   }
-  return std::max<vtkIdType>(0, cells->GetNumberOfConnectivityIds() - 2 * cells->GetNumberOfCells());
+  const vtkIdType ids = cells->GetNumberOfConnectivityIds();
+  return std::max<vtkIdType>(0, ids - 2 * cells->GetNumberOfCells());
 }
 
 /**
@@ -498,7 +499,8 @@ bool vtkOFBSampler::CheckInputMemory(
   vtkPolyData* input, vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job)
 {
   const vtkIdType points = input->GetNumberOfPoints();
-  const vtkIdType triangles = CountTriangles(input->GetPolys()) + CountTriangles(input->GetStrips());
+  const vtkIdType triangles =
+    CountTriangles(input->GetPolys()) + CountTriangles(input->GetStrips());
   if (!vtkOFBSamplerBackend::CheckMemoryLimit(
         backend->EstimateBytes(points, triangles), job.MemoryLimit, job.Error))
   {
@@ -512,7 +514,8 @@ bool vtkOFBSampler::CheckInputMemory(
 bool vtkOFBSampler::CopyPoints(vtkPolyData* input, vtkOFBSurface& surface)
 {
   surface.Points.resize(3 * input->GetNumberOfPoints());
-  const vtkIdType badPoint = CopyPointCoordinates(input->GetPoints()->GetData(), surface.Points.data());
+  const vtkIdType badPoint =
+    CopyPointCoordinates(input->GetPoints()->GetData(), surface.Points.data());
   if (badPoint >= 0)
   {
     vtkErrorMacro(
@@ -606,7 +609,8 @@ vtkDataArray* vtkOFBSampler::PrepareNormals(vtkPolyData* input, vtkOFBSurface& s
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSampler::SelectVectors(vtkPolyData* input, vtkOFBSurface& surface, vtkDataArray*& vectors)
+bool vtkOFBSampler::SelectVectors(
+  vtkPolyData* input, vtkOFBSurface& surface, vtkDataArray*& vectors)
 {
   // The vector field: the array chosen with SetInputArrayToProcess, else the vectors.
   vtkInformation* arrayInfo = this->GetInputArrayInformation(0);

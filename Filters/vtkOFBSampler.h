@@ -10,8 +10,9 @@
  * cell (the subpixel precision of GPU rasterizers), so that a shared edge gives
  * neither a hole nor a duplicate and the OpenGL backend of vtkOFBBuilder covers
  * the same cell centres. Depth is the triangle's plane at the cell centre and
- * attributes are interpolated from barycentric coordinates. Cells are sorted by depth (ties by triangle id), so the
- * result does not depend on the number of threads.
+ * attributes are interpolated from barycentric coordinates. Cells are sorted by
+ * depth (ties by triangle id), so the result does not depend on the number of
+ * threads.
  *
  * Sample arrays: "Colors" (RGBA unsigned char, the paint: the input's point
  * colours if it has unsigned-char RGB(A) scalars, else DefaultColor), "Normals"

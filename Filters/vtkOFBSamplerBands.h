@@ -43,9 +43,10 @@ class vtkOFBSurface;
 namespace vtkofb
 {
 /**
- * Cells of a band (rounded to whole rows): 32 rows of 2048 cells, a triangle of a
- * 100K-triangle mesh at resolution 2048 crossing few band borders. Measured: 65536
- * builds the bunny and the horse at 2048 3-4 % faster than 16384 or 32768.
+ * Cells of a band (rounded to whole rows): 32 rows of 2048 cells, small enough
+ * for the band's scratch to stay in cache, large enough that a triangle of a
+ * 100K-triangle mesh at resolution 2048 crosses few band borders (the sizes
+ * tried: docs/performance.md, "CPU sampler history").
  */
 constexpr vtkIdType BandCells = 65536;
 
@@ -124,7 +125,8 @@ struct BandScratch
     grow(this->Slot, nCells + 1);
     grow(this->Touched, nCells / 8 + 1);
     for (auto* v :
-      { &this->Depth, &this->W1, &this->W2, &this->Normals[0], &this->Normals[1], &this->Normals[2], &this->Tmp })
+      { &this->Depth, &this->W1, &this->W2, &this->Normals[0], &this->Normals[1],
+        &this->Normals[2], &this->Tmp })
     {
       grow(*v, n + 8);
     }

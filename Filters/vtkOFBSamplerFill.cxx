@@ -24,7 +24,8 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
   const vtkIdType rowLength = this->Frame.Dims[(band.Axis + 1) % 3];
   const bool vectors = out.Vectors != nullptr;
   const bool colors = this->Interpolator.PointColors != nullptr;
-  const bool keepFragments = !out.Others.empty(); // the other arrays are interpolated after the sort
+  // The other arrays are interpolated after the sort, from fragments kept till then.
+  const bool keepFragments = !out.Others.empty();
   s.Reserve(band.Count, nCells, vectors, colors, keepFragments);
   // slot[c]: the change in the number of samples from cell c - 1 to cell c (+1
   // where a span starts, -1 after it ends), then the first slot of cell c, then
@@ -226,9 +227,9 @@ void BandBuilder::WriteSamples(const Band& band, const Output& out, const BandSc
 #if defined(__SSE2__)
   // Four samples at a time from the first whose normal is 16-byte aligned: their
   // normals (12 bytes a sample, the largest stream) in three non-temporal stores
-  // that bypass the cache, where the band's scratch stays (measured: bunny +8 %,
-  // horse +7 % at 2048; the depths and colours too: no better for the horse, worse
-  // for the bunny).
+  // that bypass the cache, where the band's scratch stays; the depths and colours
+  // are stored normally (what streaming each stream gave: docs/performance.md,
+  // "CPU sampler history").
   if (reinterpret_cast<uintptr_t>(out.Normals) % 16 == 0)
   {
     for (; k < n && ((band.First + k) & 3) != 0; ++k)
@@ -271,7 +272,8 @@ void BandBuilder::WriteSamples(const Band& band, const Output& out, const BandSc
   }
   for (size_t k = 0; k < out.Others.size(); ++k)
   {
-    vtkOFBAttributeInterpolator::InterpolateArray(out.OthersIn[k], out.Others[k], band.First, band.Count,
+    vtkOFBAttributeInterpolator::InterpolateArray(out.OthersIn[k], out.Others[k], band.First,
+      band.Count,
       this->Surface.Triangles.data(), s.Tri.data(), s.W1.data(), s.W2.data(), order);
   }
 }

@@ -109,7 +109,8 @@ public:
     while (glGetError() != GL_NO_ERROR)
     {
     }
-    glBufferData(target, static_cast<GLsizeiptr>(std::max<size_t>(bytes, 4)), data, GL_DYNAMIC_COPY);
+    glBufferData(
+      target, static_cast<GLsizeiptr>(std::max<size_t>(bytes, 4)), data, GL_DYNAMIC_COPY);
     return glGetError() == GL_NO_ERROR ? b : 0;
   }
 
@@ -301,7 +302,8 @@ public:
     const vtkIdType nCells = this->NumberOfCells;
     this->Counts = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, nCells * sizeof(GLuint));
     this->Offsets = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, (nCells + 1) * sizeof(GLuint));
-    this->BlockSums = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, (this->Blocks + 1) * sizeof(GLuint));
+    this->BlockSums =
+      this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, (this->Blocks + 1) * sizeof(GLuint));
     if (!this->Counts || !this->Offsets || !this->BlockSums)
     {
       this->Error = "cannot allocate the cell counters on the GPU";
@@ -503,7 +505,8 @@ void vtkOFBGLSampler::SetRenderWindow(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-double vtkOFBGLSampler::EstimateWorkBytes(vtkIdType points, vtkIdType triangles, double samples) const
+double vtkOFBGLSampler::EstimateWorkBytes(
+  vtkIdType points, vtkIdType triangles, double samples) const
 {
   // On the host: the points in cell units (doubles), the 32-bit indices, and the
   // interleaved barycentrics read back beside the two arrays interpolation takes.
@@ -556,7 +559,8 @@ vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
   }
   barycentrics.clear();
   if (!output->BuildCellIndex() ||
-    !vtkOFBSamplerBackend::InterpolateAttributes(surface, output, triangles.data(), w1.data(), w2.data()))
+    !vtkOFBSamplerBackend::InterpolateAttributes(
+      surface, output, triangles.data(), w1.data(), w2.data()))
   {
     return Failed;
   }

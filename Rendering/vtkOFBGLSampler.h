@@ -1,6 +1,6 @@
 /**
  * @class   vtkOFBGLSampler
- * @brief   The OpenGL backend of vtkOFBBuilder: OFB construction in a render window's context (private)
+ * @brief   The OpenGL backend of vtkOFBBuilder, in a render window's context (private)
  *
  * In the context of an OpenGL 4.3+ render window: a geometry shader routes each
  * triangle to the viewport of its grid in a framebuffer without attachments; the

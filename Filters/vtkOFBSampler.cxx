@@ -682,7 +682,14 @@ bool vtkOFBSampler::ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBack
   }
   const double* b = surface.Bounds;
   const double longest = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
-  if (!(longest > 0.0) || !std::isfinite(longest))
+  if (!std::isfinite(longest))
+  {
+    // Finite coordinates whose extent is not (e.g. -1e308 and 1e308).
+    vtkErrorMacro("The input bounds overflow a double (extent of the coordinates too large): "
+                  "nothing to sample.");
+    return false;
+  }
+  if (!(longest > 0.0))
   {
     vtkErrorMacro("The input bounds are degenerate: nothing to sample.");
     return false;

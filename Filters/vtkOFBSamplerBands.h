@@ -18,8 +18,9 @@
  * atomics) and is computed the same way whatever the number of threads, so the
  * output does not depend on it.
  *
- * vtkOFBSamplerCPU.cxx sets up the triangles, lists them by band, finds their
- * spans (pass 1) and runs the build; vtkOFBSamplerFill.cxx fills a band (pass 2).
+ * vtkOFBSamplerBands.cxx sets up the triangles, lists them by band, finds their
+ * spans (pass 1); vtkOFBSamplerFill.cxx fills a band (pass 2); vtkOFBCPUSampler runs
+ * the build.
  */
 
 #ifndef vtkOFBSamplerBands_h

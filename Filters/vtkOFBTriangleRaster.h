@@ -2,11 +2,12 @@
  * @class   vtkOFBTriangleRaster
  * @brief   A triangle set up for scan conversion into an OFB grid (private)
  *
- * Used by the CPU backend of vtkOFBSampler (vtkOFBSamplerCPU.cxx). Each triangle
- * goes to the grid of the axis closest to its face normal. Coverage is decided on
- * a fixed-point lattice of 1/2^SubBits cell (cell centres on its integer multiples
- * of 2^SubBits) by three edge functions, inside where all are >= 0: edge i at cell
- * (iu, iv) is Edge[i] + StepV(i) * (iv - V0) + StepU(i) * (iu - U0). A centre
+ * Used by the CPU backend of vtkOFBSampler (vtkOFBCPUSampler,
+ * vtkOFBSamplerBands.cxx). Each triangle goes to the grid of the axis closest to its
+ * face normal. Coverage is decided on a fixed-point lattice of 1/2^SubBits cell
+ * (cell centres on its integer multiples of 2^SubBits) by three edge functions,
+ * inside where all are >= 0: edge i at cell (iu, iv) is
+ * Edge[i] + StepV(i) * (iv - V0) + StepU(i) * (iu - U0). A centre
  * exactly on an edge belongs to the triangle for which that edge is a left or
  * bottom edge: the top-left rule of raster (y-down) coordinates, as Mesa's OpenGL
  * rasterizer, so that the OpenGL backend covers the same centres and a shared edge

@@ -74,6 +74,21 @@ TEST(BadInput, NaNAndInfCoordinates)
   EXPECT_NE(BuildErrors(Triangle(0, 0, -inf), 64).find("non-finite"), std::string::npos);
 }
 
+TEST(BadInput, CoordinatesWhoseExtentOverflowsAreNamedAsSuch)
+{
+  // Finite doubles (a float vtkPoints would turn them into infinities) whose extent is not.
+  vtkSmartPointer<vtkPolyData> huge = Triangle(0, 0, 0);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->InsertNextPoint(-1e308, 0, 0);
+  points->InsertNextPoint(1e308, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  huge->SetPoints(points);
+  const std::string errors = BuildErrors(huge, 64);
+  EXPECT_NE(errors.find("overflow"), std::string::npos) << errors;
+  EXPECT_EQ(errors.find("degenerate"), std::string::npos) << errors;
+}
+
 TEST(BadInput, OnlyLinesAndVertices)
 {
   vtkNew<vtkPoints> points;

@@ -145,6 +145,6 @@ if (NOT DEFINED CPACK_GENERATOR)
 endif ()
 include(CPack)
 
-if (BUILD_TESTING)
+if (VTKOFB_BUILD_TESTING)
   add_subdirectory("${PROJECT_SOURCE_DIR}/Testing/Install" "${PROJECT_BINARY_DIR}/Testing/Install")
 endif ()

@@ -14,10 +14,8 @@
 #include "vtkIntArray.h"
 #include "vtkLookupTable.h"
 #include "vtkOFB.h"
-#if VTKOFB_PARTICLES_HAVE_PAINTER
 #include "vtkOFBBrush.h"
 #include "vtkOFBPainter.h"
-#endif
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -85,8 +83,8 @@ vtkOFBParticleAdvector::vtkOFBParticleAdvector()
   , Color{ 1.0, 0.0, 0.0 }
   , Opacity(1.0)
   , FootprintRadius(2.5)
-  , Falloff(0)
-  , BlendMode(0)
+  , Falloff(vtkOFBBrush::Constant)
+  , BlendMode(vtkOFBBrush::Mix)
   , SmearAmount(0.0)
   , Paint(true)
   , ColorPeriod(60)
@@ -99,12 +97,10 @@ vtkOFBParticleAdvector::vtkOFBParticleAdvector()
   this->SetNumberOfOutputPorts(3);
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
-#if VTKOFB_PARTICLES_HAVE_PAINTER
   this->Internals->Painter = vtkSmartPointer<vtkOFBPainter>::New();
   this->Internals->Brush = vtkSmartPointer<vtkOFBBrush>::New();
   this->Internals->Painter->SetBrush(this->Internals->Brush);
   this->Internals->Painter->SetUndoLimit(0);
-#endif
   this->Internals->Footprints = vtkSmartPointer<vtkPolyData>::New();
 }
 
@@ -770,10 +766,8 @@ void vtkOFBParticleAdvector::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "Opacity: " << this->Opacity << "\n";
   os << indent << "FootprintRadius: " << this->FootprintRadius << " cells\n";
-#if VTKOFB_PARTICLES_HAVE_PAINTER
   os << indent << "Falloff: " << vtkOFBBrush::GetFalloffAsString(this->Falloff) << "\n";
   os << indent << "BlendMode: " << vtkOFBBrush::GetBlendModeAsString(this->BlendMode) << "\n";
-#endif
   os << indent << "SmearAmount: " << this->SmearAmount << "\n";
   os << indent << "Paint: " << (this->Paint ? "On" : "Off") << "\n";
   os << indent << "ColorPeriod: " << this->ColorPeriod << " steps\n";

@@ -9,12 +9,6 @@
 
 #include <string>
 
-#if __has_include("vtkOFBPainter.h")
-#define VTKOFB_PARTICLES_HAVE_PAINTER 1
-#else
-#define VTKOFB_PARTICLES_HAVE_PAINTER 0
-#endif
-
 class vtkOFBBrush;
 class vtkOFBPainter;
 class vtkStaticCellLocator;

@@ -8,10 +8,8 @@
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkOFB.h"
-#if VTKOFB_PARTICLES_HAVE_PAINTER
 #include "vtkOFBBrush.h"
 #include "vtkOFBPainter.h"
-#endif
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -72,7 +70,6 @@ void vtkOFBParticleAdvector::PaintFootprints()
   {
     return;
   }
-#if VTKOFB_PARTICLES_HAVE_PAINTER
   vtkOFBBrush* brush = in.Brush;
   brush->SetFalloff(this->Falloff);
   brush->SetBlendMode(this->BlendMode);
@@ -90,7 +87,6 @@ void vtkOFBParticleAdvector::PaintFootprints()
     in.Painter->SetOFB(in.Target);
   }
   in.Painter->Dabs(footprints);
-#endif
 }
 
 //------------------------------------------------------------------------------

@@ -67,11 +67,13 @@
 #include "vtkSmartPointer.h"     // for members
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for the dab lists
 
 class vtkOFB;
 class vtkOFBBrush;
 class vtkPoints;
 class vtkPolyData;
+struct vtkOFBDab;
 
 class VTKOFBFILTERS_EXPORT vtkOFBPainter : public vtkObject
 {
@@ -203,6 +205,21 @@ public:
 protected:
   vtkOFBPainter();
   ~vtkOFBPainter() override;
+
+  /// Check the OFB and its arrays (creating "Colors" when needed); drop the
+  /// history if something else changed the OFB. False (with an error) if unusable.
+  bool Prepare(bool needColors, bool needNormals);
+  /// A dab at `center` with the brush's settings and `pressure`; false if not finite.
+  bool MakeDab(const double center[3], double pressure, vtkOFBDab& dab);
+  /// Paint dabs, mark the changed ranges, call Modified(); the changed count.
+  vtkIdType Paint(std::vector<vtkOFBDab>& dabs);
+  /// Mark the samples changed since the last call modified on the OFB.
+  vtkIdType Finish();
+  /// Close the open undo step (sorted by sample id), dropping the redo steps.
+  void CloseStep();
+  void EnforceUndoLimit();
+  /// Undo (true) or redo (false) one step.
+  vtkIdType Restore(bool undo);
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

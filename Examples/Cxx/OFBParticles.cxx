@@ -5,6 +5,7 @@
 //                     [--particles N] [--resolution N] [--radius CELLS] [--lifetime STEPS]
 //                     [--color constant|seeds|scalar|periodic] [--reveal]
 //                     [--image out.png --steps N] [--width W] [--height H]
+//                     [--view-up X Y Z]
 //
 // Without a mesh it reads Testing/Data/horse.ply of the source tree. Fields:
 // `rotation` (default) the tangential part of a rotation about an axis through the
@@ -39,6 +40,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
@@ -59,6 +61,7 @@ struct Options
   int Width = 800;
   int Height = 600;
   double Radius = 2.5;
+  double ViewUp[3] = { 0.0, 0.0, 1.0 }; // the horse's; the bunny's is y
   bool Reveal = false;
 };
 
@@ -88,6 +91,13 @@ bool Parse(int argc, char* argv[], Options& o)
       o.Width = std::atoi(argv[++i]);
     else if (a == "--height" && more)
       o.Height = std::atoi(argv[++i]);
+    else if (a == "--view-up" && i + 3 < argc)
+    {
+      for (double& x : o.ViewUp)
+      {
+        x = std::atof(argv[++i]);
+      }
+    }
     else if (a == "--reveal")
       o.Reveal = true;
     else if (!a.empty() && a[0] != '-')
@@ -254,7 +264,7 @@ int main(int argc, char* argv[])
     std::cerr << "Usage: OFBParticles [mesh.obj|mesh.ply] [--field rotation|height|mesh] "
                  "[--particles N] [--resolution N] [--radius CELLS] [--lifetime STEPS] "
                  "[--color constant|seeds|scalar|periodic] [--reveal] [--image out.png "
-                 "--steps N] [--width W] [--height H]\n";
+                 "--steps N] [--width W] [--height H] [--view-up X Y Z]\n";
     return 1;
   }
   vtkSmartPointer<vtkPolyData> mesh = ReadMesh(o.Mesh);
@@ -309,6 +319,17 @@ int main(int argc, char* argv[])
   vtkNew<vtkRenderWindow> window;
   window->SetSize(o.Width, o.Height);
   window->AddRenderer(renderer);
+  // Look from a side of the view-up axis, then fit the mesh.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double center[3], side[3];
+  mesh->GetCenter(center);
+  const double other[3] = { 0.0, std::abs(o.ViewUp[1]) > 0.9 ? 0.0 : 1.0,
+    std::abs(o.ViewUp[1]) > 0.9 ? 1.0 : 0.0 };
+  vtkMath::Cross(o.ViewUp, other, side);
+  vtkMath::Normalize(side);
+  camera->SetFocalPoint(center);
+  camera->SetPosition(center[0] + side[0], center[1] + side[1], center[2] + side[2]);
+  camera->SetViewUp(o.ViewUp);
   renderer->ResetCamera();
   renderer->GetActiveCamera()->Azimuth(30);
   renderer->GetActiveCamera()->Elevation(15);

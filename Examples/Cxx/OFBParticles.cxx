@@ -9,8 +9,8 @@
 //
 // Without a mesh it reads Testing/Data/horse.ply of the source tree. Fields:
 // `rotation` (default) the tangential part of a rotation about an axis through the
-// mesh's centre, `height` the surface gradient of the height z, `mesh` the mesh's own
-// point vectors. In the window: space pauses, r reseeds, c changes the colour mode,
+// mesh's centre, `height` the surface gradient of the height along the view-up axis,
+// `mesh` the mesh's own point vectors. In the window: space pauses, r reseeds, c changes the colour mode,
 // t toggles reveal mode (the surface starts dark and the particles uncover it, the
 // paper's Fig. 2), q quits. `--image` runs headless: N steps, then writes a PNG.
 
@@ -139,7 +139,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 }
 
 // A built-in field (the advector projects it into the tangent planes).
-bool MakeField(vtkPolyData* mesh, const std::string& kind)
+bool MakeField(vtkPolyData* mesh, const std::string& kind, const double up[3])
 {
   if (kind == "mesh")
   {
@@ -154,7 +154,7 @@ bool MakeField(vtkPolyData* mesh, const std::string& kind)
   const double w[3] = { 0.2, 1.0, 0.1 };
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
-    double x[3], r[3], v[3] = { 0.0, 0.0, 1.0 }; // height: the gradient of z
+    double x[3], r[3], v[3] = { up[0], up[1], up[2] }; // height: its gradient
     mesh->GetPoint(i, x);
     if (kind == "rotation")
     {
@@ -273,7 +273,7 @@ int main(int argc, char* argv[])
     std::cerr << "Cannot read a surface from " << o.Mesh << "\n";
     return 1;
   }
-  if (!MakeField(mesh, o.Field))
+  if (!MakeField(mesh, o.Field, o.ViewUp))
   {
     std::cerr << "Unknown field '" << o.Field << "' (or the mesh has no point vectors)\n";
     return 1;
@@ -283,7 +283,7 @@ int main(int argc, char* argv[])
   height->SetName("Height");
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
   {
-    height->InsertNextValue(mesh->GetPoint(i)[1]);
+    height->InsertNextValue(vtkMath::Dot(mesh->GetPoint(i), o.ViewUp));
   }
   mesh->GetPointData()->AddArray(height);
 

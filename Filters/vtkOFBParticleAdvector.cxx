@@ -39,15 +39,15 @@ namespace
 vtkMTimeType ContentTime(vtkDataSet* data)
 {
   vtkMTimeType t = data->GetPointData()->GetMTime();
-  if (auto* points = data->IsA("vtkPointSet") ? static_cast<vtkPointSet*>(data)->GetPoints()
-                                              : nullptr)
+  if (auto* points =
+        data->IsA("vtkPointSet") ? static_cast<vtkPointSet*>(data)->GetPoints() : nullptr)
   {
     t = std::max(t, points->GetMTime());
   }
   if (auto* poly = vtkPolyData::SafeDownCast(data))
   {
-    for (vtkCellArray* cells : { poly->GetVerts(), poly->GetLines(), poly->GetPolys(),
-           poly->GetStrips() })
+    for (vtkCellArray* cells :
+      { poly->GetVerts(), poly->GetLines(), poly->GetPolys(), poly->GetStrips() })
     {
       t = cells ? std::max(t, cells->GetMTime()) : t;
     }
@@ -57,7 +57,8 @@ vtkMTimeType ContentTime(vtkDataSet* data)
 
 vtkMTimeType ContentTime(vtkOFB* ofb)
 {
-  return std::max({ ofb->GetStructureMTime(), ofb->GetSampleData()->GetMTime(),
+  return std::max({ ofb->GetStructureMTime(),
+    ofb->GetSampleData()->GetMTime(),
     ofb->GetCellOffsets()->GetMTime() });
 }
 }
@@ -254,8 +255,9 @@ int vtkOFBParticleAdvector::FillOutputPortInformation(int port, vtkInformation* 
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkOFBParticleAdvector::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+vtkTypeBool vtkOFBParticleAdvector::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
 {
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
   {
@@ -272,8 +274,9 @@ vtkTypeBool vtkOFBParticleAdvector::ProcessRequest(
   return this->Superclass::ProcessRequest(request, inInfo, outInfo);
 }
 
-int vtkOFBParticleAdvector::RequestDataObject(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outInfo)
+int vtkOFBParticleAdvector::RequestDataObject(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outInfo)
 {
   for (int i = 0; i < 3; ++i)
   {
@@ -298,8 +301,9 @@ int vtkOFBParticleAdvector::RequestDataObject(
   return 1;
 }
 
-int vtkOFBParticleAdvector::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outInfo)
+int vtkOFBParticleAdvector::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outInfo)
 {
   // Time is the number of steps from the seeds, open-ended. Without a time range
   // the pipeline would not execute again for a new time request.
@@ -314,13 +318,15 @@ int vtkOFBParticleAdvector::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBParticleAdvector::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkOFBParticleAdvector::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   vtkInternals& in = *this->Internals;
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[0], 0);
-  vtkOFB* inputOFB =
-    inputVector[1]->GetNumberOfInformationObjects() > 0 ? vtkOFB::GetData(inputVector[1], 0) : nullptr;
+  vtkOFB* inputOFB = inputVector[1]->GetNumberOfInformationObjects() > 0
+    ? vtkOFB::GetData(inputVector[1], 0)
+    : nullptr;
   vtkDataSet* seeds = inputVector[2]->GetNumberOfInformationObjects() > 0
     ? vtkDataSet::GetData(inputVector[2], 0)
     : nullptr;
@@ -413,8 +419,9 @@ bool vtkOFBParticleAdvector::CheckSettings()
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBParticleAdvector::PrepareSurface(
-  vtkPolyData* surface, vtkInformationVector** inputVector, bool& rebuilt)
+bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
+  vtkInformationVector** inputVector,
+  bool& rebuilt)
 {
   vtkInternals& in = *this->Internals;
   if (!surface || surface->GetNumberOfPoints() == 0 ||
@@ -438,8 +445,8 @@ bool vtkOFBParticleAdvector::PrepareSurface(
   }
   if (vectors->GetNumberOfComponents() != 3)
   {
-    vtkErrorMacro("The vector field '" << (vectors->GetName() ? vectors->GetName() : "")
-                                       << "' has " << vectors->GetNumberOfComponents()
+    vtkErrorMacro("The vector field '" << (vectors->GetName() ? vectors->GetName() : "") << "' has "
+                                       << vectors->GetNumberOfComponents()
                                        << " components, not 3.");
     return false;
   }
@@ -567,10 +574,19 @@ bool vtkOFBParticleAdvector::PrepareOFB(vtkOFB* inputOFB, vtkPolyData* surface)
 bool vtkOFBParticleAdvector::NeedsRestart(vtkDataSet* seeds)
 {
   vtkInternals& in = *this->Internals;
-  const vtkOFBParticleMotionKey key{ this->Integrator, this->StepSize, this->ErrorTolerance,
-    this->NormalizeVectors, this->Direction, this->Lifetime, this->NumberOfParticles,
-    this->RandomSeed, this->MaximumSeedDistance, this->ChainLength, this->ChainSpacing,
-    this->TrailLength, this->SeedColorArrayName ? this->SeedColorArrayName : "" };
+  const vtkOFBParticleMotionKey key{ this->Integrator,
+    this->StepSize,
+    this->ErrorTolerance,
+    this->NormalizeVectors,
+    this->Direction,
+    this->Lifetime,
+    this->NumberOfParticles,
+    this->RandomSeed,
+    this->MaximumSeedDistance,
+    this->ChainLength,
+    this->ChainSpacing,
+    this->TrailLength,
+    this->SeedColorArrayName ? this->SeedColorArrayName : "" };
   const bool restart = !in.Started || in.ResetRequested || !(key == in.Motion) ||
     seeds != in.SeedObject || (seeds && ContentTime(seeds) != in.SeedTime);
   in.Motion = key;
@@ -659,8 +675,10 @@ void vtkOFBParticleAdvector::LocateSeeds(vtkDataSet* seeds)
       continue;
     }
     system.Seeds.push_back(in.Walker.Locate(cell, closest));
-    float rgba[4] = { static_cast<float>(this->Color[0]), static_cast<float>(this->Color[1]),
-      static_cast<float>(this->Color[2]), 1.f };
+    float rgba[4] = { static_cast<float>(this->Color[0]),
+      static_cast<float>(this->Color[1]),
+      static_cast<float>(this->Color[2]),
+      1.f };
     if (colors)
     {
       const int n = colors->GetNumberOfComponents();
@@ -771,8 +789,9 @@ void vtkOFBParticleAdvector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SmearAmount: " << this->SmearAmount << "\n";
   os << indent << "Paint: " << (this->Paint ? "On" : "Off") << "\n";
   os << indent << "ColorPeriod: " << this->ColorPeriod << " steps\n";
-  os << indent << "SeedColorArrayName: "
-     << (this->SeedColorArrayName ? this->SeedColorArrayName : "(none)") << "\n";
+  os << indent
+     << "SeedColorArrayName: " << (this->SeedColorArrayName ? this->SeedColorArrayName : "(none)")
+     << "\n";
   os << indent << "ScalarArrayName: " << (this->ScalarArrayName ? this->ScalarArrayName : "(none)")
      << "\n";
   os << indent << "LookupTable: " << this->LookupTable << "\n";

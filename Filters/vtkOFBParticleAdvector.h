@@ -53,8 +53,9 @@
  * number of threads.
  *
  * Chains (paper 6.2.1): with ChainLength L > 1 each seed releases L particles, one
- * every ChainSpacing steps. Particle k of a chain (k = 0 the first released)
- * paints with radius FootprintRadius * (1 - k / L) and strength
+ * every ChainSpacing steps: particle k of a chain (k = 0 the first) appears at its
+ * seed when the step count reaches k * ChainSpacing (painting a footprint there)
+ * and moves from the next step on. It paints with radius FootprintRadius * (1 - k / L) and strength
  * Opacity * (1 - k / L): the later ones, which follow behind, leave smaller,
  * fainter footprints, a tail.
  *
@@ -386,8 +387,9 @@ public:
    */
   double GetCellSize() const;
 
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo) override;
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inInfo,
+    vtkInformationVector* outInfo) override;
 
 protected:
   vtkOFBParticleAdvector();

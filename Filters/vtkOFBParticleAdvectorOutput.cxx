@@ -180,4 +180,3 @@ void vtkOFBParticleAdvector::FillTrails(vtkPolyData* output)
   output->SetLines(lines);
   output->GetCellData()->AddArray(ids);
 }
-

@@ -18,8 +18,7 @@ bool vtkOFBParticleStepper::Slope(const vtkOFBSurfacePoint& p, glm::dvec3& slope
 }
 
 //------------------------------------------------------------------------------
-glm::dvec3 vtkOFBParticleStepper::StageSlope(
-  const vtkOFBSurfacePoint& p, const glm::dvec3& d) const
+glm::dvec3 vtkOFBParticleStepper::StageSlope(const vtkOFBSurfacePoint& p, const glm::dvec3& d) const
 {
   vtkOFBSurfacePoint q = p;
   glm::dmat3 frame(1.0);
@@ -31,16 +30,16 @@ glm::dvec3 vtkOFBParticleStepper::StageSlope(
 }
 
 //------------------------------------------------------------------------------
-vtkOFBParticleStepper::Result vtkOFBParticleStepper::Final(
-  vtkOFBSurfacePoint& p, const glm::dvec3& d) const
+vtkOFBParticleStepper::Result vtkOFBParticleStepper::Final(vtkOFBSurfacePoint& p,
+  const glm::dvec3& d) const
 {
   const auto walk = this->Walker->Walk(p, d, nullptr);
   return walk == vtkOFBTriangleWalker::Boundary ? StoppedAtBoundary : Moved;
 }
 
 //------------------------------------------------------------------------------
-vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(
-  vtkOFBSurfacePoint& p, double& subStep) const
+vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(vtkOFBSurfacePoint& p,
+  double& subStep) const
 {
   glm::dvec3 k1;
   if (!this->Slope(p, k1))
@@ -71,21 +70,24 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(
 }
 
 //------------------------------------------------------------------------------
-glm::dvec3 vtkOFBParticleStepper::CashKarp(
-  const vtkOFBSurfacePoint& p, const glm::dvec3& k1, double h, double& error) const
+glm::dvec3 vtkOFBParticleStepper::CashKarp(const vtkOFBSurfacePoint& p,
+  const glm::dvec3& k1,
+  double h,
+  double& error) const
 {
   // Cash-Karp coefficients (as vtkRungeKutta45).
   const glm::dvec3 k2 = this->StageSlope(p, h * (1.0 / 5.0) * k1);
   const glm::dvec3 k3 = this->StageSlope(p, h * ((3.0 / 40.0) * k1 + (9.0 / 40.0) * k2));
   const glm::dvec3 k4 =
     this->StageSlope(p, h * ((3.0 / 10.0) * k1 - (9.0 / 10.0) * k2 + (6.0 / 5.0) * k3));
-  const glm::dvec3 k5 = this->StageSlope(p,
-    h * ((-11.0 / 54.0) * k1 + (5.0 / 2.0) * k2 - (70.0 / 27.0) * k3 + (35.0 / 27.0) * k4));
+  const glm::dvec3 k5 = this->StageSlope(
+    p, h * ((-11.0 / 54.0) * k1 + (5.0 / 2.0) * k2 - (70.0 / 27.0) * k3 + (35.0 / 27.0) * k4));
   const glm::dvec3 k6 = this->StageSlope(p,
-    h * ((1631.0 / 55296.0) * k1 + (175.0 / 512.0) * k2 + (575.0 / 13824.0) * k3 +
-          (44275.0 / 110592.0) * k4 + (253.0 / 4096.0) * k5));
-  const glm::dvec3 fifth = (37.0 / 378.0) * k1 + (250.0 / 621.0) * k3 + (125.0 / 594.0) * k4 +
-    (512.0 / 1771.0) * k6;
+    h *
+      ((1631.0 / 55296.0) * k1 + (175.0 / 512.0) * k2 + (575.0 / 13824.0) * k3 +
+        (44275.0 / 110592.0) * k4 + (253.0 / 4096.0) * k5));
+  const glm::dvec3 fifth =
+    (37.0 / 378.0) * k1 + (250.0 / 621.0) * k3 + (125.0 / 594.0) * k4 + (512.0 / 1771.0) * k6;
   const glm::dvec3 fourth = (2825.0 / 27648.0) * k1 + (18575.0 / 48384.0) * k3 +
     (13525.0 / 55296.0) * k4 + (277.0 / 14336.0) * k5 + 0.25 * k6;
   error = h * glm::length(fifth - fourth);
@@ -93,8 +95,8 @@ glm::dvec3 vtkOFBParticleStepper::CashKarp(
 }
 
 //------------------------------------------------------------------------------
-vtkOFBParticleStepper::Result vtkOFBParticleStepper::AdvanceRK45(
-  vtkOFBSurfacePoint& p, double& subStep) const
+vtkOFBParticleStepper::Result vtkOFBParticleStepper::AdvanceRK45(vtkOFBSurfacePoint& p,
+  double& subStep) const
 {
   // Sub-steps with error control whose lengths add up to exactly one step.
   const double minimum = this->Length / 64.0;

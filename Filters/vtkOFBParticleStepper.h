@@ -67,7 +67,9 @@ private:
   Result Final(vtkOFBSurfacePoint& p, const glm::dvec3& d) const;
   Result AdvanceRK45(vtkOFBSurfacePoint& p, double& subStep) const;
   /// One Cash-Karp step of length h from p: displacement and error length.
-  glm::dvec3 CashKarp(const vtkOFBSurfacePoint& p, const glm::dvec3& k1, double h,
+  glm::dvec3 CashKarp(const vtkOFBSurfacePoint& p,
+    const glm::dvec3& k1,
+    double h,
     double& error) const;
 };
 

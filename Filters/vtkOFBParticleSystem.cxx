@@ -19,8 +19,7 @@ inline std::uint64_t Mix(std::uint64_t x)
 }
 
 //------------------------------------------------------------------------------
-double vtkOFBParticleSystem::Random(
-  unsigned int seed, vtkIdType particle, int generation, int k)
+double vtkOFBParticleSystem::Random(unsigned int seed, vtkIdType particle, int generation, int k)
 {
   std::uint64_t h = Mix(static_cast<std::uint64_t>(seed));
   h = Mix(h ^ static_cast<std::uint64_t>(particle));
@@ -51,8 +50,8 @@ void vtkOFBParticleSystem::MakeRandomSeeds(vtkIdType n)
   for (vtkIdType i = 0; i < n; ++i)
   {
     const unsigned int seed = this->Setup.RandomSeed;
-    this->Seeds[i] = this->Walker->Sample(
-      Random(seed, i, -1, 0), Random(seed, i, -1, 1), Random(seed, i, -1, 2));
+    this->Seeds[i] =
+      this->Walker->Sample(Random(seed, i, -1, 0), Random(seed, i, -1, 1), Random(seed, i, -1, 2));
   }
 }
 
@@ -126,7 +125,8 @@ void vtkOFBParticleSystem::Reseed(vtkIdType i, Particle& p)
   {
     const unsigned int seed = this->Setup.RandomSeed;
     p.Point = this->Walker->Sample(Random(seed, i, p.Generation, 0),
-      Random(seed, i, p.Generation, 1), Random(seed, i, p.Generation, 2));
+      Random(seed, i, p.Generation, 1),
+      Random(seed, i, p.Generation, 2));
     p.Position = this->Walker->Position(p.Point);
     p.Previous = p.Position;
     p.Age = 0;
@@ -180,8 +180,10 @@ void vtkOFBParticleSystem::Advance(const Coloring& coloring)
   const vtkIdType step = this->CurrentStep;
   const int lifetime = this->Setup.Lifetime;
   ++this->CurrentStep;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(this->Particles.size()),
-    [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0,
+    static_cast<vtkIdType>(this->Particles.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
       for (vtkIdType i = begin; i < end; ++i)
       {
         Particle& p = this->Particles[i];

@@ -97,10 +97,7 @@ public:
   int GetTrail(vtkIdType i, glm::dvec3* out) const;
 
   /// The footprint weight of a chain member: 1 - k / ChainLength.
-  double ChainWeight(int k) const
-  {
-    return 1.0 - static_cast<double>(k) / this->Setup.ChainLength;
-  }
+  double ChainWeight(int k) const { return 1.0 - static_cast<double>(k) / this->Setup.ChainLength; }
 
   /// The periodic colour (red, blue, green) at `step` for `period` steps.
   static void PeriodicColor(vtkIdType step, int period, float rgb[3]);

@@ -106,7 +106,8 @@ void vtkOFBTriangleWalker::BuildGeometry()
   for (vtkIdType t = 0; t < numTriangles; ++t)
   {
     const glm::dvec3 p[3] = { this->Points[this->Corners[3 * t]],
-      this->Points[this->Corners[3 * t + 1]], this->Points[this->Corners[3 * t + 2]] };
+      this->Points[this->Corners[3 * t + 1]],
+      this->Points[this->Corners[3 * t + 2]] };
     const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
     const double area2 = glm::length(n);
     const glm::dvec3 unit = n / area2;
@@ -144,9 +145,10 @@ void vtkOFBTriangleWalker::BuildAdjacency()
       edges[3 * t + i] = { std::min(a, b), std::max(a, b), t, i };
     }
   }
-  std::sort(edges.begin(), edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.A != y.A ? x.A < y.A : (x.B != y.B ? x.B < y.B : x.Triangle < y.Triangle);
-  });
+  std::sort(edges.begin(),
+    edges.end(),
+    [](const HalfEdge& x, const HalfEdge& y)
+    { return x.A != y.A ? x.A < y.A : (x.B != y.B ? x.B < y.B : x.Triangle < y.Triangle); });
   this->Neighbors.assign(3 * numTriangles, -1);
   this->NeighborCorner.assign(3 * numTriangles, -1);
   for (size_t i = 0; i < edges.size();)
@@ -170,8 +172,9 @@ void vtkOFBTriangleWalker::BuildAdjacency()
 }
 
 //------------------------------------------------------------------------------
-double vtkOFBTriangleWalker::Interpolate(
-  vtkDataArray* array, int component, const vtkOFBSurfacePoint& p) const
+double vtkOFBTriangleWalker::Interpolate(vtkDataArray* array,
+  int component,
+  const vtkOFBSurfacePoint& p) const
 {
   const vtkIdType* c = &this->Corners[3 * p.Triangle];
   return p.Bary[0] * array->GetComponent(c[0], component) +
@@ -180,8 +183,9 @@ double vtkOFBTriangleWalker::Interpolate(
 }
 
 //------------------------------------------------------------------------------
-vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(
-  vtkOFBSurfacePoint& p, glm::dvec3 d, glm::dmat3* frame) const
+vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& p,
+  glm::dvec3 d,
+  glm::dmat3* frame) const
 {
   for (int crossing = 0; crossing < MaximumCrossings; ++crossing)
   {
@@ -220,23 +224,23 @@ vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(
     const int opposite = this->NeighborCorner[3 * t + edge];
     const vtkIdType* nc = &this->Corners[3 * next];
     glm::dvec3 bary(0.0);
-    const int na = nc[(opposite + 1) % 3] == this->Corners[3 * t + a] ? (opposite + 1) % 3
-                                                                     : (opposite + 2) % 3;
+    const int na =
+      nc[(opposite + 1) % 3] == this->Corners[3 * t + a] ? (opposite + 1) % 3 : (opposite + 2) % 3;
     const int nb = 3 - opposite - na;
     bary[na] = p.Bary[a];
     bary[nb] = p.Bary[b];
 
     // Turn the rest of d about the shared edge: e stays, the direction out of t
     // becomes the direction into the neighbour.
-    const glm::dvec3 e =
-      glm::normalize(this->Points[this->Corners[3 * t + b]] - this->Points[this->Corners[3 * t + a]]);
+    const glm::dvec3 e = glm::normalize(
+      this->Points[this->Corners[3 * t + b]] - this->Points[this->Corners[3 * t + a]]);
     const glm::dvec3& out = this->EdgeOut[3 * t + edge];
     const glm::dvec3 in = -this->EdgeOut[3 * next + opposite];
     const glm::dvec3 outNormal = glm::cross(e, out);
     const glm::dvec3 inNormal = glm::cross(e, in);
     // turn = [e in inNormal] * [e out outNormal]^T
-    const glm::dmat3 turn = glm::outerProduct(e, e) + glm::outerProduct(in, out) +
-      glm::outerProduct(inNormal, outNormal);
+    const glm::dmat3 turn =
+      glm::outerProduct(e, e) + glm::outerProduct(in, out) + glm::outerProduct(inNormal, outNormal);
     d = (1.0 - exit) * (turn * d);
     if (frame)
     {

@@ -46,9 +46,9 @@ public:
   /// How a walk ended.
   enum WalkResult
   {
-    Inside = 0,  ///< the whole displacement was travelled
+    Inside = 0,   ///< the whole displacement was travelled
     Boundary = 1, ///< stopped on a boundary edge
-    Stuck = 2    ///< too many edge crossings for one displacement (stopped where it was)
+    Stuck = 2     ///< too many edge crossings for one displacement (stopped where it was)
   };
 
   /**
@@ -126,13 +126,13 @@ private:
   vtkSmartPointer<vtkPolyData> Triangles;
   std::vector<glm::dvec3> Points;
   std::vector<glm::dvec3> Vectors;
-  std::vector<vtkIdType> Corners;      // 3 point ids per triangle
-  std::vector<vtkIdType> Neighbors;    // across the edge opposite corner i; -1 boundary
+  std::vector<vtkIdType> Corners;          // 3 point ids per triangle
+  std::vector<vtkIdType> Neighbors;        // across the edge opposite corner i; -1 boundary
   std::vector<signed char> NeighborCorner; // that edge's opposite corner in the neighbour
-  std::vector<glm::dvec3> Normals;     // unit normal per triangle
-  std::vector<glm::dvec3> Gradients;   // 3 per triangle: gradients of the barycentrics
-  std::vector<glm::dvec3> EdgeOut;     // 3 per triangle: unit in-plane normal out of edge i
-  std::vector<double> Area;            // running sum of triangle areas
+  std::vector<glm::dvec3> Normals;         // unit normal per triangle
+  std::vector<glm::dvec3> Gradients;       // 3 per triangle: gradients of the barycentrics
+  std::vector<glm::dvec3> EdgeOut;         // 3 per triangle: unit in-plane normal out of edge i
+  std::vector<double> Area;                // running sum of triangle areas
   double MaximumSpeed = 0.0;
 };
 

@@ -10,9 +10,9 @@
 // Without a mesh it reads Testing/Data/horse.ply of the source tree. Fields:
 // `rotation` (default) the tangential part of a rotation about an axis through the
 // mesh's centre, `height` the surface gradient of the height along the view-up axis,
-// `mesh` the mesh's own point vectors. In the window: space pauses, r reseeds, c changes the colour mode,
-// t toggles reveal mode (the surface starts dark and the particles uncover it, the
-// paper's Fig. 2), q quits. `--image` runs headless: N steps, then writes a PNG.
+// `mesh` the mesh's own point vectors. In the window: space pauses, r reseeds, c changes the colour
+// mode, t toggles reveal mode (the surface starts dark and the particles uncover it, the paper's
+// Fig. 2), q quits. `--image` runs headless: N steps, then writes a PNG.
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
@@ -72,25 +72,45 @@ bool Parse(int argc, char* argv[], Options& o)
     const std::string a = argv[i];
     const bool more = i + 1 < argc;
     if (a == "--field" && more)
+    {
       o.Field = argv[++i];
+    }
     else if (a == "--color" && more)
+    {
       o.Color = argv[++i];
+    }
     else if (a == "--image" && more)
+    {
       o.Image = argv[++i];
+    }
     else if (a == "--particles" && more)
+    {
       o.Particles = std::atoi(argv[++i]);
+    }
     else if (a == "--resolution" && more)
+    {
       o.Resolution = std::atoi(argv[++i]);
+    }
     else if (a == "--steps" && more)
+    {
       o.Steps = std::atoi(argv[++i]);
+    }
     else if (a == "--lifetime" && more)
+    {
       o.Lifetime = std::atoi(argv[++i]);
+    }
     else if (a == "--radius" && more)
+    {
       o.Radius = std::atof(argv[++i]);
+    }
     else if (a == "--width" && more)
+    {
       o.Width = std::atoi(argv[++i]);
+    }
     else if (a == "--height" && more)
+    {
       o.Height = std::atoi(argv[++i]);
+    }
     else if (a == "--view-up" && i + 3 < argc)
     {
       for (double& x : o.ViewUp)
@@ -99,11 +119,17 @@ bool Parse(int argc, char* argv[], Options& o)
       }
     }
     else if (a == "--reveal")
+    {
       o.Reveal = true;
+    }
     else if (!a.empty() && a[0] != '-')
+    {
       o.Mesh = a;
+    }
     else
+    {
       return false;
+    }
   }
   return true;
 }
@@ -173,11 +199,17 @@ bool MakeField(vtkPolyData* mesh, const std::string& kind, const double up[3])
 int ColorMode(const std::string& name)
 {
   if (name == "constant")
+  {
     return vtkOFBParticleAdvector::COLOR_CONSTANT;
+  }
   if (name == "seeds")
+  {
     return vtkOFBParticleAdvector::COLOR_FROM_SEEDS;
+  }
   if (name == "scalar")
+  {
     return vtkOFBParticleAdvector::COLOR_BY_SCALAR;
+  }
   return vtkOFBParticleAdvector::COLOR_PERIODIC;
 }
 
@@ -323,8 +355,9 @@ int main(int argc, char* argv[])
   vtkCamera* camera = renderer->GetActiveCamera();
   double center[3], side[3];
   mesh->GetCenter(center);
-  const double other[3] = { 0.0, std::abs(o.ViewUp[1]) > 0.9 ? 0.0 : 1.0,
-    std::abs(o.ViewUp[1]) > 0.9 ? 1.0 : 0.0 };
+  const double other[3] = {
+    0.0, std::abs(o.ViewUp[1]) > 0.9 ? 0.0 : 1.0, std::abs(o.ViewUp[1]) > 0.9 ? 1.0 : 0.0
+  };
   vtkMath::Cross(o.ViewUp, other, side);
   vtkMath::Normalize(side);
   camera->SetFocalPoint(center);

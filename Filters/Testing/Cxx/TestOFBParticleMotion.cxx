@@ -3,6 +3,7 @@
 #include "vtkOFBParticleTestUtilities.h"
 #include "vtkOFBTestUtilities.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
@@ -13,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <sstream>
 
 using namespace vtkofbtest;
 
@@ -142,7 +144,8 @@ TEST_P(ParticlesOnMesh, StayOnSurfaceFor1000Steps)
   EXPECT_GT(advector->GetTrails()->GetNumberOfCells(), 250);
 }
 
-INSTANTIATE_TEST_SUITE_P(BundledMeshes, ParticlesOnMesh,
+INSTANTIATE_TEST_SUITE_P(BundledMeshes,
+  ParticlesOnMesh,
   ::testing::Values("stanford-bunny.obj", "horse.ply", "fandisk.obj"));
 
 // A field along the meridians of a torus: particles go once round the tube,
@@ -151,13 +154,15 @@ TEST(Particles, TorusMeridiansCrossTheWholeSurface)
 {
   const double R = 1.0, r = 0.4;
   vtkSmartPointer<vtkPolyData> torus = MakeTorus(R, r, 64);
-  SetField(torus, [&](const double* x, double* v) {
-    const double rho = std::hypot(x[0], x[1]);
-    const double e[3] = { x[0] / rho, x[1] / rho, 0.0 };      // radial
-    const double n[3] = { x[0] - R * e[0], x[1] - R * e[1], x[2] }; // out of the tube
-    const double phi[3] = { -e[1], e[0], 0.0 };              // along the ring
-    vtkMath::Cross(phi, n, v);
-  });
+  SetField(torus,
+    [&](const double* x, double* v)
+    {
+      const double rho = std::hypot(x[0], x[1]);
+      const double e[3] = { x[0] / rho, x[1] / rho, 0.0 };            // radial
+      const double n[3] = { x[0] - R * e[0], x[1] - R * e[1], x[2] }; // out of the tube
+      const double phi[3] = { -e[1], e[0], 0.0 };                     // along the ring
+      vtkMath::Cross(phi, n, v);
+    });
   std::vector<std::array<double, 3>> xs;
   for (int i = 0; i < 12; ++i)
   {
@@ -219,11 +224,13 @@ TEST(Particles, OpenSurfaceBoundaryStops)
   plane->SetResolution(40, 40);
   plane->Update();
   vtkSmartPointer<vtkPolyData> mesh = plane->GetOutput();
-  SetField(mesh, [](const double*, double* v) {
-    v[0] = 1.0;
-    v[1] = 0.3;
-    v[2] = 0.0;
-  });
+  SetField(mesh,
+    [](const double*, double* v)
+    {
+      v[0] = 1.0;
+      v[1] = 0.3;
+      v[2] = 0.0;
+    });
   vtkNew<vtkOFBParticleAdvector> advector;
   advector->SetInputData(mesh);
   advector->SetNumberOfParticles(50);
@@ -237,8 +244,7 @@ TEST(Particles, OpenSurfaceBoundaryStops)
     double x[3];
     particles->GetPoint(i, x);
     // On the right or top edge of the square [-0.5, 0.5]^2.
-    EXPECT_TRUE(std::abs(x[0] - 0.5) < 1e-9 || std::abs(x[1] - 0.5) < 1e-9)
-      << x[0] << " " << x[1];
+    EXPECT_TRUE(std::abs(x[0] - 0.5) < 1e-9 || std::abs(x[1] - 0.5) < 1e-9) << x[0] << " " << x[1];
     EXPECT_NEAR(x[2], 0.0, 1e-12);
   }
   // Stopped particles stay.
@@ -277,11 +283,13 @@ TEST(Particles, ZeroFieldStops)
   plane->SetResolution(40, 40);
   plane->Update();
   vtkSmartPointer<vtkPolyData> mesh = plane->GetOutput();
-  SetField(mesh, [](const double* x, double* v) {
-    v[0] = x[0] < 0.0 ? 1.0 : 0.0;
-    v[1] = 0.0;
-    v[2] = 0.0;
-  });
+  SetField(mesh,
+    [](const double* x, double* v)
+    {
+      v[0] = x[0] < 0.0 ? 1.0 : 0.0;
+      v[1] = 0.0;
+      v[2] = 0.0;
+    });
   vtkNew<vtkOFBParticleAdvector> advector;
   advector->SetInputData(mesh);
   advector->SetSeeds(MakeSeeds({ { -0.4, 0.1, 0.0 } }));
@@ -394,5 +402,62 @@ TEST(Particles, BackwardRetracesForward)
     start->GetParticles()->GetPoint(i, a);
     backward->GetParticles()->GetPoint(i, b);
     EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(a, b)), 0.05 * start->GetCellSize());
+  }
+}
+
+// PrintSelf names every setting; many steps at once report progress.
+TEST(Particles, PrintSelfAndProgress)
+{
+  vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 32);
+  SetRotationField(sphere, ZAxis, Origin);
+  vtkNew<vtkOFBParticleAdvector> advector;
+  advector->SetInputData(sphere);
+  advector->SetNumberOfParticles(10);
+  advector->SetStepsPerUpdate(20);
+  int events = 0;
+  double last = 0.0;
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(&events);
+  progress->SetCallback(
+    [](vtkObject* caller, unsigned long, void* data, void*)
+    {
+      ++*static_cast<int*>(data);
+      (void)caller;
+    });
+  advector->AddObserver(vtkCommand::ProgressEvent, progress);
+  advector->Step();
+  last = advector->GetProgress();
+  EXPECT_GE(events, 20);
+  EXPECT_DOUBLE_EQ(last, 1.0);
+  std::ostringstream os;
+  advector->Print(os);
+  for (const char* name : { "Integrator: RK4",
+         "StepSize: 1",
+         "ErrorTolerance",
+         "NormalizeVectors",
+         "Direction: Forward",
+         "StepsPerUpdate: 20",
+         "Lifetime",
+         "NumberOfParticles: 10",
+         "RandomSeed",
+         "MaximumSeedDistance",
+         "ChainLength",
+         "ChainSpacing",
+         "ColorMode: Constant",
+         "Color:",
+         "Opacity",
+         "FootprintRadius",
+         "Falloff",
+         "BlendMode",
+         "SmearAmount",
+         "Paint",
+         "ColorPeriod",
+         "SeedColorArrayName",
+         "ScalarArrayName",
+         "LookupTable",
+         "TrailLength",
+         "CurrentStep: 20" })
+  {
+    EXPECT_NE(os.str().find(name), std::string::npos) << name;
   }
 }

@@ -127,7 +127,8 @@ TEST(ParticlePaint, InputOFBCopiedHeldOFBInPlace)
   advector->SetNumberOfParticles(20);
   advector->SetStepsPerUpdate(5);
   advector->Step();
-  auto changed = [](vtkOFB* x, vtkOFB* y) {
+  auto changed = [](vtkOFB* x, vtkOFB* y)
+  {
     vtkIdType n = 0;
     for (vtkIdType id = 0; id < x->GetNumberOfSamples(); ++id)
     {
@@ -173,7 +174,8 @@ TEST(ParticlePaint, ChainsFadeAsSpecified)
   vtkDataArray* strength = footprints->GetPointData()->GetArray("Strength");
   ASSERT_NE(radius, nullptr);
   ASSERT_NE(strength, nullptr);
-  auto* chain = vtkIntArray::SafeDownCast(advector->GetParticles()->GetPointData()->GetArray("ChainIndex"));
+  auto* chain =
+    vtkIntArray::SafeDownCast(advector->GetParticles()->GetPointData()->GetArray("ChainIndex"));
   ASSERT_NE(chain, nullptr);
   const double cell = ofb->GetCellSize();
   for (vtkIdType i = 0; i < 8; ++i)
@@ -203,8 +205,12 @@ TEST(ParticlePaint, PeriodicColorOnSchedule)
   {
     int Steps;
     unsigned char Rgb[3];
-  } schedule[] = { { 5, { 128, 0, 128 } }, { 10, { 0, 0, 255 } }, { 20, { 0, 255, 0 } },
-    { 25, { 128, 128, 0 } }, { 30, { 255, 0, 0 } }, { 40, { 0, 0, 255 } } };
+  } schedule[] = { { 5, { 128, 0, 128 } },
+    { 10, { 0, 0, 255 } },
+    { 20, { 0, 255, 0 } },
+    { 25, { 128, 128, 0 } },
+    { 30, { 255, 0, 0 } },
+    { 40, { 0, 0, 255 } } };
   int done = 0;
   for (const auto& entry : schedule)
   {
@@ -241,8 +247,8 @@ TEST(ParticlePaint, ColorFromSeedsAndByScalar)
   advector->SetColorModeToFromSeeds();
   advector->SetSeedColorArrayName("SeedRGB");
   advector->Step();
-  auto* color = vtkUnsignedCharArray::SafeDownCast(
-    advector->GetParticles()->GetPointData()->GetArray("Color"));
+  auto* color =
+    vtkUnsignedCharArray::SafeDownCast(advector->GetParticles()->GetPointData()->GetArray("Color"));
   ASSERT_NE(color, nullptr);
   EXPECT_EQ(color->GetTypedComponent(0, 0), 10);
   EXPECT_EQ(color->GetTypedComponent(1, 1), 100);
@@ -257,8 +263,8 @@ TEST(ParticlePaint, ColorFromSeedsAndByScalar)
   advector->SetColorModeToByScalar();
   advector->SetScalarArrayName("Height");
   advector->Step();
-  color = vtkUnsignedCharArray::SafeDownCast(
-    advector->GetParticles()->GetPointData()->GetArray("Color"));
+  color =
+    vtkUnsignedCharArray::SafeDownCast(advector->GetParticles()->GetPointData()->GetArray("Color"));
   EXPECT_GT(color->GetTypedComponent(1, 0), 200); // at the pole: red
   EXPECT_LT(color->GetTypedComponent(1, 2), 50);
 }
@@ -290,7 +296,8 @@ TEST(ParticlePaint, SmearCarriesPreviousPositions)
 TEST(ParticlePaint, BadInput)
 {
   vtkNew<MessageObserver> messages;
-  auto expectEmpty = [&](vtkOFBParticleAdvector* advector, const char* what) {
+  auto expectEmpty = [&](vtkOFBParticleAdvector* advector, const char* what)
+  {
     messages->Clear();
     messages->Watch(advector);
     advector->Update();
@@ -326,10 +333,12 @@ TEST(ParticlePaint, BadInput)
     vtkNew<vtkOFBParticleAdvector> advector;
     advector->SetInputData(copy);
     expectEmpty(advector, "zero everywhere");
-    SetField(copy, [](const double* x, double* v) {
-      v[0] = x[0] > 0.9 ? std::numeric_limits<double>::quiet_NaN() : 1.0;
-      v[1] = v[2] = 0.0;
-    });
+    SetField(copy,
+      [](const double* x, double* v)
+      {
+        v[0] = x[0] > 0.9 ? std::numeric_limits<double>::quiet_NaN() : 1.0;
+        v[1] = v[2] = 0.0;
+      });
     expectEmpty(advector, "non-finite");
   }
   vtkSmartPointer<vtkPolyData> rotating = RotatingSphere(32);
@@ -411,8 +420,8 @@ TEST(ParticlePaint, OneAndTwoThreadsPaintTheSame)
     advector->SetStepsPerUpdate(25);
     advector->Step();
     vtkUnsignedCharArray* colors = Colors(ofb);
-    results[threads - 1].assign(colors->GetPointer(0),
-      colors->GetPointer(0) + 4 * colors->GetNumberOfTuples());
+    results[threads - 1].assign(
+      colors->GetPointer(0), colors->GetPointer(0) + 4 * colors->GetNumberOfTuples());
   }
   vtkSMPTools::Initialize(0);
   EXPECT_FALSE(results[0].empty());

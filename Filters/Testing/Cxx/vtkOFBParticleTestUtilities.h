@@ -42,12 +42,14 @@ inline void SetField(vtkPolyData* mesh, const std::function<void(const double*, 
 /// v = w x (x - c): rotation about the axis w through c.
 inline void SetRotationField(vtkPolyData* mesh, const double w[3], const double c[3])
 {
-  SetField(mesh, [&](const double* x, double* v) {
-    const double r[3] = { x[0] - c[0], x[1] - c[1], x[2] - c[2] };
-    v[0] = w[1] * r[2] - w[2] * r[1];
-    v[1] = w[2] * r[0] - w[0] * r[2];
-    v[2] = w[0] * r[1] - w[1] * r[0];
-  });
+  SetField(mesh,
+    [&](const double* x, double* v)
+    {
+      const double r[3] = { x[0] - c[0], x[1] - c[1], x[2] - c[2] };
+      v[0] = w[1] * r[2] - w[2] * r[1];
+      v[1] = w[2] * r[0] - w[0] * r[2];
+      v[2] = w[0] * r[1] - w[1] * r[0];
+    });
 }
 
 /// A closed torus about the z axis (ring radius R, tube radius r), triangles.

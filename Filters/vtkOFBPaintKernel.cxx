@@ -27,6 +27,21 @@ unsigned char ToByte(float v)
   return static_cast<unsigned char>(v * 255.0f + 0.5f);
 }
 
+// Morton code of a point in units of the largest dab reach (21 bits per axis).
+vtkTypeUInt64 MortonCode(const glm::dvec3& q)
+{
+  auto spread = [](double v) {
+    vtkTypeUInt64 x = static_cast<vtkTypeUInt64>(std::min(std::max(v, 0.0), 2097151.0));
+    x = (x | (x << 32)) & 0x1f00000000ffffull;
+    x = (x | (x << 16)) & 0x1f0000ff0000ffull;
+    x = (x | (x << 8)) & 0x100f00f00f00f00full;
+    x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
+    x = (x | (x << 2)) & 0x1249249249249249ull;
+    return x;
+  };
+  return spread(q.x) | (spread(q.y) << 1) | (spread(q.z) << 2);
+}
+
 // Per-thread undo records of one call.
 struct LocalRecords
 {
@@ -451,6 +466,28 @@ void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
   for (size_t j = 0; j < n; ++j)
   {
     order[next[wave[j]]++] = static_cast<int>(j);
+  }
+  // Within a wave the order does not change the result (its dabs share no
+  // sample): paint in Morton order of the centres, so that consecutive dabs read
+  // neighbouring rows of the grids' offsets, depths and colours.
+  glm::dvec3 low(VTK_DOUBLE_MAX);
+  for (size_t j = 0; j < n; ++j)
+  {
+    low = glm::min(low, centre[j]);
+  }
+  std::vector<vtkTypeUInt64> key(n);
+  for (size_t j = 0; j < n; ++j)
+  {
+    const glm::dvec3 q = (centre[j] - low) / std::max(maxReach, 1e-300);
+    key[j] = MortonCode(q);
+  }
+  for (int w = 0; w < numberOfWaves; ++w)
+  {
+    if (waveStarts[w + 1] - waveStarts[w] > 2)
+    {
+      std::sort(order.begin() + waveStarts[w], order.begin() + waveStarts[w + 1],
+        [&key](int a, int b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
+    }
   }
 }
 

@@ -2,6 +2,7 @@
 // reference over all samples, strokes, threads, undo/redo, smear, normals, bad input.
 #include "vtkOFBTestUtilities.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
@@ -21,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -831,4 +833,55 @@ TEST(Painter, RadiusCoveringTheWholeOFBWorksWithProgress)
   ASSERT_GE(progress.size(), 2u);
   EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
   EXPECT_EQ(progress.back(), 1.0);
+}
+
+//------------------------------------------------------------------------------
+TEST(Painter, NormalAwareCannotSeparateSheetsFacingTheSameWay)
+{
+  // Two parallel sheets 0.05 apart facing the same way (+z), brush radius 0.1:
+  // the normals agree, so the normal-aware brush leaks as the plain one does; only
+  // a surface-aligned brush (a later issue) tells them apart.
+  vtkNew<vtkAppendPolyData> sheets;
+  for (double z : { 0.0, -0.05 })
+  {
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(-1, -1, z);
+    plane->SetPoint1(1, -1, z);
+    plane->SetPoint2(-1, 1, z);
+    sheets->AddInputConnection(plane->GetOutputPort());
+  }
+  sheets->Update();
+  vtkSmartPointer<vtkOFB> base = Build(sheets->GetOutput(), 256);
+  const double r = 0.1;
+  const double c[3] = { 0.1, 0.05, 0.0 };
+  for (int aware = 0; aware < 2; ++aware)
+  {
+    vtkNew<vtkOFB> ofb;
+    ofb->DeepCopy(base);
+    vtkNew<vtkOFBPainter> painter;
+    painter->SetOFB(ofb);
+    painter->GetBrush()->SetRadius(r);
+    painter->GetBrush()->SetColor(1, 0, 0);
+    painter->GetBrush()->SetFalloffToLinear();
+    painter->GetBrush()->SetNormalAware(aware == 1);
+    painter->GetBrush()->SetMaxNormalAngle(60.0);
+    painter->Dab(c);
+    vtkIdType far = 0, farPainted = 0;
+    for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+    {
+      double x[3];
+      ofb->GetSamplePosition(i, x);
+      if (vtkMath::Distance2BetweenPoints(x, c) < r * r && x[2] < -0.025)
+      {
+        ++far;
+        farPainted += Colors(ofb)->GetValue(4 * i + 1) < 255;
+      }
+    }
+    ASSERT_GT(far, 100);
+    std::cout << "[ leakage ] sheets 0.05 apart facing the same way, brush radius 0.1: "
+              << "NormalAware " << (aware ? "on " : "off") << ": " << farPainted << " of " << far
+              << " far-sheet samples inside the brush painted (" << 100.0 * farPainted / far
+              << " %)\n";
+    EXPECT_GT(double(farPainted) / far, 0.9);
+  }
 }

@@ -103,6 +103,7 @@ vtkOFBParticleAdvector::vtkOFBParticleAdvector()
   this->Internals->Painter->SetBrush(this->Internals->Brush);
   this->Internals->Painter->SetUndoLimit(0);
   this->Internals->Footprints = vtkSmartPointer<vtkPolyData>::New();
+  this->Internals->Footprints->SetPoints(this->Internals->Arrays.DabPoints);
 }
 
 //------------------------------------------------------------------------------
@@ -336,12 +337,12 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   outOFB->Initialize();
   outParticles->Initialize();
   outTrails->Initialize();
-  in.Footprints->Initialize();
 
   bool rebuilt = false;
   if (!this->CheckSettings() || !this->PrepareSurface(surface, inputVector, rebuilt))
   {
     in.Started = false;
+    this->ClearFootprints();
     in.SurfaceObject = nullptr;
     in.PendingSteps = 0;
     return 1;

@@ -413,6 +413,7 @@ protected:
   void LocateSeeds(vtkDataSet* seeds);
   void PrepareColoring(vtkPolyData* surface);
   void PaintFootprints();
+  void ClearFootprints();
   void FillParticles(vtkPolyData* output);
   void FillTrails(vtkPolyData* output);
   ///@}

@@ -9,9 +9,46 @@
 
 #include <string>
 
+class vtkCellArray;
+class vtkDoubleArray;
+class vtkFloatArray;
+class vtkIdTypeArray;
+class vtkIntArray;
 class vtkOFBBrush;
 class vtkOFBPainter;
+class vtkPoints;
 class vtkStaticCellLocator;
+class vtkUnsignedCharArray;
+
+/// The arrays of the footprints and outputs, kept from step to step so that a
+/// step allocates nothing once their sizes are reached.
+struct vtkOFBParticleArrays
+{
+  vtkOFBParticleArrays();
+  ~vtkOFBParticleArrays();
+  // Footprints.
+  vtkSmartPointer<vtkPoints> DabPoints;
+  vtkSmartPointer<vtkDoubleArray> DabRadius;
+  vtkSmartPointer<vtkFloatArray> DabColor;
+  vtkSmartPointer<vtkDoubleArray> DabStrength;
+  vtkSmartPointer<vtkDoubleArray> DabPrevious;
+  // Particles.
+  vtkSmartPointer<vtkPoints> Points;
+  vtkSmartPointer<vtkCellArray> Verts;
+  vtkSmartPointer<vtkIdTypeArray> VertOffsets;
+  vtkSmartPointer<vtkIdTypeArray> VertConnectivity;
+  vtkSmartPointer<vtkDoubleArray> Velocity;
+  vtkSmartPointer<vtkIntArray> Age;
+  vtkSmartPointer<vtkIdTypeArray> Ids;
+  vtkSmartPointer<vtkIntArray> Chain;
+  vtkSmartPointer<vtkUnsignedCharArray> Color;
+  // Trails.
+  vtkSmartPointer<vtkPoints> TrailPoints;
+  vtkSmartPointer<vtkCellArray> Lines;
+  vtkSmartPointer<vtkIdTypeArray> LineOffsets;
+  vtkSmartPointer<vtkIdTypeArray> LineConnectivity;
+  vtkSmartPointer<vtkIdTypeArray> TrailIds;
+};
 
 /// Everything that places or moves particles: a change restarts them.
 struct vtkOFBParticleMotionKey
@@ -51,6 +88,7 @@ public:
   vtkSmartPointer<vtkOFBPainter> Painter;
   vtkSmartPointer<vtkOFBBrush> Brush;
   vtkSmartPointer<vtkPolyData> Footprints;
+  vtkOFBParticleArrays Arrays;
   vtkSmartPointer<vtkPolyData> Surface; // the input's triangles
   double CellSize = 0.0;
   bool Started = false;

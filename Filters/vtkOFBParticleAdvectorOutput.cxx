@@ -17,27 +17,99 @@
 
 #include <vector>
 
+#include "vtkSMPTools.h"
+
+static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "trail points are written as glm::dvec3");
+
 // The footprints painted at each step and the particle and trail outputs of
-// vtkOFBParticleAdvector.
+// vtkOFBParticleAdvector. Their arrays are kept from step to step and written
+// through their pointers: a step allocates only when a count grows.
+
+namespace
+{
+template<typename T>
+vtkSmartPointer<T> Named(const char* name, int components)
+{
+  auto array = vtkSmartPointer<T>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  return array;
+}
+
+vtkSmartPointer<vtkPoints> DoublePoints()
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  return points;
+}
+
+double* PointsOf(vtkPoints* points, vtkIdType n)
+{
+  if (points->GetNumberOfPoints() != n)
+  {
+    points->SetNumberOfPoints(n);
+  }
+  points->Modified();
+  return static_cast<double*>(points->GetVoidPointer(0));
+}
+
+template<typename A>
+auto* ValuesOf(A* array, vtkIdType n)
+{
+  if (array->GetNumberOfTuples() != n)
+  {
+    array->SetNumberOfTuples(n);
+  }
+  array->Modified();
+  return array->GetPointer(0);
+}
+
+}
+
+//------------------------------------------------------------------------------
+vtkOFBParticleArrays::vtkOFBParticleArrays()
+  : DabPoints(DoublePoints())
+  , DabRadius(Named<vtkDoubleArray>("Radius", 1))
+  , DabColor(Named<vtkFloatArray>("Color", 4))
+  , DabStrength(Named<vtkDoubleArray>("Strength", 1))
+  , DabPrevious(Named<vtkDoubleArray>("PreviousPosition", 3))
+  , Points(DoublePoints())
+  , Verts(vtkSmartPointer<vtkCellArray>::New())
+  , VertOffsets(Named<vtkIdTypeArray>(nullptr, 1))
+  , VertConnectivity(Named<vtkIdTypeArray>(nullptr, 1))
+  , Velocity(Named<vtkDoubleArray>("Velocity", 3))
+  , Age(Named<vtkIntArray>("Age", 1))
+  , Ids(Named<vtkIdTypeArray>("Id", 1))
+  , Chain(Named<vtkIntArray>("ChainIndex", 1))
+  , Color(Named<vtkUnsignedCharArray>("Color", 4))
+  , TrailPoints(DoublePoints())
+  , Lines(vtkSmartPointer<vtkCellArray>::New())
+  , LineOffsets(Named<vtkIdTypeArray>(nullptr, 1))
+  , LineConnectivity(Named<vtkIdTypeArray>(nullptr, 1))
+  , TrailIds(Named<vtkIdTypeArray>("Id", 1))
+{
+}
+
+vtkOFBParticleArrays::~vtkOFBParticleArrays() = default;
 
 //------------------------------------------------------------------------------
 void vtkOFBParticleAdvector::PaintFootprints()
 {
   vtkInternals& in = *this->Internals;
+  vtkOFBParticleArrays& arrays = in.Arrays;
   const vtkOFBParticleSystem& system = in.System;
   const bool smear = this->SmearAmount > 0.0;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> radius;
-  radius->SetName("Radius");
-  vtkNew<vtkFloatArray> color;
-  color->SetName("Color");
-  color->SetNumberOfComponents(4);
-  vtkNew<vtkDoubleArray> strength;
-  strength->SetName("Strength");
-  vtkNew<vtkDoubleArray> previous;
-  previous->SetName("PreviousPosition");
-  previous->SetNumberOfComponents(3);
+  vtkIdType count = 0;
+  for (const auto& p : system.Particles)
+  {
+    count += p.Painted ? 1 : 0;
+  }
+  double* x = PointsOf(arrays.DabPoints, count);
+  double* radius = ValuesOf(arrays.DabRadius.Get(), count);
+  float* color = ValuesOf(arrays.DabColor.Get(), count);
+  double* strength = ValuesOf(arrays.DabStrength.Get(), count);
+  double* previous = smear ? ValuesOf(arrays.DabPrevious.Get(), count) : nullptr;
+  vtkIdType k = 0;
   for (const auto& p : system.Particles)
   {
     if (!p.Painted)
@@ -45,28 +117,39 @@ void vtkOFBParticleAdvector::PaintFootprints()
       continue;
     }
     const double w = system.ChainWeight(p.Chain);
-    points->InsertNextPoint(p.Position[0], p.Position[1], p.Position[2]);
-    radius->InsertNextValue(this->FootprintRadius * in.CellSize * w);
-    const float rgba[4] = { p.Color[0], p.Color[1], p.Color[2], 1.f };
-    color->InsertNextTypedTuple(rgba);
-    strength->InsertNextValue(this->Opacity * p.Color[3] * w);
-    if (smear)
+    std::copy_n(&p.Position[0], 3, x + 3 * k);
+    radius[k] = this->FootprintRadius * in.CellSize * w;
+    std::copy_n(p.Color, 3, color + 4 * k);
+    color[4 * k + 3] = 1.f;
+    strength[k] = this->Opacity * p.Color[3] * w;
+    if (previous)
     {
-      previous->InsertNextTuple3(p.Previous[0], p.Previous[1], p.Previous[2]);
+      std::copy_n(&p.Previous[0], 3, previous + 3 * k);
     }
+    ++k;
   }
   vtkPolyData* footprints = in.Footprints;
-  footprints->Initialize();
-  footprints->SetPoints(points);
-  footprints->GetPointData()->AddArray(radius);
-  footprints->GetPointData()->AddArray(color);
-  footprints->GetPointData()->AddArray(strength);
-  if (smear)
+  vtkPointData* pd = footprints->GetPointData();
+  if (!pd->HasArray("Radius"))
   {
-    footprints->GetPointData()->AddArray(previous);
+    pd->AddArray(arrays.DabRadius);
+    pd->AddArray(arrays.DabColor);
+    pd->AddArray(arrays.DabStrength);
   }
-  if (!in.Target || !this->Paint || points->GetNumberOfPoints() == 0 ||
-    !(this->FootprintRadius > 0.0) || in.Target->GetNumberOfSamples() == 0)
+  if (smear != static_cast<bool>(pd->HasArray("PreviousPosition")))
+  {
+    if (smear)
+    {
+      pd->AddArray(arrays.DabPrevious);
+    }
+    else
+    {
+      pd->RemoveArray("PreviousPosition");
+    }
+  }
+  footprints->Modified();
+  if (!in.Target || !this->Paint || count == 0 || !(this->FootprintRadius > 0.0) ||
+    in.Target->GetNumberOfSamples() == 0)
   {
     return;
   }
@@ -90,24 +173,34 @@ void vtkOFBParticleAdvector::PaintFootprints()
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::ClearFootprints()
+{
+  vtkPolyData* footprints = this->Internals->Footprints;
+  footprints->GetPointData()->Initialize();
+  this->Internals->Arrays.DabPoints->SetNumberOfPoints(0);
+  footprints->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
 {
   const vtkOFBParticleSystem& system = this->Internals->System;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> velocity;
-  velocity->SetName("Velocity");
-  velocity->SetNumberOfComponents(3);
-  vtkNew<vtkIntArray> age;
-  age->SetName("Age");
-  vtkNew<vtkIdTypeArray> ids;
-  ids->SetName("Id");
-  vtkNew<vtkIntArray> chain;
-  chain->SetName("ChainIndex");
-  vtkNew<vtkUnsignedCharArray> color;
-  color->SetName("Color");
-  color->SetNumberOfComponents(4);
+  vtkOFBParticleArrays& arrays = this->Internals->Arrays;
   const vtkIdType n = static_cast<vtkIdType>(system.Particles.size());
+  vtkIdType count = 0;
+  for (const auto& p : system.Particles)
+  {
+    count += p.Status != vtkOFBParticleSystem::Waiting ? 1 : 0;
+  }
+  double* x = PointsOf(arrays.Points, count);
+  double* velocity = ValuesOf(arrays.Velocity.Get(), count);
+  int* age = ValuesOf(arrays.Age.Get(), count);
+  vtkIdType* ids = ValuesOf(arrays.Ids.Get(), count);
+  int* chain = ValuesOf(arrays.Chain.Get(), count);
+  unsigned char* color = ValuesOf(arrays.Color.Get(), count);
+  vtkIdType* offsets = ValuesOf(arrays.VertOffsets.Get(), count + 1);
+  vtkIdType* connectivity = ValuesOf(arrays.VertConnectivity.Get(), count);
+  vtkIdType k = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
     const auto& p = system.Particles[i];
@@ -115,68 +208,79 @@ void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
     {
       continue;
     }
-    points->InsertNextPoint(p.Position[0], p.Position[1], p.Position[2]);
+    std::copy_n(&p.Position[0], 3, x + 3 * k);
     const glm::dvec3 v = system.Velocity(p);
-    velocity->InsertNextTuple3(v[0], v[1], v[2]);
-    age->InsertNextValue(p.Age);
-    ids->InsertNextValue(i);
-    chain->InsertNextValue(p.Chain);
+    std::copy_n(&v[0], 3, velocity + 3 * k);
+    age[k] = p.Age;
+    ids[k] = i;
+    chain[k] = p.Chain;
     const double a = this->Opacity * p.Color[3] * system.ChainWeight(p.Chain);
     const unsigned char rgba[4] = { static_cast<unsigned char>(255.f * p.Color[0] + 0.5f),
       static_cast<unsigned char>(255.f * p.Color[1] + 0.5f),
       static_cast<unsigned char>(255.f * p.Color[2] + 0.5f),
       static_cast<unsigned char>(255.0 * a + 0.5) };
-    color->InsertNextTypedTuple(rgba);
+    std::copy_n(rgba, 4, color + 4 * k);
+    offsets[k] = k;
+    connectivity[k] = k;
+    ++k;
   }
-  vtkNew<vtkCellArray> verts;
-  const vtkIdType count = points->GetNumberOfPoints();
-  verts->AllocateExact(count, count);
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    verts->InsertNextCell(1, &i);
-  }
-  output->SetPoints(points);
-  output->SetVerts(verts);
-  output->GetPointData()->AddArray(velocity);
-  output->GetPointData()->SetVectors(velocity);
-  output->GetPointData()->AddArray(age);
-  output->GetPointData()->AddArray(ids);
-  output->GetPointData()->AddArray(chain);
-  output->GetPointData()->AddArray(color);
-  output->GetPointData()->SetScalars(color);
+  offsets[count] = count;
+  arrays.Verts->SetData(arrays.VertOffsets, arrays.VertConnectivity);
+  output->SetPoints(arrays.Points);
+  output->SetVerts(arrays.Verts);
+  vtkPointData* pd = output->GetPointData();
+  pd->AddArray(arrays.Velocity);
+  pd->SetVectors(arrays.Velocity);
+  pd->AddArray(arrays.Age);
+  pd->AddArray(arrays.Ids);
+  pd->AddArray(arrays.Chain);
+  pd->AddArray(arrays.Color);
+  pd->SetScalars(arrays.Color);
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBParticleAdvector::FillTrails(vtkPolyData* output)
 {
   const vtkOFBParticleSystem& system = this->Internals->System;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIdTypeArray> ids;
-  ids->SetName("Id");
-  std::vector<glm::dvec3> trail(system.Setup.TrailLength);
-  std::vector<vtkIdType> cell(system.Setup.TrailLength);
+  vtkOFBParticleArrays& arrays = this->Internals->Arrays;
   const vtkIdType n = static_cast<vtkIdType>(system.Particles.size());
+  // Trails of two points or more: their number and points first.
+  vtkIdType numLines = 0;
+  vtkIdType numPoints = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    if (system.Particles[i].Status == vtkOFBParticleSystem::Waiting)
+    const int count = system.TrailCount[i];
+    if (system.Particles[i].Status != vtkOFBParticleSystem::Waiting && count >= 2)
+    {
+      ++numLines;
+      numPoints += count;
+    }
+  }
+  double* x = PointsOf(arrays.TrailPoints, numPoints);
+  vtkIdType* offsets = ValuesOf(arrays.LineOffsets.Get(), numLines + 1);
+  vtkIdType* connectivity = ValuesOf(arrays.LineConnectivity.Get(), numPoints);
+  vtkIdType* ids = ValuesOf(arrays.TrailIds.Get(), numLines);
+  vtkIdType line = 0;
+  vtkIdType point = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (system.Particles[i].Status == vtkOFBParticleSystem::Waiting || system.TrailCount[i] < 2)
     {
       continue;
     }
-    const int count = system.GetTrail(i, trail.data());
-    if (count < 2)
-    {
-      continue;
-    }
+    const int count = system.GetTrail(i, reinterpret_cast<glm::dvec3*>(x + 3 * point));
+    offsets[line] = point;
+    ids[line] = i;
     for (int k = 0; k < count; ++k)
     {
-      cell[k] = points->InsertNextPoint(trail[k][0], trail[k][1], trail[k][2]);
+      connectivity[point + k] = point + k;
     }
-    lines->InsertNextCell(count, cell.data());
-    ids->InsertNextValue(i);
+    point += count;
+    ++line;
   }
-  output->SetPoints(points);
-  output->SetLines(lines);
-  output->GetCellData()->AddArray(ids);
+  offsets[numLines] = numPoints;
+  arrays.Lines->SetData(arrays.LineOffsets, arrays.LineConnectivity);
+  output->SetPoints(arrays.TrailPoints);
+  output->SetLines(arrays.Lines);
+  output->GetCellData()->AddArray(arrays.TrailIds);
 }

@@ -4,13 +4,13 @@
 #include <cmath>
 
 //------------------------------------------------------------------------------
-bool vtkOFBParticleStepper::Slope(const vtkOFBSurfacePoint& p, glm::dvec3& slope) const
+bool vtkOFBParticleStepper::Slope(const vtkOFBSurfacePoint& p, glm::dvec2& slope) const
 {
-  const glm::dvec3 v = this->Walker->Field(p);
+  const glm::dvec2 v = this->Walker->Field2(p);
   const double speed = glm::length(v);
   if (!(speed > this->StopSpeed))
   {
-    slope = glm::dvec3(0.0);
+    slope = glm::dvec2(0.0);
     return false;
   }
   slope = this->Sign * (this->Normalize ? v / speed : v * this->Scale);
@@ -18,20 +18,20 @@ bool vtkOFBParticleStepper::Slope(const vtkOFBSurfacePoint& p, glm::dvec3& slope
 }
 
 //------------------------------------------------------------------------------
-glm::dvec3 vtkOFBParticleStepper::StageSlope(const vtkOFBSurfacePoint& p, const glm::dvec3& d) const
+glm::dvec2 vtkOFBParticleStepper::StageSlope(const vtkOFBSurfacePoint& p, const glm::dvec2& d) const
 {
   vtkOFBSurfacePoint q = p;
-  glm::dmat3 frame(1.0);
+  glm::dmat2 frame(1.0);
   this->Walker->Walk(q, d, &frame);
-  glm::dvec3 slope;
+  glm::dvec2 slope;
   this->Slope(q, slope);
-  // Back into p's plane: the turns are rotations, their inverse is the transpose.
+  // Back into p's frame: the turns are orthogonal, their inverse is the transpose.
   return glm::transpose(frame) * slope;
 }
 
 //------------------------------------------------------------------------------
 vtkOFBParticleStepper::Result vtkOFBParticleStepper::Final(vtkOFBSurfacePoint& p,
-  const glm::dvec3& d) const
+  const glm::dvec2& d) const
 {
   const auto walk = this->Walker->Walk(p, d, nullptr);
   return walk == vtkOFBTriangleWalker::Boundary ? StoppedAtBoundary : Moved;
@@ -41,7 +41,7 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::Final(vtkOFBSurfacePoint& p
 vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(vtkOFBSurfacePoint& p,
   double& subStep) const
 {
-  glm::dvec3 k1;
+  glm::dvec2 k1;
   if (!this->Slope(p, k1))
   {
     return StoppedAtZero;
@@ -53,7 +53,7 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(vtkOFBSurfacePoint&
       return this->Final(p, h * k1);
     case RK2:
     {
-      const glm::dvec3 k2 = this->StageSlope(p, 0.5 * h * k1);
+      const glm::dvec2 k2 = this->StageSlope(p, 0.5 * h * k1);
       return this->Final(p, h * k2);
     }
     case RK45:
@@ -61,34 +61,34 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(vtkOFBSurfacePoint&
     case RK4:
     default:
     {
-      const glm::dvec3 k2 = this->StageSlope(p, 0.5 * h * k1);
-      const glm::dvec3 k3 = this->StageSlope(p, 0.5 * h * k2);
-      const glm::dvec3 k4 = this->StageSlope(p, h * k3);
+      const glm::dvec2 k2 = this->StageSlope(p, 0.5 * h * k1);
+      const glm::dvec2 k3 = this->StageSlope(p, 0.5 * h * k2);
+      const glm::dvec2 k4 = this->StageSlope(p, h * k3);
       return this->Final(p, (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4));
     }
   }
 }
 
 //------------------------------------------------------------------------------
-glm::dvec3 vtkOFBParticleStepper::CashKarp(const vtkOFBSurfacePoint& p,
-  const glm::dvec3& k1,
+glm::dvec2 vtkOFBParticleStepper::CashKarp(const vtkOFBSurfacePoint& p,
+  const glm::dvec2& k1,
   double h,
   double& error) const
 {
   // Cash-Karp coefficients (as vtkRungeKutta45).
-  const glm::dvec3 k2 = this->StageSlope(p, h * (1.0 / 5.0) * k1);
-  const glm::dvec3 k3 = this->StageSlope(p, h * ((3.0 / 40.0) * k1 + (9.0 / 40.0) * k2));
-  const glm::dvec3 k4 =
+  const glm::dvec2 k2 = this->StageSlope(p, h * (1.0 / 5.0) * k1);
+  const glm::dvec2 k3 = this->StageSlope(p, h * ((3.0 / 40.0) * k1 + (9.0 / 40.0) * k2));
+  const glm::dvec2 k4 =
     this->StageSlope(p, h * ((3.0 / 10.0) * k1 - (9.0 / 10.0) * k2 + (6.0 / 5.0) * k3));
-  const glm::dvec3 k5 = this->StageSlope(
+  const glm::dvec2 k5 = this->StageSlope(
     p, h * ((-11.0 / 54.0) * k1 + (5.0 / 2.0) * k2 - (70.0 / 27.0) * k3 + (35.0 / 27.0) * k4));
-  const glm::dvec3 k6 = this->StageSlope(p,
+  const glm::dvec2 k6 = this->StageSlope(p,
     h *
       ((1631.0 / 55296.0) * k1 + (175.0 / 512.0) * k2 + (575.0 / 13824.0) * k3 +
         (44275.0 / 110592.0) * k4 + (253.0 / 4096.0) * k5));
-  const glm::dvec3 fifth =
+  const glm::dvec2 fifth =
     (37.0 / 378.0) * k1 + (250.0 / 621.0) * k3 + (125.0 / 594.0) * k4 + (512.0 / 1771.0) * k6;
-  const glm::dvec3 fourth = (2825.0 / 27648.0) * k1 + (18575.0 / 48384.0) * k3 +
+  const glm::dvec2 fourth = (2825.0 / 27648.0) * k1 + (18575.0 / 48384.0) * k3 +
     (13525.0 / 55296.0) * k4 + (277.0 / 14336.0) * k5 + 0.25 * k6;
   error = h * glm::length(fifth - fourth);
   return h * fifth;
@@ -106,13 +106,13 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::AdvanceRK45(vtkOFBSurfacePo
   {
     const bool last = h >= left;
     const double length = last ? left : h;
-    glm::dvec3 k1;
+    glm::dvec2 k1;
     if (!this->Slope(p, k1))
     {
       return StoppedAtZero;
     }
     double error = 0.0;
-    const glm::dvec3 d = this->CashKarp(p, k1, length, error);
+    const glm::dvec2 d = this->CashKarp(p, k1, length, error);
     if (error > this->Tolerance && length > minimum)
     {
       const double shrink = 0.9 * std::pow(this->Tolerance / error, 0.25);

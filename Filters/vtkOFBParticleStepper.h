@@ -58,17 +58,17 @@ public:
    */
   Result Advance(vtkOFBSurfacePoint& p, double& subStep) const;
 
-  /// The slope at `p` in its triangle's plane; false where the field is zero.
-  bool Slope(const vtkOFBSurfacePoint& p, glm::dvec3& slope) const;
+  /// The slope at `p` in its triangle's 2-D frame; false where the field is zero.
+  bool Slope(const vtkOFBSurfacePoint& p, glm::dvec2& slope) const;
 
 private:
   /// The slope at the end of a walk from `p` along `d`, in p's plane.
-  glm::dvec3 StageSlope(const vtkOFBSurfacePoint& p, const glm::dvec3& d) const;
-  Result Final(vtkOFBSurfacePoint& p, const glm::dvec3& d) const;
+  glm::dvec2 StageSlope(const vtkOFBSurfacePoint& p, const glm::dvec2& d) const;
+  Result Final(vtkOFBSurfacePoint& p, const glm::dvec2& d) const;
   Result AdvanceRK45(vtkOFBSurfacePoint& p, double& subStep) const;
   /// One Cash-Karp step of length h from p: displacement and error length.
-  glm::dvec3 CashKarp(const vtkOFBSurfacePoint& p,
-    const glm::dvec3& k1,
+  glm::dvec2 CashKarp(const vtkOFBSurfacePoint& p,
+    const glm::dvec2& k1,
     double h,
     double& error) const;
 };

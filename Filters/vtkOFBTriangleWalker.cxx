@@ -32,6 +32,8 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
   const vtkIdType numPoints = surface ? surface->GetNumberOfPoints() : 0;
   this->Points.resize(numPoints);
   this->Vectors.assign(numPoints, glm::dvec3(0.0));
+  this->Records.clear();
+  this->Turns.clear();
   this->MaximumSpeed = 0.0;
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
@@ -78,6 +80,11 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
     error = "the surface has no triangle of non-zero area";
     return false;
   }
+  if (this->Corners.size() / 3 >= static_cast<size_t>(VTK_INT_MAX))
+  {
+    error = "the surface has 2^31 triangles or more";
+    return false;
+  }
   this->BuildGeometry();
   this->BuildAdjacency();
 
@@ -91,6 +98,9 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
     polys->InsertNextCell(3, &this->Corners[3 * t]);
   }
   this->Triangles->SetPolys(polys);
+  // Only the projected corner vectors are kept.
+  this->Vectors.clear();
+  this->Vectors.shrink_to_fit();
   return true;
 }
 
@@ -98,27 +108,35 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
 void vtkOFBTriangleWalker::BuildGeometry()
 {
   const vtkIdType numTriangles = this->GetNumberOfTriangles();
+  this->Records.resize(numTriangles);
   this->Normals.resize(numTriangles);
-  this->Gradients.resize(3 * numTriangles);
-  this->EdgeOut.resize(3 * numTriangles);
+  this->Axes.resize(2 * numTriangles);
   this->Area.resize(numTriangles);
   double area = 0.0;
   for (vtkIdType t = 0; t < numTriangles; ++t)
   {
-    const glm::dvec3 p[3] = { this->Points[this->Corners[3 * t]],
-      this->Points[this->Corners[3 * t + 1]],
-      this->Points[this->Corners[3 * t + 2]] };
+    const vtkIdType* c = &this->Corners[3 * t];
+    const glm::dvec3 p[3] = { this->Points[c[0]], this->Points[c[1]], this->Points[c[2]] };
     const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
     const double area2 = glm::length(n);
     const glm::dvec3 unit = n / area2;
+    const glm::dvec3 ex = glm::normalize(p[1] - p[0]);
+    const glm::dvec3 ey = glm::cross(unit, ex);
     this->Normals[t] = unit;
+    this->Axes[2 * t] = ex;
+    this->Axes[2 * t + 1] = ey;
+    vtkOFBWalkerTriangle& r = this->Records[t];
     for (int i = 0; i < 3; ++i)
     {
       // Gradient of barycentric i: towards corner i, of length 1 / height.
       const glm::dvec3 edge = p[(i + 2) % 3] - p[(i + 1) % 3];
       const glm::dvec3 g = glm::cross(unit, edge) / area2;
-      this->Gradients[3 * t + i] = g;
-      this->EdgeOut[3 * t + i] = -glm::normalize(g);
+      r.Gradient[i] = glm::dvec2(glm::dot(g, ex), glm::dot(g, ey));
+      const glm::dvec3& v = this->Vectors[c[i]];
+      r.Vector[i] = glm::dvec2(glm::dot(v, ex), glm::dot(v, ey));
+      r.Next[i] = -1;
+      r.Opposite[i] = -1;
+      r.NextA[i] = -1;
     }
     area += 0.5 * area2;
     this->Area[t] = area;
@@ -149,8 +167,7 @@ void vtkOFBTriangleWalker::BuildAdjacency()
     edges.end(),
     [](const HalfEdge& x, const HalfEdge& y)
     { return x.A != y.A ? x.A < y.A : (x.B != y.B ? x.B < y.B : x.Triangle < y.Triangle); });
-  this->Neighbors.assign(3 * numTriangles, -1);
-  this->NeighborCorner.assign(3 * numTriangles, -1);
+  this->Turns.assign(3 * numTriangles, glm::dmat2(1.0));
   for (size_t i = 0; i < edges.size();)
   {
     size_t j = i + 1;
@@ -160,15 +177,37 @@ void vtkOFBTriangleWalker::BuildAdjacency()
     }
     if (j - i == 2) // a manifold edge; others stay boundaries
     {
-      const HalfEdge& x = edges[i];
-      const HalfEdge& y = edges[i + 1];
-      this->Neighbors[3 * x.Triangle + x.Corner] = y.Triangle;
-      this->NeighborCorner[3 * x.Triangle + x.Corner] = static_cast<signed char>(y.Corner);
-      this->Neighbors[3 * y.Triangle + y.Corner] = x.Triangle;
-      this->NeighborCorner[3 * y.Triangle + y.Corner] = static_cast<signed char>(x.Corner);
+      this->Link(edges[i].Triangle, edges[i].Corner, edges[i + 1].Triangle, edges[i + 1].Corner);
+      this->Link(edges[i + 1].Triangle, edges[i + 1].Corner, edges[i].Triangle, edges[i].Corner);
     }
     i = j;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTriangleWalker::Link(vtkIdType t, int edge, vtkIdType next, int opposite)
+{
+  vtkOFBWalkerTriangle& r = this->Records[t];
+  const int a = (edge + 1) % 3;
+  const vtkIdType* nc = &this->Corners[3 * next];
+  const int na =
+    nc[(opposite + 1) % 3] == this->Corners[3 * t + a] ? (opposite + 1) % 3 : (opposite + 2) % 3;
+  r.Next[edge] = static_cast<int>(next);
+  r.Opposite[edge] = static_cast<signed char>(opposite);
+  r.NextA[edge] = static_cast<signed char>(na);
+
+  // The turn about the shared edge (the unfolding of the two triangles into one
+  // plane) in the two frames: the edge direction stays, the direction out of t
+  // becomes the direction into the neighbour.
+  const glm::dvec3 e = glm::normalize(
+    this->Points[this->Corners[3 * t + (edge + 2) % 3]] - this->Points[this->Corners[3 * t + a]]);
+  const glm::dvec3* axes = &this->Axes[2 * t];
+  const glm::dvec3* nextAxes = &this->Axes[2 * next];
+  const glm::dvec2 e2(glm::dot(e, axes[0]), glm::dot(e, axes[1]));
+  const glm::dvec2 ne2(glm::dot(e, nextAxes[0]), glm::dot(e, nextAxes[1]));
+  const glm::dvec2 out = -glm::normalize(r.Gradient[edge]);
+  const glm::dvec2 in = glm::normalize(this->Records[next].Gradient[opposite]);
+  this->Turns[3 * t + edge] = glm::outerProduct(ne2, e2) + glm::outerProduct(in, out);
 }
 
 //------------------------------------------------------------------------------
@@ -184,14 +223,14 @@ double vtkOFBTriangleWalker::Interpolate(vtkDataArray* array,
 
 //------------------------------------------------------------------------------
 vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& p,
-  glm::dvec3 d,
-  glm::dmat3* frame) const
+  glm::dvec2 d,
+  glm::dmat2* frame) const
 {
   for (int crossing = 0; crossing < MaximumCrossings; ++crossing)
   {
-    const vtkIdType t = p.Triangle;
-    const glm::dvec3* g = &this->Gradients[3 * t];
-    const glm::dvec3 db(glm::dot(g[0], d), glm::dot(g[1], d), glm::dot(g[2], d));
+    const vtkOFBWalkerTriangle& r = this->Records[p.Triangle];
+    const glm::dvec3 db(
+      glm::dot(r.Gradient[0], d), glm::dot(r.Gradient[1], d), glm::dot(r.Gradient[2], d));
 
     // The first edge the path meets, at the fraction `exit` of d.
     double exit = 1.0;
@@ -214,33 +253,16 @@ vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& 
     p.Bary[edge] = 0.0;
     Normalize(p.Bary);
 
-    const vtkIdType next = this->Neighbors[3 * t + edge];
+    const int next = r.Next[edge];
     if (next < 0)
     {
       return Boundary;
     }
-    const int a = (edge + 1) % 3;
-    const int b = (edge + 2) % 3;
-    const int opposite = this->NeighborCorner[3 * t + edge];
-    const vtkIdType* nc = &this->Corners[3 * next];
+    const int na = r.NextA[edge];
     glm::dvec3 bary(0.0);
-    const int na =
-      nc[(opposite + 1) % 3] == this->Corners[3 * t + a] ? (opposite + 1) % 3 : (opposite + 2) % 3;
-    const int nb = 3 - opposite - na;
-    bary[na] = p.Bary[a];
-    bary[nb] = p.Bary[b];
-
-    // Turn the rest of d about the shared edge: e stays, the direction out of t
-    // becomes the direction into the neighbour.
-    const glm::dvec3 e = glm::normalize(
-      this->Points[this->Corners[3 * t + b]] - this->Points[this->Corners[3 * t + a]]);
-    const glm::dvec3& out = this->EdgeOut[3 * t + edge];
-    const glm::dvec3 in = -this->EdgeOut[3 * next + opposite];
-    const glm::dvec3 outNormal = glm::cross(e, out);
-    const glm::dvec3 inNormal = glm::cross(e, in);
-    // turn = [e in inNormal] * [e out outNormal]^T
-    const glm::dmat3 turn =
-      glm::outerProduct(e, e) + glm::outerProduct(in, out) + glm::outerProduct(inNormal, outNormal);
+    bary[na] = p.Bary[(edge + 1) % 3];
+    bary[3 - r.Opposite[edge] - na] = p.Bary[(edge + 2) % 3];
+    const glm::dmat2& turn = this->Turns[3 * p.Triangle + edge];
     d = (1.0 - exit) * (turn * d);
     if (frame)
     {
@@ -257,8 +279,9 @@ vtkOFBSurfacePoint vtkOFBTriangleWalker::Locate(vtkIdType t, const double x[3]) 
 {
   vtkOFBSurfacePoint p;
   p.Triangle = t;
-  const glm::dvec3 r = glm::dvec3(x[0], x[1], x[2]) - this->Points[this->Corners[3 * t]];
-  const glm::dvec3* g = &this->Gradients[3 * t];
+  const glm::dvec3 r3 = glm::dvec3(x[0], x[1], x[2]) - this->Points[this->Corners[3 * t]];
+  const glm::dvec2 r(glm::dot(r3, this->Axes[2 * t]), glm::dot(r3, this->Axes[2 * t + 1]));
+  const glm::dvec2* g = this->Records[t].Gradient;
   // Barycentrics of the projection: b_i = b_i(corner 0) + g_i . r
   p.Bary = glm::dvec3(1.0 + glm::dot(g[0], r), glm::dot(g[1], r), glm::dot(g[2], r));
   if (!std::isfinite(p.Bary[0] + p.Bary[1] + p.Bary[2]))

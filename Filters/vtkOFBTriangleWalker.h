@@ -14,6 +14,11 @@
  * triangle's plane to the end triangle's, so a Runge-Kutta scheme can bring the
  * slopes it samples elsewhere back into the plane where it started.
  *
+ * Vectors of a walk are 2-D, in an orthonormal frame of each triangle's plane: a
+ * flat record per triangle (vtkOFBWalkerTriangle) holds what a walk reads, and
+ * each shared edge has its turn as a 2x2 matrix from one frame to the other, all
+ * made once per input.
+ *
  * Edges with one triangle (the boundary of an open surface), edges shared by more
  * than two triangles and edges of triangles of zero area are boundaries: a walk
  * that reaches one stops there.
@@ -38,6 +43,20 @@ struct vtkOFBSurfacePoint
 {
   vtkIdType Triangle = -1;
   glm::dvec3 Bary{ 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
+};
+
+/**
+ * One triangle as a walk reads it, in the triangle's own 2-D frame (an orthonormal
+ * basis of its plane): the gradients of the barycentrics, the corner vectors
+ * projected into the plane, and the neighbours across the edges. Two cache lines.
+ */
+struct alignas(64) vtkOFBWalkerTriangle
+{
+  glm::dvec2 Gradient[3];  ///< gradient of barycentric i (1 / height, towards corner i)
+  glm::dvec2 Vector[3];    ///< the field at corner i, projected (world units)
+  int Next[3];             ///< the neighbour across the edge opposite corner i; -1 boundary
+  signed char Opposite[3]; ///< that edge's opposite corner in the neighbour
+  signed char NextA[3];    ///< where corner (i + 1) % 3 is in the neighbour
 };
 
 class vtkOFBTriangleWalker
@@ -88,25 +107,34 @@ public:
       p.Bary[2] * this->Points[c[2]];
   }
 
+  /// The field at a surface point in its triangle's 2-D frame (world units).
+  glm::dvec2 Field2(const vtkOFBSurfacePoint& p) const
+  {
+    const vtkOFBWalkerTriangle& t = this->Records[p.Triangle];
+    return p.Bary[0] * t.Vector[0] + p.Bary[1] * t.Vector[1] + p.Bary[2] * t.Vector[2];
+  }
+
   /// The field at a surface point, projected into its triangle's plane (world units).
   glm::dvec3 Field(const vtkOFBSurfacePoint& p) const
   {
-    const vtkIdType* c = &this->Corners[3 * p.Triangle];
-    const glm::dvec3 v = p.Bary[0] * this->Vectors[c[0]] + p.Bary[1] * this->Vectors[c[1]] +
-      p.Bary[2] * this->Vectors[c[2]];
-    const glm::dvec3& n = this->Normals[p.Triangle];
-    return v - glm::dot(v, n) * n;
+    return this->To3D(p.Triangle, this->Field2(p));
+  }
+
+  /// A vector of triangle `t`'s 2-D frame in world coordinates.
+  glm::dvec3 To3D(vtkIdType t, const glm::dvec2& v) const
+  {
+    return v[0] * this->Axes[2 * t] + v[1] * this->Axes[2 * t + 1];
   }
 
   /// Barycentric interpolation of a point array's component at a surface point.
   double Interpolate(vtkDataArray* array, int component, const vtkOFBSurfacePoint& p) const;
 
   /**
-   * Move `p` by `d` (a vector in the plane of p's triangle, world units). When
+   * Move `p` by `d` (a vector of p's triangle's 2-D frame, world units). When
    * `frame` is given it is multiplied from the left by every turn the walk makes,
-   * so that `frame` maps vectors of the start plane to the end plane.
+   * so that `frame` maps vectors of the start frame to the end frame.
    */
-  WalkResult Walk(vtkOFBSurfacePoint& p, glm::dvec3 d, glm::dmat3* frame) const;
+  WalkResult Walk(vtkOFBSurfacePoint& p, glm::dvec2 d, glm::dmat2* frame) const;
 
   /**
    * The surface point of triangle `t` closest to `x` (barycentrics of the
@@ -122,17 +150,18 @@ public:
 private:
   void BuildGeometry();
   void BuildAdjacency();
+  /// Edge `edge` of `t` is shared with edge `opposite` of `next`.
+  void Link(vtkIdType t, int edge, vtkIdType next, int opposite);
 
   vtkSmartPointer<vtkPolyData> Triangles;
   std::vector<glm::dvec3> Points;
   std::vector<glm::dvec3> Vectors;
-  std::vector<vtkIdType> Corners;          // 3 point ids per triangle
-  std::vector<vtkIdType> Neighbors;        // across the edge opposite corner i; -1 boundary
-  std::vector<signed char> NeighborCorner; // that edge's opposite corner in the neighbour
-  std::vector<glm::dvec3> Normals;         // unit normal per triangle
-  std::vector<glm::dvec3> Gradients;       // 3 per triangle: gradients of the barycentrics
-  std::vector<glm::dvec3> EdgeOut;         // 3 per triangle: unit in-plane normal out of edge i
-  std::vector<double> Area;                // running sum of triangle areas
+  std::vector<vtkIdType> Corners;            // 3 point ids per triangle
+  std::vector<vtkOFBWalkerTriangle> Records; // what a walk reads
+  std::vector<glm::dmat2> Turns;             // 3 per triangle: frame of t to the neighbour's
+  std::vector<glm::dvec3> Normals;           // unit normal per triangle
+  std::vector<glm::dvec3> Axes;              // 2 per triangle: the 2-D frame in world space
+  std::vector<double> Area;                  // running sum of triangle areas
   double MaximumSpeed = 0.0;
 };
 

@@ -9,6 +9,10 @@
 namespace
 {
 // SplitMix64's finalizer: a well-mixed 64-bit hash.
+// How many particles ahead a step fetches the triangle data of the particle it
+// will move then.
+constexpr vtkIdType PrefetchDistance = 8;
+
 inline std::uint64_t Mix(std::uint64_t x)
 {
   x += 0x9E3779B97F4A7C15ull;
@@ -86,7 +90,7 @@ void vtkOFBParticleSystem::PushTrail(vtkIdType i, const glm::dvec3& x)
   const int length = this->Setup.TrailLength;
   int& head = this->TrailHead[i];
   this->Trails[i * length + head] = x;
-  head = (head + 1) % length;
+  head = head + 1 == length ? 0 : head + 1;
   this->TrailCount[i] = std::min(length, this->TrailCount[i] + 1);
 }
 
@@ -186,6 +190,14 @@ void vtkOFBParticleSystem::Advance(const Coloring& coloring)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
+        if (i + PrefetchDistance < end)
+        {
+          const Particle& ahead = this->Particles[i + PrefetchDistance];
+          if (ahead.Point.Triangle >= 0)
+          {
+            this->Walker->Prefetch(ahead.Point.Triangle);
+          }
+        }
         Particle& p = this->Particles[i];
         p.Painted = false;
         if (p.Status == Waiting)

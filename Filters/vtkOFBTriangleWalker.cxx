@@ -33,7 +33,6 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
   this->Points.resize(numPoints);
   this->Vectors.assign(numPoints, glm::dvec3(0.0));
   this->Records.clear();
-  this->Turns.clear();
   this->MaximumSpeed = 0.0;
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
@@ -110,6 +109,7 @@ void vtkOFBTriangleWalker::BuildGeometry()
   const vtkIdType numTriangles = this->GetNumberOfTriangles();
   this->Records.resize(numTriangles);
   this->Normals.resize(numTriangles);
+  this->CornerPoints.resize(3 * numTriangles);
   this->Axes.resize(2 * numTriangles);
   this->Area.resize(numTriangles);
   double area = 0.0;
@@ -123,6 +123,7 @@ void vtkOFBTriangleWalker::BuildGeometry()
     const glm::dvec3 ex = glm::normalize(p[1] - p[0]);
     const glm::dvec3 ey = glm::cross(unit, ex);
     this->Normals[t] = unit;
+    std::copy_n(p, 3, &this->CornerPoints[3 * t]);
     this->Axes[2 * t] = ex;
     this->Axes[2 * t + 1] = ey;
     vtkOFBWalkerTriangle& r = this->Records[t];
@@ -137,6 +138,8 @@ void vtkOFBTriangleWalker::BuildGeometry()
       r.Next[i] = -1;
       r.Opposite[i] = -1;
       r.NextA[i] = -1;
+      r.Turn[i] = glm::dvec2(1.0, 0.0);
+      r.Reflect[i] = false;
     }
     area += 0.5 * area2;
     this->Area[t] = area;
@@ -167,7 +170,6 @@ void vtkOFBTriangleWalker::BuildAdjacency()
     edges.end(),
     [](const HalfEdge& x, const HalfEdge& y)
     { return x.A != y.A ? x.A < y.A : (x.B != y.B ? x.B < y.B : x.Triangle < y.Triangle); });
-  this->Turns.assign(3 * numTriangles, glm::dmat2(1.0));
   for (size_t i = 0; i < edges.size();)
   {
     size_t j = i + 1;
@@ -207,7 +209,9 @@ void vtkOFBTriangleWalker::Link(vtkIdType t, int edge, vtkIdType next, int oppos
   const glm::dvec2 ne2(glm::dot(e, nextAxes[0]), glm::dot(e, nextAxes[1]));
   const glm::dvec2 out = -glm::normalize(r.Gradient[edge]);
   const glm::dvec2 in = glm::normalize(this->Records[next].Gradient[opposite]);
-  this->Turns[3 * t + edge] = glm::outerProduct(ne2, e2) + glm::outerProduct(in, out);
+  const glm::dmat2 turn = glm::outerProduct(ne2, e2) + glm::outerProduct(in, out);
+  r.Turn[edge] = glm::normalize(turn[0]);
+  r.Reflect[edge] = glm::determinant(turn) < 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -245,8 +249,8 @@ vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& 
     }
     if (edge < 0)
     {
-      p.Bary += db;
-      Normalize(p.Bary);
+      // The gradients sum to zero, so the sum stays 1; only rounding below 0 is cut.
+      p.Bary = glm::max(p.Bary + db, glm::dvec3(0.0));
       return Inside;
     }
     p.Bary += exit * db;
@@ -262,11 +266,11 @@ vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& 
     glm::dvec3 bary(0.0);
     bary[na] = p.Bary[(edge + 1) % 3];
     bary[3 - r.Opposite[edge] - na] = p.Bary[(edge + 2) % 3];
-    const glm::dmat2& turn = this->Turns[3 * p.Triangle + edge];
-    d = (1.0 - exit) * (turn * d);
+    d = (1.0 - exit) * r.Apply(edge, d);
     if (frame)
     {
-      *frame = turn * (*frame);
+      (*frame)[0] = r.Apply(edge, (*frame)[0]);
+      (*frame)[1] = r.Apply(edge, (*frame)[1]);
     }
     p.Triangle = next;
     p.Bary = bary;

@@ -383,13 +383,22 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
 
   this->PrepareColoring(surface);
   const vtkIdType first = system.CurrentStep;
-  for (vtkIdType step = first; step < target; ++step)
+  // Without painting, only the last step's footprints are kept: the steps go in
+  // chunks (each particle makes a chunk's steps in a row), about 20 per update.
+  const bool painting = in.Target && this->Paint && this->FootprintRadius > 0.0;
+  const vtkIdType chunk = painting ? 1 : std::max<vtkIdType>(1, (target - first) / 20);
+  for (vtkIdType step = first; step < target;)
   {
-    system.Advance(in.Coloring);
-    this->PaintFootprints();
+    const vtkIdType count = std::min(chunk, target - step);
+    system.Advance(in.Coloring, count);
+    step += count;
+    if (painting || step == target)
+    {
+      this->PaintFootprints();
+    }
     if (target - first > 1)
     {
-      this->UpdateProgress(static_cast<double>(step + 1 - first) / (target - first));
+      this->UpdateProgress(static_cast<double>(step - first) / (target - first));
     }
   }
 

@@ -147,7 +147,9 @@ void vtkOFBParticleSystem::Reseed(vtkIdType i, Particle& p)
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBParticleSystem::ColorParticle(const Coloring& coloring, Particle& p) const
+void vtkOFBParticleSystem::ColorParticle(const Coloring& coloring,
+  vtkIdType step,
+  Particle& p) const
 {
   switch (coloring.Mode)
   {
@@ -173,17 +175,16 @@ void vtkOFBParticleSystem::ColorParticle(const Coloring& coloring, Particle& p) 
     }
     case 3: // periodic
     default:
-      PeriodicColor(this->CurrentStep, coloring.Period, p.Color);
+      PeriodicColor(step, coloring.Period, p.Color);
       break;
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBParticleSystem::Advance(const Coloring& coloring)
+void vtkOFBParticleSystem::Advance(const Coloring& coloring, vtkIdType numSteps)
 {
-  const vtkIdType step = this->CurrentStep;
-  const int lifetime = this->Setup.Lifetime;
-  ++this->CurrentStep;
+  const vtkIdType first = this->CurrentStep;
+  this->CurrentStep += numSteps;
   vtkSMPTools::For(0,
     static_cast<vtkIdType>(this->Particles.size()),
     [&](vtkIdType begin, vtkIdType end)
@@ -198,42 +199,54 @@ void vtkOFBParticleSystem::Advance(const Coloring& coloring)
             this->Walker->Prefetch(ahead.Point.Triangle);
           }
         }
-        Particle& p = this->Particles[i];
-        p.Painted = false;
-        if (p.Status == Waiting)
+        // All the steps of one particle in a row: its triangles stay in the cache.
+        for (vtkIdType step = first; step < first + numSteps; ++step)
         {
-          // Released at its seed when the step count reaches its release step.
-          if (step + 1 >= static_cast<vtkIdType>(p.Chain) * this->Setup.ChainSpacing)
-          {
-            this->Release(i, p);
-            p.Painted = true;
-            this->ColorParticle(coloring, p);
-          }
-          continue;
+          this->AdvanceParticle(i, step, coloring);
         }
-        if (lifetime > 0 && (p.Age >= lifetime || p.Status == Stopped))
-        {
-          this->Reseed(i, p);
-        }
-        ++p.Age;
-        if (p.Status == Moving)
-        {
-          p.Previous = p.Position;
-          const auto result = this->Stepper.Advance(p.Point, p.SubStep);
-          p.Position = this->Walker->Position(p.Point);
-          p.Painted = result != vtkOFBParticleStepper::StoppedAtZero;
-          if (result != vtkOFBParticleStepper::Moved)
-          {
-            p.Status = Stopped;
-          }
-          if (p.Painted)
-          {
-            this->PushTrail(i, p.Position);
-          }
-        }
-        this->ColorParticle(coloring, p);
       }
     });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleSystem::AdvanceParticle(vtkIdType i, vtkIdType step, const Coloring& coloring)
+{
+  Particle& p = this->Particles[i];
+  p.Painted = false;
+  if (p.Status == Waiting)
+  {
+    // Released at its seed when the step count reaches its release step.
+    if (step + 1 >= static_cast<vtkIdType>(p.Chain) * this->Setup.ChainSpacing)
+    {
+      this->Release(i, p);
+      p.Painted = true;
+      this->ColorParticle(coloring, step + 1, p);
+    }
+    return;
+  }
+  const int lifetime = this->Setup.Lifetime;
+  if (lifetime > 0 && (p.Age >= lifetime || p.Status == Stopped))
+  {
+    this->Reseed(i, p);
+  }
+  ++p.Age;
+  if (p.Status == Moving)
+  {
+    p.Previous = p.Position;
+    this->Walker->PrefetchNeighbors(p.Point.Triangle);
+    const auto result = this->Stepper.Advance(p.Point, p.SubStep);
+    p.Position = this->Walker->Position(p.Point);
+    p.Painted = result != vtkOFBParticleStepper::StoppedAtZero;
+    if (result != vtkOFBParticleStepper::Moved)
+    {
+      p.Status = Stopped;
+    }
+    if (p.Painted)
+    {
+      this->PushTrail(i, p.Position);
+    }
+  }
+  this->ColorParticle(coloring, step + 1, p);
 }
 
 //------------------------------------------------------------------------------

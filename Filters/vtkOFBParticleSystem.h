@@ -87,8 +87,12 @@ public:
   /// Particles at their seeds (chains waiting), step 0.
   void Start();
 
-  /// One step of every particle; colours from `coloring` at the new step.
-  void Advance(const Coloring& coloring);
+  /**
+   * `numSteps` steps of every particle (each particle makes all of them in a row);
+   * colours from `coloring` at each new step. Footprints and `Painted` are those of
+   * the last step.
+   */
+  void Advance(const Coloring& coloring, vtkIdType numSteps = 1);
 
   /// The field at a particle (its tangent plane, world units, with the direction).
   glm::dvec3 Velocity(const Particle& p) const;
@@ -109,7 +113,9 @@ private:
   void Reseed(vtkIdType i, Particle& p);
   void Release(vtkIdType i, Particle& p);
   void PushTrail(vtkIdType i, const glm::dvec3& x);
-  void ColorParticle(const Coloring& coloring, Particle& p) const;
+  void AdvanceParticle(vtkIdType i, vtkIdType step, const Coloring& coloring);
+  /// The colour of `p` at `step` (steps since the seeds).
+  void ColorParticle(const Coloring& coloring, vtkIdType step, Particle& p) const;
 };
 
 #endif

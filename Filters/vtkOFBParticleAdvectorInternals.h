@@ -1,0 +1,115 @@
+// The state of vtkOFBParticleAdvector between updates (private; shared by its two
+// source files).
+#ifndef vtkOFBParticleAdvectorInternals_h
+#define vtkOFBParticleAdvectorInternals_h
+
+#include "vtkOFBParticleAdvector.h"
+#include "vtkOFBParticleSystem.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkCellArray;
+class vtkDoubleArray;
+class vtkFloatArray;
+class vtkIdTypeArray;
+class vtkIntArray;
+class vtkOFBBrush;
+class vtkOFBPainter;
+class vtkPoints;
+class vtkStaticCellLocator;
+class vtkUnsignedCharArray;
+
+/// The arrays of the footprints and outputs, kept from step to step so that a
+/// step allocates nothing once their sizes are reached.
+struct vtkOFBParticleArrays
+{
+  vtkOFBParticleArrays();
+  ~vtkOFBParticleArrays();
+  // Footprints.
+  vtkSmartPointer<vtkPoints> DabPoints;
+  vtkSmartPointer<vtkDoubleArray> DabRadius;
+  vtkSmartPointer<vtkFloatArray> DabColor;
+  vtkSmartPointer<vtkDoubleArray> DabStrength;
+  vtkSmartPointer<vtkDoubleArray> DabPrevious;
+  // Particles.
+  vtkSmartPointer<vtkPoints> Points;
+  vtkSmartPointer<vtkCellArray> Verts;
+  vtkSmartPointer<vtkIdTypeArray> VertOffsets;
+  vtkSmartPointer<vtkIdTypeArray> VertConnectivity;
+  vtkSmartPointer<vtkDoubleArray> Velocity;
+  vtkSmartPointer<vtkIntArray> Age;
+  vtkSmartPointer<vtkIdTypeArray> Ids;
+  vtkSmartPointer<vtkIntArray> Chain;
+  vtkSmartPointer<vtkUnsignedCharArray> Color;
+  // Trails.
+  vtkSmartPointer<vtkPoints> TrailPoints;
+  vtkSmartPointer<vtkCellArray> Lines;
+  vtkSmartPointer<vtkIdTypeArray> LineOffsets;
+  vtkSmartPointer<vtkIdTypeArray> LineConnectivity;
+  vtkSmartPointer<vtkIdTypeArray> TrailIds;
+};
+
+/// Everything that places or moves particles: a change restarts them.
+struct vtkOFBParticleMotionKey
+{
+  int Integrator;
+  double StepSize;
+  double ErrorTolerance;
+  bool NormalizeVectors;
+  int Direction;
+  int Lifetime;
+  vtkIdType NumberOfParticles;
+  unsigned int RandomSeed;
+  double MaximumSeedDistance;
+  int ChainLength;
+  int ChainSpacing;
+  int TrailLength;
+  std::string SeedColorArrayName;
+  bool operator==(const vtkOFBParticleMotionKey& o) const
+  {
+    return this->Integrator == o.Integrator && this->StepSize == o.StepSize &&
+      this->ErrorTolerance == o.ErrorTolerance && this->NormalizeVectors == o.NormalizeVectors &&
+      this->Direction == o.Direction && this->Lifetime == o.Lifetime &&
+      this->NumberOfParticles == o.NumberOfParticles && this->RandomSeed == o.RandomSeed &&
+      this->MaximumSeedDistance == o.MaximumSeedDistance && this->ChainLength == o.ChainLength &&
+      this->ChainSpacing == o.ChainSpacing && this->TrailLength == o.TrailLength &&
+      this->SeedColorArrayName == o.SeedColorArrayName;
+  }
+};
+
+class vtkOFBParticleAdvector::vtkInternals
+{
+public:
+  vtkOFBTriangleWalker Walker;
+  vtkOFBParticleSystem System;
+  vtkSmartPointer<vtkStaticCellLocator> Locator;
+  vtkSmartPointer<vtkOFB> Copy; // the painted copy of the port-1 OFB
+  vtkSmartPointer<vtkOFBPainter> Painter;
+  vtkSmartPointer<vtkOFBBrush> Brush;
+  vtkSmartPointer<vtkPolyData> Footprints;
+  vtkOFBParticleArrays Arrays;
+  vtkSmartPointer<vtkPolyData> Surface; // the input's triangles
+  double CellSize = 0.0;
+  bool Started = false;
+  bool ResetRequested = false;
+  vtkIdType PendingSteps = 0;
+  vtkOFBParticleMotionKey Motion{};
+  // What the walker and the particles were made from.
+  vtkPolyData* SurfaceObject = nullptr;
+  vtkMTimeType SurfaceTime = 0;
+  vtkDataArray* VectorArray = nullptr;
+  vtkMTimeType VectorTime = 0;
+  vtkDataObject* SeedObject = nullptr;
+  vtkMTimeType SeedTime = 0;
+  vtkDataObject* OFBObject = nullptr;
+  vtkMTimeType OFBTime = 0;
+  vtkOFB* Target = nullptr; // the OFB painted (held, the copy, or none)
+  vtkOFB* LastTarget = nullptr;
+  double LastCellSize = 0.0;
+  bool TargetChanged = false;
+  vtkOFBParticleSystem::Coloring Coloring;
+  vtkSmartPointer<vtkDataArray> ScalarArray;
+};
+
+#endif

@@ -1,0 +1,76 @@
+/**
+ * @class   vtkOFBParticleStepper
+ * @brief   One integration step of a surface particle (private)
+ *
+ * Euler, midpoint (RK2), classical Runge-Kutta (RK4) and Cash-Karp RK45 with
+ * step-size control, on the surface of a vtkOFBTriangleWalker. Every stage is a
+ * walk from the start point along a combination of the slopes found so far; the
+ * slope at the stage's end is carried back into the start triangle's plane by the
+ * inverse of the walk's turns (the unfolding of the triangles crossed), so all
+ * slopes are combined in one plane and the final displacement is walked from the
+ * start like the stages.
+ *
+ * The slope is the field times `Scale` (1 / the largest speed, so that the
+ * fastest point moves `Length` per step) or, with `Normalize`, the unit field
+ * (every particle moves `Length` of arc per step). `Sign` is -1 for backward
+ * tracing. Where the field is shorter than `StopSpeed` (world units) the particle
+ * stops.
+ */
+
+#ifndef vtkOFBParticleStepper_h
+#define vtkOFBParticleStepper_h
+
+#include "vtkOFBTriangleWalker.h"
+
+class vtkOFBParticleStepper
+{
+public:
+  enum Method
+  {
+    Euler = 0,
+    RK2 = 1,
+    RK4 = 2,
+    RK45 = 3
+  };
+
+  /// How a step ended.
+  enum Result
+  {
+    Moved = 0,
+    StoppedAtBoundary = 1,
+    StoppedAtZero = 2
+  };
+
+  const vtkOFBTriangleWalker* Walker = nullptr;
+  int Integrator = RK4;
+  bool Normalize = true;
+  double Sign = 1.0;
+  double Scale = 1.0;
+  double StopSpeed = 0.0;
+  /// Length of a step (world units).
+  double Length = 1.0;
+  /// RK45: largest error of a sub-step (world units).
+  double Tolerance = 1e-3;
+
+  /**
+   * Advance `p` by one step. `subStep` is the RK45 sub-step length carried from
+   * the particle's previous step (0 at first; updated).
+   */
+  Result Advance(vtkOFBSurfacePoint& p, double& subStep) const;
+
+  /// The slope at `p` in its triangle's 2-D frame; false where the field is zero.
+  bool Slope(const vtkOFBSurfacePoint& p, glm::dvec2& slope) const;
+
+private:
+  /// The slope at the end of a walk from `p` along `d`, in p's plane.
+  glm::dvec2 StageSlope(const vtkOFBSurfacePoint& p, const glm::dvec2& d) const;
+  Result Final(vtkOFBSurfacePoint& p, const glm::dvec2& d) const;
+  Result AdvanceRK45(vtkOFBSurfacePoint& p, double& subStep) const;
+  /// One Cash-Karp step of length h from p: displacement and error length.
+  glm::dvec2 CashKarp(const vtkOFBSurfacePoint& p,
+    const glm::dvec2& k1,
+    double h,
+    double& error) const;
+};
+
+#endif

@@ -1,0 +1,311 @@
+#include "vtkOFBTriangleWalker.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace
+{
+// A walk that crosses more edges than this for one displacement circles a vertex
+// without progress (rounding at a corner): it stops where it is.
+constexpr int MaximumCrossings = 100000;
+
+// Barycentrics made a valid convex combination again after rounding.
+inline void Normalize(glm::dvec3& b)
+{
+  b = glm::max(b, glm::dvec3(0.0));
+  const double sum = b[0] + b[1] + b[2];
+  b = sum > 0.0 ? b / sum : glm::dvec3(1.0 / 3.0);
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, std::string& error)
+{
+  const vtkIdType numPoints = surface ? surface->GetNumberOfPoints() : 0;
+  this->Points.resize(numPoints);
+  this->Vectors.assign(numPoints, glm::dvec3(0.0));
+  this->Records.clear();
+  this->MaximumSpeed = 0.0;
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    double x[3];
+    surface->GetPoint(i, x);
+    this->Points[i] = glm::dvec3(x[0], x[1], x[2]);
+    if (vectors)
+    {
+      double v[3];
+      vectors->GetTuple(i, v);
+      this->Vectors[i] = glm::dvec3(v[0], v[1], v[2]);
+      this->MaximumSpeed = std::max(this->MaximumSpeed, glm::length(this->Vectors[i]));
+    }
+  }
+
+  // Triangles of non-zero area, in input order.
+  this->Corners.clear();
+  if (surface && surface->GetPolys())
+  {
+    auto it = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      if (n != 3)
+      {
+        continue;
+      }
+      const glm::dvec3& a = this->Points[ids[0]];
+      const glm::dvec3 e1 = this->Points[ids[1]] - a;
+      const glm::dvec3 e2 = this->Points[ids[2]] - a;
+      const double scale = std::max(glm::dot(e1, e1), glm::dot(e2, e2));
+      const double area2 = glm::length(glm::cross(e1, e2));
+      if (!(area2 > 1e-12 * scale) || !std::isfinite(area2))
+      {
+        continue;
+      }
+      this->Corners.insert(this->Corners.end(), ids, ids + 3);
+    }
+  }
+  if (this->Corners.empty())
+  {
+    error = "the surface has no triangle of non-zero area";
+    return false;
+  }
+  if (this->Corners.size() / 3 >= static_cast<size_t>(VTK_INT_MAX))
+  {
+    error = "the surface has 2^31 triangles or more";
+    return false;
+  }
+  this->BuildGeometry();
+  this->BuildAdjacency();
+
+  this->Triangles = vtkSmartPointer<vtkPolyData>::New();
+  this->Triangles->SetPoints(surface->GetPoints());
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType numTriangles = this->GetNumberOfTriangles();
+  polys->AllocateExact(numTriangles, 3 * numTriangles);
+  for (vtkIdType t = 0; t < numTriangles; ++t)
+  {
+    polys->InsertNextCell(3, &this->Corners[3 * t]);
+  }
+  this->Triangles->SetPolys(polys);
+  // Only the projected corner vectors are kept.
+  this->Vectors.clear();
+  this->Vectors.shrink_to_fit();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTriangleWalker::BuildGeometry()
+{
+  const vtkIdType numTriangles = this->GetNumberOfTriangles();
+  this->Records.resize(numTriangles);
+  this->Normals.resize(numTriangles);
+  this->CornerPoints.resize(3 * numTriangles);
+  this->Axes.resize(2 * numTriangles);
+  this->Area.resize(numTriangles);
+  double area = 0.0;
+  for (vtkIdType t = 0; t < numTriangles; ++t)
+  {
+    const vtkIdType* c = &this->Corners[3 * t];
+    const glm::dvec3 p[3] = { this->Points[c[0]], this->Points[c[1]], this->Points[c[2]] };
+    const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const double area2 = glm::length(n);
+    const glm::dvec3 unit = n / area2;
+    const glm::dvec3 ex = glm::normalize(p[1] - p[0]);
+    const glm::dvec3 ey = glm::cross(unit, ex);
+    this->Normals[t] = unit;
+    std::copy_n(p, 3, &this->CornerPoints[3 * t]);
+    this->Axes[2 * t] = ex;
+    this->Axes[2 * t + 1] = ey;
+    vtkOFBWalkerTriangle& r = this->Records[t];
+    for (int i = 0; i < 3; ++i)
+    {
+      // Gradient of barycentric i: towards corner i, of length 1 / height.
+      const glm::dvec3 edge = p[(i + 2) % 3] - p[(i + 1) % 3];
+      const glm::dvec3 g = glm::cross(unit, edge) / area2;
+      r.Gradient[i] = glm::dvec2(glm::dot(g, ex), glm::dot(g, ey));
+      const glm::dvec3& v = this->Vectors[c[i]];
+      r.Vector[i] = glm::dvec2(glm::dot(v, ex), glm::dot(v, ey));
+      r.Next[i] = -1;
+      r.Opposite[i] = -1;
+      r.NextA[i] = -1;
+      r.Turn[i] = glm::dvec2(1.0, 0.0);
+      r.Reflect[i] = false;
+    }
+    area += 0.5 * area2;
+    this->Area[t] = area;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTriangleWalker::BuildAdjacency()
+{
+  const vtkIdType numTriangles = this->GetNumberOfTriangles();
+  // Half-edges keyed by their sorted point ids; equal keys share an edge.
+  struct HalfEdge
+  {
+    vtkIdType A, B, Triangle;
+    int Corner;
+  };
+  std::vector<HalfEdge> edges(3 * numTriangles);
+  for (vtkIdType t = 0; t < numTriangles; ++t)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      const vtkIdType a = this->Corners[3 * t + (i + 1) % 3];
+      const vtkIdType b = this->Corners[3 * t + (i + 2) % 3];
+      edges[3 * t + i] = { std::min(a, b), std::max(a, b), t, i };
+    }
+  }
+  std::sort(edges.begin(),
+    edges.end(),
+    [](const HalfEdge& x, const HalfEdge& y)
+    { return x.A != y.A ? x.A < y.A : (x.B != y.B ? x.B < y.B : x.Triangle < y.Triangle); });
+  for (size_t i = 0; i < edges.size();)
+  {
+    size_t j = i + 1;
+    while (j < edges.size() && edges[j].A == edges[i].A && edges[j].B == edges[i].B)
+    {
+      ++j;
+    }
+    if (j - i == 2) // a manifold edge; others stay boundaries
+    {
+      this->Link(edges[i].Triangle, edges[i].Corner, edges[i + 1].Triangle, edges[i + 1].Corner);
+      this->Link(edges[i + 1].Triangle, edges[i + 1].Corner, edges[i].Triangle, edges[i].Corner);
+    }
+    i = j;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTriangleWalker::Link(vtkIdType t, int edge, vtkIdType next, int opposite)
+{
+  vtkOFBWalkerTriangle& r = this->Records[t];
+  const int a = (edge + 1) % 3;
+  const vtkIdType* nc = &this->Corners[3 * next];
+  const int na =
+    nc[(opposite + 1) % 3] == this->Corners[3 * t + a] ? (opposite + 1) % 3 : (opposite + 2) % 3;
+  r.Next[edge] = static_cast<int>(next);
+  r.Opposite[edge] = static_cast<signed char>(opposite);
+  r.NextA[edge] = static_cast<signed char>(na);
+
+  // The turn about the shared edge (the unfolding of the two triangles into one
+  // plane) in the two frames: the edge direction stays, the direction out of t
+  // becomes the direction into the neighbour.
+  const glm::dvec3 e = glm::normalize(
+    this->Points[this->Corners[3 * t + (edge + 2) % 3]] - this->Points[this->Corners[3 * t + a]]);
+  const glm::dvec3* axes = &this->Axes[2 * t];
+  const glm::dvec3* nextAxes = &this->Axes[2 * next];
+  const glm::dvec2 e2(glm::dot(e, axes[0]), glm::dot(e, axes[1]));
+  const glm::dvec2 ne2(glm::dot(e, nextAxes[0]), glm::dot(e, nextAxes[1]));
+  const glm::dvec2 out = -glm::normalize(r.Gradient[edge]);
+  const glm::dvec2 in = glm::normalize(this->Records[next].Gradient[opposite]);
+  const glm::dmat2 turn = glm::outerProduct(ne2, e2) + glm::outerProduct(in, out);
+  r.Turn[edge] = glm::normalize(turn[0]);
+  r.Reflect[edge] = glm::determinant(turn) < 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBTriangleWalker::Interpolate(vtkDataArray* array,
+  int component,
+  const vtkOFBSurfacePoint& p) const
+{
+  const vtkIdType* c = &this->Corners[3 * p.Triangle];
+  return p.Bary[0] * array->GetComponent(c[0], component) +
+    p.Bary[1] * array->GetComponent(c[1], component) +
+    p.Bary[2] * array->GetComponent(c[2], component);
+}
+
+//------------------------------------------------------------------------------
+vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& p,
+  glm::dvec2 d,
+  glm::dmat2* frame) const
+{
+  for (int crossing = 0; crossing < MaximumCrossings; ++crossing)
+  {
+    const vtkOFBWalkerTriangle& r = this->Records[p.Triangle];
+    const glm::dvec3 db(
+      glm::dot(r.Gradient[0], d), glm::dot(r.Gradient[1], d), glm::dot(r.Gradient[2], d));
+
+    // The first edge the path meets, at the fraction `exit` of d.
+    double exit = 1.0;
+    int edge = -1;
+    for (int i = 0; i < 3; ++i)
+    {
+      if (db[i] < 0.0 && p.Bary[i] < -db[i] * exit)
+      {
+        exit = p.Bary[i] / -db[i];
+        edge = i;
+      }
+    }
+    if (edge < 0)
+    {
+      // The gradients sum to zero, so the sum stays 1; only rounding below 0 is cut.
+      p.Bary = glm::max(p.Bary + db, glm::dvec3(0.0));
+      return Inside;
+    }
+    p.Bary += exit * db;
+    p.Bary[edge] = 0.0;
+    Normalize(p.Bary);
+
+    const int next = r.Next[edge];
+    if (next < 0)
+    {
+      return Boundary;
+    }
+    const int na = r.NextA[edge];
+    glm::dvec3 bary(0.0);
+    bary[na] = p.Bary[(edge + 1) % 3];
+    bary[3 - r.Opposite[edge] - na] = p.Bary[(edge + 2) % 3];
+    d = (1.0 - exit) * r.Apply(edge, d);
+    if (frame)
+    {
+      (*frame)[0] = r.Apply(edge, (*frame)[0]);
+      (*frame)[1] = r.Apply(edge, (*frame)[1]);
+    }
+    p.Triangle = next;
+    p.Bary = bary;
+  }
+  return Stuck;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBSurfacePoint vtkOFBTriangleWalker::Locate(vtkIdType t, const double x[3]) const
+{
+  vtkOFBSurfacePoint p;
+  p.Triangle = t;
+  const glm::dvec3 r3 = glm::dvec3(x[0], x[1], x[2]) - this->Points[this->Corners[3 * t]];
+  const glm::dvec2 r(glm::dot(r3, this->Axes[2 * t]), glm::dot(r3, this->Axes[2 * t + 1]));
+  const glm::dvec2* g = this->Records[t].Gradient;
+  // Barycentrics of the projection: b_i = b_i(corner 0) + g_i . r
+  p.Bary = glm::dvec3(1.0 + glm::dot(g[0], r), glm::dot(g[1], r), glm::dot(g[2], r));
+  if (!std::isfinite(p.Bary[0] + p.Bary[1] + p.Bary[2]))
+  {
+    p.Bary = glm::dvec3(1.0 / 3.0);
+  }
+  Normalize(p.Bary);
+  return p;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBSurfacePoint vtkOFBTriangleWalker::Sample(double u0, double u1, double u2) const
+{
+  vtkOFBSurfacePoint p;
+  const double target = u0 * this->Area.back();
+  const auto it = std::upper_bound(this->Area.begin(), this->Area.end(), target);
+  p.Triangle = std::min<vtkIdType>(
+    static_cast<vtkIdType>(it - this->Area.begin()), this->GetNumberOfTriangles() - 1);
+  // Uniform in the triangle: b = (1 - sqrt(u1), sqrt(u1) (1 - u2), sqrt(u1) u2).
+  const double s = std::sqrt(u1);
+  p.Bary = glm::dvec3(1.0 - s, s * (1.0 - u2), s * u2);
+  return p;
+}

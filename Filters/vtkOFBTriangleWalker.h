@@ -1,0 +1,220 @@
+/**
+ * @class   vtkOFBTriangleWalker
+ * @brief   Moves points over a triangle surface along a tangent field (private)
+ *
+ * vtkOFBParticleAdvector keeps every particle as a triangle and barycentric
+ * coordinates, so its position is always a convex combination of the corners of
+ * one triangle: it lies exactly on the surface. A displacement is a vector in the
+ * plane of the particle's triangle. `Walk` moves along it in barycentric
+ * coordinates (the gradients of the barycentrics give their rate of change); where
+ * the path leaves the triangle it stops on the edge, continues in the neighbour
+ * across that edge and turns the rest of the displacement about the shared edge
+ * into the neighbour's plane (the unfolding of the two triangles into one plane,
+ * read backwards). The composed turns, `Frame`, carry vectors of the start
+ * triangle's plane to the end triangle's, so a Runge-Kutta scheme can bring the
+ * slopes it samples elsewhere back into the plane where it started.
+ *
+ * Vectors of a walk are 2-D, in an orthonormal frame of each triangle's plane: a
+ * flat record per triangle (vtkOFBWalkerTriangle) holds what a walk reads, and
+ * each shared edge has its turn as a 2x2 matrix from one frame to the other, all
+ * made once per input.
+ *
+ * Edges with one triangle (the boundary of an open surface), edges shared by more
+ * than two triangles and edges of triangles of zero area are boundaries: a walk
+ * that reaches one stops there.
+ */
+
+#ifndef vtkOFBTriangleWalker_h
+#define vtkOFBTriangleWalker_h
+
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkType.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+
+/// A point on the surface: a triangle of the walker and barycentric coordinates.
+struct vtkOFBSurfacePoint
+{
+  vtkIdType Triangle = -1;
+  glm::dvec3 Bary{ 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
+};
+
+/**
+ * One triangle as a walk reads it, in the triangle's own 2-D frame (an orthonormal
+ * basis of its plane): the gradients of the barycentrics, the corner vectors
+ * projected into the plane, the neighbours across the edges and the turn from this
+ * frame to each neighbour's (the unfolding about the shared edge: a rotation by
+ * (cos, sin), or a reflection where the neighbour's normal points the other way).
+ * Three cache lines, fetched together ahead of a particle's step.
+ */
+struct alignas(64) vtkOFBWalkerTriangle
+{
+  glm::dvec2 Gradient[3];  ///< gradient of barycentric i (1 / height, towards corner i)
+  glm::dvec2 Vector[3];    ///< the field at corner i, projected (world units)
+  glm::dvec2 Turn[3];      ///< (cos, sin) of the turn across the edge opposite corner i
+  int Next[3];             ///< the neighbour across the edge opposite corner i; -1 boundary
+  signed char Opposite[3]; ///< that edge's opposite corner in the neighbour
+  signed char NextA[3];    ///< where corner (i + 1) % 3 is in the neighbour
+  bool Reflect[3];         ///< the turn is a reflection
+
+  /// The turn across edge i applied to a vector of this frame.
+  glm::dvec2 Apply(int i, const glm::dvec2& v) const
+  {
+    const glm::dvec2& cs = this->Turn[i];
+    const glm::dvec2 second =
+      this->Reflect[i] ? glm::dvec2(cs[1], -cs[0]) : glm::dvec2(-cs[1], cs[0]);
+    return v[0] * cs + v[1] * second;
+  }
+};
+
+class vtkOFBTriangleWalker
+{
+public:
+  /// How a walk ended.
+  enum WalkResult
+  {
+    Inside = 0,   ///< the whole displacement was travelled
+    Boundary = 1, ///< stopped on a boundary edge
+    Stuck = 2     ///< too many edge crossings for one displacement (stopped where it was)
+  };
+
+  /**
+   * Take the triangles of `surface` (every polygon must be a triangle: run
+   * vtkTriangleFilter first) and its point `vectors` (3 components, or null for a
+   * zero field). Returns false with `error` set when there is no triangle of
+   * non-zero area. Triangles of zero area are left out; the others keep their
+   * order.
+   */
+  bool Build(vtkPolyData* surface, vtkDataArray* vectors, std::string& error);
+
+  /// The triangles of the walker (the same points, only its triangles) for a locator.
+  vtkPolyData* GetTriangles() const { return this->Triangles; }
+
+  vtkIdType GetNumberOfTriangles() const
+  {
+    return static_cast<vtkIdType>(this->Corners.size() / 3);
+  }
+
+  /// The largest length of a point vector.
+  double GetMaximumSpeed() const { return this->MaximumSpeed; }
+
+  /// The total area of the triangles.
+  double GetArea() const { return this->Area.empty() ? 0.0 : this->Area.back(); }
+
+  /// Point id of corner `i` (0..2) of triangle `t`.
+  vtkIdType GetCorner(vtkIdType t, int i) const { return this->Corners[3 * t + i]; }
+
+  /// Unit normal of triangle `t`.
+  const glm::dvec3& GetNormal(vtkIdType t) const { return this->Normals[t]; }
+
+  /// World position of a surface point.
+  glm::dvec3 Position(const vtkOFBSurfacePoint& p) const
+  {
+    const glm::dvec3* c = &this->CornerPoints[3 * p.Triangle];
+    return p.Bary[0] * c[0] + p.Bary[1] * c[1] + p.Bary[2] * c[2];
+  }
+
+  /// The field at a surface point in its triangle's 2-D frame (world units).
+  glm::dvec2 Field2(const vtkOFBSurfacePoint& p) const
+  {
+    const vtkOFBWalkerTriangle& t = this->Records[p.Triangle];
+    return p.Bary[0] * t.Vector[0] + p.Bary[1] * t.Vector[1] + p.Bary[2] * t.Vector[2];
+  }
+
+  /// The field at a surface point, projected into its triangle's plane (world units).
+  glm::dvec3 Field(const vtkOFBSurfacePoint& p) const
+  {
+    return this->To3D(p.Triangle, this->Field2(p));
+  }
+
+  /// A vector of triangle `t`'s 2-D frame in world coordinates.
+  glm::dvec3 To3D(vtkIdType t, const glm::dvec2& v) const
+  {
+    return v[0] * this->Axes[2 * t] + v[1] * this->Axes[2 * t + 1];
+  }
+
+  /**
+   * Ask the processor to fetch what a step of a particle in triangle `t` reads
+   * (its record and corners), ahead of the step: the particles of a step are
+   * spread over the surface, so these are rarely in the cache otherwise.
+   */
+  void Prefetch(vtkIdType t) const
+  {
+#if defined(__GNUC__) || defined(__clang__)
+    const char* r = reinterpret_cast<const char*>(&this->Records[t]);
+    __builtin_prefetch(r);
+    __builtin_prefetch(r + 64);
+    __builtin_prefetch(r + 128);
+    const char* c = reinterpret_cast<const char*>(&this->CornerPoints[3 * t]);
+    __builtin_prefetch(c);
+    __builtin_prefetch(c + 64);
+#else
+    (void)t;
+#endif
+  }
+
+  /// Fetch ahead what a walk reads of the neighbours of `t` (where it may go next).
+  void PrefetchNeighbors(vtkIdType t) const
+  {
+#if defined(__GNUC__) || defined(__clang__)
+    const vtkOFBWalkerTriangle& r = this->Records[t];
+    for (int i = 0; i < 3; ++i)
+    {
+      if (r.Next[i] >= 0)
+      {
+        const char* n = reinterpret_cast<const char*>(&this->Records[r.Next[i]]);
+        __builtin_prefetch(n);
+        __builtin_prefetch(n + 64);
+      }
+    }
+#else
+    (void)t;
+#endif
+  }
+
+  /// Barycentric interpolation of a point array's component at a surface point.
+  double Interpolate(vtkDataArray* array, int component, const vtkOFBSurfacePoint& p) const;
+
+  /**
+   * Move `p` by `d` (a vector of p's triangle's 2-D frame, world units). When
+   * `frame` is given it is multiplied from the left by every turn the walk makes,
+   * so that `frame` maps vectors of the start frame to the end frame.
+   */
+  WalkResult Walk(vtkOFBSurfacePoint& p, glm::dvec2 d, glm::dmat2* frame) const;
+
+  /**
+   * The surface point of triangle `t` closest to `x` (barycentrics of the
+   * projection of x on the plane, clamped to the triangle).
+   */
+  vtkOFBSurfacePoint Locate(vtkIdType t, const double x[3]) const;
+
+  /**
+   * An area-uniform surface point from three numbers uniform in [0, 1).
+   */
+  vtkOFBSurfacePoint Sample(double u0, double u1, double u2) const;
+
+private:
+  void BuildGeometry();
+  void BuildAdjacency();
+  /// Edge `edge` of `t` is shared with edge `opposite` of `next`.
+  void Link(vtkIdType t, int edge, vtkIdType next, int opposite);
+
+  vtkSmartPointer<vtkPolyData> Triangles;
+  std::vector<glm::dvec3> Points;
+  std::vector<glm::dvec3> Vectors;
+  std::vector<vtkIdType> Corners;            // 3 point ids per triangle
+  std::vector<vtkOFBWalkerTriangle> Records; // what a walk reads
+  std::vector<glm::dvec3> CornerPoints;      // 3 per triangle: its corners' positions
+  std::vector<glm::dvec3> Normals;           // unit normal per triangle
+  std::vector<glm::dvec3> Axes;              // 2 per triangle: the 2-D frame in world space
+  std::vector<double> Area;                  // running sum of triangle areas
+  double MaximumSpeed = 0.0;
+};
+
+#endif

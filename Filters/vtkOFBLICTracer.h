@@ -1,0 +1,101 @@
+// Private header of vtkOFBLIC: the streamline tracer and the convolution of one sample
+// (paper "Sample-based Surface Coloring", section 6.2.3, Eq. 4).
+#ifndef vtkOFBLICTracer_h
+#define vtkOFBLICTracer_h
+
+#include "vtkOFB.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+/**
+ * Traces a streamline forward and backward from a sample over the surface the OFB
+ * samples, reading a per-sample input (the noise, or the first pass's result) at the
+ * samples it meets, and returns the kernel-weighted mean of what it read (Eq. 4).
+ *
+ * A step moves the 3-D position by the field of the current sample (in its tangent
+ * plane, StepSize cells long when normalized), looks up the sample there
+ * (vtkOFB::FindSample in the grid most aligned with the current normal, else
+ * vtkOFB::FindClosestSample within sqrt(3) cells over all three grids, so that a
+ * streamline crosses from one grid to another and over edges of the surface) and
+ * projects the position onto that sample's tangent plane, which keeps it on the
+ * surface. A streamline stops at a masked sample, where no sample is near (the border
+ * of an open surface), or where the normal turns by more than 120 degrees in one step
+ * (a jump to another sheet of a thin part).
+ *
+ * Every member is read-only while convolving: one tracer serves all threads.
+ */
+class vtkOFBLICTracer
+{
+public:
+  const vtkOFB* OFB = nullptr;
+  const float* Positions = nullptr; // 3 per sample, world coordinates
+  const float* Normals = nullptr;   // 3 per sample, unit
+  const float* Field = nullptr;     // 3 per sample, tangent, scaled to the step
+  const unsigned char* Mask = nullptr;
+  int NumberOfSteps = 0;
+  double Step = 0.0;           // world units
+  double SearchRadius = 0.0;   // world units
+  std::vector<double> Weights; // 2 * NumberOfSteps + 1, index NumberOfSteps is t = 0
+
+  /// Eq. 4 at sample i over the per-sample values `input`.
+  float Convolve(vtkIdType i, const float* input) const
+  {
+    const int n = this->NumberOfSteps;
+    double acc = this->Weights[n] * input[i];
+    double weights = this->Weights[n];
+    for (int dir = 1; dir >= -1; dir -= 2)
+    {
+      glm::dvec3 p = Vec(this->Positions, i);
+      vtkIdType j = i;
+      for (int s = 1; s <= n; ++s)
+      {
+        j = this->Advance(p, j, dir);
+        if (j < 0)
+        {
+          break;
+        }
+        const double w = this->Weights[n + dir * s];
+        acc += w * input[j];
+        weights += w;
+      }
+    }
+    return weights > 1e-9 ? static_cast<float>(acc / weights) : input[i];
+  }
+
+  /**
+   * One step from position p at sample j in direction dir (+1 forward, -1 backward):
+   * p becomes the new position on the surface; returns the new sample, or -1 where
+   * the streamline stops.
+   */
+  vtkIdType Advance(glm::dvec3& p, vtkIdType j, int dir) const
+  {
+    const glm::dvec3 nj = Vec(this->Normals, j);
+    glm::dvec3 q = p + (dir * this->Step) * Vec(this->Field, j);
+    vtkIdType k = this->OFB->FindSample(&q.x, &nj.x);
+    if (k < 0)
+    {
+      k = this->OFB->FindClosestSample(&q.x, this->SearchRadius);
+    }
+    if (k < 0 || this->Mask[k])
+    {
+      return -1;
+    }
+    const glm::dvec3 nk = Vec(this->Normals, k);
+    if (glm::dot(nj, nk) < -0.5)
+    {
+      return -1;
+    }
+    q -= glm::dot(q - Vec(this->Positions, k), nk) * nk;
+    p = q;
+    return k;
+  }
+
+  static glm::dvec3 Vec(const float* a, vtkIdType i)
+  {
+    return glm::dvec3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
+  }
+};
+
+#endif

@@ -515,7 +515,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
 
   // Convolve (Eq. 4), then the enhanced pass and the contrast stretch.
   vtkOFBLICTracer tracer;
-  tracer.OFB = input;
+  tracer.SetOFB(input);
   tracer.Positions = positions.data();
   tracer.Normals = normals->GetPointer(0);
   tracer.Field = field.data();

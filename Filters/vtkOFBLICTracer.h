@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <vector>
 
 /**
@@ -16,7 +17,8 @@
  *
  * A step moves the 3-D position by the field of the current sample (in its tangent
  * plane, StepSize cells long when normalized), looks up the sample there
- * (vtkOFB::FindSample in the grid most aligned with the current normal, else
+ * (as vtkOFB::FindSample: in the grid of the current sample, else in the grid most
+ * aligned with its normal, else
  * vtkOFB::FindClosestSample within sqrt(3) cells over all three grids, so that a
  * streamline crosses from one grid to another and over edges of the surface) and
  * projects the position onto that sample's tangent plane, which keeps it on the
@@ -38,6 +40,62 @@ public:
   double Step = 0.0;           // world units
   double SearchRadius = 0.0;   // world units
   std::vector<double> Weights; // 2 * NumberOfSteps + 1, index NumberOfSteps is t = 0
+
+  // The OFB's frame and storage, read directly in the inner loop.
+  const vtkTypeUInt32* CellIndex = nullptr;
+  const vtkTypeUInt32* Offsets = nullptr;
+  const float* Depths = nullptr;
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+  double CellSize = 0.0;
+  vtkIdType Dimensions[3] = { 0, 0, 0 };
+  vtkIdType CellBase[4] = { 0, 0, 0, 0 };
+
+  /// Take the frame and storage of `ofb` (which the tracer then only reads).
+  void SetOFB(vtkOFB* ofb)
+  {
+    this->OFB = ofb;
+    this->CellIndex = ofb->GetCellIndex()->GetPointer(0);
+    this->Offsets = ofb->GetCellOffsets()->GetPointer(0);
+    this->Depths = ofb->GetDepths()->GetPointer(0);
+    ofb->GetOrigin(this->Origin);
+    this->CellSize = ofb->GetCellSize();
+    ofb->GetDimensions(this->Dimensions);
+    for (int a = 0; a < 4; ++a)
+    {
+      this->CellBase[a] = ofb->GetGridCellBase(a);
+    }
+  }
+
+  /**
+   * The sample of grid `a` closest in depth to q in the cell under q, within one cell
+   * (vtkOFB::FindSample for a known grid, with a linear scan: cells hold few samples).
+   */
+  vtkIdType FindInGrid(int a, const glm::dvec3& q) const
+  {
+    const int u = (a + 1) % 3;
+    const int v = (a + 2) % 3;
+    const double fu = std::floor((q[u] - this->Origin[u]) / this->CellSize);
+    const double fv = std::floor((q[v] - this->Origin[v]) / this->CellSize);
+    if (!(fu >= 0.0 && fv >= 0.0 && fu < this->Dimensions[u] && fv < this->Dimensions[v]))
+    {
+      return -1;
+    }
+    const vtkIdType cell = this->CellBase[a] + static_cast<vtkIdType>(fv) * this->Dimensions[u] +
+      static_cast<vtkIdType>(fu);
+    const double d = q[a] - this->Origin[a];
+    vtkIdType best = -1;
+    double bestDistance = this->CellSize;
+    for (vtkIdType i = this->Offsets[cell], end = this->Offsets[cell + 1]; i < end; ++i)
+    {
+      const double distance = std::fabs(this->Depths[i] - d);
+      if (distance <= bestDistance)
+      {
+        bestDistance = distance;
+        best = i;
+      }
+    }
+    return best;
+  }
 
   /// Eq. 4 at sample i over the per-sample values `input`.
   float Convolve(vtkIdType i, const float* input) const
@@ -73,7 +131,16 @@ public:
   {
     const glm::dvec3 nj = Vec(this->Normals, j);
     glm::dvec3 q = p + (dir * this->Step) * Vec(this->Field, j);
-    vtkIdType k = this->OFB->FindSample(&q.x, &nj.x);
+    // The grid of sample j first (the surface mostly goes on in the same grid), then the
+    // grid of its normal, then all three.
+    const vtkIdType cellJ = this->CellIndex[j];
+    const int axis = cellJ < this->CellBase[1] ? 0 : (cellJ < this->CellBase[2] ? 1 : 2);
+    vtkIdType k = this->FindInGrid(axis, q);
+    const int normalAxis = Dominant(nj);
+    if (k < 0 && normalAxis != axis)
+    {
+      k = this->FindInGrid(normalAxis, q);
+    }
     if (k < 0)
     {
       k = this->OFB->FindClosestSample(&q.x, this->SearchRadius);
@@ -90,6 +157,13 @@ public:
     q -= glm::dot(q - Vec(this->Positions, k), nk) * nk;
     p = q;
     return k;
+  }
+
+  /// The axis of the largest component of n (the grid vtkOFB::FindSample searches).
+  static int Dominant(const glm::dvec3& n)
+  {
+    const glm::dvec3 a = glm::abs(n);
+    return a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
   }
 
   static glm::dvec3 Vec(const float* a, vtkIdType i)

@@ -427,6 +427,43 @@ void vtkOFBLIC::HighPass(vtkOFB* input,
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBLIC::WriteOutput(vtkOFB* input,
+  vtkOFB* output,
+  const std::vector<float>& values,
+  const std::vector<unsigned char>& mask)
+{
+  const vtkIdType n = static_cast<vtkIdType>(values.size());
+  vtkNew<vtkFloatArray> lic;
+  lic->SetName("LIC");
+  vtkNew<vtkUnsignedCharArray> maskArray;
+  maskArray->SetName("LICMask");
+  // The input's arrays shared, LIC (clamped to [0, 1]) and the mask added.
+  const double luminance =
+    0.2126 * this->MaskColor[0] + 0.7152 * this->MaskColor[1] + 0.0722 * this->MaskColor[2];
+  const float maskValue =
+    static_cast<float>(1.0 + this->MaskIntensity * (std::min(1.0, std::max(0.0, luminance)) - 1.0));
+  lic->SetNumberOfTuples(n);
+  maskArray->SetNumberOfTuples(n);
+  float* licOut = lic->GetPointer(0);
+  unsigned char* maskOut = maskArray->GetPointer(0);
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        maskOut[i] = mask[i];
+        licOut[i] = mask[i] ? maskValue : std::min(1.0f, std::max(0.0f, values[i]));
+      }
+    });
+  output->ShallowCopy(input);
+  output->GetSampleData()->AddArray(lic);
+  output->GetSampleData()->AddArray(maskArray);
+  output->MarkAllSamplesModified();
+}
+
+//------------------------------------------------------------------------------
 int vtkOFBLIC::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
@@ -448,15 +485,9 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     return 1;
   }
   const vtkIdType n = input->GetNumberOfSamples();
-  vtkNew<vtkFloatArray> lic;
-  lic->SetName("LIC");
-  vtkNew<vtkUnsignedCharArray> maskArray;
-  maskArray->SetName("LICMask");
   if (n == 0)
   {
-    output->ShallowCopy(input);
-    output->GetSampleData()->AddArray(lic);
-    output->GetSampleData()->AddArray(maskArray);
+    this->WriteOutput(input, output, std::vector<float>(), std::vector<unsigned char>());
     return 1;
   }
   vtkDataArray* vectors = this->FindField(input);
@@ -550,30 +581,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
       this->HighLICContrastEnhancementFactor);
   }
 
-  // Output: the input's arrays shared, LIC (clamped to [0, 1]) and the mask added.
-  const double luminance =
-    0.2126 * this->MaskColor[0] + 0.7152 * this->MaskColor[1] + 0.0722 * this->MaskColor[2];
-  const float maskValue =
-    static_cast<float>(1.0 + this->MaskIntensity * (std::min(1.0, std::max(0.0, luminance)) - 1.0));
-  lic->SetNumberOfTuples(n);
-  maskArray->SetNumberOfTuples(n);
-  float* licOut = lic->GetPointer(0);
-  unsigned char* maskOut = maskArray->GetPointer(0);
-  vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        maskOut[i] = mask[i];
-        licOut[i] = mask[i] ? maskValue : std::min(1.0f, std::max(0.0f, values[i]));
-      }
-    });
-  output->ShallowCopy(input);
-  output->GetSampleData()->AddArray(lic);
-  output->GetSampleData()->AddArray(maskArray);
-  output->MarkAllSamplesModified();
+  this->WriteOutput(input, output, values, mask);
   this->UpdateProgress(1.0);
   timer->StopTimer();
   this->LastExecutionTime = 1000.0 * timer->GetElapsedTime();

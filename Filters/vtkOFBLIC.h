@@ -323,6 +323,13 @@ protected:
     const unsigned char* mask,
     std::vector<float>& values);
 
+  /// The input's arrays shared, with "LIC" (values clamped, the mask value where masked)
+  /// and "LICMask" added.
+  void WriteOutput(vtkOFB* input,
+    vtkOFB* output,
+    const std::vector<float>& values,
+    const std::vector<unsigned char>& mask);
+
   /// Stretch the unmasked values: m + low * range -> 0, M - high * range -> 1, clamped.
   static void Stretch(std::vector<float>& values,
     const unsigned char* mask,

@@ -61,6 +61,7 @@ vtkOFBLIC::vtkOFBLIC()
   : NumberOfSteps(20)
   , StepSize(1.0)
   , NormalizeVectors(true)
+  , FieldInterpolation(FIELD_NEAREST)
   , KernelType(KERNEL_BOX)
   , OrientedLIC(false)
   , Animate(false)
@@ -554,6 +555,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   tracer.NumberOfSteps = this->NumberOfSteps;
   tracer.Step = this->StepSize * input->GetCellSize();
   tracer.SearchRadius = std::sqrt(3.0) * input->GetCellSize();
+  tracer.FieldRadius =
+    this->FieldInterpolation == FIELD_INVERSE_DISTANCE ? 1.5 * input->GetCellSize() : 0.0;
   tracer.Weights = this->ComputeKernel();
   std::vector<float> values(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
@@ -595,6 +598,7 @@ void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "StepSize: " << this->StepSize << " cells\n";
   os << indent << "NormalizeVectors: " << (this->NormalizeVectors ? "On" : "Off") << "\n";
+  os << indent << "FieldInterpolation: " << this->FieldInterpolation << "\n";
   os << indent << "KernelType: " << this->KernelType << "\n";
   os << indent << "OrientedLIC: " << (this->OrientedLIC ? "On" : "Off") << "\n";
   os << indent << "Animate: " << (this->Animate ? "On" : "Off") << "\n";

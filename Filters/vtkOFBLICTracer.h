@@ -39,6 +39,7 @@ public:
   int NumberOfSteps = 0;
   double Step = 0.0;           // world units
   double SearchRadius = 0.0;   // world units
+  double FieldRadius = 0.0;    // world units; > 0: inverse-distance field, else nearest
   std::vector<double> Weights; // 2 * NumberOfSteps + 1, index NumberOfSteps is t = 0
 
   // The OFB's frame and storage, read directly in the inner loop.
@@ -130,7 +131,7 @@ public:
   vtkIdType Advance(glm::dvec3& p, vtkIdType j, int dir) const
   {
     const glm::dvec3 nj = Vec(this->Normals, j);
-    glm::dvec3 q = p + (dir * this->Step) * Vec(this->Field, j);
+    glm::dvec3 q = p + (dir * this->Step) * this->FieldAt(p, j);
     // The grid of sample j first (the surface mostly goes on in the same grid), then the
     // grid of its normal, then all three.
     const vtkIdType cellJ = this->CellIndex[j];
@@ -157,6 +158,36 @@ public:
     q -= glm::dot(q - Vec(this->Positions, k), nk) * nk;
     p = q;
     return k;
+  }
+
+  /**
+   * The field at p on the surface near sample j: the sample's own vector, or with
+   * FieldRadius > 0 the Shepard-weighted mean of the unmasked samples within FieldRadius
+   * whose normal is within 60 degrees of j's, projected into j's tangent plane and given
+   * the length of j's vector.
+   */
+  glm::dvec3 FieldAt(const glm::dvec3& p, vtkIdType j) const
+  {
+    const glm::dvec3 vj = Vec(this->Field, j);
+    if (this->FieldRadius <= 0.0)
+    {
+      return vj;
+    }
+    const glm::dvec3 nj = Vec(this->Normals, j);
+    const double eps = 1e-4 * this->CellSize * this->CellSize;
+    glm::dvec3 sum(0.0);
+    this->OFB->ForEachSampleInSphere(&p.x,
+      this->FieldRadius,
+      [&](vtkIdType k, double d2)
+      {
+        if (!this->Mask[k] && glm::dot(Vec(this->Normals, k), nj) > 0.5)
+        {
+          sum += Vec(this->Field, k) / (d2 + eps);
+        }
+      });
+    sum -= glm::dot(sum, nj) * nj;
+    const double length = glm::length(sum);
+    return length > 0.0 ? sum * (glm::length(vj) / length) : vj;
   }
 
   /// The axis of the largest component of n (the grid vtkOFB::FindSample searches).

@@ -97,6 +97,26 @@ TEST(LIC, SphereRotationStreaksHaveNoDropWhereTheGridChanges)
 }
 
 //------------------------------------------------------------------------------
+TEST(LIC, InverseDistanceFieldGivesStreaksWithoutSeamsToo)
+{
+  const double axis[3] = { 0.0, 0.0, 1.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSphere(1.0, 64), 128, RotationField(axis));
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetFieldInterpolationToInverseDistance();
+  vtkSmartPointer<vtkOFB> out = RunLIC(lic, ofb);
+  const float* values = LICValues(out);
+  ASSERT_NE(values, nullptr);
+  const StreakMeasure switching = SphereStreaks(out, values, axis, true);
+  const StreakMeasure elsewhere = SphereStreaks(out, values, axis, false);
+  std::cout << "inverse distance: near grid changes along " << switching.Along << ", across "
+            << switching.Across << "; elsewhere along " << elsewhere.Along << ", across "
+            << elsewhere.Across << "\n";
+  EXPECT_GE(elsewhere.Along, 5.0 * std::fabs(elsewhere.Across));
+  EXPECT_GE(switching.Along, 5.0 * std::fabs(switching.Across));
+  EXPECT_GE(switching.Along, 0.9 * elsewhere.Along);
+}
+
+//------------------------------------------------------------------------------
 TEST(LIC, IdenticalWithOneAndTwoThreads)
 {
   vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");

@@ -73,7 +73,7 @@ void AddField(vtkPolyData* mesh)
 
 int main(int argc, char* argv[])
 {
-  std::string mesh = std::string(VTKOFB_BENCHMARK_DATA_DIR) + "/stanford-bunny.obj";
+  std::string mesh = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
   int resolution = 1024, threads = 2, steps = 10, rounds = 3;
   for (int i = 1; i < argc; ++i)
   {

@@ -38,6 +38,7 @@ int TestOFBLICHorse(int argc, char* argv[])
   scene.Mapper->SetScalarRange(height->GetRange());
   scene.Mapper->SetColorSourceToScalars();
   scene.Mapper->SetScalarArrayName("Height");
+  scene.Mapper->SetLICColorModeToMap();
   scene.Mapper->SetIntensityWeight(0.8);
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   camera->SetPosition(1.0, 0.0, 0.0);

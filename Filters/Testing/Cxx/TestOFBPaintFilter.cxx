@@ -1,0 +1,204 @@
+// vtkOFBPaintFilter: strokes with per-point arrays painted into a copy, progress, bad input.
+#include "vtkOFBTestUtilities.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkOFBBrush.h"
+#include "vtkOFBPaintFilter.h"
+#include "vtkOFBPainter.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+using namespace vtkofbtest;
+
+namespace
+{
+vtkUnsignedCharArray* Colors(vtkOFB* ofb)
+{
+  return vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
+}
+
+// One polyline over the top of the unit sphere, from (-0.6, 0, z) to (0.6, 0, z).
+vtkSmartPointer<vtkPolyData> Stroke(int points)
+{
+  auto strokes = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(points);
+  for (int i = 0; i < points; ++i)
+  {
+    const double x = -0.6 + 1.2 * i / (points - 1);
+    pts->InsertNextPoint(x, 0.0, std::sqrt(1.0 - x * x));
+    lines->InsertCellPoint(i);
+  }
+  strokes->SetPoints(pts);
+  strokes->SetLines(lines);
+  return strokes;
+}
+
+double DistanceToStroke(vtkPolyData* strokes, const double x[3])
+{
+  // Distance to the polyline's segments.
+  double best = VTK_DOUBLE_MAX;
+  for (vtkIdType i = 0; i + 1 < strokes->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3], ab[3], ax[3];
+    strokes->GetPoint(i, a);
+    strokes->GetPoint(i + 1, b);
+    vtkMath::Subtract(b, a, ab);
+    vtkMath::Subtract(x, a, ax);
+    const double t = std::min(1.0, std::max(0.0, vtkMath::Dot(ax, ab) / vtkMath::Dot(ab, ab)));
+    double p[3] = { a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2] };
+    best = std::min(best, std::sqrt(vtkMath::Distance2BetweenPoints(p, x)));
+  }
+  return best;
+}
+}
+
+//------------------------------------------------------------------------------
+TEST(PaintFilter, PaintsACopyAlongTheStrokes)
+{
+  vtkSmartPointer<vtkOFB> input = Build(MakeSphere(1.0, 64), 96);
+  const std::vector<unsigned char> before(
+    Colors(input)->GetPointer(0), Colors(input)->GetPointer(0) + 4 * input->GetNumberOfSamples());
+  vtkSmartPointer<vtkPolyData> strokes = Stroke(7);
+  // Per-point colour (red to blue) and radius (0.05 to 0.15).
+  vtkNew<vtkDoubleArray> color;
+  color->SetName("Color");
+  color->SetNumberOfComponents(4);
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName("Radius");
+  for (int i = 0; i < 7; ++i)
+  {
+    const double t = i / 6.0;
+    color->InsertNextTuple4(1.0 - t, 0.0, t, 1.0);
+    radius->InsertNextValue(0.05 + 0.1 * t);
+  }
+  strokes->GetPointData()->AddArray(color);
+  strokes->GetPointData()->AddArray(radius);
+
+  vtkNew<vtkOFBPaintFilter> filter;
+  filter->SetInputData(input);
+  filter->SetStrokesData(strokes);
+  filter->GetBrush()->SetFalloffToConstant();
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> cb;
+  cb->SetClientData(&progress);
+  cb->SetCallback([](vtkObject*, unsigned long, void* cd, void* data) {
+    static_cast<std::vector<double>*>(cd)->push_back(*static_cast<double*>(data));
+  });
+  filter->AddObserver(vtkCommand::ProgressEvent, cb);
+  filter->Update();
+  vtkOFB* output = filter->GetOutput();
+  ASSERT_EQ(output->GetNumberOfSamples(), input->GetNumberOfSamples());
+  EXPECT_GT(filter->GetNumberOfChangedSamples(), 100);
+  EXPECT_FALSE(progress.empty());
+  EXPECT_EQ(progress.back(), 1.0);
+  // The input is untouched, its other arrays shared.
+  EXPECT_TRUE(std::equal(before.begin(), before.end(), Colors(input)->GetPointer(0)));
+  EXPECT_NE(Colors(output), Colors(input));
+  EXPECT_EQ(output->GetDepths(), input->GetDepths());
+  EXPECT_EQ(output->GetSampleData()->GetArray("Normals"), input->GetSampleData()->GetArray("Normals"));
+  // Painted near the stroke only; red at its start, blue at its end.
+  vtkIdType changed = 0;
+  for (vtkIdType i = 0; i < output->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    output->GetSamplePosition(i, x);
+    const unsigned char* c = Colors(output)->GetPointer(4 * i);
+    const bool differs = std::memcmp(c, before.data() + 4 * i, 4) != 0;
+    changed += differs;
+    if (differs)
+    {
+      ASSERT_LE(DistanceToStroke(strokes, x), 0.15 + 1e-9);
+      EXPECT_EQ(c[1], 0);
+    }
+  }
+  EXPECT_EQ(changed, filter->GetNumberOfChangedSamples());
+  const double start[3] = { -0.6, 0.0, 0.8 }, end[3] = { 0.6, 0.0, 0.8 };
+  const unsigned char* cs = Colors(output)->GetPointer(4 * output->FindClosestSample(start));
+  const unsigned char* ce = Colors(output)->GetPointer(4 * output->FindClosestSample(end));
+  EXPECT_GT(cs[0], 240);
+  EXPECT_LT(cs[2], 15);
+  EXPECT_GT(ce[2], 240);
+  EXPECT_LT(ce[0], 15);
+
+  // Without strokes: an unpainted copy.
+  filter->SetStrokesData(nullptr);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfChangedSamples(), 0);
+  EXPECT_TRUE(std::equal(before.begin(), before.end(), Colors(filter->GetOutput())->GetPointer(0)));
+}
+
+//------------------------------------------------------------------------------
+TEST(PaintFilter, SameColoursAsThePainterAlongTheSamePath)
+{
+  vtkSmartPointer<vtkOFB> input = Build(MakeSphere(1.0, 64), 96);
+  vtkSmartPointer<vtkPolyData> strokes = Stroke(2);
+  vtkNew<vtkOFBPaintFilter> filter;
+  filter->SetInputData(input);
+  filter->SetStrokesData(strokes);
+  filter->GetBrush()->SetColor(0.2, 0.4, 0.9);
+  filter->GetBrush()->SetRadius(0.1);
+  filter->GetBrush()->SetStrength(0.3);
+  filter->Update();
+
+  vtkNew<vtkOFB> byHand;
+  byHand->DeepCopy(input);
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(byHand);
+  painter->SetBrush(filter->GetBrush());
+  painter->StrokeTo(strokes->GetPoint(0));
+  painter->StrokeTo(strokes->GetPoint(1));
+  painter->EndStroke();
+  ASSERT_GT(painter->GetStrokeDabs()->GetNumberOfPoints(), 40);
+  EXPECT_TRUE(std::equal(Colors(byHand)->GetPointer(0),
+    Colors(byHand)->GetPointer(0) + 4 * input->GetNumberOfSamples(),
+    Colors(filter->GetOutput())->GetPointer(0)));
+}
+
+//------------------------------------------------------------------------------
+TEST(PaintFilter, BadInputGivesAnErrorAndAnEmptyOutput)
+{
+  vtkNew<vtkOFBPaintFilter> filter;
+  vtkNew<MessageObserver> messages;
+  messages->Watch(filter);
+  vtkNew<vtkOFB> empty;
+  filter->SetInputData(empty);
+  filter->Update();
+  EXPECT_NE(messages->Errors.find("no samples"), std::string::npos);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfSamples(), 0);
+
+  vtkSmartPointer<vtkOFB> input = Build(MakeSphere(1.0, 32), 48);
+  vtkSmartPointer<vtkPolyData> strokes = Stroke(3);
+  strokes->GetPoints()->SetPoint(1, std::nan(""), 0.0, 0.0);
+  filter->SetInputData(input);
+  filter->SetStrokesData(strokes);
+  messages->Clear();
+  filter->Update();
+  EXPECT_NE(messages->Errors.find("not finite"), std::string::npos);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfSamples(), 0);
+
+  strokes = Stroke(3);
+  vtkNew<vtkFloatArray> radius;
+  radius->SetName("Radius");
+  radius->InsertNextValue(0.1f);
+  radius->InsertNextValue(-0.1f);
+  radius->InsertNextValue(0.1f);
+  strokes->GetPointData()->AddArray(radius);
+  filter->SetStrokesData(strokes);
+  messages->Clear();
+  filter->Update();
+  EXPECT_NE(messages->Errors.find("radius"), std::string::npos);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfSamples(), 0);
+}

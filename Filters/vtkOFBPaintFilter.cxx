@@ -1,0 +1,367 @@
+#include "vtkOFBPaintFilter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOFB.h"
+#include "vtkOFBBrush.h"
+#include "vtkOFBPainter.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkOFBPaintFilter);
+
+namespace
+{
+/// The per-point values of the strokes, with the brush's where an array is absent.
+struct StrokeValues
+{
+  vtkPolyData* Strokes;
+  vtkOFBBrush* Brush;
+  vtkDataArray* Radius;
+  vtkDataArray* Color;
+  vtkDataArray* Strength;
+  vtkDataArray* Pressure;
+  double ColorScale;
+
+  double RadiusAt(vtkIdType i) const
+  {
+    return this->Radius ? this->Radius->GetComponent(i, 0) : this->Brush->GetRadius();
+  }
+  double PressureAt(vtkIdType i) const
+  {
+    return this->Pressure ? std::min(1.0, std::max(0.0, this->Pressure->GetComponent(i, 0))) : 1.0;
+  }
+  void ColorAt(vtkIdType i, double c[4]) const
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      c[k] = k < this->Color->GetNumberOfComponents()
+        ? this->Color->GetComponent(i, k) * this->ColorScale
+        : 1.0;
+    }
+  }
+};
+
+/// The output arrays of the dabs.
+struct DabArrays
+{
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkDoubleArray> Radius;
+  vtkNew<vtkDoubleArray> Pressure;
+  vtkNew<vtkDoubleArray> Strength;
+  vtkNew<vtkFloatArray> Color;
+  vtkNew<vtkDoubleArray> Previous;
+
+  DabArrays()
+  {
+    this->Points->SetDataTypeToDouble();
+    this->Radius->SetName("Radius");
+    this->Pressure->SetName("Pressure");
+    this->Strength->SetName("Strength");
+    this->Color->SetName("Color");
+    this->Color->SetNumberOfComponents(4);
+    this->Previous->SetName("PreviousPosition");
+    this->Previous->SetNumberOfComponents(3);
+  }
+
+  /// A dab at `t` between points a and b of the strokes.
+  void Add(const StrokeValues& v, vtkIdType a, vtkIdType b, double t, const double previous[3])
+  {
+    double pa[3], pb[3], p[3];
+    v.Strokes->GetPoint(a, pa);
+    v.Strokes->GetPoint(b, pb);
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = pa[k] + t * (pb[k] - pa[k]);
+    }
+    this->Points->InsertNextPoint(p);
+    this->Radius->InsertNextValue(v.RadiusAt(a) + t * (v.RadiusAt(b) - v.RadiusAt(a)));
+    this->Pressure->InsertNextValue(v.PressureAt(a) + t * (v.PressureAt(b) - v.PressureAt(a)));
+    if (v.Strength)
+    {
+      const double sa = v.Strength->GetComponent(a, 0), sb = v.Strength->GetComponent(b, 0);
+      this->Strength->InsertNextValue(sa + t * (sb - sa));
+    }
+    if (v.Color)
+    {
+      double ca[4], cb[4];
+      v.ColorAt(a, ca);
+      v.ColorAt(b, cb);
+      float c[4];
+      for (int k = 0; k < 4; ++k)
+      {
+        c[k] = static_cast<float>(ca[k] + t * (cb[k] - ca[k]));
+      }
+      this->Color->InsertNextTypedTuple(c);
+    }
+    this->Previous->InsertNextTuple(previous);
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPaintFilter::vtkOFBPaintFilter()
+  : Brush(vtkSmartPointer<vtkOFBBrush>::New())
+  , Spacing(0.25)
+  , NumberOfChangedSamples(0)
+{
+  this->SetNumberOfInputPorts(2);
+  this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 1.0;
+  this->DefaultColor[3] = 1.0;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPaintFilter::~vtkOFBPaintFilter() = default;
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintFilter::SetStrokesConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintFilter::SetStrokesData(vtkPolyData* strokes)
+{
+  this->SetInputDataInternal(1, strokes);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintFilter::SetBrush(vtkOFBBrush* brush)
+{
+  if (this->Brush != brush)
+  {
+    this->Brush = brush;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFBBrush* vtkOFBPaintFilter::GetBrush() const
+{
+  return this->Brush;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkOFBPaintFilter::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  return this->Brush ? std::max(t, this->Brush->GetMTime()) : t;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBPaintFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkOFB");
+  }
+  else
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
+{
+  vtkPointData* pd = strokes->GetPointData();
+  auto array = [pd](const char* name, int comps) -> vtkDataArray* {
+    vtkDataArray* a = pd->GetArray(name);
+    return a && a->GetNumberOfComponents() >= comps ? a : nullptr;
+  };
+  StrokeValues v{ strokes, this->Brush, array("Radius", 1), array("Color", 3),
+    array("Strength", 1), array("Pressure", 1), 1.0 };
+  if (v.Color && v.Color->GetDataType() == VTK_UNSIGNED_CHAR)
+  {
+    v.ColorScale = 1.0 / 255.0;
+  }
+  for (vtkIdType i = 0; i < strokes->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    strokes->GetPoint(i, p);
+    const double r = v.RadiusAt(i);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      vtkErrorMacro("Stroke point " << i << " is not finite (NaN or infinite).");
+      return nullptr;
+    }
+    if (!(r > 0.0) || !std::isfinite(r))
+    {
+      vtkErrorMacro("Stroke point " << i << " has radius " << r
+                                    << ", not positive and finite.");
+      return nullptr;
+    }
+  }
+
+  DabArrays out;
+  const double none[3] = { std::nan(""), std::nan(""), std::nan("") };
+  // Single dabs: vertex cells.
+  const vtkIdType* ids = nullptr;
+  vtkIdType n = 0;
+  vtkCellArray* verts = strokes->GetVerts();
+  for (verts->InitTraversal(); verts->GetNextCell(n, ids);)
+  {
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      out.Add(v, ids[k], ids[k], 0.0, none);
+    }
+  }
+  // Strokes: dabs every Spacing * radius of path length, the radius at the last dab.
+  const bool byPressure = this->Brush->GetPressureAffectsRadius();
+  vtkCellArray* lines = strokes->GetLines();
+  for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
+  {
+    if (n == 0)
+    {
+      continue;
+    }
+    out.Add(v, ids[0], ids[0], 0.0, none);
+    double last[3];
+    strokes->GetPoint(ids[0], last);
+    double lastRadius = v.RadiusAt(ids[0]) * (byPressure ? v.PressureAt(ids[0]) : 1.0);
+    double since = 0.0;
+    for (vtkIdType k = 1; k < n; ++k)
+    {
+      double a[3], b[3];
+      strokes->GetPoint(ids[k - 1], a);
+      strokes->GetPoint(ids[k], b);
+      const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+      double s = std::max(this->Spacing * lastRadius, 1e-12) - since;
+      double lastS = -since;
+      while (s <= length && length > 0.0)
+      {
+        const double t = s / length;
+        out.Add(v, ids[k - 1], ids[k], t, last);
+        out.Points->GetPoint(out.Points->GetNumberOfPoints() - 1, last);
+        lastRadius = out.Radius->GetValue(out.Radius->GetNumberOfTuples() - 1) *
+          (byPressure ? out.Pressure->GetValue(out.Pressure->GetNumberOfTuples() - 1) : 1.0);
+        lastS = s;
+        s += std::max(this->Spacing * lastRadius, 1e-12);
+      }
+      since = length - lastS;
+    }
+  }
+
+  auto dabs = vtkSmartPointer<vtkPolyData>::New();
+  dabs->SetPoints(out.Points);
+  vtkPointData* dpd = dabs->GetPointData();
+  dpd->AddArray(out.Radius);
+  dpd->AddArray(out.Pressure);
+  dpd->AddArray(out.Previous);
+  if (v.Strength)
+  {
+    dpd->AddArray(out.Strength);
+  }
+  if (v.Color)
+  {
+    dpd->AddArray(out.Color);
+  }
+  return dabs;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBPaintFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  vtkOFB* input = vtkOFB::GetData(inInfo[0]);
+  vtkPolyData* strokes = vtkPolyData::GetData(inInfo[1]);
+  vtkOFB* output = vtkOFB::GetData(outInfo);
+  this->NumberOfChangedSamples = 0;
+  if (!output)
+  {
+    return 0;
+  }
+  output->Initialize();
+  if (!input || input->GetNumberOfSamples() == 0)
+  {
+    vtkErrorMacro("The input OFB is missing or has no samples: empty output.");
+    return 1;
+  }
+  if (!this->Brush)
+  {
+    vtkErrorMacro("No brush: empty output.");
+    return 1;
+  }
+  vtkSmartPointer<vtkPolyData> dabs;
+  if (strokes && strokes->GetNumberOfPoints() > 0)
+  {
+    dabs = this->MakeDabs(strokes);
+    if (!dabs)
+    {
+      return 1; // the error is reported
+    }
+  }
+
+  // A painted copy: the painted array deep, the rest shared.
+  output->ShallowCopy(input);
+  const char* painted = this->Brush->GetTarget() == vtkOFBBrush::NormalTarget ? "Normals" : "Colors";
+  vtkPointData* inPd = input->GetSampleData();
+  if (vtkDataArray* array = inPd->GetArray(painted))
+  {
+    auto copy = vtkSmartPointer<vtkDataArray>::Take(array->NewInstance());
+    copy->DeepCopy(array);
+    vtkPointData* outPd = output->GetSampleData();
+    outPd->AddArray(copy);
+    if (inPd->GetScalars() == array)
+    {
+      outPd->SetScalars(copy);
+    }
+    if (inPd->GetNormals() == array)
+    {
+      outPd->SetNormals(copy);
+    }
+  }
+  if (!dabs || dabs->GetNumberOfPoints() == 0)
+  {
+    return 1;
+  }
+
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(output);
+  painter->SetBrush(this->Brush);
+  painter->SetDefaultColor(this->DefaultColor);
+  painter->SetUndoLimit(0);
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(this);
+  progress->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
+    static_cast<vtkOFBPaintFilter*>(self)->UpdateProgress(*static_cast<double*>(data));
+  });
+  painter->AddObserver(vtkCommand::ProgressEvent, progress);
+  vtkNew<vtkCallbackCommand> errors;
+  errors->SetClientData(this);
+  errors->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
+    vtkErrorWithObjectMacro(static_cast<vtkOFBPaintFilter*>(self),
+      << (data ? static_cast<const char*>(data) : "painting failed"));
+  });
+  painter->AddObserver(vtkCommand::ErrorEvent, errors);
+  this->NumberOfChangedSamples = painter->Dabs(dabs);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Brush: " << this->Brush.GetPointer() << "\n";
+  os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "DefaultColor: (" << this->DefaultColor[0] << ", " << this->DefaultColor[1]
+     << ", " << this->DefaultColor[2] << ", " << this->DefaultColor[3] << ")\n";
+  os << indent << "NumberOfChangedSamples: " << this->NumberOfChangedSamples << "\n";
+}

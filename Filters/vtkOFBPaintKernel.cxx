@@ -1,0 +1,726 @@
+#include "vtkOFBPaintKernel.h"
+
+#include "vtkFloatArray.h"
+#include "vtkOFB.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <thread>
+
+namespace
+{
+// Progress is reported every this many visited samples (serial dabs only).
+constexpr vtkIdType ProgressMask = (vtkIdType(1) << 20) - 1;
+
+// Waves smaller than this run on the calling thread.
+constexpr size_t MinParallelWave = 8;
+
+unsigned char ToByte(float v)
+{
+  v = std::min(1.0f, std::max(0.0f, v));
+  return static_cast<unsigned char>(v * 255.0f + 0.5f);
+}
+
+// Morton code of a point in units of the largest dab reach (21 bits per axis).
+vtkTypeUInt64 MortonCode(const glm::dvec3& q)
+{
+  auto spread = [](double v) {
+    vtkTypeUInt64 x = static_cast<vtkTypeUInt64>(std::min(std::max(v, 0.0), 2097151.0));
+    x = (x | (x << 32)) & 0x1f00000000ffffull;
+    x = (x | (x << 16)) & 0x1f0000ff0000ffull;
+    x = (x | (x << 8)) & 0x100f00f00f00f00full;
+    x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
+    x = (x | (x << 2)) & 0x1249249249249249ull;
+    return x;
+  };
+  return spread(q.x) | (spread(q.y) << 1) | (spread(q.z) << 2);
+}
+
+// Per-thread undo records of one call.
+struct LocalRecords
+{
+  std::vector<vtkOFBColorRecord> Colors;
+  std::vector<vtkOFBNormalRecord> Normals;
+};
+}
+
+/// What one thread needs while painting dabs.
+struct vtkOFBPaintKernel::DabWork
+{
+  LocalRecords* Records;
+  const std::function<void(double)>* Progress; // null in parallel waves
+  vtkIdType Visited;
+  double ProgressBase;
+  double ProgressSpan;
+};
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::Reset(vtkOFB* ofb, vtkUnsignedCharArray* colors, vtkFloatArray* normals)
+{
+  this->OFB = ofb;
+  this->Colors = colors;
+  this->Normals = normals;
+  const vtkIdType n = ofb ? ofb->GetNumberOfSamples() : 0;
+  if (n != this->NumberOfSamples || !this->Flags)
+  {
+    this->NumberOfSamples = n;
+    this->Flags.reset(new unsigned char[std::max<vtkIdType>(n, 1)]);
+    this->NumberOfChangedBlocks = (n >> ChangedBlockShift) + 1;
+    this->ChangedBlocks.reset(new std::atomic<unsigned char>[this->NumberOfChangedBlocks]);
+  }
+  std::memset(this->Flags.get(), 0, static_cast<size_t>(std::max<vtkIdType>(n, 1)));
+  for (vtkIdType b = 0; b < this->NumberOfChangedBlocks; ++b)
+  {
+    this->ChangedBlocks[b].store(0, std::memory_order_relaxed);
+  }
+  this->ResetInitialValues();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::SetArrays(vtkUnsignedCharArray* colors, vtkFloatArray* normals)
+{
+  this->Colors = colors;
+  this->Normals = normals;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::ResetInitialValues()
+{
+  const vtkIdType blocks = (this->NumberOfSamples >> InitialBlockShift) + 1;
+  this->NumberOfInitialBlocks = blocks;
+  this->InitialColors.clear();
+  this->InitialNormals.clear();
+  this->InitialColors.resize(blocks);
+  this->InitialNormals.resize(blocks);
+  this->InitialColorState.reset(new std::atomic<unsigned char>[blocks]);
+  this->InitialNormalState.reset(new std::atomic<unsigned char>[blocks]);
+  for (vtkIdType b = 0; b < blocks; ++b)
+  {
+    this->InitialColorState[b].store(0, std::memory_order_relaxed);
+    this->InitialNormalState[b].store(0, std::memory_order_relaxed);
+  }
+  this->InitialBlocksHeld = 0;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPaintKernel::GetMemory() const
+{
+  const vtkIdType block = vtkIdType(1) << InitialBlockShift;
+  return this->NumberOfSamples + this->NumberOfChangedBlocks +
+    2 * this->NumberOfInitialBlocks * static_cast<vtkIdType>(sizeof(void*) + 1) +
+    this->InitialBlocksHeld.load() * block * 4;
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBPaintKernel::Falloff(const vtkOFBPaintSettings& s, double x)
+{
+  // The formulas of vtkOFBBrush::EvaluateFalloff, without the virtual call of
+  // the custom curve (sampled into a table).
+  if (!(x <= 1.0))
+  {
+    return 0.0;
+  }
+  x = std::max(x, 0.0);
+  const double t = 1.0 - x;
+  switch (s.Falloff)
+  {
+    case 0:
+      return 1.0;
+    case 1:
+      return t;
+    case 2:
+      return t * t * (3.0 - 2.0 * t);
+    case 3:
+      return std::sqrt(std::max(0.0, 1.0 - x * x));
+    case 4:
+      return std::sqrt(t);
+    case 5:
+      return t * t;
+    case 6:
+      return std::exp(-4.5 * x * x);
+    default:
+    {
+      const size_t n = s.CustomTable.size();
+      if (n < 2)
+      {
+        return 1.0;
+      }
+      const double f = x * static_cast<double>(n - 1);
+      const size_t i = std::min(static_cast<size_t>(f), n - 2);
+      const double w = f - static_cast<double>(i);
+      return s.CustomTable[i] + w * (s.CustomTable[i + 1] - s.CustomTable[i]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::BlendColor(const unsigned char dst[4], const float src[4], float g,
+  int mode, const unsigned char initial[4], unsigned char out[4])
+{
+  float d[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    d[k] = dst[k] * (1.0f / 255.0f);
+  }
+  const float a = g * src[3];
+  float r[4] = { d[0], d[1], d[2], d[3] };
+  switch (mode)
+  {
+    case 0: // Mix: source over destination
+    {
+      const float ao = a + d[3] * (1.0f - a);
+      if (ao > 0.0f)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          r[k] = (src[k] * a + d[k] * d[3] * (1.0f - a)) / ao;
+        }
+      }
+      r[3] = ao;
+      break;
+    }
+    case 6: // Erase: back to the initial colour
+      for (int k = 0; k < 4; ++k)
+      {
+        r[k] = d[k] + g * (initial[k] * (1.0f / 255.0f) - d[k]);
+      }
+      break;
+    case 7: // EraseAlpha
+      r[3] = d[3] * (1.0f - g);
+      break;
+    default: // Add, Subtract, Multiply, Lighten, Darken
+      for (int k = 0; k < 3; ++k)
+      {
+        float f;
+        switch (mode)
+        {
+          case 1:
+            f = std::min(1.0f, d[k] + src[k]);
+            break;
+          case 2:
+            f = std::max(0.0f, d[k] - src[k]);
+            break;
+          case 3:
+            f = d[k] * src[k];
+            break;
+          case 4:
+            f = std::max(d[k], src[k]);
+            break;
+          default:
+            f = std::min(d[k], src[k]);
+            break;
+        }
+        r[k] = d[k] + a * (f - d[k]);
+      }
+      r[3] = d[3] + (1.0f - d[3]) * a;
+      break;
+  }
+  for (int k = 0; k < 4; ++k)
+  {
+    out[k] = ToByte(r[k]);
+  }
+}
+
+//------------------------------------------------------------------------------
+const unsigned char* vtkOFBPaintKernel::InitialColor(vtkIdType id)
+{
+  const vtkIdType b = id >> InitialBlockShift;
+  std::atomic<unsigned char>& state = this->InitialColorState[b];
+  if (state.load(std::memory_order_acquire) != 2)
+  {
+    unsigned char expected = 0;
+    if (state.compare_exchange_strong(expected, 1, std::memory_order_acq_rel))
+    {
+      const vtkIdType first = b << InitialBlockShift;
+      const vtkIdType count =
+        std::min(vtkIdType(1) << InitialBlockShift, this->NumberOfSamples - first);
+      this->InitialColors[b].reset(new unsigned char[4 * count]);
+      std::memcpy(this->InitialColors[b].get(), this->Colors->GetPointer(4 * first), 4 * count);
+      ++this->InitialBlocksHeld;
+      state.store(2, std::memory_order_release);
+    }
+    while (state.load(std::memory_order_acquire) != 2)
+    {
+      std::this_thread::yield();
+    }
+  }
+  return this->InitialColors[b].get() + 4 * (id & ((vtkIdType(1) << InitialBlockShift) - 1));
+}
+
+//------------------------------------------------------------------------------
+const float* vtkOFBPaintKernel::InitialNormal(vtkIdType id)
+{
+  const vtkIdType b = id >> InitialBlockShift;
+  std::atomic<unsigned char>& state = this->InitialNormalState[b];
+  if (state.load(std::memory_order_acquire) != 2)
+  {
+    unsigned char expected = 0;
+    if (state.compare_exchange_strong(expected, 1, std::memory_order_acq_rel))
+    {
+      const vtkIdType first = b << InitialBlockShift;
+      const vtkIdType count =
+        std::min(vtkIdType(1) << InitialBlockShift, this->NumberOfSamples - first);
+      this->InitialNormals[b].reset(new float[3 * count]);
+      std::memcpy(this->InitialNormals[b].get(), this->Normals->GetPointer(3 * first),
+        3 * count * sizeof(float));
+      this->InitialBlocksHeld += 3; // three times the bytes of a colour block
+      state.store(2, std::memory_order_release);
+    }
+    while (state.load(std::memory_order_acquire) != 2)
+    {
+      std::this_thread::yield();
+    }
+  }
+  return this->InitialNormals[b].get() + 3 * (id & ((vtkIdType(1) << InitialBlockShift) - 1));
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::MarkChanged(vtkTypeUInt32 id)
+{
+  this->Flags[id] |= ChangedInCall;
+  this->ChangedBlocks[id >> ChangedBlockShift].store(1, std::memory_order_relaxed);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::Touch(vtkIdType id, unsigned char recordedBit)
+{
+  // Only the thread painting the dab that owns this sample in the current wave
+  // writes its flag byte; the block flag is shared, hence atomic.
+  this->Flags[id] |= static_cast<unsigned char>(ChangedInCall | recordedBit);
+  std::atomic<unsigned char>& block = this->ChangedBlocks[id >> ChangedBlockShift];
+  if (!block.load(std::memory_order_relaxed))
+  {
+    block.store(1, std::memory_order_relaxed);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::ClearRecorded(
+  const std::vector<vtkOFBColorRecord>& colors, const std::vector<vtkOFBNormalRecord>& normals)
+{
+  for (const auto& r : colors)
+  {
+    this->Flags[r.Id] &= static_cast<unsigned char>(~ColorRecorded);
+  }
+  for (const auto& r : normals)
+  {
+    this->Flags[r.Id] &= static_cast<unsigned char>(~NormalRecorded);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges)
+{
+  ranges.clear();
+  vtkIdType count = 0;
+  const vtkIdType n = this->NumberOfSamples;
+  unsigned char* flags = this->Flags.get();
+  for (vtkIdType b = 0; b < this->NumberOfChangedBlocks; ++b)
+  {
+    if (!this->ChangedBlocks[b].load(std::memory_order_relaxed))
+    {
+      continue;
+    }
+    this->ChangedBlocks[b].store(0, std::memory_order_relaxed);
+    const vtkIdType first = b << ChangedBlockShift;
+    const vtkIdType last = std::min(n, first + (vtkIdType(1) << ChangedBlockShift));
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      if ((i & 7) == 0 && i + 8 <= last)
+      {
+        vtkTypeUInt64 word;
+        std::memcpy(&word, flags + i, 8);
+        if (!(word & 0x0101010101010101ull))
+        {
+          i += 7; // eight samples without a change
+          continue;
+        }
+      }
+      if (!(flags[i] & ChangedInCall))
+      {
+        continue;
+      }
+      flags[i] &= static_cast<unsigned char>(~ChangedInCall);
+      ++count;
+      if (!ranges.empty() && ranges.back().second == i)
+      {
+        ranges.back().second = i + 1;
+      }
+      else
+      {
+        ranges.emplace_back(i, i + 1);
+      }
+    }
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
+  const vtkOFBPaintSettings& settings, std::vector<int>& order, std::vector<int>& waveStarts) const
+{
+  // Each dab's bounding sphere covers what it writes and, for a smear, what it reads.
+  const size_t n = dabs.size();
+  std::vector<glm::dvec3> centre(n);
+  std::vector<double> reach(n);
+  double maxReach = 0.0;
+  for (size_t j = 0; j < n; ++j)
+  {
+    const vtkOFBDab& d = dabs[j];
+    glm::dvec3 c(d.Center[0], d.Center[1], d.Center[2]);
+    double r = d.Radius;
+    if (settings.Target == 2 && d.HasPrevious)
+    {
+      const glm::dvec3 p(d.Previous[0], d.Previous[1], d.Previous[2]);
+      r += 0.5 * glm::length(c - p);
+      c = 0.5 * (c + p);
+    }
+    centre[j] = c;
+    reach[j] = r;
+    maxReach = std::max(maxReach, r);
+  }
+  // Spatial hash of cells of edge 2 * maxReach: overlapping dabs lie in
+  // neighbouring cells. Buckets list their dabs in increasing order.
+  const double h = 2.0 * maxReach;
+  size_t tableSize = 1;
+  while (tableSize < 2 * n)
+  {
+    tableSize <<= 1;
+  }
+  auto cellOf = [&](const glm::dvec3& c) {
+    return glm::i64vec3(std::floor(c.x / h), std::floor(c.y / h), std::floor(c.z / h));
+  };
+  auto hashOf = [&](const glm::i64vec3& k) {
+    const vtkTypeUInt64 v = static_cast<vtkTypeUInt64>(k.x) * 73856093ull ^
+      static_cast<vtkTypeUInt64>(k.y) * 19349663ull ^ static_cast<vtkTypeUInt64>(k.z) * 83492791ull;
+    return static_cast<size_t>(v & (tableSize - 1));
+  };
+  std::vector<size_t> bucketOf(n);
+  std::vector<int> bucketStart(tableSize + 1, 0);
+  for (size_t j = 0; j < n; ++j)
+  {
+    bucketOf[j] = hashOf(cellOf(centre[j]));
+    ++bucketStart[bucketOf[j] + 1];
+  }
+  for (size_t b = 0; b < tableSize; ++b)
+  {
+    bucketStart[b + 1] += bucketStart[b];
+  }
+  std::vector<int> fill(bucketStart.begin(), bucketStart.end() - 1);
+  std::vector<int> members(n);
+  for (size_t j = 0; j < n; ++j)
+  {
+    members[fill[bucketOf[j]]++] = static_cast<int>(j);
+  }
+  std::vector<int> wave(n, 0);
+  int numberOfWaves = n > 0 ? 1 : 0;
+  for (size_t j = 0; j < n; ++j)
+  {
+    const glm::i64vec3 k = cellOf(centre[j]);
+    int w = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+    {
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          const size_t b = hashOf(k + glm::i64vec3(dx, dy, dz));
+          for (int m = bucketStart[b]; m < bucketStart[b + 1]; ++m)
+          {
+            const int i = members[m];
+            if (i >= static_cast<int>(j))
+            {
+              break;
+            }
+            const double reachSum = reach[i] + reach[j];
+            const glm::dvec3 dc = centre[i] - centre[j];
+            if (wave[i] + 1 > w && glm::dot(dc, dc) <= reachSum * reachSum)
+            {
+              w = wave[i] + 1;
+            }
+          }
+        }
+      }
+    }
+    wave[j] = w;
+    numberOfWaves = std::max(numberOfWaves, w + 1);
+  }
+  // Dabs ordered by wave, then by index.
+  waveStarts.assign(numberOfWaves + 1, 0);
+  for (size_t j = 0; j < n; ++j)
+  {
+    ++waveStarts[wave[j] + 1];
+  }
+  for (int w = 0; w < numberOfWaves; ++w)
+  {
+    waveStarts[w + 1] += waveStarts[w];
+  }
+  std::vector<int> next(waveStarts.begin(), waveStarts.end() - 1);
+  order.resize(n);
+  for (size_t j = 0; j < n; ++j)
+  {
+    order[next[wave[j]]++] = static_cast<int>(j);
+  }
+  // Within a wave the order does not change the result (its dabs share no
+  // sample): paint in Morton order of the centres, so that consecutive dabs read
+  // neighbouring rows of the grids' offsets, depths and colours.
+  glm::dvec3 low(VTK_DOUBLE_MAX);
+  for (size_t j = 0; j < n; ++j)
+  {
+    low = glm::min(low, centre[j]);
+  }
+  std::vector<vtkTypeUInt64> key(n);
+  for (size_t j = 0; j < n; ++j)
+  {
+    const glm::dvec3 q = (centre[j] - low) / std::max(maxReach, 1e-300);
+    key[j] = MortonCode(q);
+  }
+  for (int w = 0; w < numberOfWaves; ++w)
+  {
+    if (waveStarts[w + 1] - waveStarts[w] > 2)
+    {
+      std::sort(order.begin() + waveStarts[w], order.begin() + waveStarts[w + 1],
+        [&key](int a, int b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
+  const vtkOFBPaintSettings& settings, std::vector<vtkOFBColorRecord>& colorUndo,
+  std::vector<vtkOFBNormalRecord>& normalUndo, const std::function<void(double)>& progress)
+{
+  if (dabs.empty() || this->NumberOfSamples == 0)
+  {
+    return;
+  }
+  std::vector<int> order;
+  std::vector<int> waveStarts;
+  this->ComputeWaves(dabs, settings, order, waveStarts);
+
+  vtkSMPThreadLocal<LocalRecords> records;
+  const double total = static_cast<double>(dabs.size());
+  for (size_t w = 0; w + 1 < waveStarts.size(); ++w)
+  {
+    const int begin = waveStarts[w];
+    const int end = waveStarts[w + 1];
+    if (static_cast<size_t>(end - begin) < MinParallelWave)
+    {
+      for (int k = begin; k < end; ++k)
+      {
+        DabWork work{ &records.Local(), progress ? &progress : nullptr, 0, k / total, 1.0 / total };
+        this->PaintDab(dabs[order[k]], settings, work);
+      }
+    }
+    else
+    {
+      vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
+        DabWork work{ &records.Local(), nullptr, 0, 0.0, 0.0 };
+        for (vtkIdType k = first; k < last; ++k)
+        {
+          this->PaintDab(dabs[order[k]], settings, work);
+        }
+      });
+    }
+  }
+  for (auto& local : records)
+  {
+    colorUndo.insert(colorUndo.end(), local.Colors.begin(), local.Colors.end());
+    normalUndo.insert(normalUndo.end(), local.Normals.begin(), local.Normals.end());
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPaintKernel::CentreNormal(const vtkOFBDab& dab, double n[3]) const
+{
+  glm::dvec3 v;
+  if (dab.HasNormal)
+  {
+    v = glm::dvec3(dab.Normal[0], dab.Normal[1], dab.Normal[2]);
+  }
+  else
+  {
+    // The closest sample within the dab, so that it is never one another dab
+    // of the same wave changes.
+    const double s = this->OFB->GetCellSize();
+    const vtkIdType id =
+      this->OFB->FindClosestSample(dab.Center, std::min(dab.Radius, std::sqrt(3.0) * s));
+    if (id < 0)
+    {
+      return false;
+    }
+    const float* m = this->Normals->GetPointer(3 * id);
+    v = glm::dvec3(m[0], m[1], m[2]);
+  }
+  const double len = glm::length(v);
+  if (!(len > 0.0))
+  {
+    return false;
+  }
+  v /= len;
+  n[0] = v.x;
+  n[1] = v.y;
+  n[2] = v.z;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPaintKernel::SmearSource(
+  const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, float src[4]) const
+{
+  // The falloff-weighted mean colour under the brush at the previous position.
+  const unsigned char* colors = this->Colors->GetPointer(0);
+  const double invR = 1.0 / dab.Radius;
+  double sum[4] = { 0.0, 0.0, 0.0, 0.0 };
+  double weight = 0.0;
+  this->OFB->ForEachSampleInSphere(dab.Previous, dab.Radius, [&](vtkIdType i, double d2) {
+    const double g = Falloff(settings, std::sqrt(d2) * invR);
+    for (int k = 0; k < 4; ++k)
+    {
+      sum[k] += g * colors[4 * i + k];
+    }
+    weight += g;
+  });
+  if (!(weight > 0.0))
+  {
+    return false;
+  }
+  for (int k = 0; k < 4; ++k)
+  {
+    src[k] = static_cast<float>(sum[k] / (255.0 * weight));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::PaintDab(
+  const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, DabWork& work)
+{
+  const double invR = 1.0 / dab.Radius;
+  const float* normals = this->Normals ? this->Normals->GetPointer(0) : nullptr;
+  double centreNormal[3] = { 0.0, 0.0, 0.0 };
+  const bool aware = settings.NormalAware && normals && this->CentreNormal(dab, centreNormal);
+  const float nc[3] = { static_cast<float>(centreNormal[0]), static_cast<float>(centreNormal[1]),
+    static_cast<float>(centreNormal[2]) };
+  const float cosMax = static_cast<float>(settings.CosMaxAngle);
+  const double total = static_cast<double>(this->NumberOfSamples);
+
+  // Shared by both targets: progress, normal-aware test, weight. Returns the
+  // weight G (0: leave the sample alone).
+  auto weightOf = [&](vtkIdType i, double d2) -> float {
+    if (work.Progress && (++work.Visited & ProgressMask) == 0)
+    {
+      (*work.Progress)(work.ProgressBase + work.ProgressSpan * std::min(1.0, work.Visited / total));
+    }
+    if (aware)
+    {
+      const float* n = normals + 3 * i;
+      if (n[0] * nc[0] + n[1] * nc[1] + n[2] * nc[2] < cosMax)
+      {
+        return 0.0f;
+      }
+    }
+    return static_cast<float>(dab.Strength * Falloff(settings, std::sqrt(d2) * invR));
+  };
+
+  if (settings.Target == 1)
+  {
+    float* out = this->Normals->GetPointer(0);
+    const bool erase = settings.BlendMode == 6;
+    const glm::dvec3 c(dab.Center[0], dab.Center[1], dab.Center[2]);
+    this->OFB->ForEachSampleInSphere(dab.Center, dab.Radius, [&](vtkIdType i, double d2) {
+      const float g = weightOf(i, d2);
+      if (g <= 0.0f)
+      {
+        return;
+      }
+      float* n = out + 3 * i;
+      const glm::vec3 old(n[0], n[1], n[2]);
+      glm::vec3 v;
+      if (erase)
+      {
+        const float* n0 = this->InitialNormal(i);
+        const glm::vec3 initial(n0[0], n0[1], n0[2]);
+        v = g >= 1.0f ? initial : old + g * (initial - old);
+      }
+      else
+      {
+        double x[3];
+        this->OFB->GetSamplePosition(i, x);
+        glm::dvec3 t = (glm::dvec3(x[0], x[1], x[2]) - c) * invR;
+        const glm::dvec3 nd(old);
+        t -= glm::dot(t, nd) * nd;
+        v = glm::vec3(nd + settings.BumpDepth * g * t);
+      }
+      const float len = glm::length(v);
+      if (!(len > 0.0f))
+      {
+        return;
+      }
+      if (!(erase && g >= 1.0f))
+      {
+        v /= len; // (a full erase restores the initial normal as it was)
+      }
+      if (v == old)
+      {
+        return;
+      }
+      this->InitialNormal(i); // keep the initial value before the first change
+      if (!(this->Flags[i] & NormalRecorded))
+      {
+        work.Records->Normals.push_back(
+          { static_cast<vtkTypeUInt32>(i), { old.x, old.y, old.z } });
+      }
+      this->Touch(i, NormalRecorded);
+      n[0] = v.x;
+      n[1] = v.y;
+      n[2] = v.z;
+    });
+    return;
+  }
+
+  float src[4] = { dab.Color[0], dab.Color[1], dab.Color[2], dab.Color[3] };
+  if (settings.Target == 2)
+  {
+    float carried[4];
+    if (!dab.HasPrevious || !this->SmearSource(dab, settings, carried))
+    {
+      return; // nothing to carry (the first dab of a stroke)
+    }
+    const float amount = static_cast<float>(settings.SmearAmount);
+    for (int k = 0; k < 4; ++k)
+    {
+      src[k] += amount * (carried[k] - src[k]);
+    }
+  }
+  unsigned char* colors = this->Colors->GetPointer(0);
+  const int mode = settings.BlendMode;
+  this->OFB->ForEachSampleInSphere(dab.Center, dab.Radius, [&](vtkIdType i, double d2) {
+    const float g = weightOf(i, d2);
+    if (g <= 0.0f)
+    {
+      return;
+    }
+    unsigned char* c = colors + 4 * i;
+    const unsigned char* initial = mode == 6 ? this->InitialColor(i) : nullptr;
+    unsigned char result[4];
+    BlendColor(c, src, g, mode, initial, result);
+    if (std::memcmp(result, c, 4) == 0)
+    {
+      return;
+    }
+    this->InitialColor(i); // keep the initial value before the first change
+    if (!(this->Flags[i] & ColorRecorded))
+    {
+      work.Records->Colors.push_back({ static_cast<vtkTypeUInt32>(i), { c[0], c[1], c[2], c[3] } });
+    }
+    this->Touch(i, ColorRecorded);
+    std::memcpy(c, result, 4);
+  });
+}

@@ -1,0 +1,155 @@
+/**
+ * @file   vtkOFBPaintKernel.h
+ * @brief  Private: the per-sample work of vtkOFBPainter (waves, blending, change tracking)
+ *
+ * vtkOFBPaintKernel holds what a painter keeps per painted OFB: one flag byte per
+ * sample (changed by the current call; previous value recorded in the current
+ * undo step), a flag per block of samples changed by the current call (so that
+ * collecting the changed ranges reads only the touched blocks), and the initial
+ * colours and normals, copied block by block the first time a block changes
+ * (what the Erase blend mode restores).
+ *
+ * Paint() applies a list of dabs with the result of applying them one after the
+ * other: dabs are grouped into waves (a dab goes one wave after the last earlier
+ * dab whose sphere, or smear source sphere, it overlaps), the dabs of a wave
+ * touch disjoint samples and run in parallel with vtkSMPTools, the waves run in
+ * order.
+ */
+
+#ifndef vtkOFBPaintKernel_h
+#define vtkOFBPaintKernel_h
+
+#include "vtkType.h"
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <vector>
+
+class vtkOFB;
+class vtkFloatArray;
+class vtkUnsignedCharArray;
+
+/// One dab, with the brush settings that may vary per dab already resolved.
+struct vtkOFBDab
+{
+  double Center[3];
+  double Radius;   // world units, > 0
+  float Color[4];  // RGBA in [0, 1]
+  double Strength; // in [0, 1], pressure included
+  bool HasPrevious;
+  double Previous[3]; // smear source
+  bool HasNormal;
+  double Normal[3]; // normal at the centre (normal-aware painting)
+};
+
+/// Settings shared by all dabs of one call.
+struct vtkOFBPaintSettings
+{
+  int Falloff = 2;
+  int BlendMode = 0;
+  int Target = 0;
+  double SmearAmount = 1.0;
+  double BumpDepth = 0.5;
+  bool NormalAware = false;
+  double CosMaxAngle = 0.0;
+  std::vector<double> CustomTable; // Custom falloff sampled at x = i / (size - 1)
+};
+
+/// The previous value of a sample, kept by an undo step.
+struct vtkOFBColorRecord
+{
+  vtkTypeUInt32 Id;
+  unsigned char Value[4];
+};
+struct vtkOFBNormalRecord
+{
+  vtkTypeUInt32 Id;
+  float Value[3];
+};
+
+class vtkOFBPaintKernel
+{
+public:
+  /// Flag bits of a sample.
+  enum : unsigned char
+  {
+    ChangedInCall = 1,
+    ColorRecorded = 2,
+    NormalRecorded = 4
+  };
+  static constexpr int ChangedBlockShift = 9;  // 512 samples per changed-block flag
+  static constexpr int InitialBlockShift = 12; // 4096 samples per initial-value block
+
+  /// Size the per-sample data for `ofb` (clears it, drops the initial values).
+  void Reset(vtkOFB* ofb, vtkUnsignedCharArray* colors, vtkFloatArray* normals);
+
+  /// Point at new "Colors" / "Normals" arrays of the same OFB (created on demand).
+  void SetArrays(vtkUnsignedCharArray* colors, vtkFloatArray* normals);
+
+  /// Drop the initial values (the next change of a block takes them anew).
+  void ResetInitialValues();
+
+  /**
+   * Paint `dabs` in order. The previous values of samples not yet recorded in
+   * the current undo step are appended to `colorUndo` / `normalUndo`. `progress`
+   * (may be empty) is called with a fraction in [0, 1] now and then.
+   */
+  void Paint(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings,
+    std::vector<vtkOFBColorRecord>& colorUndo, std::vector<vtkOFBNormalRecord>& normalUndo,
+    const std::function<void(double)>& progress);
+
+  /**
+   * The sorted, merged [first, last) ranges of the samples changed since the last
+   * call of this function; clears their ChangedInCall flags. Returns the number
+   * of samples in them.
+   */
+  vtkIdType CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges);
+
+  /// Mark `ids` changed in this call (undo and redo).
+  void MarkChanged(vtkTypeUInt32 id);
+
+  /// Clear the "recorded in this step" flags of the given records.
+  void ClearRecorded(const std::vector<vtkOFBColorRecord>& colors,
+    const std::vector<vtkOFBNormalRecord>& normals);
+
+  /// Bytes held (flags and initial values).
+  vtkIdType GetMemory() const;
+
+  vtkOFB* GetOFB() const { return this->OFB; }
+
+  /// Falloff value at normalized distance x in [0, 1] (the brush's formulas).
+  static double Falloff(const vtkOFBPaintSettings& s, double x);
+
+  /// Blend a colour (bytes) with source `src` (RGBA in [0, 1]) by weight g.
+  static void BlendColor(const unsigned char dst[4], const float src[4], float g, int mode,
+    const unsigned char initial[4], unsigned char out[4]);
+
+private:
+  struct DabWork;
+
+  void ComputeWaves(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings,
+    std::vector<int>& order, std::vector<int>& waveStarts) const;
+  void PaintDab(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, DabWork& work);
+  bool SmearSource(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, float src[4]) const;
+  bool CentreNormal(const vtkOFBDab& dab, double n[3]) const;
+  const unsigned char* InitialColor(vtkIdType id);
+  const float* InitialNormal(vtkIdType id);
+  void Touch(vtkIdType id, unsigned char recordedBit);
+
+  vtkOFB* OFB = nullptr;
+  vtkUnsignedCharArray* Colors = nullptr;
+  vtkFloatArray* Normals = nullptr;
+  vtkIdType NumberOfSamples = 0;
+  std::unique_ptr<unsigned char[]> Flags; // one thread per sample within a wave
+  std::unique_ptr<std::atomic<unsigned char>[]> ChangedBlocks;
+  vtkIdType NumberOfChangedBlocks = 0;
+  vtkIdType NumberOfInitialBlocks = 0;
+  std::unique_ptr<std::atomic<unsigned char>[]> InitialColorState; // 0 none, 1 copying, 2 done
+  std::unique_ptr<std::atomic<unsigned char>[]> InitialNormalState;
+  std::vector<std::unique_ptr<unsigned char[]>> InitialColors;
+  std::vector<std::unique_ptr<float[]>> InitialNormals;
+  std::atomic<vtkIdType> InitialBlocksHeld{ 0 };
+};
+
+#endif

@@ -1,0 +1,760 @@
+#include "vtkOFBPainter.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkOFB.h"
+#include "vtkOFBBrush.h"
+#include "vtkOFBPaintKernel.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <deque>
+
+vtkStandardNewMacro(vtkOFBPainter);
+
+namespace
+{
+// Samples of the Custom falloff's table.
+constexpr int CustomTableSize = 4097;
+
+/// One undo (or redo) step: the other value of every sample it changed.
+struct Step
+{
+  std::vector<vtkOFBColorRecord> Colors;
+  std::vector<vtkOFBNormalRecord> Normals;
+
+  bool Empty() const { return this->Colors.empty() && this->Normals.empty(); }
+  vtkIdType Bytes() const
+  {
+    return static_cast<vtkIdType>(this->Colors.size() * sizeof(vtkOFBColorRecord) +
+      this->Normals.size() * sizeof(vtkOFBNormalRecord));
+  }
+  void Clear()
+  {
+    this->Colors.clear();
+    this->Normals.clear();
+  }
+};
+
+bool Finite3(const double p[3])
+{
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+}
+
+struct vtkOFBPainter::Internals
+{
+  vtkSmartPointer<vtkOFB> OFB;
+  vtkSmartPointer<vtkOFBBrush> Brush;
+  vtkSmartPointer<vtkPoints> StrokeDabs;
+  vtkOFBPaintKernel Kernel;
+
+  // What the OFB looked like after this painter's last change.
+  bool Ready = false;
+  vtkMTimeType LastMTime = 0;
+  vtkMTimeType LastStructureTime = 0;
+  vtkIdType LastNumberOfSamples = 0;
+  vtkUnsignedCharArray* LastColors = nullptr;
+  vtkFloatArray* LastNormals = nullptr;
+
+  std::deque<Step> UndoSteps;
+  std::deque<Step> RedoSteps;
+  Step Open;
+
+  // Stroke state: the last point given, the last dab and the path length since.
+  bool HasLastPoint = false;
+  double LastPoint[3] = { 0.0, 0.0, 0.0 };
+  double LastPressure = 1.0;
+  bool HasLastDab = false;
+  double LastDab[3] = { 0.0, 0.0, 0.0 };
+  double SinceLastDab = 0.0;
+
+  std::vector<std::pair<vtkIdType, vtkIdType>> Ranges;
+
+  vtkIdType HistoryBytes() const
+  {
+    vtkIdType b = this->Open.Bytes();
+    for (const auto& s : this->UndoSteps)
+    {
+      b += s.Bytes();
+    }
+    for (const auto& s : this->RedoSteps)
+    {
+      b += s.Bytes();
+    }
+    return b;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkOFBPainter::vtkOFBPainter()
+  : Impl(new Internals)
+  , Spacing(0.25)
+  , UndoLimit(vtkIdType(256) << 20)
+  , InStroke(false)
+{
+  this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 1.0;
+  this->DefaultColor[3] = 1.0;
+  this->Impl->Brush = vtkSmartPointer<vtkOFBBrush>::New();
+  this->Impl->StrokeDabs = vtkSmartPointer<vtkPoints>::New();
+  this->Impl->StrokeDabs->SetDataTypeToDouble();
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPainter::~vtkOFBPainter() = default;
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::SetOFB(vtkOFB* ofb)
+{
+  if (this->Impl->OFB == ofb)
+  {
+    return;
+  }
+  if (this->InStroke)
+  {
+    this->EndStroke();
+  }
+  this->Impl->OFB = ofb;
+  this->Impl->Ready = false;
+  this->Impl->UndoSteps.clear();
+  this->Impl->RedoSteps.clear();
+  this->Impl->Open.Clear();
+  this->Impl->Kernel.Reset(nullptr, nullptr, nullptr);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkOFB* vtkOFBPainter::GetOFB() const
+{
+  return this->Impl->OFB;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::SetBrush(vtkOFBBrush* brush)
+{
+  if (this->Impl->Brush != brush)
+  {
+    this->Impl->Brush = brush;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFBBrush* vtkOFBPainter::GetBrush() const
+{
+  return this->Impl->Brush;
+}
+
+//------------------------------------------------------------------------------
+vtkPoints* vtkOFBPainter::GetStrokeDabs() const
+{
+  return this->Impl->StrokeDabs;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
+{
+  Internals& impl = *this->Impl;
+  vtkOFB* ofb = impl.OFB;
+  if (!ofb)
+  {
+    vtkErrorMacro("No OFB to paint: call SetOFB first.");
+    return false;
+  }
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  if (n == 0)
+  {
+    vtkErrorMacro("The OFB has no samples: nothing to paint.");
+    return false;
+  }
+  vtkPointData* pd = ofb->GetSampleData();
+  vtkDataArray* colorArray = pd->GetArray("Colors");
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(colorArray);
+  if (colorArray && (!colors || colors->GetNumberOfComponents() != 4 ||
+                      colors->GetNumberOfTuples() != n))
+  {
+    vtkErrorMacro("The OFB's \"Colors\" array is not RGBA unsigned char with one tuple per "
+                  "sample: cannot paint it.");
+    return false;
+  }
+  vtkDataArray* normalArray = pd->GetArray("Normals");
+  auto* normals = vtkFloatArray::SafeDownCast(normalArray);
+  if (normals && (normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != n))
+  {
+    normals = nullptr;
+  }
+  if (needNormals && !normals)
+  {
+    vtkErrorMacro("Normal painting needs a float \"Normals\" sample array with 3 components; "
+                  "the OFB has none.");
+    return false;
+  }
+
+  // Something else changed the OFB since this painter's last change: the
+  // history no longer describes it.
+  if (impl.Ready)
+  {
+    const bool rebuilt = ofb->GetStructureMTime() != impl.LastStructureTime ||
+      n != impl.LastNumberOfSamples || (impl.LastColors && colors != impl.LastColors) ||
+      (impl.LastNormals && normals != impl.LastNormals);
+    if (rebuilt || ofb->GetMTime() != impl.LastMTime)
+    {
+      if (!impl.UndoSteps.empty() || !impl.RedoSteps.empty() || !impl.Open.Empty())
+      {
+        vtkWarningMacro("The OFB was changed by something other than this painter since its "
+                        "last change: its undo history is dropped.");
+      }
+      impl.Kernel.ClearRecorded(impl.Open.Colors, impl.Open.Normals);
+      impl.UndoSteps.clear();
+      impl.RedoSteps.clear();
+      impl.Open.Clear();
+      if (rebuilt)
+      {
+        impl.Ready = false;
+      }
+    }
+  }
+
+  if (needColors && !colors)
+  {
+    // Created on demand, filled with DefaultColor.
+    auto created = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    created->SetName("Colors");
+    created->SetNumberOfComponents(4);
+    created->SetNumberOfTuples(n);
+    unsigned char c[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      c[k] = static_cast<unsigned char>(
+        std::min(1.0, std::max(0.0, this->DefaultColor[k])) * 255.0 + 0.5);
+    }
+    unsigned char* p = created->GetPointer(0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      std::memcpy(p + 4 * i, c, 4);
+    }
+    pd->SetScalars(created);
+    colors = created;
+  }
+
+  if (!impl.Ready)
+  {
+    impl.Kernel.Reset(ofb, colors, normals);
+    impl.Ready = true;
+  }
+  else
+  {
+    impl.Kernel.SetArrays(colors, normals);
+  }
+  impl.LastColors = colors;
+  impl.LastNormals = normals;
+  impl.LastStructureTime = ofb->GetStructureMTime();
+  impl.LastNumberOfSamples = n;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::Finish()
+{
+  Internals& impl = *this->Impl;
+  const vtkIdType count = impl.Kernel.CollectChanged(impl.Ranges);
+  for (const auto& r : impl.Ranges)
+  {
+    impl.OFB->MarkSamplesModified(r.first, r.second);
+  }
+  if (count > 0)
+  {
+    impl.OFB->Modified();
+  }
+  impl.LastMTime = impl.OFB->GetMTime();
+  return count;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPainter::MakeDab(const double center[3], double pressure, vtkOFBDab& dab)
+{
+  vtkOFBBrush* brush = this->Impl->Brush;
+  if (!Finite3(center))
+  {
+    vtkErrorMacro("A dab centre is not finite (NaN or infinite): nothing painted.");
+    return false;
+  }
+  pressure = std::min(1.0, std::max(0.0, std::isfinite(pressure) ? pressure : 1.0));
+  dab.Radius = brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pressure : 1.0);
+  dab.Strength = brush->GetStrength() * (brush->GetPressureAffectsStrength() ? pressure : 1.0);
+  for (int k = 0; k < 3; ++k)
+  {
+    dab.Center[k] = center[k];
+    dab.Previous[k] = center[k];
+    dab.Normal[k] = 0.0;
+  }
+  const double* c = brush->GetColor();
+  for (int k = 0; k < 4; ++k)
+  {
+    dab.Color[k] = static_cast<float>(std::min(1.0, std::max(0.0, c[k])));
+  }
+  dab.HasPrevious = false;
+  dab.HasNormal = false;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
+{
+  vtkOFBBrush* brush = this->Impl->Brush;
+  if (!brush)
+  {
+    vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
+    return 0;
+  }
+  for (const vtkOFBDab& d : dabs)
+  {
+    if (!(d.Radius > 0.0) || !std::isfinite(d.Radius))
+    {
+      vtkErrorMacro("Dab radius " << d.Radius
+                                  << " is not positive and finite: nothing painted.");
+      return 0;
+    }
+  }
+  const int target = brush->GetTarget();
+  if (!this->Prepare(target != vtkOFBBrush::NormalTarget, target == vtkOFBBrush::NormalTarget))
+  {
+    return 0;
+  }
+  vtkOFBPaintSettings settings;
+  settings.Falloff = brush->GetFalloff();
+  settings.BlendMode = brush->GetBlendMode();
+  settings.Target = target;
+  settings.SmearAmount = brush->GetSmearAmount();
+  settings.BumpDepth = brush->GetBumpDepth();
+  settings.NormalAware = brush->GetNormalAware();
+  settings.CosMaxAngle = std::cos(vtkMath::RadiansFromDegrees(brush->GetMaxNormalAngle()));
+  if (settings.Falloff == vtkOFBBrush::Custom && brush->GetCustomFalloff())
+  {
+    settings.CustomTable.resize(CustomTableSize);
+    for (int i = 0; i < CustomTableSize; ++i)
+    {
+      settings.CustomTable[i] = brush->EvaluateFalloff(i / double(CustomTableSize - 1));
+    }
+  }
+  if (settings.NormalAware && !this->Impl->LastNormals)
+  {
+    vtkWarningMacro("NormalAware needs a \"Normals\" sample array; painting without it.");
+  }
+
+  bool reported = false;
+  std::function<void(double)> progress = [this, &reported](double p) {
+    reported = true;
+    this->InvokeEvent(vtkCommand::ProgressEvent, &p);
+  };
+  this->Impl->Kernel.Paint(
+    dabs, settings, this->Impl->Open.Colors, this->Impl->Open.Normals, progress);
+  if (reported)
+  {
+    double done = 1.0;
+    this->InvokeEvent(vtkCommand::ProgressEvent, &done);
+  }
+  const vtkIdType count = this->Finish();
+  if (!this->InStroke)
+  {
+    this->CloseStep();
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::Dab(const double center[3])
+{
+  std::vector<vtkOFBDab> dabs(1);
+  if (!this->MakeDab(center, 1.0, dabs[0]))
+  {
+    return 0;
+  }
+  return this->Paint(dabs);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::Dab(double x, double y, double z)
+{
+  const double c[3] = { x, y, z };
+  return this->Dab(c);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::Dabs(vtkPoints* centers)
+{
+  if (!centers)
+  {
+    vtkErrorMacro("Dabs: no points given.");
+    return 0;
+  }
+  std::vector<vtkOFBDab> dabs(centers->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < centers->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    centers->GetPoint(i, p);
+    if (!this->MakeDab(p, 1.0, dabs[i]))
+    {
+      return 0;
+    }
+  }
+  return this->Paint(dabs);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
+{
+  if (!input || !input->GetPoints())
+  {
+    vtkErrorMacro("Dabs: no points given.");
+    return 0;
+  }
+  vtkPointData* pd = input->GetPointData();
+  auto array = [pd](const char* name, int comps) -> vtkDataArray* {
+    vtkDataArray* a = pd->GetArray(name);
+    return a && a->GetNumberOfComponents() >= comps ? a : nullptr;
+  };
+  vtkDataArray* radius = array("Radius", 1);
+  vtkDataArray* color = array("Color", 3);
+  vtkDataArray* strength = array("Strength", 1);
+  vtkDataArray* pressure = array("Pressure", 1);
+  vtkDataArray* previous = array("PreviousPosition", 3);
+  vtkDataArray* normal = array("Normal", 3);
+  const double colorScale =
+    color && color->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  if (!this->Impl->Brush)
+  {
+    vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
+    return 0;
+  }
+  const bool strengthByPressure = this->Impl->Brush->GetPressureAffectsStrength();
+
+  const vtkIdType n = input->GetNumberOfPoints();
+  std::vector<vtkOFBDab> dabs(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    const double pr = pressure ? pressure->GetComponent(i, 0) : 1.0;
+    vtkOFBDab& d = dabs[i];
+    if (!this->MakeDab(p, pr, d))
+    {
+      return 0;
+    }
+    if (radius)
+    {
+      const bool byPressure = this->Impl->Brush->GetPressureAffectsRadius();
+      const double prc = std::min(1.0, std::max(0.0, pr));
+      d.Radius = radius->GetComponent(i, 0) * (byPressure ? prc : 1.0);
+    }
+    if (strength)
+    {
+      const double prc = std::min(1.0, std::max(0.0, pr));
+      d.Strength = std::min(1.0, std::max(0.0, strength->GetComponent(i, 0))) *
+        (strengthByPressure ? prc : 1.0);
+    }
+    if (color)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const double v =
+          k < color->GetNumberOfComponents() ? color->GetComponent(i, k) * colorScale : 1.0;
+        d.Color[k] = static_cast<float>(std::min(1.0, std::max(0.0, v)));
+      }
+    }
+    if (previous)
+    {
+      previous->GetTuple(i, d.Previous);
+      d.HasPrevious = Finite3(d.Previous);
+    }
+    if (normal)
+    {
+      normal->GetTuple(i, d.Normal);
+      d.HasNormal = Finite3(d.Normal);
+    }
+  }
+  return this->Paint(dabs);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::BeginStroke()
+{
+  if (this->InStroke)
+  {
+    this->EndStroke();
+  }
+  this->InStroke = true;
+  this->Impl->HasLastPoint = false;
+  this->Impl->HasLastDab = false;
+  this->Impl->SinceLastDab = 0.0;
+  this->Impl->StrokeDabs->Initialize();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
+{
+  if (!Finite3(p))
+  {
+    vtkErrorMacro("A stroke point is not finite (NaN or infinite): ignored.");
+    return 0;
+  }
+  if (!this->Impl->Brush)
+  {
+    vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
+    return 0;
+  }
+  if (!this->InStroke)
+  {
+    this->BeginStroke();
+  }
+  Internals& impl = *this->Impl;
+  pressure = std::min(1.0, std::max(0.0, std::isfinite(pressure) ? pressure : 1.0));
+  std::vector<vtkOFBDab> dabs;
+  auto place = [&](const double c[3], double pr) {
+    vtkOFBDab d;
+    this->MakeDab(c, pr, d);
+    d.HasPrevious = impl.HasLastDab;
+    std::copy(impl.LastDab, impl.LastDab + 3, d.Previous);
+    dabs.push_back(d);
+    std::copy(c, c + 3, impl.LastDab);
+    impl.HasLastDab = true;
+    impl.StrokeDabs->InsertNextPoint(c);
+  };
+  if (!impl.HasLastPoint)
+  {
+    place(p, pressure);
+    impl.SinceLastDab = 0.0;
+  }
+  else
+  {
+    // Dabs every Spacing * radius of path length, the radius at the last dab.
+    const glm::dvec3 a(impl.LastPoint[0], impl.LastPoint[1], impl.LastPoint[2]);
+    const glm::dvec3 b(p[0], p[1], p[2]);
+    const double length = glm::length(b - a);
+    vtkOFBBrush* brush = impl.Brush;
+    auto stepAt = [&](double pr) {
+      const double r = brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pr : 1.0);
+      return std::max(this->Spacing * r, 1e-12 * (1.0 + glm::length(b)));
+    };
+    double lastPressure = impl.LastPressure;
+    double s = stepAt(lastPressure) - impl.SinceLastDab;
+    double lastS = -impl.SinceLastDab;
+    while (s <= length && length > 0.0)
+    {
+      const double t = s / length;
+      const glm::dvec3 c = a + t * (b - a);
+      const double pr = impl.LastPressure + t * (pressure - impl.LastPressure);
+      const double cc[3] = { c.x, c.y, c.z };
+      place(cc, pr);
+      lastS = s;
+      lastPressure = pr;
+      s += stepAt(pr);
+    }
+    impl.SinceLastDab = length - lastS;
+  }
+  std::copy(p, p + 3, impl.LastPoint);
+  impl.LastPressure = pressure;
+  impl.HasLastPoint = true;
+  return dabs.empty() ? 0 : this->Paint(dabs);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::StrokeTo(double x, double y, double z, double pressure)
+{
+  const double p[3] = { x, y, z };
+  return this->StrokeTo(p, pressure);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::EndStroke()
+{
+  if (!this->InStroke)
+  {
+    return;
+  }
+  this->InStroke = false;
+  this->CloseStep();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::CloseStep()
+{
+  Internals& impl = *this->Impl;
+  if (impl.Open.Empty())
+  {
+    return;
+  }
+  impl.Kernel.ClearRecorded(impl.Open.Colors, impl.Open.Normals);
+  auto byId = [](const auto& x, const auto& y) { return x.Id < y.Id; };
+  std::sort(impl.Open.Colors.begin(), impl.Open.Colors.end(), byId);
+  std::sort(impl.Open.Normals.begin(), impl.Open.Normals.end(), byId);
+  impl.Open.Colors.shrink_to_fit();
+  impl.Open.Normals.shrink_to_fit();
+  impl.UndoSteps.push_back(std::move(impl.Open));
+  impl.Open = Step();
+  impl.RedoSteps.clear();
+  this->EnforceUndoLimit();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::EnforceUndoLimit()
+{
+  Internals& impl = *this->Impl;
+  vtkIdType bytes = impl.HistoryBytes();
+  while (bytes > this->UndoLimit && !impl.RedoSteps.empty())
+  {
+    bytes -= impl.RedoSteps.back().Bytes(); // the step furthest from now
+    impl.RedoSteps.pop_back();
+  }
+  while (bytes > this->UndoLimit && !impl.UndoSteps.empty())
+  {
+    bytes -= impl.UndoSteps.front().Bytes(); // the oldest step
+    impl.UndoSteps.pop_front();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::Restore(bool undo)
+{
+  if (this->InStroke)
+  {
+    this->EndStroke();
+  }
+  Internals& impl = *this->Impl;
+  std::deque<Step>& from = undo ? impl.UndoSteps : impl.RedoSteps;
+  std::deque<Step>& to = undo ? impl.RedoSteps : impl.UndoSteps;
+  if (from.empty() || !impl.OFB)
+  {
+    return 0;
+  }
+  // Drops the history if something else changed the OFB meanwhile.
+  if (!this->Prepare(false, false) || from.empty())
+  {
+    return 0;
+  }
+  Step step = std::move(from.back());
+  from.pop_back();
+  // Swap each recorded value with the current one: the step becomes its inverse.
+  if (!step.Colors.empty())
+  {
+    unsigned char* colors = impl.LastColors->GetPointer(0);
+    for (auto& r : step.Colors)
+    {
+      unsigned char* c = colors + 4 * static_cast<vtkIdType>(r.Id);
+      for (int k = 0; k < 4; ++k)
+      {
+        std::swap(c[k], r.Value[k]);
+      }
+      impl.Kernel.MarkChanged(r.Id);
+    }
+  }
+  if (!step.Normals.empty() && impl.LastNormals)
+  {
+    float* normals = impl.LastNormals->GetPointer(0);
+    for (auto& r : step.Normals)
+    {
+      float* n = normals + 3 * static_cast<vtkIdType>(r.Id);
+      for (int k = 0; k < 3; ++k)
+      {
+        std::swap(n[k], r.Value[k]);
+      }
+      impl.Kernel.MarkChanged(r.Id);
+    }
+  }
+  to.push_back(std::move(step));
+  return this->Finish();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::Undo()
+{
+  return this->Restore(true);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::Redo()
+{
+  return this->Restore(false);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPainter::CanUndo() const
+{
+  return !this->Impl->UndoSteps.empty() || !this->Impl->Open.Empty();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPainter::CanRedo() const
+{
+  return !this->Impl->RedoSteps.empty();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::ClearHistory()
+{
+  Internals& impl = *this->Impl;
+  if (impl.Ready)
+  {
+    impl.Kernel.ClearRecorded(impl.Open.Colors, impl.Open.Normals);
+  }
+  impl.Open.Clear();
+  impl.UndoSteps.clear();
+  impl.RedoSteps.clear();
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBPainter::GetNumberOfUndoSteps() const
+{
+  return static_cast<int>(this->Impl->UndoSteps.size()) + (this->Impl->Open.Empty() ? 0 : 1);
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBPainter::GetNumberOfRedoSteps() const
+{
+  return static_cast<int>(this->Impl->RedoSteps.size());
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::GetUndoMemory() const
+{
+  return this->Impl->HistoryBytes();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::ResetInitialValues()
+{
+  this->Impl->Kernel.ResetInitialValues();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPainter::GetScratchMemory() const
+{
+  return this->Impl->Kernel.GetMemory();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "OFB: " << this->Impl->OFB.GetPointer() << "\n";
+  os << indent << "Brush: " << this->Impl->Brush.GetPointer() << "\n";
+  os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "DefaultColor: (" << this->DefaultColor[0] << ", " << this->DefaultColor[1]
+     << ", " << this->DefaultColor[2] << ", " << this->DefaultColor[3] << ")\n";
+  os << indent << "UndoLimit: " << this->UndoLimit << "\n";
+  os << indent << "InStroke: " << (this->InStroke ? "yes" : "no") << "\n";
+  os << indent << "UndoSteps: " << this->GetNumberOfUndoSteps() << "\n";
+  os << indent << "RedoSteps: " << this->GetNumberOfRedoSteps() << "\n";
+  os << indent << "UndoMemory: " << this->GetUndoMemory() << "\n";
+}

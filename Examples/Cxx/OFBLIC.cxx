@@ -1,0 +1,343 @@
+// OFBLIC: surface LIC of a mesh in a window. The LIC is computed once on the OFB's
+// samples (vtkOFBLIC) and drawn by vtkOFBPolyDataMapper, so the streaks stay on the
+// surface when the camera moves. The field is the tangential part of a rotation about a
+// tilted axis through the centre of the mesh.
+//
+// Usage: OFBLIC [mesh.obj|mesh.ply] [--resolution N] [--steps N] [--grain G]
+//               [--image file.png [--keys K1,K2,...]] [--size S]
+// Without a mesh it reads Testing/Data/stanford-bunny.obj of the source tree. With
+// --image it renders once off screen, writes the PNG and exits (no window); --keys
+// K1,K2,... applies keys first, then one animation frame (a test of the keys).
+//
+// Keys: Up/Down steps +-5; Right/Left noise grain x2 / /2; m colour mode (grey LIC, or
+// the speed through a lookup table modulated by the LIC); n noise type; o oriented LIC;
+// l enhanced LIC; space animation (the streaks flow: the LIC is recomputed with a new
+// AnimationPhase on a repeating timer). Mouse: VTK's trackball camera.
+
+#include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkLookupTable.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkOFB.h"
+#include "vtkOFBLIC.h"
+#include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBSampler.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+/// The application: pipeline, window and the settings the keys change.
+struct App
+{
+  vtkNew<vtkOFBSampler> Sampler;
+  vtkNew<vtkOFBLIC> LIC;
+  vtkNew<vtkOFBPolyDataMapper> Mapper;
+  vtkNew<vtkLookupTable> Table;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkTextActor> Text;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  bool ColorBySpeed = true;
+  bool Animating = false;
+  bool Deferred = false; // --keys: apply the settings, compute and draw once at the end
+
+  /// Recompute what changed, update the text and draw.
+  void Refresh()
+  {
+    if (this->Deferred)
+    {
+      return;
+    }
+    this->LIC->Update();
+    this->Mapper->SetColorSource(
+      this->ColorBySpeed ? vtkOFBPolyDataMapper::Scalars : vtkOFBPolyDataMapper::Paint);
+    static const char* noise[3] = { "uniform", "Gaussian", "Perlin" };
+    std::ostringstream text;
+    text << this->LIC->GetOutput()->GetNumberOfSamples() << " samples, LIC "
+         << static_cast<int>(this->LIC->GetLastExecutionTime()) << " ms\n"
+         << "steps " << this->LIC->GetNumberOfSteps() << " (Up/Down), grain "
+         << this->LIC->GetNoiseGrainSize() << " cells (Right/Left)\n"
+         << "m colour: " << (this->ColorBySpeed ? "speed x LIC" : "LIC")
+         << ", n noise: " << noise[this->LIC->GetNoiseType()] << "\n"
+         << "o oriented: " << (this->LIC->GetOrientedLIC() ? "on" : "off")
+         << ", l enhanced: " << (this->LIC->GetEnhancedLIC() ? "on" : "off")
+         << ", space animation: " << (this->Animating ? "on" : "off");
+    this->Text->SetInput(text.str().c_str());
+    this->Window->Render();
+  }
+
+  /// Apply a key; false if it is not one of ours.
+  bool Key(const std::string& key)
+  {
+    vtkOFBLIC* lic = this->LIC;
+    if (key == "Up" || key == "Down")
+    {
+      lic->SetNumberOfSteps(std::max(0, lic->GetNumberOfSteps() + (key == "Up" ? 5 : -5)));
+    }
+    else if (key == "Right" || key == "Left")
+    {
+      lic->SetNoiseGrainSize(lic->GetNoiseGrainSize() * (key == "Right" ? 2.0 : 0.5));
+    }
+    else if (key == "m")
+    {
+      this->ColorBySpeed = !this->ColorBySpeed;
+    }
+    else if (key == "n")
+    {
+      lic->SetNoiseType((lic->GetNoiseType() + 1) % 3);
+    }
+    else if (key == "o")
+    {
+      lic->SetOrientedLIC(!lic->GetOrientedLIC());
+      lic->SetImpulseNoiseProbability(lic->GetOrientedLIC() ? 0.15 : 1.0);
+      lic->SetMinNoiseValue(lic->GetOrientedLIC() ? 0.5 : 0.0);
+      lic->SetMaxNoiseValue(lic->GetOrientedLIC() ? 1.0 : 0.8);
+    }
+    else if (key == "l")
+    {
+      lic->SetEnhancedLIC(!lic->GetEnhancedLIC());
+    }
+    else if (key == "space")
+    {
+      this->Animating = !this->Animating;
+      lic->SetAnimate(this->Animating);
+    }
+    else
+    {
+      return false;
+    }
+    this->Refresh();
+    return true;
+  }
+
+  /// One animation frame: move the streaks a tenth of a period along the flow.
+  void Tick()
+  {
+    if (this->Animating)
+    {
+      this->LIC->SetAnimationPhase(std::fmod(this->LIC->GetAnimationPhase() + 0.1, 1.0));
+      this->Refresh();
+    }
+  }
+};
+
+/// Trackball camera with the application's keys (which VTK's own keys would shadow).
+class KeyStyle : public vtkInteractorStyleTrackballCamera
+{
+public:
+  static KeyStyle* New();
+  vtkTypeMacro(KeyStyle, vtkInteractorStyleTrackballCamera);
+  App* Application = nullptr;
+
+  void OnKeyPress() override
+  {
+    const char* sym = this->Interactor->GetKeySym();
+    if (!sym || !this->Application->Key(sym))
+    {
+      this->Superclass::OnKeyPress();
+    }
+  }
+  void OnChar() override
+  {
+    const std::string keys = "mnol ";
+    if (keys.find(this->Interactor->GetKeyCode()) == std::string::npos)
+    {
+      this->Superclass::OnChar();
+    }
+  }
+};
+vtkStandardNewMacro(KeyStyle);
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
+{
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply")
+  {
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = reader->GetOutput();
+  }
+  else
+  {
+    vtkNew<vtkOBJReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = reader->GetOutput();
+  }
+  return (mesh && mesh->GetNumberOfPolys() > 0) ? mesh : nullptr;
+}
+
+/// The field (rotation about a tilted axis through the centre) and its speed.
+void AddField(vtkPolyData* mesh)
+{
+  double b[6];
+  mesh->GetBounds(b);
+  const double c[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
+  double a[3] = { 0.4, 1.0, 0.3 };
+  vtkMath::Normalize(a);
+  vtkNew<vtkFloatArray> flow;
+  flow->SetName("Flow");
+  flow->SetNumberOfComponents(3);
+  vtkNew<vtkFloatArray> speed;
+  speed->SetName("Speed");
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+  {
+    const double* x = mesh->GetPoint(p);
+    const double r[3] = { x[0] - c[0], x[1] - c[1], x[2] - c[2] };
+    double v[3];
+    vtkMath::Cross(a, r, v);
+    flow->InsertNextTuple(v);
+    speed->InsertNextValue(static_cast<float>(vtkMath::Norm(v)));
+  }
+  mesh->GetPointData()->SetVectors(flow);
+  mesh->GetPointData()->AddArray(speed);
+}
+
+int WriteImage(App& app, const std::string& path)
+{
+  app.Refresh();
+  if (!app.Mapper->GetLastRenderUsedOFB() ||
+    !app.LIC->GetOutput()->GetSampleData()->GetArray("LIC"))
+  {
+    std::cerr << "OFBLIC: the LIC was not drawn.\n";
+    return 1;
+  }
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(app.Window);
+  grab->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  std::cout << "wrote " << path << "\n";
+  return 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  std::string meshPath = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
+  std::string image;
+  std::string keys;
+  int resolution = 512, steps = 20, size = 800;
+  double grain = 1.0;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const bool value = i + 1 < argc;
+    if (arg == "--resolution" && value)
+      resolution = std::atoi(argv[++i]);
+    else if (arg == "--steps" && value)
+      steps = std::atoi(argv[++i]);
+    else if (arg == "--grain" && value)
+      grain = std::atof(argv[++i]);
+    else if (arg == "--image" && value)
+      image = argv[++i];
+    else if (arg == "--keys" && value)
+      keys = argv[++i];
+    else if (arg == "--size" && value)
+      size = std::atoi(argv[++i]);
+    else if (!arg.empty() && arg[0] != '-')
+      meshPath = arg;
+    else
+    {
+      std::cerr << "Usage: " << argv[0]
+                << " [mesh.obj|mesh.ply] [--resolution N] [--steps N] [--grain G]"
+                   " [--image file.png [--keys K1,K2,...]] [--size S]\n";
+      return arg == "--help" ? 0 : 1;
+    }
+  }
+  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(meshPath);
+  if (!mesh)
+  {
+    std::cerr << "OFBLIC: cannot read a surface from " << meshPath << "\n";
+    return 1;
+  }
+  AddField(mesh);
+
+  App app;
+  app.Sampler->SetInputData(mesh);
+  app.Sampler->SetResolution(resolution);
+  app.LIC->SetInputConnection(app.Sampler->GetOutputPort());
+  app.LIC->SetNumberOfSteps(steps);
+  app.LIC->SetNoiseGrainSize(grain);
+  app.LIC->SetEnhanceContrast(vtkOFBLIC::ENHANCE_CONTRAST_LIC);
+  app.Table->SetHueRange(0.667, 0.0);
+  app.Table->Build();
+  app.Mapper->SetInputData(mesh);
+  app.Mapper->SetOFBConnection(app.LIC->GetOutputPort());
+  app.Mapper->SetLookupModeToInverseDistance();
+  app.Mapper->SetIntensityArrayName("LIC");
+  app.Mapper->IntensityModulationOn();
+  app.Mapper->SetIntensityWeight(0.8);
+  app.Mapper->SetLookupTable(app.Table);
+  app.Mapper->SetScalarArrayName("Speed");
+  app.Mapper->SetScalarRange(mesh->GetPointData()->GetArray("Speed")->GetRange());
+  app.Actor->SetMapper(app.Mapper);
+  app.Text->GetTextProperty()->SetFontSize(12);
+  app.Text->SetPosition(10, 10);
+  app.Renderer->AddActor(app.Actor);
+  app.Renderer->AddViewProp(app.Text);
+  app.Renderer->SetBackground(0.1, 0.1, 0.15);
+  app.Window->AddRenderer(app.Renderer);
+  app.Window->SetSize(size, size);
+  app.Window->SetWindowName("OFBLIC: surface LIC on the OFB");
+  app.Renderer->ResetCamera();
+  app.Renderer->GetActiveCamera()->Dolly(1.3);
+  app.Renderer->ResetCameraClippingRange();
+
+  if (!image.empty())
+  {
+    app.Window->SetOffScreenRendering(1);
+    app.Deferred = true;
+    std::istringstream list(keys);
+    for (std::string key; std::getline(list, key, ',');)
+    {
+      if (!app.Key(key))
+      {
+        std::cerr << "OFBLIC: unknown key '" << key << "'\n";
+        return 1;
+      }
+    }
+    app.Tick();
+    app.Deferred = false;
+    return WriteImage(app, image);
+  }
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  vtkNew<KeyStyle> style;
+  style->Application = &app;
+  interactor->SetInteractorStyle(style);
+  interactor->SetRenderWindow(app.Window);
+  interactor->Initialize();
+  vtkNew<vtkCallbackCommand> timer;
+  timer->SetClientData(&app);
+  timer->SetCallback(
+    [](vtkObject*, unsigned long, void* client, void*) { static_cast<App*>(client)->Tick(); });
+  interactor->AddObserver(vtkCommand::TimerEvent, timer);
+  interactor->CreateRepeatingTimer(40);
+  app.Refresh();
+  interactor->Start();
+  return 0;
+}

@@ -1,0 +1,457 @@
+// GoogleTest units of vtkOFBLIC: streaks along the field on a plane and across the
+// grids of a sphere, determinism, noise, masking, animation, progress and bad input.
+#include "vtkOFBLICTestHelpers.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOFB.h"
+#include "vtkOFBLIC.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <set>
+#include <string>
+
+using namespace vtkofbtest;
+
+namespace
+{
+/// Run a LIC filter on `ofb` and return its output (a new object).
+vtkSmartPointer<vtkOFB> RunLIC(vtkOFBLIC* lic, vtkOFB* ofb)
+{
+  lic->SetInputData(ofb);
+  lic->Update();
+  vtkSmartPointer<vtkOFB> out = vtkSmartPointer<vtkOFB>::New();
+  out->ShallowCopy(lic->GetOutput());
+  return out;
+}
+
+float* LICValues(vtkOFB* ofb)
+{
+  vtkFloatArray* a = vtkFloatArray::SafeDownCast(ofb->GetSampleData()->GetArray("LIC"));
+  return a ? a->GetPointer(0) : nullptr;
+}
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, FlatSquareUniformFieldGivesStreaksAlongTheField)
+{
+  const double angle = vtkMath::RadiansFromDegrees(30.0);
+  const double dir[3] = { std::cos(angle), std::sin(angle), 0.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSquare(), 256, UniformField(dir));
+  ASSERT_GT(ofb->GetNumberOfSamples(), 50000);
+  for (bool enhanced : { false, true })
+  {
+    vtkNew<vtkOFBLIC> lic;
+    lic->SetEnhancedLIC(enhanced);
+    vtkSmartPointer<vtkOFB> out = RunLIC(lic, ofb);
+    ASSERT_EQ(out->GetNumberOfSamples(), ofb->GetNumberOfSamples());
+    const float* values = LICValues(out);
+    ASSERT_NE(values, nullptr);
+    const double across[3] = { -dir[1], dir[0], 0.0 };
+    const double s = ofb->GetCellSize();
+    const Correlation along4 = Autocorrelation(out, values, dir, 4.0 * s, 30.0 * s);
+    const Correlation across4 = Autocorrelation(out, values, across, 4.0 * s, 30.0 * s);
+    std::cout << "enhanced " << enhanced << ": along " << along4.Value << ", across "
+              << across4.Value << " (" << along4.Pairs << " pairs)\n";
+    EXPECT_GT(along4.Pairs, 20000);
+    EXPECT_GT(along4.Value, 0.5);
+    EXPECT_GE(along4.Value, 5.0 * std::fabs(across4.Value));
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, SphereRotationStreaksHaveNoDropWhereTheGridChanges)
+{
+  const double axis[3] = { 0.0, 0.0, 1.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSphere(1.0, 128), 256, RotationField(axis));
+  vtkNew<vtkOFBLIC> lic;
+  vtkSmartPointer<vtkOFB> out = RunLIC(lic, ofb);
+  ASSERT_EQ(out->GetNumberOfSamples(), ofb->GetNumberOfSamples());
+  const float* values = LICValues(out);
+  ASSERT_NE(values, nullptr);
+  // Samples within 60 degrees of the equator, split by how close they are to a
+  // change of grid (the two largest normal components within 0.15 of each other).
+  const StreakMeasure switching = SphereStreaks(out, values, axis, true);
+  const StreakMeasure elsewhere = SphereStreaks(out, values, axis, false);
+  std::cout << "near grid changes: along " << switching.Along << ", across " << switching.Across
+            << " (" << switching.Pairs << ")\n"
+            << "elsewhere: along " << elsewhere.Along << ", across " << elsewhere.Across << " ("
+            << elsewhere.Pairs << ")\n";
+  ASSERT_GT(switching.Pairs, 5000);
+  ASSERT_GT(elsewhere.Pairs, 5000);
+  EXPECT_GE(elsewhere.Along, 5.0 * std::fabs(elsewhere.Across));
+  EXPECT_GE(switching.Along, 5.0 * std::fabs(switching.Across));
+  EXPECT_GE(switching.Along, 0.9 * elsewhere.Along);
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, InverseDistanceFieldGivesStreaksWithoutSeamsToo)
+{
+  const double axis[3] = { 0.0, 0.0, 1.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSphere(1.0, 64), 128, RotationField(axis));
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetFieldInterpolationToInverseDistance();
+  vtkSmartPointer<vtkOFB> out = RunLIC(lic, ofb);
+  const float* values = LICValues(out);
+  ASSERT_NE(values, nullptr);
+  const StreakMeasure switching = SphereStreaks(out, values, axis, true);
+  const StreakMeasure elsewhere = SphereStreaks(out, values, axis, false);
+  std::cout << "inverse distance: near grid changes along " << switching.Along << ", across "
+            << switching.Across << "; elsewhere along " << elsewhere.Along << ", across "
+            << elsewhere.Across << "\n";
+  EXPECT_GE(elsewhere.Along, 5.0 * std::fabs(elsewhere.Across));
+  EXPECT_GE(switching.Along, 5.0 * std::fabs(switching.Across));
+  EXPECT_GE(switching.Along, 0.9 * elsewhere.Along);
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, IdenticalWithOneAndTwoThreads)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  const double axis[3] = { 0.3, 1.0, 0.2 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(bunny, 192, RotationField(axis));
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetNumberOfSteps(10);
+  lic->SetNoiseGeneratorSeed(7);
+  vtkSMPTools::Initialize(1);
+  vtkSmartPointer<vtkOFB> one = RunLIC(lic, ofb);
+  vtkSMPTools::Initialize(2);
+  lic->Modified();
+  vtkSmartPointer<vtkOFB> two = RunLIC(lic, ofb);
+  vtkSMPTools::Initialize(0);
+  const vtkIdType n = one->GetNumberOfSamples();
+  ASSERT_GT(n, 0);
+  ASSERT_EQ(n, two->GetNumberOfSamples());
+  EXPECT_EQ(std::memcmp(LICValues(one), LICValues(two), n * sizeof(float)), 0);
+  // Another seed gives another result.
+  lic->SetNoiseGeneratorSeed(8);
+  vtkSmartPointer<vtkOFB> other = RunLIC(lic, ofb);
+  EXPECT_NE(std::memcmp(LICValues(one), LICValues(other), n * sizeof(float)), 0);
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, ZeroStepsGiveTheNoiseBack)
+{
+  const double dir[3] = { 1.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSquare(), 128, UniformField(dir));
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  vtkNew<vtkFloatArray> noise;
+  noise->SetName("MyNoise");
+  noise->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    noise->SetValue(i, static_cast<float>((i * 7919) % 1000) / 999.0f);
+  }
+  ofb->GetSampleData()->AddArray(noise);
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetNumberOfSteps(0);
+  lic->SetNoiseArrayName("MyNoise");
+  vtkSmartPointer<vtkOFB> out = RunLIC(lic, ofb);
+  ASSERT_EQ(out->GetNumberOfSamples(), n);
+  EXPECT_EQ(std::memcmp(LICValues(out), noise->GetPointer(0), n * sizeof(float)), 0);
+  // With 20 steps it is no longer the noise.
+  lic->SetNumberOfSteps(20);
+  out = RunLIC(lic, ofb);
+  EXPECT_NE(std::memcmp(LICValues(out), noise->GetPointer(0), n * sizeof(float)), 0);
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, GeneratedNoiseHasItsRangeLevelsAndNoSeamBetweenGrids)
+{
+  const double axis[3] = { 0.0, 0.0, 1.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSphere(1.0, 64), 128, RotationField(axis));
+  for (int type :
+    { vtkOFBLIC::NOISE_TYPE_UNIFORM, vtkOFBLIC::NOISE_TYPE_GAUSSIAN, vtkOFBLIC::NOISE_TYPE_PERLIN })
+  {
+    vtkNew<vtkOFBLIC> lic;
+    lic->SetNumberOfSteps(0);
+    lic->SetNoiseType(type);
+    lic->SetNoiseGrainSize(4);
+    lic->SetMinNoiseValue(0.2);
+    lic->SetMaxNoiseValue(0.6);
+    lic->SetNumberOfNoiseLevels(8);
+    vtkSmartPointer<vtkOFB> out = RunLIC(lic, ofb);
+    const float* values = LICValues(out);
+    std::set<float> levels;
+    for (vtkIdType i = 0; i < out->GetNumberOfSamples(); ++i)
+    {
+      levels.insert(values[i]);
+      ASSERT_GE(values[i], 0.2f - 1e-6f);
+      ASSERT_LE(values[i], 0.6f + 1e-6f);
+    }
+    EXPECT_LE(levels.size(), 8u) << "noise type " << type;
+    EXPECT_GE(levels.size(), 4u) << "noise type " << type;
+    // Samples of different grids at (nearly) the same point read the same noise.
+    const double seam = FractionEqualAcrossGrids(out, values, 0.3);
+    std::cout << "noise type " << type << ": equal across grids " << seam << "\n";
+    EXPECT_GT(seam, 0.7) << "noise type " << type;
+  }
+  // Impulse noise: about the probability of the lattice cells is drawn.
+  vtkNew<vtkOFBLIC> impulse;
+  impulse->SetNumberOfSteps(0);
+  impulse->SetNoiseType(vtkOFBLIC::NOISE_TYPE_UNIFORM);
+  impulse->SetMinNoiseValue(0.5);
+  impulse->SetMaxNoiseValue(1.0);
+  impulse->SetImpulseNoiseProbability(0.1);
+  impulse->SetImpulseNoiseBackgroundValue(0.0);
+  vtkSmartPointer<vtkOFB> out = RunLIC(impulse, ofb);
+  const float* values = LICValues(out);
+  vtkIdType drawn = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfSamples(); ++i)
+  {
+    drawn += values[i] > 0.0f;
+  }
+  const double fraction = static_cast<double>(drawn) / out->GetNumberOfSamples();
+  EXPECT_NEAR(fraction, 0.1, 0.03);
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, MaskingWhereTheFieldIsWeak)
+{
+  vtkSmartPointer<vtkPolyData> square = MakeSquare();
+  // A vortex whose speed grows with the distance from the centre (0 there).
+  vtkNew<vtkFloatArray> v;
+  v->SetName("Flow");
+  v->SetNumberOfComponents(3);
+  for (vtkIdType p = 0; p < square->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    square->GetPoint(p, x);
+    v->InsertNextTuple3(-x[1], x[0], 0.0);
+  }
+  square->GetPointData()->SetVectors(v);
+  vtkSmartPointer<vtkOFB> ofb = Build(square, 128);
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetMaskThreshold(0.2);
+  lic->SetMaskIntensity(1.0);
+  lic->SetMaskColor(0.25, 0.25, 0.25);
+  vtkSmartPointer<vtkOFB> out = RunLIC(lic, ofb);
+  vtkUnsignedCharArray* mask =
+    vtkUnsignedCharArray::SafeDownCast(out->GetSampleData()->GetArray("LICMask"));
+  ASSERT_NE(mask, nullptr);
+  const float* values = LICValues(out);
+  vtkIdType masked = 0;
+  vtkIdType wrong = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    out->GetSamplePosition(i, x);
+    const double speed = std::sqrt(x[0] * x[0] + x[1] * x[1]);
+    const bool expected = speed < 0.2;
+    if (std::fabs(speed - 0.2) > 2.0 * out->GetCellSize())
+    {
+      wrong += (mask->GetValue(i) != 0) != expected;
+    }
+    if (mask->GetValue(i))
+    {
+      ++masked;
+      EXPECT_NEAR(values[i], 0.25f, 1e-5f);
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(masked, 100);
+  EXPECT_EQ(masked, lic->GetNumberOfMaskedSamples());
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, AnimationPhaseMovesTheStreaksAndRepeats)
+{
+  const double dir[3] = { 1.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSquare(), 128, UniformField(dir));
+  vtkNew<vtkOFBLIC> lic;
+  lic->AnimateOn();
+  lic->SetEnhancedLIC(false);
+  vtkSmartPointer<vtkOFB> a = RunLIC(lic, ofb);
+  lic->SetAnimationPhase(0.25);
+  vtkSmartPointer<vtkOFB> b = RunLIC(lic, ofb);
+  lic->SetAnimationPhase(1.0);
+  vtkSmartPointer<vtkOFB> c = RunLIC(lic, ofb);
+  const vtkIdType n = a->GetNumberOfSamples();
+  double changed = 0.0;
+  double repeated = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    changed = std::max(changed, std::fabs(double(LICValues(a)[i]) - LICValues(b)[i]));
+    repeated = std::max(repeated, std::fabs(double(LICValues(a)[i]) - LICValues(c)[i]));
+  }
+  EXPECT_GT(changed, 0.05);
+  EXPECT_LT(repeated, 1e-4);
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, KernelsAndOrientedLICDiffer)
+{
+  const double dir[3] = { 1.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSquare(), 128, UniformField(dir));
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetEnhancedLIC(false);
+  vtkSmartPointer<vtkOFB> box = RunLIC(lic, ofb);
+  const vtkIdType n = box->GetNumberOfSamples();
+  for (int variant = 0; variant < 3; ++variant)
+  {
+    lic->SetKernelType(variant == 0 ? vtkOFBLIC::KERNEL_GAUSSIAN : vtkOFBLIC::KERNEL_HANN);
+    lic->SetOrientedLIC(variant == 2);
+    vtkSmartPointer<vtkOFB> other = RunLIC(lic, ofb);
+    EXPECT_NE(std::memcmp(LICValues(box), LICValues(other), n * sizeof(float)), 0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      ASSERT_GE(LICValues(other)[i], 0.0f);
+      ASSERT_LE(LICValues(other)[i], 1.0f);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, InputUntouchedAndArraysShared)
+{
+  const double dir[3] = { 1.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSquare(), 128, UniformField(dir));
+  const int arrays = ofb->GetSampleData()->GetNumberOfArrays();
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetInputData(ofb);
+  lic->Update();
+  vtkOFB* out = lic->GetOutput();
+  EXPECT_EQ(ofb->GetSampleData()->GetNumberOfArrays(), arrays);
+  EXPECT_EQ(ofb->GetSampleData()->GetArray("LIC"), nullptr);
+  EXPECT_EQ(out->GetSampleData()->GetNumberOfArrays(), arrays + 2);
+  EXPECT_EQ(out->GetSampleData()->GetNormals(), ofb->GetSampleData()->GetNormals());
+  EXPECT_EQ(out->GetDepths(), ofb->GetDepths());
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, ProgressAndAbort)
+{
+  const double dir[3] = { 1.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSquare(), 256, UniformField(dir));
+  vtkNew<vtkOFBLIC> lic;
+  int events = 0;
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(&events);
+  progress->SetCallback(
+    [](vtkObject* caller, unsigned long, void* client, void*)
+    {
+      int* count = static_cast<int*>(client);
+      if (++*count == 3)
+      {
+        static_cast<vtkOFBLIC*>(caller)->AbortExecuteOn();
+      }
+    });
+  lic->AddObserver(vtkCommand::ProgressEvent, progress);
+  lic->SetInputData(ofb);
+  lic->Update();
+  EXPECT_GE(events, 3);
+  EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0); // aborted: empty output
+  lic->AbortExecuteOff();
+  lic->RemoveAllObservers();
+  lic->Modified();
+  lic->Update();
+  EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), ofb->GetNumberOfSamples());
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, BadInput)
+{
+  vtkNew<MessageObserver> messages;
+  vtkNew<vtkOFBLIC> lic;
+  messages->Watch(lic);
+  // No vectors.
+  vtkSmartPointer<vtkOFB> plain = Build(MakeSquare(), 64);
+  ASSERT_GT(plain->GetNumberOfSamples(), 0);
+  lic->SetInputData(plain);
+  lic->Update();
+  EXPECT_NE(messages->Errors.find("No vector field"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0);
+
+  // A field without 3 components.
+  messages->Clear();
+  vtkNew<vtkFloatArray> scalar;
+  scalar->SetName("Speed");
+  scalar->SetNumberOfTuples(plain->GetNumberOfSamples());
+  scalar->FillValue(1.0f);
+  plain->GetSampleData()->AddArray(scalar);
+  lic->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Speed");
+  lic->Update();
+  EXPECT_NE(messages->Errors.find("components"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0);
+  lic->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+
+  // NaN vectors: masked, the rest convolved.
+  messages->Clear();
+  const double dir[3] = { 1.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSquare(), 64, UniformField(dir));
+  vtkDataArray* vectors = ofb->GetSampleData()->GetVectors();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); i += 3)
+  {
+    vectors->SetTuple3(i, nan, 0.0, 0.0);
+  }
+  lic->SetInputData(ofb);
+  lic->Update();
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_EQ(lic->GetNumberOfMaskedSamples(), (ofb->GetNumberOfSamples() + 2) / 3);
+  const float* values = LICValues(lic->GetOutput());
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    ASSERT_TRUE(values[i] >= 0.0f && values[i] <= 1.0f);
+  }
+
+  // All-zero field: all masked, a warning.
+  messages->Clear();
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    vectors->SetTuple3(i, 0.0, 0.0, 0.0);
+  }
+  vectors->Modified();
+  ofb->Modified();
+  lic->Update();
+  EXPECT_NE(messages->Warnings.find("masked at every sample"), std::string::npos);
+  EXPECT_EQ(lic->GetNumberOfMaskedSamples(), ofb->GetNumberOfSamples());
+  EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), ofb->GetNumberOfSamples());
+
+  // Zero and negative step sizes.
+  for (double step : { 0.0, -1.0, std::numeric_limits<double>::infinity() })
+  {
+    messages->Clear();
+    lic->SetStepSize(step);
+    lic->Update();
+    EXPECT_NE(messages->Errors.find("StepSize"), std::string::npos) << step;
+    EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0);
+  }
+  lic->SetStepSize(1.0);
+
+  // Empty OFB: an empty output with empty arrays, no error.
+  messages->Clear();
+  vtkNew<vtkOFB> empty;
+  lic->SetInputData(empty);
+  lic->Update();
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0);
+  ASSERT_NE(lic->GetOutput()->GetSampleData()->GetArray("LIC"), nullptr);
+
+  // A noise array that does not exist.
+  messages->Clear();
+  lic->SetInputData(plain);
+  lic->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Speed");
+  lic->SetNoiseArrayName("Nothing");
+  vtkSmartPointer<vtkOFB> field = BuildWithField(MakeSquare(), 64, UniformField(dir));
+  lic->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+  lic->SetInputData(field);
+  lic->Update();
+  EXPECT_NE(messages->Errors.find("noise array"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0);
+}

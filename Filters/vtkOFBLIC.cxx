@@ -1,0 +1,636 @@
+#include "vtkOFBLIC.h"
+
+#include "vtkDataSetAttributes.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkOFB.h"
+#include "vtkOFBLICNoise.h"
+#include "vtkOFBLICTracer.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkTimerLog.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkOFBLIC);
+
+namespace
+{
+// Samples per block between progress events and abort checks.
+constexpr vtkIdType BlockSize = 1 << 16;
+
+/// The normals as unit float vectors (the sampler's are already; other types convert).
+vtkSmartPointer<vtkFloatArray> UnitNormals(vtkDataArray* normals)
+{
+  vtkSmartPointer<vtkFloatArray> out = vtkSmartPointer<vtkFloatArray>::New();
+  out->SetNumberOfComponents(3);
+  out->SetNumberOfTuples(normals->GetNumberOfTuples());
+  float* o = out->GetPointer(0);
+  vtkSMPTools::For(0,
+    normals->GetNumberOfTuples(),
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double n[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        normals->GetTuple(i, n);
+        glm::dvec3 v(n[0], n[1], n[2]);
+        const double len = glm::length(v);
+        v = (len > 0.0 && std::isfinite(len)) ? v / len : glm::dvec3(0.0);
+        o[3 * i] = static_cast<float>(v.x);
+        o[3 * i + 1] = static_cast<float>(v.y);
+        o[3 * i + 2] = static_cast<float>(v.z);
+      }
+    });
+  return out;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkOFBLIC::vtkOFBLIC()
+  : NumberOfSteps(20)
+  , StepSize(1.0)
+  , NormalizeVectors(true)
+  , FieldInterpolation(FIELD_NEAREST)
+  , KernelType(KERNEL_BOX)
+  , OrientedLIC(false)
+  , Animate(false)
+  , AnimationPhase(0.0)
+  , NoiseType(NOISE_TYPE_GAUSSIAN)
+  , NoiseGrainSize(1.0)
+  , MinNoiseValue(0.0)
+  , MaxNoiseValue(0.8)
+  , NumberOfNoiseLevels(256)
+  , ImpulseNoiseProbability(1.0)
+  , ImpulseNoiseBackgroundValue(0.0)
+  , NoiseGeneratorSeed(1)
+  , NoiseArrayName(nullptr)
+  , EnhancedLIC(true)
+  , EnhanceContrast(ENHANCE_CONTRAST_OFF)
+  , LowLICContrastEnhancementFactor(0.0)
+  , HighLICContrastEnhancementFactor(0.0)
+  , LowColorContrastEnhancementFactor(0.0)
+  , HighColorContrastEnhancementFactor(0.0)
+  , ColorMode(COLOR_MODE_BLEND)
+  , LICIntensity(0.8)
+  , MapModeBias(0.0)
+  , MaskThreshold(0.0)
+  , MaskOnSurface(false)
+  , MaskColor{ 0.5, 0.5, 0.5 }
+  , MaskIntensity(0.0)
+  , NumberOfMaskedSamples(0)
+  , LastExecutionTime(0.0)
+{
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+}
+
+//------------------------------------------------------------------------------
+vtkOFBLIC::~vtkOFBLIC()
+{
+  this->SetNoiseArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBLIC::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkOFB");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkOFBLIC::FindField(vtkOFB* input)
+{
+  vtkPointData* sd = input->GetSampleData();
+  vtkInformation* info = this->GetInputArrayInformation(0);
+  vtkDataArray* vectors = nullptr;
+  std::string what = "the active vectors";
+  if (info && info->Has(vtkDataObject::FIELD_NAME()))
+  {
+    what = std::string("the sample array '") + info->Get(vtkDataObject::FIELD_NAME()) + "'";
+    vectors = sd->GetArray(info->Get(vtkDataObject::FIELD_NAME()));
+  }
+  else if (info && info->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
+  {
+    vectors = sd->GetAttribute(info->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()));
+  }
+  if (!vectors)
+  {
+    vtkErrorMacro("No vector field: the input OFB has no " << what
+                                                           << " (set the field with "
+                                                              "SetInputArrayToProcess).");
+    return nullptr;
+  }
+  if (vectors->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro("The vector field '" << (vectors->GetName() ? vectors->GetName() : "") << "' has "
+                                       << vectors->GetNumberOfComponents()
+                                       << " components; LIC needs 3.");
+    return nullptr;
+  }
+  return vectors;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBLIC::PrepareField(vtkOFB* input,
+  vtkDataArray* vectors,
+  const float* normals,
+  std::vector<float>& field,
+  std::vector<unsigned char>& mask)
+{
+  const vtkIdType n = input->GetNumberOfSamples();
+  field.assign(3 * n, 0.0f);
+  mask.assign(n, 0);
+  const double threshold = this->MaskThreshold;
+  const bool onSurface = this->MaskOnSurface;
+  vtkSMPThreadLocal<double> localMax(0.0);
+  vtkSMPThreadLocal<vtkIdType> localMasked(0);
+  // Tangential part, mask, and the largest magnitude left (for NormalizeVectors off).
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double& maxMag = localMax.Local();
+      vtkIdType& masked = localMasked.Local();
+      double t[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        vectors->GetTuple(i, t);
+        const glm::dvec3 v(t[0], t[1], t[2]);
+        const glm::dvec3 nrm = vtkOFBLICTracer::Vec(normals, i);
+        const glm::dvec3 tangent = v - glm::dot(v, nrm) * nrm;
+        const double mag = glm::length(tangent);
+        const double test = onSurface ? mag : glm::length(v);
+        if (!(mag > 0.0) || !std::isfinite(mag) || !std::isfinite(test) || test < threshold)
+        {
+          mask[i] = 1;
+          ++masked;
+          continue;
+        }
+        maxMag = std::max(maxMag, mag);
+        for (int c = 0; c < 3; ++c)
+        {
+          field[3 * i + c] = static_cast<float>(tangent[c]);
+        }
+      }
+    });
+  double maxMag = 0.0;
+  for (double m : localMax)
+  {
+    maxMag = std::max(maxMag, m);
+  }
+  vtkIdType masked = 0;
+  for (vtkIdType m : localMasked)
+  {
+    masked += m;
+  }
+  // Scale: unit vectors, or relative to the strongest flow.
+  const bool normalize = this->NormalizeVectors;
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (mask[i])
+        {
+          continue;
+        }
+        glm::dvec3 v = vtkOFBLICTracer::Vec(field.data(), i);
+        v /= normalize ? glm::length(v) : maxMag;
+        for (int c = 0; c < 3; ++c)
+        {
+          field[3 * i + c] = static_cast<float>(v[c]);
+        }
+      }
+    });
+  return masked;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBLIC::PrepareNoise(vtkOFB* input, const float* positions, std::vector<float>& noise)
+{
+  const vtkIdType n = input->GetNumberOfSamples();
+  noise.resize(n);
+  if (this->NoiseArrayName && *this->NoiseArrayName)
+  {
+    vtkDataArray* array = input->GetSampleData()->GetArray(this->NoiseArrayName);
+    if (!array || array->GetNumberOfTuples() != n)
+    {
+      vtkErrorMacro(
+        "The noise array '" << this->NoiseArrayName << "' is not a sample array of the input OFB.");
+      return false;
+    }
+    vtkSMPTools::For(0,
+      n,
+      4096,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          noise[i] = static_cast<float>(array->GetComponent(i, 0));
+        }
+      });
+    return true;
+  }
+  vtkOFBLICNoiseSettings s;
+  s.Type = this->NoiseType;
+  s.Grain = this->NoiseGrainSize * input->GetCellSize();
+  input->GetOrigin(s.Origin);
+  s.MinValue = std::min(this->MinNoiseValue, this->MaxNoiseValue);
+  s.MaxValue = std::max(this->MinNoiseValue, this->MaxNoiseValue);
+  s.Levels = this->NumberOfNoiseLevels;
+  s.ImpulseProbability = this->ImpulseNoiseProbability;
+  s.ImpulseBackground = this->ImpulseNoiseBackgroundValue;
+  s.Seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->NoiseGeneratorSeed));
+  const vtkOFBLICNoise generator(s);
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        noise[i] = generator.Evaluate(vtkOFBLICTracer::Vec(positions, i));
+      }
+    });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkOFBLIC::ComputeKernel() const
+{
+  const int n = this->NumberOfSteps;
+  std::vector<double> w(2 * n + 1, 1.0);
+  const double pi = 3.141592653589793;
+  for (int s = -n; s <= n; ++s)
+  {
+    const double t = n > 0 ? static_cast<double>(s) / n : 0.0; // in [-1, 1]
+    double k = 1.0;
+    if (this->KernelType == KERNEL_GAUSSIAN)
+    {
+      k = std::exp(-2.0 * t * t); // standard deviation 1/2 of the half-length
+    }
+    else if (this->KernelType == KERNEL_HANN)
+    {
+      k = 0.5 * (1.0 + std::cos(pi * s / (n + 1.0)));
+    }
+    if (this->OrientedLIC)
+    {
+      k *= (s + n + 1.0) / (2.0 * n + 2.0);
+    }
+    if (this->Animate && n > 0)
+    {
+      k *= 0.5 * (1.0 + std::cos(2.0 * pi * (static_cast<double>(s) / n + this->AnimationPhase)));
+    }
+    w[s + n] = k;
+  }
+  return w;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
+  const float* input,
+  float* output,
+  vtkIdType n,
+  double progress0,
+  double progress1)
+{
+  for (vtkIdType first = 0; first < n; first += BlockSize)
+  {
+    const vtkIdType last = std::min(n, first + BlockSize);
+    vtkSMPTools::For(first,
+      last,
+      512,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          output[i] = tracer.Mask[i] ? input[i] : tracer.Convolve(i, input);
+        }
+      });
+    this->UpdateProgress(progress0 + (progress1 - progress0) * last / n);
+    if (this->GetAbortExecute())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::Stretch(std::vector<float>& values,
+  const unsigned char* mask,
+  double low,
+  double high)
+{
+  const vtkIdType n = static_cast<vtkIdType>(values.size());
+  vtkSMPThreadLocal<float> localMin(std::numeric_limits<float>::max());
+  vtkSMPThreadLocal<float> localMax(std::numeric_limits<float>::lowest());
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      float& lo = localMin.Local();
+      float& hi = localMax.Local();
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (!mask[i])
+        {
+          lo = std::min(lo, values[i]);
+          hi = std::max(hi, values[i]);
+        }
+      }
+    });
+  float lo = std::numeric_limits<float>::max();
+  float hi = std::numeric_limits<float>::lowest();
+  for (float v : localMin)
+  {
+    lo = std::min(lo, v);
+  }
+  for (float v : localMax)
+  {
+    hi = std::max(hi, v);
+  }
+  if (!(hi > lo))
+  {
+    return;
+  }
+  const double range = hi - lo;
+  const double m = lo + low * range;
+  const double scale = 1.0 / std::max(1e-12, (hi - high * range) - m);
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        values[i] = static_cast<float>(std::min(1.0, std::max(0.0, (values[i] - m) * scale)));
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::HighPass(vtkOFB* input,
+  const float* positions,
+  const unsigned char* mask,
+  std::vector<float>& values)
+{
+  Stretch(values, mask, 0.0, 0.0);
+  const vtkIdType n = static_cast<vtkIdType>(values.size());
+  std::vector<float> out(n);
+  const double radius = 1.5 * input->GetCellSize();
+  vtkSMPTools::For(0,
+    n,
+    1024,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (mask[i])
+        {
+          out[i] = values[i];
+          continue;
+        }
+        const glm::dvec3 c = vtkOFBLICTracer::Vec(positions, i);
+        double sum = 0.0;
+        int count = 0;
+        input->ForEachSampleInSphere(&c.x,
+          radius,
+          [&](vtkIdType j, double)
+          {
+            if (j != i && !mask[j])
+            {
+              sum += values[j];
+              ++count;
+            }
+          });
+        const double mean = count ? sum / count : values[i];
+        out[i] = static_cast<float>(values[i] + 4.0 * (values[i] - mean));
+      }
+    });
+  values.swap(out);
+  Stretch(values, mask, 0.0, 0.0);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::WriteOutput(vtkOFB* input,
+  vtkOFB* output,
+  const std::vector<float>& values,
+  const std::vector<unsigned char>& mask)
+{
+  const vtkIdType n = static_cast<vtkIdType>(values.size());
+  vtkNew<vtkFloatArray> lic;
+  lic->SetName("LIC");
+  vtkNew<vtkUnsignedCharArray> maskArray;
+  maskArray->SetName("LICMask");
+  // The input's arrays shared, LIC (clamped to [0, 1]) and the mask added.
+  const double luminance =
+    0.2126 * this->MaskColor[0] + 0.7152 * this->MaskColor[1] + 0.0722 * this->MaskColor[2];
+  const float maskValue =
+    static_cast<float>(1.0 + this->MaskIntensity * (std::min(1.0, std::max(0.0, luminance)) - 1.0));
+  lic->SetNumberOfTuples(n);
+  maskArray->SetNumberOfTuples(n);
+  float* licOut = lic->GetPointer(0);
+  unsigned char* maskOut = maskArray->GetPointer(0);
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        maskOut[i] = mask[i];
+        licOut[i] = mask[i] ? maskValue : std::min(1.0f, std::max(0.0f, values[i]));
+      }
+    });
+  output->ShallowCopy(input);
+  output->GetSampleData()->AddArray(lic);
+  output->GetSampleData()->AddArray(maskArray);
+  output->MarkAllSamplesModified();
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBLIC::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkOFB* input = vtkOFB::GetData(inputVector[0]);
+  vtkOFB* output = vtkOFB::GetData(outputVector);
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  this->NumberOfMaskedSamples = 0;
+  if (!input || !output)
+  {
+    vtkErrorMacro("No input OFB.");
+    return 0;
+  }
+  output->Initialize();
+  if (!(this->StepSize > 0.0) || !std::isfinite(this->StepSize))
+  {
+    vtkErrorMacro("StepSize must be positive and finite (it is " << this->StepSize << ").");
+    return 1;
+  }
+  const vtkIdType n = input->GetNumberOfSamples();
+  if (n == 0)
+  {
+    this->WriteOutput(input, output, std::vector<float>(), std::vector<unsigned char>());
+    return 1;
+  }
+  vtkDataArray* vectors = this->FindField(input);
+  vtkDataArray* normalsIn = input->GetSampleData()->GetNormals();
+  if (!normalsIn)
+  {
+    normalsIn = input->GetSampleData()->GetArray("Normals");
+  }
+  if (!vectors)
+  {
+    return 1;
+  }
+  if (!normalsIn || normalsIn->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro("The input OFB has no 3-component \"Normals\" sample array.");
+    return 1;
+  }
+
+  // Prepare: unit normals, sample positions, the tangential field, the mask, the noise.
+  vtkSmartPointer<vtkFloatArray> normals = vtkFloatArray::SafeDownCast(normalsIn);
+  if (!normals)
+  {
+    normals = UnitNormals(normalsIn);
+  }
+  std::vector<float> positions(3 * n);
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double x[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        input->GetSamplePosition(i, x);
+        for (int c = 0; c < 3; ++c)
+        {
+          positions[3 * i + c] = static_cast<float>(x[c]);
+        }
+      }
+    });
+  std::vector<float> field;
+  std::vector<unsigned char> mask;
+  this->NumberOfMaskedSamples =
+    this->PrepareField(input, vectors, normals->GetPointer(0), field, mask);
+  if (this->NumberOfMaskedSamples == n)
+  {
+    vtkWarningMacro("The vector field is masked at every sample (zero, non-finite or below "
+                    "MaskThreshold): the LIC is the mask value everywhere.");
+  }
+  std::vector<float> noise;
+  if (!this->PrepareNoise(input, positions.data(), noise))
+  {
+    return 1;
+  }
+  this->UpdateProgress(0.05);
+
+  // Convolve (Eq. 4), then the enhanced pass and the contrast stretch.
+  vtkOFBLICTracer tracer;
+  tracer.SetOFB(input);
+  tracer.Positions = positions.data();
+  tracer.Normals = normals->GetPointer(0);
+  tracer.Field = field.data();
+  tracer.Mask = mask.data();
+  tracer.NumberOfSteps = this->NumberOfSteps;
+  tracer.Step = this->StepSize * input->GetCellSize();
+  tracer.SearchRadius = std::sqrt(3.0) * input->GetCellSize();
+  tracer.FieldRadius =
+    this->FieldInterpolation == FIELD_INVERSE_DISTANCE ? 1.5 * input->GetCellSize() : 0.0;
+  tracer.Weights = this->ComputeKernel();
+  std::vector<float> values(n);
+  const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
+  if (!this->Convolve(tracer, noise.data(), values.data(), n, 0.05, enhanced ? 0.5 : 0.95))
+  {
+    output->Initialize();
+    return 1;
+  }
+  if (enhanced)
+  {
+    this->HighPass(input, positions.data(), mask.data(), values);
+    noise.swap(values);
+    if (!this->Convolve(tracer, noise.data(), values.data(), n, 0.5, 0.95))
+    {
+      output->Initialize();
+      return 1;
+    }
+  }
+  if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
+    this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)
+  {
+    Stretch(values,
+      mask.data(),
+      this->LowLICContrastEnhancementFactor,
+      this->HighLICContrastEnhancementFactor);
+  }
+
+  this->WriteOutput(input, output, values, mask);
+  this->UpdateProgress(1.0);
+  timer->StopTimer();
+  this->LastExecutionTime = 1000.0 * timer->GetElapsedTime();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
+  os << indent << "StepSize: " << this->StepSize << " cells\n";
+  os << indent << "NormalizeVectors: " << (this->NormalizeVectors ? "On" : "Off") << "\n";
+  os << indent << "FieldInterpolation: " << this->FieldInterpolation << "\n";
+  os << indent << "KernelType: " << this->KernelType << "\n";
+  os << indent << "OrientedLIC: " << (this->OrientedLIC ? "On" : "Off") << "\n";
+  os << indent << "Animate: " << (this->Animate ? "On" : "Off") << "\n";
+  os << indent << "AnimationPhase: " << this->AnimationPhase << "\n";
+  os << indent << "NoiseType: " << this->NoiseType << "\n";
+  os << indent << "NoiseGrainSize: " << this->NoiseGrainSize << " cells\n";
+  os << indent << "MinNoiseValue: " << this->MinNoiseValue << "\n";
+  os << indent << "MaxNoiseValue: " << this->MaxNoiseValue << "\n";
+  os << indent << "NumberOfNoiseLevels: " << this->NumberOfNoiseLevels << "\n";
+  os << indent << "ImpulseNoiseProbability: " << this->ImpulseNoiseProbability << "\n";
+  os << indent << "ImpulseNoiseBackgroundValue: " << this->ImpulseNoiseBackgroundValue << "\n";
+  os << indent << "NoiseGeneratorSeed: " << this->NoiseGeneratorSeed << "\n";
+  os << indent << "NoiseArrayName: " << (this->NoiseArrayName ? this->NoiseArrayName : "(none)")
+     << "\n";
+  os << indent << "EnhancedLIC: " << (this->EnhancedLIC ? "On" : "Off") << "\n";
+  os << indent << "EnhanceContrast: " << this->EnhanceContrast << "\n";
+  os << indent << "LowLICContrastEnhancementFactor: " << this->LowLICContrastEnhancementFactor
+     << "\n";
+  os << indent << "HighLICContrastEnhancementFactor: " << this->HighLICContrastEnhancementFactor
+     << "\n";
+  os << indent << "LowColorContrastEnhancementFactor: " << this->LowColorContrastEnhancementFactor
+     << "\n";
+  os << indent << "HighColorContrastEnhancementFactor: " << this->HighColorContrastEnhancementFactor
+     << "\n";
+  os << indent << "ColorMode: " << this->ColorMode << "\n";
+  os << indent << "LICIntensity: " << this->LICIntensity << "\n";
+  os << indent << "MapModeBias: " << this->MapModeBias << "\n";
+  os << indent << "MaskThreshold: " << this->MaskThreshold << "\n";
+  os << indent << "MaskOnSurface: " << (this->MaskOnSurface ? "On" : "Off") << "\n";
+  os << indent << "MaskColor: (" << this->MaskColor[0] << ", " << this->MaskColor[1] << ", "
+     << this->MaskColor[2] << ")\n";
+  os << indent << "MaskIntensity: " << this->MaskIntensity << "\n";
+  os << indent << "NumberOfMaskedSamples: " << this->NumberOfMaskedSamples << "\n";
+  os << indent << "LastExecutionTime: " << this->LastExecutionTime << " ms\n";
+}

@@ -1,0 +1,254 @@
+// Helpers of the LIC tests: test surfaces with a vector field, and the streak measures
+// (correlation of the LIC between samples a few cells apart along and across the field).
+#ifndef vtkOFBLICTestHelpers_h
+#define vtkOFBLICTestHelpers_h
+
+#include "vtkOFBTestUtilities.h"
+
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkTriangleFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace vtkofbtest
+{
+/// v = f(x): a vector field given by a function of the position.
+using VectorField = std::function<void(const double x[3], double v[3])>;
+
+/// The square [-1, 1]^2 at z = 0, finely triangulated (200 x 200 quads, 80000 triangles).
+inline vtkSmartPointer<vtkPolyData> MakeSquare()
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-1.0, -1.0, 0.0);
+  plane->SetPoint1(1.0, -1.0, 0.0);
+  plane->SetPoint2(-1.0, 1.0, 0.0);
+  plane->SetResolution(200, 200);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(plane->GetOutputPort());
+  triangles->Update();
+  vtkSmartPointer<vtkPolyData> out = triangles->GetOutput();
+  return out;
+}
+
+/// The same vector `dir` everywhere.
+inline VectorField UniformField(const double dir[3])
+{
+  const double d[3] = { dir[0], dir[1], dir[2] };
+  return [d](const double*, double v[3])
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      v[c] = d[c];
+    }
+  };
+}
+
+/// Rotation about `axis` through the origin: v = axis x x (axis normalized).
+inline VectorField RotationField(const double axis[3])
+{
+  double a[3] = { axis[0], axis[1], axis[2] };
+  vtkMath::Normalize(a);
+  return [a](const double x[3], double v[3]) { vtkMath::Cross(a, x, v); };
+}
+
+/// A copy of `mesh` (arrays shared) with the point vectors "Flow" = field(point).
+inline vtkSmartPointer<vtkPolyData> WithField(vtkPolyData* mesh, const VectorField& field)
+{
+  vtkSmartPointer<vtkPolyData> copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(mesh);
+  vtkNew<vtkFloatArray> flow;
+  flow->SetName("Flow");
+  flow->SetNumberOfComponents(3);
+  flow->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+  {
+    double x[3], v[3];
+    mesh->GetPoint(p, x);
+    field(x, v);
+    flow->SetTuple(p, v);
+  }
+  copy->GetPointData()->SetVectors(flow);
+  return copy;
+}
+
+/// The OFB of `mesh` at `resolution` with the sample field "Flow" (projected).
+inline vtkSmartPointer<vtkOFB> BuildWithField(vtkPolyData* mesh,
+  int resolution,
+  const VectorField& field)
+{
+  vtkSmartPointer<vtkPolyData> withField = WithField(mesh, field);
+  return Build(withField, resolution);
+}
+
+/// Pearson correlation over pairs of values.
+struct Correlation
+{
+  double Value = 0.0;
+  vtkIdType Pairs = 0;
+};
+
+inline Correlation Pearson(const std::vector<double>& a, const std::vector<double>& b)
+{
+  Correlation c;
+  c.Pairs = static_cast<vtkIdType>(a.size());
+  if (a.size() < 2)
+  {
+    return c;
+  }
+  double ma = 0.0, mb = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    ma += a[i];
+    mb += b[i];
+  }
+  ma /= a.size();
+  mb /= b.size();
+  double cov = 0.0, va = 0.0, vb = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    cov += (a[i] - ma) * (b[i] - mb);
+    va += (a[i] - ma) * (a[i] - ma);
+    vb += (b[i] - mb) * (b[i] - mb);
+  }
+  c.Value = (va > 0.0 && vb > 0.0) ? cov / std::sqrt(va * vb) : 0.0;
+  return c;
+}
+
+/**
+ * On the square of MakeSquare: the correlation of `values` between each sample farther
+ * than `margin` from the border and the sample closest to it moved by `distance` along
+ * the unit vector `dir`.
+ */
+inline Correlation Autocorrelation(vtkOFB* ofb,
+  const float* values,
+  const double dir[3],
+  double distance,
+  double margin)
+{
+  std::vector<double> a, b;
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    ofb->GetSamplePosition(i, x);
+    if (std::fabs(x[0]) > 1.0 - margin || std::fabs(x[1]) > 1.0 - margin)
+    {
+      continue;
+    }
+    const double y[3] = {
+      x[0] + distance * dir[0], x[1] + distance * dir[1], x[2] + distance * dir[2]
+    };
+    const vtkIdType j = ofb->FindClosestSample(y);
+    if (j >= 0)
+    {
+      a.push_back(values[i]);
+      b.push_back(values[j]);
+    }
+  }
+  return Pearson(a, b);
+}
+
+/// Streak measure on a sphere about the origin with a rotation about `axis`.
+struct StreakMeasure
+{
+  double Along = 0.0;
+  double Across = 0.0;
+  vtkIdType Pairs = 0;
+};
+
+/**
+ * Correlation of `values` at 4 cells along and across the rotation about `axis`, over
+ * the samples within 60 degrees of the equator that are near a change of grid (the two
+ * largest components of the normal within 0.15 of each other; `nearGridChange`) or not.
+ */
+inline StreakMeasure SphereStreaks(vtkOFB* ofb,
+  const float* values,
+  const double axis[3],
+  bool nearGridChange)
+{
+  vtkDataArray* normals = ofb->GetSampleData()->GetNormals();
+  const double d = 4.0 * ofb->GetCellSize();
+  std::vector<double> a, b, c, e;
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double x[3], n[3], along[3], across[3];
+    ofb->GetSamplePosition(i, x);
+    normals->GetTuple(i, n);
+    if (std::fabs(vtkMath::Dot(n, axis)) > std::sin(vtkMath::RadiansFromDegrees(60.0)))
+    {
+      continue;
+    }
+    double m[3] = { std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) };
+    std::sort(m, m + 3);
+    if ((m[2] - m[1] < 0.15) != nearGridChange)
+    {
+      continue;
+    }
+    vtkMath::Cross(axis, x, along);
+    vtkMath::Normalize(along);
+    vtkMath::Cross(n, along, across);
+    double ya[3], yc[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      ya[k] = x[k] + d * along[k];
+      yc[k] = x[k] + d * across[k];
+    }
+    const vtkIdType ja = ofb->FindClosestSample(ya);
+    const vtkIdType jc = ofb->FindClosestSample(yc);
+    if (ja >= 0 && jc >= 0)
+    {
+      a.push_back(values[i]);
+      b.push_back(values[ja]);
+      c.push_back(values[i]);
+      e.push_back(values[jc]);
+    }
+  }
+  StreakMeasure s;
+  const Correlation along = Pearson(a, b);
+  s.Along = along.Value;
+  s.Pairs = along.Pairs;
+  s.Across = Pearson(c, e).Value;
+  return s;
+}
+
+/**
+ * The fraction of samples whose closest sample of another grid within `radius` cells
+ * (where there is one) has the same value.
+ */
+inline double FractionEqualAcrossGrids(vtkOFB* ofb, const float* values, double radius)
+{
+  vtkIdType pairs = 0;
+  vtkIdType equal = 0;
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    ofb->GetSamplePosition(i, x);
+    const int axis = ofb->GetSampleAxis(i);
+    vtkIdType best = -1;
+    double bestD2 = 1e300;
+    ofb->ForEachSampleInSphere(x,
+      radius * ofb->GetCellSize(),
+      [&](vtkIdType j, double d2)
+      {
+        if (ofb->GetSampleAxis(j) != axis && d2 < bestD2)
+        {
+          bestD2 = d2;
+          best = j;
+        }
+      });
+    if (best >= 0)
+    {
+      ++pairs;
+      equal += values[best] == values[i];
+    }
+  }
+  return pairs ? static_cast<double>(equal) / pairs : 0.0;
+}
+}
+
+#endif

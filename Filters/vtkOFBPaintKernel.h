@@ -95,8 +95,10 @@ public:
    * the current undo step are appended to `colorUndo` / `normalUndo`. `progress`
    * (may be empty) is called with a fraction in [0, 1] now and then.
    */
-  void Paint(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings,
-    std::vector<vtkOFBColorRecord>& colorUndo, std::vector<vtkOFBNormalRecord>& normalUndo,
+  void Paint(const std::vector<vtkOFBDab>& dabs,
+    const vtkOFBPaintSettings& settings,
+    std::vector<vtkOFBColorRecord>& colorUndo,
+    std::vector<vtkOFBNormalRecord>& normalUndo,
     const std::function<void(double)>& progress);
 
   /**
@@ -122,14 +124,20 @@ public:
   static double Falloff(const vtkOFBPaintSettings& s, double x);
 
   /// Blend a colour (bytes) with source `src` (RGBA in [0, 1]) by weight g.
-  static void BlendColor(const unsigned char dst[4], const float src[4], float g, int mode,
-    const unsigned char initial[4], unsigned char out[4]);
+  static void BlendColor(const unsigned char dst[4],
+    const float src[4],
+    float g,
+    int mode,
+    const unsigned char initial[4],
+    unsigned char out[4]);
 
 private:
   struct DabWork;
 
-  void ComputeWaves(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings,
-    std::vector<int>& order, std::vector<int>& waveStarts) const;
+  void ComputeWaves(const std::vector<vtkOFBDab>& dabs,
+    const vtkOFBPaintSettings& settings,
+    std::vector<int>& order,
+    std::vector<int>& waveStarts) const;
   void PaintDab(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, DabWork& work);
   bool SmearSource(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, float src[4]) const;
   bool CentreNormal(const vtkOFBDab& dab, double n[3]) const;

@@ -9,6 +9,7 @@
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -260,7 +261,8 @@ bool vtkOFB::BuildCellIndex()
     return false;
   }
   vtkTypeUInt32* index = this->CellIndex->GetPointer(0);
-  bool valid = true;
+  // Written by the SMP threads that meet a bad offset, read after they all finished.
+  std::atomic<bool> valid(true);
   vtkSMPTools::For(0, nCells, 65536,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -270,7 +272,7 @@ bool vtkOFB::BuildCellIndex()
         const vtkTypeUInt32 e = offsets[c + 1];
         if (e < b || static_cast<vtkIdType>(e) > n)
         {
-          valid = false;
+          valid.store(false, std::memory_order_relaxed);
           return;
         }
         for (vtkTypeUInt32 i = b; i < e; ++i)
@@ -279,7 +281,7 @@ bool vtkOFB::BuildCellIndex()
         }
       }
     });
-  if (!valid)
+  if (!valid.load())
   {
     vtkErrorMacro("BuildCellIndex: the cell offsets decrease or exceed the sample count.");
     return false;

@@ -208,14 +208,16 @@ public:
   /**
    * Closest sample to `x` over the three grids within `radius` (world units).
    * The one-argument form uses sqrt(3) cells, the paper's bound on the distance
-   * from a surface point to its nearest sample. Returns -1 if there is none.
+   * from a surface point to its nearest sample; `radius` may be infinite. Returns
+   * -1 if there is none.
    */
   vtkIdType FindClosestSample(const double x[3]) const;
   vtkIdType FindClosestSample(const double x[3], double radius) const;
   ///@}
 
   /**
-   * Fill `ids` with every sample within `radius` (world units) of `center`.
+   * Fill `ids` with every sample within `radius` (world units) of `center`. Any
+   * radius >= 0 works, up to infinity (every sample); a NaN radius finds nothing.
    */
   void FindSamplesInSphere(const double center[3], double radius, vtkIdList* ids) const;
 
@@ -287,8 +289,9 @@ protected:
   void Reset();
 
   /**
-   * Cell (u, v index and global cell index) of point x in grid `axis`; false if
-   * outside the grid.
+   * Set `cell` to the global index of the cell of grid `axis` under point x (the
+   * cell whose square contains x projected on the grid); false, `cell` unchanged,
+   * if x projects outside the grid.
    */
   bool LocateCell(int axis, const double x[3], vtkIdType& cell) const;
 
@@ -349,19 +352,20 @@ void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functo
     const int va = (a + 2) % 3;
     const vtkIdType nu = this->Dimensions[ua];
     const vtkIdType nv = this->Dimensions[va];
-    // Cells whose centre lies within the projected box [c - r, c + r].
+    // Cells whose centre lies within the projected box [c - r, c + r], clamped to the
+    // grid before they become integers (a huge or infinite radius covers the grid).
     const double lu = (center[ua] - radius - this->Origin[ua]) / s - 0.5;
     const double hu = (center[ua] + radius - this->Origin[ua]) / s - 0.5;
     const double lv = (center[va] - radius - this->Origin[va]) / s - 0.5;
     const double hv = (center[va] + radius - this->Origin[va]) / s - 0.5;
-    if (hu < 0.0 || hv < 0.0 || lu > nu - 1 || lv > nv - 1)
+    if (!(hu >= 0.0 && hv >= 0.0 && lu <= nu - 1 && lv <= nv - 1))
     {
       continue;
     }
-    const vtkIdType u0 = std::max<vtkIdType>(0, static_cast<vtkIdType>(std::ceil(lu)));
-    const vtkIdType u1 = std::min<vtkIdType>(nu - 1, static_cast<vtkIdType>(std::floor(hu)));
-    const vtkIdType v0 = std::max<vtkIdType>(0, static_cast<vtkIdType>(std::ceil(lv)));
-    const vtkIdType v1 = std::min<vtkIdType>(nv - 1, static_cast<vtkIdType>(std::floor(hv)));
+    const vtkIdType u0 = static_cast<vtkIdType>(std::ceil(std::max(lu, 0.0)));
+    const vtkIdType u1 = static_cast<vtkIdType>(std::floor(std::min(hu, nu - 1.0)));
+    const vtkIdType v0 = static_cast<vtkIdType>(std::ceil(std::max(lv, 0.0)));
+    const vtkIdType v1 = static_cast<vtkIdType>(std::floor(std::min(hv, nv - 1.0)));
     const double d = center[a] - this->Origin[a];
     const float dLow = static_cast<float>(d - radius);
     const double dHigh = d + radius;

@@ -2,13 +2,11 @@
  * @file    vtkOFBHugePages.h
  * @brief   Ask for transparent huge pages on a large array (private)
  *
- * Writes over huge pages miss the TLB less: rebuilds, which write over the
- * memory of the previous output, are about 3 % faster on the project's 2-core
- * virtual machine, where a TLB miss walks two page tables. Faulting a 2 MiB page
- * in costs less than 512 pages of 4 KiB on bare metal, but more under some
- * hypervisors (on that machine, first touching 245 MB took 90-100 ms in 4 KiB
- * pages, 400-540 ms in huge pages). Call before the array's first touch; a no-op
- * where madvise has no MADV_HUGEPAGE.
+ * Writes over huge pages miss the TLB less, which speeds up rebuilds that write
+ * over the memory of the previous output. Faulting a 2 MiB page in costs less than
+ * 512 pages of 4 KiB on bare metal but can cost more under a hypervisor, so first
+ * builds may be slower (measurements: docs/performance.md). Call before the array's
+ * first touch; a no-op where madvise has no MADV_HUGEPAGE.
  */
 
 #ifndef vtkOFBHugePages_h

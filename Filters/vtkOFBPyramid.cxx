@@ -13,6 +13,245 @@
 #include <cmath>
 #include <vector>
 
+namespace
+{
+/// The 3-component sample normals of `pd` (the active ones, else "Normals"), or null.
+vtkDataArray* SampleNormals(vtkPointData* pd)
+{
+  vtkDataArray* normals = pd->GetNormals() ? pd->GetNormals() : pd->GetArray("Normals");
+  return normals && normals->GetNumberOfComponents() == 3 ? normals : nullptr;
+}
+
+/**
+ * The distance-weighted transfer of vtkOFBPyramid::Resample: the arrays to
+ * transfer and their new target arrays, and the filter of one target sample
+ * (a functor for vtkSMPTools::For over the target samples).
+ */
+class ResampleFunctor
+{
+public:
+  ResampleFunctor(vtkOFB* source, vtkOFB* target, double radius)
+    : Source(source)
+    , Target(target)
+    , Radius(radius)
+  {
+  }
+
+  /**
+   * The arrays of the source to transfer (named, one tuple per sample), each with
+   * a new target array of zeros.
+   */
+  void CollectArrays()
+  {
+    vtkPointData* spd = this->Source->GetSampleData();
+    const vtkIdType nt = this->Target->GetNumberOfSamples();
+    for (int a = 0; a < spd->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* array = spd->GetArray(a);
+      if (!array || !array->GetName() ||
+        array->GetNumberOfTuples() != this->Source->GetNumberOfSamples())
+      {
+        continue;
+      }
+      vtkSmartPointer<vtkDataArray> out;
+      out.TakeReference(array->NewInstance());
+      out->SetName(array->GetName());
+      out->SetNumberOfComponents(array->GetNumberOfComponents());
+      out->SetNumberOfTuples(nt);
+      out->Fill(0.0);
+      this->From.push_back(array);
+      this->To.push_back(out);
+      this->TotalComponents += array->GetNumberOfComponents();
+    }
+  }
+
+  /**
+   * A copy of the target's normals, to which source samples must not face away
+   * (the transfer replaces the target's normals by the source's); none when
+   * either OFB has no normals.
+   */
+  void CopyTargetNormals()
+  {
+    this->SourceNormals = SampleNormals(this->Source->GetSampleData());
+    vtkDataArray* targetNormals = SampleNormals(this->Target->GetSampleData());
+    if (!targetNormals || !this->SourceNormals ||
+      targetNormals->GetNumberOfTuples() != this->Target->GetNumberOfSamples())
+    {
+      return;
+    }
+    const vtkIdType nt = this->Target->GetNumberOfSamples();
+    this->TargetNormals.resize(static_cast<size_t>(3 * nt));
+    for (vtkIdType i = 0; i < nt; ++i)
+    {
+      double n[3];
+      targetNormals->GetTuple(i, n);
+      for (int c = 0; c < 3; ++c)
+      {
+        this->TargetNormals[3 * i + c] = static_cast<float>(n[c]);
+      }
+    }
+  }
+
+  /// Filter target samples [begin, end).
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    std::vector<double> sum(static_cast<size_t>(this->TotalComponents));
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      std::fill(sum.begin(), sum.end(), 0.0);
+      const double weights = this->Gather(i, sum);
+      if (weights > 0.0)
+      {
+        this->Write(i, sum, weights);
+      }
+    }
+  }
+
+  /// Replace the target's arrays by the transferred ones, with the source's attribute roles.
+  void ReplaceTargetArrays() const
+  {
+    vtkPointData* spd = this->Source->GetSampleData();
+    vtkPointData* tpd = this->Target->GetSampleData();
+    for (const auto& to : this->To)
+    {
+      tpd->RemoveArray(to->GetName());
+      tpd->AddArray(to);
+    }
+    for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
+    {
+      vtkAbstractArray* active = spd->GetAbstractAttribute(attribute);
+      if (active && active->GetName() && tpd->GetArray(active->GetName()))
+      {
+        tpd->SetActiveAttribute(active->GetName(), attribute);
+      }
+    }
+  }
+
+private:
+  /**
+   * The weighted sums of the source samples within Radius of target sample i
+   * that face its way into `sum`, and their total weight; the closest such
+   * sample within 2 Radius, with weight 1, when none is within Radius.
+   */
+  double Gather(vtkIdType i, std::vector<double>& sum) const
+  {
+    const double r = this->Radius;
+    double x[3];
+    this->Target->GetSamplePosition(i, x);
+    const float* tn = this->TargetNormals.empty() ? nullptr : &this->TargetNormals[3 * i];
+    double weights = 0.0;
+    vtkIdType closest = -1;
+    double closestD2 = 4.0 * r * r;
+    this->Source->ForEachSampleInSphere(x, 2.0 * r,
+      [&](vtkIdType j, double d2)
+      {
+        if (!this->Faces(j, tn))
+        {
+          return;
+        }
+        if (d2 < closestD2)
+        {
+          closestD2 = d2;
+          closest = j;
+        }
+        if (d2 < r * r)
+        {
+          const double q = 1.0 - d2 / (r * r);
+          this->Accumulate(j, q * q, sum);
+          weights += q * q;
+        }
+      });
+    if (weights <= 0.0 && closest >= 0)
+    {
+      this->Accumulate(closest, 1.0, sum);
+      weights += 1.0;
+    }
+    return weights;
+  }
+
+  /// Whether source sample j does not face away from the target normal tn (if any).
+  bool Faces(vtkIdType j, const float* tn) const
+  {
+    if (!tn)
+    {
+      return true;
+    }
+    double sn[3];
+    this->SourceNormals->GetTuple(j, sn);
+    return sn[0] * tn[0] + sn[1] * tn[1] + sn[2] * tn[2] >= 0.0;
+  }
+
+  /// Add weight w times every component of source sample j to `sum`.
+  void Accumulate(vtkIdType j, double w, std::vector<double>& sum) const
+  {
+    int offset = 0;
+    for (vtkDataArray* from : this->From)
+    {
+      const int nc = from->GetNumberOfComponents();
+      for (int c = 0; c < nc; ++c)
+      {
+        sum[offset + c] += w * from->GetComponent(j, c);
+      }
+      offset += nc;
+    }
+  }
+
+  /// Target sample i's values: the sums over their weight, integers rounded.
+  void Write(vtkIdType i, const std::vector<double>& sum, double weights) const
+  {
+    int offset = 0;
+    for (size_t k = 0; k < this->From.size(); ++k)
+    {
+      const int nc = this->From[k]->GetNumberOfComponents();
+      const bool integral = this->From[k]->GetDataType() != VTK_FLOAT &&
+        this->From[k]->GetDataType() != VTK_DOUBLE;
+      for (int c = 0; c < nc; ++c)
+      {
+        double v = sum[offset + c] / weights;
+        if (integral)
+        {
+          v = std::floor(v + 0.5);
+        }
+        this->To[k]->SetComponent(i, c, v);
+      }
+      offset += nc;
+    }
+  }
+
+  vtkOFB* Source;
+  vtkOFB* Target;
+  const double Radius;
+  std::vector<vtkDataArray*> From;
+  std::vector<vtkSmartPointer<vtkDataArray>> To;
+  int TotalComponents = 0;
+  vtkDataArray* SourceNormals = nullptr;
+  std::vector<float> TargetNormals;
+};
+
+/// Scale the 3-component "Normals" sample array of `ofb` to unit length.
+void NormalizeSampleNormals(vtkOFB* ofb)
+{
+  vtkDataArray* normals = ofb->GetSampleData()->GetArray("Normals");
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    return;
+  }
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double n[3];
+    normals->GetTuple(i, n);
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (len > 0.0)
+    {
+      n[0] /= len;
+      n[1] /= len;
+      n[2] /= len;
+      normals->SetTuple(i, n);
+    }
+  }
+}
+}
+
 vtkStandardNewMacro(vtkOFBPyramid);
 vtkCxxSetObjectMacro(vtkOFBPyramid, InputOFB, vtkOFB);
 vtkCxxSetObjectMacro(vtkOFBPyramid, Surface, vtkPolyData);
@@ -24,7 +263,6 @@ vtkOFBPyramid::vtkOFBPyramid()
   , MaximumNumberOfLevels(8)
   , MinimumResolution(8)
   , FilterRadius(1.5)
-  , LastInputOFB(nullptr)
 {
 }
 
@@ -56,11 +294,11 @@ vtkOFB* vtkOFBPyramid::GetLevel(int k) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPyramid::Update()
+bool vtkOFBPyramid::UpdateLevels()
 {
   if (!this->InputOFB || this->InputOFB->GetNumberOfSamples() == 0)
   {
-    vtkErrorMacro("Update: no input OFB, or an empty one.");
+    vtkErrorMacro("UpdateLevels: no input OFB, or an empty one.");
     this->Levels.clear();
     return false;
   }
@@ -75,7 +313,7 @@ bool vtkOFBPyramid::Update()
     this->StructureTime.Modified();
     if (this->MaximumNumberOfLevels > 1 && !this->Surface)
     {
-      vtkErrorMacro("Update: no surface to sample the coarser levels from.");
+      vtkErrorMacro("UpdateLevels: no surface to sample the coarser levels from.");
       return false;
     }
     const vtkIdType* dims = this->InputOFB->GetDimensions();
@@ -98,7 +336,7 @@ bool vtkOFBPyramid::Update()
       vtkOFB* out = sampler->GetOutput();
       if (!out || out->GetNumberOfSamples() == 0)
       {
-        vtkErrorMacro("Update: level " << k << " could not be sampled.");
+        vtkErrorMacro("UpdateLevels: level " << k << " could not be sampled.");
         this->Levels.clear();
         return false;
       }
@@ -137,164 +375,12 @@ bool vtkOFBPyramid::Resample(vtkOFB* source, vtkOFB* target, double radius)
   // Search at least the sqrt(3) cells of the source within which a surface point always
   // has a sample, so that every target sample finds one.
   radius = std::max(radius, std::sqrt(3.0) * source->GetCellSize());
-  vtkPointData* spd = source->GetSampleData();
-  vtkPointData* tpd = target->GetSampleData();
-  const vtkIdType nt = target->GetNumberOfSamples();
-  vtkDataArray* sNormals = spd->GetNormals() ? spd->GetNormals() : spd->GetArray("Normals");
-  vtkDataArray* tNormals = tpd->GetNormals() ? tpd->GetNormals() : tpd->GetArray("Normals");
-  if (sNormals && sNormals->GetNumberOfComponents() != 3)
-  {
-    sNormals = nullptr;
-  }
-  if (tNormals && (tNormals->GetNumberOfComponents() != 3 || tNormals->GetNumberOfTuples() != nt))
-  {
-    tNormals = nullptr;
-  }
-  // Keep a copy of the target normals: the source's normals replace them below.
-  std::vector<float> targetNormals;
-  if (tNormals && sNormals)
-  {
-    targetNormals.resize(static_cast<size_t>(3 * nt));
-    for (vtkIdType i = 0; i < nt; ++i)
-    {
-      double n[3];
-      tNormals->GetTuple(i, n);
-      for (int c = 0; c < 3; ++c)
-      {
-        targetNormals[3 * i + c] = static_cast<float>(n[c]);
-      }
-    }
-  }
-  // The arrays to transfer, and their new target arrays.
-  std::vector<vtkDataArray*> from;
-  std::vector<vtkSmartPointer<vtkDataArray>> to;
-  int totalComponents = 0;
-  for (int a = 0; a < spd->GetNumberOfArrays(); ++a)
-  {
-    vtkDataArray* array = spd->GetArray(a);
-    if (!array || !array->GetName() || array->GetNumberOfTuples() != source->GetNumberOfSamples())
-    {
-      continue;
-    }
-    vtkSmartPointer<vtkDataArray> out;
-    out.TakeReference(array->NewInstance());
-    out->SetName(array->GetName());
-    out->SetNumberOfComponents(array->GetNumberOfComponents());
-    out->SetNumberOfTuples(nt);
-    out->Fill(0.0);
-    from.push_back(array);
-    to.push_back(out);
-    totalComponents += array->GetNumberOfComponents();
-  }
-  const double r = radius;
-  vtkSMPTools::For(0, nt, [&](vtkIdType begin, vtkIdType end) {
-    std::vector<double> sum(static_cast<size_t>(totalComponents));
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      double x[3];
-      target->GetSamplePosition(i, x);
-      const float* tn = targetNormals.empty() ? nullptr : &targetNormals[3 * i];
-      std::fill(sum.begin(), sum.end(), 0.0);
-      double wsum = 0.0;
-      vtkIdType closest = -1;
-      double closestD2 = 4.0 * r * r;
-      auto accumulate = [&](vtkIdType j, double w) {
-        int offset = 0;
-        for (size_t k = 0; k < from.size(); ++k)
-        {
-          const int nc = from[k]->GetNumberOfComponents();
-          for (int c = 0; c < nc; ++c)
-          {
-            sum[offset + c] += w * from[k]->GetComponent(j, c);
-          }
-          offset += nc;
-        }
-        wsum += w;
-      };
-      auto facing = [&](vtkIdType j) {
-        if (!tn)
-        {
-          return true;
-        }
-        double sn[3];
-        sNormals->GetTuple(j, sn);
-        return sn[0] * tn[0] + sn[1] * tn[1] + sn[2] * tn[2] >= 0.0;
-      };
-      source->ForEachSampleInSphere(x, 2.0 * r, [&](vtkIdType j, double d2) {
-        if (!facing(j))
-        {
-          return;
-        }
-        if (d2 < closestD2)
-        {
-          closestD2 = d2;
-          closest = j;
-        }
-        if (d2 < r * r)
-        {
-          const double q = 1.0 - d2 / (r * r);
-          accumulate(j, q * q);
-        }
-      });
-      if (wsum <= 0.0 && closest >= 0)
-      {
-        accumulate(closest, 1.0);
-      }
-      if (wsum <= 0.0)
-      {
-        continue;
-      }
-      int offset = 0;
-      for (size_t k = 0; k < from.size(); ++k)
-      {
-        const int nc = from[k]->GetNumberOfComponents();
-        const bool integral =
-          from[k]->GetDataType() != VTK_FLOAT && from[k]->GetDataType() != VTK_DOUBLE;
-        for (int c = 0; c < nc; ++c)
-        {
-          double v = sum[offset + c] / wsum;
-          if (integral)
-          {
-            v = std::floor(v + 0.5);
-          }
-          to[k]->SetComponent(i, c, v);
-        }
-        offset += nc;
-      }
-    }
-  });
-  // Replace the target arrays, keeping the attribute roles of the source.
-  for (size_t k = 0; k < to.size(); ++k)
-  {
-    tpd->RemoveArray(to[k]->GetName());
-    tpd->AddArray(to[k]);
-  }
-  for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
-  {
-    vtkAbstractArray* active = spd->GetAbstractAttribute(attribute);
-    if (active && active->GetName() && tpd->GetArray(active->GetName()))
-    {
-      tpd->SetActiveAttribute(active->GetName(), attribute);
-    }
-  }
-  // Renormalise transferred normals.
-  vtkDataArray* normals = tpd->GetArray("Normals");
-  if (normals && normals->GetNumberOfComponents() == 3)
-  {
-    for (vtkIdType i = 0; i < nt; ++i)
-    {
-      double n[3];
-      normals->GetTuple(i, n);
-      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      if (len > 0.0)
-      {
-        n[0] /= len;
-        n[1] /= len;
-        n[2] /= len;
-        normals->SetTuple(i, n);
-      }
-    }
-  }
+  ResampleFunctor transfer(source, target, radius);
+  transfer.CopyTargetNormals();
+  transfer.CollectArrays();
+  vtkSMPTools::For(0, target->GetNumberOfSamples(), transfer);
+  transfer.ReplaceTargetArrays();
+  NormalizeSampleNormals(target);
   return true;
 }
 

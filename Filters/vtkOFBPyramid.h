@@ -10,9 +10,10 @@
  * low-pass filtered level by level. Levels stop at MinimumResolution cells on the longest
  * side or at MaximumNumberOfLevels.
  *
- * Update() rebuilds the levels when the surface, the structure of level 0 or a setting
- * changed, and recomputes their arrays when level 0 was modified (its MTime) since the
- * last computation; UpdateArrays() forces the latter. Both run on the CPU
+ * UpdateLevels() rebuilds the levels when the surface, the structure of level 0 or a
+ * setting changed, and recomputes their arrays when level 0 was modified (its MTime)
+ * since the last computation; UpdateArrays() forces the latter. (vtkOFBPyramid is a
+ * helper object, not a pipeline algorithm: nothing updates it but these calls.) Both run on the CPU
  * (vtkSMPTools).
  *
  * @sa vtkOFB vtkOFBSampler vtkOFBPolyDataMapper
@@ -25,6 +26,7 @@
 #include "vtkOFBFiltersModule.h" // for export macro
 #include "vtkSmartPointer.h"     // for members
 #include "vtkTimeStamp.h"        // for members
+#include "vtkWeakPointer.h"      // for LastInputOFB
 
 #include <vector> // for Levels
 
@@ -86,7 +88,7 @@ public:
    * Bring the levels up to date. Returns false (with an error) when there is no input
    * OFB or surface, or a level cannot be sampled; level 0 alone is then available.
    */
-  bool Update();
+  bool UpdateLevels();
 
   /**
    * Recompute the sample arrays of levels 1.. from level 0 now.
@@ -137,7 +139,7 @@ protected:
   std::vector<vtkSmartPointer<vtkOFB>> Levels; // levels 1..
   vtkTimeStamp StructureTime;
   vtkTimeStamp ArraysTime;
-  vtkOFB* LastInputOFB; // compared only, never dereferenced
+  vtkWeakPointer<vtkOFB> LastInputOFB; // the level 0 the levels were built from
 
 private:
   vtkOFBPyramid(const vtkOFBPyramid&) = delete;

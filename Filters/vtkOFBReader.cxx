@@ -7,6 +7,7 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBFileFormat.h"
 #include "vtkOFBWriter.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -26,33 +27,8 @@ vtkStandardNewMacro(vtkOFBReader);
 namespace
 {
 using Writer = vtkOFBWriter;
-
-bool HostIsLittleEndian()
-{
-  const vtkTypeUInt32 one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
-
-/// Decode `size` little-endian bytes.
-vtkTypeUInt64 GetLE(const unsigned char* p, int size)
-{
-  vtkTypeUInt64 value = 0;
-  for (int i = size - 1; i >= 0; --i)
-  {
-    value = (value << 8) | p[i];
-  }
-  return value;
-}
-
-double GetDouble(const unsigned char* p)
-{
-  const vtkTypeUInt64 bits = GetLE(p, 8);
-  double value;
-  std::memcpy(&value, &bits, sizeof(value));
-  return value;
-}
+using vtkofb::format::GetDouble;
+using vtkofb::format::GetLE;
 
 /**
  * The local VTK type of a stored type and element size, or -1 if unknown. The
@@ -149,13 +125,7 @@ struct Source
       {
         return false;
       }
-      if (elementSize > 1 && !HostIsLittleEndian())
-      {
-        for (vtkTypeUInt64 i = 0; i < n; ++i)
-        {
-          std::reverse(dst + i * elementSize, dst + (i + 1) * elementSize);
-        }
-      }
+      vtkofb::format::SwapLittleEndian(dst, static_cast<size_t>(n), elementSize);
       this->Owner->UpdateProgress(static_cast<double>(this->Position) / this->Size);
     }
     return true;
@@ -179,10 +149,24 @@ struct Source
   }
 };
 
-/// Read an OFB file into `output`; false with the problem in `src`.
-bool ReadOFB(const char* fileName, vtkOFB* output, Source& src)
+/// The fields of an .ofb header (see vtkOFBWriter).
+struct Header
 {
-  using Code = vtkErrorCode::ErrorIds;
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+  double CellSize = 0.0;
+  vtkTypeUInt64 StoredDimensions[3] = { 0, 0, 0 };
+  vtkIdType Dimensions[3] = { 0, 0, 0 };
+  vtkTypeUInt64 NumberOfCells = 0;
+  vtkTypeUInt64 NumberOfSamples = 0;
+  vtkTypeUInt64 NumberOfArrays = 0;
+  bool Empty = true; // an empty OFB: no frame, no cells, no samples
+};
+
+using Code = vtkErrorCode::ErrorIds;
+
+/// Open `fileName` and measure it.
+bool OpenFile(const char* fileName, Source& src)
+{
   if (!fileName || !*fileName)
   {
     return src.Fail("No FileName: set the name of the .ofb file to read", Code::NoFileNameError);
@@ -207,8 +191,12 @@ bool ReadOFB(const char* fileName, vtkOFB* output, Source& src)
   {
     return src.Fail("the file is empty", Code::PrematureEndOfFileError);
   }
+  return true;
+}
 
-  // Header: signature, checksum, version, then the counts against the file size.
+/// Read the header: signature, checksum, version and byte order, then its fields.
+bool ReadHeader(Source& src, Header& header)
+{
   unsigned char h[Writer::HeaderSize];
   const vtkTypeUInt64 got = std::min<vtkTypeUInt64>(src.Size, Writer::HeaderSize);
   if (!src.Raw(h, got, "the header"))
@@ -240,75 +228,94 @@ bool ReadOFB(const char* fileName, vtkOFB* output, Source& src)
   {
     return src.Fail("unsupported byte-order marker");
   }
-  double origin[3], cellSize = GetDouble(h + 40);
-  vtkTypeUInt64 udims[3];
-  vtkIdType dims[3];
+  header.CellSize = GetDouble(h + 40);
   for (int a = 0; a < 3; ++a)
   {
-    origin[a] = GetDouble(h + 16 + 8 * a);
-    udims[a] = GetLE(h + 48 + 8 * a, 8);
-    dims[a] = static_cast<vtkIdType>(udims[a] & 0xFFFFFFFFu);
+    header.Origin[a] = GetDouble(h + 16 + 8 * a);
+    header.StoredDimensions[a] = GetLE(h + 48 + 8 * a, 8);
+    header.Dimensions[a] = static_cast<vtkIdType>(header.StoredDimensions[a] & 0xFFFFFFFFu);
   }
-  const vtkTypeUInt64 nCells = GetLE(h + 72, 8);
-  const vtkTypeUInt64 nSamples = GetLE(h + 80, 8);
-  const vtkTypeUInt64 nArrays = GetLE(h + 88, 4);
-  const vtkTypeUInt64 limit = std::numeric_limits<vtkTypeUInt32>::max();
-  const bool empty = cellSize == 0.0 && udims[0] == 0 && udims[1] == 0 && udims[2] == 0;
-  std::ostringstream msg;
-  if (empty && (nCells != 0 || nSamples != 0))
-  {
-    msg << "an empty frame with " << nCells << " cells and " << nSamples << " samples";
-  }
-  else if (!empty &&
-    (!(cellSize > 0.0) || !std::isfinite(cellSize) || !std::isfinite(origin[0]) ||
-      !std::isfinite(origin[1]) || !std::isfinite(origin[2])))
-  {
-    msg << "an invalid frame (cell size " << cellSize << ", origin " << origin[0] << " "
-        << origin[1] << " " << origin[2] << ")";
-  }
-  else if (!empty)
-  {
-    vtkTypeUInt64 cells = 0;
-    bool valid = true;
-    for (int a = 0; a < 3; ++a)
-    {
-      const vtkTypeUInt64 nu = udims[(a + 1) % 3], nv = udims[(a + 2) % 3];
-      valid = valid && udims[a] >= 1 && udims[a] < limit;
-      cells += valid ? nu * nv : 0; // each dimension < 2^32: no overflow
-    }
-    if (!valid)
-    {
-      msg << "invalid dimensions " << udims[0] << " " << udims[1] << " " << udims[2];
-    }
-    else if (cells >= limit || cells != nCells)
-    {
-      msg << nCells << " cells for dimensions " << udims[0] << " " << udims[1] << " " << udims[2];
-    }
-    else if (nSamples >= limit)
-    {
-      msg << "an invalid sample count " << nSamples;
-    }
-  }
-  // Each array takes at least 36 bytes; cells, samples < 2^32 here: no overflow.
-  const vtkTypeUInt64 least =
-    Writer::HeaderSize + 4 * (nCells + 1) + 4 + 4 * nSamples + 4 + 36 * nArrays + 8;
-  if (msg.tellp() == 0 && least > src.Size)
-  {
-    msg << nCells << " cells, " << nSamples << " samples and " << nArrays
-        << " arrays, which need at least " << least << " bytes, but the file has " << src.Size
-        << " bytes (truncated or corrupted)";
-  }
-  if (msg.tellp() != 0)
-  {
-    return src.Fail("the header announces " + msg.str());
-  }
+  header.NumberOfCells = GetLE(h + 72, 8);
+  header.NumberOfSamples = GetLE(h + 80, 8);
+  header.NumberOfArrays = GetLE(h + 88, 4);
+  const vtkTypeUInt64* d = header.StoredDimensions;
+  header.Empty = header.CellSize == 0.0 && d[0] == 0 && d[1] == 0 && d[2] == 0;
+  return true;
+}
 
-  // Cell offsets: 0, non-decreasing, ending at the sample count.
+/// What is wrong with the frame and counts of `header`, or an empty string.
+std::string CheckFrame(const Header& header)
+{
+  const vtkTypeUInt64 limit = std::numeric_limits<vtkTypeUInt32>::max();
+  const vtkTypeUInt64* d = header.StoredDimensions;
+  const vtkTypeUInt64 nCells = header.NumberOfCells;
+  const vtkTypeUInt64 nSamples = header.NumberOfSamples;
+  std::ostringstream msg;
+  if (header.Empty)
+  {
+    if (nCells != 0 || nSamples != 0)
+    {
+      msg << "an empty frame with " << nCells << " cells and " << nSamples << " samples";
+    }
+    return msg.str();
+  }
+  const double* o = header.Origin;
+  if (!(header.CellSize > 0.0) || !std::isfinite(header.CellSize) || !std::isfinite(o[0]) ||
+    !std::isfinite(o[1]) || !std::isfinite(o[2]))
+  {
+    msg << "an invalid frame (cell size " << header.CellSize << ", origin " << o[0] << " " << o[1]
+        << " " << o[2] << ")";
+    return msg.str();
+  }
+  vtkTypeUInt64 cells = 0;
+  bool valid = true;
+  for (int a = 0; a < 3; ++a)
+  {
+    valid = valid && d[a] >= 1 && d[a] < limit;
+    cells += valid ? d[(a + 1) % 3] * d[(a + 2) % 3] : 0; // each dimension < 2^32: no overflow
+  }
+  if (!valid)
+  {
+    msg << "invalid dimensions " << d[0] << " " << d[1] << " " << d[2];
+  }
+  else if (cells >= limit || cells != nCells)
+  {
+    msg << nCells << " cells for dimensions " << d[0] << " " << d[1] << " " << d[2];
+  }
+  else if (nSamples >= limit)
+  {
+    msg << "an invalid sample count " << nSamples;
+  }
+  return msg.str();
+}
+
+/// Check the header's frame and that its counts fit in the file, before allocating.
+bool CheckHeader(Source& src, const Header& header)
+{
+  std::string problem = CheckFrame(header);
+  // Each array takes at least 36 bytes; cells, samples < 2^32 here: no overflow.
+  const vtkTypeUInt64 least = Writer::HeaderSize + 4 * (header.NumberOfCells + 1) + 4 +
+    4 * header.NumberOfSamples + 4 + 36 * header.NumberOfArrays + 8;
+  if (problem.empty() && least > src.Size)
+  {
+    problem = std::to_string(header.NumberOfCells) + " cells, " +
+      std::to_string(header.NumberOfSamples) + " samples and " +
+      std::to_string(header.NumberOfArrays) + " arrays, which need at least " +
+      std::to_string(least) + " bytes, but the file has " + std::to_string(src.Size) +
+      " bytes (truncated or corrupted)";
+  }
+  return problem.empty() ? true : src.Fail("the header announces " + problem);
+}
+
+/// Set the frame and read the cell offsets: 0, non-decreasing, ending at the sample count.
+bool ReadCellOffsets(Source& src, const Header& header, vtkOFB* output)
+{
+  const vtkTypeUInt64 nCells = header.NumberOfCells;
   vtkTypeUInt32 emptyOffset = 0;
   vtkTypeUInt32* offsets = &emptyOffset;
-  if (!empty)
+  if (!header.Empty)
   {
-    if (!output->SetFrame(origin, cellSize, dims))
+    if (!output->SetFrame(header.Origin, header.CellSize, header.Dimensions))
     {
       return src.Fail("cannot allocate " + std::to_string(nCells) + " cells", Code::UnknownError);
     }
@@ -319,17 +326,20 @@ bool ReadOFB(const char* fileName, vtkOFB* output, Source& src)
   {
     return false;
   }
-  bool valid = offsets[0] == 0 && offsets[nCells] == nSamples;
+  bool valid = offsets[0] == 0 && offsets[nCells] == header.NumberOfSamples;
   for (vtkTypeUInt64 c = 0; c < nCells && valid; ++c)
   {
     valid = offsets[c] <= offsets[c + 1];
   }
-  if (!valid)
-  {
-    return src.Fail("the cell offsets do not run from 0 to the sample count without decreasing");
-  }
+  return valid
+    ? true
+    : src.Fail("the cell offsets do not run from 0 to the sample count without decreasing");
+}
 
-  // Depths: finite and sorted within each cell.
+/// Allocate the samples and read their depths: finite and sorted within each cell.
+bool ReadDepths(Source& src, const Header& header, vtkOFB* output)
+{
+  const vtkTypeUInt64 nSamples = header.NumberOfSamples;
   if (!output->AllocateSamples(static_cast<vtkIdType>(nSamples)))
   {
     return src.Fail("cannot allocate " + std::to_string(nSamples) + " samples", Code::UnknownError);
@@ -339,106 +349,157 @@ bool ReadOFB(const char* fileName, vtkOFB* output, Source& src)
   {
     return false;
   }
-  for (vtkTypeUInt64 c = 0; c < nCells && valid; ++c)
+  const vtkTypeUInt32* offsets = header.Empty ? nullptr : output->GetCellOffsets()->GetPointer(0);
+  bool valid = true;
+  for (vtkTypeUInt64 c = 0; c < header.NumberOfCells && valid; ++c)
   {
     for (vtkTypeUInt32 i = offsets[c]; i < offsets[c + 1] && valid; ++i)
     {
       valid = std::isfinite(depths[i]) && (i == offsets[c] || depths[i - 1] <= depths[i]);
     }
   }
-  if (!valid)
-  {
-    return src.Fail("the depths are not finite or not sorted within their cells");
-  }
+  return valid ? true : src.Fail("the depths are not finite or not sorted within their cells");
+}
 
-  // Sample arrays.
+/// The header of a stored sample array (see vtkOFBWriter).
+struct ArrayHeader
+{
+  std::string Name;
+  vtkTypeUInt64 Type = 0;
+  vtkTypeUInt64 ElementSize = 0;
+  vtkTypeUInt64 Components = 0;
+  vtkTypeUInt64 Tuples = 0;
+  vtkTypeUInt64 Roles = 0;
+};
+
+/// Read the header of sample array `k`: name, type, shape and attribute roles.
+bool ReadArrayHeader(Source& src, vtkTypeUInt64 k, ArrayHeader& array)
+{
+  const std::string where = "the header of sample array " + std::to_string(k);
+  unsigned char f[24];
+  if (!src.Raw(f, 4, where))
+  {
+    return false;
+  }
+  const vtkTypeUInt64 nameLength = GetLE(f, 4);
+  if (nameLength > 65536 || nameLength + 24 > src.Remaining())
+  {
+    return src.Fail(where + ": invalid name length " + std::to_string(nameLength));
+  }
+  array.Name.assign(static_cast<size_t>(nameLength), '\0');
+  if ((nameLength > 0 && !src.Raw(&array.Name[0], nameLength, where)) || !src.Raw(f, 24, where) ||
+    !src.EndSection(where))
+  {
+    return false;
+  }
+  if (array.Name.find('\0') != std::string::npos)
+  {
+    return src.Fail(where + ": the array name contains a NUL byte");
+  }
+  array.Type = GetLE(f, 4);
+  array.ElementSize = GetLE(f + 4, 4);
+  array.Components = GetLE(f + 8, 4);
+  array.Tuples = GetLE(f + 12, 8);
+  array.Roles = GetLE(f + 20, 4);
+  return true;
+}
+
+/**
+ * Read sample array `k` into the sample data of `output`, with its attribute roles
+ * (none of them in `usedRoles`, to which they are added).
+ */
+bool ReadSampleArray(Source& src,
+  const Header& header,
+  vtkTypeUInt64 k,
+  vtkOFB* output,
+  WarningCatcher* catcher,
+  vtkTypeUInt64& usedRoles)
+{
+  ArrayHeader a;
+  if (!ReadArrayHeader(src, k, a))
+  {
+    return false;
+  }
   vtkPointData* sd = output->GetSampleData();
-  vtkTypeUInt64 usedRoles = 0;
+  const int localType = LocalType(a.Type, a.ElementSize);
+  const std::string named = "sample array " + std::to_string(k) + " '" + a.Name + "'";
+  if (localType < 0)
+  {
+    return src.Fail(named + " has an unknown data type " + std::to_string(a.Type) + " of " +
+      std::to_string(a.ElementSize) + " bytes");
+  }
+  if (a.Components < 1 || a.Components > (1u << 20) || a.Tuples != header.NumberOfSamples ||
+    (a.Roles >> Writer::NumberOfRoleBits) != 0 || (a.Roles & usedRoles) != 0)
+  {
+    return src.Fail(named + " has " + std::to_string(a.Tuples) + " tuples of " +
+      std::to_string(a.Components) + " components and roles " + std::to_string(a.Roles) +
+      " (expected one tuple per sample, " + std::to_string(header.NumberOfSamples) +
+      ", and roles not taken by another array)");
+  }
+  // Components * element size < 2^24 and tuples < 2^32: no overflow.
+  const vtkTypeUInt64 bytes = a.Tuples * a.Components * a.ElementSize;
+  if (bytes + 4 + 8 > src.Remaining())
+  {
+    return src.Fail(named + " needs " + std::to_string(bytes) + " bytes of values, then 12 " +
+        "bytes of checksum and trailer, but only " + std::to_string(src.Remaining()) +
+        " bytes remain (truncated or corrupted)",
+      Code::PrematureEndOfFileError);
+  }
+  if (!a.Name.empty() && sd->HasArray(a.Name.c_str()))
+  {
+    return src.Fail(named + " has the name of an earlier array");
+  }
+  auto array = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(localType));
+  array->SetNumberOfComponents(static_cast<int>(a.Components));
+  if (a.Tuples > 0 && !array->Resize(static_cast<vtkIdType>(a.Tuples)))
+  {
+    return src.Fail("cannot allocate " + named, Code::UnknownError);
+  }
+  array->SetNumberOfTuples(static_cast<vtkIdType>(a.Tuples));
+  if (!src.Values(a.Tuples > 0 ? array->GetVoidPointer(0) : nullptr,
+        a.Tuples * a.Components,
+        static_cast<int>(a.ElementSize),
+        named) ||
+    !src.EndSection(named))
+  {
+    return false;
+  }
+  if (!a.Name.empty())
+  {
+    array->SetName(a.Name.c_str());
+  }
+  const int index = sd->AddArray(array);
+  for (int r = 0; r < Writer::NumberOfRoleBits; ++r)
+  {
+    if (((a.Roles >> r) & 1u) && sd->SetActiveAttribute(index, r) < 0)
+    {
+      return src.Fail(named + " cannot be the active " +
+        vtkDataSetAttributes::GetAttributeTypeAsString(r) + " (" + catcher->Text + ")");
+    }
+  }
+  usedRoles |= a.Roles;
+  return true;
+}
+
+/// Read every sample array; the warnings of refused attribute roles explain the error.
+bool ReadSampleArrays(Source& src, const Header& header, vtkOFB* output)
+{
+  vtkPointData* sd = output->GetSampleData();
   vtkNew<WarningCatcher> catcher;
   const unsigned long tag = sd->AddObserver(vtkCommand::WarningEvent, catcher);
-  for (vtkTypeUInt64 k = 0; k < nArrays; ++k)
+  vtkTypeUInt64 usedRoles = 0;
+  bool ok = true;
+  for (vtkTypeUInt64 k = 0; k < header.NumberOfArrays && ok; ++k)
   {
-    const std::string where = "the header of sample array " + std::to_string(k);
-    unsigned char f[24];
-    if (!src.Raw(f, 4, where))
-    {
-      return false;
-    }
-    const vtkTypeUInt64 nameLength = GetLE(f, 4);
-    if (nameLength > 65536 || nameLength + 24 > src.Remaining())
-    {
-      return src.Fail(where + ": invalid name length " + std::to_string(nameLength));
-    }
-    std::string name(static_cast<size_t>(nameLength), '\0');
-    if ((nameLength > 0 && !src.Raw(&name[0], nameLength, where)) || !src.Raw(f, 24, where) ||
-      !src.EndSection(where))
-    {
-      return false;
-    }
-    const vtkTypeUInt64 type = GetLE(f, 4), elementSize = GetLE(f + 4, 4);
-    const vtkTypeUInt64 comps = GetLE(f + 8, 4), tuples = GetLE(f + 12, 8);
-    const vtkTypeUInt64 roles = GetLE(f + 20, 4);
-    const int localType = LocalType(type, elementSize);
-    const std::string named = "sample array " + std::to_string(k) + " '" + name + "'";
-    if (localType < 0)
-    {
-      return src.Fail(named + " has an unknown data type " + std::to_string(type) + " of " +
-        std::to_string(elementSize) + " bytes");
-    }
-    if (comps < 1 || comps > (1u << 20) || tuples != nSamples ||
-      (roles >> Writer::NumberOfRoleBits) != 0 || (roles & usedRoles) != 0)
-    {
-      return src.Fail(named + " has " + std::to_string(tuples) + " tuples of " +
-        std::to_string(comps) + " components and roles " + std::to_string(roles) +
-        " (expected one tuple per sample, " + std::to_string(nSamples) +
-        ", and roles not taken by another array)");
-    }
-    // comps * elementSize < 2^24 and tuples < 2^32: no overflow.
-    const vtkTypeUInt64 bytes = tuples * comps * elementSize;
-    if (bytes + 4 + 8 > src.Remaining())
-    {
-      return src.Fail(named + " needs " + std::to_string(bytes) + " bytes of values, then 12 " +
-          "bytes of checksum and trailer, but only " + std::to_string(src.Remaining()) +
-          " bytes remain (truncated or corrupted)",
-        Code::PrematureEndOfFileError);
-    }
-    if (!name.empty() && sd->HasArray(name.c_str()))
-    {
-      return src.Fail(named + " has the name of an earlier array");
-    }
-    auto array = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(localType));
-    array->SetNumberOfComponents(static_cast<int>(comps));
-    if (tuples > 0 && !array->Resize(static_cast<vtkIdType>(tuples)))
-    {
-      return src.Fail("cannot allocate " + named, Code::UnknownError);
-    }
-    array->SetNumberOfTuples(static_cast<vtkIdType>(tuples));
-    if (!src.Values(tuples > 0 ? array->GetVoidPointer(0) : nullptr,
-          tuples * comps,
-          static_cast<int>(elementSize),
-          named) ||
-      !src.EndSection(named))
-    {
-      return false;
-    }
-    if (!name.empty())
-    {
-      array->SetName(name.c_str());
-    }
-    const int index = sd->AddArray(array);
-    for (int r = 0; r < Writer::NumberOfRoleBits; ++r)
-    {
-      if (((roles >> r) & 1u) && sd->SetActiveAttribute(index, r) < 0)
-      {
-        return src.Fail(named + " cannot be the active " +
-          vtkDataSetAttributes::GetAttributeTypeAsString(r) + " (" + catcher->Text + ")");
-      }
-    }
-    usedRoles |= roles;
+    ok = ReadSampleArray(src, header, k, output, catcher, usedRoles);
   }
   sd->RemoveObserver(tag);
+  return ok;
+}
 
-  // Trailer, which must end the file.
+/// Read the trailer, which must end the file.
+bool ReadTrailer(Source& src)
+{
   char trailer[8];
   if (!src.Raw(trailer, 8, "the trailer") || std::memcmp(trailer, Writer::Trailer, 8) != 0)
   {
@@ -449,11 +510,20 @@ bool ReadOFB(const char* fileName, vtkOFB* output, Source& src)
     return src.Fail(
       std::to_string(src.Remaining()) + " unexpected bytes follow the end of the data");
   }
-  if (!output->BuildCellIndex())
-  {
-    return src.Fail("cannot rebuild the cell index");
-  }
   return true;
+}
+
+/// Read an OFB file into `output`; false with the problem in `src`.
+bool ReadOFB(const char* fileName, vtkOFB* output, Source& src)
+{
+  Header header;
+  if (!OpenFile(fileName, src) || !ReadHeader(src, header) || !CheckHeader(src, header) ||
+    !ReadCellOffsets(src, header, output) || !ReadDepths(src, header, output) ||
+    !ReadSampleArrays(src, header, output) || !ReadTrailer(src))
+  {
+    return false;
+  }
+  return output->BuildCellIndex() ? true : src.Fail("cannot rebuild the cell index");
 }
 }
 

@@ -9,6 +9,7 @@
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkOFB.h"
+#include "vtkOFBCPUSampler.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -23,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBSampler);
@@ -93,7 +95,7 @@ vtkIdType CopyValues(const T* in, vtkIdType nValues, double* out)
  * Copy the point coordinates (3 components) into `out` as doubles; the index of
  * the first point with a non-finite coordinate, or -1.
  */
-vtkIdType CopyPoints(vtkDataArray* points, double* out)
+vtkIdType CopyPointCoordinates(vtkDataArray* points, double* out)
 {
   const vtkIdType nValues = 3 * points->GetNumberOfTuples();
   vtkIdType bad = -1;
@@ -312,6 +314,46 @@ void AreaWeightedNormals(vtkOFBSurface& surface)
       }
     });
 }
+
+/**
+ * The triangles of a cell array of polygons or strips (n - 2 for a cell of n
+ * points), from its sizes alone.
+ */
+vtkIdType CountTriangles(vtkCellArray* cells)
+{
+  if (!cells)
+  {
+    return 0;
+  }
+  return std::max<vtkIdType>(0, cells->GetNumberOfConnectivityIds() - 2 * cells->GetNumberOfCells());
+}
+
+/**
+ * The point arrays of `pd` (of `nPoints` tuples) to interpolate into the samples:
+ * every named, non-bit array but those already used (`used`: normals, vectors,
+ * colours) or named as the samples' own arrays.
+ */
+void CollectOtherArrays(vtkPointData* pd, vtkIdType nPoints,
+  std::initializer_list<vtkDataArray*> used, vtkOFBSurface& surface)
+{
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = pd->GetArray(i);
+    if (!array || std::find(used.begin(), used.end(), array) != used.end() ||
+      array->GetDataType() == VTK_BIT || array->GetNumberOfTuples() != nPoints ||
+      !array->GetName() || !std::strcmp(array->GetName(), "Colors") ||
+      !std::strcmp(array->GetName(), "Normals") ||
+      (surface.Vectors && !std::strcmp(array->GetName(), surface.Vectors->GetName())))
+    {
+      continue;
+    }
+    if (array == pd->GetTCoords())
+    {
+      surface.TCoordsIndex = static_cast<int>(surface.Arrays.size());
+    }
+    surface.Arrays.push_back(AsAOS(array));
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -326,12 +368,22 @@ vtkOFBSampler::vtkOFBSampler()
 {
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 255;
   this->DefaultColor[3] = 255;
+  this->CPUBackend = vtk::TakeSmartPointer(vtkOFBCPUSampler::New());
 }
 
 //------------------------------------------------------------------------------
-vtkOFBSampler::~vtkOFBSampler()
+vtkOFBSampler::~vtkOFBSampler() = default;
+
+//------------------------------------------------------------------------------
+void vtkOFBSampler::ReleaseBuffers()
 {
-  this->ReleaseBuffers();
+  this->CPUBackend->ReleaseBuffers();
+}
+
+//------------------------------------------------------------------------------
+vtkOFBSamplerBackend* vtkOFBSampler::SelectBackend()
+{
+  return this->CPUBackend;
 }
 
 //------------------------------------------------------------------------------
@@ -347,16 +399,24 @@ int vtkOFBSampler::RequestData(
   this->LastBuildTime = 0.0;
 
   const double start = vtkTimerLog::GetUniversalTime();
-  vtkOFBSurface surface;
+  vtkOFBSamplerBackend* backend = this->SelectBackend();
+  this->LastBuildBackend = backend;
   this->UpdateProgress(0.0);
-  if (!this->PrepareSurface(input, surface))
+  vtkOFBSurface surface;
+  vtkOFBSamplerBackend::Job job;
+  job.Surface = &surface;
+  job.Output = output;
+  job.MemoryLimit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
+  job.Algorithm = this;
+  if (!this->CheckInputCells(input) || !this->CheckInputMemory(input, backend, job) ||
+    !this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, job))
   {
+    output->Initialize();
     return 1;
   }
   this->UpdateProgress(0.05);
-  if (!this->SampleOnCPU(surface, output))
+  if (this->RunBackend(backend, job) != vtkOFBSamplerBackend::Built)
   {
-    output->Initialize();
     return 1;
   }
   this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
@@ -365,7 +425,54 @@ int vtkOFBSampler::RequestData(
 }
 
 //------------------------------------------------------------------------------
+vtkOFBSamplerBackend::Result vtkOFBSampler::RunBackend(
+  vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job)
+{
+  vtkOFBSamplerBackend::Result result = backend->Sample(job);
+  if (result == vtkOFBSamplerBackend::Unavailable && backend != this->CPUBackend)
+  {
+    vtkWarningMacro("The " << backend->GetBackendName() << " build failed (" << job.Error
+                           << "); building on the CPU instead.");
+    job.Output->Initialize();
+    job.Error.clear();
+    this->LastBuildBackend = this->CPUBackend;
+    result = this->CPUBackend->Sample(job);
+  }
+  if (result != vtkOFBSamplerBackend::Built)
+  {
+    if (!job.Error.empty())
+    {
+      vtkErrorMacro(<< job.Error);
+    }
+    job.Output->Initialize();
+  }
+  return result;
+}
+
+//------------------------------------------------------------------------------
 bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
+{
+  if (!this->CopyPoints(input, surface) || !this->CollectTriangles(input, surface))
+  {
+    return false;
+  }
+  vtkDataArray* normals = this->PrepareNormals(input, surface);
+  vtkDataArray* vectors = nullptr;
+  if (!this->SelectVectors(input, surface, vectors))
+  {
+    return false;
+  }
+  vtkDataArray* colors = this->SelectColors(input, surface);
+  if (this->PassPointArrays)
+  {
+    CollectOtherArrays(
+      input->GetPointData(), input->GetNumberOfPoints(), { normals, vectors, colors }, surface);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::CheckInputCells(vtkPolyData* input)
 {
   if (!input || input->GetNumberOfPoints() == 0)
   {
@@ -383,18 +490,41 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     vtkErrorMacro("The input has no polygons or triangle strips: nothing to sample.");
     return false;
   }
+  return true;
+}
 
-  // Points, checked finite.
-  const vtkIdType nPoints = input->GetNumberOfPoints();
-  surface.Points.resize(3 * nPoints);
-  const vtkIdType badPoint = CopyPoints(input->GetPoints()->GetData(), surface.Points.data());
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::CheckInputMemory(
+  vtkPolyData* input, vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job)
+{
+  const vtkIdType points = input->GetNumberOfPoints();
+  const vtkIdType triangles = CountTriangles(input->GetPolys()) + CountTriangles(input->GetStrips());
+  if (!vtkOFBSamplerBackend::CheckMemoryLimit(
+        backend->EstimateBytes(points, triangles), job.MemoryLimit, job.Error))
+  {
+    vtkErrorMacro(<< job.Error);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::CopyPoints(vtkPolyData* input, vtkOFBSurface& surface)
+{
+  surface.Points.resize(3 * input->GetNumberOfPoints());
+  const vtkIdType badPoint = CopyPointCoordinates(input->GetPoints()->GetData(), surface.Points.data());
   if (badPoint >= 0)
   {
     vtkErrorMacro(
       "The input has non-finite (NaN or Inf) point coordinates, point " << badPoint << ".");
     return false;
   }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface)
+{
   // Triangles: the input's own cells when they are all triangles, else a triangulation.
   vtkSmartPointer<vtkPolyData> mesh = input;
   vtkCellArray* polys = input->GetPolys();
@@ -411,7 +541,7 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     triangulate->Update();
     mesh = triangulate->GetOutput();
   }
-  TriangleCollector triangles(surface.Points.data(), nPoints);
+  TriangleCollector triangles(surface.Points.data(), input->GetNumberOfPoints());
   if (!triangles.Collect(mesh->GetPolys(), surface))
   {
     vtkErrorMacro("The input has a polygon with an invalid point id.");
@@ -427,10 +557,15 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     vtkErrorMacro("The input has no triangle of non-zero area: nothing to sample.");
     return false;
   }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+vtkDataArray* vtkOFBSampler::PrepareNormals(vtkPolyData* input, vtkOFBSurface& surface)
+{
+  const vtkIdType nPoints = input->GetNumberOfPoints();
   // Normals: the input's point normals, else area-weighted ones.
-  vtkPointData* pd = input->GetPointData();
-  vtkDataArray* inNormals = pd->GetNormals();
+  vtkDataArray* inNormals = input->GetPointData()->GetNormals();
   surface.Normals.resize(3 * nPoints);
   if (inNormals && inNormals->GetNumberOfComponents() == 3 &&
     inNormals->GetNumberOfTuples() == nPoints)
@@ -467,9 +602,13 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     inNormals = nullptr;
     AreaWeightedNormals(surface);
   }
+  return inNormals;
+}
 
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::SelectVectors(vtkPolyData* input, vtkOFBSurface& surface, vtkDataArray*& vectors)
+{
   // The vector field: the array chosen with SetInputArrayToProcess, else the vectors.
-  vtkDataArray* vectors = nullptr;
   vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
   if (arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_ASSOCIATION()))
   {
@@ -484,7 +623,7 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
   }
   else
   {
-    vectors = pd->GetVectors();
+    vectors = input->GetPointData()->GetVectors();
   }
   if (vectors && vectors->GetNumberOfComponents() != 3)
   {
@@ -501,7 +640,13 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     surface.Vectors = v;
   }
   surface.ProjectVectors = this->ProjectVectors;
+  return true;
+}
 
+//------------------------------------------------------------------------------
+vtkDataArray* vtkOFBSampler::SelectColors(vtkPolyData* input, vtkOFBSurface& surface)
+{
+  vtkPointData* pd = input->GetPointData();
   // Initial paint.
   std::memcpy(surface.DefaultColor, this->DefaultColor, 4);
   vtkDataArray* colors = nullptr;
@@ -520,34 +665,11 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
   {
     surface.Colors = vtkUnsignedCharArray::SafeDownCast(AsAOS(colors));
   }
-
-  // Every other point array.
-  if (this->PassPointArrays)
-  {
-    for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
-    {
-      vtkDataArray* array = pd->GetArray(i);
-      if (!array || array == inNormals || array == vectors || array == colors ||
-        array->GetDataType() == VTK_BIT || array->GetNumberOfTuples() != nPoints ||
-        !array->GetName() || !std::strcmp(array->GetName(), "Colors") ||
-        !std::strcmp(array->GetName(), "Normals") ||
-        (surface.Vectors && !std::strcmp(array->GetName(), surface.Vectors->GetName())))
-      {
-        continue;
-      }
-      if (array == pd->GetTCoords())
-      {
-        surface.TCoordsIndex = static_cast<int>(surface.Arrays.size());
-      }
-      surface.Arrays.push_back(AsAOS(array));
-    }
-  }
-  return true;
+  return colors;
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSampler::ComputeFrame(
-  const vtkOFBSurface& surface, double origin[3], double& cellSize, vtkIdType dims[3])
+bool vtkOFBSampler::ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBackend::Job& job)
 {
   if (this->Resolution < 3 || this->Resolution > 65536)
   {
@@ -561,116 +683,29 @@ bool vtkOFBSampler::ComputeFrame(
     vtkErrorMacro("The input bounds are degenerate: nothing to sample.");
     return false;
   }
-  cellSize = longest / (this->Resolution - 2);
+  const double cellSize = longest / (this->Resolution - 2);
+  job.CellSize = cellSize;
   for (int a = 0; a < 3; ++a)
   {
     const double cells = std::ceil((b[2 * a + 1] - b[2 * a]) / cellSize - 1e-9);
-    dims[a] = std::max<vtkIdType>(1, static_cast<vtkIdType>(cells)) + 2;
-    origin[a] = 0.5 * (b[2 * a] + b[2 * a + 1]) - 0.5 * dims[a] * cellSize;
+    job.Dimensions[a] = std::max<vtkIdType>(1, static_cast<vtkIdType>(cells)) + 2;
+    job.Origin[a] = 0.5 * (b[2 * a] + b[2 * a + 1]) - 0.5 * job.Dimensions[a] * cellSize;
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-bool vtkOFBSampler::SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets,
-  double* estimateOut, bool estimateSamples)
-{
-  double origin[3], cellSize;
-  vtkIdType dims[3];
-  if (!this->ComputeFrame(surface, origin, cellSize, dims))
-  {
-    return false;
-  }
-  const double limit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
-  const double estimate =
-    this->EstimateBytes(surface, dims, cellSize, estimateSamples ? -1.0 : 0.0);
-  if (estimateOut)
-  {
-    *estimateOut = estimate;
-  }
-  if (estimate > limit)
-  {
-    vtkErrorMacro("Resolution " << this->Resolution << " needs about " << estimate / 1048576.0
-                                << " MiB, over the memory limit of " << this->MemoryLimit
-                                << " MiB. Lower the resolution or raise MemoryLimit.");
-    return false;
-  }
-  return output->SetFrame(origin, cellSize, dims, zeroOffsets);
 }
 
 //------------------------------------------------------------------------------
 double vtkOFBSampler::EstimateMemory(vtkPolyData* input)
 {
   vtkOFBSurface surface;
-  double origin[3], cellSize;
-  vtkIdType dims[3];
-  if (!this->PrepareSurface(input, surface) ||
-    !this->ComputeFrame(surface, origin, cellSize, dims))
+  vtkOFBSamplerBackend::Job job;
+  if (!this->CheckInputCells(input) || !this->PrepareSurface(input, surface) ||
+    !this->ComputeFrame(surface, job))
   {
     return -1.0;
   }
-  return this->EstimateBytes(surface, dims, cellSize);
-}
-
-//------------------------------------------------------------------------------
-double vtkOFBSampler::EstimateBytes(
-  const vtkOFBSurface& surface, const vtkIdType dims[3], double cellSize, double samples)
-{
-  // Projected area and perimeter of each triangle on its grid, in cells (summed per
-  // chunk in parallel, then over the chunks in order).
-  const double* P = surface.Points.data();
-  const vtkIdType* T = surface.Triangles.data();
-  if (samples < 0.0)
-  {
-    const vtkIdType nTris = surface.GetNumberOfTriangles();
-    const vtkIdType nChunks = (nTris + Chunk - 1) / Chunk;
-    std::vector<double> sums(nChunks, 0.0);
-    vtkSMPTools::For(0, nChunks, 1,
-      [&](vtkIdType c0, vtkIdType c1)
-      {
-        for (vtkIdType c = c0; c < c1; ++c)
-        {
-          for (vtkIdType t = c * Chunk; t < std::min(nTris, (c + 1) * Chunk); ++t)
-          {
-            double e1[3], e2[3], e3[3], n[3];
-            for (int k = 0; k < 3; ++k)
-            {
-              e1[k] = P[3 * T[3 * t + 1] + k] - P[3 * T[3 * t] + k];
-              e2[k] = P[3 * T[3 * t + 2] + k] - P[3 * T[3 * t] + k];
-              e3[k] = e2[k] - e1[k];
-            }
-            vtkMath::Cross(e1, e2, n);
-            const double area =
-              0.5 * std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
-            const double perimeter = vtkMath::Norm(e1) + vtkMath::Norm(e2) + vtkMath::Norm(e3);
-            sums[c] += area / (cellSize * cellSize) + 0.5 * perimeter / cellSize + 1.0;
-          }
-        }
-      });
-    samples = 0.0;
-    for (const double sum : sums)
-    {
-      samples += sum;
-    }
-  }
-  double cells = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    cells += static_cast<double>(dims[(a + 1) % 3]) * static_cast<double>(dims[(a + 2) % 3]);
-  }
-  // Per sample: depth, cell index, colour, normal, the build's temporaries
-  // (triangle, two barycentrics), the vector field and the other arrays.
-  double perSample = 4 + 4 + 4 + 12 + 12;
-  if (surface.Vectors)
-  {
-    perSample += 12;
-  }
-  for (const auto& array : surface.Arrays)
-  {
-    perSample += array->GetNumberOfComponents() * array->GetDataTypeSize();
-  }
-  // Per cell: the offsets and the build's counters.
-  return cells * 8.0 + samples * perSample;
+  const double samples = vtkOFBSamplerBackend::EstimateSamples(surface, job.CellSize);
+  return this->CPUBackend->EstimateBytes(surface, job.Dimensions, samples);
 }
 
 //------------------------------------------------------------------------------

@@ -28,22 +28,28 @@
  *
  * Rebuilding (an update after a change of input or setting) writes over the
  * memory of the previous output where nothing else holds its arrays (see
- * vtkOFB::Recycle) and over the sampler's own build buffers (a few hundred bytes
+ * vtkOFB::Recycle) and over the CPU backend's build buffers (a few hundred bytes
  * per triangle of the last input), which it keeps between updates;
  * ReleaseBuffers() frees them.
  *
- * @sa vtkOFB vtkOFBBuilder
+ * The scan conversion itself is done by a backend (vtkOFBSamplerBackend): the
+ * CPU one here, the OpenGL one too in vtkOFBBuilder.
+ *
+ * @sa vtkOFB vtkOFBBuilder vtkOFBSamplerBackend
  */
 
 #ifndef vtkOFBSampler_h
 #define vtkOFBSampler_h
 
 #include "vtkOFBAlgorithm.h"
-#include "vtkOFBFiltersModule.h" // for export macro
+#include "vtkOFBFiltersModule.h"   // for export macro
+#include "vtkOFBSamplerBackend.h"  // for Job, Result
+#include "vtkSmartPointer.h"       // for CPUBackend
+#include "vtkWeakPointer.h"        // for LastBuildBackend
 
+class vtkDataArray;
 class vtkPolyData;
 class vtkOFBSurface;
-class vtkOFBSamplerBuffers;
 
 class VTKOFBFILTERS_EXPORT vtkOFBSampler : public vtkOFBAlgorithm
 {
@@ -65,8 +71,11 @@ public:
   ///@{
   /**
    * Most memory a build may take, in MiB (default 8192). The sampler estimates the
-   * memory of the grids and samples before it allocates them and fails with an
-   * error when the estimate exceeds the limit.
+   * memory of the build (its copy of the surface, the backend's per-triangle
+   * buffers, the grids, the samples and their arrays) before it allocates any of
+   * it, and fails with an error when the estimate exceeds the limit: first from
+   * the input's numbers of points and triangles, before the surface is copied,
+   * then on the frame, and again as the backend counts its spans and samples.
    */
   vtkSetClampMacro(MemoryLimit, vtkIdType, 1, VTK_ID_MAX);
   vtkGetMacro(MemoryLimit, vtkIdType);
@@ -126,8 +135,9 @@ public:
   void ReleaseBuffers();
 
   /**
-   * Estimated bytes of a build of `input` at the current settings, or -1 if the
-   * input is not valid. Nothing is allocated.
+   * Estimated bytes of a build of `input` at the current settings on the CPU (the
+   * copy of the surface, the per-triangle buffers, the grids and the estimated
+   * samples), or -1 if the input is not valid. Only the surface is prepared.
    */
   double EstimateMemory(vtkPolyData* input);
 
@@ -135,56 +145,24 @@ protected:
   vtkOFBSampler();
   ~vtkOFBSampler() override;
 
+  /**
+   * The build: the input checked and prepared (vtkOFBSurface), the frame
+   * computed, then the backend given by SelectBackend() run; one that is
+   * unavailable for this build gives way to the CPU backend, with a warning.
+   */
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
-   * Validate and triangulate the input, compute normals and collect the arrays.
-   * Returns false after reporting an error.
+   * The backend that builds the next output: the CPU backend here (subclasses
+   * such as vtkOFBBuilder return another one).
    */
-  bool PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface);
+  virtual vtkOFBSamplerBackend* SelectBackend();
 
-  /**
-   * Compute the frame of a prepared surface at the current resolution. Returns
-   * false after reporting an error.
-   */
-  bool ComputeFrame(const vtkOFBSurface& surface, double origin[3], double& cellSize,
-    vtkIdType dims[3]);
+  /// The CPU backend (multi-threaded scan conversion with vtkSMPTools).
+  vtkOFBSamplerBackend* GetCPUBackend() const { return this->CPUBackend; }
 
-  /**
-   * Compute the frame of `surface`, check the build's estimated memory against
-   * MemoryLimit (before any large allocation) and set the frame of `output`
-   * (its cell offsets zero, or uninitialized for a backend that writes them all).
-   * The estimated bytes go to `estimate` when given. A backend that counts its
-   * samples exactly, and checks them before allocating them, passes
-   * `estimateSamples` false: the estimate then leaves the samples out (and
-   * saves a pass over the triangles).
-   * Returns false after reporting an error.
-   */
-  bool SetUpFrame(const vtkOFBSurface& surface, vtkOFB* output, bool zeroOffsets = true,
-    double* estimate = nullptr, bool estimateSamples = true);
-
-  /**
-   * Estimated bytes of a build of `surface` on the given frame: cell offsets and
-   * counters, samples (from the projected area and perimeter of each triangle),
-   * attributes and the build's temporaries. A non-negative `samples` replaces the
-   * estimated sample count by the exact one.
-   */
-  double EstimateBytes(
-    const vtkOFBSurface& surface, const vtkIdType dims[3], double cellSize, double samples = -1.0);
-
-  /**
-   * Fill the sample arrays of `output` (its samples already placed and sorted)
-   * from the triangle and barycentric coordinates (w1, w2) of each sample:
-   * colours, normals, the projected vector field and the other point arrays.
-   * Shared by the CPU and OpenGL backends, so both give the same attributes.
-   */
-  bool InterpolateAttributes(const vtkOFBSurface& surface, vtkOFB* output,
-    const vtkTypeUInt32* triangles, const float* w1, const float* w2);
-
-  /**
-   * Scan-convert the prepared surface into `output` on the CPU.
-   */
-  bool SampleOnCPU(const vtkOFBSurface& surface, vtkOFB* output);
+  /// The backend that built, or failed to build, the current output; null before any build.
+  vtkOFBSamplerBackend* GetLastBuildBackend() const { return this->LastBuildBackend; }
 
   int Resolution;
   vtkIdType MemoryLimit;
@@ -194,11 +172,54 @@ protected:
   bool ProjectVectors;
   vtkIdType NumberOfSkippedTriangles;
   double LastBuildTime;
-  vtkOFBSamplerBuffers* Buffers = nullptr;
 
 private:
   vtkOFBSampler(const vtkOFBSampler&) = delete;
   void operator=(const vtkOFBSampler&) = delete;
+
+  /**
+   * Whether the input has points and polygons or strips (warning about lines and
+   * vertices). Returns false after reporting an error.
+   */
+  bool CheckInputCells(vtkPolyData* input);
+
+  /**
+   * Check the memory of the build against MemoryLimit from the input's numbers of
+   * points and triangles alone, before anything is copied (a lower bound of the
+   * checks that follow). Returns false after reporting an error.
+   */
+  bool CheckInputMemory(
+    vtkPolyData* input, vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job);
+
+  ///@{
+  /**
+   * Validate and triangulate the input, compute normals and collect the arrays
+   * (PrepareSurface), in these steps. Those returning bool return false after
+   * reporting an error.
+   */
+  bool PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface);
+  bool CopyPoints(vtkPolyData* input, vtkOFBSurface& surface);
+  bool CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface);
+  vtkDataArray* PrepareNormals(vtkPolyData* input, vtkOFBSurface& surface);
+  bool SelectVectors(vtkPolyData* input, vtkOFBSurface& surface, vtkDataArray*& vectors);
+  vtkDataArray* SelectColors(vtkPolyData* input, vtkOFBSurface& surface);
+  ///@}
+
+  /**
+   * Compute the frame of a prepared surface at the current resolution into `job`.
+   * Returns false after reporting an error.
+   */
+  bool ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBackend::Job& job);
+
+  /**
+   * Run `backend` on `job`; the CPU backend instead, with a warning, when it is
+   * unavailable. Errors are reported; the output is empty unless Built.
+   */
+  vtkOFBSamplerBackend::Result RunBackend(
+    vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job);
+
+  vtkSmartPointer<vtkOFBSamplerBackend> CPUBackend;
+  vtkWeakPointer<vtkOFBSamplerBackend> LastBuildBackend;
 };
 
 #endif

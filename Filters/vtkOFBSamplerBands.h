@@ -12,7 +12,7 @@
  * band totals, pass 2 takes each band on its own, while its data is in cache: the
  * samples of each cell and their prefix sum (the cell offsets, written once); the
  * fragments of its triangles, a triangle at a time (depth, barycentrics and
- * attributes, vtkOFBSampleShader), each given the next slot of its cell; the slots
+ * attributes, vtkOFBAttributeInterpolator), each given the next slot of its cell; the slots
  * of each cell sorted by (depth, triangle id), the order of the OpenGL backend;
  * and the samples written in slot order. A band belongs to one thread (no
  * atomics) and is computed the same way whatever the number of threads, so the
@@ -26,7 +26,7 @@
 #define vtkOFBSamplerBands_h
 
 #include "vtkOFBHugePages.h"
-#include "vtkOFBSampleShader.h"
+#include "vtkOFBAttributeInterpolator.h"
 #include "vtkOFBTriangleRaster.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkType.h"
@@ -98,7 +98,7 @@ struct SpanRecord
  */
 struct BandScratch
 {
-  std::vector<float> Depth, W1, W2, N[3], V[3], Tmp;
+  std::vector<float> Depth, W1, W2, Normals[3], Vectors[3], Tmp;
   std::vector<unsigned char> RGBA, Touched;
   std::vector<vtkTypeUInt32> Tri, Order, Slot, VisitStart, VisitTri;
   bool KeepFragments = false;
@@ -124,7 +124,7 @@ struct BandScratch
     grow(this->Slot, nCells + 1);
     grow(this->Touched, nCells / 8 + 1);
     for (auto* v :
-      { &this->Depth, &this->W1, &this->W2, &this->N[0], &this->N[1], &this->N[2], &this->Tmp })
+      { &this->Depth, &this->W1, &this->W2, &this->Normals[0], &this->Normals[1], &this->Normals[2], &this->Tmp })
     {
       grow(*v, n + 8);
     }
@@ -135,7 +135,7 @@ struct BandScratch
     grow(this->Order, n);
     for (int k = 0; vectors && k < 3; ++k)
     {
-      grow(this->V[k], n);
+      grow(this->Vectors[k], n);
     }
     if (colors)
     {
@@ -150,14 +150,14 @@ struct BandScratch
     return this->VisitTri[(it - this->VisitStart.begin()) - 1];
   }
 
-  /// Where Shader::Shade writes the attributes of fragments [f, ...).
-  vtkOFBSampleShader::Run RunAt(vtkIdType f)
+  /// Where vtkOFBAttributeInterpolator::Interpolate writes the attributes of fragments [f, ...).
+  vtkOFBAttributeInterpolator::Run RunAt(vtkIdType f)
   {
-    vtkOFBSampleShader::Run run;
+    vtkOFBAttributeInterpolator::Run run;
     for (int k = 0; k < 3; ++k)
     {
-      run.N[k] = this->N[k].data() + f;
-      run.V[k] = this->V[k].empty() ? nullptr : this->V[k].data() + f;
+      run.Normals[k] = this->Normals[k].data() + f;
+      run.Vectors[k] = this->Vectors[k].empty() ? nullptr : this->Vectors[k].data() + f;
     }
     run.RGBA = this->RGBA.empty() ? nullptr : this->RGBA.data() + 4 * f;
     run.Scratch = this->Tmp.data(); // only for one call
@@ -211,11 +211,12 @@ struct Buffer
   T* Get() const { return this->Data.get(); }
 };
 
-/// The bands [B0, B1] and rows [V0, V1] of a set-up triangle (none when B0 > B1).
+/// The bands [FirstBand, LastBand] and rows [FirstRow, LastRow] of a set-up triangle
+/// (none when FirstBand > LastBand).
 struct BandRange
 {
-  vtkTypeUInt32 B0, B1;
-  int32_t V0, V1;
+  vtkTypeUInt32 FirstBand, LastBand;
+  int32_t FirstRow, LastRow;
 };
 }
 
@@ -242,9 +243,9 @@ public:
   BandBuilder(
     const vtkOFBSurface& surface, const vtkOFBRasterFrame& frame, vtkOFBSamplerBuffers& buffers)
     : Surface(surface)
-    , F(frame)
-    , Shading(surface)
-    , B(buffers)
+    , Frame(frame)
+    , Interpolator(surface)
+    , Buffers(buffers)
   {
   }
 
@@ -288,9 +289,9 @@ public:
   void FillBand(const Band& band, const Output& out, BandScratch& s) const;
 
   const vtkOFBSurface& Surface;
-  const vtkOFBRasterFrame F;
-  const vtkOFBSampleShader Shading;
-  vtkOFBSamplerBuffers& B;
+  const vtkOFBRasterFrame Frame;
+  const vtkOFBAttributeInterpolator Interpolator;
+  vtkOFBSamplerBuffers& Buffers;
   vtkOFBTriangleRaster* Setups = nullptr;
   BandRange* Ranges = nullptr;
   std::vector<Band> Bands;
@@ -300,8 +301,23 @@ public:
 
 private:
   int Shift[3] = { 0, 0, 0 };
-  vtkIdType FirstBand[3] = { 0, 0, 0 };
+  vtkIdType FirstBandOfGrid[3] = { 0, 0, 0 };
   vtkIdType FirstKey[3] = { 0, 0, 0 }; // setup order keys of each grid (SetupTriangles)
+
+  ///@{
+  /**
+   * The steps of SetupTriangles: the setup order key of every triangle (the band
+   * and row of its lowest vertex, entering or leaving; returns six times the
+   * volume the triangles enclose), the keys swapped so that the triangles
+   * entering a surface wound inwards come first, the triangles sorted by key (a
+   * counting sort, stable), and every triangle set up in that order (in
+   * parallel) with its band range.
+   */
+  double ComputeSetupKeys();
+  void PutInwardKeysFirst();
+  void SortBySetupKey();
+  void SetUpInOrder();
+  ///@}
 
   /// The grid of a setup order key.
   int AxisOfKey(vtkTypeUInt32 key) const

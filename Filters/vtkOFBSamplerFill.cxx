@@ -21,9 +21,11 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
 {
   const SpanRecord* spans = this->Spans;
   const vtkIdType nCells = band.Cell1 - band.Cell0;
-  const vtkIdType rowLength = this->F.Dims[(band.Axis + 1) % 3];
-  s.Reserve(band.Count, nCells, out.Vectors != nullptr, this->Shading.C != nullptr,
-    !out.Others.empty());
+  const vtkIdType rowLength = this->Frame.Dims[(band.Axis + 1) % 3];
+  const bool vectors = out.Vectors != nullptr;
+  const bool colors = this->Interpolator.PointColors != nullptr;
+  const bool keepFragments = !out.Others.empty(); // the other arrays are interpolated after the sort
+  s.Reserve(band.Count, nCells, vectors, colors, keepFragments);
   // slot[c]: the change in the number of samples from cell c - 1 to cell c (+1
   // where a span starts, -1 after it ends), then the first slot of cell c, then
   // (once the fragments are placed) its end.
@@ -104,8 +106,9 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
     s.VisitTri.push_back(ts.Tri);
     vtkIdType ids[3];
     ts.GetPointIds(ids);
-    this->Shading.Shade(ids, f - f0, s.W1.data() + f0 - w0, s.W2.data() + f0 - w0,
-      s.RunAt(f0), ts.MayCancel, true);
+    const bool padded = true; // the scratch has room for 8 more fragments
+    this->Interpolator.Interpolate(ids, f - f0, s.W1.data() + f0 - w0, s.W2.data() + f0 - w0,
+      s.RunAt(f0), ts.MayCancel, padded);
   }
   SortCells(band.Count, cellOf, s);
   this->WriteSamples(band, out, s);
@@ -201,11 +204,11 @@ void BandBuilder::WriteSamples(const Band& band, const Output& out, const BandSc
   const vtkIdType n = band.Count;
   const vtkTypeUInt32* order = s.Order.data();
   const float* depth = s.Depth.data();
-  const float* nx = s.N[0].data();
-  const float* ny = s.N[1].data();
-  const float* nz = s.N[2].data();
-  const bool colors = this->Shading.C != nullptr;
-  const unsigned char* rgba = colors ? s.RGBA.data() : this->Shading.DefaultColor;
+  const float* nx = s.Normals[0].data();
+  const float* ny = s.Normals[1].data();
+  const float* nz = s.Normals[2].data();
+  const bool colors = this->Interpolator.PointColors != nullptr;
+  const unsigned char* rgba = colors ? s.RGBA.data() : this->Interpolator.DefaultColor;
   const int stride = colors ? 4 : 0;
   float* outDepth = out.Depth + band.First;
   float* outNormals = out.Normals + 3 * band.First;
@@ -262,13 +265,13 @@ void BandBuilder::WriteSamples(const Band& band, const Output& out, const BandSc
     {
       for (int c = 0; c < 3; ++c)
       {
-        outVectors[3 * k + c] = s.V[c][order[k]];
+        outVectors[3 * k + c] = s.Vectors[c][order[k]];
       }
     }
   }
   for (size_t k = 0; k < out.Others.size(); ++k)
   {
-    vtkOFBSampleShader::InterpolateArray(out.OthersIn[k], out.Others[k], band.First, band.Count,
+    vtkOFBAttributeInterpolator::InterpolateArray(out.OthersIn[k], out.Others[k], band.First, band.Count,
       this->Surface.Triangles.data(), s.Tri.data(), s.W1.data(), s.W2.data(), order);
   }
 }

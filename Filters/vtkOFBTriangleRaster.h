@@ -54,7 +54,7 @@ struct vtkOFBTriangleRaster
   int8_t Axis;            // grid, or -1 when the triangle covers no cell centre
   bool MayCancel;         // its point normals may cancel (set by the sampler, not by Setup)
 
-  /// The point ids of the vertices, as the sample shader takes them.
+  /// The point ids of the vertices, as the attribute interpolator takes them.
   void GetPointIds(vtkIdType ids[3]) const
   {
     ids[0] = this->Ids[0];

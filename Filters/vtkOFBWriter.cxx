@@ -4,15 +4,22 @@
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
 #include "vtkOFB.h"
+#include "vtkOFBFileFormat.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
+#include "vtk_zlib.h"
+
+#include <vtksys/Directory.hxx>
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -22,6 +29,9 @@
 #include <process.h>
 #include <windows.h>
 #else
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #endif
 
@@ -29,28 +39,95 @@ vtkStandardNewMacro(vtkOFBWriter);
 
 namespace
 {
-bool HostIsLittleEndian()
-{
-  const vtkTypeUInt32 one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
+namespace fmt = vtkofb::format;
 
-/// Append `value` to `out` as `size` little-endian bytes.
-void PutLE(std::vector<unsigned char>& out, vtkTypeUInt64 value, int size)
+/// What the writer writes: the OFB's storage and sample arrays, and the file size.
+struct Contents
 {
-  for (int i = 0; i < size; ++i)
+  vtkIdType NumberOfCells = 0;
+  vtkIdType NumberOfSamples = 0;
+  const vtkTypeUInt32* Offsets = nullptr;
+  const float* Depths = nullptr;
+  std::vector<vtkSmartPointer<vtkDataArray>> Arrays; // standard memory layout
+  std::vector<vtkTypeUInt32> Roles;                  // attribute bit masks
+  vtkTypeUInt64 FileSize = 0;
+};
+
+const vtkTypeUInt32 NoOffsets = 0;
+
+/// Take the frame's storage into `c`; a problem when the reader would refuse it.
+std::string CollectStorage(vtkOFB* ofb, Contents& c)
+{
+  c.NumberOfCells = ofb->GetNumberOfCells();
+  c.NumberOfSamples = ofb->GetNumberOfSamples();
+  const vtkIdType nOffsets = ofb->GetCellOffsets()->GetNumberOfValues();
+  c.Offsets = nOffsets > 0 ? ofb->GetCellOffsets()->GetPointer(0) : &NoOffsets;
+  c.Depths = c.NumberOfSamples > 0 ? ofb->GetDepths()->GetPointer(0) : nullptr;
+  // What the reader checks: offsets from 0 to the sample count, finite sorted depths.
+  const vtkTypeUInt32* o = c.Offsets;
+  const vtkIdType nCells = c.NumberOfCells;
+  bool valid = (nOffsets == nCells + 1 || (nCells == 0 && nOffsets == 0)) && o[0] == 0 &&
+    static_cast<vtkIdType>(o[nCells]) == c.NumberOfSamples;
+  for (vtkIdType cell = 0; cell < nCells && valid; ++cell)
   {
-    out.push_back(static_cast<unsigned char>((value >> (8 * i)) & 0xFFu));
+    valid = o[cell] <= o[cell + 1];
+    for (vtkTypeUInt32 i = o[cell]; i < o[cell + 1] && valid; ++i)
+    {
+      valid = std::isfinite(c.Depths[i]) && (i == o[cell] || c.Depths[i - 1] <= c.Depths[i]);
+    }
   }
+  if (!valid)
+  {
+    return "the OFB is inconsistent (" + std::to_string(nOffsets) + " cell offsets for " +
+      std::to_string(nCells) + " cells and " + std::to_string(c.NumberOfSamples) +
+      " samples, decreasing offsets, or depths not finite or not sorted within a cell)";
+  }
+  c.FileSize = vtkOFBWriter::HeaderSize + 4 * (nCells + 1) + 4 + 4 * c.NumberOfSamples + 4 + 8;
+  return std::string();
 }
 
-void PutDouble(std::vector<unsigned char>& out, double value)
+/// Take the sample arrays with their attribute roles into `c`; a problem if one cannot be stored.
+std::string CollectArrays(vtkOFB* ofb, Contents& c)
 {
-  vtkTypeUInt64 bits;
-  std::memcpy(&bits, &value, sizeof(bits));
-  PutLE(out, bits, 8);
+  vtkPointData* sd = ofb->GetSampleData();
+  for (int i = 0; i < sd->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* abstract = sd->GetAbstractArray(i);
+    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
+    const std::string name = abstract && abstract->GetName() ? abstract->GetName() : "";
+    if (!array || array->GetDataType() == VTK_BIT)
+    {
+      return "sample array " + std::to_string(i) + " '" + name + "' is not a numeric array (" +
+        (abstract ? abstract->GetClassName() : "null") + ")";
+    }
+    if (name.size() > 65536)
+    {
+      return "the name of sample array " + std::to_string(i) + " is longer than 65536 bytes";
+    }
+    if (array->GetNumberOfTuples() != c.NumberOfSamples)
+    {
+      return "sample array '" + name + "' has " + std::to_string(array->GetNumberOfTuples()) +
+        " tuples for " + std::to_string(c.NumberOfSamples) + " samples";
+    }
+    vtkSmartPointer<vtkDataArray> aos = array;
+    if (!array->HasStandardMemoryLayout())
+    {
+      aos =
+        vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(array->GetDataType()));
+      aos->DeepCopy(array);
+    }
+    vtkTypeUInt32 mask = 0;
+    for (int k = 0; k < vtkOFBWriter::NumberOfRoleBits; ++k)
+    {
+      mask |= sd->GetAbstractAttribute(k) == abstract ? 1u << k : 0u;
+    }
+    c.Arrays.push_back(aos);
+    c.Roles.push_back(mask);
+    c.FileSize += 4 + name.size() + 28 + 4 +
+      static_cast<vtkTypeUInt64>(c.NumberOfSamples) * array->GetNumberOfComponents() *
+        array->GetDataTypeSize();
+  }
+  return std::string();
 }
 
 /**
@@ -89,18 +166,14 @@ struct Sink
   {
     const size_t chunk = (size_t(1) << 22) / elementSize;
     const unsigned char* p = static_cast<const unsigned char*>(data);
-    const bool swap = elementSize > 1 && !HostIsLittleEndian();
     for (vtkTypeUInt64 first = 0; first < count && !this->Failed; first += chunk)
     {
       const size_t n = static_cast<size_t>(std::min<vtkTypeUInt64>(chunk, count - first));
       const unsigned char* src = p + first * elementSize;
-      if (swap)
+      if (!fmt::HostIsLittleEndian() && elementSize > 1)
       {
         this->Swapped.assign(src, src + n * elementSize);
-        for (size_t i = 0; i < n; ++i)
-        {
-          std::reverse(&this->Swapped[i * elementSize], &this->Swapped[(i + 1) * elementSize]);
-        }
+        fmt::SwapLittleEndian(this->Swapped.data(), n, elementSize);
         src = this->Swapped.data();
       }
       this->Raw(src, n * elementSize);
@@ -112,23 +185,362 @@ struct Sink
   void EndSection()
   {
     std::vector<unsigned char> bytes;
-    PutLE(bytes, this->CRC, 4);
+    fmt::PutLE(bytes, this->CRC, 4);
     this->Raw(bytes.data(), bytes.size());
     this->CRC = 0;
   }
+
+  void Header(vtkOFB* ofb, const Contents& c)
+  {
+    std::vector<unsigned char> bytes(vtkOFBWriter::Magic, vtkOFBWriter::Magic + 8);
+    fmt::PutLE(bytes, vtkOFBWriter::GetFormatVersion(), 4);
+    fmt::PutLE(bytes, vtkOFBWriter::ByteOrderMark, 4);
+    for (int a = 0; a < 3; ++a)
+    {
+      fmt::PutDouble(bytes, ofb->GetOrigin()[a]);
+    }
+    fmt::PutDouble(bytes, ofb->GetCellSize());
+    for (int a = 0; a < 3; ++a)
+    {
+      fmt::PutLE(bytes, static_cast<vtkTypeUInt64>(ofb->GetDimensions()[a]), 8);
+    }
+    fmt::PutLE(bytes, static_cast<vtkTypeUInt64>(c.NumberOfCells), 8);
+    fmt::PutLE(bytes, static_cast<vtkTypeUInt64>(c.NumberOfSamples), 8);
+    fmt::PutLE(bytes, c.Arrays.size(), 4);
+    this->Raw(bytes.data(), bytes.size());
+    this->EndSection();
+  }
+
+  void Storage(const Contents& c)
+  {
+    this->Values(c.Offsets, static_cast<vtkTypeUInt64>(c.NumberOfCells) + 1, 4);
+    this->EndSection();
+    this->Values(c.Depths, c.NumberOfSamples, 4);
+    this->EndSection();
+  }
+
+  void Arrays(const Contents& c)
+  {
+    for (size_t i = 0; i < c.Arrays.size(); ++i)
+    {
+      vtkDataArray* array = c.Arrays[i];
+      const std::string name = array->GetName() ? array->GetName() : "";
+      std::vector<unsigned char> bytes;
+      fmt::PutLE(bytes, name.size(), 4);
+      bytes.insert(bytes.end(), name.begin(), name.end());
+      fmt::PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetDataType()), 4);
+      fmt::PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetDataTypeSize()), 4);
+      fmt::PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetNumberOfComponents()), 4);
+      fmt::PutLE(bytes, static_cast<vtkTypeUInt64>(c.NumberOfSamples), 8);
+      fmt::PutLE(bytes, c.Roles[i], 4);
+      this->Raw(bytes.data(), bytes.size());
+      this->EndSection();
+      this->Values(c.NumberOfSamples > 0 ? array->GetVoidPointer(0) : nullptr,
+        static_cast<vtkTypeUInt64>(c.NumberOfSamples) * array->GetNumberOfComponents(),
+        array->GetDataTypeSize());
+      this->EndSection();
+    }
+  }
 };
 
-/// Flush the data of an open file to the disk; false on failure.
-bool SyncToDisk(std::FILE* file)
+std::atomic<unsigned int> TemporaryCounter(0);
+
+long ProcessId()
 {
 #if defined(_WIN32)
-  return _commit(_fileno(file)) == 0;
+  return static_cast<long>(_getpid());
 #else
-  return fsync(fileno(file)) == 0;
+  return static_cast<long>(getpid());
 #endif
 }
 
-std::atomic<unsigned int> TemporaryCounter(0);
+/// The directory part of `path` ("." when it has none).
+std::string DirectoryOf(const std::string& path)
+{
+  const std::string::size_type slash = path.find_last_of("/\\");
+  return slash == std::string::npos ? std::string(".")
+                                    : (slash == 0 ? std::string("/") : path.substr(0, slash));
+}
+
+/// The file that `path` names once its symbolic links are followed (it may not exist).
+std::string FollowLinks(const std::string& path)
+{
+  std::string file = path;
+#if !defined(_WIN32)
+  for (int hop = 0; hop < 40; ++hop)
+  {
+    struct stat info;
+    if (lstat(file.c_str(), &info) != 0 || !S_ISLNK(info.st_mode))
+    {
+      break;
+    }
+    std::vector<char> link(static_cast<size_t>(std::max<off_t>(info.st_size, PATH_MAX)) + 1);
+    const ssize_t n = readlink(file.c_str(), link.data(), link.size() - 1);
+    if (n <= 0)
+    {
+      break;
+    }
+    const std::string to(link.data(), static_cast<size_t>(n));
+    file = to[0] == '/' ? to : DirectoryOf(file) + "/" + to;
+  }
+#endif
+  return file;
+}
+
+/**
+ * Remove the named temporaries "<target>.tmp-<pid>-<n>" that writers left behind
+ * when their process died (killed, or crashed) before renaming them. A temporary of a
+ * living process (this one included) is kept.
+ */
+void RemoveStaleTemporaries(const std::string& target)
+{
+#if !defined(_WIN32)
+  const std::string directory = DirectoryOf(target);
+  const std::string prefix = target.substr(target.find_last_of('/') + 1) + ".tmp-";
+  vtksys::Directory listing;
+  if (!listing.Load(directory))
+  {
+    return;
+  }
+  for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
+  {
+    const std::string name = listing.GetFile(i);
+    if (name.compare(0, prefix.size(), prefix) != 0)
+    {
+      continue;
+    }
+    char* end = nullptr;
+    const long pid = std::strtol(name.c_str() + prefix.size(), &end, 10);
+    char* counterEnd = nullptr;
+    const bool wellFormed = pid > 0 && end && *end == '-' && std::isdigit(end[1]) &&
+      (std::strtoul(end + 1, &counterEnd, 10), *counterEnd == '\0');
+    if (wellFormed && pid != ProcessId() && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+    {
+      unlink((directory + "/" + name).c_str());
+    }
+  }
+#else
+  (void)target;
+#endif
+}
+
+/**
+ * The file that replaces the target: written, flushed to the disk, then renamed over
+ * the target in one step, with the target's permissions. Where the system allows it
+ * (Linux's O_TMPFILE), the file has no name until it is complete, so a crash leaves
+ * nothing behind; otherwise it is "<target>.tmp-<pid>-<n>", which
+ * RemoveStaleTemporaries removes after a crash.
+ */
+class ReplacementFile
+{
+public:
+  ~ReplacementFile() { this->Discard(); }
+
+  /// Create the file beside `target`; false with the problem in Problem.
+  bool Create(const std::string& target)
+  {
+    this->Target = target;
+    this->Name =
+      target + ".tmp-" + std::to_string(ProcessId()) + "-" + std::to_string(TemporaryCounter++);
+#if defined(_WIN32)
+    this->Stream = std::fopen(this->Name.c_str(), "wb");
+    return this->Stream ? true : this->Fail("cannot create the temporary file " + this->Name);
+#else
+    struct stat existing;
+    const bool keepMode = stat(target.c_str(), &existing) == 0 && S_ISREG(existing.st_mode);
+    // A new file gets 0666 less the umask, as fopen gives; a replacement starts private
+    // and takes the target's mode and owner.
+    const mode_t mode = keepMode ? 0600 : 0666;
+    this->Descriptor = this->OpenUnnamed(mode);
+    this->Unnamed = this->Descriptor >= 0;
+    if (!this->Unnamed)
+    {
+      this->Descriptor = open(this->Name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
+    }
+    if (this->Descriptor < 0)
+    {
+      return this->Fail("cannot create the temporary file " + this->Name);
+    }
+    if (keepMode)
+    {
+      (void)!fchown(this->Descriptor, existing.st_uid, existing.st_gid); // may be refused
+      if (fchmod(this->Descriptor, existing.st_mode & 07777) != 0)
+      {
+        return this->Fail("cannot give the temporary file the permissions of the target");
+      }
+    }
+    this->Stream = fdopen(this->Descriptor, "wb");
+    if (!this->Stream)
+    {
+      return this->Fail("cannot open a stream on the temporary file");
+    }
+    this->Descriptor = -1; // owned by the stream now
+    return true;
+#endif
+  }
+
+  std::FILE* GetStream() const
+  {
+    return this->Stream;
+  }
+  bool IsUnnamed() const
+  {
+    return this->Unnamed;
+  }
+
+  /// Flush the data to the disk; false with the problem in Problem.
+  bool Flush()
+  {
+    if (std::fflush(this->Stream) != 0)
+    {
+      return this->Fail("flushing the temporary file failed");
+    }
+#if defined(_WIN32)
+    const bool synced = _commit(_fileno(this->Stream)) == 0;
+#else
+    const bool synced = fsync(fileno(this->Stream)) == 0;
+#endif
+    return synced ? true : this->Fail("flushing the temporary file to the disk failed");
+  }
+
+  /**
+   * Put the complete file in place of the target: name it (if unnamed), rename it
+   * over the target, and flush the directory so that the new name survives a power
+   * cut. False with the problem in Problem; the target is then unchanged.
+   */
+  bool Commit()
+  {
+#if defined(_WIN32)
+    std::fclose(this->Stream);
+    this->Stream = nullptr;
+    // std::rename does not replace an existing file on Windows.
+    if (MoveFileExA(this->Name.c_str(),
+          this->Target.c_str(),
+          MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH) == 0)
+    {
+      return this->Fail("renaming the temporary file " + this->Name + " over it failed");
+    }
+    this->Name.clear();
+    return true;
+#else
+    if (this->Unnamed)
+    {
+      const std::string self = "/proc/self/fd/" + std::to_string(fileno(this->Stream));
+      if (linkat(AT_FDCWD, self.c_str(), AT_FDCWD, this->Name.c_str(), AT_SYMLINK_FOLLOW) != 0)
+      {
+        return this->Fail("naming the temporary file " + this->Name + " failed");
+      }
+      this->Unnamed = false;
+    }
+    if (std::fclose(this->Stream) != 0)
+    {
+      this->Stream = nullptr;
+      return this->Fail("closing the temporary file " + this->Name + " failed");
+    }
+    this->Stream = nullptr;
+    if (std::rename(this->Name.c_str(), this->Target.c_str()) != 0)
+    {
+      return this->Fail("renaming the temporary file " + this->Name + " over it failed");
+    }
+    this->Name.clear();
+    const int directory = open(DirectoryOf(this->Target).c_str(), O_RDONLY | O_CLOEXEC);
+    if (directory >= 0)
+    {
+      fsync(directory);
+      close(directory);
+    }
+    return true;
+#endif
+  }
+
+  /// Close and remove the file if it was not committed.
+  void Discard()
+  {
+    if (this->Stream)
+    {
+      std::fclose(this->Stream);
+      this->Stream = nullptr;
+    }
+#if !defined(_WIN32)
+    if (this->Descriptor >= 0)
+    {
+      close(this->Descriptor);
+      this->Descriptor = -1;
+    }
+#endif
+    if (!this->Unnamed && !this->Name.empty())
+    {
+      std::remove(this->Name.c_str());
+    }
+    this->Name.clear();
+  }
+
+  std::string Problem;
+  int Errno = 0;
+
+private:
+  bool Fail(const std::string& problem)
+  {
+    this->Errno = errno;
+    this->Problem = problem + " (" + std::strerror(this->Errno) + ")";
+    return false;
+  }
+
+#if !defined(_WIN32)
+  /// An unnamed file in the target's directory, or -1 where the system has none.
+  int OpenUnnamed(mode_t mode) const
+  {
+#if defined(O_TMPFILE)
+    // Naming it later goes through /proc/self/fd.
+    if (access("/proc/self/fd", X_OK) == 0)
+    {
+      return open(DirectoryOf(this->Target).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, mode);
+    }
+#endif
+    (void)mode;
+    return -1;
+  }
+  int Descriptor = -1;
+#endif
+
+  std::string Target;
+  std::string Name;
+  std::FILE* Stream = nullptr;
+  bool Unnamed = false;
+};
+/**
+ * Write the file's bytes to `file` and flush them to the disk; false with the
+ * problem and the system's error number otherwise.
+ */
+bool WriteContents(vtkAlgorithm* owner,
+  vtkOFB* ofb,
+  const Contents& contents,
+  ReplacementFile& file,
+  std::string& problem,
+  int& error)
+{
+  Sink sink;
+  sink.Owner = owner;
+  sink.File = file.GetStream();
+  sink.Total = contents.FileSize;
+  sink.Header(ofb, contents);
+  sink.Storage(contents);
+  sink.Arrays(contents);
+  sink.Raw(vtkOFBWriter::Trailer, 8);
+  if (!sink.Failed && !file.Flush())
+  {
+    sink.Failed = true;
+    sink.Errno = file.Errno;
+  }
+  if (sink.Failed || sink.Done != contents.FileSize)
+  {
+    error = sink.Errno;
+    problem = "writing the temporary file failed after " + std::to_string(sink.Done) + " of " +
+      std::to_string(contents.FileSize) + " bytes (" + std::strerror(sink.Errno) + ")";
+    return false;
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -165,29 +577,17 @@ int vtkOFBWriter::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 unsigned int vtkOFBWriter::UpdateCRC32(unsigned int crc, const void* data, size_t size)
 {
-  static const struct Table
+  // zlib takes at most 2^32 - 1 bytes at a time.
+  const Bytef* p = static_cast<const Bytef*>(data);
+  uLong c = crc;
+  while (size > 0)
   {
-    vtkTypeUInt32 Entries[256];
-    Table()
-    {
-      for (vtkTypeUInt32 i = 0; i < 256; ++i)
-      {
-        vtkTypeUInt32 c = i;
-        for (int k = 0; k < 8; ++k)
-        {
-          c = (c & 1u) ? (0xEDB88320u ^ (c >> 1)) : (c >> 1);
-        }
-        this->Entries[i] = c;
-      }
-    }
-  } table;
-  const unsigned char* p = static_cast<const unsigned char*>(data);
-  vtkTypeUInt32 c = ~static_cast<vtkTypeUInt32>(crc);
-  for (size_t i = 0; i < size; ++i)
-  {
-    c = table.Entries[(c ^ p[i]) & 0xFFu] ^ (c >> 8);
+    const uInt n = static_cast<uInt>(std::min<size_t>(size, size_t(1) << 30));
+    c = crc32(c, p, n);
+    p += n;
+    size -= n;
   }
-  return ~c;
+  return static_cast<unsigned int>(c);
 }
 
 //------------------------------------------------------------------------------
@@ -208,212 +608,45 @@ void vtkOFBWriter::WriteData()
     return;
   }
   this->UpdateProgress(0.0);
-
-#if defined(_WIN32)
-  const long pid = static_cast<long>(_getpid());
-#else
-  const long pid = static_cast<long>(getpid());
-#endif
-  const std::string temporary = std::string(this->FileName) + ".tmp-" + std::to_string(pid) + "-" +
-    std::to_string(TemporaryCounter++);
-  if (!this->WriteToTemporary(ofb, temporary.c_str()))
+  Contents contents;
+  std::string problem = CollectStorage(ofb, contents);
+  problem = problem.empty() ? CollectArrays(ofb, contents) : problem;
+  if (!problem.empty())
   {
-    std::remove(temporary.c_str());
+    vtkErrorMacro("Cannot write " << this->FileName << ": " << problem << ".");
+    this->SetErrorCode(vtkErrorCode::UnknownError);
     return;
   }
-#if defined(_WIN32)
-  // std::rename does not replace an existing file on Windows.
-  const bool renamed =
-    MoveFileExA(
-      temporary.c_str(), this->FileName, MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH) != 0;
-#else
-  const bool renamed = std::rename(temporary.c_str(), this->FileName) == 0;
-#endif
-  if (!renamed)
+  // Through a symbolic link, replace the file it points to and keep the link.
+  const std::string target = FollowLinks(this->FileName);
+  RemoveStaleTemporaries(target);
+  ReplacementFile file;
+  int error = 0;
+  if (!file.Create(target))
   {
-    const int error = errno;
-    std::remove(temporary.c_str());
-    vtkErrorMacro("Cannot write " << this->FileName << ": renaming the temporary file " << temporary
-                                  << " over it failed (" << std::strerror(error)
-                                  << "); the existing file is unchanged.");
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    return;
+    this->ReportWriteError(file.Problem, vtkErrorCode::CannotOpenFileError);
   }
-  this->UpdateProgress(1.0);
+  else if (!WriteContents(this, ofb, contents, file, problem, error))
+  {
+    this->ReportWriteError(
+      problem, error == ENOSPC ? vtkErrorCode::OutOfDiskSpaceError : vtkErrorCode::UnknownError);
+  }
+  else if (!file.Commit())
+  {
+    this->ReportWriteError(file.Problem, vtkErrorCode::CannotOpenFileError);
+  }
+  else
+  {
+    this->UpdateProgress(1.0);
+  }
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBWriter::WriteToTemporary(vtkOFB* ofb, const char* path)
+void vtkOFBWriter::ReportWriteError(const std::string& problem, unsigned long code)
 {
-  // Check the OFB and collect the arrays before touching the disk.
-  const vtkIdType nCells = ofb->GetNumberOfCells();
-  const vtkIdType nSamples = ofb->GetNumberOfSamples();
-  vtkTypeUInt32Array* offsets = ofb->GetCellOffsets();
-  const vtkTypeUInt32 zero = 0;
-  const vtkIdType nOffsets = offsets->GetNumberOfValues();
-  const vtkTypeUInt32* o = nOffsets > 0 ? offsets->GetPointer(0) : &zero;
-  const float* depths = nSamples > 0 ? ofb->GetDepths()->GetPointer(0) : nullptr;
-  // What the reader checks: offsets from 0 to the sample count, finite sorted depths.
-  bool valid = (nOffsets == nCells + 1 || (nCells == 0 && nOffsets == 0)) && o[0] == 0 &&
-    static_cast<vtkIdType>(o[nCells]) == nSamples;
-  for (vtkIdType c = 0; c < nCells && valid; ++c)
-  {
-    valid = o[c] <= o[c + 1];
-    for (vtkTypeUInt32 i = o[c]; i < o[c + 1] && valid; ++i)
-    {
-      valid = std::isfinite(depths[i]) && (i == o[c] || depths[i - 1] <= depths[i]);
-    }
-  }
-  if (!valid)
-  {
-    vtkErrorMacro("Cannot write " << this->FileName << ": the OFB is inconsistent (" << nOffsets
-                                  << " cell offsets for " << nCells << " cells and " << nSamples
-                                  << " samples, decreasing offsets, or depths not finite or not "
-                                     "sorted within a cell).");
-    this->SetErrorCode(vtkErrorCode::UnknownError);
-    return false;
-  }
-  vtkPointData* sd = ofb->GetSampleData();
-  std::vector<vtkSmartPointer<vtkDataArray>> arrays;
-  std::vector<vtkTypeUInt32> roles;
-  vtkTypeUInt64 total = HeaderSize + 4 * (nCells + 1) + 4 + 4 * nSamples + 4 + 8;
-  for (int i = 0; i < sd->GetNumberOfArrays(); ++i)
-  {
-    vtkAbstractArray* abstract = sd->GetAbstractArray(i);
-    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
-    const char* name = abstract && abstract->GetName() ? abstract->GetName() : "";
-    if (!array || array->GetDataType() == VTK_BIT)
-    {
-      vtkErrorMacro("Cannot write " << this->FileName << ": sample array " << i << " '" << name
-                                    << "' is not a numeric array ("
-                                    << (abstract ? abstract->GetClassName() : "null") << ").");
-      this->SetErrorCode(vtkErrorCode::UnknownError);
-      return false;
-    }
-    if (std::strlen(name) > 65536)
-    {
-      vtkErrorMacro("Cannot write " << this->FileName << ": the name of sample array " << i
-                                    << " is longer than 65536 bytes.");
-      this->SetErrorCode(vtkErrorCode::UnknownError);
-      return false;
-    }
-    if (array->GetNumberOfTuples() != nSamples)
-    {
-      vtkErrorMacro("Cannot write " << this->FileName << ": sample array '" << name << "' has "
-                                    << array->GetNumberOfTuples() << " tuples for " << nSamples
-                                    << " samples.");
-      this->SetErrorCode(vtkErrorCode::UnknownError);
-      return false;
-    }
-    vtkSmartPointer<vtkDataArray> aos = array;
-    if (!array->HasStandardMemoryLayout())
-    {
-      aos =
-        vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(array->GetDataType()));
-      aos->DeepCopy(array);
-    }
-    vtkTypeUInt32 mask = 0;
-    for (int k = 0; k < NumberOfRoleBits; ++k)
-    {
-      if (sd->GetAbstractAttribute(k) == abstract)
-      {
-        mask |= 1u << k;
-      }
-    }
-    arrays.push_back(aos);
-    roles.push_back(mask);
-    total += 4 + std::strlen(name) + 28 + 4 +
-      static_cast<vtkTypeUInt64>(nSamples) * array->GetNumberOfComponents() *
-        array->GetDataTypeSize();
-  }
-
-  Sink sink;
-  sink.Owner = this;
-  sink.Total = total;
-  sink.File = std::fopen(path, "wb");
-  if (!sink.File)
-  {
-    const int error = errno;
-    vtkErrorMacro("Cannot write " << this->FileName << ": cannot create the temporary file " << path
-                                  << " (" << std::strerror(error) << ").");
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    return false;
-  }
-
-  // Header.
-  std::vector<unsigned char> bytes(Magic, Magic + 8);
-  PutLE(bytes, GetFormatVersion(), 4);
-  PutLE(bytes, ByteOrderMark, 4);
-  for (int a = 0; a < 3; ++a)
-  {
-    PutDouble(bytes, ofb->GetOrigin()[a]);
-  }
-  PutDouble(bytes, ofb->GetCellSize());
-  for (int a = 0; a < 3; ++a)
-  {
-    PutLE(bytes, static_cast<vtkTypeUInt64>(ofb->GetDimensions()[a]), 8);
-  }
-  PutLE(bytes, static_cast<vtkTypeUInt64>(nCells), 8);
-  PutLE(bytes, static_cast<vtkTypeUInt64>(nSamples), 8);
-  PutLE(bytes, arrays.size(), 4);
-  sink.Raw(bytes.data(), bytes.size());
-  sink.EndSection();
-
-  // Cell offsets and depths.
-  sink.Values(o, static_cast<vtkTypeUInt64>(nCells) + 1, 4);
-  sink.EndSection();
-  sink.Values(depths, nSamples, 4);
-  sink.EndSection();
-
-  // Sample arrays.
-  for (size_t i = 0; i < arrays.size(); ++i)
-  {
-    vtkDataArray* array = arrays[i];
-    const std::string name = array->GetName() ? array->GetName() : "";
-    bytes.clear();
-    PutLE(bytes, name.size(), 4);
-    bytes.insert(bytes.end(), name.begin(), name.end());
-    PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetDataType()), 4);
-    PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetDataTypeSize()), 4);
-    PutLE(bytes, static_cast<vtkTypeUInt32>(array->GetNumberOfComponents()), 4);
-    PutLE(bytes, static_cast<vtkTypeUInt64>(nSamples), 8);
-    PutLE(bytes, roles[i], 4);
-    sink.Raw(bytes.data(), bytes.size());
-    sink.EndSection();
-    sink.Values(nSamples > 0 ? array->GetVoidPointer(0) : nullptr,
-      static_cast<vtkTypeUInt64>(nSamples) * array->GetNumberOfComponents(),
-      array->GetDataTypeSize());
-    sink.EndSection();
-  }
-  sink.Raw(Trailer, 8);
-
-  // Flush to the disk and close, checking each step.
-  if (!sink.Failed && std::fflush(sink.File) != 0)
-  {
-    sink.Failed = true;
-    sink.Errno = errno;
-  }
-  if (!sink.Failed && !SyncToDisk(sink.File))
-  {
-    sink.Failed = true;
-    sink.Errno = errno;
-  }
-  if (std::fclose(sink.File) != 0 && !sink.Failed)
-  {
-    sink.Failed = true;
-    sink.Errno = errno;
-  }
-  if (sink.Failed || sink.Done != total)
-  {
-    vtkErrorMacro("Cannot write " << this->FileName << ": writing the temporary file " << path
-                                  << " failed after " << sink.Done << " of " << total << " bytes ("
-                                  << std::strerror(sink.Errno)
-                                  << "); the existing file is unchanged.");
-    this->SetErrorCode(
-      sink.Errno == ENOSPC ? vtkErrorCode::OutOfDiskSpaceError : vtkErrorCode::UnknownError);
-    return false;
-  }
-  return true;
+  vtkErrorMacro(
+    "Cannot write " << this->FileName << ": " << problem << "; the existing file is unchanged.");
+  this->SetErrorCode(code);
 }
 
 //------------------------------------------------------------------------------

@@ -46,15 +46,21 @@
  * and finally the 8-byte trailer `4F 46 42 45 4E 44 1A 0A` ("OFBEND\x1a\n"), which
  * must end the file.
  *
- * Guarantees: the target file is replaced atomically. The writer writes a
- * temporary file in the same directory (FileName + ".tmp-<pid>-<n>"), flushes it
- * to disk, checks that every write succeeded, and only then renames it over
- * FileName. On any failure it removes the temporary file, leaves an existing
- * FileName untouched, reports an error and sets the error code (Write() then
- * returns 0). An empty OFB can be written and reads back empty. An inconsistent
- * OFB (offsets that do not match the frame or the samples, arrays whose tuple
- * count is not the sample count) and non-numeric sample arrays (strings,
- * variants, bits) are refused before the file is touched. Not stored: component
+ * Guarantees: the target file is replaced atomically. The writer writes a new
+ * file in the same directory, flushes it to the disk, checks that every write
+ * succeeded, and only then renames it over FileName and flushes the directory, so
+ * that the replacement survives a power cut. Where the system allows it (Linux's
+ * O_TMPFILE), the new file has no name until it is complete, so a writer killed
+ * mid-write leaves nothing behind; elsewhere it is FileName + ".tmp-<pid>-<n>", and
+ * the next write of FileName removes such temporaries of processes that no longer
+ * exist. The replacement keeps the permissions (and, where allowed, the owner) of
+ * the file it replaces; a FileName that is a symbolic link is followed, so the file
+ * it points to is replaced and the link kept. On any failure the writer removes its
+ * temporary file, leaves an existing FileName untouched, reports an error and sets
+ * the error code (Write() then returns 0). An empty OFB can be written and reads
+ * back empty. An inconsistent OFB (offsets that do not match the frame or the
+ * samples, arrays whose tuple count is not the sample count) and non-numeric
+ * sample arrays (strings, variants, bits) are refused before the file is touched. Not stored: component
  * names, array information keys, lookup tables, field data.
  *
  * @sa vtkOFBReader vtkOFB
@@ -67,6 +73,7 @@
 #include "vtkWriter.h"
 
 #include <cstddef> // for size_t
+#include <string>  // for ReportWriteError
 
 class vtkOFB;
 
@@ -112,8 +119,8 @@ public:
   ///@}
 
   /**
-   * Continue the CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320, as in zlib)
-   * `crc` over `size` bytes. Start with 0: UpdateCRC32(0, "123456789", 9) is
+   * Continue the CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320; zlib's
+   * crc32) `crc` over `size` bytes. Start with 0: UpdateCRC32(0, "123456789", 9) is
    * 0xCBF43926.
    */
   static unsigned int UpdateCRC32(unsigned int crc, const void* data, size_t size);
@@ -127,9 +134,9 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   /**
-   * Write `ofb` to the open temporary file `path`; false after reporting an error.
+   * Report that writing FileName failed because of `problem`, with error `code`.
    */
-  bool WriteToTemporary(vtkOFB* ofb, const char* path);
+  void ReportWriteError(const std::string& problem, unsigned long code);
 
   char* FileName;
 

@@ -4,8 +4,12 @@
  *
  * vtkOFBSamplePicker picks the surface under a display position with a
  * vtkCellPicker, then looks up the OFB sample at the picked point with
- * vtkOFB::FindSample (the grid most aligned with the picked normal), falling back
- * to vtkOFB::FindClosestSample. It is the picking half of the painter widget.
+ * vtkOFB::FindSample in the grid most aligned with the picked cell's face normal:
+ * the grid that holds that triangle's samples. The sample found lies in the cell of
+ * that grid under the picked point (within half a cell of it across the grid) and
+ * within a cell of it in depth. Where there is none (the ray through that cell's
+ * centre meets another triangle), it falls back to vtkOFB::FindClosestSample. It is
+ * the picking half of the painter widget.
  *
  * Pick() returns the sample id, or -1 when nothing is hit, no OFB is set or no
  * sample lies within sqrt(3) cells of the hit point.
@@ -65,6 +69,12 @@ public:
 protected:
   vtkOFBSamplePicker();
   ~vtkOFBSamplePicker() override;
+
+  /**
+   * The geometric normal of the picked cell (of its picked triangle in a strip), not
+   * normalized; false when there is none.
+   */
+  bool GetFaceNormal(double normal[3]);
 
   vtkOFB* OFB;
   vtkCellPicker* Picker;

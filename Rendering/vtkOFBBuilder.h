@@ -4,7 +4,7 @@
  *
  * vtkOFBBuilder is the construction entry point of vtkOFB. It has every setting
  * of vtkOFBSampler (Resolution, MemoryLimit, colours, arrays) and adds the choice
- * of backend:
+ * of backend (a vtkOFBSamplerBackend that the sampler's build runs):
  *
  * - `CPU`: vtkOFBSampler's multi-threaded scan conversion (vtkSMPTools).
  * - `OpenGL`: rasterization in the context of a VTK render window (SetRenderWindow,
@@ -34,6 +34,9 @@
 #include "vtkOFBRenderingModule.h" // for export macro
 #include "vtkOFBSampler.h"
 
+#include "vtkSmartPointer.h" // for members
+
+class vtkOFBGLSampler;
 class vtkOpenGLRenderWindow;
 class vtkRenderWindow;
 
@@ -90,15 +93,24 @@ protected:
   vtkOFBBuilder();
   ~vtkOFBBuilder() override;
 
+  /**
+   * Choose the render window of the OpenGL backend, then build as vtkOFBSampler
+   * does, with the backend SelectBackend() gives.
+   */
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
-   * Build with OpenGL in `window`'s context. Returns false (output empty) when the
-   * caller should fall back to the CPU, true when done, including on invalid input
-   * (reported with an error, output empty).
+   * The OpenGL backend when RequestData found a window that can run it, else the
+   * CPU backend.
    */
-  bool BuildWithOpenGL(vtkOpenGLRenderWindow* window, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector);
+  vtkOFBSamplerBackend* SelectBackend() override;
+
+  /**
+   * The OpenGL render window to build in, or null to build on the CPU (with a
+   * warning when OpenGL was asked for). `ownWindow` keeps an offscreen window
+   * made here when none is set.
+   */
+  vtkOpenGLRenderWindow* FindOpenGLWindow(vtkSmartPointer<vtkRenderWindow>& ownWindow);
 
   int Backend;
   int LastBackend;
@@ -107,6 +119,8 @@ protected:
 private:
   vtkOFBBuilder(const vtkOFBBuilder&) = delete;
   void operator=(const vtkOFBBuilder&) = delete;
+
+  vtkSmartPointer<vtkOFBGLSampler> GLBackend;
 };
 
 #endif

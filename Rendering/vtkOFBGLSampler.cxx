@@ -1,8 +1,10 @@
 #include "vtkOFBGLSampler.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
 #include "vtkOFBSurface.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkTypeUInt32Array.h"
@@ -142,6 +144,430 @@ void Download(GLuint b, size_t bytes, void* out)
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, b);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), out);
 }
+
+/**
+ * The GL state a build changes (capabilities, viewports 0-2, bindings, program,
+ * framebuffer), saved on construction and restored on destruction.
+ */
+class ScopedBuildState
+{
+public:
+  explicit ScopedBuildState(vtkOpenGLState* state)
+    : State(state)
+    , Cull(state, GL_CULL_FACE)
+    , Depth(state, GL_DEPTH_TEST)
+    , Blend(state, GL_BLEND)
+    , Scissor(state, GL_SCISSOR_TEST)
+    , Multisample(state, GL_MULTISAMPLE)
+    , Viewport0(state)
+  {
+    for (GLenum capability :
+      { GL_CULL_FACE, GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST, GL_MULTISAMPLE })
+    {
+      state->vtkglDisable(capability);
+    }
+    glGetIntegerv(GL_CURRENT_PROGRAM, &this->Program);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &this->VertexArray);
+    glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &this->ArrayBuffer);
+    glGetFloati_v(GL_VIEWPORT, 1, this->Viewports[0]);
+    glGetFloati_v(GL_VIEWPORT, 2, this->Viewports[1]);
+    state->PushFramebufferBindings();
+  }
+
+  ~ScopedBuildState()
+  {
+    for (GLuint binding = 0; binding < 6; ++binding)
+    {
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    glBindVertexArray(static_cast<GLuint>(this->VertexArray));
+    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(this->ArrayBuffer));
+    glUseProgram(static_cast<GLuint>(this->Program));
+    glViewportIndexedfv(1, this->Viewports[0]);
+    glViewportIndexedfv(2, this->Viewports[1]);
+    this->State->PopFramebufferBindings();
+  }
+
+  ScopedBuildState(const ScopedBuildState&) = delete;
+  ScopedBuildState& operator=(const ScopedBuildState&) = delete;
+
+private:
+  vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglEnableDisable Cull, Depth, Blend, Scissor, Multisample;
+  vtkOpenGLState::ScopedglViewport Viewport0;
+  GLint Program = 0, VertexArray = 0, ArrayBuffer = 0;
+  GLfloat Viewports[2][4];
+};
+
+/**
+ * The passes of one OpenGL build over the GL objects it owns: count the samples
+ * of each cell (draw), scan the counts into offsets (compute), fill depth,
+ * triangle and barycentrics of every sample (draw), sort each cell (compute),
+ * read back. Each step returns false with `Error` set on failure.
+ */
+class GLBuild
+{
+public:
+  GLBuild(const vtkOFBSurface& surface, vtkOFB* output, GLint side, vtkOpenGLState* state,
+    std::string& error)
+    : Surface(surface)
+    , Output(output)
+    , Side(side)
+    , State(state)
+    , Error(error)
+    , NumberOfCells(output->GetNumberOfCells())
+    , Blocks(static_cast<GLuint>((this->NumberOfCells + BlockSize - 1) / BlockSize))
+  {
+  }
+
+  /// The counting and filling draws, the three scan kernels and the sort.
+  bool CompilePrograms()
+  {
+    const std::string vertex = Source(vtkOFBBuildVS, "");
+    const std::string geometry = Source(vtkOFBBuildGS, "");
+    this->CountProgram = this->GL.Compile({ { GL_VERTEX_SHADER, vertex },
+                                            { GL_GEOMETRY_SHADER, geometry },
+                                            { GL_FRAGMENT_SHADER, Source(vtkOFBBuildFS, "") } },
+      this->Error);
+    if (!this->CountProgram)
+    {
+      return false;
+    }
+    this->FillProgram = this->GL.Compile(
+      { { GL_VERTEX_SHADER, vertex }, { GL_GEOMETRY_SHADER, geometry },
+        { GL_FRAGMENT_SHADER, Source(vtkOFBBuildFS, "#define FILL 1\n") } },
+      this->Error);
+    if (!this->FillProgram)
+    {
+      return false;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::string kernel = "#define KERNEL " + std::to_string(k) + "\n";
+      this->ScanPrograms[k] =
+        this->GL.Compile({ { GL_COMPUTE_SHADER, Source(vtkOFBScanCS, kernel) } }, this->Error);
+      if (!this->ScanPrograms[k])
+      {
+        return false;
+      }
+    }
+    this->SortProgram =
+      this->GL.Compile({ { GL_COMPUTE_SHADER, Source(vtkOFBSortCS, "") } }, this->Error);
+    return this->SortProgram != 0;
+  }
+
+  /// The points in cell units of the frame (doubles) and the triangles' indices.
+  bool UploadGeometry()
+  {
+    const double* origin = this->Output->GetOrigin();
+    const double cellSize = this->Output->GetCellSize();
+    const std::vector<double>& points = this->Surface.Points;
+    std::vector<double> cells(points.size());
+    for (size_t i = 0; i < points.size() / 3; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        cells[3 * i + k] = (points[3 * i + k] - origin[k]) / cellSize;
+      }
+    }
+    const std::vector<GLuint> indices(
+      this->Surface.Triangles.begin(), this->Surface.Triangles.end());
+    this->NumberOfIndices = static_cast<GLsizei>(indices.size());
+    glGenVertexArrays(1, &this->GL.VAO);
+    glBindVertexArray(this->GL.VAO);
+    const GLuint vertices =
+      this->GL.Buffer(GL_ARRAY_BUFFER, cells.size() * sizeof(double), cells.data());
+    const GLuint elements =
+      this->GL.Buffer(GL_ELEMENT_ARRAY_BUFFER, indices.size() * sizeof(GLuint), indices.data());
+    if (!vertices || !elements)
+    {
+      this->Error = "cannot allocate the vertex buffers";
+      return false;
+    }
+    for (GLuint program : { this->CountProgram, this->FillProgram })
+    {
+      const GLint location = glGetAttribLocation(program, "vertexCells");
+      glBindBuffer(GL_ARRAY_BUFFER, vertices);
+      glEnableVertexAttribArray(location);
+      glVertexAttribLPointer(location, 3, GL_DOUBLE, 0, nullptr);
+    }
+    return true;
+  }
+
+  /// The per-cell counters and offsets, and the framebuffer without attachments.
+  bool AllocateCounters()
+  {
+    const vtkIdType nCells = this->NumberOfCells;
+    this->Counts = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, nCells * sizeof(GLuint));
+    this->Offsets = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, (nCells + 1) * sizeof(GLuint));
+    this->BlockSums = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, (this->Blocks + 1) * sizeof(GLuint));
+    if (!this->Counts || !this->Offsets || !this->BlockSums)
+    {
+      this->Error = "cannot allocate the cell counters on the GPU";
+      return false;
+    }
+    const GLuint zero = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Counts);
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glGenFramebuffers(1, &this->GL.FBO);
+    this->State->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->GL.FBO);
+    glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, this->Side);
+    glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, this->Side);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    {
+      this->Error = "the framebuffer without attachments is incomplete";
+      return false;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      glViewportIndexedf(
+        a, 0.0f, 0.0f, static_cast<float>(this->Side), static_cast<float>(this->Side));
+    }
+    return true;
+  }
+
+  /// Pass 1: the samples of each cell counted by the fragment shader.
+  void CountSamples()
+  {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->Counts);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->Offsets);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->BlockSums);
+    this->Draw(this->CountProgram);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  /// Pass 2: the counts scanned into cell offsets (by block, the block sums, then
+  /// the blocks again); the number of samples.
+  vtkIdType ScanCounts()
+  {
+    const auto nCells = static_cast<GLuint>(this->NumberOfCells);
+    const GLuint* scan = this->ScanPrograms;
+    glUseProgram(scan[0]);
+    SetUniform(scan[0], "numberOfValues", nCells);
+    Dispatch(scan[0], "firstBlock", this->Blocks, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(scan[1]);
+    SetUniform(scan[1], "numberOfValues", this->Blocks);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(scan[2]);
+    SetUniform(scan[2], "numberOfValues", nCells);
+    Dispatch(scan[2], "firstBlock", this->Blocks, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint total = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->BlockSums);
+    glGetBufferSubData(
+      GL_SHADER_STORAGE_BUFFER, this->Blocks * sizeof(GLuint), sizeof(GLuint), &total);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Offsets);
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, nCells * sizeof(GLuint), sizeof(GLuint), &total);
+    return total;
+  }
+
+  /// Pass 3: depth, triangle and barycentrics of each of the n samples.
+  bool FillSamples(vtkIdType n)
+  {
+    this->Depths = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, n * sizeof(float));
+    this->Triangles = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, n * sizeof(GLuint));
+    this->Barycentrics = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, 2 * n * sizeof(float));
+    if (!this->Depths || !this->Triangles || !this->Barycentrics)
+    {
+      this->Error = "cannot allocate the samples on the GPU";
+      return false;
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->Depths);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->Triangles);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, this->Barycentrics);
+    glBindVertexArray(this->GL.VAO);
+    this->Draw(this->FillProgram);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    return true;
+  }
+
+  /// Pass 4: the samples of each cell sorted by (depth, triangle).
+  void SortCells()
+  {
+    const auto nCells = static_cast<GLuint>(this->NumberOfCells);
+    glUseProgram(this->SortProgram);
+    SetUniform(this->SortProgram, "numberOfCells", nCells);
+    Dispatch(this->SortProgram, "firstCell", (nCells + 255) / 256, 256);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  }
+
+  /// The offsets and depths into the output, triangles and barycentrics for interpolation.
+  bool ReadBack(
+    vtkIdType n, std::vector<vtkTypeUInt32>& triangles, std::vector<float>& barycentrics)
+  {
+    if (!this->Output->AllocateSamples(n))
+    {
+      this->Error = "cannot allocate the samples";
+      return false;
+    }
+    triangles.resize(n);
+    barycentrics.resize(2 * n);
+    Download(this->Offsets, (this->NumberOfCells + 1) * sizeof(GLuint),
+      this->Output->GetCellOffsets()->GetPointer(0));
+    Download(this->Depths, n * sizeof(float), this->Output->GetDepths()->GetPointer(0));
+    Download(this->Triangles, n * sizeof(GLuint), triangles.data());
+    Download(this->Barycentrics, 2 * n * sizeof(float), barycentrics.data());
+    if (glGetError() != GL_NO_ERROR)
+    {
+      this->Error = "an OpenGL error occurred";
+      return false;
+    }
+    return true;
+  }
+
+private:
+  /// Draw every triangle with `program` into the three grids' viewports.
+  void Draw(GLuint program) const
+  {
+    const vtkIdType* dims = this->Output->GetDimensions();
+    GLuint base[3];
+    GLint width[3], height[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      base[a] = static_cast<GLuint>(this->Output->GetGridCellBase(a));
+      width[a] = static_cast<GLint>(dims[(a + 1) % 3]);
+      height[a] = static_cast<GLint>(dims[(a + 2) % 3]);
+    }
+    glUseProgram(program);
+    glUniform1d(glGetUniformLocation(program, "viewportSize"), static_cast<double>(this->Side));
+    glUniform3ui(glGetUniformLocation(program, "gridBase"), base[0], base[1], base[2]);
+    glUniform3i(glGetUniformLocation(program, "gridWidth"), width[0], width[1], width[2]);
+    glUniform3i(glGetUniformLocation(program, "gridHeight"), height[0], height[1], height[2]);
+    glUniform1d(glGetUniformLocation(program, "cellSize"), this->Output->GetCellSize());
+    glDrawElements(GL_TRIANGLES, this->NumberOfIndices, GL_UNSIGNED_INT, nullptr);
+  }
+
+  const vtkOFBSurface& Surface;
+  vtkOFB* Output;
+  const GLint Side;
+  vtkOpenGLState* State;
+  std::string& Error;
+  const vtkIdType NumberOfCells;
+  const GLuint Blocks;
+  Resources GL;
+  GLuint CountProgram = 0, FillProgram = 0, ScanPrograms[3] = { 0, 0, 0 }, SortProgram = 0;
+  GLsizei NumberOfIndices = 0;
+  GLuint Counts = 0, Offsets = 0, BlockSums = 0;
+  GLuint Depths = 0, Triangles = 0, Barycentrics = 0;
+};
+
+/**
+ * The side of the square viewports of a frame of `dims` cells: the power of two
+ * at or above its longest side (window coordinates then map exactly to NDC); 0,
+ * with `error` set, when the context's viewports or framebuffers are smaller.
+ */
+GLint ViewportSide(const vtkIdType dims[3], std::string& error)
+{
+  GLint maxViewport[2] = { 0, 0 }, maxWidth = 0, maxHeight = 0;
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &maxWidth);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &maxHeight);
+  const vtkIdType longest = std::max({ dims[0], dims[1], dims[2] });
+  GLint side = 1;
+  while (side < longest)
+  {
+    side *= 2;
+  }
+  if (side > std::min<vtkIdType>({ maxViewport[0], maxViewport[1], maxWidth, maxHeight }))
+  {
+    std::ostringstream os;
+    os << "the frame's " << longest << " cells need a " << side << " pixel viewport, larger than "
+       << "the context's largest (" << std::min({ maxViewport[0], maxWidth }) << ")";
+    error = os.str();
+    return 0;
+  }
+  return side;
+}
+}
+
+
+vtkStandardNewMacro(vtkOFBGLSampler);
+
+//------------------------------------------------------------------------------
+vtkOFBGLSampler::vtkOFBGLSampler() = default;
+
+//------------------------------------------------------------------------------
+vtkOFBGLSampler::~vtkOFBGLSampler() = default;
+
+//------------------------------------------------------------------------------
+void vtkOFBGLSampler::SetRenderWindow(vtkOpenGLRenderWindow* window)
+{
+  if (this->RenderWindow != window)
+  {
+    this->RenderWindow = window;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBGLSampler::EstimateWorkBytes(vtkIdType points, vtkIdType triangles, double samples) const
+{
+  // On the host: the points in cell units (doubles), the 32-bit indices, and the
+  // interleaved barycentrics read back beside the two arrays interpolation takes.
+  return 24.0 * static_cast<double>(points) + 12.0 * static_cast<double>(triangles) +
+    8.0 * samples;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
+{
+  const vtkOFBSurface& surface = *job.Surface;
+  vtkOFB* output = job.Output;
+  vtkOpenGLRenderWindow* window = this->RenderWindow;
+  if (!window)
+  {
+    job.Error = "no render window";
+    return Unavailable;
+  }
+  const double samples = vtkOFBSamplerBackend::EstimateSamples(surface, job.CellSize);
+  const bool zeroOffsets = true; // the scan writes them from zero counts
+  if (!vtkOFBSamplerBackend::CheckMemoryLimit(
+        this->EstimateBytes(surface, job.Dimensions, samples), job.MemoryLimit, job.Error) ||
+    !output->SetFrame(job.Origin, job.CellSize, job.Dimensions, zeroOffsets))
+  {
+    return Failed;
+  }
+  if (job.Algorithm)
+  {
+    job.Algorithm->UpdateProgress(0.1);
+  }
+  std::vector<vtkTypeUInt32> triangles;
+  std::vector<float> barycentrics;
+  window->PushContext();
+  const bool rasterized = this->Rasterize(window, job, triangles, barycentrics);
+  window->PopContext();
+  if (!rasterized)
+  {
+    return Unavailable;
+  }
+  if (job.Algorithm)
+  {
+    job.Algorithm->UpdateProgress(0.7);
+  }
+  const vtkIdType n = output->GetNumberOfSamples();
+  std::vector<float> w1(n), w2(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    w1[i] = barycentrics[2 * i];
+    w2[i] = barycentrics[2 * i + 1];
+  }
+  barycentrics.clear();
+  if (!output->BuildCellIndex() ||
+    !vtkOFBSamplerBackend::InterpolateAttributes(surface, output, triangles.data(), w1.data(), w2.data()))
+  {
+    return Failed;
+  }
+  return Built;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBGLSampler::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RenderWindow: " << this->RenderWindow.GetPointer() << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -196,250 +622,32 @@ bool vtkOFBGLSampler::IsSoftwareRenderer(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBGLSampler::Sample(vtkOpenGLRenderWindow* window, const vtkOFBSurface& surface,
-  vtkOFB* output, double limitBytes, double bytesPerSample,
-  std::vector<vtkTypeUInt32>& triangles, std::vector<float>& barycentrics, std::string& error)
+bool vtkOFBGLSampler::Rasterize(vtkOpenGLRenderWindow* window, Job& job,
+  std::vector<vtkTypeUInt32>& triangles, std::vector<float>& barycentrics)
 {
-  if (!vtkOFBGLSampler::IsSupported(window, error))
+  if (!vtkOFBGLSampler::IsSupported(window, job.Error))
   {
     return false;
   }
-  const vtkIdType* dims = output->GetDimensions();
-  GLint maxViewport[2] = { 0, 0 }, maxWidth = 0, maxHeight = 0;
-  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
-  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &maxWidth);
-  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &maxHeight);
-  // Viewports of a power-of-two side: window coordinates map exactly to NDC.
-  const vtkIdType longest = std::max({ dims[0], dims[1], dims[2] });
-  GLint side = 1;
-  while (side < longest)
+  const GLint side = ViewportSide(job.Output->GetDimensions(), job.Error);
+  if (!side)
   {
-    side *= 2;
-  }
-  if (side > std::min<vtkIdType>({ maxViewport[0], maxViewport[1], maxWidth, maxHeight }))
-  {
-    std::ostringstream os;
-    os << "the frame's " << longest << " cells need a " << side << " pixel viewport, larger than "
-       << "the context's largest (" << std::min({ maxViewport[0], maxWidth }) << ")";
-    error = os.str();
     return false;
   }
-
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable depth(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglEnableDisable multisample(state, GL_MULTISAMPLE);
-  vtkOpenGLState::ScopedglViewport viewport0(state);
-  state->vtkglDisable(GL_CULL_FACE);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDisable(GL_BLEND);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_MULTISAMPLE);
-  GLint previousProgram = 0, previousVAO = 0, previousArrayBuffer = 0;
-  glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
-  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVAO);
-  glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &previousArrayBuffer);
-  GLfloat previousViewports[2][4];
-  glGetFloati_v(GL_VIEWPORT, 1, previousViewports[0]);
-  glGetFloati_v(GL_VIEWPORT, 2, previousViewports[1]);
-  state->PushFramebufferBindings();
-
-  bool ok = false;
+  GLBuild build(*job.Surface, job.Output, side, window->GetState(), job.Error);
+  ScopedBuildState saved(window->GetState());
+  if (!build.CompilePrograms() || !build.UploadGeometry() || !build.AllocateCounters())
   {
-    Resources gl;
-    ok = [&]() -> bool
-    {
-      // Programs.
-      const GLuint count = gl.Compile({ { GL_VERTEX_SHADER, Source(vtkOFBBuildVS, "") },
-                                        { GL_GEOMETRY_SHADER, Source(vtkOFBBuildGS, "") },
-                                        { GL_FRAGMENT_SHADER, Source(vtkOFBBuildFS, "") } },
-        error);
-      const GLuint fill = count ? gl.Compile({ { GL_VERTEX_SHADER, Source(vtkOFBBuildVS, "") },
-                                               { GL_GEOMETRY_SHADER, Source(vtkOFBBuildGS, "") },
-                                               { GL_FRAGMENT_SHADER,
-                                                 Source(vtkOFBBuildFS, "#define FILL 1\n") } },
-                                    error)
-                                : 0;
-      GLuint scan[3] = { 0, 0, 0 };
-      for (int k = 0; k < 3 && fill; ++k)
-      {
-        scan[k] = gl.Compile(
-          { { GL_COMPUTE_SHADER,
-            Source(vtkOFBScanCS, "#define KERNEL " + std::to_string(k) + "\n") } },
-          error);
-        if (!scan[k])
-        {
-          return false;
-        }
-      }
-      const GLuint sort = fill ? gl.Compile({ { GL_COMPUTE_SHADER, Source(vtkOFBSortCS, "") } }, error) : 0;
-      if (!sort)
-      {
-        return false;
-      }
-
-      // Geometry in cell units of the frame.
-      const double* origin = output->GetOrigin();
-      const double s = output->GetCellSize();
-      const size_t np = surface.Points.size() / 3;
-      std::vector<double> cells(3 * np);
-      for (size_t i = 0; i < np; ++i)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          cells[3 * i + k] = (surface.Points[3 * i + k] - origin[k]) / s;
-        }
-      }
-      std::vector<GLuint> indices(surface.Triangles.begin(), surface.Triangles.end());
-      glGenVertexArrays(1, &gl.VAO);
-      glBindVertexArray(gl.VAO);
-      const GLuint vbo = gl.Buffer(GL_ARRAY_BUFFER, cells.size() * sizeof(double), cells.data());
-      const GLuint ebo =
-        gl.Buffer(GL_ELEMENT_ARRAY_BUFFER, indices.size() * sizeof(GLuint), indices.data());
-      if (!vbo || !ebo)
-      {
-        error = "cannot allocate the vertex buffers";
-        return false;
-      }
-      for (GLuint program : { count, fill })
-      {
-        const GLint location = glGetAttribLocation(program, "vertexCells");
-        glBindBuffer(GL_ARRAY_BUFFER, vbo);
-        glEnableVertexAttribArray(location);
-        glVertexAttribLPointer(location, 3, GL_DOUBLE, 0, nullptr);
-      }
-
-      // Counters, offsets and the framebuffer without attachments.
-      const vtkIdType nCells = output->GetNumberOfCells();
-      const GLuint blocks = static_cast<GLuint>((nCells + BlockSize - 1) / BlockSize);
-      const GLuint counts = gl.Buffer(GL_SHADER_STORAGE_BUFFER, nCells * sizeof(GLuint));
-      const GLuint offsets = gl.Buffer(GL_SHADER_STORAGE_BUFFER, (nCells + 1) * sizeof(GLuint));
-      const GLuint sums = gl.Buffer(GL_SHADER_STORAGE_BUFFER, (blocks + 1) * sizeof(GLuint));
-      if (!counts || !offsets || !sums)
-      {
-        error = "cannot allocate the cell counters on the GPU";
-        return false;
-      }
-      const GLuint zero = 0;
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, counts);
-      glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-      glGenFramebuffers(1, &gl.FBO);
-      state->vtkglBindFramebuffer(GL_FRAMEBUFFER, gl.FBO);
-      glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, side);
-      glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, side);
-      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      {
-        error = "the framebuffer without attachments is incomplete";
-        return false;
-      }
-      GLuint base[3], width[3], height[3];
-      for (int a = 0; a < 3; ++a)
-      {
-        base[a] = static_cast<GLuint>(output->GetGridCellBase(a));
-        width[a] = static_cast<GLuint>(dims[(a + 1) % 3]);
-        height[a] = static_cast<GLuint>(dims[(a + 2) % 3]);
-        glViewportIndexedf(a, 0.0f, 0.0f, static_cast<float>(side), static_cast<float>(side));
-      }
-      const GLsizei nIndices = static_cast<GLsizei>(indices.size());
-      auto draw = [&](GLuint program)
-      {
-        glUseProgram(program);
-        glUniform1d(glGetUniformLocation(program, "viewportSize"), static_cast<double>(side));
-        glUniform3ui(glGetUniformLocation(program, "gridBase"), base[0], base[1], base[2]);
-        glUniform3i(glGetUniformLocation(program, "gridWidth"), width[0], width[1], width[2]);
-        glUniform3i(glGetUniformLocation(program, "gridHeight"), height[0], height[1], height[2]);
-        glUniform1d(glGetUniformLocation(program, "cellSize"), s);
-        glDrawElements(GL_TRIANGLES, nIndices, GL_UNSIGNED_INT, nullptr);
-      };
-
-      // Pass 1: count.
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counts);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, offsets);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, sums);
-      draw(count);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
-      // Pass 2: scan.
-      glUseProgram(scan[0]);
-      SetUniform(scan[0], "numberOfValues", static_cast<GLuint>(nCells));
-      Dispatch(scan[0], "firstBlock", blocks, 1);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-      glUseProgram(scan[1]);
-      SetUniform(scan[1], "numberOfValues", blocks);
-      glDispatchCompute(1, 1, 1);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-      glUseProgram(scan[2]);
-      SetUniform(scan[2], "numberOfValues", static_cast<GLuint>(nCells));
-      Dispatch(scan[2], "firstBlock", blocks, 1);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-      GLuint total = 0;
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, sums);
-      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, blocks * sizeof(GLuint), sizeof(GLuint), &total);
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, offsets);
-      glBufferSubData(GL_SHADER_STORAGE_BUFFER, nCells * sizeof(GLuint), sizeof(GLuint), &total);
-      const vtkIdType n = total;
-      if (output->GetCellOffsets()->GetNumberOfValues() * 8.0 + n * bytesPerSample > limitBytes)
-      {
-        std::ostringstream os;
-        os << n << " samples exceed the memory limit";
-        error = os.str();
-        return false;
-      }
-
-      // Pass 3: fill.
-      const GLuint depths = gl.Buffer(GL_SHADER_STORAGE_BUFFER, n * sizeof(float));
-      const GLuint tris = gl.Buffer(GL_SHADER_STORAGE_BUFFER, n * sizeof(GLuint));
-      const GLuint bary = gl.Buffer(GL_SHADER_STORAGE_BUFFER, 2 * n * sizeof(float));
-      if (!depths || !tris || !bary)
-      {
-        error = "cannot allocate the samples on the GPU";
-        return false;
-      }
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, depths);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, tris);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, bary);
-      glBindVertexArray(gl.VAO);
-      draw(fill);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
-      // Pass 4: sort each cell.
-      glUseProgram(sort);
-      SetUniform(sort, "numberOfCells", static_cast<GLuint>(nCells));
-      Dispatch(sort, "firstCell", static_cast<GLuint>((nCells + 255) / 256), 256);
-      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-
-      // Read back.
-      if (!output->AllocateSamples(n))
-      {
-        error = "cannot allocate the samples";
-        return false;
-      }
-      triangles.resize(n);
-      barycentrics.resize(2 * n);
-      Download(offsets, (nCells + 1) * sizeof(GLuint), output->GetCellOffsets()->GetPointer(0));
-      Download(depths, n * sizeof(float), output->GetDepths()->GetPointer(0));
-      Download(tris, n * sizeof(GLuint), triangles.data());
-      Download(bary, 2 * n * sizeof(float), barycentrics.data());
-      for (GLuint binding = 0; binding < 6; ++binding)
-      {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
-      }
-      if (glGetError() != GL_NO_ERROR)
-      {
-        error = "an OpenGL error occurred";
-        return false;
-      }
-      return true;
-    }();
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    glBindVertexArray(static_cast<GLuint>(previousVAO));
-    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(previousArrayBuffer));
-    glUseProgram(static_cast<GLuint>(previousProgram));
+    return false;
   }
-  glViewportIndexedfv(1, previousViewports[0]);
-  glViewportIndexedfv(2, previousViewports[1]);
-  state->PopFramebufferBindings();
-  return ok;
+  build.CountSamples();
+  const vtkIdType n = build.ScanCounts();
+  const double bytes = this->EstimateBytes(*job.Surface, job.Output->GetDimensions(), n);
+  if (!vtkOFBSamplerBackend::CheckMemoryLimit(bytes, job.MemoryLimit, job.Error) ||
+    !build.FillSamples(n))
+  {
+    return false;
+  }
+  build.SortCells();
+  return build.ReadBack(n, triangles, barycentrics);
 }

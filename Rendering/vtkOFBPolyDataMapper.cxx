@@ -1,8 +1,8 @@
 #include "vtkOFBPolyDataMapper.h"
 
 #include "vtkActor.h"
-#include "vtkAlgorithmOutput.h"
 #include "vtkIdTypeArray.h"
+#include "vtkAlgorithmOutput.h"
 #include "vtkInformation.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
@@ -10,7 +10,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkOFB.h"
 #include "vtkOFBLookupFS.h"
-#include "vtkOFBPyramid.h"
 #include "vtkOFBShaderStorage.h"
 #include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
@@ -22,10 +21,12 @@
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 vtkStandardNewMacro(vtkOFBPolyDataMapper);
 
@@ -49,6 +50,9 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , IntensityArrayName(nullptr)
   , IntensityModulation(false)
   , IntensityWeight(1.0)
+  , LICColorMode(COLOR_MODE_BLEND)
+  , LICIntensity(0.8)
+  , MapModeBias(0.0)
   , UsePaintedNormals(false)
   , LastUploadedSampleCount(0)
   , LastRenderUsedOFB(false)
@@ -58,36 +62,16 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , UseNormals(false)
   , DeepCells(false)
   , Storage(new vtkOFBShaderStorage)
-  , Pyramid(vtkOFBPyramid::New())
-  , Ranges(vtkIdTypeArray::New())
-  , UploadedOFB(nullptr)
-  , UploadedPyramidTime(0)
-  , UploadedLUTTime(0)
-  , CheckedWindow(nullptr)
-  , CheckedWindowSupported(false)
-  , WarnedOFB(nullptr)
+  , AlphaTranslucent(false)
+  , AlphaHint(0)
   , WarnedMTime(0)
 {
-  this->UploadedLUTRange[0] = this->UploadedLUTRange[1] = 0.0;
   this->SetNumberOfInputPorts(2);
 }
 
 //------------------------------------------------------------------------------
 vtkOFBPolyDataMapper::~vtkOFBPolyDataMapper()
 {
-  // Buffers still held here belong to a window that outlived this mapper: free them
-  // in that window's context when it is still current, else leave them to it.
-  if (this->Storage->GetWindow() && this->Storage->GetMemorySize() > 0)
-  {
-    vtkOpenGLRenderWindow* window = this->Storage->GetWindow();
-    if (window->IsCurrent())
-    {
-      this->Storage->ReleaseGraphicsResources();
-    }
-  }
-  delete this->Storage;
-  this->Pyramid->Delete();
-  this->Ranges->Delete();
   this->SetScalarArrayName(nullptr);
   this->SetIntensityArrayName(nullptr);
 }
@@ -157,9 +141,114 @@ const char* vtkOFBPolyDataMapper::GetColorSourceAsString(int source)
 }
 
 //------------------------------------------------------------------------------
+const char* vtkOFBPolyDataMapper::GetLICColorModeAsString(int mode)
+{
+  switch (mode)
+  {
+    case COLOR_MODE_BLEND:
+      return "COLOR_MODE_BLEND";
+    case COLOR_MODE_MAP:
+      return "COLOR_MODE_MAP";
+    default:
+      return "Unknown";
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkIdType vtkOFBPolyDataMapper::GetGPUMemorySize()
 {
   return static_cast<vtkIdType>(this->Storage->GetMemorySize());
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPolyDataMapper::GetUploadedBytes()
+{
+  return static_cast<vtkIdType>(this->Storage->GetUploadedBytes());
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::HasTranslucentPolygonalGeometry()
+{
+  this->UpdateOFBProducer();
+  vtkOFB* ofb = this->GetOFB();
+  if (!ofb || ofb->GetNumberOfSamples() == 0)
+  {
+    return this->Superclass::HasTranslucentPolygonalGeometry();
+  }
+  vtkOFBShaderStorage::Selection selection;
+  selection.ScalarName = this->ScalarArrayName ? this->ScalarArrayName : "";
+  selection.ScalarComponent = this->ScalarComponent;
+  if (this->ColorSource == Scalars &&
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Scalars, selection))
+  {
+    vtkScalarsToColors* lut = this->GetLookupTable();
+    lut->Build();
+    return lut->IsOpaque() == 0;
+  }
+  return this->HasTranslucentColors(ofb);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::HasTranslucentColors(vtkOFB* ofb)
+{
+  vtkOFBShaderStorage::Selection selection;
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Colors, selection));
+  if (!colors || colors->GetNumberOfComponents() != 4)
+  {
+    return false;
+  }
+  const vtkIdType n = std::min(colors->GetNumberOfTuples(), ofb->GetNumberOfSamples());
+  const unsigned char* rgba = colors->GetPointer(0);
+  // First sample of [first, last) with alpha below 255, or -1.
+  auto findTranslucent = [rgba](vtkIdType first, vtkIdType last) -> vtkIdType {
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      if (rgba[4 * i + 3] != 255)
+      {
+        return i;
+      }
+    }
+    return -1;
+  };
+  const bool changed = ofb != this->AlphaOFB || colors != this->AlphaColors ||
+    ofb->GetStructureMTime() > this->AlphaTime.GetMTime() ||
+    colors->GetMTime() > this->AlphaTime.GetMTime();
+  vtkNew<vtkIdTypeArray> ranges;
+  if (!changed)
+  {
+    ofb->GetSampleRangesModifiedSince(this->AlphaTime.GetMTime(), ranges);
+    if (ranges->GetNumberOfTuples() == 0)
+    {
+      return this->AlphaTranslucent;
+    }
+  }
+  vtkIdType found = -1;
+  if (!changed && !this->AlphaTranslucent)
+  {
+    // Opaque so far: only the modified samples can have made it translucent.
+    for (vtkIdType r = 0; r < ranges->GetNumberOfTuples() && found < 0; ++r)
+    {
+      found = findTranslucent(std::max<vtkIdType>(0, ranges->GetTypedComponent(r, 0)),
+        std::min(n, ranges->GetTypedComponent(r, 1)));
+    }
+  }
+  else
+  {
+    // A full scan, from where the last translucent sample was (likely still translucent).
+    const vtkIdType hint = std::min(std::max<vtkIdType>(this->AlphaHint, 0), n);
+    found = findTranslucent(hint, n);
+    if (found < 0)
+    {
+      found = findTranslucent(0, hint);
+    }
+  }
+  this->AlphaOFB = ofb;
+  this->AlphaColors = colors;
+  this->AlphaTime.Modified();
+  this->AlphaTranslucent = found >= 0;
+  this->AlphaHint = found >= 0 ? found : 0;
+  return this->AlphaTranslucent;
 }
 
 //------------------------------------------------------------------------------
@@ -174,24 +263,52 @@ void vtkOFBPolyDataMapper::WarnOnce(const std::string& message)
 //------------------------------------------------------------------------------
 void vtkOFBPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->Storage->GetWindow() &&
-    (!window || window == static_cast<vtkWindow*>(this->Storage->GetWindow())))
-  {
-    this->Storage->GetWindow()->MakeCurrent();
-    this->Storage->ReleaseGraphicsResources();
-    this->Storage->SetWindow(nullptr);
-    this->UploadedOFB = nullptr;
-    this->UploadedLUTTime = 0;
-    this->CheckedWindow = nullptr;
-  }
+  this->Storage->ReleaseGraphicsResources(window);
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren, vtkActor* act)
+void vtkOFBPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 {
-  (void)act;
+  this->OFBActive = this->PrepareOFB(ren);
+  this->LastRenderUsedOFB = this->OFBActive;
+  this->UpdateShaderKey();
+  if (this->OFBActive)
+  {
+    this->Storage->Bind();
+  }
+  this->Superclass::RenderPiece(ren, act);
+  if (this->OFBActive)
+  {
+    this->Storage->Unbind();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
+{
   this->LastUploadedSampleCount = 0;
+  vtkOFB* ofb = this->UpdateOFBInput();
+  vtkOFBShaderStorage::Selection selection;
+  if (!this->CheckOFB(ofb) || !this->PrepareContext(ren) || !this->SelectArrays(ofb, selection))
+  {
+    return false;
+  }
+  this->CheckSurfaceInFrame(ofb);
+  if (!this->UploadOFB(ofb, selection))
+  {
+    return false;
+  }
+  if (this->SourceScalars)
+  {
+    this->UploadLookupTable();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::UpdateOFBProducer()
+{
   if (this->GetNumberOfInputConnections(1) > 0)
   {
     vtkAlgorithm* producer = this->GetInputAlgorithm(1, 0);
@@ -200,6 +317,12 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren, vtkActor* act)
       producer->Update();
     }
   }
+}
+
+//------------------------------------------------------------------------------
+vtkOFB* vtkOFBPolyDataMapper::UpdateOFBInput()
+{
+  this->UpdateOFBProducer();
   vtkOFB* ofb = this->GetOFB();
   if (ofb != this->WarnedOFB || this->GetMTime() > this->WarnedMTime)
   {
@@ -207,6 +330,12 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren, vtkActor* act)
     this->WarnedOFB = ofb;
     this->WarnedMTime = this->GetMTime();
   }
+  return ofb;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::CheckOFB(vtkOFB* ofb)
+{
   if (!ofb)
   {
     this->WarnOnce("No OFB (SetOFB or SetOFBConnection): rendering without OFB colours.");
@@ -217,34 +346,26 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren, vtkActor* act)
     this->WarnOnce("The OFB is empty: rendering without OFB colours.");
     return false;
   }
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (window != this->CheckedWindow)
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::PrepareContext(vtkRenderer* ren)
+{
+  std::string why;
+  if (!this->Storage->SetContext(
+        vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), why))
   {
-    this->CheckedWindow = window;
-    this->CheckedWindowSupported =
-      vtkOFBShaderStorage::IsSupported(window, this->CheckedWindowReason);
-  }
-  if (!this->CheckedWindowSupported)
-  {
-    this->WarnOnce("Shader storage buffers are unavailable (" + this->CheckedWindowReason +
-      "): rendering without OFB colours.");
+    this->WarnOnce(
+      "Shader storage buffers are unavailable (" + why + "): rendering without OFB colours.");
     return false;
   }
-  if (window != this->Storage->GetWindow())
-  {
-    if (this->Storage->GetWindow())
-    {
-      this->Storage->GetWindow()->MakeCurrent();
-      this->Storage->ReleaseGraphicsResources();
-      window->MakeCurrent();
-    }
-    this->Storage->SetWindow(window);
-    this->UploadedOFB = nullptr;
-    this->UploadedLUTTime = 0;
-  }
+  return true;
+}
 
-  // What the shader reads.
-  vtkOFBShaderStorage::Selection selection;
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Selection& selection)
+{
   this->SourceScalars = false;
   if (this->ColorSource == Scalars)
   {
@@ -292,159 +413,86 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren, vtkActor* act)
                    "surface normals.");
   }
   this->UseNormals = selection.Normals;
-
-  // The surface should lie in the OFB's frame; parts outside keep the property colour.
-  vtkPolyData* input = this->GetInput();
-  if (input && input->GetNumberOfPoints() > 0)
-  {
-    double sb[6];
-    double fb[6];
-    input->GetBounds(sb);
-    ofb->GetBounds(fb);
-    const double tol = ofb->GetCellSize();
-    for (int i = 0; i < 3; ++i)
-    {
-      if (sb[2 * i] < fb[2 * i] - tol || sb[2 * i + 1] > fb[2 * i + 1] + tol)
-      {
-        this->WarnOnce("The surface extends beyond the OFB's frame (was the OFB built from "
-                       "another surface?): parts outside keep the property colour.");
-        break;
-      }
-    }
-  }
-
-  // Levels: the OFB, then the mipmap pyramid.
-  std::vector<vtkOFB*> levels(1, ofb);
-  if (this->LookupMode == Mipmapped)
-  {
-    this->Pyramid->SetInputOFB(ofb);
-    this->Pyramid->SetSurface(input);
-    this->Pyramid->SetMaximumNumberOfLevels(
-      std::min(this->MaximumNumberOfMipmapLevels, vtkOFBShaderStorage::MaximumNumberOfLevels));
-    this->Pyramid->SetMinimumResolution(this->MinimumMipmapResolution);
-    if (this->Pyramid->Update())
-    {
-      for (int k = 1; k < this->Pyramid->GetNumberOfLevels(); ++k)
-      {
-        levels.push_back(this->Pyramid->GetLevel(k));
-      }
-    }
-    else
-    {
-      this->WarnOnce("The mipmap pyramid could not be built: using level 0 only.");
-    }
-  }
-  else if (this->Pyramid->GetInputOFB())
-  {
-    this->Pyramid->SetInputOFB(nullptr);
-    this->Pyramid->SetSurface(nullptr);
-  }
-
-  // Upload: everything on a structure or selection change, else the modified ranges.
-  std::ostringstream key;
-  key << levels.size() << "|" << selection.Colors << "|" << selection.ScalarName << "|"
-      << selection.ScalarComponent << "|" << selection.IntensityName << "|" << selection.Normals;
-  const bool mipmapped = levels.size() > 1;
-  const bool full = ofb != this->UploadedOFB || key.str() != this->UploadKey ||
-    ofb->GetStructureMTime() > this->UploadTime.GetMTime() ||
-    (mipmapped && this->Pyramid->GetStructureTime() > this->UploadedPyramidTime) ||
-    this->Storage->GetMemorySize() == 0;
-  window->MakeCurrent();
-  if (full)
-  {
-    std::string error;
-    const vtkIdType n = this->Storage->UploadAll(levels, selection, error);
-    if (n < 0)
-    {
-      this->UploadedOFB = nullptr;
-      this->WarnOnce("Could not upload the OFB (" + error + "): rendering without OFB colours.");
-      return false;
-    }
-    this->LastUploadedSampleCount = n;
-    this->UploadedOFB = ofb;
-    this->UploadKey = key.str();
-  }
-  else
-  {
-    ofb->GetSampleRangesModifiedSince(this->UploadTime.GetMTime(), this->Ranges);
-    this->LastUploadedSampleCount =
-      this->Storage->UploadRanges(levels, 0, selection, this->Ranges);
-    if (mipmapped)
-    {
-      if (this->Ranges->GetNumberOfTuples() > 0 &&
-        this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
-      {
-        this->Pyramid->UpdateArrays();
-      }
-      if (this->Pyramid->GetArraysTime() > this->UploadTime.GetMTime())
-      {
-        for (size_t k = 1; k < levels.size(); ++k)
-        {
-          this->Ranges->Initialize();
-          this->Ranges->SetNumberOfComponents(2);
-          const vtkIdType all[2] = { 0, levels[k]->GetNumberOfSamples() };
-          this->Ranges->InsertNextTypedTuple(all);
-          this->LastUploadedSampleCount +=
-            this->Storage->UploadRanges(levels, static_cast<int>(k), selection, this->Ranges);
-        }
-      }
-    }
-  }
-  this->UploadedPyramidTime = this->Pyramid->GetStructureTime();
-  this->UploadTime.Modified();
-
-  // The lookup table, sampled over the scalar range.
-  if (this->SourceScalars)
-  {
-    vtkScalarsToColors* lut = this->GetLookupTable();
-    double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
-    if (this->UseLookupTableScalarRange)
-    {
-      const double* lutRange = lut->GetRange();
-      range[0] = lutRange[0];
-      range[1] = lutRange[1];
-    }
-    else
-    {
-      lut->SetRange(range);
-    }
-    if (lut->GetMTime() > this->UploadedLUTTime || range[0] != this->UploadedLUTRange[0] ||
-      range[1] != this->UploadedLUTRange[1])
-    {
-      this->Storage->UploadLookupTable(lut, range);
-      this->UploadedLUTTime = lut->GetMTime();
-      this->UploadedLUTRange[0] = range[0];
-      this->UploadedLUTRange[1] = range[1];
-    }
-  }
   return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
+void vtkOFBPolyDataMapper::CheckSurfaceInFrame(vtkOFB* ofb)
 {
-  this->OFBActive = this->PrepareOFB(ren, act);
-  this->LastRenderUsedOFB = this->OFBActive;
+  // The surface should lie in the OFB's frame; parts outside keep the property colour.
+  vtkPolyData* input = this->GetInput();
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    return;
+  }
+  double sb[6];
+  double fb[6];
+  input->GetBounds(sb);
+  ofb->GetBounds(fb);
+  const double tol = ofb->GetCellSize();
+  for (int i = 0; i < 3; ++i)
+  {
+    if (sb[2 * i] < fb[2 * i] - tol || sb[2 * i + 1] > fb[2 * i + 1] + tol)
+    {
+      this->WarnOnce("The surface extends beyond the OFB's frame (was the OFB built from "
+                     "another surface?): parts outside keep the property colour.");
+      return;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorage::Selection& selection)
+{
+  if (!this->Storage->UpdateLevels(ofb, this->GetInput(), this->LookupMode == Mipmapped,
+        this->MaximumNumberOfMipmapLevels, this->MinimumMipmapResolution))
+  {
+    this->WarnOnce("The mipmap pyramid could not be built: using level 0 only.");
+  }
+  std::string error;
+  const vtkIdType count = this->Storage->UploadChanges(selection, error);
+  if (count < 0)
+  {
+    this->WarnOnce("Could not upload the OFB (" + error + "): rendering without OFB colours.");
+    return false;
+  }
+  this->LastUploadedSampleCount = count;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::UploadLookupTable()
+{
+  // The lookup table, sampled over the scalar range.
+  vtkScalarsToColors* lut = this->GetLookupTable();
+  double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
+  if (this->UseLookupTableScalarRange)
+  {
+    const double* lutRange = lut->GetRange();
+    range[0] = lutRange[0];
+    range[1] = lutRange[1];
+  }
+  else
+  {
+    lut->SetRange(range);
+  }
+  this->Storage->UpdateLookupTable(lut, range);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::UpdateShaderKey()
+{
   std::ostringstream key;
   if (this->OFBActive)
   {
     this->DeepCells = this->Storage->GetMaximumCellSamples() > DeepCellSamples;
     key << this->LookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity << "|"
-        << this->UseNormals << "|" << this->DeepCells;
+        << this->UseNormals << "|" << this->DeepCells << "|" << this->LICColorMode;
   }
   if (key.str() != this->ShaderKey)
   {
     this->ShaderKey = key.str();
     this->ShaderKeyTime.Modified();
-  }
-  if (this->OFBActive)
-  {
-    this->Storage->Bind();
-  }
-  this->Superclass::RenderPiece(ren, act);
-  if (this->OFBActive)
-  {
-    this->Storage->Unbind();
   }
 }
 
@@ -457,16 +505,13 @@ bool vtkOFBPolyDataMapper::GetNeedToRebuildShaders(
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::ReplaceShaderValues(
+void vtkOFBPolyDataMapper::ReplaceShaderPositionVC(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   if (this->OFBActive)
   {
+    // Vertex shader: the position in level-0 OFB cells, for the fragment shader's lookup.
     std::string vs = shaders[vtkShader::Vertex]->GetSource();
-    std::string gs = shaders[vtkShader::Geometry]->GetSource();
-    std::string fs = shaders[vtkShader::Fragment]->GetSource();
-
-    // Vertex shader: the position in level-0 OFB cells.
     vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Dec",
       "//VTK::PositionVC::Dec\n"
       "uniform vec3 ofbPositionScale;\n"
@@ -475,24 +520,37 @@ void vtkOFBPolyDataMapper::ReplaceShaderValues(
     vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Impl",
       "//VTK::PositionVC::Impl\n"
       "  ofbGridVSOutput = vertexMC.xyz * ofbPositionScale + ofbPositionShift;\n");
+    shaders[vtkShader::Vertex]->SetSource(vs);
 
     // Geometry shader (wide lines, edges): pass it through.
+    std::string gs = shaders[vtkShader::Geometry]->GetSource();
     if (!gs.empty())
     {
-      vtkShaderProgram::Substitute(gs, "//VTK::Clip::Dec",
-        "//VTK::Clip::Dec\n"
+      vtkShaderProgram::Substitute(gs, "//VTK::PositionVC::Dec",
+        "//VTK::PositionVC::Dec\n"
         "in vec3 ofbGridVSOutput[];\n"
         "out vec3 ofbGridGSOutput;\n");
-      vtkShaderProgram::Substitute(gs, "//VTK::Clip::Impl",
-        "//VTK::Clip::Impl\n"
+      vtkShaderProgram::Substitute(gs, "//VTK::PositionVC::Impl",
+        "//VTK::PositionVC::Impl\n"
         "    ofbGridGSOutput = ofbGridVSOutput[i];\n");
       shaders[vtkShader::Geometry]->SetSource(gs);
     }
+  }
+  this->Superclass::ReplaceShaderPositionVC(shaders, ren, act);
+}
 
-    // Fragment shader: storage blocks, the lookup, and the colour it gives. Bit casts read
-    // the depths packed with the colours (ARB_shader_bit_encoding, checked by
-    // vtkOFBShaderStorage::IsSupported); gl_HelperInvocation (ARB_ES3_1_compatibility, used
-    // where the context offers it) keeps helper lanes out of the lookup fallbacks.
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::ReplaceShaderColor(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  if (this->OFBActive)
+  {
+    // Fragment shader: storage blocks, the lookup, and the colour it gives, after the
+    // superclass's colour code. Bit casts read the depths packed with the colours
+    // (ARB_shader_bit_encoding, checked by vtkOFBShaderStorage::IsSupported);
+    // gl_HelperInvocation (ARB_ES3_1_compatibility, used where the context offers it) keeps
+    // helper lanes out of the lookup fallbacks.
+    std::string fs = shaders[vtkShader::Fragment]->GetSource();
     vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
       "//VTK::System::Dec\n"
       "#extension GL_ARB_shader_storage_buffer_object : require\n"
@@ -501,22 +559,17 @@ void vtkOFBPolyDataMapper::ReplaceShaderValues(
     std::ostringstream defines;
     defines << "//VTK::Color::Dec\n"
             << "#define OFB_MODE " << this->LookupMode << "\n"
-            << "#define OFB_MAX_LEVELS " << vtkOFBShaderStorage::MaximumNumberOfLevels << "\n";
-    if (this->SourceScalars)
+            << "#define OFB_MAX_LEVELS " << vtkOFBShaderStorage::MaximumNumberOfLevels << "\n"
+            << "#define OFB_LIC_MODE " << this->LICColorMode << "\n";
+    const std::pair<bool, const char*> flags[] = { { this->SourceScalars, "OFB_SOURCE_SCALARS" },
+      { this->UseIntensity, "OFB_USE_INTENSITY" }, { this->UseNormals, "OFB_USE_NORMALS" },
+      { this->DeepCells, "OFB_DEEP_CELLS" } };
+    for (const auto& flag : flags)
     {
-      defines << "#define OFB_SOURCE_SCALARS 1\n";
-    }
-    if (this->UseIntensity)
-    {
-      defines << "#define OFB_USE_INTENSITY 1\n";
-    }
-    if (this->UseNormals)
-    {
-      defines << "#define OFB_USE_NORMALS 1\n";
-    }
-    if (this->DeepCells)
-    {
-      defines << "#define OFB_DEEP_CELLS 1\n";
+      if (flag.first)
+      {
+        defines << "#define " << flag.second << " 1\n";
+      }
     }
     vtkShaderProgram::Substitute(fs, "//VTK::Color::Dec", defines.str() + vtkOFBLookupFS);
     vtkShaderProgram::Substitute(fs, "//VTK::UniformFlow::Impl",
@@ -535,36 +588,36 @@ void vtkOFBPolyDataMapper::ReplaceShaderValues(
       "    diffuseColor = diffuseIntensity * ofbColor.rgb;\n"
       "    opacity = opacity * ofbColor.a;\n"
       "  }\n");
-    shaders[vtkShader::Vertex]->SetSource(vs);
     shaders[vtkShader::Fragment]->SetSource(fs);
   }
-  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  this->Superclass::ReplaceShaderColor(shaders, ren, act);
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::ReplaceShaderLight(
+void vtkOFBPolyDataMapper::ReplaceShaderNormal(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
-  if (this->OFBActive && this->UseNormals)
+  this->Superclass::ReplaceShaderNormal(shaders, ren, act);
+  if (!this->OFBActive || !this->UseNormals)
   {
-    // After the superclass's normal code: replace the normal by the painted one, on the
-    // side of the interpolated (already front-facing) normal.
-    std::string fs = shaders[vtkShader::Fragment]->GetSource();
-    if (fs.find("normalVCVSOutput") != std::string::npos)
-    {
-      vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl",
-        "#ifdef OFB_USE_NORMALS\n"
-        "  if (ofbAcc.weight > 0.0 && dot(ofbAcc.normal, ofbAcc.normal) > 0.0)\n"
-        "  {\n"
-        "    vec3 ofbN = normalize(ofbNormalMatrix * ofbAcc.normal);\n"
-        "    normalVCVSOutput = dot(ofbN, normalVCVSOutput) < 0.0 ? -ofbN : ofbN;\n"
-        "  }\n"
-        "#endif\n"
-        "//VTK::Light::Impl\n");
-      shaders[vtkShader::Fragment]->SetSource(fs);
-    }
+    return;
   }
-  this->Superclass::ReplaceShaderLight(shaders, ren, act);
+  // After the superclass's normal code, before the lighting: replace the normal by the
+  // painted one, on the side of the interpolated (already front-facing) normal.
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  if (fs.find("normalVCVSOutput") != std::string::npos)
+  {
+    vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl",
+      "#ifdef OFB_USE_NORMALS\n"
+      "  if (ofbAcc.weight > 0.0 && dot(ofbAcc.normal, ofbAcc.normal) > 0.0)\n"
+      "  {\n"
+      "    vec3 ofbN = normalize(ofbNormalMatrix * ofbAcc.normal);\n"
+      "    normalVCVSOutput = dot(ofbN, normalVCVSOutput) < 0.0 ? -ofbN : ofbN;\n"
+      "  }\n"
+      "#endif\n"
+      "//VTK::Light::Impl\n");
+    shaders[vtkShader::Fragment]->SetSource(fs);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -573,12 +626,12 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   vtkShaderProgram* program = cellBO.Program;
-  vtkOFB* ofb = this->OFBActive ? this->UploadedOFB : nullptr;
+  vtkOFB* ofb = this->OFBActive ? this->Storage->GetUploadedOFB() : nullptr;
   if (!program || !ofb || !program->IsUniformUsed("ofbPositionScale"))
   {
     return;
   }
-  this->Storage->SetBlockBindings(program);
+  this->Storage->SetUniforms(program, this->SourceScalars);
 
   // vertexMC is (x - shift) * scale when the VBO shifts and scales coordinates.
   double shift[3] = { 0.0, 0.0, 0.0 };
@@ -606,69 +659,44 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(
   }
   program->SetUniform3f("ofbPositionScale", posScale);
   program->SetUniform3f("ofbPositionShift", posShift);
-
-  // Levels.
-  const int nl = this->Storage->GetNumberOfLevels();
-  float transforms[4 * vtkOFBShaderStorage::MaximumNumberOfLevels] = { 0.0f };
-  const vtkOFB* levels[vtkOFBShaderStorage::MaximumNumberOfLevels] = { nullptr };
-  levels[0] = ofb;
-  for (int l = 1; l < nl; ++l)
-  {
-    levels[l] = this->Pyramid->GetLevel(l);
-  }
-  for (int l = 0; l < nl && levels[l]; ++l)
-  {
-    vtkOFB* level = const_cast<vtkOFB*>(levels[l]);
-    const double sl = level->GetCellSize();
-    const double* ol = level->GetOrigin();
-    for (int i = 0; i < 3; ++i)
-    {
-      transforms[4 * l + i] = static_cast<float>((origin[i] - ol[i]) / sl);
-    }
-    transforms[4 * l + 3] = static_cast<float>(s / sl);
-  }
-  program->SetUniformi("ofbNumberOfLevels", nl);
-  program->SetUniform4fv("ofbLevelTransform", nl, transforms);
-  program->SetUniform1iv("ofbLevelDims", 3 * nl, this->Storage->GetLevelDims().data());
-  program->SetUniform1iv("ofbLevelCellBase", 3 * nl, this->Storage->GetLevelCellBase().data());
-  program->SetUniform1iv("ofbLevelSampleBase", nl, this->Storage->GetLevelSampleBase().data());
   program->SetUniformf("ofbMipmapBias", static_cast<float>(this->MipmapBias));
   program->SetUniformf("ofbRadius", static_cast<float>(this->InterpolationRadius));
   program->SetUniformi("ofbNearestVisits", 15); // 3 grids + 2x2 cells in each of the 3
 
-  if (this->SourceScalars)
-  {
-    const double span = this->UploadedLUTRange[1] - this->UploadedLUTRange[0];
-    const float range[2] = { static_cast<float>(this->UploadedLUTRange[0]),
-      static_cast<float>(span != 0.0 ? 1.0 / span : 0.0) };
-    program->SetUniform2f("ofbScalarRange", range);
-    program->SetUniformi("ofbLUTSize", vtkOFBShaderStorage::LUTSize);
-  }
   if (this->UseIntensity)
   {
     program->SetUniformf("ofbIntensityWeight", static_cast<float>(this->IntensityWeight));
+    program->SetUniformf("ofbLICIntensity", static_cast<float>(this->LICIntensity));
+    program->SetUniformf("ofbMapModeBias", static_cast<float>(this->MapModeBias));
   }
   if (this->UseNormals && program->IsUniformUsed("ofbNormalMatrix"))
   {
-    // Model to view normals, as vtkOpenGLPolyDataMapper computes "normalMatrix".
-    vtkOpenGLCamera* cam = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
-    vtkMatrix4x4* wcdc;
-    vtkMatrix4x4* wcvc;
-    vtkMatrix3x3* norms;
-    vtkMatrix4x4* vcdc;
-    cam->GetKeyMatrices(ren, wcvc, norms, vcdc, wcdc);
-    vtkNew<vtkMatrix3x3> normalMatrix;
-    normalMatrix->DeepCopy(norms);
-    vtkOpenGLActor* glActor = vtkOpenGLActor::SafeDownCast(act);
-    if (glActor && !act->GetIsIdentity())
-    {
-      vtkMatrix4x4* mcwc;
-      vtkMatrix3x3* anorms;
-      glActor->GetKeyMatrices(mcwc, anorms);
-      vtkMatrix3x3::Multiply3x3(anorms, norms, normalMatrix);
-    }
-    program->SetUniformMatrix("ofbNormalMatrix", normalMatrix);
+    this->SetNormalMatrix(program, ren, act);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::SetNormalMatrix(
+  vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
+{
+  // Model to view normals, as vtkOpenGLPolyDataMapper computes "normalMatrix".
+  vtkOpenGLCamera* cam = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+  vtkMatrix4x4* wcdc;
+  vtkMatrix4x4* wcvc;
+  vtkMatrix3x3* norms;
+  vtkMatrix4x4* vcdc;
+  cam->GetKeyMatrices(ren, wcvc, norms, vcdc, wcdc);
+  vtkNew<vtkMatrix3x3> normalMatrix;
+  normalMatrix->DeepCopy(norms);
+  vtkOpenGLActor* glActor = vtkOpenGLActor::SafeDownCast(act);
+  if (glActor && !act->GetIsIdentity())
+  {
+    vtkMatrix4x4* mcwc;
+    vtkMatrix3x3* anorms;
+    glActor->GetKeyMatrices(mcwc, anorms);
+    vtkMatrix3x3::Multiply3x3(anorms, norms, normalMatrix);
+  }
+  program->SetUniformMatrix("ofbNormalMatrix", normalMatrix);
 }
 
 //------------------------------------------------------------------------------
@@ -690,8 +718,12 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "IntensityModulation: " << (this->IntensityModulation ? "On" : "Off") << "\n";
   os << indent << "IntensityWeight: " << this->IntensityWeight << "\n";
+  os << indent << "LICColorMode: " << GetLICColorModeAsString(this->LICColorMode) << "\n";
+  os << indent << "LICIntensity: " << this->LICIntensity << "\n";
+  os << indent << "MapModeBias: " << this->MapModeBias << "\n";
   os << indent << "UsePaintedNormals: " << (this->UsePaintedNormals ? "On" : "Off") << "\n";
   os << indent << "LastUploadedSampleCount: " << this->LastUploadedSampleCount << "\n";
   os << indent << "LastRenderUsedOFB: " << (this->LastRenderUsedOFB ? "true" : "false") << "\n";
   os << indent << "GPUMemorySize: " << this->Storage->GetMemorySize() << " bytes\n";
+  os << indent << "UploadedBytes: " << this->Storage->GetUploadedBytes() << "\n";
 }

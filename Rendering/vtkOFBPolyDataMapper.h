@@ -16,9 +16,9 @@
  *   normal (computed per fragment from screen-space derivatives of the position: the normal
  *   vtkOFBSampler routes a triangle by, so the grid that holds its samples), else the next
  *   most aligned grid, else the last one, else the closest sample within
- *   InterpolationRadius in the 2x2 nearest cells of all three grids. On the Stanford bunny
- *   (1024-cell OFB, 1280x1024 window, Mesa llvmpipe) a frame takes about 1.3 times as long
- *   as with vtkPolyDataMapper and vertex colours (Testing/Benchmarks/ofbMapperBenchmark).
+ *   InterpolationRadius in the 2x2 nearest cells of all three grids. The frame time
+ *   against vtkPolyDataMapper with vertex colours is measured by
+ *   Testing/Benchmarks/ofbMapperBenchmark (docs/performance.md, "Mapper history").
  * - InverseDistance: Shepard-weighted samples within sqrt(3) cells in the 3x3 cells
  *   around the point in all three grids.
  * - Mipmapped: InverseDistance on a pyramid of coarser OFBs (vtkOFBPyramid, built on
@@ -27,10 +27,52 @@
  *
  * Colour sources: Paint (the OFB's "Colors" array) or Scalars (a named float sample
  * array mapped through the mapper's lookup table over its ScalarRange, or the table's own
- * range with UseLookupTableScalarRange). An intensity array (e.g. "LIC") can modulate
- * either. With UsePaintedNormals the OFB's "Normals" shade the surface. The colour
- * replaces the property's ambient and diffuse colours; its alpha multiplies the opacity.
- * Fragments with no sample nearby keep the property colour.
+ * range with UseLookupTableScalarRange). A LIC array (IntensityArrayName, e.g. vtkOFBLIC's
+ * "LIC", values L in [0, 1]) combines with either, per fragment, as in VTK's surface LIC
+ * (c: the colour of the source, alpha kept):
+ * - COLOR_MODE_BLEND (default): c' = L * LICIntensity + c * (1 - LICIntensity); with
+ *   LICIntensity 1 the LIC shows alone.
+ * - COLOR_MODE_MAP: c' = c * mix(1, clamp(L + MapModeBias, 0, 1), IntensityWeight); with
+ *   IntensityWeight 1 (default) VTK 9.1's shader formula (it multiplies the RGB colour).
+ * The combined colour is then lit as the surface colour (VTK's image-space LIC combines
+ * with the lit colour; with lighting off, or ambient 1 and diffuse 0, both agree).
+ * An array that is new or Modified() since the last render (a re-convolution with another
+ * AnimationPhase) is uploaded alone, whole; vtkOFB::MarkSamplesModified ranges upload
+ * the selected arrays over those ranges.
+ *
+ * Settings of vtkSurfaceLICInterface and where they are here:
+ * | vtkSurfaceLICInterface            | vtkOFB                                             |
+ * |-----------------------------------|----------------------------------------------------|
+ * | Enable                            | IntensityModulation (mapper)                       |
+ * | ColorMode (COLOR_MODE_BLEND/MAP)  | LICColorMode (COLOR_MODE_BLEND/MAP), same formulas |
+ * | LICIntensity (0.8)                | LICIntensity (0.8), same meaning                   |
+ * | MapModeBias (0)                   | MapModeBias (0), same meaning                      |
+ * | (none)                            | IntensityWeight (1): strength of MAP               |
+ * | scalar colouring of the mapper    | ColorSource Scalars + lookup table, or Paint       |
+ * | NumberOfSteps, StepSize           | vtkOFBLIC (StepSize in cells, not pixels)          |
+ * | NormalizeVectors                  | vtkOFBLIC                                          |
+ * | EnhancedLIC, EnhanceContrast (LIC)| vtkOFBLIC                                          |
+ * | Low/HighLICContrastEnhancement... | vtkOFBLIC                                          |
+ * | MaskOnSurface, MaskThreshold,     | vtkOFBLIC (masking is computed with the LIC)       |
+ * |   MaskColor, MaskIntensity        |                                                    |
+ * | noise (GenerateNoiseTexture, ...) | vtkOFBLIC                                          |
+ * | EnhanceContrast COLOR/BOTH,       | not offered: the combined colour is not stretched  |
+ * |   Low/HighColorContrastEnh...     |                                                    |
+ * | AntiAlias                         | not needed: the LIC lives on the surface; the      |
+ * |                                   |   InverseDistance/Mipmapped lookups filter it      |
+ * | CompositeStrategy                 | not applicable (no image-space compositing)        |
+ *
+ * With UsePaintedNormals the OFB's "Normals" shade the surface. The colour replaces the
+ * property's ambient and diffuse colours; its alpha multiplies the opacity. Fragments with
+ * no sample nearby keep the property colour.
+ *
+ * Translucency: where the OFB's colours have alpha below 255 (or the lookup table is not
+ * opaque), HasTranslucentPolygonalGeometry() says so and the surface renders in the
+ * translucent pass with the sample alpha, sorted with the renderer's other actors by
+ * VTK's depth peeling (vtkRenderer::SetUseDepthPeeling). An OFB whose colours start
+ * transparent (alpha 0) is thus revealed where paint lands (paper Fig. 2). Filtered
+ * lookups average colours premultiplied by their alpha, so that transparent samples do
+ * not darken their painted neighbours.
  *
  * Uploads are incremental: samples marked with vtkOFB::MarkSamplesModified after the last
  * upload are sent with glBufferSubData; a structure change (new OFB, reallocation) sends
@@ -38,6 +80,12 @@
  *
  * Without an OFB, with an empty one, or on a context without shader storage buffers, the
  * mapper renders like vtkOpenGLPolyDataMapper and warns once.
+ *
+ * A render is a short sequence of named steps (RenderPiece): UpdateOFBInput, CheckOFB,
+ * PrepareContext, SelectArrays, CheckSurfaceInFrame, then the GPU-side steps of the private
+ * helper vtkOFBShaderStorage (levels, uploads, lookup table), which owns every GPU resource
+ * and what was uploaded; the shader code goes in through vtkOpenGLPolyDataMapper's
+ * per-aspect hooks (ReplaceShaderColor, ReplaceShaderNormal, ReplaceShaderPositionVC).
  *
  * @sa vtkOFB vtkOFBSampler vtkOFBBuilder vtkOFBPyramid
  */
@@ -48,15 +96,17 @@
 #include "vtkOFBRenderingModule.h" // for export macro
 #include "vtkOpenGLPolyDataMapper.h"
 
+#include "vtkWeakPointer.h" // for WarnedOFB
+
+#include <memory> // for std::unique_ptr
 #include <set>    // for Warnings
 #include <string> // for Warnings
 
 class vtkAlgorithmOutput;
-class vtkIdTypeArray;
+class vtkDataArray;
 class vtkOFB;
-class vtkOFBPyramid;
 class vtkOFBShaderStorage;
-class vtkOpenGLRenderWindow;
+struct vtkOFBShaderStorageSelection;
 
 class VTKOFBRENDERING_EXPORT vtkOFBPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
@@ -154,17 +204,63 @@ public:
   vtkGetMacro(ScalarComponent, int);
   ///@}
 
+  enum LICColorModes
+  {
+    COLOR_MODE_BLEND = 0,
+    COLOR_MODE_MAP = 1
+  };
+
   ///@{
   /**
-   * Float sample array (e.g. "LIC", values in [0, 1]) whose value multiplies the colour
-   * when IntensityModulation is on (default off, no array). The colour is scaled by
-   * mix(1, intensity, IntensityWeight); IntensityWeight is in [0, 1], default 1.
+   * The LIC (or any intensity) display: a float sample array, values in [0, 1] (default
+   * none; vtkOFBLIC writes "LIC"), combined with the colour of ColorSource when
+   * IntensityModulation is on (default off), as vtkSurfaceLICInterface combines its LIC
+   * with the scalar colours. See the class documentation for the formulas.
    */
   vtkSetStringMacro(IntensityArrayName);
   vtkGetStringMacro(IntensityArrayName);
   vtkSetMacro(IntensityModulation, bool);
   vtkGetMacro(IntensityModulation, bool);
   vtkBooleanMacro(IntensityModulation, bool);
+  ///@}
+
+  ///@{
+  /**
+   * How the LIC combines with the colour (vtkSurfaceLICInterface's ColorMode; vtkMapper
+   * has a ColorMode of its own): COLOR_MODE_BLEND (default) mixes the LIC grey with the
+   * colour by LICIntensity, COLOR_MODE_MAP multiplies the colour by the LIC plus
+   * MapModeBias.
+   */
+  vtkSetClampMacro(LICColorMode, int, COLOR_MODE_BLEND, COLOR_MODE_MAP);
+  vtkGetMacro(LICColorMode, int);
+  void SetLICColorModeToBlend() { this->SetLICColorMode(COLOR_MODE_BLEND); }
+  void SetLICColorModeToMap() { this->SetLICColorMode(COLOR_MODE_MAP); }
+  static const char* GetLICColorModeAsString(int mode);
+  ///@}
+
+  ///@{
+  /**
+   * COLOR_MODE_BLEND: the LIC's share of the result, in [0, 1] (default 0.8, as VTK's):
+   * 0 shows the colour alone, 1 the LIC alone.
+   */
+  vtkSetClampMacro(LICIntensity, double, 0.0, 1.0);
+  vtkGetMacro(LICIntensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * COLOR_MODE_MAP: added to the LIC before it multiplies the colour, in [-1, 1] (default
+   * 0, as VTK's); positive values brighten, negative darken.
+   */
+  vtkSetClampMacro(MapModeBias, double, -1.0, 1.0);
+  vtkGetMacro(MapModeBias, double);
+  ///@}
+
+  ///@{
+  /**
+   * COLOR_MODE_MAP: strength of the multiplication, in [0, 1] (default 1, VTK's formula):
+   * the factor is mix(1, clamp(LIC + MapModeBias, 0, 1), IntensityWeight).
+   */
   vtkSetClampMacro(IntensityWeight, double, 0.0, 1.0);
   vtkGetMacro(IntensityWeight, double);
   ///@}
@@ -180,7 +276,9 @@ public:
   ///@}
 
   /**
-   * Samples uploaded to the GPU by the last render (0 when nothing changed).
+   * Samples uploaded to the GPU by the last render of the piece (0 when nothing changed).
+   * With depth peeling a frame renders a translucent piece once per peel and only the
+   * first uploads: count a frame's uploads with GetUploadedBytes() instead.
    */
   vtkGetMacro(LastUploadedSampleCount, vtkIdType);
 
@@ -204,24 +302,74 @@ public:
    */
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
 
+  /**
+   * Whether the surface has translucent parts: an OFB colour (Paint) with alpha below
+   * 255, or a lookup table that is not opaque (Scalars). Without a usable OFB, the
+   * superclass's answer. Updates input port 1; the scan of the colours' alpha runs only
+   * when they changed (modified sample ranges, a new array or structure) and stops at the
+   * first translucent sample.
+   */
+  bool HasTranslucentPolygonalGeometry() override;
+
+  /**
+   * Bytes uploaded to the GPU since the mapper was created (OFB samples, attributes and
+   * lookup table): the difference over a render says what that render sent.
+   */
+  vtkIdType GetUploadedBytes();
+
 protected:
   vtkOFBPolyDataMapper();
   ~vtkOFBPolyDataMapper() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
-  void ReplaceShaderValues(
+  ///@{
+  /**
+   * vtkOpenGLPolyDataMapper's per-aspect shader hooks: the position in OFB cells
+   * (PositionVC), the lookup and the colour it gives (Color), the painted normals (Normal).
+   */
+  void ReplaceShaderPositionVC(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderLight(
+  void ReplaceShaderColor(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderNormal(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  ///@}
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
+  ///@{
   /**
-   * Update input port 1, check the OFB and the context, build the pyramid and upload
-   * what changed. Returns whether this render colours from the OFB.
+   * The steps of a render. PrepareOFB runs them in order and returns whether this render
+   * colours from the OFB: UpdateOFBInput (update input port 1, return its OFB),
+   * CheckOFB (present, not empty), PrepareContext (the window offers what the lookup
+   * needs), SelectArrays (which sample arrays the shader reads, with fallbacks),
+   * CheckSurfaceInFrame (warn when the surface leaves the OFB's frame), UploadOFB (the
+   * levels and what changed of them), UploadLookupTable (Scalars source only);
+   * UpdateShaderKey notes a change of the shader's variant.
    */
-  bool PrepareOFB(vtkRenderer* ren, vtkActor* act);
+  bool PrepareOFB(vtkRenderer* ren);
+  vtkOFB* UpdateOFBInput();
+  bool CheckOFB(vtkOFB* ofb);
+  bool PrepareContext(vtkRenderer* ren);
+  bool SelectArrays(vtkOFB* ofb, vtkOFBShaderStorageSelection& selection);
+  void CheckSurfaceInFrame(vtkOFB* ofb);
+  bool UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorageSelection& selection);
+  void UploadLookupTable();
+  void UpdateShaderKey();
+  void UpdateOFBProducer();
+  ///@}
+
+  /**
+   * Whether the "Colors" sample array of `ofb` holds an alpha below 255 (cached, see
+   * HasTranslucentPolygonalGeometry).
+   */
+  bool HasTranslucentColors(vtkOFB* ofb);
+
+  /**
+   * Set "ofbNormalMatrix" (model to view normals) on `program`.
+   */
+  void SetNormalMatrix(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act);
 
   /**
    * Warn once per distinct message, until the OFB or a setting changes.
@@ -239,6 +387,9 @@ protected:
   char* IntensityArrayName;
   bool IntensityModulation;
   double IntensityWeight;
+  int LICColorMode;
+  double LICIntensity;
+  double MapModeBias;
   bool UsePaintedNormals;
 
   vtkIdType LastUploadedSampleCount;
@@ -253,20 +404,19 @@ protected:
   std::string ShaderKey;
   vtkTimeStamp ShaderKeyTime;
 
-  vtkOFBShaderStorage* Storage;
-  vtkOFBPyramid* Pyramid;
-  vtkIdTypeArray* Ranges;
-  vtkTimeStamp UploadTime;
-  std::string UploadKey;
-  vtkOFB* UploadedOFB; // compared only, never dereferenced
-  vtkMTimeType UploadedPyramidTime;
-  vtkMTimeType UploadedLUTTime;
-  double UploadedLUTRange[2];
-  vtkOpenGLRenderWindow* CheckedWindow; // compared only
-  bool CheckedWindowSupported;
-  std::string CheckedWindowReason;
+  // The GPU state and what was uploaded.
+  std::unique_ptr<vtkOFBShaderStorage> Storage;
+
+  // HasTranslucentColors's cache: the OFB and colour array scanned, when, the answer, and
+  // where the last translucent sample was found.
+  vtkWeakPointer<vtkOFB> AlphaOFB;
+  vtkWeakPointer<vtkDataArray> AlphaColors;
+  vtkTimeStamp AlphaTime;
+  bool AlphaTranslucent;
+  vtkIdType AlphaHint;
+
   std::set<std::string> Warnings;
-  vtkOFB* WarnedOFB; // compared only
+  vtkWeakPointer<vtkOFB> WarnedOFB;
   vtkMTimeType WarnedMTime;
 
 private:

@@ -4,6 +4,7 @@
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkOFB.h"
+#include "vtkOFBPyramid.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <sstream>
 
 namespace
 {
@@ -66,7 +68,244 @@ vtkOFBShaderStorage::vtkOFBShaderStorage()
 }
 
 //------------------------------------------------------------------------------
-vtkOFBShaderStorage::~vtkOFBShaderStorage() = default;
+vtkOFBShaderStorage::~vtkOFBShaderStorage()
+{
+  // Buffers still held here belong to a window that outlived the mapper: free them in that
+  // window's context when it is current, else leave them to it.
+  if (this->Window && this->GetMemorySize() > 0 && this->Window->IsCurrent())
+  {
+    this->FreeBuffers();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBShaderStorage::SetContext(vtkOpenGLRenderWindow* window, std::string& why)
+{
+  if (!window || window != this->CheckedWindow)
+  {
+    this->CheckedWindow = window;
+    this->CheckedWindowSupported = IsSupported(window, this->CheckedWindowReason);
+  }
+  if (!this->CheckedWindowSupported)
+  {
+    why = this->CheckedWindowReason;
+    return false;
+  }
+  if (window != this->Window)
+  {
+    if (this->Window)
+    {
+      this->Window->MakeCurrent();
+      this->FreeBuffers();
+      window->MakeCurrent();
+    }
+    this->Window = window;
+    this->ForgetUploads();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBShaderStorage::UpdateLevels(
+  vtkOFB* ofb, vtkPolyData* surface, bool mipmapped, int maximumLevels, int minimumResolution)
+{
+  this->Levels.assign(1, ofb);
+  if (!mipmapped)
+  {
+    if (this->Pyramid->GetInputOFB())
+    {
+      this->Pyramid->SetInputOFB(nullptr);
+      this->Pyramid->SetSurface(nullptr);
+    }
+    return true;
+  }
+  this->Pyramid->SetInputOFB(ofb);
+  this->Pyramid->SetSurface(surface);
+  this->Pyramid->SetMaximumNumberOfLevels(std::min(maximumLevels, MaximumNumberOfLevels));
+  this->Pyramid->SetMinimumResolution(minimumResolution);
+  if (!this->Pyramid->UpdateLevels())
+  {
+    return false;
+  }
+  for (int k = 1; k < this->Pyramid->GetNumberOfLevels(); ++k)
+  {
+    this->Levels.push_back(this->Pyramid->GetLevel(k));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBShaderStorage::UploadChanges(const Selection& selection, std::string& error)
+{
+  vtkOFB* ofb = this->Levels.empty() ? nullptr : this->Levels[0];
+  if (!ofb || !this->Window)
+  {
+    error = "no OFB or no window";
+    return -1;
+  }
+  std::ostringstream key;
+  key << this->Levels.size() << "|" << selection.Colors << "|" << selection.ScalarName << "|"
+      << selection.ScalarComponent << "|" << selection.IntensityName << "|" << selection.Normals;
+  const bool mipmapped = this->Levels.size() > 1;
+  const bool full = ofb != this->UploadedOFB || key.str() != this->UploadKey ||
+    ofb->GetStructureMTime() > this->UploadTime.GetMTime() ||
+    (mipmapped && this->Pyramid->GetStructureTime() > this->UploadedPyramidTime) ||
+    this->GetMemorySize() == 0;
+  this->Window->MakeCurrent();
+  vtkIdType count = 0;
+  if (full)
+  {
+    count = this->UploadAll(this->Levels, selection, error);
+    if (count < 0)
+    {
+      this->UploadedOFB = nullptr;
+      return -1;
+    }
+    this->UploadedOFB = ofb;
+    this->UploadKey = key.str();
+  }
+  else
+  {
+    const unsigned int whole = this->UploadChangedArrays(selection, count);
+    ofb->GetSampleRangesModifiedSince(this->UploadTime.GetMTime(), this->Ranges);
+    count += this->UploadRanges(this->Levels, 0, selection, this->Ranges, AllArrays & ~whole);
+    if (mipmapped)
+    {
+      count += this->UploadCoarseLevels(selection, whole != 0);
+    }
+  }
+  this->RecordArrays(selection);
+  this->UploadedPyramidTime = this->Pyramid->GetStructureTime();
+  this->UploadTime.Modified();
+  return count;
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkOFBShaderStorage::UploadChangedArrays(
+  const Selection& selection, vtkIdType& count)
+{
+  vtkOFB* ofb = this->Levels[0];
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  const int base = this->LevelSampleBase.empty() ? 0 : this->LevelSampleBase[0];
+  const int ids[3] = { Samples, Intensity, Normals };
+  const bool wanted[3] = { true, !selection.IntensityName.empty(), selection.Normals };
+  unsigned int whole = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkDataArray* array = !wanted[k] ? nullptr
+      : GetArray(ofb, ids[k] == Samples ? (selection.Colors ? Colors : Scalars) : ids[k],
+          selection);
+    if (!array ||
+      (array == this->UploadedArrays[ids[k]] &&
+        array->GetMTime() <= this->UploadTime.GetMTime()))
+    {
+      continue;
+    }
+    if (ids[k] == Samples)
+    {
+      this->UploadSamples(ofb, array, selection, 0, n, base);
+    }
+    else
+    {
+      this->UploadArray(ids[k], array, 0, n, base);
+    }
+    whole |= 1u << ids[k];
+    count = n;
+  }
+  return whole;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::RecordArrays(const Selection& selection)
+{
+  vtkOFB* ofb = this->Levels[0];
+  this->UploadedArrays[Samples] = GetArray(ofb, selection.Colors ? Colors : Scalars, selection);
+  this->UploadedArrays[Intensity] =
+    selection.IntensityName.empty() ? nullptr : GetArray(ofb, Intensity, selection);
+  this->UploadedArrays[Normals] = selection.Normals ? GetArray(ofb, Normals, selection) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection, bool arraysChanged)
+{
+  // Level 0 changed since the last upload: filter the coarser levels' attributes again.
+  if ((arraysChanged || this->Ranges->GetNumberOfTuples() > 0) &&
+    this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
+  {
+    this->Pyramid->UpdateArrays();
+  }
+  if (this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
+  {
+    return 0;
+  }
+  vtkIdType count = 0;
+  for (size_t k = 1; k < this->Levels.size(); ++k)
+  {
+    this->Ranges->Initialize();
+    this->Ranges->SetNumberOfComponents(2);
+    const vtkIdType all[2] = { 0, this->Levels[k]->GetNumberOfSamples() };
+    this->Ranges->InsertNextTypedTuple(all);
+    count += this->UploadRanges(this->Levels, static_cast<int>(k), selection, this->Ranges);
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::UpdateLookupTable(vtkScalarsToColors* lut, const double range[2])
+{
+  if (!lut)
+  {
+    return;
+  }
+  if (lut->GetMTime() > this->UploadedLUTTime || range[0] != this->UploadedLUTRange[0] ||
+    range[1] != this->UploadedLUTRange[1])
+  {
+    this->UploadLookupTable(lut, range);
+    this->UploadedLUTTime = lut->GetMTime();
+    this->UploadedLUTRange[0] = range[0];
+    this->UploadedLUTRange[1] = range[1];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::SetUniforms(vtkShaderProgram* program, bool scalars)
+{
+  vtkOFB* ofb = this->UploadedOFB;
+  if (!program || !ofb)
+  {
+    return;
+  }
+  this->SetBlockBindings(program);
+  // Level l's position is the level-0 position (in level-0 cells) scaled and shifted.
+  const int nl = std::min(this->GetNumberOfLevels(), static_cast<int>(this->Levels.size()));
+  const double* origin = ofb->GetOrigin();
+  const double s = ofb->GetCellSize();
+  float transforms[4 * MaximumNumberOfLevels] = { 0.0f };
+  for (int l = 0; l < nl; ++l)
+  {
+    vtkOFB* level = this->Levels[l];
+    const double sl = level->GetCellSize();
+    const double* ol = level->GetOrigin();
+    for (int i = 0; i < 3; ++i)
+    {
+      transforms[4 * l + i] = static_cast<float>((origin[i] - ol[i]) / sl);
+    }
+    transforms[4 * l + 3] = static_cast<float>(s / sl);
+  }
+  program->SetUniformi("ofbNumberOfLevels", nl);
+  program->SetUniform4fv("ofbLevelTransform", nl, transforms);
+  program->SetUniform1iv("ofbLevelDims", 3 * nl, this->LevelDims.data());
+  program->SetUniform1iv("ofbLevelCellBase", 3 * nl, this->LevelCellBase.data());
+  program->SetUniform1iv("ofbLevelSampleBase", nl, this->LevelSampleBase.data());
+  if (scalars)
+  {
+    const double span = this->UploadedLUTRange[1] - this->UploadedLUTRange[0];
+    const float range[2] = { static_cast<float>(this->UploadedLUTRange[0]),
+      static_cast<float>(span != 0.0 ? 1.0 / span : 0.0) };
+    program->SetUniform2f("ofbScalarRange", range);
+    program->SetUniformi("ofbLUTSize", LUTSize);
+  }
+}
 
 //------------------------------------------------------------------------------
 bool vtkOFBShaderStorage::IsSupported(vtkOpenGLRenderWindow* window, std::string& why)
@@ -198,6 +437,7 @@ void vtkOFBShaderStorage::Upload(int id, size_t offset, size_t bytes, const void
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handles[id]);
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
     static_cast<GLsizeiptr>(bytes), data);
+  this->UploadedBytes += bytes;
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
@@ -328,7 +568,7 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
   if (!ok)
   {
     error = "could not allocate " + std::to_string(ns) + " samples of GPU memory";
-    this->ReleaseGraphicsResources();
+    this->FreeBuffers();
     return -1;
   }
   size_t cellOffset = 0;
@@ -365,17 +605,23 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
 
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels, int level,
-  const Selection& selection, vtkIdTypeArray* ranges)
+  const Selection& selection, vtkIdTypeArray* ranges, unsigned int buffers)
 {
+  if (!(buffers & AllArrays))
+  {
+    return 0;
+  }
   if (level < 0 || level >= static_cast<int>(levels.size()) ||
     level >= static_cast<int>(this->LevelSampleBase.size()) || !ranges)
   {
     return 0;
   }
   vtkOFB* ofb = levels[level];
+  const bool samples = (buffers & (1u << Samples)) != 0;
   vtkDataArray* attribute = GetArray(ofb, selection.Colors ? Colors : Scalars, selection);
   const int arrays[2] = { Intensity, Normals };
-  const bool wanted[2] = { !selection.IntensityName.empty(), selection.Normals };
+  const bool wanted[2] = { !selection.IntensityName.empty() && (buffers & (1u << Intensity)),
+    selection.Normals && (buffers & (1u << Normals)) };
   vtkDataArray* sources[2];
   for (int k = 0; k < 2; ++k)
   {
@@ -391,7 +637,10 @@ vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels, 
     {
       continue;
     }
-    this->UploadSamples(ofb, attribute, selection, first, last, this->LevelSampleBase[level]);
+    if (samples)
+    {
+      this->UploadSamples(ofb, attribute, selection, first, last, this->LevelSampleBase[level]);
+    }
     for (int k = 0; k < 2; ++k)
     {
       this->UploadArray(arrays[k], sources[k], first, last, this->LevelSampleBase[level]);
@@ -478,7 +727,27 @@ size_t vtkOFBShaderStorage::GetMemorySize() const
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBShaderStorage::ReleaseGraphicsResources()
+void vtkOFBShaderStorage::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Window && (!window || window == static_cast<vtkWindow*>(this->Window)))
+  {
+    this->Window->MakeCurrent();
+    this->FreeBuffers();
+    this->Window = nullptr;
+    this->CheckedWindow = nullptr;
+    this->ForgetUploads();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::ForgetUploads()
+{
+  this->UploadedOFB = nullptr;
+  this->UploadedLUTTime = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::FreeBuffers()
 {
   for (int i = 0; i < NumberOfBuffers; ++i)
   {

@@ -1,6 +1,13 @@
 /**
  * @class   vtkOFBShaderStorage
- * @brief   Shader storage buffers holding vtkOFB levels for vtkOFBPolyDataMapper (private)
+ * @brief   The GPU side of vtkOFBPolyDataMapper: vtkOFB levels in shader storage (private)
+ *
+ * The helper object that owns the mapper's GPU state and its per-render upload state, as
+ * vtkSurfaceLICInterface does for vtkSurfaceLICMapper; the mapper calls its named steps once
+ * per render: SetContext (the window, checked once), UpdateLevels (the OFB and, when
+ * mipmapped, its pyramid), UploadChanges (everything on a structure or selection change,
+ * else the modified sample ranges), UpdateLookupTable, then Bind / SetUniforms / Unbind
+ * around the draw.
  *
  * Owns the OpenGL shader storage buffer objects (SSBOs) that the lookup fragment shader
  * (shaders/vtkOFBLookupFS.glsl) reads: the cell offsets of every level, the samples (two
@@ -16,17 +23,35 @@
 #ifndef vtkOFBShaderStorage_h
 #define vtkOFBShaderStorage_h
 
-#include "vtkType.h"
+#include "vtkNew.h"         // for vtkNew
+#include "vtkTimeStamp.h"   // for UploadTime
+#include "vtkType.h"        // for vtkIdType
+#include "vtkWeakPointer.h" // for vtkWeakPointer
 
-#include <string>
-#include <vector>
+#include <string> // for Selection
+#include <vector> // for levels
 
 class vtkDataArray;
 class vtkIdTypeArray;
 class vtkOFB;
+class vtkOFBPyramid;
 class vtkOpenGLRenderWindow;
+class vtkPolyData;
 class vtkScalarsToColors;
 class vtkShaderProgram;
+class vtkWindow;
+
+/**
+ * Which sample arrays vtkOFBShaderStorage uploads. Empty names leave the buffer out.
+ */
+struct vtkOFBShaderStorageSelection
+{
+  bool Colors = true;        // the paint colours, else the scalars of ScalarName
+  std::string ScalarName;    // colour attribute when not Colors
+  int ScalarComponent = 0;   // -1: magnitude
+  std::string IntensityName; // the Intensity buffer's array
+  bool Normals = false;      // the Normals buffer
+};
 
 class vtkOFBShaderStorage
 {
@@ -49,29 +74,17 @@ public:
     Scalars
   };
 
+  /// Bit masks of the per-sample buffers that hold attributes (UploadRanges).
+  static constexpr unsigned int AllArrays = (1u << Samples) | (1u << Intensity) | (1u << Normals);
+
   /// Most levels a storage holds (size of the shader's per-level uniform arrays).
   static constexpr int MaximumNumberOfLevels = 16;
 
   /// Entries of the lookup-table buffer.
   static constexpr int LUTSize = 1024;
 
-  /**
-   * Which sample arrays to upload. Null names leave the buffer out.
-   */
-  struct Selection
-  {
-    bool Colors = true;
-    std::string ScalarName;
-    int ScalarComponent = 0; // -1: magnitude
-    std::string IntensityName;
-    bool Normals = false;
-    bool operator==(const Selection& o) const
-    {
-      return this->Colors == o.Colors && this->ScalarName == o.ScalarName &&
-        this->ScalarComponent == o.ScalarComponent && this->IntensityName == o.IntensityName &&
-        this->Normals == o.Normals;
-    }
-  };
+  /// Which sample arrays to upload (vtkOFBShaderStorageSelection).
+  using Selection = vtkOFBShaderStorageSelection;
 
   vtkOFBShaderStorage();
   ~vtkOFBShaderStorage();
@@ -86,7 +99,44 @@ public:
 
   /// Window whose context holds the buffers (null when none).
   vtkOpenGLRenderWindow* GetWindow() const { return this->Window; }
-  void SetWindow(vtkOpenGLRenderWindow* window) { this->Window = window; }
+
+  ///@{
+  /**
+   * The per-render steps of vtkOFBPolyDataMapper, in order.
+   *
+   * SetContext: use `window` (whether it is supported is checked once per window; `why`
+   * says what it lacks); the buffers of another window are released in that window's
+   * context first.
+   *
+   * UpdateLevels: level 0 is `ofb`; with `mipmapped` the coarser levels come from a
+   * pyramid built on demand from `ofb` and `surface` (at most `maximumLevels` levels, the
+   * coarsest with `minimumResolution` cells on its longest side). Returns false when the
+   * pyramid could not be built (level 0 alone is used then).
+   *
+   * UploadChanges: upload every level on a structure or selection change; else, of level 0,
+   * each selected array that is new or was Modified() since the last upload as a whole
+   * (a re-convolved LIC array alone), then the sample ranges marked modified since
+   * (vtkOFB::MarkSamplesModified) of the other arrays (and the pyramid's levels when
+   * their attributes were filtered again). Returns the number of samples sent, -1 on failure
+   * (`error` says why).
+   *
+   * UpdateLookupTable: sample `lut` over `range` into the LUT buffer when either changed.
+   */
+  bool SetContext(vtkOpenGLRenderWindow* window, std::string& why);
+  bool UpdateLevels(
+    vtkOFB* ofb, vtkPolyData* surface, bool mipmapped, int maximumLevels, int minimumResolution);
+  vtkIdType UploadChanges(const Selection& selection, std::string& error);
+  void UpdateLookupTable(vtkScalarsToColors* lut, const double range[2]);
+  ///@}
+
+  /// The OFB whose samples the buffers hold (null when none).
+  vtkOFB* GetUploadedOFB() const { return this->UploadedOFB; }
+
+  /**
+   * Set the uniforms that describe the uploaded levels (and, with `scalars`, the lookup
+   * table's range) on `program`, and connect its storage blocks to the binding points.
+   */
+  void SetUniforms(vtkShaderProgram* program, bool scalars);
 
   /**
    * Upload the structure (offsets, depths) and the selected arrays of every level.
@@ -101,9 +151,8 @@ public:
    * Upload the selected arrays of level `level` over the sample ranges `ranges`
    * (2 components: first, last) only. Returns the number of samples uploaded.
    */
-  vtkIdType UploadRanges(
-    const std::vector<vtkOFB*>& levels, int level, const Selection& selection,
-    vtkIdTypeArray* ranges);
+  vtkIdType UploadRanges(const std::vector<vtkOFB*>& levels, int level,
+    const Selection& selection, vtkIdTypeArray* ranges, unsigned int buffers = AllArrays);
 
   /**
    * Sample `lut` at LUTSize equal steps over [range[0], range[1]] into the LUT buffer.
@@ -129,8 +178,14 @@ public:
   /// Bytes of GPU memory held.
   size_t GetMemorySize() const;
 
-  /// Free the buffers (needs the context current, or no context at all).
-  void ReleaseGraphicsResources();
+  /// Bytes sent to the GPU since the storage was created.
+  size_t GetUploadedBytes() const { return this->UploadedBytes; }
+
+  /**
+   * Free the buffers in their window's context and forget what was uploaded, when
+   * `window` is that window or null.
+   */
+  void ReleaseGraphicsResources(vtkWindow* window);
 
   /// Name of the shader storage block of a buffer, and its binding point.
   static const char* GetBlockName(int id);
@@ -144,13 +199,35 @@ private:
   vtkOFBShaderStorage(const vtkOFBShaderStorage&) = delete;
   void operator=(const vtkOFBShaderStorage&) = delete;
 
+  void FreeBuffers();
+  void ForgetUploads();
+  vtkIdType UploadCoarseLevels(const Selection& selection, bool arraysChanged);
+  unsigned int UploadChangedArrays(const Selection& selection, vtkIdType& count);
+  void RecordArrays(const Selection& selection);
   bool Allocate(int id, size_t bytes);
   void Upload(int id, size_t offset, size_t bytes, const void* data);
   void UploadArray(int id, vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base);
   void UploadSamples(vtkOFB* ofb, vtkDataArray* attribute, const Selection& selection,
     vtkIdType first, vtkIdType last, vtkIdType base);
 
-  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  vtkWeakPointer<vtkOpenGLRenderWindow> CheckedWindow;
+  bool CheckedWindowSupported = false;
+  std::string CheckedWindowReason;
+
+  // The levels of this render, and what the buffers hold.
+  vtkNew<vtkOFBPyramid> Pyramid;
+  std::vector<vtkOFB*> Levels;
+  vtkNew<vtkIdTypeArray> Ranges;
+  vtkTimeStamp UploadTime;
+  std::string UploadKey;
+  vtkWeakPointer<vtkOFB> UploadedOFB;
+  vtkMTimeType UploadedPyramidTime = 0;
+  vtkMTimeType UploadedLUTTime = 0;
+  double UploadedLUTRange[2] = { 0.0, 0.0 };
+  size_t UploadedBytes = 0;
+  vtkWeakPointer<vtkDataArray> UploadedArrays[NumberOfBuffers]; // level 0's, per buffer
+
   unsigned int Handles[NumberOfBuffers];
   size_t Sizes[NumberOfBuffers];
   std::vector<int> LevelCellBase;   // 3 per level: first offsets entry of grid a

@@ -6,7 +6,8 @@
 //   OFB_MODE            0 nearest sample, 1 inverse-distance weighting, 2 mipmapped IDW
 //   OFB_MAX_LEVELS      size of the per-level uniform arrays
 //   OFB_SOURCE_SCALARS  colour from a float sample attribute through a lookup table, else paint
-//   OFB_USE_INTENSITY   a float sample array modulates the colour
+//   OFB_USE_INTENSITY   a float sample array (the LIC) combines with the colour
+//   OFB_LIC_MODE        how: 0 blend (by ofbLICIntensity), 1 map (multiply, ofbMapModeBias)
 //   OFB_USE_NORMALS     painted normals replace the interpolated normal for shading
 //   OFB_DEEP_CELLS      some cell holds many samples: binary searches before the linear scans
 // and enables GL_ARB_shader_bit_encoding and (where offered) GL_ARB_ES3_1_compatibility.
@@ -42,7 +43,9 @@ uniform int ofbLUTSize;
 #endif
 #ifdef OFB_USE_INTENSITY
 layout(std430) readonly buffer ofbIntensityBlock { float ofbIntensity[]; };
-uniform float ofbIntensityWeight;
+uniform float ofbIntensityWeight; // map mode: strength of the multiplication
+uniform float ofbLICIntensity;    // blend mode: the LIC's share
+uniform float ofbMapModeBias;     // map mode: added to the LIC
 #endif
 #ifdef OFB_USE_NORMALS
 layout(std430) readonly buffer ofbNormalsBlock { float ofbNormals[]; };
@@ -101,7 +104,9 @@ void ofbAccumulate(inout ofbAccum acc, int i, uint attr, float w)
 #ifdef OFB_SOURCE_SCALARS
   acc.scalar += w * uintBitsToFloat(attr);
 #else
-  acc.color += w * ofbUnpackColor(attr);
+  // Colours premultiplied by alpha: a transparent sample adds no colour, only coverage.
+  vec4 c = ofbUnpackColor(attr);
+  acc.color += w * vec4(c.rgb * c.a, c.a);
 #endif
 #ifdef OFB_USE_INTENSITY
   acc.intensity += w * ofbIntensity[i];
@@ -306,7 +311,7 @@ ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
 #endif
 }
 
-// Final RGBA colour of an accumulation with weight > 0.
+// Final RGBA colour (not premultiplied) of an accumulation with weight > 0.
 vec4 ofbResolve(ofbAccum acc)
 {
   float inv = 1.0 / acc.weight;
@@ -315,9 +320,16 @@ vec4 ofbResolve(ofbAccum acc)
   vec4 color = ofbLUT[min(int(s * float(ofbLUTSize - 1) + 0.5), ofbLUTSize - 1)];
 #else
   vec4 color = acc.color * inv;
+  color.rgb = color.a > 0.0 ? color.rgb / color.a : vec3(0.0);
 #endif
 #ifdef OFB_USE_INTENSITY
-  color.rgb *= mix(1.0, acc.intensity * inv, ofbIntensityWeight);
+  // The LIC combined as vtkSurfaceLICInterface does: blend, or map (multiply).
+  float lic = acc.intensity * inv;
+#if OFB_LIC_MODE == 0
+  color.rgb = mix(color.rgb, vec3(lic), ofbLICIntensity);
+#else
+  color.rgb *= mix(1.0, clamp(lic + ofbMapModeBias, 0.0, 1.0), ofbIntensityWeight);
+#endif
 #endif
   return color;
 }

@@ -236,12 +236,25 @@ vtkSmartPointer<vtkTextActor> MakeCaption(const std::string& text)
   caption->SetPosition(12, 12); // viewport coordinates
   return caption;
 }
-}
 
-int main(int argc, char* argv[])
+// The command line, with its defaults.
+struct Options
+{
+  std::string MeshPath;
+  std::string OutputPath = "ofb-demo.png";
+  std::string Backend = "auto";
+  std::string Lookup = "nearest";
+  int Resolution = 1024;
+  int Width = 1600;
+  int Height = 800;
+};
+
+// Parse the command line into `options`. Returns -1 to go on, or the exit status (after
+// the usage or a message).
+int ParseOptions(int argc, char* argv[], Options& options)
 {
   // Options with a value, by long name, with their defaults; the short names.
-  std::map<std::string, std::string> options = { { "--resolution", "1024" },
+  std::map<std::string, std::string> values = { { "--resolution", "1024" },
     { "--backend", "auto" },
     { "--lookup", "nearest" },
     { "--output", "ofb-demo.png" },
@@ -250,7 +263,6 @@ int main(int argc, char* argv[])
   const std::map<std::string, std::string> shortNames = {
     { "-r", "--resolution" }, { "-b", "--backend" }, { "-l", "--lookup" }, { "-o", "--output" }
   };
-  std::string meshPath;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = shortNames.count(argv[i]) ? shortNames.at(argv[i]) : argv[i];
@@ -259,13 +271,13 @@ int main(int argc, char* argv[])
       Usage(argv[0]);
       return EXIT_SUCCESS;
     }
-    else if (options.count(arg) && i + 1 < argc)
+    else if (values.count(arg) && i + 1 < argc)
     {
-      options[arg] = argv[++i];
+      values[arg] = argv[++i];
     }
-    else if (!arg.empty() && arg[0] != '-' && meshPath.empty())
+    else if (!arg.empty() && arg[0] != '-' && options.MeshPath.empty())
     {
-      meshPath = arg;
+      options.MeshPath = arg;
     }
     else
     {
@@ -274,20 +286,26 @@ int main(int argc, char* argv[])
       return EXIT_FAILURE;
     }
   }
-  meshPath = meshPath.empty() ? VTKOFB_DATA_DIR "/stanford-bunny.obj" : meshPath;
-  const std::string outputPath = options["--output"];
-  const std::string backend = SystemTools::LowerCase(options["--backend"]);
-  const std::string lookup = SystemTools::LowerCase(options["--lookup"]);
-  int resolution = 0, width = 0, height = 0;
+  if (options.MeshPath.empty())
+  {
+    options.MeshPath = VTKOFB_DATA_DIR "/stanford-bunny.obj";
+  }
+  options.OutputPath = values["--output"];
+  options.Backend = SystemTools::LowerCase(values["--backend"]);
+  options.Lookup = SystemTools::LowerCase(values["--lookup"]);
+  const std::string& backend = options.Backend;
+  const std::string& lookup = options.Lookup;
   const std::pair<bool, std::string> checks[] = { // each value valid, or the message
-    { ParseInt(options["--resolution"], -2147483647, 2147483647, resolution),
-      "bad resolution '" + options["--resolution"] + "'" },
+    { ParseInt(values["--resolution"], -2147483647, 2147483647, options.Resolution),
+      "bad resolution '" + values["--resolution"] + "'" },
     { backend == "auto" || backend == "cpu" || backend == "opengl",
-      "unknown backend '" + options["--backend"] + "' (auto, cpu or opengl)" },
+      "unknown backend '" + values["--backend"] + "' (auto, cpu or opengl)" },
     { lookup == "nearest" || lookup == "idw" || lookup == "mipmap",
-      "unknown lookup '" + options["--lookup"] + "' (nearest, idw or mipmap)" },
-    { ParseInt(options["--width"], 16, 8192, width), "bad width '" + options["--width"] + "'" },
-    { ParseInt(options["--height"], 16, 8192, height), "bad height '" + options["--height"] + "'" }
+      "unknown lookup '" + values["--lookup"] + "' (nearest, idw or mipmap)" },
+    { ParseInt(values["--width"], 16, 8192, options.Width),
+      "bad width '" + values["--width"] + "'" },
+    { ParseInt(values["--height"], 16, 8192, options.Height),
+      "bad height '" + values["--height"] + "'" }
   };
   for (const auto& check : checks)
   {
@@ -298,45 +316,41 @@ int main(int argc, char* argv[])
     }
   }
   const std::string outputDir =
-    SystemTools::GetFilenamePath(SystemTools::CollapseFullPath(outputPath));
+    SystemTools::GetFilenamePath(SystemTools::CollapseFullPath(options.OutputPath));
   if (!SystemTools::FileIsDirectory(outputDir))
   {
-    std::cerr << "ofbDemo: cannot write '" << outputPath << "': no directory '" << outputDir
+    std::cerr << "ofbDemo: cannot write '" << options.OutputPath << "': no directory '" << outputDir
               << "'\n";
     return EXIT_FAILURE;
   }
+  return -1;
+}
 
-  // 1. Read the mesh.
-  std::string readError;
-  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(meshPath, readError);
-  if (!mesh)
-  {
-    std::cerr << "ofbDemo: cannot read mesh '" << meshPath << "': " << readError << "\n";
-    return EXIT_FAILURE;
-  }
-  std::cout << "Mesh:              " << meshPath << "\n"
-            << "                   " << mesh->GetNumberOfPoints() << " points, "
-            << mesh->GetNumberOfPolys() << " polygons\n";
-
-  // 2. Build its OFB.
-  vtkNew<vtkOFBBuilder> builder;
+// Build the OFB of `mesh` with `builder`; false after a message.
+bool BuildOFB(vtkPolyData* mesh, const Options& options, vtkOFBBuilder* builder)
+{
   vtkNew<ErrorCounter> buildErrors;
   builder->AddObserver(vtkCommand::ErrorEvent, buildErrors);
   builder->SetInputData(mesh);
-  builder->SetResolution(resolution);
-  builder->SetBackend(backend == "cpu"
+  builder->SetResolution(options.Resolution);
+  builder->SetBackend(options.Backend == "cpu"
       ? vtkOFBBuilder::CPU
-      : (backend == "opengl" ? vtkOFBBuilder::OpenGL : vtkOFBBuilder::Auto));
+      : (options.Backend == "opengl" ? vtkOFBBuilder::OpenGL : vtkOFBBuilder::Auto));
   builder->Update();
   vtkOFB* ofb = builder->GetOutput();
   if (buildErrors->Count > 0 || !ofb || ofb->GetNumberOfSamples() == 0)
   {
-    std::cerr << "ofbDemo: building the OFB at resolution " << resolution << " failed"
+    std::cerr << "ofbDemo: building the OFB at resolution " << options.Resolution << " failed"
               << buildErrors->Suffix() << "\n";
-    return EXIT_FAILURE;
+    return false;
   }
+  return true;
+}
 
-  // 3. Statistics.
+// Print the frame, the samples and depth complexity of each grid, memory and build time.
+void PrintStatistics(vtkOFBBuilder* builder, int resolution)
+{
+  vtkOFB* ofb = builder->GetOutput();
   const double ms = builder->GetLastBuildTime();
   const vtkIdType n = ofb->GetNumberOfSamples();
   const vtkIdType* dims = ofb->GetDimensions();
@@ -368,19 +382,24 @@ int main(int argc, char* argv[])
   {
     std::cout << "Throughput:        n/a (build time below the timer's resolution)\n";
   }
+}
 
-  // 4. The OFB's paint: each sample in the colour of its grid, darkened in stripes
-  // StripeWidth cells wide every StripePeriod cells along y, much finer than the triangles.
-  // The point cloud gets the grid colours alone.
+// Write the OFB's paint: each sample in the colour of its grid, darkened in stripes
+// StripeWidth cells wide every StripePeriod cells along y, much finer than the triangles.
+// Returns the samples as a point cloud coloured by grid alone, or null after a message.
+vtkSmartPointer<vtkPolyData> PaintGridColors(vtkOFBBuilder* builder)
+{
+  vtkOFB* ofb = builder->GetOutput();
+  const vtkIdType n = ofb->GetNumberOfSamples();
   vtkNew<vtkOFBToPolyData> toPoints;
   toPoints->SetInputConnection(builder->GetOutputPort());
   toPoints->Update();
-  vtkPolyData* cloud = toPoints->GetOutput(); // point i is sample i
+  vtkSmartPointer<vtkPolyData> cloud = toPoints->GetOutput(); // point i is sample i
   auto* paint = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
   if (!paint || paint->GetNumberOfComponents() != 4 || cloud->GetNumberOfPoints() != n)
   {
     std::cerr << "ofbDemo: the OFB has no RGBA Colors sample array or no point cloud\n";
-    return EXIT_FAILURE;
+    return nullptr;
   }
   vtkNew<vtkUnsignedCharArray> gridColors;
   gridColors->SetName("GridColors");
@@ -403,105 +422,123 @@ int main(int argc, char* argv[])
   ofb->MarkAllSamplesModified();
   ofb->Modified();
   cloud->GetPointData()->SetScalars(gridColors);
+  return cloud;
+}
 
-  // Points are lit with the sample normals; an inside-out mesh (horse.ply, for one) would
-  // render dark, so turn its normals around for the picture only. (The surface needs no
-  // such care: two-sided lighting turns its normals toward the camera.)
+// Points are lit with the sample normals; an inside-out mesh (horse.ply, for one) would
+// render dark, so turn its normals around for the picture only. (The surface needs no
+// such care: two-sided lighting turns its normals toward the camera.)
+void FlipNormalsOfInsideOutMesh(vtkPolyData* mesh, vtkPolyData* cloud)
+{
   vtkDataArray* normals = cloud->GetPointData()->GetNormals();
-  if (normals && SignedVolume(mesh) < 0.0)
+  if (!normals || SignedVolume(mesh) >= 0.0)
   {
-    std::cout << "Note:              the mesh is inside out (negative volume); its normals are "
-                 "flipped for display\n";
-    vtkSmartPointer<vtkDataArray> flipped = vtk::TakeSmartPointer(normals->NewInstance());
-    flipped->DeepCopy(normals);
-    for (vtkIdType v = 0; v < flipped->GetNumberOfValues(); ++v)
+    return;
+  }
+  std::cout << "Note:              the mesh is inside out (negative volume); its normals are "
+               "flipped for display\n";
+  vtkSmartPointer<vtkDataArray> flipped = vtk::TakeSmartPointer(normals->NewInstance());
+  flipped->DeepCopy(normals);
+  for (vtkIdType v = 0; v < flipped->GetNumberOfValues(); ++v)
+  {
+    flipped->SetVariantValue(v, -flipped->GetVariantValue(v).ToDouble());
+  }
+  cloud->GetPointData()->SetNormals(flipped);
+}
+
+// The picture: left, the point cloud; right, the surface coloured per fragment from the
+// paint; two viewports with one camera, captions below.
+struct Scene
+{
+  vtkNew<vtkActor> CloudActor;
+  vtkNew<vtkActor> SurfaceActor;
+  vtkNew<vtkOFBPolyDataMapper> SurfaceMapper;
+  vtkNew<vtkRenderer> Left;
+  vtkNew<vtkRenderer> Right;
+  vtkNew<vtkRenderWindow> Window;
+
+  void Build(vtkPolyData* mesh, vtkPolyData* cloud, vtkOFB* ofb, const Options& options)
+  {
+    vtkNew<vtkPolyDataMapper> cloudMapper;
+    cloudMapper->SetInputData(cloud);
+    this->CloudActor->SetMapper(cloudMapper);
+    this->CloudActor->GetProperty()->SetPointSize(1.5);
+    this->SurfaceMapper->SetInputData(mesh);
+    this->SurfaceMapper->SetOFB(ofb);
+    this->SurfaceMapper->SetLookupMode(options.Lookup == "idw"
+        ? vtkOFBPolyDataMapper::InverseDistance
+        : (options.Lookup == "mipmap" ? vtkOFBPolyDataMapper::Mipmapped
+                                      : vtkOFBPolyDataMapper::Nearest));
+    this->SurfaceActor->SetMapper(this->SurfaceMapper);
+    for (vtkActor* actor : { this->CloudActor.Get(), this->SurfaceActor.Get() })
     {
-      flipped->SetVariantValue(v, -flipped->GetVariantValue(v).ToDouble());
+      actor->GetProperty()->SetAmbient(0.25);
+      actor->GetProperty()->SetDiffuse(0.75);
     }
-    cloud->GetPointData()->SetNormals(flipped);
-  }
-
-  // 5. Left, the point cloud; right, the surface coloured per fragment from the paint.
-  vtkNew<vtkPolyDataMapper> cloudMapper;
-  cloudMapper->SetInputData(cloud);
-  vtkNew<vtkActor> cloudActor;
-  cloudActor->SetMapper(cloudMapper);
-  cloudActor->GetProperty()->SetPointSize(1.5);
-  vtkNew<vtkOFBPolyDataMapper> surfaceMapper;
-  surfaceMapper->SetInputData(mesh);
-  surfaceMapper->SetOFB(ofb);
-  surfaceMapper->SetLookupMode(lookup == "idw"
-      ? vtkOFBPolyDataMapper::InverseDistance
-      : (lookup == "mipmap" ? vtkOFBPolyDataMapper::Mipmapped : vtkOFBPolyDataMapper::Nearest));
-  vtkNew<vtkActor> surfaceActor;
-  surfaceActor->SetMapper(surfaceMapper);
-  for (vtkActor* actor : { cloudActor.Get(), surfaceActor.Get() })
-  {
-    actor->GetProperty()->SetAmbient(0.25);
-    actor->GetProperty()->SetDiffuse(0.75);
-  }
-
-  // 6. Two viewports with one camera, captions below.
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(width, height);
-  vtkNew<vtkRenderer> left, right;
-  left->SetViewport(0.0, 0.0, 0.5, 1.0);
-  right->SetViewport(0.5, 0.0, 1.0, 1.0);
-  left->AddActor(cloudActor);
-  left->AddViewProp(MakeCaption(SystemTools::GetFilenameName(meshPath) + ": " + std::to_string(n) +
-    " OFB samples at resolution " + std::to_string(resolution) +
-    "\nsamples of grid X red, grid Y green, grid Z blue"));
-  right->AddActor(surfaceActor);
-  right->AddViewProp(MakeCaption("surface by vtkOFBPolyDataMapper (" + lookup +
-    " lookup): OFB paint of\ngrid colours, dark stripes " + std::to_string(int(StripeWidth)) +
-    " cells wide every " + std::to_string(int(StripePeriod)) + " cells"));
-  right->SetActiveCamera(left->GetActiveCamera());
-  for (vtkRenderer* renderer : { left.Get(), right.Get() })
-  {
-    renderer->SetBackground(0.88, 0.88, 0.88);
-    window->AddRenderer(renderer);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetSize(options.Width, options.Height);
+    this->Left->SetViewport(0.0, 0.0, 0.5, 1.0);
+    this->Right->SetViewport(0.5, 0.0, 1.0, 1.0);
+    this->Left->AddActor(this->CloudActor);
+    this->Left->AddViewProp(MakeCaption(SystemTools::GetFilenameName(options.MeshPath) + ": " +
+      std::to_string(ofb->GetNumberOfSamples()) + " OFB samples at resolution " +
+      std::to_string(options.Resolution) + "\nsamples of grid X red, grid Y green, grid Z blue"));
+    this->Right->AddActor(this->SurfaceActor);
+    this->Right->AddViewProp(MakeCaption("surface by vtkOFBPolyDataMapper (" + options.Lookup +
+      " lookup): OFB paint of\ngrid colours, dark stripes " + std::to_string(int(StripeWidth)) +
+      " cells wide every " + std::to_string(int(StripePeriod)) + " cells"));
+    this->Right->SetActiveCamera(this->Left->GetActiveCamera());
+    for (vtkRenderer* renderer : { this->Left.Get(), this->Right.Get() })
+    {
+      renderer->SetBackground(0.88, 0.88, 0.88);
+      this->Window->AddRenderer(renderer);
+    }
   }
 
   // Look at the front of the model: in the bunny's scan frame y is up and the head points
   // to -x, so start on +z and turn 35 degrees toward -x, a little above.
-  double center[3];
-  mesh->GetCenter(center);
-  vtkCamera* camera = left->GetActiveCamera();
-  camera->SetFocalPoint(center);
-  camera->SetPosition(center[0], center[1], center[2] + 1.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->Azimuth(-35.0);
-  camera->Elevation(10.0);
-  camera->OrthogonalizeViewUp();
-  left->ResetCamera();
-  camera->Zoom(1.2);
-  window->Render();
-  if (!surfaceMapper->GetLastRenderUsedOFB())
+  void AimCamera(vtkPolyData* mesh)
   {
-    std::cout << "Note:              the mapper could not colour from the OFB (see the "
-                 "warning); the surface shows the plain property colour\n";
+    double center[3];
+    mesh->GetCenter(center);
+    vtkCamera* camera = this->Left->GetActiveCamera();
+    camera->SetFocalPoint(center);
+    camera->SetPosition(center[0], center[1], center[2] + 1.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->Azimuth(-35.0);
+    camera->Elevation(10.0);
+    camera->OrthogonalizeViewUp();
+    this->Left->ResetCamera();
+    camera->Zoom(1.2);
   }
 
-  // Frame time of the mapper alone: the point cloud hidden, the GPU waited for.
-  cloudActor->VisibilityOff();
-  const auto start = std::chrono::steady_clock::now();
-  for (int k = 0; k < TimedRenders; ++k)
+  // Print the frame time of the mapper alone: the point cloud hidden, the GPU waited for.
+  void TimeMapper(const Options& options)
   {
-    window->Render();
-    window->WaitForCompletion();
+    this->CloudActor->VisibilityOff();
+    const auto start = std::chrono::steady_clock::now();
+    for (int k = 0; k < TimedRenders; ++k)
+    {
+      this->Window->Render();
+      this->Window->WaitForCompletion();
+    }
+    const std::chrono::duration<double, std::milli> elapsed =
+      std::chrono::steady_clock::now() - start;
+    this->CloudActor->VisibilityOn();
+    this->Window->Render();
+    std::cout << "Mapper lookup:     "
+              << vtkOFBPolyDataMapper::GetLookupModeAsString(this->SurfaceMapper->GetLookupMode())
+              << "\n"
+              << "Mapper frame time: " << std::setprecision(1) << elapsed.count() / TimedRenders
+              << " ms (surface only, average of " << TimedRenders << " renders at "
+              << options.Width / 2 << " x " << options.Height << ")\n";
   }
-  const std::chrono::duration<double, std::milli> elapsed =
-    std::chrono::steady_clock::now() - start;
-  cloudActor->VisibilityOn();
-  window->Render();
-  std::cout << "Mapper lookup:     "
-            << vtkOFBPolyDataMapper::GetLookupModeAsString(surfaceMapper->GetLookupMode()) << "\n"
-            << "Mapper frame time: " << std::setprecision(1) << elapsed.count() / TimedRenders
-            << " ms (surface only, average of " << TimedRenders << " renders at " << width / 2
-            << " x " << height << ")\n";
+};
 
-  // 7. Write the picture.
+// Write the window into the PNG `path`; false after a message.
+bool WritePicture(vtkRenderWindow* window, const Options& options)
+{
+  const std::string& path = options.OutputPath;
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
@@ -509,15 +546,67 @@ int main(int argc, char* argv[])
   vtkNew<ErrorCounter> writeErrors;
   vtkNew<vtkPNGWriter> writer;
   writer->AddObserver(vtkCommand::ErrorEvent, writeErrors);
-  writer->SetFileName(outputPath.c_str());
+  writer->SetFileName(path.c_str());
   writer->SetInputConnection(grab->GetOutputPort());
   writer->Write();
-  if (writeErrors->Count > 0 || !SystemTools::FileExists(outputPath, true))
+  if (writeErrors->Count > 0 || !SystemTools::FileExists(path, true))
   {
-    std::cerr << "ofbDemo: cannot write '" << outputPath << "'" << writeErrors->Suffix() << "\n";
+    std::cerr << "ofbDemo: cannot write '" << path << "'" << writeErrors->Suffix() << "\n";
+    return false;
+  }
+  std::cout << "Wrote " << SystemTools::CollapseFullPath(path) << " (" << options.Width << " x "
+            << options.Height << ")\n";
+  return true;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  const int status = ParseOptions(argc, argv, options);
+  if (status >= 0)
+  {
+    return status;
+  }
+
+  // 1. Read the mesh.
+  std::string readError;
+  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(options.MeshPath, readError);
+  if (!mesh)
+  {
+    std::cerr << "ofbDemo: cannot read mesh '" << options.MeshPath << "': " << readError << "\n";
     return EXIT_FAILURE;
   }
-  std::cout << "Wrote " << SystemTools::CollapseFullPath(outputPath) << " (" << width << " x "
-            << height << ")\n";
-  return EXIT_SUCCESS;
+  std::cout << "Mesh:              " << options.MeshPath << "\n"
+            << "                   " << mesh->GetNumberOfPoints() << " points, "
+            << mesh->GetNumberOfPolys() << " polygons\n";
+
+  // 2. Build its OFB and print its statistics.
+  vtkNew<vtkOFBBuilder> builder;
+  if (!BuildOFB(mesh, options, builder))
+  {
+    return EXIT_FAILURE;
+  }
+  PrintStatistics(builder, options.Resolution);
+
+  // 3. Paint it, and make the point cloud.
+  vtkSmartPointer<vtkPolyData> cloud = PaintGridColors(builder);
+  if (!cloud)
+  {
+    return EXIT_FAILURE;
+  }
+  FlipNormalsOfInsideOutMesh(mesh, cloud);
+
+  // 4. Render both views, time the mapper, write the picture.
+  Scene scene;
+  scene.Build(mesh, cloud, builder->GetOutput(), options);
+  scene.AimCamera(mesh);
+  scene.Window->Render();
+  if (!scene.SurfaceMapper->GetLastRenderUsedOFB())
+  {
+    std::cout << "Note:              the mapper could not colour from the OFB (see the "
+                 "warning); the surface shows the plain property colour\n";
+  }
+  scene.TimeMapper(options);
+  return WritePicture(scene.Window, options) ? EXIT_SUCCESS : EXIT_FAILURE;
 }

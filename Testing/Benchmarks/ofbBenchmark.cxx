@@ -169,14 +169,14 @@ std::string MeshPath(const std::string& name)
   {
     if (name == k[0])
     {
-      return std::string(VTKOFB_BENCHMARK_DATA_DIR) + "/" + k[1];
+      return std::string(VTKOFB_DATA_DIR) + "/" + k[1];
     }
   }
   if (std::ifstream(name).good())
   {
     return name;
   }
-  return std::string(VTKOFB_BENCHMARK_DATA_DIR) + "/" + name;
+  return std::string(VTKOFB_DATA_DIR) + "/" + name;
 }
 
 //------------------------------------------------------------------------------

@@ -31,6 +31,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkType.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -153,104 +154,127 @@ double Median(std::vector<double> v)
   const size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
+
+struct Options
+{
+  std::string Mesh = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
+  int Resolution = 1024;
+  int Frames = 30;
+  int Rounds = 3;
+  int Warmup = 3;
+  int Width = 1280;
+  int Height = 1024;
+  std::string Images;
+  std::vector<int> Modes = { vtkOFBPolyDataMapper::Nearest,
+    vtkOFBPolyDataMapper::InverseDistance, vtkOFBPolyDataMapper::Mipmapped };
+};
+
+// Lookup modes from a comma-separated list; false on an unknown name.
+bool ParseModes(const std::string& list, std::vector<int>& modes)
+{
+  modes.clear();
+  size_t begin = 0;
+  while (begin <= list.size())
+  {
+    const size_t comma = std::min(list.find(',', begin), list.size());
+    const std::string name = list.substr(begin, comma - begin);
+    if (name == "nearest")
+    {
+      modes.push_back(vtkOFBPolyDataMapper::Nearest);
+    }
+    else if (name == "idw")
+    {
+      modes.push_back(vtkOFBPolyDataMapper::InverseDistance);
+    }
+    else if (name == "mipmapped")
+    {
+      modes.push_back(vtkOFBPolyDataMapper::Mipmapped);
+    }
+    else if (!name.empty())
+    {
+      std::cerr << "Unknown mode " << name << "\n";
+      return false;
+    }
+    begin = comma + 1;
+  }
+  return true;
 }
 
-int main(int argc, char* argv[])
+// Returns -1 when the options are fine, else the exit code (usage printed).
+int ParseOptions(int argc, char* argv[], Options& o)
 {
-  std::string mesh = std::string(VTKOFB_BENCHMARK_DATA_DIR) + "/stanford-bunny.obj";
-  int resolution = 1024;
-  int frames = 30;
-  int rounds = 3;
-  int warmup = 3;
-  int width = 1280;
-  int height = 1024;
-  std::string images;
-  std::vector<int> modes = { vtkOFBPolyDataMapper::Nearest,
-    vtkOFBPolyDataMapper::InverseDistance, vtkOFBPolyDataMapper::Mipmapped };
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     const bool hasValue = i + 1 < argc;
+    int* integer = nullptr;
+    int minimum = VTK_INT_MIN;
     if (arg == "--mesh" && hasValue)
     {
-      mesh = argv[++i];
+      o.Mesh = argv[++i];
+      continue;
     }
-    else if (arg == "--resolution" && hasValue)
+    if (arg == "--images" && hasValue)
     {
-      resolution = std::atoi(argv[++i]);
+      o.Images = argv[++i];
+      continue;
     }
-    else if (arg == "--frames" && hasValue)
+    if (arg == "--modes" && hasValue)
     {
-      frames = std::max(1, std::atoi(argv[++i]));
-    }
-    else if (arg == "--rounds" && hasValue)
-    {
-      rounds = std::max(1, std::atoi(argv[++i]));
-    }
-    else if (arg == "--warmup" && hasValue)
-    {
-      warmup = std::max(0, std::atoi(argv[++i]));
-    }
-    else if (arg == "--width" && hasValue)
-    {
-      width = std::atoi(argv[++i]);
-    }
-    else if (arg == "--height" && hasValue)
-    {
-      height = std::atoi(argv[++i]);
-    }
-    else if (arg == "--images" && hasValue)
-    {
-      images = argv[++i];
-    }
-    else if (arg == "--modes" && hasValue)
-    {
-      modes.clear();
-      std::string list = argv[++i];
-      size_t begin = 0;
-      while (begin <= list.size())
+      if (!ParseModes(argv[++i], o.Modes))
       {
-        const size_t comma = std::min(list.find(',', begin), list.size());
-        const std::string name = list.substr(begin, comma - begin);
-        if (name == "nearest")
-        {
-          modes.push_back(vtkOFBPolyDataMapper::Nearest);
-        }
-        else if (name == "idw")
-        {
-          modes.push_back(vtkOFBPolyDataMapper::InverseDistance);
-        }
-        else if (name == "mipmapped")
-        {
-          modes.push_back(vtkOFBPolyDataMapper::Mipmapped);
-        }
-        else if (!name.empty())
-        {
-          std::cerr << "Unknown mode " << name << "\n";
-          return 1;
-        }
-        begin = comma + 1;
+        return 1;
+      }
+      continue;
+    }
+    if (hasValue)
+    {
+      if (arg == "--resolution")
+      {
+        integer = &o.Resolution;
+      }
+      else if (arg == "--frames")
+      {
+        integer = &o.Frames;
+        minimum = 1;
+      }
+      else if (arg == "--rounds")
+      {
+        integer = &o.Rounds;
+        minimum = 1;
+      }
+      else if (arg == "--warmup")
+      {
+        integer = &o.Warmup;
+        minimum = 0;
+      }
+      else if (arg == "--width")
+      {
+        integer = &o.Width;
+      }
+      else if (arg == "--height")
+      {
+        integer = &o.Height;
       }
     }
-    else
+    if (integer)
     {
-      std::cout << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
-                   "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped] [--width W] "
-                   "[--height H] [--images PREFIX]\n";
-      return arg == "--help" ? 0 : 1;
+      *integer = std::max(minimum, std::atoi(argv[++i]));
+      continue;
     }
+    std::cout << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
+                 "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped] [--width W] "
+                 "[--height H] [--images PREFIX]\n";
+    return arg == "--help" ? 0 : 1;
   }
+  return -1;
+}
 
-  vtkSmartPointer<vtkPolyData> surface = ReadMesh(mesh);
-  if (!surface)
-  {
-    std::cerr << "Cannot read a surface from " << mesh << "\n";
-    return 1;
-  }
+// The surface with vertex colours for the peer.
+vtkSmartPointer<vtkPolyData> ColorVertices(vtkPolyData* surface)
+{
   double bounds[6];
   surface->GetBounds(bounds);
-
-  // Vertex colours for the peer.
   vtkSmartPointer<vtkPolyData> colored = vtkSmartPointer<vtkPolyData>::New();
   colored->ShallowCopy(surface);
   vtkNew<vtkUnsignedCharArray> vertexColors;
@@ -264,17 +288,22 @@ int main(int argc, char* argv[])
     vertexColors->SetTypedTuple(i, rgba);
   }
   colored->GetPointData()->SetScalars(vertexColors);
+  return colored;
+}
 
-  // The OFB, with the same colours per sample.
+// The OFB of the surface, with the same colours per sample (null on failure).
+vtkSmartPointer<vtkOFB> BuildColoredOFB(vtkPolyData* surface, int resolution)
+{
+  double bounds[6];
+  surface->GetBounds(bounds);
   vtkNew<vtkOFBSampler> sampler;
   sampler->SetInputData(surface);
   sampler->SetResolution(resolution);
   sampler->Update();
-  vtkOFB* ofb = sampler->GetOutput();
+  vtkSmartPointer<vtkOFB> ofb = sampler->GetOutput();
   if (ofb->GetNumberOfSamples() == 0)
   {
-    std::cerr << "The OFB build failed.\n";
-    return 1;
+    return nullptr;
   }
   auto* sampleColors =
     vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
@@ -288,123 +317,189 @@ int main(int argc, char* argv[])
   }
   ofb->MarkAllSamplesModified();
   ofb->Modified();
+  return ofb;
+}
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(width, height);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.2, 0.2, 0.25);
-  window->AddRenderer(renderer);
-  vtkNew<vtkActor> actor;
-  renderer->AddActor(actor);
+// The mappers (the peer first, then one OFB mapper per mode) in one window, renderer and
+// actor, all kept alive so that every round only switches the actor's mapper.
+struct Bench
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkCamera> Start;
+  std::vector<vtkSmartPointer<vtkMapper>> Mappers;
+  std::vector<std::string> Names;
+  std::vector<std::vector<double>> Wall;
+  std::vector<std::vector<double>> CPU;
+  std::vector<std::vector<double>> RoundRatios;
+};
 
-  // The mappers: the peer first, then one OFB mapper per mode, all kept alive so that
-  // every round only switches the actor's mapper.
+// Set the scene up and render once with every mapper; false if the OFB mapper cannot
+// use the OFB on this context.
+bool SetUp(Bench& b, const Options& o, vtkPolyData* surface, vtkPolyData* colored, vtkOFB* ofb)
+{
+  b.Window->SetSize(o.Width, o.Height);
+  b.Renderer->SetBackground(0.2, 0.2, 0.25);
+  b.Window->AddRenderer(b.Renderer);
+  b.Renderer->AddActor(b.Actor);
   vtkNew<vtkPolyDataMapper> peer;
   peer->SetInputData(colored);
-  std::vector<vtkSmartPointer<vtkMapper>> mappers(1, peer.Get());
-  std::vector<std::string> names(1, "vtkPolyDataMapper, vertex colours");
-  for (int mode : modes)
+  b.Mappers.assign(1, peer.Get());
+  b.Names.assign(1, "vtkPolyDataMapper, vertex colours");
+  for (int mode : o.Modes)
   {
     vtkNew<vtkOFBPolyDataMapper> mapper;
     mapper->SetInputData(surface);
     mapper->SetOFB(ofb);
     mapper->SetLookupMode(mode);
-    mappers.emplace_back(mapper.Get());
-    names.push_back(
+    b.Mappers.emplace_back(mapper.Get());
+    b.Names.push_back(
       std::string("vtkOFBPolyDataMapper, ") + vtkOFBPolyDataMapper::GetLookupModeAsString(mode));
   }
-
-  actor->SetMapper(peer);
-  renderer->ResetCamera();
-  window->Render();
-  vtkNew<vtkCamera> start;
-  start->DeepCopy(renderer->GetActiveCamera());
-  for (size_t m = 1; m < mappers.size(); ++m)
+  b.Actor->SetMapper(peer);
+  b.Renderer->ResetCamera();
+  b.Window->Render();
+  b.Start->DeepCopy(b.Renderer->GetActiveCamera());
+  for (size_t m = 1; m < b.Mappers.size(); ++m)
   {
-    actor->SetMapper(mappers[m]);
-    window->Render();
-    if (!vtkOFBPolyDataMapper::SafeDownCast(mappers[m])->GetLastRenderUsedOFB())
+    b.Actor->SetMapper(b.Mappers[m]);
+    b.Window->Render();
+    if (!vtkOFBPolyDataMapper::SafeDownCast(b.Mappers[m])->GetLastRenderUsedOFB())
     {
       std::cerr << "vtkOFBPolyDataMapper could not use the OFB on this context.\n";
-      return 1;
+      return false;
     }
   }
-  const std::string capabilities =
-    window->ReportCapabilities() ? window->ReportCapabilities() : "";
+  return true;
+}
 
-  std::cout << "ofbMapperBenchmark: " << mesh << "\n"
+void PrintHeader(Bench& b, const Options& o, vtkPolyData* surface, vtkOFB* ofb)
+{
+  const std::string capabilities =
+    b.Window->ReportCapabilities() ? b.Window->ReportCapabilities() : "";
+  std::cout << "ofbMapperBenchmark: " << o.Mesh << "\n"
             << "  triangles " << surface->GetNumberOfPolys() << ", OFB resolution "
-            << resolution << ", samples " << ofb->GetNumberOfSamples() << ", depth complexity "
-            << ofb->GetDepthComplexity() << ", window " << width << "x" << height << ", "
-            << frames << " frames per mapper and round, " << rounds << " rounds\n";
+            << o.Resolution << ", samples " << ofb->GetNumberOfSamples()
+            << ", depth complexity " << ofb->GetDepthComplexity() << ", window " << o.Width
+            << "x" << o.Height << ", " << o.Frames << " frames per mapper and round, "
+            << o.Rounds << " rounds\n";
   const std::string::size_type at = capabilities.find("OpenGL renderer string:");
   if (at != std::string::npos)
   {
     std::cout << "  " << capabilities.substr(at, capabilities.find('\n', at) - at) << "\n";
   }
   std::cout << std::fixed << std::setprecision(2);
+}
 
-  std::vector<std::vector<double>> wall(mappers.size());
-  std::vector<std::vector<double>> cpu(mappers.size());
-  std::vector<std::vector<double>> roundRatios(mappers.size());
+// The mappers take turns within every round.
+void TimeRounds(Bench& b, const Options& o)
+{
+  const size_t n = b.Mappers.size();
+  b.Wall.assign(n, {});
+  b.CPU.assign(n, {});
+  b.RoundRatios.assign(n, {});
   std::cout << "  per round, wall ms/frame (CPU ms/frame of this process):\n";
-  for (int r = 0; r < rounds; ++r)
+  for (int r = 0; r < o.Rounds; ++r)
   {
     std::cout << "  round " << r + 1 << ":";
-    for (size_t m = 0; m < mappers.size(); ++m)
+    for (size_t m = 0; m < n; ++m)
     {
-      actor->SetMapper(mappers[m]);
-      const FrameTime t = TimeFrames(window, renderer, start, frames, warmup);
-      wall[m].push_back(t.Wall);
-      cpu[m].push_back(t.CPU);
-      roundRatios[m].push_back(t.Wall / wall[0].back());
+      b.Actor->SetMapper(b.Mappers[m]);
+      const FrameTime t = TimeFrames(b.Window, b.Renderer, b.Start, o.Frames, o.Warmup);
+      b.Wall[m].push_back(t.Wall);
+      b.CPU[m].push_back(t.CPU);
+      b.RoundRatios[m].push_back(t.Wall / b.Wall[0].back());
       std::cout << " " << t.Wall << " (" << t.CPU << ")";
     }
     std::cout << std::endl;
   }
+}
 
+// Medians and ratios to the peer; returns Nearest's wall ratio (-1 if not measured).
+double PrintMedians(const Bench& b, const Options& o)
+{
   // The goal compares wall-clock frame times; CPU time is less sensitive to other load.
-  const double peerMs = Median(wall[0]);
-  const double peerCPU = Median(cpu[0]);
+  const double peerMs = Median(b.Wall[0]);
+  const double peerCPU = Median(b.CPU[0]);
   std::cout << "  medians over the rounds: wall ms/frame, ratio to the peer; CPU ms/frame, "
                "ratio; median of the per-round wall ratios\n";
-  std::cout << "  " << std::left << std::setw(40) << names[0] << std::right << std::setw(8)
+  std::cout << "  " << std::left << std::setw(40) << b.Names[0] << std::right << std::setw(8)
             << peerMs << "          " << std::setw(8) << peerCPU << "\n";
   double nearestRatio = -1.0;
-  for (size_t m = 1; m < mappers.size(); ++m)
+  for (size_t m = 1; m < b.Mappers.size(); ++m)
   {
-    const double ms = Median(wall[m]);
+    const double ms = Median(b.Wall[m]);
     const double ratio = ms / peerMs;
-    if (modes[m - 1] == vtkOFBPolyDataMapper::Nearest)
+    if (o.Modes[m - 1] == vtkOFBPolyDataMapper::Nearest)
     {
       nearestRatio = ratio;
     }
-    std::cout << "  " << std::left << std::setw(40) << names[m] << std::right << std::setw(8)
-              << ms << " " << std::setw(6) << ratio << "x " << std::setw(8) << Median(cpu[m])
-              << " " << std::setw(6) << Median(cpu[m]) / peerCPU << "x " << std::setw(6)
-              << Median(roundRatios[m]) << "x\n";
+    std::cout << "  " << std::left << std::setw(40) << b.Names[m] << std::right << std::setw(8)
+              << ms << " " << std::setw(6) << ratio << "x " << std::setw(8) << Median(b.CPU[m])
+              << " " << std::setw(6) << Median(b.CPU[m]) / peerCPU << "x " << std::setw(6)
+              << Median(b.RoundRatios[m]) << "x\n";
   }
-  if (!images.empty())
+  return nearestRatio;
+}
+
+// PREFIX<k>-<mapper>.ppm of the first view of every mapper.
+void WriteImages(Bench& b, const Options& o)
+{
+  const char* files[4] = { "peer", "nearest", "idw", "mipmapped" };
+  for (size_t m = 0; m < b.Mappers.size(); ++m)
   {
-    const char* files[4] = { "peer", "nearest", "idw", "mipmapped" };
-    for (size_t m = 0; m < mappers.size(); ++m)
-    {
-      actor->SetMapper(mappers[m]);
-      renderer->GetActiveCamera()->DeepCopy(start);
-      window->Render();
-      vtkNew<vtkWindowToImageFilter> grab;
-      grab->SetInput(window);
-      grab->ReadFrontBufferOff();
-      grab->ShouldRerenderOff();
-      grab->SetInputBufferTypeToRGB();
-      grab->Update();
-      WritePPM(images + std::to_string(m) + "-" + files[m == 0 ? 0 : 1 + modes[m - 1]] + ".ppm",
-        grab->GetOutput());
-    }
+    b.Actor->SetMapper(b.Mappers[m]);
+    b.Renderer->GetActiveCamera()->DeepCopy(b.Start);
+    b.Window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(b.Window);
+    grab->ReadFrontBufferOff();
+    grab->ShouldRerenderOff();
+    grab->SetInputBufferTypeToRGB();
+    grab->Update();
+    WritePPM(o.Images + std::to_string(m) + "-" + files[m == 0 ? 0 : 1 + o.Modes[m - 1]] + ".ppm",
+      grab->GetOutput());
   }
-  for (size_t m = 1; m < mappers.size(); ++m)
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  const int exitCode = ParseOptions(argc, argv, options);
+  if (exitCode >= 0)
   {
-    mappers[m]->ReleaseGraphicsResources(window);
+    return exitCode;
+  }
+  vtkSmartPointer<vtkPolyData> surface = ReadMesh(options.Mesh);
+  if (!surface)
+  {
+    std::cerr << "Cannot read a surface from " << options.Mesh << "\n";
+    return 1;
+  }
+  vtkSmartPointer<vtkPolyData> colored = ColorVertices(surface);
+  vtkSmartPointer<vtkOFB> ofb = BuildColoredOFB(surface, options.Resolution);
+  if (!ofb)
+  {
+    std::cerr << "The OFB build failed.\n";
+    return 1;
+  }
+  Bench bench;
+  if (!SetUp(bench, options, surface, colored, ofb))
+  {
+    return 1;
+  }
+  PrintHeader(bench, options, surface, ofb);
+  TimeRounds(bench, options);
+  const double nearestRatio = PrintMedians(bench, options);
+  if (!options.Images.empty())
+  {
+    WriteImages(bench, options);
+  }
+  for (size_t m = 1; m < bench.Mappers.size(); ++m)
+  {
+    bench.Mappers[m]->ReleaseGraphicsResources(bench.Window);
   }
   if (nearestRatio >= 0.0)
   {

@@ -82,7 +82,7 @@ double Median(std::vector<double> t)
 
 struct Options
 {
-  std::string Mesh = std::string(VTKOFB_BENCHMARK_DATA_DIR) + "/stanford-bunny.obj";
+  std::string Mesh = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
   std::vector<int> Resolutions = { 1024, 2048 };
   int Dabs5 = 20000;
   int Dabs25 = 2000;

@@ -19,7 +19,7 @@ namespace vtkofbtest
 /// Path of a file in the project's Testing/Data.
 inline std::string DataPath(const std::string& name)
 {
-  return std::string(VTKOFB_TEST_DATA_DIR) + "/" + name;
+  return std::string(VTKOFB_DATA_DIR) + "/" + name;
 }
 
 /// Read an .obj or .ply mesh of Testing/Data; null if it cannot be read.

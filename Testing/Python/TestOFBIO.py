@@ -3,7 +3,7 @@
 output with an error on a file that is not an OFB.
 
 Usage: python3 TestOFBIO.py [project-root]
-(with the build's lib/python3/dist-packages on PYTHONPATH). The optional project
+(with the build's lib/python3.11/dist-packages on PYTHONPATH). The optional project
 root adds a check on a foreign file of Testing/Data.
 """
 

@@ -2,7 +2,7 @@
 """Python tests of the vtkofb package: classes, pipeline, queries, numpy access,
 bad input and the builder's backend fallback.
 
-Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages;
+Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages;
 the optional argument is the source directory (for Testing/Data). ctest does both.
 """
 

@@ -40,7 +40,7 @@ TEST(OFBPyramid, LevelsHalveTheResolution)
   pyramid->SetInputOFB(ofb);
   pyramid->SetSurface(sphere);
   pyramid->SetMinimumResolution(8);
-  ASSERT_TRUE(pyramid->Update());
+  ASSERT_TRUE(pyramid->UpdateLevels());
   ASSERT_GE(pyramid->GetNumberOfLevels(), 4);
   EXPECT_EQ(pyramid->GetLevel(0), ofb.Get());
   EXPECT_EQ(pyramid->GetLevel(pyramid->GetNumberOfLevels()), nullptr);
@@ -56,7 +56,7 @@ TEST(OFBPyramid, LevelsHalveTheResolution)
     EXPECT_GE(std::max({ dims[0], dims[1], dims[2] }), 8);
   }
   pyramid->SetMaximumNumberOfLevels(2);
-  ASSERT_TRUE(pyramid->Update());
+  ASSERT_TRUE(pyramid->UpdateLevels());
   EXPECT_EQ(pyramid->GetNumberOfLevels(), 2);
 }
 
@@ -68,7 +68,7 @@ TEST(OFBPyramid, ConstantColourIsKeptAndFinePatternsAverageOut)
   vtkNew<vtkOFBPyramid> pyramid;
   pyramid->SetInputOFB(ofb);
   pyramid->SetSurface(sphere);
-  ASSERT_TRUE(pyramid->Update());
+  ASSERT_TRUE(pyramid->UpdateLevels());
   for (int k = 1; k < pyramid->GetNumberOfLevels(); ++k)
   {
     vtkUnsignedCharArray* colors = Colors(pyramid->GetLevel(k));
@@ -93,7 +93,7 @@ TEST(OFBPyramid, ConstantColourIsKeptAndFinePatternsAverageOut)
   }
   ofb->Modified();
   const vtkMTimeType before = pyramid->GetArraysTime();
-  ASSERT_TRUE(pyramid->Update());
+  ASSERT_TRUE(pyramid->UpdateLevels());
   EXPECT_GT(pyramid->GetArraysTime(), before);
   vtkOFB* coarse = pyramid->GetLevel(2);
   double sum = 0.0;
@@ -112,7 +112,7 @@ TEST(OFBPyramid, ConstantColourIsKeptAndFinePatternsAverageOut)
 
   // Nothing changed: no recomputation.
   const vtkMTimeType after = pyramid->GetArraysTime();
-  ASSERT_TRUE(pyramid->Update());
+  ASSERT_TRUE(pyramid->UpdateLevels());
   EXPECT_EQ(pyramid->GetArraysTime(), after);
 }
 
@@ -153,7 +153,7 @@ TEST(OFBPyramid, BadInputGivesAnErrorAndNoLevels)
   vtkNew<vtkOFBPyramid> pyramid;
   vtkNew<vtkofbtest::MessageObserver> messages;
   messages->Watch(pyramid);
-  EXPECT_FALSE(pyramid->Update());
+  EXPECT_FALSE(pyramid->UpdateLevels());
   EXPECT_FALSE(messages->Errors.empty());
   EXPECT_EQ(pyramid->GetNumberOfLevels(), 0);
   EXPECT_EQ(pyramid->GetLevel(0), nullptr);
@@ -162,7 +162,7 @@ TEST(OFBPyramid, BadInputGivesAnErrorAndNoLevels)
   vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 64);
   pyramid->SetInputOFB(ofb);
   messages->Clear();
-  EXPECT_FALSE(pyramid->Update()); // no surface
+  EXPECT_FALSE(pyramid->UpdateLevels()); // no surface
   EXPECT_NE(messages->Errors.find("surface"), std::string::npos) << messages->Errors;
   EXPECT_EQ(pyramid->GetNumberOfLevels(), 1);
 
@@ -170,7 +170,7 @@ TEST(OFBPyramid, BadInputGivesAnErrorAndNoLevels)
   pyramid->SetInputOFB(empty);
   pyramid->SetSurface(sphere);
   messages->Clear();
-  EXPECT_FALSE(pyramid->Update());
+  EXPECT_FALSE(pyramid->UpdateLevels());
   EXPECT_FALSE(messages->Errors.empty());
 }
 

@@ -8,11 +8,15 @@
 #include "vtkExecutive.h"
 #include "vtkOFBToPolyData.h"
 #include "vtkPointData.h"
+#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
 #include <set>
 #include <sstream>
 
@@ -296,4 +300,78 @@ TEST(Queries, PointCloudOfAnEmptyOFBIsEmpty)
   EXPECT_FALSE(observer->Errors.empty());
   EXPECT_EQ(wrong->GetOutput()->GetNumberOfPoints(), 0);
   observer->Delete();
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, CellIndexIsRebuiltAlikeByManyThreads)
+{
+  // A frame of about 800 thousand cells: a dozen chunks of the SMP loop.
+  vtkSmartPointer<vtkOFB> ofb = Build(MakeSphere(1.0, 64), 512);
+  ASSERT_GE(ofb->GetNumberOfCells(), 12 * 65536);
+  vtkTypeUInt32Array* index = ofb->GetCellIndex();
+  const vtkTypeUInt32* first = index->GetPointer(0);
+  const std::vector<vtkTypeUInt32> expected(first, first + index->GetNumberOfValues());
+  vtkTypeUInt32* offsets = ofb->GetCellOffsets()->GetPointer(0);
+  vtkNew<MessageObserver> observer;
+  observer->Watch(ofb);
+  for (int threads : { 1, 2, 7, 16, 64 })
+  {
+    vtkSMPTools::LocalScope(vtkSMPTools::Config(threads),
+      [&]()
+      {
+        // Valid offsets: the same index as the builder's, from every thread count.
+        std::fill(index->GetPointer(0), index->GetPointer(0) + expected.size(), 0xFFFFFFFFu);
+        EXPECT_TRUE(ofb->BuildCellIndex());
+        EXPECT_TRUE(std::equal(expected.begin(), expected.end(), index->GetPointer(0)))
+          << threads << " threads";
+        // One decreasing offset in a late chunk, met by whichever thread takes it.
+        const vtkIdType cell = ofb->GetNumberOfCells() - 3 * 65536 + threads;
+        const vtkTypeUInt32 kept = offsets[cell];
+        offsets[cell] = offsets[cell + 1] + 1;
+        EXPECT_FALSE(ofb->BuildCellIndex()) << threads << " threads";
+        offsets[cell] = kept;
+        EXPECT_TRUE(ofb->BuildCellIndex()) << threads << " threads";
+      });
+  }
+  EXPECT_NE(observer->Errors.find("decrease"), std::string::npos) << observer->Errors;
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, HugeAndInfiniteRadiiReachEverySample)
+{
+  vtkSmartPointer<vtkOFB> ofb = Build(MakeSphere(1.0, 16), 24);
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  ASSERT_GT(n, 100);
+  const double inf = std::numeric_limits<double>::infinity();
+  const double centers[][3] = { { 0.0, 0.0, 0.0 }, { 1e3, -2e3, 5.0 }, { -1e15, 0.0, 1e15 } };
+  vtkNew<vtkIdList> ids;
+  for (const double* c : centers)
+  {
+    // The sample closest to c, by brute force.
+    double best = inf;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      ofb->GetSamplePosition(i, x);
+      best = std::min(best, vtkMath::Distance2BetweenPoints(x, c));
+    }
+    for (double radius : { 1e6, 1e17, 1e19, 1e300, std::numeric_limits<double>::max(), inf })
+    {
+      if (std::sqrt(best) > radius)
+      {
+        continue;
+      }
+      ofb->FindSamplesInSphere(c, radius, ids);
+      EXPECT_EQ(ids->GetNumberOfIds(), n) << "radius " << radius;
+      const vtkIdType closest = ofb->FindClosestSample(c, radius);
+      ASSERT_GE(closest, 0) << "radius " << radius;
+      double x[3];
+      ofb->GetSamplePosition(closest, x);
+      EXPECT_NEAR(vtkMath::Distance2BetweenPoints(x, c), best, 1e-9 * best) << "radius " << radius;
+    }
+  }
+  // A NaN radius finds nothing.
+  ofb->FindSamplesInSphere(centers[0], std::nan(""), ids);
+  EXPECT_EQ(ids->GetNumberOfIds(), 0);
+  EXPECT_EQ(ofb->FindClosestSample(centers[0], std::nan("")), -1);
 }

@@ -24,6 +24,10 @@
 #include <iostream>
 #include <vector>
 
+#if defined(__linux__)
+#include <sys/resource.h>
+#endif
+
 using namespace vtkofbtest;
 
 namespace
@@ -633,4 +637,53 @@ TEST(Sampler, RealMeshesBuild)
     }
     EXPECT_EQ(bad, 0) << name;
   }
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+/// Peak resident memory of this process in bytes (0 where unknown).
+double PeakResidentBytes()
+{
+#if defined(__linux__)
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return 1024.0 * static_cast<double>(usage.ru_maxrss); // KiB on Linux
+#else
+  return 0.0;
+#endif
+}
+}
+
+TEST(Sampler, MemoryLimitCountsTheSurfaceCopyAndPerTriangleBuffers)
+{
+  // About 200k triangles: their setup alone takes over 30 MB, a few MiB their grids.
+  vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 320);
+  const double triangles = static_cast<double>(sphere->GetNumberOfPolys());
+  ASSERT_GT(triangles, 190000.0);
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetInputData(sphere);
+  sampler->SetResolution(64);
+  sampler->SetMemoryLimit(4); // MiB: above the grids, below the per-triangle need
+  vtkNew<MessageObserver> messages;
+  messages->Watch(sampler);
+  const double before = PeakResidentBytes();
+  sampler->Update();
+  const double grown = PeakResidentBytes() - before;
+  EXPECT_NE(messages->Errors.find("memory limit"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(sampler->GetOutput()->GetNumberOfSamples(), 0);
+  EXPECT_EQ(sampler->GetOutput()->GetNumberOfCells(), 0);
+  // The check came before the copy of the surface and the triangle setups (a
+  // build that allocated them would have touched over 30 MB).
+  EXPECT_LT(grown, 8.0 * 1048576.0) << "bytes allocated before the memory check";
+  // The estimate counts those buffers: over 150 bytes a triangle, over the limit.
+  const double estimate = sampler->EstimateMemory(sphere);
+  EXPECT_GT(estimate, 150.0 * triangles);
+  EXPECT_GT(estimate, 4.0 * 1048576.0);
+  // The same surface within a limit above its need builds.
+  sampler->SetMemoryLimit(static_cast<vtkIdType>(estimate / 1048576.0) + 8);
+  messages->Clear();
+  sampler->Update();
+  EXPECT_EQ(messages->Errors, "");
+  EXPECT_GT(sampler->GetOutput()->GetNumberOfSamples(), 0);
 }

@@ -272,6 +272,7 @@ TEST(OFBPolyDataMapper, ScalarsThroughTheLookupTableWithIntensity)
   EXPECT_TRUE(IsRed(p)) << p[0] << " " << p[1] << " " << p[2];
 
   scene.Mapper->SetIntensityArrayName("LIC");
+  scene.Mapper->SetLICColorModeToMap(); // the colour times the intensity
   scene.Mapper->IntensityModulationOn();
   scene.Window->Render();
   const Pixel half = Centre(scene.Window);
@@ -431,7 +432,9 @@ TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)
   for (const char* name : { "OFB:", "LookupMode: Mipmapped", "InterpolationRadius",
          "MipmapBias", "MaximumNumberOfMipmapLevels", "MinimumMipmapResolution", "ColorSource",
          "ScalarArrayName", "ScalarComponent", "IntensityArrayName", "IntensityModulation",
-         "IntensityWeight", "UsePaintedNormals", "LastUploadedSampleCount", "GPUMemorySize" })
+         "IntensityWeight", "LICColorMode: COLOR_MODE_BLEND", "LICIntensity: 0.8",
+         "MapModeBias", "UsePaintedNormals", "LastUploadedSampleCount", "GPUMemorySize",
+         "UploadedBytes" })
   {
     EXPECT_NE(os.str().find(name), std::string::npos) << name;
   }

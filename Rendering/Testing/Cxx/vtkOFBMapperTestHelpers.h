@@ -49,6 +49,29 @@ inline void Paint(vtkOFB* ofb,
   ofb->Modified();
 }
 
+/// Set the colour of every sample within `radius` of `center` to `rgba` (candidates from
+/// vtkOFB::ForEachSampleInSphere, as a brush finds them); marks them modified and calls
+/// Modified() once. Returns the number of samples set.
+inline vtkIdType PaintSphere(
+  vtkOFB* ofb, const double center[3], double radius, const unsigned char rgba[4])
+{
+  vtkUnsignedCharArray* colors = GetColors(ofb);
+  if (!colors)
+  {
+    return 0;
+  }
+  vtkIdType count = 0;
+  ofb->ForEachSampleInSphere(center, radius,
+    [&](vtkIdType id, double)
+    {
+      colors->SetTypedTuple(id, rgba);
+      ofb->MarkSamplesModified(id, id + 1);
+      ++count;
+    });
+  ofb->Modified();
+  return count;
+}
+
 /// A 3-D checker of cubes of edge `size` (world units), colours a and b.
 inline void PaintChecker(vtkOFB* ofb,
   double size,

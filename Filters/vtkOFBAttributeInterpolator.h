@@ -1,17 +1,19 @@
 /**
- * @class   vtkOFBSampleShader
- * @brief   Attributes of OFB samples from their triangle and barycentrics (private)
+ * @class   vtkOFBAttributeInterpolator
+ * @brief   Attributes of OFB samples interpolated from their triangle and barycentrics, on the CPU (private)
  *
  * Attributes of the samples of a triangle, n at a time (structure of arrays, so
  * that the loops vectorize): unit normals (the face normal where the point normals
  * cancel), the vector field projected into the tangent plane, RGBA colours, and
- * the other point arrays of the surface. The CPU backend of vtkOFBSampler and
- * vtkOFBSampler::InterpolateAttributes (used by the OpenGL backend) both use it,
- * so both give the same attributes.
+ * the other point arrays of the surface, in plain C++ (no GLSL: the OpenGL
+ * backend reads its samples' triangles and barycentrics back and interpolates
+ * them here too). The CPU backend (vtkOFBCPUSampler) and
+ * vtkOFBSamplerBackend::InterpolateAttributes (used by the OpenGL backend) both
+ * use it, so both give the same attributes.
  */
 
-#ifndef vtkOFBSampleShader_h
-#define vtkOFBSampleShader_h
+#ifndef vtkOFBAttributeInterpolator_h
+#define vtkOFBAttributeInterpolator_h
 
 #include "vtkFloatArray.h"
 #include "vtkOFBSurface.h"
@@ -33,25 +35,25 @@
 #define VTK_OFB_RESTRICT
 #endif
 
-struct vtkOFBSampleShader
+struct vtkOFBAttributeInterpolator
 {
-  const double* P;
-  const vtkIdType* T3;
-  const float* N;
-  const float* V;
-  const unsigned char* C;
-  int NC;
+  const double* Points;          ///< xyz per point
+  const vtkIdType* TrianglePointIds; ///< 3 per triangle
+  const float* PointNormals;     ///< unit, 3 per point
+  const float* PointVectors;     ///< 3 per point, or null
+  const unsigned char* PointColors; ///< ColorComponents per point, or null
+  int ColorComponents;           ///< 3 (RGB) or 4 (RGBA); 0 without colours
   unsigned char DefaultColor[4];
-  bool Project;
+  bool ProjectVectors;
 
-  explicit vtkOFBSampleShader(const vtkOFBSurface& s)
-    : P(s.Points.data())
-    , T3(s.Triangles.data())
-    , N(s.Normals.data())
-    , V(s.Vectors ? vtkFloatArray::SafeDownCast(s.Vectors)->GetPointer(0) : nullptr)
-    , C(s.Colors ? s.Colors->GetPointer(0) : nullptr)
-    , NC(s.Colors ? s.Colors->GetNumberOfComponents() : 0)
-    , Project(s.ProjectVectors)
+  explicit vtkOFBAttributeInterpolator(const vtkOFBSurface& s)
+    : Points(s.Points.data())
+    , TrianglePointIds(s.Triangles.data())
+    , PointNormals(s.Normals.data())
+    , PointVectors(s.Vectors ? vtkFloatArray::SafeDownCast(s.Vectors)->GetPointer(0) : nullptr)
+    , PointColors(s.Colors ? s.Colors->GetPointer(0) : nullptr)
+    , ColorComponents(s.Colors ? s.Colors->GetNumberOfComponents() : 0)
+    , ProjectVectors(s.ProjectVectors)
   {
     std::memcpy(this->DefaultColor, s.DefaultColor, 4);
   }
@@ -63,17 +65,17 @@ struct vtkOFBSampleShader
    */
   struct Run
   {
-    float* N[3];
-    float* V[3];
+    float* Normals[3];
+    float* Vectors[3];
     unsigned char* RGBA;
     float* Scratch;
   };
 
   /// Attributes of n samples of triangle tri at barycentrics (w1, w2) in the triangle.
-  void Shade(vtkIdType tri, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  void Interpolate(vtkIdType tri, vtkIdType n, const float* w1, const float* w2, const Run& out) const
   {
-    const vtkIdType* t = this->T3 + 3 * tri;
-    this->Shade(t, n, w1, w2, out, this->MayCancel(t));
+    const vtkIdType* t = this->TrianglePointIds + 3 * tri;
+    this->Interpolate(t, n, w1, w2, out, this->MayCancel(t));
   }
 
   /**
@@ -89,8 +91,8 @@ struct vtkOFBSampleShader
     {
       for (int j = i; j < 3; ++j)
       {
-        const float* a = this->N + 3 * t[i];
-        const float* b = this->N + 3 * t[j];
+        const float* a = this->PointNormals + 3 * t[i];
+        const float* b = this->PointNormals + 3 * t[j];
         smallest = std::min(smallest, a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
       }
     }
@@ -103,23 +105,23 @@ struct vtkOFBSampleShader
    * for n rounded up to a multiple of 4, whose normals may then be computed from
    * whatever those extra w1, w2 hold (finite floats).
    */
-  void Shade(const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out,
+  void Interpolate(const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out,
     bool mayCancel, bool padded = false) const
   {
     // The point normals interpolated and their squared length, in one loop that
     // vectorizes (structure of arrays).
-    float* nx = out.N[0];
-    float* ny = out.N[1];
-    float* nz = out.N[2];
+    float* nx = out.Normals[0];
+    float* ny = out.Normals[1];
+    float* nz = out.Normals[2];
     if (!mayCancel)
     {
-      InterpolateUnitNormals(padded ? (n + 3) & ~vtkIdType(3) : n, w1, w2, this->N + 3 * t[0],
-        this->N + 3 * t[1], this->N + 3 * t[2], nx, ny, nz);
-      this->ShadeOthers(t, n, w1, w2, out);
+      InterpolateUnitNormals(padded ? (n + 3) & ~vtkIdType(3) : n, w1, w2, this->PointNormals + 3 * t[0],
+        this->PointNormals + 3 * t[1], this->PointNormals + 3 * t[2], nx, ny, nz);
+      this->InterpolateVectorsAndColors(t, n, w1, w2, out);
       return;
     }
     float* len2 = out.Scratch;
-    InterpolateNormals(n, w1, w2, this->N + 3 * t[0], this->N + 3 * t[1], this->N + 3 * t[2], nx,
+    InterpolateNormals(n, w1, w2, this->PointNormals + 3 * t[0], this->PointNormals + 3 * t[1], this->PointNormals + 3 * t[2], nx,
       ny, nz, len2);
     for (vtkIdType i = 0; i < n; ++i)
     {
@@ -142,20 +144,20 @@ struct vtkOFBSampleShader
       ny[i] *= inv;
       nz[i] *= inv;
     }
-    this->ShadeOthers(t, n, w1, w2, out);
+    this->InterpolateVectorsAndColors(t, n, w1, w2, out);
   }
 
-  /// The vectors and colours of n samples (Shade, once their normals are known).
-  void ShadeOthers(
+  /// The vectors and colours of n samples (Interpolate, once their normals are known).
+  void InterpolateVectorsAndColors(
     const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out) const
   {
-    if (this->V)
+    if (this->PointVectors)
     {
-      this->ShadeVectors(t, n, w1, w2, out);
+      this->InterpolateVectors(t, n, w1, w2, out);
     }
-    if (this->C)
+    if (this->PointColors)
     {
-      this->ShadeColors(t, n, w1, w2, out.RGBA);
+      this->InterpolateColors(t, n, w1, w2, out.RGBA);
     }
   }
 
@@ -188,7 +190,7 @@ struct vtkOFBSampleShader
    * The same normalized, in one loop, where they cannot cancel (the same
    * operations: the same floats), four at a time, then one at a time. The squared
    * length, at least 1e-3 where they cannot cancel, is kept from zero for the
-   * padding of Shade.
+   * padding of Interpolate.
    */
   static void InterpolateUnitNormals(vtkIdType n, const float* VTK_OFB_RESTRICT w1,
     const float* VTK_OFB_RESTRICT w2, const float* n0, const float* n1, const float* n2,
@@ -235,9 +237,9 @@ struct vtkOFBSampleShader
   /// The face normal of triangle t (length: twice its area).
   void FaceNormal(const vtkIdType* t, float face[3]) const
   {
-    const double* p0 = this->P + 3 * t[0];
-    const double* p1 = this->P + 3 * t[1];
-    const double* p2 = this->P + 3 * t[2];
+    const double* p0 = this->Points + 3 * t[0];
+    const double* p1 = this->Points + 3 * t[1];
+    const double* p2 = this->Points + 3 * t[2];
     const double e1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
     const double e2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
     face[0] = static_cast<float>(e1[1] * e2[2] - e1[2] * e2[1]);
@@ -246,44 +248,44 @@ struct vtkOFBSampleShader
   }
 
   /// The vector field interpolated, projected into the plane of the normals.
-  void ShadeVectors(
+  void InterpolateVectors(
     const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out) const
   {
     for (int k = 0; k < 3; ++k)
     {
-      const float v0 = this->V[3 * t[0] + k];
-      const float v1 = this->V[3 * t[1] + k];
-      const float v2 = this->V[3 * t[2] + k];
+      const float v0 = this->PointVectors[3 * t[0] + k];
+      const float v1 = this->PointVectors[3 * t[1] + k];
+      const float v2 = this->PointVectors[3 * t[2] + k];
       for (vtkIdType i = 0; i < n; ++i)
       {
-        out.V[k][i] = (1.0f - w1[i] - w2[i]) * v0 + w1[i] * v1 + w2[i] * v2;
+        out.Vectors[k][i] = (1.0f - w1[i] - w2[i]) * v0 + w1[i] * v1 + w2[i] * v2;
       }
     }
-    if (!this->Project)
+    if (!this->ProjectVectors)
     {
       return;
     }
     for (vtkIdType i = 0; i < n; ++i)
     {
       const float vn =
-        out.V[0][i] * out.N[0][i] + out.V[1][i] * out.N[1][i] + out.V[2][i] * out.N[2][i];
+        out.Vectors[0][i] * out.Normals[0][i] + out.Vectors[1][i] * out.Normals[1][i] + out.Vectors[2][i] * out.Normals[2][i];
       for (int k = 0; k < 3; ++k)
       {
-        out.V[k][i] -= vn * out.N[k][i];
+        out.Vectors[k][i] -= vn * out.Normals[k][i];
       }
     }
   }
 
   /// The point colours interpolated, rounded (RGB gets an opaque alpha).
-  void ShadeColors(
+  void InterpolateColors(
     const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, unsigned char* rgba) const
   {
-    const int nc = this->NC;
+    const int nc = this->ColorComponents;
     for (int k = 0; k < nc; ++k)
     {
-      const float c0 = this->C[nc * t[0] + k];
-      const float c1 = this->C[nc * t[1] + k];
-      const float c2 = this->C[nc * t[2] + k];
+      const float c0 = this->PointColors[nc * t[0] + k];
+      const float c1 = this->PointColors[nc * t[1] + k];
+      const float c2 = this->PointColors[nc * t[2] + k];
       for (vtkIdType i = 0; i < n; ++i)
       {
         const float c = (1.0f - w1[i] - w2[i]) * c0 + w1[i] * c1 + w2[i] * c2;
@@ -302,13 +304,13 @@ struct vtkOFBSampleShader
    * barycentrics (w1[f], w2[f]).
    */
   template <typename T>
-  static void InterpolateTuples(const T* in, T* out, int nc, vtkIdType n, const vtkIdType* T3,
+  static void InterpolateTuples(const T* in, T* out, int nc, vtkIdType n, const vtkIdType* trianglePointIds,
     const vtkTypeUInt32* tri, const float* w1, const float* w2, const vtkTypeUInt32* order)
   {
     for (vtkIdType i = 0; i < n; ++i)
     {
       const vtkIdType f = order ? order[i] : i;
-      const vtkIdType* t = T3 + 3 * static_cast<vtkIdType>(tri[f]);
+      const vtkIdType* t = trianglePointIds + 3 * static_cast<vtkIdType>(tri[f]);
       const double b1 = w1[f], b2 = w2[f], b0 = 1.0 - b1 - b2;
       for (int k = 0; k < nc; ++k)
       {
@@ -327,14 +329,14 @@ struct vtkOFBSampleShader
 
   /// Interpolate samples [first, first + n) of one of the surface's other arrays.
   static bool InterpolateArray(vtkDataArray* in, vtkDataArray* out, vtkIdType first, vtkIdType n,
-    const vtkIdType* T3, const vtkTypeUInt32* tri, const float* w1, const float* w2,
+    const vtkIdType* trianglePointIds, const vtkTypeUInt32* tri, const float* w1, const float* w2,
     const vtkTypeUInt32* order)
   {
     const int nc = in->GetNumberOfComponents();
     switch (in->GetDataType())
     {
       vtkTemplateMacro(InterpolateTuples(static_cast<const VTK_TT*>(in->GetVoidPointer(0)),
-        static_cast<VTK_TT*>(out->GetVoidPointer(first * nc)), nc, n, T3, tri, w1, w2, order));
+        static_cast<VTK_TT*>(out->GetVoidPointer(first * nc)), nc, n, trianglePointIds, tri, w1, w2, order));
       default:
         return false;
     }

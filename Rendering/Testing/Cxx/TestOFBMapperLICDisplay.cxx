@@ -1,0 +1,325 @@
+// GoogleTest units of vtkOFBPolyDataMapper's LIC display: the two colour modes of VTK's
+// surface LIC (blend, map) against their per-pixel formulas on a flat square, over the
+// lookup-table colouring and over the paint, and the uploads of a re-convolved LIC array
+// (only that array goes to the GPU). They open render windows (run under xvfb-run).
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkOFB.h"
+#include "vtkOFBMapperTestHelpers.h"
+#include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBTestUtilities.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace
+{
+constexpr int Size = 128;   // window pixels
+constexpr int Blocks = 8;   // blocks of constant LIC (along x) and scalar (along y)
+
+// Block of a coordinate in [-1, 1], and how far (world units) it is from a block edge.
+int BlockOf(double x, double& edgeDistance)
+{
+  const double t = (x + 1.0) * 0.5 * Blocks;
+  const int b = std::min(Blocks - 1, std::max(0, static_cast<int>(std::floor(t))));
+  edgeDistance = std::min(t - std::floor(t), std::ceil(t) - t) * 2.0 / Blocks;
+  return b;
+}
+
+double LICOf(int bx)
+{
+  return 0.05 + 0.9 * bx / (Blocks - 1.0);
+}
+
+// Away from the edges of the lookup table's 256 bins, where the colour would be ambiguous.
+double ScalarOf(int by)
+{
+  return -1.0 + 2.0 * (by + 0.5) / Blocks + 0.0039;
+}
+
+// The square [-1, 1]^2 seen from +z with a parallel camera that fits it to the window,
+// lighting off (colour = ambient 1 x the fragment colour), with a "LIC" array constant per
+// block column and a "Height" array constant per block row.
+struct FlatScene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkOFBPolyDataMapper> Mapper;
+  vtkNew<vtkLookupTable> LUT;
+  vtkSmartPointer<vtkOFB> OFB;
+  vtkSmartPointer<vtkPolyData> Surface;
+  vtkNew<vtkFloatArray> LIC;
+
+  FlatScene()
+  {
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(-1.0, -1.0, 0.0);
+    plane->SetPoint1(1.0, -1.0, 0.0);
+    plane->SetPoint2(-1.0, 1.0, 0.0);
+    plane->Update();
+    this->Surface = plane->GetOutput();
+    this->OFB = vtkofbtest::Build(this->Surface, 128);
+    const vtkIdType n = this->OFB->GetNumberOfSamples();
+    vtkNew<vtkFloatArray> height;
+    height->SetName("Height");
+    height->SetNumberOfTuples(n);
+    this->LIC->SetName("LIC");
+    this->LIC->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      this->OFB->GetSamplePosition(i, x);
+      double d;
+      this->LIC->SetValue(i, static_cast<float>(LICOf(BlockOf(x[0], d))));
+      height->SetValue(i, static_cast<float>(ScalarOf(BlockOf(x[1], d))));
+    }
+    this->OFB->GetSampleData()->AddArray(height);
+    this->OFB->GetSampleData()->AddArray(this->LIC);
+    vtkofbtest::Paint(this->OFB,
+      [](const double x[3], unsigned char rgba[4])
+      {
+        double d;
+        rgba[0] = static_cast<unsigned char>(40 + 25 * BlockOf(x[1], d));
+        rgba[1] = 200;
+        rgba[2] = static_cast<unsigned char>(230 - 20 * BlockOf(x[1], d));
+        rgba[3] = 255;
+      });
+
+    this->LUT->SetHueRange(0.0, 0.6667);
+    this->LUT->SetRange(-1.0, 1.0);
+    this->LUT->Build();
+    this->Mapper->SetInputData(this->Surface);
+    this->Mapper->SetOFB(this->OFB);
+    this->Mapper->SetLookupTable(this->LUT);
+    this->Mapper->SetScalarRange(-1.0, 1.0);
+    this->Mapper->SetScalarArrayName("Height");
+    this->Mapper->SetIntensityArrayName("LIC");
+    this->Mapper->IntensityModulationOn();
+    this->Actor->SetMapper(this->Mapper);
+    this->Actor->GetProperty()->LightingOff();
+    this->Actor->GetProperty()->SetAmbient(1.0);
+    this->Actor->GetProperty()->SetDiffuse(0.0);
+    this->Renderer->AddActor(this->Actor);
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetPosition(0.0, 0.0, 5.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetParallelScale(1.0);
+    this->Renderer->ResetCameraClippingRange();
+    this->Window->SetSize(Size, Size);
+    this->Window->SetMultiSamples(0);
+    this->Window->AddRenderer(this->Renderer);
+  }
+
+  /// Render, then compare every pixel away from the block edges with `expected(base
+  /// colour, LIC)` (colours in [0, 1]); returns the number of pixels compared and sets
+  /// `worst` to the largest difference in 0-255 units.
+  int Compare(const std::function<void(const double base[3], double lic, double out[3])>&
+                expected,
+    bool scalars, double& worst)
+  {
+    this->Window->Render();
+    EXPECT_TRUE(this->Mapper->GetLastRenderUsedOFB());
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(this->Window);
+    grab->ReadFrontBufferOff();
+    grab->ShouldRerenderOff();
+    grab->SetInputBufferTypeToRGB();
+    grab->Update();
+    const unsigned char* p = static_cast<unsigned char*>(grab->GetOutput()->GetScalarPointer());
+    const double margin = 2.0 * this->OFB->GetCellSize();
+    worst = 0.0;
+    int compared = 0;
+    for (int j = 0; j < Size; ++j)
+    {
+      for (int i = 0; i < Size; ++i)
+      {
+        const double x = -1.0 + (i + 0.5) * 2.0 / Size;
+        const double y = -1.0 + (j + 0.5) * 2.0 / Size;
+        double dx;
+        double dy;
+        const int bx = BlockOf(x, dx);
+        const int by = BlockOf(y, dy);
+        if (dx < margin || dy < margin)
+        {
+          continue;
+        }
+        double base[3];
+        if (scalars)
+        {
+          this->LUT->GetColor(ScalarOf(by), base);
+        }
+        else
+        {
+          base[0] = (40 + 25 * by) / 255.0;
+          base[1] = 200 / 255.0;
+          base[2] = (230 - 20 * by) / 255.0;
+        }
+        double out[3];
+        expected(base, LICOf(bx), out);
+        const unsigned char* q = p + 3 * (j * Size + i);
+        for (int c = 0; c < 3; ++c)
+        {
+          worst = std::max(worst, std::abs(q[c] - 255.0 * out[c]));
+        }
+        ++compared;
+      }
+    }
+    return compared;
+  }
+};
+}
+
+TEST(OFBMapperLICDisplay, BlendModeFollowsVTKsFormula)
+{
+  for (bool scalars : { true, false })
+  {
+    FlatScene scene;
+    if (scalars)
+    {
+      scene.Mapper->SetColorSourceToScalars();
+    }
+    EXPECT_EQ(scene.Mapper->GetLICColorMode(), vtkOFBPolyDataMapper::COLOR_MODE_BLEND);
+    EXPECT_DOUBLE_EQ(scene.Mapper->GetLICIntensity(), 0.8);
+    for (double intensity : { 0.8, 0.3, 1.0 })
+    {
+      scene.Mapper->SetLICIntensity(intensity);
+      double worst = 0.0;
+      const int compared = scene.Compare(
+        [intensity](const double base[3], double lic, double out[3])
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            out[c] = lic * intensity + base[c] * (1.0 - intensity);
+          }
+        },
+        scalars, worst);
+      EXPECT_GT(compared, Size * Size / 3);
+      EXPECT_LE(worst, 3.0) << (scalars ? "scalars" : "paint") << ", LICIntensity "
+                            << intensity;
+    }
+  }
+}
+
+TEST(OFBMapperLICDisplay, MapModeFollowsVTKsFormula)
+{
+  for (bool scalars : { true, false })
+  {
+    FlatScene scene;
+    if (scalars)
+    {
+      scene.Mapper->SetColorSourceToScalars();
+    }
+    scene.Mapper->SetLICColorModeToMap();
+    for (double bias : { 0.0, 0.25, -0.3 })
+    {
+      scene.Mapper->SetMapModeBias(bias);
+      double worst = 0.0;
+      const int compared = scene.Compare(
+        [bias](const double base[3], double lic, double out[3])
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            out[c] = base[c] * std::min(1.0, std::max(0.0, lic + bias));
+          }
+        },
+        scalars, worst);
+      EXPECT_GT(compared, Size * Size / 3);
+      EXPECT_LE(worst, 3.0) << (scalars ? "scalars" : "paint") << ", MapModeBias " << bias;
+    }
+  }
+}
+
+TEST(OFBMapperLICDisplay, WithoutModulationTheColourIsUnchanged)
+{
+  FlatScene scene;
+  scene.Mapper->SetColorSourceToScalars();
+  scene.Mapper->IntensityModulationOff();
+  double worst = 0.0;
+  scene.Compare(
+    [](const double base[3], double, double out[3]) { std::copy(base, base + 3, out); }, true,
+    worst);
+  EXPECT_LE(worst, 3.0);
+}
+
+TEST(OFBMapperLICDisplay, ReconvolutionUploadsOnlyTheLICArray)
+{
+  FlatScene scene;
+  scene.Mapper->SetColorSourceToScalars();
+  scene.Window->Render();
+  const vtkIdType n = scene.OFB->GetNumberOfSamples();
+  EXPECT_EQ(scene.Mapper->GetLastUploadedSampleCount(), n);
+
+  // A new AnimationPhase: the same array, new values, Modified().
+  auto animate = [&](vtkFloatArray* lic, double phase)
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      scene.OFB->GetSamplePosition(i, x);
+      lic->SetValue(i, static_cast<float>(0.5 + 0.5 * std::sin(20.0 * x[0] + phase)));
+    }
+    lic->Modified();
+    scene.OFB->Modified();
+  };
+  animate(scene.LIC, 1.0);
+  vtkIdType before = scene.Mapper->GetUploadedBytes();
+  scene.Window->Render();
+  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, n * 4) << "only the LIC floats";
+  EXPECT_EQ(scene.Mapper->GetLastUploadedSampleCount(), n);
+
+  // A re-convolution into a new array of the same name.
+  vtkNew<vtkFloatArray> next;
+  next->SetName("LIC");
+  next->SetNumberOfTuples(n);
+  animate(next, 2.0);
+  scene.OFB->GetSampleData()->AddArray(next);
+  before = scene.Mapper->GetUploadedBytes();
+  scene.Window->Render();
+  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, n * 4);
+
+  // Nothing changed: nothing sent.
+  before = scene.Mapper->GetUploadedBytes();
+  scene.Window->Render();
+  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, 0);
+
+  // A paint stroke over 100 samples sends their colour attribute and LIC words only.
+  scene.OFB->MarkSamplesModified(1000, 1100);
+  scene.OFB->Modified();
+  before = scene.Mapper->GetUploadedBytes();
+  scene.Window->Render();
+  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, 100 * (8 + 4));
+}
+
+TEST(OFBMapperLICDisplay, SettingsAreClampedAndNamedAsVTKs)
+{
+  vtkNew<vtkOFBPolyDataMapper> mapper;
+  EXPECT_EQ(mapper->GetLICColorMode(), vtkOFBPolyDataMapper::COLOR_MODE_BLEND);
+  EXPECT_DOUBLE_EQ(mapper->GetLICIntensity(), 0.8);
+  EXPECT_DOUBLE_EQ(mapper->GetMapModeBias(), 0.0);
+  mapper->SetLICColorMode(7);
+  EXPECT_EQ(mapper->GetLICColorMode(), vtkOFBPolyDataMapper::COLOR_MODE_MAP);
+  mapper->SetLICIntensity(2.0);
+  EXPECT_DOUBLE_EQ(mapper->GetLICIntensity(), 1.0);
+  mapper->SetMapModeBias(-5.0);
+  EXPECT_DOUBLE_EQ(mapper->GetMapModeBias(), -1.0);
+  EXPECT_STREQ(vtkOFBPolyDataMapper::GetLICColorModeAsString(1), "COLOR_MODE_MAP");
+}

@@ -1,4 +1,5 @@
 #include "vtkOFBPaintKernel.h"
+#include "vtkOFBPaintSampleGrid.h"
 
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
@@ -49,6 +50,7 @@ struct LocalRecords
   std::vector<vtkOFBColorRecord> Colors;
   std::vector<vtkOFBNormalRecord> Normals;
 };
+
 }
 
 /// What one thread needs while painting dabs.
@@ -514,6 +516,9 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
   std::vector<int> order;
   std::vector<int> waveStarts;
   this->ComputeWaves(dabs, settings, order, waveStarts);
+  vtkofbpaint::SampleGrid grid;
+  grid.Set(this->OFB);
+  this->Grid = &grid;
 
   vtkSMPThreadLocal<LocalRecords> records;
   const double total = static_cast<double>(dabs.size());
@@ -548,6 +553,7 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
     colorUndo.insert(colorUndo.end(), local.Colors.begin(), local.Colors.end());
     normalUndo.insert(normalUndo.end(), local.Normals.begin(), local.Normals.end());
   }
+  this->Grid = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -594,7 +600,7 @@ bool vtkOFBPaintKernel::SmearSource(const vtkOFBDab& dab,
   const double invR = 1.0 / dab.Radius;
   double sum[4] = { 0.0, 0.0, 0.0, 0.0 };
   double weight = 0.0;
-  this->OFB->ForEachSampleInSphere(dab.Previous,
+  this->Grid->ForEachInSphere(dab.Previous,
     dab.Radius,
     [&](vtkIdType i, double d2)
     {
@@ -655,7 +661,7 @@ void vtkOFBPaintKernel::PaintDab(const vtkOFBDab& dab,
     float* out = this->Normals->GetPointer(0);
     const bool erase = settings.BlendMode == 6;
     const glm::dvec3 c(dab.Center[0], dab.Center[1], dab.Center[2]);
-    this->OFB->ForEachSampleInSphere(dab.Center,
+    this->Grid->ForEachInSphere(dab.Center,
       dab.Radius,
       [&](vtkIdType i, double d2)
       {
@@ -725,7 +731,7 @@ void vtkOFBPaintKernel::PaintDab(const vtkOFBDab& dab,
   }
   unsigned char* colors = this->Colors->GetPointer(0);
   const int mode = settings.BlendMode;
-  this->OFB->ForEachSampleInSphere(dab.Center,
+  this->Grid->ForEachInSphere(dab.Center,
     dab.Radius,
     [&](vtkIdType i, double d2)
     {

@@ -68,6 +68,11 @@ struct vtkOFBNormalRecord
   float Value[3];
 };
 
+namespace vtkofbpaint
+{
+struct SampleGrid;
+}
+
 class vtkOFBPaintKernel
 {
 public:
@@ -146,6 +151,7 @@ private:
   void Touch(vtkIdType id, unsigned char recordedBit);
 
   vtkOFB* OFB = nullptr;
+  const vtkofbpaint::SampleGrid* Grid = nullptr; // the OFB's storage, during Paint()
   vtkUnsignedCharArray* Colors = nullptr;
   vtkFloatArray* Normals = nullptr;
   vtkIdType NumberOfSamples = 0;

@@ -541,10 +541,20 @@ void vtkOFB::MarkSamplesModified(vtkIdType first, vtkIdType last)
   {
     return;
   }
-  // Merge overlapping or adjacent ranges, keeping the newest time of each merge.
+  // Compact the oldest marks only: a consumer that uploads after every change
+  // (the mapper, once per frame) then still sees the newest marks exactly.
+  // Sort by time; the newest 192 stay as they are; the older ones are merged
+  // (overlapping or adjacent ones first, then across their smallest gaps) into at
+  // most 32 ranges, each with the newest time of what it merged (still older than
+  // the kept ones).
   auto& ranges = this->ModifiedRanges;
   std::sort(ranges.begin(), ranges.end(),
-    [](const ModifiedRange& a, const ModifiedRange& b) { return a.First < b.First; });
+    [](const ModifiedRange& x, const ModifiedRange& y) { return x.Time < y.Time; });
+  const size_t older = ranges.size() - 192;
+  std::vector<ModifiedRange> kept(ranges.begin() + older, ranges.end());
+  ranges.resize(older);
+  std::sort(ranges.begin(), ranges.end(),
+    [](const ModifiedRange& x, const ModifiedRange& y) { return x.First < y.First; });
   size_t out = 0;
   for (size_t i = 1; i < ranges.size(); ++i)
   {
@@ -559,34 +569,35 @@ void vtkOFB::MarkSamplesModified(vtkIdType first, vtkIdType last)
     }
   }
   ranges.resize(out + 1);
-  if (ranges.size() > 128)
+  if (ranges.size() > 32)
   {
-    // Still many scattered ranges: close the smallest gaps first, so that a
-    // consumer re-sends a few samples in between rather than everything.
+    // Close the smallest gaps first, so that a consumer that missed these marks
+    // re-sends a few samples in between rather than everything.
     std::vector<vtkIdType> gaps(ranges.size() - 1);
     for (size_t i = 0; i + 1 < ranges.size(); ++i)
     {
       gaps[i] = ranges[i + 1].First - ranges[i].Last;
     }
     std::vector<vtkIdType> sorted = gaps;
-    const size_t close = ranges.size() - 64;
+    const size_t close = ranges.size() - 32;
     std::nth_element(sorted.begin(), sorted.begin() + (close - 1), sorted.end());
     const vtkIdType threshold = sorted[close - 1];
-    size_t kept = 0;
+    size_t merged = 0;
     for (size_t i = 1; i < ranges.size(); ++i)
     {
       if (gaps[i - 1] <= threshold)
       {
-        ranges[kept].Last = ranges[i].Last;
-        ranges[kept].Time = std::max(ranges[kept].Time, ranges[i].Time);
+        ranges[merged].Last = ranges[i].Last;
+        ranges[merged].Time = std::max(ranges[merged].Time, ranges[i].Time);
       }
       else
       {
-        ranges[++kept] = ranges[i];
+        ranges[++merged] = ranges[i];
       }
     }
-    ranges.resize(kept + 1);
+    ranges.resize(merged + 1);
   }
+  ranges.insert(ranges.end(), kept.begin(), kept.end());
 }
 
 //------------------------------------------------------------------------------

@@ -241,8 +241,10 @@ public:
    * first, last) with the sorted, merged ranges marked after time `t` (a
    * vtkTimeStamp value such as the time of a consumer's last upload); when the
    * samples were reallocated after `t` (GetStructureMTime() > t) it gives the
-   * whole range. Beyond 256 entries, ranges are merged across their smallest gaps
-   * (conservatively: a merged range may include unchanged samples).
+   * whole range. Beyond 256 entries, the marks older than the newest 192 are
+   * merged into at most 32 ranges across their smallest gaps (conservatively: a
+   * merged range may include unchanged samples), so a consumer that reads after
+   * every change still gets the newest marks exactly.
    * Not thread-safe: mark from one thread.
    */
   void MarkSamplesModified(vtkIdType first, vtkIdType last);

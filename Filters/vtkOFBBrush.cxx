@@ -1,7 +1,7 @@
 #include "vtkOFBBrush.h"
 
-#include "vtkObjectFactory.h"
 #include "vtkOFB.h"
+#include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 
 #include <algorithm>
@@ -109,16 +109,18 @@ double vtkOFBBrush::EvaluateFalloff(int falloff, double x, vtkPiecewiseFunction*
 //------------------------------------------------------------------------------
 const char* vtkOFBBrush::GetFalloffAsString(int falloff)
 {
-  static const char* names[] = { "Constant", "Linear", "Smooth", "Sphere", "Root", "Sharp",
-    "Gaussian", "Custom" };
+  static const char* names[] = {
+    "Constant", "Linear", "Smooth", "Sphere", "Root", "Sharp", "Gaussian", "Custom"
+  };
   return falloff >= Constant && falloff <= Custom ? names[falloff] : "Unknown";
 }
 
 //------------------------------------------------------------------------------
 const char* vtkOFBBrush::GetBlendModeAsString(int mode)
 {
-  static const char* names[] = { "Mix", "Add", "Subtract", "Multiply", "Lighten", "Darken",
-    "Erase", "EraseAlpha" };
+  static const char* names[] = {
+    "Mix", "Add", "Subtract", "Multiply", "Lighten", "Darken", "Erase", "EraseAlpha"
+  };
   return mode >= Mix && mode <= EraseAlpha ? names[mode] : "Unknown";
 }
 
@@ -145,8 +147,8 @@ void vtkOFBBrush::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Radius: " << this->Radius << "\n";
-  os << indent << "Color: (" << this->Color[0] << ", " << this->Color[1] << ", "
-     << this->Color[2] << ", " << this->Color[3] << ")\n";
+  os << indent << "Color: (" << this->Color[0] << ", " << this->Color[1] << ", " << this->Color[2]
+     << ", " << this->Color[3] << ")\n";
   os << indent << "Strength: " << this->Strength << "\n";
   os << indent << "Falloff: " << vtkOFBBrush::GetFalloffAsString(this->Falloff) << "\n";
   os << indent << "CustomFalloff: " << this->CustomFalloff.GetPointer() << "\n";
@@ -156,8 +158,7 @@ void vtkOFBBrush::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BumpDepth: " << this->BumpDepth << "\n";
   os << indent << "NormalAware: " << (this->NormalAware ? "On" : "Off") << "\n";
   os << indent << "MaxNormalAngle: " << this->MaxNormalAngle << "\n";
-  os << indent << "PressureAffectsRadius: " << (this->PressureAffectsRadius ? "On" : "Off")
-     << "\n";
+  os << indent << "PressureAffectsRadius: " << (this->PressureAffectsRadius ? "On" : "Off") << "\n";
   os << indent << "PressureAffectsStrength: " << (this->PressureAffectsStrength ? "On" : "Off")
      << "\n";
 }

@@ -48,9 +48,9 @@
 #ifndef vtkOFBBrush_h
 #define vtkOFBBrush_h
 
-#include "vtkObject.h"
 #include "vtkOFBFiltersModule.h" // for export macro
-#include "vtkSmartPointer.h"     // for member
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for member
 
 class vtkOFB;
 class vtkPiecewiseFunction;

@@ -181,12 +181,18 @@ int vtkOFBPaintFilter::FillInputPortInformation(int port, vtkInformation* info)
 vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
 {
   vtkPointData* pd = strokes->GetPointData();
-  auto array = [pd](const char* name, int comps) -> vtkDataArray* {
+  auto array = [pd](const char* name, int comps) -> vtkDataArray*
+  {
     vtkDataArray* a = pd->GetArray(name);
     return a && a->GetNumberOfComponents() >= comps ? a : nullptr;
   };
-  StrokeValues v{ strokes, this->Brush, array("Radius", 1), array("Color", 3),
-    array("Strength", 1), array("Pressure", 1), 1.0 };
+  StrokeValues v{ strokes,
+    this->Brush,
+    array("Radius", 1),
+    array("Color", 3),
+    array("Strength", 1),
+    array("Pressure", 1),
+    1.0 };
   if (v.Color && v.Color->GetDataType() == VTK_UNSIGNED_CHAR)
   {
     v.ColorScale = 1.0 / 255.0;
@@ -203,8 +209,7 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
     }
     if (!(r > 0.0) || !std::isfinite(r))
     {
-      vtkErrorMacro("Stroke point " << i << " has radius " << r
-                                    << ", not positive and finite.");
+      vtkErrorMacro("Stroke point " << i << " has radius " << r << ", not positive and finite.");
       return nullptr;
     }
   }
@@ -276,8 +281,9 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBPaintFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+int vtkOFBPaintFilter::RequestData(vtkInformation*,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
 {
   vtkOFB* input = vtkOFB::GetData(inInfo[0]);
   vtkPolyData* strokes = vtkPolyData::GetData(inInfo[1]);
@@ -310,7 +316,8 @@ int vtkOFBPaintFilter::RequestData(
 
   // A painted copy: the painted array deep, the rest shared.
   output->ShallowCopy(input);
-  const char* painted = this->Brush->GetTarget() == vtkOFBBrush::NormalTarget ? "Normals" : "Colors";
+  const char* painted =
+    this->Brush->GetTarget() == vtkOFBBrush::NormalTarget ? "Normals" : "Colors";
   vtkPointData* inPd = input->GetSampleData();
   if (vtkDataArray* array = inPd->GetArray(painted))
   {
@@ -339,16 +346,17 @@ int vtkOFBPaintFilter::RequestData(
   painter->SetUndoLimit(0);
   vtkNew<vtkCallbackCommand> progress;
   progress->SetClientData(this);
-  progress->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
-    static_cast<vtkOFBPaintFilter*>(self)->UpdateProgress(*static_cast<double*>(data));
-  });
+  progress->SetCallback([](vtkObject*, unsigned long, void* self, void* data)
+    { static_cast<vtkOFBPaintFilter*>(self)->UpdateProgress(*static_cast<double*>(data)); });
   painter->AddObserver(vtkCommand::ProgressEvent, progress);
   vtkNew<vtkCallbackCommand> errors;
   errors->SetClientData(this);
-  errors->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
-    vtkErrorWithObjectMacro(static_cast<vtkOFBPaintFilter*>(self),
-      << (data ? static_cast<const char*>(data) : "painting failed"));
-  });
+  errors->SetCallback(
+    [](vtkObject*, unsigned long, void* self, void* data)
+    {
+      vtkErrorWithObjectMacro(static_cast<vtkOFBPaintFilter*>(self),
+        << (data ? static_cast<const char*>(data) : "painting failed"));
+    });
   painter->AddObserver(vtkCommand::ErrorEvent, errors);
   this->NumberOfChangedSamples = painter->Dabs(dabs);
   this->UpdateProgress(1.0);

@@ -1,4 +1,5 @@
 #include "vtkOFBPaintKernel.h"
+#include "vtkOFBPaintSampleGrid.h"
 
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
@@ -30,7 +31,8 @@ unsigned char ToByte(float v)
 // Morton code of a point in units of the largest dab reach (21 bits per axis).
 vtkTypeUInt64 MortonCode(const glm::dvec3& q)
 {
-  auto spread = [](double v) {
+  auto spread = [](double v)
+  {
     vtkTypeUInt64 x = static_cast<vtkTypeUInt64>(std::min(std::max(v, 0.0), 2097151.0));
     x = (x | (x << 32)) & 0x1f00000000ffffull;
     x = (x | (x << 16)) & 0x1f0000ff0000ffull;
@@ -48,6 +50,7 @@ struct LocalRecords
   std::vector<vtkOFBColorRecord> Colors;
   std::vector<vtkOFBNormalRecord> Normals;
 };
+
 }
 
 /// What one thread needs while painting dabs.
@@ -160,8 +163,12 @@ double vtkOFBPaintKernel::Falloff(const vtkOFBPaintSettings& s, double x)
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPaintKernel::BlendColor(const unsigned char dst[4], const float src[4], float g,
-  int mode, const unsigned char initial[4], unsigned char out[4])
+void vtkOFBPaintKernel::BlendColor(const unsigned char dst[4],
+  const float src[4],
+  float g,
+  int mode,
+  const unsigned char initial[4],
+  unsigned char out[4])
 {
   float d[4];
   for (int k = 0; k < 4; ++k)
@@ -267,7 +274,8 @@ const float* vtkOFBPaintKernel::InitialNormal(vtkIdType id)
       const vtkIdType count =
         std::min(vtkIdType(1) << InitialBlockShift, this->NumberOfSamples - first);
       this->InitialNormals[b].reset(new float[3 * count]);
-      std::memcpy(this->InitialNormals[b].get(), this->Normals->GetPointer(3 * first),
+      std::memcpy(this->InitialNormals[b].get(),
+        this->Normals->GetPointer(3 * first),
         3 * count * sizeof(float));
       this->InitialBlocksHeld += 3; // three times the bytes of a colour block
       state.store(2, std::memory_order_release);
@@ -301,8 +309,8 @@ void vtkOFBPaintKernel::Touch(vtkIdType id, unsigned char recordedBit)
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPaintKernel::ClearRecorded(
-  const std::vector<vtkOFBColorRecord>& colors, const std::vector<vtkOFBNormalRecord>& normals)
+void vtkOFBPaintKernel::ClearRecorded(const std::vector<vtkOFBColorRecord>& colors,
+  const std::vector<vtkOFBNormalRecord>& normals)
 {
   for (const auto& r : colors)
   {
@@ -363,7 +371,9 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtk
 
 //------------------------------------------------------------------------------
 void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
-  const vtkOFBPaintSettings& settings, std::vector<int>& order, std::vector<int>& waveStarts) const
+  const vtkOFBPaintSettings& settings,
+  std::vector<int>& order,
+  std::vector<int>& waveStarts) const
 {
   // Each dab's bounding sphere covers what it writes and, for a smear, what it reads.
   const size_t n = dabs.size();
@@ -393,10 +403,10 @@ void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
   {
     tableSize <<= 1;
   }
-  auto cellOf = [&](const glm::dvec3& c) {
-    return glm::i64vec3(std::floor(c.x / h), std::floor(c.y / h), std::floor(c.z / h));
-  };
-  auto hashOf = [&](const glm::i64vec3& k) {
+  auto cellOf = [&](const glm::dvec3& c)
+  { return glm::i64vec3(std::floor(c.x / h), std::floor(c.y / h), std::floor(c.z / h)); };
+  auto hashOf = [&](const glm::i64vec3& k)
+  {
     const vtkTypeUInt64 v = static_cast<vtkTypeUInt64>(k.x) * 73856093ull ^
       static_cast<vtkTypeUInt64>(k.y) * 19349663ull ^ static_cast<vtkTypeUInt64>(k.z) * 83492791ull;
     return static_cast<size_t>(v & (tableSize - 1));
@@ -485,7 +495,8 @@ void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
   {
     if (waveStarts[w + 1] - waveStarts[w] > 2)
     {
-      std::sort(order.begin() + waveStarts[w], order.begin() + waveStarts[w + 1],
+      std::sort(order.begin() + waveStarts[w],
+        order.begin() + waveStarts[w + 1],
         [&key](int a, int b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
     }
   }
@@ -493,8 +504,10 @@ void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
 
 //------------------------------------------------------------------------------
 void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
-  const vtkOFBPaintSettings& settings, std::vector<vtkOFBColorRecord>& colorUndo,
-  std::vector<vtkOFBNormalRecord>& normalUndo, const std::function<void(double)>& progress)
+  const vtkOFBPaintSettings& settings,
+  std::vector<vtkOFBColorRecord>& colorUndo,
+  std::vector<vtkOFBNormalRecord>& normalUndo,
+  const std::function<void(double)>& progress)
 {
   if (dabs.empty() || this->NumberOfSamples == 0)
   {
@@ -503,6 +516,9 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
   std::vector<int> order;
   std::vector<int> waveStarts;
   this->ComputeWaves(dabs, settings, order, waveStarts);
+  vtkofbpaint::SampleGrid grid;
+  grid.Set(this->OFB);
+  this->Grid = &grid;
 
   vtkSMPThreadLocal<LocalRecords> records;
   const double total = static_cast<double>(dabs.size());
@@ -520,13 +536,16 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
     }
     else
     {
-      vtkSMPTools::For(begin, end, [&](vtkIdType first, vtkIdType last) {
-        DabWork work{ &records.Local(), nullptr, 0, 0.0, 0.0 };
-        for (vtkIdType k = first; k < last; ++k)
+      vtkSMPTools::For(begin,
+        end,
+        [&](vtkIdType first, vtkIdType last)
         {
-          this->PaintDab(dabs[order[k]], settings, work);
-        }
-      });
+          DabWork work{ &records.Local(), nullptr, 0, 0.0, 0.0 };
+          for (vtkIdType k = first; k < last; ++k)
+          {
+            this->PaintDab(dabs[order[k]], settings, work);
+          }
+        });
     }
   }
   for (auto& local : records)
@@ -534,6 +553,7 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
     colorUndo.insert(colorUndo.end(), local.Colors.begin(), local.Colors.end());
     normalUndo.insert(normalUndo.end(), local.Normals.begin(), local.Normals.end());
   }
+  this->Grid = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -571,22 +591,26 @@ bool vtkOFBPaintKernel::CentreNormal(const vtkOFBDab& dab, double n[3]) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPaintKernel::SmearSource(
-  const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, float src[4]) const
+bool vtkOFBPaintKernel::SmearSource(const vtkOFBDab& dab,
+  const vtkOFBPaintSettings& settings,
+  float src[4]) const
 {
   // The falloff-weighted mean colour under the brush at the previous position.
   const unsigned char* colors = this->Colors->GetPointer(0);
   const double invR = 1.0 / dab.Radius;
   double sum[4] = { 0.0, 0.0, 0.0, 0.0 };
   double weight = 0.0;
-  this->OFB->ForEachSampleInSphere(dab.Previous, dab.Radius, [&](vtkIdType i, double d2) {
-    const double g = Falloff(settings, std::sqrt(d2) * invR);
-    for (int k = 0; k < 4; ++k)
+  this->Grid->ForEachInSphere(dab.Previous,
+    dab.Radius,
+    [&](vtkIdType i, double d2)
     {
-      sum[k] += g * colors[4 * i + k];
-    }
-    weight += g;
-  });
+      const double g = Falloff(settings, std::sqrt(d2) * invR);
+      for (int k = 0; k < 4; ++k)
+      {
+        sum[k] += g * colors[4 * i + k];
+      }
+      weight += g;
+    });
   if (!(weight > 0.0))
   {
     return false;
@@ -599,21 +623,24 @@ bool vtkOFBPaintKernel::SmearSource(
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPaintKernel::PaintDab(
-  const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, DabWork& work)
+void vtkOFBPaintKernel::PaintDab(const vtkOFBDab& dab,
+  const vtkOFBPaintSettings& settings,
+  DabWork& work)
 {
   const double invR = 1.0 / dab.Radius;
   const float* normals = this->Normals ? this->Normals->GetPointer(0) : nullptr;
   double centreNormal[3] = { 0.0, 0.0, 0.0 };
   const bool aware = settings.NormalAware && normals && this->CentreNormal(dab, centreNormal);
-  const float nc[3] = { static_cast<float>(centreNormal[0]), static_cast<float>(centreNormal[1]),
+  const float nc[3] = { static_cast<float>(centreNormal[0]),
+    static_cast<float>(centreNormal[1]),
     static_cast<float>(centreNormal[2]) };
   const float cosMax = static_cast<float>(settings.CosMaxAngle);
   const double total = static_cast<double>(this->NumberOfSamples);
 
   // Shared by both targets: progress, normal-aware test, weight. Returns the
   // weight G (0: leave the sample alone).
-  auto weightOf = [&](vtkIdType i, double d2) -> float {
+  auto weightOf = [&](vtkIdType i, double d2) -> float
+  {
     if (work.Progress && (++work.Visited & ProgressMask) == 0)
     {
       (*work.Progress)(work.ProgressBase + work.ProgressSpan * std::min(1.0, work.Visited / total));
@@ -634,54 +661,57 @@ void vtkOFBPaintKernel::PaintDab(
     float* out = this->Normals->GetPointer(0);
     const bool erase = settings.BlendMode == 6;
     const glm::dvec3 c(dab.Center[0], dab.Center[1], dab.Center[2]);
-    this->OFB->ForEachSampleInSphere(dab.Center, dab.Radius, [&](vtkIdType i, double d2) {
-      const float g = weightOf(i, d2);
-      if (g <= 0.0f)
+    this->Grid->ForEachInSphere(dab.Center,
+      dab.Radius,
+      [&](vtkIdType i, double d2)
       {
-        return;
-      }
-      float* n = out + 3 * i;
-      const glm::vec3 old(n[0], n[1], n[2]);
-      glm::vec3 v;
-      if (erase)
-      {
-        const float* n0 = this->InitialNormal(i);
-        const glm::vec3 initial(n0[0], n0[1], n0[2]);
-        v = g >= 1.0f ? initial : old + g * (initial - old);
-      }
-      else
-      {
-        double x[3];
-        this->OFB->GetSamplePosition(i, x);
-        glm::dvec3 t = (glm::dvec3(x[0], x[1], x[2]) - c) * invR;
-        const glm::dvec3 nd(old);
-        t -= glm::dot(t, nd) * nd;
-        v = glm::vec3(nd + settings.BumpDepth * g * t);
-      }
-      const float len = glm::length(v);
-      if (!(len > 0.0f))
-      {
-        return;
-      }
-      if (!(erase && g >= 1.0f))
-      {
-        v /= len; // (a full erase restores the initial normal as it was)
-      }
-      if (v == old)
-      {
-        return;
-      }
-      this->InitialNormal(i); // keep the initial value before the first change
-      if (!(this->Flags[i] & NormalRecorded))
-      {
-        work.Records->Normals.push_back(
-          { static_cast<vtkTypeUInt32>(i), { old.x, old.y, old.z } });
-      }
-      this->Touch(i, NormalRecorded);
-      n[0] = v.x;
-      n[1] = v.y;
-      n[2] = v.z;
-    });
+        const float g = weightOf(i, d2);
+        if (g <= 0.0f)
+        {
+          return;
+        }
+        float* n = out + 3 * i;
+        const glm::vec3 old(n[0], n[1], n[2]);
+        glm::vec3 v;
+        if (erase)
+        {
+          const float* n0 = this->InitialNormal(i);
+          const glm::vec3 initial(n0[0], n0[1], n0[2]);
+          v = g >= 1.0f ? initial : old + g * (initial - old);
+        }
+        else
+        {
+          double x[3];
+          this->OFB->GetSamplePosition(i, x);
+          glm::dvec3 t = (glm::dvec3(x[0], x[1], x[2]) - c) * invR;
+          const glm::dvec3 nd(old);
+          t -= glm::dot(t, nd) * nd;
+          v = glm::vec3(nd + settings.BumpDepth * g * t);
+        }
+        const float len = glm::length(v);
+        if (!(len > 0.0f))
+        {
+          return;
+        }
+        if (!(erase && g >= 1.0f))
+        {
+          v /= len; // (a full erase restores the initial normal as it was)
+        }
+        if (v == old)
+        {
+          return;
+        }
+        this->InitialNormal(i); // keep the initial value before the first change
+        if (!(this->Flags[i] & NormalRecorded))
+        {
+          work.Records->Normals.push_back(
+            { static_cast<vtkTypeUInt32>(i), { old.x, old.y, old.z } });
+        }
+        this->Touch(i, NormalRecorded);
+        n[0] = v.x;
+        n[1] = v.y;
+        n[2] = v.z;
+      });
     return;
   }
 
@@ -701,26 +731,30 @@ void vtkOFBPaintKernel::PaintDab(
   }
   unsigned char* colors = this->Colors->GetPointer(0);
   const int mode = settings.BlendMode;
-  this->OFB->ForEachSampleInSphere(dab.Center, dab.Radius, [&](vtkIdType i, double d2) {
-    const float g = weightOf(i, d2);
-    if (g <= 0.0f)
+  this->Grid->ForEachInSphere(dab.Center,
+    dab.Radius,
+    [&](vtkIdType i, double d2)
     {
-      return;
-    }
-    unsigned char* c = colors + 4 * i;
-    const unsigned char* initial = mode == 6 ? this->InitialColor(i) : nullptr;
-    unsigned char result[4];
-    BlendColor(c, src, g, mode, initial, result);
-    if (std::memcmp(result, c, 4) == 0)
-    {
-      return;
-    }
-    this->InitialColor(i); // keep the initial value before the first change
-    if (!(this->Flags[i] & ColorRecorded))
-    {
-      work.Records->Colors.push_back({ static_cast<vtkTypeUInt32>(i), { c[0], c[1], c[2], c[3] } });
-    }
-    this->Touch(i, ColorRecorded);
-    std::memcpy(c, result, 4);
-  });
+      const float g = weightOf(i, d2);
+      if (g <= 0.0f)
+      {
+        return;
+      }
+      unsigned char* c = colors + 4 * i;
+      const unsigned char* initial = mode == 6 ? this->InitialColor(i) : nullptr;
+      unsigned char result[4];
+      BlendColor(c, src, g, mode, initial, result);
+      if (std::memcmp(result, c, 4) == 0)
+      {
+        return;
+      }
+      this->InitialColor(i); // keep the initial value before the first change
+      if (!(this->Flags[i] & ColorRecorded))
+      {
+        work.Records->Colors.push_back(
+          { static_cast<vtkTypeUInt32>(i), { c[0], c[1], c[2], c[3] } });
+      }
+      this->Touch(i, ColorRecorded);
+      std::memcpy(c, result, 4);
+    });
 }

@@ -68,6 +68,11 @@ struct vtkOFBNormalRecord
   float Value[3];
 };
 
+namespace vtkofbpaint
+{
+struct SampleGrid;
+}
+
 class vtkOFBPaintKernel
 {
 public:
@@ -95,8 +100,10 @@ public:
    * the current undo step are appended to `colorUndo` / `normalUndo`. `progress`
    * (may be empty) is called with a fraction in [0, 1] now and then.
    */
-  void Paint(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings,
-    std::vector<vtkOFBColorRecord>& colorUndo, std::vector<vtkOFBNormalRecord>& normalUndo,
+  void Paint(const std::vector<vtkOFBDab>& dabs,
+    const vtkOFBPaintSettings& settings,
+    std::vector<vtkOFBColorRecord>& colorUndo,
+    std::vector<vtkOFBNormalRecord>& normalUndo,
     const std::function<void(double)>& progress);
 
   /**
@@ -122,14 +129,20 @@ public:
   static double Falloff(const vtkOFBPaintSettings& s, double x);
 
   /// Blend a colour (bytes) with source `src` (RGBA in [0, 1]) by weight g.
-  static void BlendColor(const unsigned char dst[4], const float src[4], float g, int mode,
-    const unsigned char initial[4], unsigned char out[4]);
+  static void BlendColor(const unsigned char dst[4],
+    const float src[4],
+    float g,
+    int mode,
+    const unsigned char initial[4],
+    unsigned char out[4]);
 
 private:
   struct DabWork;
 
-  void ComputeWaves(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings,
-    std::vector<int>& order, std::vector<int>& waveStarts) const;
+  void ComputeWaves(const std::vector<vtkOFBDab>& dabs,
+    const vtkOFBPaintSettings& settings,
+    std::vector<int>& order,
+    std::vector<int>& waveStarts) const;
   void PaintDab(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, DabWork& work);
   bool SmearSource(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, float src[4]) const;
   bool CentreNormal(const vtkOFBDab& dab, double n[3]) const;
@@ -138,6 +151,7 @@ private:
   void Touch(vtkIdType id, unsigned char recordedBit);
 
   vtkOFB* OFB = nullptr;
+  const vtkofbpaint::SampleGrid* Grid = nullptr; // the OFB's storage, during Paint()
   vtkUnsignedCharArray* Colors = nullptr;
   vtkFloatArray* Normals = nullptr;
   vtkIdType NumberOfSamples = 0;

@@ -4,10 +4,10 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
-#include "vtkObjectFactory.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBPaintKernel.h"
+#include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -181,8 +181,8 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
   vtkPointData* pd = ofb->GetSampleData();
   vtkDataArray* colorArray = pd->GetArray("Colors");
   auto* colors = vtkUnsignedCharArray::SafeDownCast(colorArray);
-  if (colorArray && (!colors || colors->GetNumberOfComponents() != 4 ||
-                      colors->GetNumberOfTuples() != n))
+  if (colorArray &&
+    (!colors || colors->GetNumberOfComponents() != 4 || colors->GetNumberOfTuples() != n))
   {
     vtkErrorMacro("The OFB's \"Colors\" array is not RGBA unsigned char with one tuple per "
                   "sample: cannot paint it.");
@@ -269,6 +269,27 @@ vtkIdType vtkOFBPainter::Finish()
 {
   Internals& impl = *this->Impl;
   const vtkIdType count = impl.Kernel.CollectChanged(impl.Ranges);
+  // A large dab changes hundreds of short runs (rows of cells, interrupted by
+  // samples at other depths). vtkOFB keeps its newest 192 marks exact: join runs
+  // across the smallest gaps first (doubling the gap) until at most 128 remain,
+  // so that one call's marks stay exact and the mapper re-sends few extra samples.
+  auto& ranges = impl.Ranges;
+  for (vtkIdType gap = 64; ranges.size() > 128; gap *= 2)
+  {
+    size_t out = 0;
+    for (size_t i = 1; i < ranges.size(); ++i)
+    {
+      if (ranges[i].first - ranges[out].second <= gap)
+      {
+        ranges[out].second = ranges[i].second;
+      }
+      else
+      {
+        ranges[++out] = ranges[i];
+      }
+    }
+    ranges.resize(out + 1);
+  }
   for (const auto& r : impl.Ranges)
   {
     impl.OFB->MarkSamplesModified(r.first, r.second);
@@ -322,8 +343,7 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   {
     if (!(d.Radius > 0.0) || !std::isfinite(d.Radius))
     {
-      vtkErrorMacro("Dab radius " << d.Radius
-                                  << " is not positive and finite: nothing painted.");
+      vtkErrorMacro("Dab radius " << d.Radius << " is not positive and finite: nothing painted.");
       return 0;
     }
   }
@@ -354,7 +374,8 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   }
 
   bool reported = false;
-  std::function<void(double)> progress = [this, &reported](double p) {
+  std::function<void(double)> progress = [this, &reported](double p)
+  {
     reported = true;
     this->InvokeEvent(vtkCommand::ProgressEvent, &p);
   };
@@ -421,7 +442,8 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
     return 0;
   }
   vtkPointData* pd = input->GetPointData();
-  auto array = [pd](const char* name, int comps) -> vtkDataArray* {
+  auto array = [pd](const char* name, int comps) -> vtkDataArray*
+  {
     vtkDataArray* a = pd->GetArray(name);
     return a && a->GetNumberOfComponents() >= comps ? a : nullptr;
   };
@@ -431,8 +453,7 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
   vtkDataArray* pressure = array("Pressure", 1);
   vtkDataArray* previous = array("PreviousPosition", 3);
   vtkDataArray* normal = array("Normal", 3);
-  const double colorScale =
-    color && color->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  const double colorScale = color && color->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
   if (!this->Impl->Brush)
   {
     vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
@@ -521,7 +542,8 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
   Internals& impl = *this->Impl;
   pressure = std::min(1.0, std::max(0.0, std::isfinite(pressure) ? pressure : 1.0));
   std::vector<vtkOFBDab> dabs;
-  auto place = [&](const double c[3], double pr) {
+  auto place = [&](const double c[3], double pr)
+  {
     vtkOFBDab d;
     this->MakeDab(c, pr, d);
     d.HasPrevious = impl.HasLastDab;
@@ -543,7 +565,8 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
     const glm::dvec3 b(p[0], p[1], p[2]);
     const double length = glm::length(b - a);
     vtkOFBBrush* brush = impl.Brush;
-    auto stepAt = [&](double pr) {
+    auto stepAt = [&](double pr)
+    {
       const double r = brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pr : 1.0);
       return std::max(this->Spacing * r, 1e-12 * (1.0 + glm::length(b)));
     };

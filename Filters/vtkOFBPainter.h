@@ -62,9 +62,9 @@
 #ifndef vtkOFBPainter_h
 #define vtkOFBPainter_h
 
-#include "vtkObject.h"
 #include "vtkOFBFiltersModule.h" // for export macro
-#include "vtkSmartPointer.h"     // for members
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for members
 
 #include <memory> // for std::unique_ptr
 #include <vector> // for the dab lists

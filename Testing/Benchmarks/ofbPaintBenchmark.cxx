@@ -61,8 +61,7 @@ namespace
 {
 double Now()
 {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-    .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 /// CPU time of the process (all threads), seconds: less disturbed by other load on a
@@ -181,8 +180,10 @@ vtkSmartPointer<vtkPoints> RandomCentres(vtkOFB* ofb, int n, unsigned seed)
 
 /// Time `paint` (after `reset`) `repetitions` times; the median in seconds (wall
 /// clock), and in `cpu` the median CPU time of the process.
-double TimeMedian(int repetitions, const std::function<void()>& reset,
-  const std::function<void()>& paint, double* cpu = nullptr)
+double TimeMedian(int repetitions,
+  const std::function<void()>& reset,
+  const std::function<void()>& paint,
+  double* cpu = nullptr)
 {
   std::vector<double> t, c;
   for (int r = 0; r < repetitions; ++r)
@@ -233,22 +234,26 @@ struct LocatorPeer
   {
     vtkSMPThreadLocalObject<vtkIdList> lists;
     const float* pts = static_cast<const float*>(this->Cloud->GetPoints()->GetVoidPointer(0));
-    vtkSMPTools::For(0, centres->GetNumberOfPoints(), [&](vtkIdType first, vtkIdType last) {
-      vtkIdList* ids = lists.Local();
-      for (vtkIdType d = first; d < last; ++d)
+    vtkSMPTools::For(0,
+      centres->GetNumberOfPoints(),
+      [&](vtkIdType first, vtkIdType last)
       {
-        double c[3];
-        centres->GetPoint(d, c);
-        this->Locator->FindPointsWithinRadius(radius, c, ids);
-        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        vtkIdList* ids = lists.Local();
+        for (vtkIdType d = first; d < last; ++d)
         {
-          const vtkIdType i = ids->GetId(k);
-          const double dx = pts[3 * i] - c[0], dy = pts[3 * i + 1] - c[1], dz = pts[3 * i + 2] - c[2];
-          const float x = static_cast<float>(std::sqrt(dx * dx + dy * dy + dz * dz) / radius);
-          MixBytes(this->Colors.data() + 4 * i, Smooth(std::min(1.0f, x)));
+          double c[3];
+          centres->GetPoint(d, c);
+          this->Locator->FindPointsWithinRadius(radius, c, ids);
+          for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+          {
+            const vtkIdType i = ids->GetId(k);
+            const double dx = pts[3 * i] - c[0], dy = pts[3 * i + 1] - c[1],
+                         dz = pts[3 * i + 2] - c[2];
+            const float x = static_cast<float>(std::sqrt(dx * dx + dy * dy + dz * dz) / radius);
+            MixBytes(this->Colors.data() + 4 * i, Smooth(std::min(1.0f, x)));
+          }
         }
-      }
-    });
+      });
   }
 };
 
@@ -304,9 +309,11 @@ struct VDBPeer
     const openvdb::Vec3d ci = this->Transform->worldToIndex(openvdb::Vec3d(c));
     const double ri = radius / this->CellSize;
     const openvdb::Coord lo(static_cast<int>(std::floor(ci.x() - ri)) & ~7,
-      static_cast<int>(std::floor(ci.y() - ri)) & ~7, static_cast<int>(std::floor(ci.z() - ri)) & ~7);
+      static_cast<int>(std::floor(ci.y() - ri)) & ~7,
+      static_cast<int>(std::floor(ci.z() - ri)) & ~7);
     const openvdb::Coord hi(static_cast<int>(std::ceil(ci.x() + ri)),
-      static_cast<int>(std::ceil(ci.y() + ri)), static_cast<int>(std::ceil(ci.z() + ri)));
+      static_cast<int>(std::ceil(ci.y() + ri)),
+      static_cast<int>(std::ceil(ci.z() + ri)));
     for (int x = lo.x(); x <= hi.x(); x += 8)
     {
       for (int y = lo.y(); y <= hi.y(); y += 8)
@@ -339,15 +346,18 @@ struct VDBPeer
 
   void Paint(vtkPoints* centres, double radius)
   {
-    vtkSMPTools::For(0, centres->GetNumberOfPoints(), [&](vtkIdType first, vtkIdType last) {
-      auto acc = this->Colors->getAccessor();
-      for (vtkIdType d = first; d < last; ++d)
+    vtkSMPTools::For(0,
+      centres->GetNumberOfPoints(),
+      [&](vtkIdType first, vtkIdType last)
       {
-        double c[3];
-        centres->GetPoint(d, c);
-        this->PaintDab(acc, c, radius);
-      }
-    });
+        auto acc = this->Colors->getAccessor();
+        for (vtkIdType d = first; d < last; ++d)
+        {
+          double c[3];
+          centres->GetPoint(d, c);
+          this->PaintDab(acc, c, radius);
+        }
+      });
   }
 };
 #endif
@@ -368,8 +378,12 @@ struct OFBUnderTest
 };
 
 /// Dabs per second of the painter and the peers, one radius, 1 and 2 threads.
-void CompareThroughput(OFBUnderTest& ofb, LocatorPeer& locator, void* vdb, double radiusCells,
-  int count, const Options& o)
+void CompareThroughput(OFBUnderTest& ofb,
+  LocatorPeer& locator,
+  void* vdb,
+  double radiusCells,
+  int count,
+  const Options& o)
 {
   const double radius = radiusCells * ofb.OFB->GetCellSize();
   vtkSmartPointer<vtkPoints> centres = RandomCentres(ofb.OFB, count, 1234u + count);
@@ -378,29 +392,44 @@ void CompareThroughput(OFBUnderTest& ofb, LocatorPeer& locator, void* vdb, doubl
   {
     const vtkSMPTools::Config config{ threads };
     double tOFB = 0.0, tLocator = 0.0, tVDB = 0.0, cOFB = 0.0, cLocator = 0.0, cVDB = 0.0;
-    vtkSMPTools::LocalScope(config, [&]() {
-      tOFB = TimeMedian(o.Repetitions, [&]() { ofb.Reset(); },
-        [&]() { ofb.Painter->Dabs(centres); }, &cOFB);
-      tLocator = TimeMedian(o.Repetitions,
-        [&]() { std::fill(locator.Colors.begin(), locator.Colors.end(), 255); },
-        [&]() { locator.Paint(centres, radius); }, &cLocator);
-#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
-      if (vdb)
+    vtkSMPTools::LocalScope(config,
+      [&]()
       {
-        auto* peer = static_cast<VDBPeer*>(vdb);
-        tVDB = TimeMedian(o.Repetitions, [&]() { peer->Reset(); },
-          [&]() { peer->Paint(centres, radius); }, &cVDB);
-      }
+        tOFB = TimeMedian(
+          o.Repetitions, [&]() { ofb.Reset(); }, [&]() { ofb.Painter->Dabs(centres); }, &cOFB);
+        tLocator = TimeMedian(
+          o.Repetitions,
+          [&]() { std::fill(locator.Colors.begin(), locator.Colors.end(), 255); },
+          [&]() { locator.Paint(centres, radius); },
+          &cLocator);
+#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
+        if (vdb)
+        {
+          auto* peer = static_cast<VDBPeer*>(vdb);
+          tVDB = TimeMedian(
+            o.Repetitions,
+            [&]() { peer->Reset(); },
+            [&]() { peer->Paint(centres, radius); },
+            &cVDB);
+        }
 #endif
-    });
+      });
     std::printf("  radius %4.1f cells, %6d dabs, %d thread%s: OFB %8.0f dabs/s | locator %8.0f "
                 "dabs/s (OFB %5.2fx, CPU time %5.2fx)",
-      radiusCells, count, threads, threads > 1 ? "s" : " ", count / tOFB, count / tLocator,
-      tLocator / tOFB, cLocator / cOFB);
+      radiusCells,
+      count,
+      threads,
+      threads > 1 ? "s" : " ",
+      count / tOFB,
+      count / tLocator,
+      tLocator / tOFB,
+      cLocator / cOFB);
     if (tVDB > 0.0)
     {
-      std::printf(" | OpenVDB %8.0f dabs/s (OFB %5.2fx, CPU time %5.2fx)", count / tVDB,
-        tVDB / tOFB, cVDB / cOFB);
+      std::printf(" | OpenVDB %8.0f dabs/s (OFB %5.2fx, CPU time %5.2fx)",
+        count / tVDB,
+        tVDB / tOFB,
+        cVDB / cOFB);
     }
     std::printf("\n");
   }
@@ -415,12 +444,20 @@ void TimeParticles(OFBUnderTest& ofb, const Options& o)
   for (int threads : { 1, 2 })
   {
     double t = 0.0, cpu = 0.0;
-    vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads }, [&]() {
-      t = TimeMedian(std::max(5, o.Repetitions), [&]() { ofb.Reset(); },
-        [&]() { ofb.Painter->Dabs(centres); }, &cpu);
-    });
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads },
+      [&]()
+      {
+        t = TimeMedian(
+          std::max(5, o.Repetitions),
+          [&]() { ofb.Reset(); },
+          [&]() { ofb.Painter->Dabs(centres); },
+          &cpu);
+      });
     std::printf("  10,000 dabs of radius 2.5 cells, %d thread%s: %.2f ms (CPU time %.2f ms)\n",
-      threads, threads > 1 ? "s" : "", 1e3 * t, 1e3 * cpu);
+      threads,
+      threads > 1 ? "s" : "",
+      1e3 * t,
+      1e3 * cpu);
   }
 }
 
@@ -442,7 +479,8 @@ void TimeStrokeWithUpload(OFBUnderTest& ofb, vtkPolyData* surface)
   renderer->AddActor(actor);
   renderer->ResetCamera();
   auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-  auto frame = [&]() {
+  auto frame = [&]()
+  {
     window->Render();
     if (gl)
     {
@@ -498,7 +536,10 @@ void TimeStrokeWithUpload(OFBUnderTest& ofb, vtkPolyData* surface)
   std::printf("  stroke of %lld dabs of radius 25 cells: paint %.3f ms/dab, frame with upload "
               "%.2f ms, frame without change %.2f ms -> upload %.3f ms/dab; paint + upload "
               "%.3f ms/dab (%.0f samples uploaded per frame)\n",
-    static_cast<long long>(dabs), 1e3 * paint / dabs, 1e3 * render / frames, 1e3 * perFrame,
+    static_cast<long long>(dabs),
+    1e3 * paint / dabs,
+    1e3 * render / frames,
+    1e3 * perFrame,
     1e3 * std::max(0.0, render - frames * perFrame) / dabs,
     1e3 * (paint + std::max(0.0, render - frames * perFrame)) / dabs,
     static_cast<double>(uploaded) / frames);
@@ -528,8 +569,10 @@ int main(int argc, char* argv[])
   o.OpenVDB = false;
 #endif
   std::printf("ofbPaintBenchmark: %s, %lld triangles, SMP backend %s, median of %d runs\n",
-    o.Mesh.c_str(), static_cast<long long>(surface->GetNumberOfPolys()),
-    vtkSMPTools::GetBackend(), o.Repetitions);
+    o.Mesh.c_str(),
+    static_cast<long long>(surface->GetNumberOfPolys()),
+    vtkSMPTools::GetBackend(),
+    o.Repetitions);
   for (size_t r = 0; r < o.Resolutions.size(); ++r)
   {
     const int resolution = o.Resolutions[r];
@@ -543,12 +586,15 @@ int main(int argc, char* argv[])
     ofb.Painter->GetBrush()->SetColor(BrushColor[0], BrushColor[1], BrushColor[2]);
     ofb.Painter->Dab(ofb.OFB->GetOrigin()); // first use: the painter's flags
     auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb.OFB->GetSampleData()->GetArray("Colors"));
-    ofb.Initial.assign(colors->GetPointer(0), colors->GetPointer(0) + 4 * colors->GetNumberOfTuples());
+    ofb.Initial.assign(
+      colors->GetPointer(0), colors->GetPointer(0) + 4 * colors->GetNumberOfTuples());
     LocatorPeer locator;
     locator.Build(ofb.OFB);
     void* vdb = nullptr;
-    std::printf("resolution %d: %lld samples; vtkStaticPointLocator build %.0f ms", resolution,
-      static_cast<long long>(ofb.OFB->GetNumberOfSamples()), 1e3 * locator.BuildSeconds);
+    std::printf("resolution %d: %lld samples; vtkStaticPointLocator build %.0f ms",
+      resolution,
+      static_cast<long long>(ofb.OFB->GetNumberOfSamples()),
+      1e3 * locator.BuildSeconds);
 #ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
     VDBPeer vdbPeer;
     if (o.OpenVDB)

@@ -94,9 +94,8 @@ TEST(PaintFilter, PaintsACopyAlongTheStrokes)
   std::vector<double> progress;
   vtkNew<vtkCallbackCommand> cb;
   cb->SetClientData(&progress);
-  cb->SetCallback([](vtkObject*, unsigned long, void* cd, void* data) {
-    static_cast<std::vector<double>*>(cd)->push_back(*static_cast<double*>(data));
-  });
+  cb->SetCallback([](vtkObject*, unsigned long, void* cd, void* data)
+    { static_cast<std::vector<double>*>(cd)->push_back(*static_cast<double*>(data)); });
   filter->AddObserver(vtkCommand::ProgressEvent, cb);
   filter->Update();
   vtkOFB* output = filter->GetOutput();
@@ -108,7 +107,8 @@ TEST(PaintFilter, PaintsACopyAlongTheStrokes)
   EXPECT_TRUE(std::equal(before.begin(), before.end(), Colors(input)->GetPointer(0)));
   EXPECT_NE(Colors(output), Colors(input));
   EXPECT_EQ(output->GetDepths(), input->GetDepths());
-  EXPECT_EQ(output->GetSampleData()->GetArray("Normals"), input->GetSampleData()->GetArray("Normals"));
+  EXPECT_EQ(
+    output->GetSampleData()->GetArray("Normals"), input->GetSampleData()->GetArray("Normals"));
   // Painted near the stroke only; red at its start, blue at its end.
   vtkIdType changed = 0;
   for (vtkIdType i = 0; i < output->GetNumberOfSamples(); ++i)

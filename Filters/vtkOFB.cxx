@@ -106,6 +106,16 @@ void vtkOFB::Recycle()
       spares.emplace_back(array);
     }
   };
+  this->Recycled.CellOffsets = this->CellOffsets;
+  this->Recycled.Depths = this->Depths;
+  this->Recycled.CellIndex = this->CellIndex;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Recycled.Origin[a] = this->Origin[a];
+    this->Recycled.Dimensions[a] = this->Dimensions[a];
+  }
+  this->Recycled.CellSize = this->CellSize;
+  this->Recycled.Time = this->StructureTime;
   keep(this->CellOffsets);
   keep(this->Depths);
   keep(this->CellIndex);
@@ -235,6 +245,7 @@ bool vtkOFB::AllocateSamples(vtkIdType n)
     vtkErrorMacro("AllocateSamples: cannot allocate " << n << " samples.");
     return false;
   }
+  this->Recycled = RecycledStructure();
   this->Depths = depths;
   this->CellIndex = index;
   this->ModifiedRanges.clear();
@@ -729,6 +740,19 @@ void vtkOFB::CopyFrom(vtkDataObject* src, bool deep)
   }
   this->ModifiedRanges.clear();
   this->StructureTime.Modified();
+  if (!deep && this->CellOffsets && this->CellOffsets.Get() == this->Recycled.CellOffsets.Get() &&
+    this->Depths.Get() == this->Recycled.Depths.Get() &&
+    this->CellIndex.Get() == this->Recycled.CellIndex.Get() &&
+    this->CellSize == this->Recycled.CellSize &&
+    std::equal(this->Origin, this->Origin + 3, this->Recycled.Origin) &&
+    std::equal(this->Dimensions, this->Dimensions + 3, this->Recycled.Dimensions))
+  {
+    // The structure this OFB had before Recycle(): not a change; the source's modified
+    // ranges carry over.
+    this->StructureTime = this->Recycled.Time;
+    this->ModifiedRanges = ofb->ModifiedRanges;
+  }
+  this->Recycled = RecycledStructure();
   this->Modified();
 }
 

@@ -39,6 +39,7 @@
 #include "vtkPointData.h"        // for inline access
 
 #include "vtkTimeStamp.h"        // for StructureTime
+#include "vtkWeakPointer.h"      // for the recycled structure
 
 #include <algorithm> // for std::lower_bound
 #include <vector>    // for ModifiedRanges
@@ -330,6 +331,21 @@ protected:
   };
   std::vector<ModifiedRange> ModifiedRanges;
   vtkTimeStamp StructureTime;
+
+  // The structure that Recycle() let go: a shallow copy of the same arrays in the same
+  // frame (a filter re-executing over an unchanged input) keeps its StructureTime, so
+  // that consumers (the mapper's uploads) see only the arrays that changed.
+  struct RecycledStructure
+  {
+    vtkWeakPointer<vtkTypeUInt32Array> CellOffsets;
+    vtkWeakPointer<vtkFloatArray> Depths;
+    vtkWeakPointer<vtkTypeUInt32Array> CellIndex;
+    double Origin[3];
+    vtkIdType Dimensions[3];
+    double CellSize;
+    vtkTimeStamp Time;
+  };
+  RecycledStructure Recycled;
 
 private:
   vtkOFB(const vtkOFB&) = delete;

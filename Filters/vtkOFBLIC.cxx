@@ -18,8 +18,10 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <string>
 
 vtkStandardNewMacro(vtkOFBLIC);
 
@@ -434,34 +436,61 @@ void vtkOFBLIC::WriteOutput(vtkOFB* input,
   const std::vector<unsigned char>& mask)
 {
   const vtkIdType n = static_cast<vtkIdType>(values.size());
-  vtkNew<vtkFloatArray> lic;
-  lic->SetName("LIC");
-  vtkNew<vtkUnsignedCharArray> maskArray;
-  maskArray->SetName("LICMask");
-  // The input's arrays shared, LIC (clamped to [0, 1]) and the mask added.
+  // A re-run over the same input (another AnimationPhase) writes into the previous
+  // output's LIC and LICMask, recycled by the pipeline (vtkOFB::Recycle), and marks
+  // Modified() only what changed; the shallow copy of an unchanged input keeps the
+  // output's structure time, so the mapper uploads the LIC array alone.
+  vtkSmartPointer<vtkFloatArray> lic =
+    vtkFloatArray::SafeDownCast(output->TakeSpareArray("LIC", VTK_FLOAT, 1, n));
+  vtkSmartPointer<vtkUnsignedCharArray> maskArray = vtkUnsignedCharArray::SafeDownCast(
+    output->TakeSpareArray("LICMask", VTK_UNSIGNED_CHAR, 1, n));
+  const bool newMask = !maskArray;
+  if (!lic)
+  {
+    lic = vtkSmartPointer<vtkFloatArray>::New();
+    lic->SetName("LIC");
+  }
+  if (newMask)
+  {
+    maskArray = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    maskArray->SetName("LICMask");
+  }
+  lic->SetNumberOfTuples(n);
+  maskArray->SetNumberOfTuples(n);
+  // LIC (clamped to [0, 1]) and the mask.
   const double luminance =
     0.2126 * this->MaskColor[0] + 0.7152 * this->MaskColor[1] + 0.0722 * this->MaskColor[2];
   const float maskValue =
     static_cast<float>(1.0 + this->MaskIntensity * (std::min(1.0, std::max(0.0, luminance)) - 1.0));
-  lic->SetNumberOfTuples(n);
-  maskArray->SetNumberOfTuples(n);
   float* licOut = lic->GetPointer(0);
   unsigned char* maskOut = maskArray->GetPointer(0);
+  std::atomic<bool> maskChanged(false);
   vtkSMPTools::For(0,
     n,
     4096,
     [&](vtkIdType begin, vtkIdType end)
     {
+      bool changed = false;
       for (vtkIdType i = begin; i < end; ++i)
       {
+        changed |= maskOut[i] != mask[i];
         maskOut[i] = mask[i];
         licOut[i] = mask[i] ? maskValue : std::min(1.0f, std::max(0.0f, values[i]));
       }
+      if (changed)
+      {
+        maskChanged.store(true, std::memory_order_relaxed);
+      }
     });
+  lic->Modified();
+  if (maskChanged.load() && !newMask)
+  {
+    maskArray->Modified();
+  }
+  // The input's arrays shared, LIC and the mask added.
   output->ShallowCopy(input);
   output->GetSampleData()->AddArray(lic);
   output->GetSampleData()->AddArray(maskArray);
-  output->MarkAllSamplesModified();
 }
 
 //------------------------------------------------------------------------------
@@ -479,10 +508,11 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     vtkErrorMacro("No input OFB.");
     return 0;
   }
-  output->Initialize();
+  // Every error leaves an empty output.
   if (!(this->StepSize > 0.0) || !std::isfinite(this->StepSize))
   {
     vtkErrorMacro("StepSize must be positive and finite (it is " << this->StepSize << ").");
+    output->Initialize();
     return 1;
   }
   const vtkIdType n = input->GetNumberOfSamples();
@@ -499,11 +529,13 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   }
   if (!vectors)
   {
+    output->Initialize();
     return 1;
   }
   if (!normalsIn || normalsIn->GetNumberOfComponents() != 3)
   {
     vtkErrorMacro("The input OFB has no 3-component \"Normals\" sample array.");
+    output->Initialize();
     return 1;
   }
 
@@ -541,6 +573,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   std::vector<float> noise;
   if (!this->PrepareNoise(input, positions.data(), noise))
   {
+    output->Initialize();
     return 1;
   }
   this->UpdateProgress(0.05);

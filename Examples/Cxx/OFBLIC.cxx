@@ -9,8 +9,9 @@
 // --image it renders once off screen, writes the PNG and exits (no window); --keys
 // K1,K2,... applies keys first, then one animation frame (a test of the keys).
 //
-// Keys: Up/Down steps +-5; Right/Left noise grain x2 / /2; m colour mode (grey LIC, or
-// the speed through a lookup table modulated by the LIC); n noise type; o oriented LIC;
+// Keys: Up/Down steps +-5; Right/Left noise grain x2 / /2; m colour mode (the speed
+// through a lookup table combined with the LIC in VTK surface LIC's map mode, then its
+// blend mode with LICIntensity 0.8, then the grey LIC alone); n noise type; o oriented LIC;
 // l enhanced LIC; space animation (the streaks flow: the LIC is recomputed with a new
 // AnimationPhase on a repeating timer). Mouse: VTK's trackball camera.
 
@@ -58,7 +59,7 @@ struct App
   vtkNew<vtkTextActor> Text;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
-  bool ColorBySpeed = true;
+  int ColorMode = 0; // 0 map, 1 blend, 2 LIC alone
   bool Animating = false;
   bool Deferred = false; // --keys: apply the settings, compute and draw once at the end
 
@@ -70,15 +71,20 @@ struct App
       return;
     }
     this->LIC->Update();
-    this->Mapper->SetColorSource(
-      this->ColorBySpeed ? vtkOFBPolyDataMapper::Scalars : vtkOFBPolyDataMapper::Paint);
+    // VTK surface LIC's colour modes: map multiplies the colour by the LIC plus
+    // MapModeBias, blend mixes the LIC grey in by LICIntensity (1: the LIC alone).
+    this->Mapper->SetLICColorMode(this->ColorMode == 0 ? vtkOFBPolyDataMapper::COLOR_MODE_MAP
+                                                       : vtkOFBPolyDataMapper::COLOR_MODE_BLEND);
+    this->Mapper->SetMapModeBias(0.1);
+    this->Mapper->SetLICIntensity(this->ColorMode == 1 ? 0.8 : 1.0);
     static const char* noise[3] = { "uniform", "Gaussian", "Perlin" };
     std::ostringstream text;
     text << this->LIC->GetOutput()->GetNumberOfSamples() << " samples, LIC "
          << static_cast<int>(this->LIC->GetLastExecutionTime()) << " ms\n"
          << "steps " << this->LIC->GetNumberOfSteps() << " (Up/Down), grain "
          << this->LIC->GetNoiseGrainSize() << " cells (Right/Left)\n"
-         << "m colour: " << (this->ColorBySpeed ? "speed x LIC" : "LIC")
+         << "m colour: "
+         << (this->ColorMode == 0 ? "speed map LIC" : (this->ColorMode == 1 ? "speed blend LIC" : "LIC"))
          << ", n noise: " << noise[this->LIC->GetNoiseType()] << "\n"
          << "o oriented: " << (this->LIC->GetOrientedLIC() ? "on" : "off")
          << ", l enhanced: " << (this->LIC->GetEnhancedLIC() ? "on" : "off")
@@ -101,7 +107,7 @@ struct App
     }
     else if (key == "m")
     {
-      this->ColorBySpeed = !this->ColorBySpeed;
+      this->ColorMode = (this->ColorMode + 1) % 3;
     }
     else if (key == "n")
     {
@@ -291,7 +297,7 @@ int main(int argc, char* argv[])
   app.Mapper->SetLookupModeToInverseDistance();
   app.Mapper->SetIntensityArrayName("LIC");
   app.Mapper->IntensityModulationOn();
-  app.Mapper->SetIntensityWeight(0.8);
+  app.Mapper->SetColorSourceToScalars();
   app.Mapper->SetLookupTable(app.Table);
   app.Mapper->SetScalarArrayName("Speed");
   app.Mapper->SetScalarRange(mesh->GetPointData()->GetArray("Speed")->GetRange());

@@ -42,6 +42,8 @@ parser.add_argument("--steps", type=int, default=20)
 parser.add_argument("--grain", type=float, default=1.0)
 parser.add_argument("--noise", choices=["uniform", "gaussian", "perlin"], default="gaussian")
 parser.add_argument("--color", choices=["speed", "grey"], default="speed")
+parser.add_argument("--mode", choices=["map", "blend"], default="map",
+                    help="how the LIC combines with the speed colouring (VTK's ColorMode)")
 parser.add_argument("--size", type=int, default=600)
 parser.add_argument("--up", choices=["x", "y", "z"], default="y",
                     help="the mesh's up axis (the bunny's is y, the horse's z)")
@@ -109,7 +111,17 @@ if args.color == "speed":
     mapper.SetScalarRange(speed_array.GetRange())
     mapper.SetColorSourceToScalars()
     mapper.SetScalarArrayName("Speed")
-    mapper.SetIntensityWeight(0.8)       # VTK's LICIntensity default
+    # VTK surface LIC's colour modes: "map" multiplies the colour by LIC + MapModeBias,
+    # "blend" mixes the LIC grey in by LICIntensity (VTK's default 0.8).
+    if args.mode == "map":
+        mapper.SetLICColorModeToMap()
+        mapper.SetMapModeBias(0.1)
+    else:
+        mapper.SetLICColorModeToBlend()
+        mapper.SetLICIntensity(0.8)
+else:
+    mapper.SetLICColorModeToBlend()
+    mapper.SetLICIntensity(1.0)          # the LIC alone
 
 actor = vtkActor()
 actor.SetMapper(mapper)

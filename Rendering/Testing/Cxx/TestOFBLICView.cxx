@@ -231,3 +231,53 @@ TEST(LICView, GrainMovesWithTheSurface)
   EXPECT_GT(surface.Pairs, 10000);
   EXPECT_GE(surface.Value, 0.9);
 }
+
+// Animation: a re-convolution with another AnimationPhase changes only the LIC array of
+// the output (the structure and the other arrays stay shared, the structure time kept);
+// the mapper then uploads that array alone (4 bytes a sample), not the whole OFB.
+TEST(LICView, AnimationUploadsOnlyTheLIC)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  double center[3];
+  Center(bunny, center);
+  const double axis[3] = { 0.4, 1.0, 0.3 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(bunny, 128, RotationAbout(axis, center));
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetInputData(ofb);
+  lic->SetNumberOfSteps(8);
+  lic->AnimateOn();
+  lic->SetAnimationPhase(0.0);
+  lic->Update();
+  vtkOFB* out = lic->GetOutput();
+  const vtkIdType n = out->GetNumberOfSamples();
+  ASSERT_GT(n, 0);
+  auto* licArray = vtkFloatArray::SafeDownCast(out->GetSampleData()->GetArray("LIC"));
+  ASSERT_NE(licArray, nullptr);
+  const std::vector<float> before(licArray->GetPointer(0), licArray->GetPointer(0) + n);
+
+  LICScene scene(bunny, out, 200);
+  scene.Renderer->ResetCamera();
+  scene.Window->Render();
+  ASSERT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  scene.Window->Render(); // nothing changed: nothing uploaded
+  const vtkIdType first = scene.Mapper->GetUploadedBytes();
+  ASSERT_GT(first, 4 * n);
+
+  lic->SetAnimationPhase(0.25);
+  lic->Update();
+  ASSERT_EQ(lic->GetOutput(), out);
+  EXPECT_EQ(out->GetDepths(), ofb->GetDepths());
+  licArray = vtkFloatArray::SafeDownCast(out->GetSampleData()->GetArray("LIC"));
+  ASSERT_NE(licArray, nullptr);
+  ASSERT_EQ(licArray->GetNumberOfTuples(), n);
+  vtkIdType differing = 0;
+  const float* after = licArray->GetPointer(0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    differing += after[i] != before[i] ? 1 : 0;
+  }
+  EXPECT_GT(differing, n / 2); // the phase moved the streaks
+  scene.Window->Render();
+  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - first, 4 * n);
+}

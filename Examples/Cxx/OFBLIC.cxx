@@ -23,13 +23,12 @@
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkOFB.h"
+#include "vtkOFBReadMesh.h" // Testing/Cxx: OBJ or PLY, shared with the tests
 #include "vtkOFBLIC.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBSampler.h"
 #include "vtkObjectFactory.h"
-#include "vtkPLYReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -175,25 +174,6 @@ public:
 };
 vtkStandardNewMacro(KeyStyle);
 
-vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
-{
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply")
-  {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  else
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  return (mesh && mesh->GetNumberOfPolys() > 0) ? mesh : nullptr;
-}
 
 /// The field (rotation about a tilted axis through the centre) and its speed.
 void AddField(vtkPolyData* mesh)
@@ -275,7 +255,7 @@ int main(int argc, char* argv[])
       return arg == "--help" ? 0 : 1;
     }
   }
-  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(meshPath);
+  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(meshPath);
   if (!mesh)
   {
     std::cerr << "OFBLIC: cannot read a surface from " << meshPath << "\n";

@@ -20,12 +20,11 @@
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkOFB.h"
+#include "vtkOFBReadMesh.h" // Testing/Cxx: OBJ or PLY, shared with the tests
 #include "vtkOFBParticleAdvector.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBSampler.h"
-#include "vtkPLYReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -134,35 +133,6 @@ bool Parse(int argc, char* argv[], Options& o)
   return true;
 }
 
-vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
-{
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply")
-  {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  else
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-  }
-  if (!mesh || mesh->GetNumberOfPolys() == 0)
-  {
-    return nullptr;
-  }
-  // Smooth shading for the mapper.
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(mesh);
-  normals->SplittingOff();
-  normals->Update();
-  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
-  return out;
-}
 
 // A built-in field (the advector projects it into the tangent planes).
 bool MakeField(vtkPolyData* mesh, const std::string& kind, const double up[3])
@@ -299,7 +269,7 @@ int main(int argc, char* argv[])
                  "--steps N] [--width W] [--height H] [--view-up X Y Z]\n";
     return 1;
   }
-  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(o.Mesh);
+  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(o.Mesh);
   if (!mesh)
   {
     std::cerr << "Cannot read a surface from " << o.Mesh << "\n";

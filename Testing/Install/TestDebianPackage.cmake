@@ -1,7 +1,7 @@
 # OFB.Install.DebianPackage (see CMakeLists.txt): make the Debian package, check
 # its fields and contents, unpack it and import its Python package.
 #   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DPYTHON_DESTINATION=...
-#         -DWRAP_PYTHON=ON|OFF -DCPACK=... -DDPKG_DEB=... -P TestDebianPackage.cmake
+#         -DWRAP_PYTHON=ON|OFF -DCPACK=... -DDPKG_DEB=... -DSOVERSION=0.1 -P TestDebianPackage.cmake
 include("${CMAKE_CURRENT_LIST_DIR}/InstallTestHelpers.cmake")
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -25,8 +25,11 @@ endif ()
 # multiarch directory to lib).
 run(contents QUIET "${DPKG_DEB}" --contents "${packages}")
 set(lib "\\./usr/lib/([a-z0-9_-]+/)?")
+string(REPLACE "." "\\." SOVERSION_REGEX "${SOVERSION}")
 foreach (module IN ITEMS Filters Rendering Interaction)
   expect("${contents_output}" " ${lib}libvtkOFB${module}\\.so\\.[0-9.]+\n" "the ${module} library")
+  expect("${contents_output}" " ${lib}libvtkOFB${module}\\.so\\.${SOVERSION_REGEX} -> "
+    "the ${module} library's soname link")
   expect("${contents_output}" " \\./usr/include/vtkofb/vtkOFB${module}Module\\.h\n"
     "the ${module} export header")
 endforeach ()

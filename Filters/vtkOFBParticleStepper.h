@@ -52,11 +52,26 @@ public:
   /// RK45: largest error of a sub-step (world units).
   double Tolerance = 1e-3;
 
+  /// The most particles `Advance` takes in one call.
+  static constexpr int MaximumBatch = 16;
+
   /**
    * Advance `p` by one step. `subStep` is the RK45 sub-step length carried from
    * the particle's previous step (0 at first; updated).
    */
   Result Advance(vtkOFBSurfacePoint& p, double& subStep) const;
+
+  /**
+   * Advance `n` (at most MaximumBatch) particles by one step each, with the same
+   * result for each as `Advance` alone. The stages go across the particles (the
+   * first stage of all, then the second...): the work of one particle does not
+   * wait for the previous one's, so the processor overlaps their chains of
+   * dependent arithmetic and memory loads.
+   */
+  void Advance(int n,
+    vtkOFBSurfacePoint* const* points,
+    double* const* subSteps,
+    Result* results) const;
 
   /// The slope at `p` in its triangle's 2-D frame; false where the field is zero.
   bool Slope(const vtkOFBSurfacePoint& p, glm::dvec2& slope) const;

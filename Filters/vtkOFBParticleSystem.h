@@ -113,7 +113,8 @@ private:
   void Reseed(vtkIdType i, Particle& p);
   void Release(vtkIdType i, Particle& p);
   void PushTrail(vtkIdType i, const glm::dvec3& x);
-  void AdvanceParticle(vtkIdType i, vtkIdType step, const Coloring& coloring);
+  /// One step (`step` to `step + 1`) of particles begin..end-1 (at most a batch).
+  void AdvanceBatch(vtkIdType begin, vtkIdType end, vtkIdType step, const Coloring& coloring);
   /// The colour of `p` at `step` (steps since the seeds).
   void ColorParticle(const Coloring& coloring, vtkIdType step, Particle& p) const;
 };

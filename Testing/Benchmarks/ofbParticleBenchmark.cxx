@@ -169,7 +169,7 @@ void Accuracy(int steps, int numSeeds)
 }
 
 // 2. RK4 steps on the horse, both tracers from the same seeds.
-void Speed(vtkPolyData* horse, int numSeeds, int steps, int threads)
+void Speed(vtkPolyData* horse, int numSeeds, int steps, int threads, bool peerToo)
 {
   vtkSMPTools::Initialize(threads);
   vtkNew<vtkOFBParticleAdvector> advector;
@@ -201,6 +201,10 @@ void Speed(vtkPolyData* horse, int numSeeds, int steps, int threads)
     advector->Step();
     timer->StopTimer();
     oursTime = std::min(oursTime, timer->GetElapsedTime());
+    if (!peerToo)
+    {
+      continue;
+    }
     tracer->Modified();
     timer->StartTimer();
     tracer->Update();
@@ -262,6 +266,7 @@ int main(int argc, char* argv[])
   int steps = 2000;
   int seeds = 1000;
   int part = 0; // all
+  bool peer = true;
   std::string mesh = std::string(VTKOFB_DATA_DIR) + "/horse.ply";
   for (int i = 1; i < argc; ++i)
   {
@@ -276,6 +281,10 @@ int main(int argc, char* argv[])
     else if (!std::strcmp(argv[i], "--part") && i + 1 < argc)
     {
       part = std::atoi(argv[++i]);
+    }
+    else if (!std::strcmp(argv[i], "--no-peer"))
+    {
+      peer = false;
     }
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc)
     {
@@ -308,7 +317,7 @@ int main(int argc, char* argv[])
               << " seeds, RK4, 200 steps of 1 cell (1/1024 of the box):\n";
     for (int threads : { 1, 2 })
     {
-      Speed(horse, seeds, 200, threads);
+      Speed(horse, seeds, 200, threads, peer);
     }
   }
   if (part == 0 || part == 3)

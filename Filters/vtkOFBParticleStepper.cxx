@@ -4,38 +4,6 @@
 #include <cmath>
 
 //------------------------------------------------------------------------------
-bool vtkOFBParticleStepper::Slope(const vtkOFBSurfacePoint& p, glm::dvec2& slope) const
-{
-  const glm::dvec2 v = this->Walker->Field2(p);
-  const double speed = glm::length(v);
-  if (!(speed > this->StopSpeed))
-  {
-    slope = glm::dvec2(0.0);
-    return false;
-  }
-  slope = this->Sign * (this->Normalize ? v / speed : v * this->Scale);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-glm::dvec2 vtkOFBParticleStepper::StageSlope(const vtkOFBSurfacePoint& p, const glm::dvec2& d) const
-{
-  vtkOFBSurfacePoint q = p;
-  glm::dvec2 slope;
-  if (this->Walker->WalkInside(q, d))
-  {
-    // No edge crossed: the slope is in p's frame already.
-    this->Slope(q, slope);
-    return slope;
-  }
-  glm::dmat2 frame(1.0);
-  this->Walker->Walk(q, d, &frame);
-  this->Slope(q, slope);
-  // Back into p's frame: the turns are orthogonal, their inverse is the transpose.
-  return glm::transpose(frame) * slope;
-}
-
-//------------------------------------------------------------------------------
 vtkOFBParticleStepper::Result vtkOFBParticleStepper::Final(vtkOFBSurfacePoint& p,
   const glm::dvec2& d) const
 {

@@ -260,9 +260,13 @@ vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& 
       p.Bary = glm::max(p.Bary + db, glm::dvec3(0.0));
       return Inside;
     }
-    p.Bary += exit * db;
+    // On the edge: the barycentric of its opposite corner is 0, the other two sum
+    // to 1 (the second is 1 - the first rather than a division of both by their sum).
+    const int a = edge == 2 ? 0 : edge + 1;
+    const double ba = std::min(1.0, std::max(0.0, p.Bary[a] + exit * db[a]));
     p.Bary[edge] = 0.0;
-    Normalize(p.Bary);
+    p.Bary[a] = ba;
+    p.Bary[3 - edge - a] = 1.0 - ba;
 
     const int next = r.Next[edge];
     if (next < 0)

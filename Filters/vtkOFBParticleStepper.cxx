@@ -101,6 +101,8 @@ void vtkOFBParticleStepper::Advance(int n,
     if (moving[j])
     {
       results[j] = this->Final(*points[j], scale * sum[j]);
+      // The caller reads the corners of where it ended next.
+      this->Walker->PrefetchCorners(points[j]->Triangle);
     }
   }
 }

@@ -178,6 +178,18 @@ public:
 #endif
   }
 
+  /// Fetch ahead the corner positions of `t` (for `Position`).
+  void PrefetchCorners(vtkIdType t) const
+  {
+#if defined(__GNUC__) || defined(__clang__)
+    const char* c = reinterpret_cast<const char*>(&this->CornerPoints[3 * t]);
+    __builtin_prefetch(c);
+    __builtin_prefetch(c + 64);
+#else
+    (void)t;
+#endif
+  }
+
   /// Fetch ahead what a walk reads of the neighbours of `t` (where it may go next).
   void PrefetchNeighbors(vtkIdType t) const
   {

@@ -406,7 +406,8 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   this->PrepareColoring(surface);
   const vtkIdType first = system.CurrentStep;
   // Without painting, only the last step's footprints are kept: the steps go in
-  // chunks (each particle makes a chunk's steps in a row), about 20 per update.
+  // chunks (each batch of particles makes a chunk's steps in a row), about 20 per
+  // update.
   const bool painting = in.Target && this->Paint && this->FootprintRadius > 0.0;
   const vtkIdType chunk = painting ? 1 : std::max<vtkIdType>(1, (target - first) / 20);
   in.AdvectionTime = 0.0;

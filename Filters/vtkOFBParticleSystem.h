@@ -88,8 +88,8 @@ public:
   void Start();
 
   /**
-   * `numSteps` steps of every particle (each particle makes all of them in a row);
-   * colours from `coloring` at each new step. Footprints and `Painted` are those of
+   * `numSteps` steps of every particle (each batch of the stepper's MaximumBatch
+   * particles makes all of them in a row); colours from `coloring` at each new step. Footprints and `Painted` are those of
    * the last step.
    */
   void Advance(const Coloring& coloring, vtkIdType numSteps = 1);

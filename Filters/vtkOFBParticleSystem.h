@@ -89,8 +89,8 @@ public:
 
   /**
    * `numSteps` steps of every particle (each batch of the stepper's MaximumBatch
-   * particles makes all of them in a row); colours from `coloring` at each new step. Footprints and `Painted` are those of
-   * the last step.
+   * particles makes all of them in a row); colours from `coloring` at each new
+   * step. Footprints and `Painted` are those of the last step.
    */
   void Advance(const Coloring& coloring, vtkIdType numSteps = 1);
 

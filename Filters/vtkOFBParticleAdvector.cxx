@@ -27,6 +27,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -34,6 +35,12 @@ vtkStandardNewMacro(vtkOFBParticleAdvector);
 
 namespace
 {
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::duration d)
+{
+  return std::chrono::duration<double>(d).count();
+}
+
 // When the content of a data set last changed: its points, cells and point data
 // (not the data object's own time, which the pipeline's requests move on).
 vtkMTimeType ContentTime(vtkDataSet* data)
@@ -190,6 +197,21 @@ vtkIdType vtkOFBParticleAdvector::GetCurrentStep() const
 double vtkOFBParticleAdvector::GetCellSize() const
 {
   return this->Internals->CellSize;
+}
+
+double vtkOFBParticleAdvector::GetLastAdvectionTime() const
+{
+  return this->Internals->AdvectionTime;
+}
+
+double vtkOFBParticleAdvector::GetLastPaintingTime() const
+{
+  return this->Internals->PaintingTime;
+}
+
+double vtkOFBParticleAdvector::GetLastOutputTime() const
+{
+  return this->Internals->OutputTime;
 }
 
 const char* vtkOFBParticleAdvector::GetColorModeAsString(int mode)
@@ -384,17 +406,24 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   this->PrepareColoring(surface);
   const vtkIdType first = system.CurrentStep;
   // Without painting, only the last step's footprints are kept: the steps go in
-  // chunks (each particle makes a chunk's steps in a row), about 20 per update.
+  // chunks (each batch of particles makes a chunk's steps in a row), about 20 per
+  // update.
   const bool painting = in.Target && this->Paint && this->FootprintRadius > 0.0;
   const vtkIdType chunk = painting ? 1 : std::max<vtkIdType>(1, (target - first) / 20);
+  in.AdvectionTime = 0.0;
+  in.PaintingTime = 0.0;
   for (vtkIdType step = first; step < target;)
   {
     const vtkIdType count = std::min(chunk, target - step);
+    const auto start = Clock::now();
     system.Advance(in.Coloring, count);
+    const auto moved = Clock::now();
+    in.AdvectionTime += Seconds(moved - start);
     step += count;
     if (painting || step == target)
     {
       this->PaintFootprints();
+      in.PaintingTime += Seconds(Clock::now() - moved);
     }
     if (target - first > 1)
     {
@@ -402,12 +431,14 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
     }
   }
 
+  const auto outputStart = Clock::now();
   if (in.Target)
   {
     outOFB->ShallowCopy(in.Target);
   }
   this->FillParticles(outParticles);
   this->FillTrails(outTrails);
+  in.OutputTime = Seconds(Clock::now() - outputStart);
   const double time = static_cast<double>(system.CurrentStep);
   for (int i = 0; i < 3; ++i)
   {
@@ -807,4 +838,7 @@ void vtkOFBParticleAdvector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LookupTable: " << this->LookupTable << "\n";
   os << indent << "TrailLength: " << this->TrailLength << "\n";
   os << indent << "CurrentStep: " << this->GetCurrentStep() << "\n";
+  os << indent << "LastAdvectionTime: " << this->GetLastAdvectionTime() << " s\n";
+  os << indent << "LastPaintingTime: " << this->GetLastPaintingTime() << " s\n";
+  os << indent << "LastOutputTime: " << this->GetLastOutputTime() << " s\n";
 }

@@ -387,6 +387,17 @@ public:
    */
   double GetCellSize() const;
 
+  ///@{
+  /**
+   * Wall-clock seconds the last update spent moving the particles, painting
+   * their footprints (filling the footprint arrays and the painter's Dabs call)
+   * and building the three outputs. For benchmarks and profiling.
+   */
+  double GetLastAdvectionTime() const;
+  double GetLastPaintingTime() const;
+  double GetLastOutputTime() const;
+  ///@}
+
   vtkTypeBool ProcessRequest(vtkInformation* request,
     vtkInformationVector** inInfo,
     vtkInformationVector* outInfo) override;

@@ -8,6 +8,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 class vtkCellArray;
 class vtkDoubleArray;
@@ -109,6 +110,11 @@ public:
   double LastCellSize = 0.0;
   bool TargetChanged = false;
   vtkOFBParticleSystem::Coloring Coloring;
+  // Wall-clock seconds of the last update's parts.
+  double AdvectionTime = 0.0;
+  double PaintingTime = 0.0;
+  double OutputTime = 0.0;
+  std::vector<vtkIdType> Slots; // where each particle's output starts (kept between steps)
   vtkSmartPointer<vtkDataArray> ScalarArray;
 };
 

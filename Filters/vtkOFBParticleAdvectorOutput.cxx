@@ -200,30 +200,44 @@ void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
   unsigned char* color = ValuesOf(arrays.Color.Get(), count);
   vtkIdType* offsets = ValuesOf(arrays.VertOffsets.Get(), count + 1);
   vtkIdType* connectivity = ValuesOf(arrays.VertConnectivity.Get(), count);
+  // Where each particle goes: its index among the released ones.
+  std::vector<vtkIdType>& slots = this->Internals->Slots;
+  slots.resize(n);
   vtkIdType k = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const auto& p = system.Particles[i];
-    if (p.Status == vtkOFBParticleSystem::Waiting)
-    {
-      continue;
-    }
-    std::copy_n(&p.Position[0], 3, x + 3 * k);
-    const glm::dvec3 v = system.Velocity(p);
-    std::copy_n(&v[0], 3, velocity + 3 * k);
-    age[k] = p.Age;
-    ids[k] = i;
-    chain[k] = p.Chain;
-    const double a = this->Opacity * p.Color[3] * system.ChainWeight(p.Chain);
-    const unsigned char rgba[4] = { static_cast<unsigned char>(255.f * p.Color[0] + 0.5f),
-      static_cast<unsigned char>(255.f * p.Color[1] + 0.5f),
-      static_cast<unsigned char>(255.f * p.Color[2] + 0.5f),
-      static_cast<unsigned char>(255.0 * a + 0.5) };
-    std::copy_n(rgba, 4, color + 4 * k);
-    offsets[k] = k;
-    connectivity[k] = k;
-    ++k;
+    slots[i] = k;
+    k += system.Particles[i].Status != vtkOFBParticleSystem::Waiting ? 1 : 0;
   }
+  const double opacity = this->Opacity;
+  vtkSMPTools::For(0,
+    n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const auto& p = system.Particles[i];
+        if (p.Status == vtkOFBParticleSystem::Waiting)
+        {
+          continue;
+        }
+        const vtkIdType j = slots[i];
+        std::copy_n(&p.Position[0], 3, x + 3 * j);
+        const glm::dvec3 v = system.Velocity(p);
+        std::copy_n(&v[0], 3, velocity + 3 * j);
+        age[j] = p.Age;
+        ids[j] = i;
+        chain[j] = p.Chain;
+        const double a = opacity * p.Color[3] * system.ChainWeight(p.Chain);
+        const unsigned char rgba[4] = { static_cast<unsigned char>(255.f * p.Color[0] + 0.5f),
+          static_cast<unsigned char>(255.f * p.Color[1] + 0.5f),
+          static_cast<unsigned char>(255.f * p.Color[2] + 0.5f),
+          static_cast<unsigned char>(255.0 * a + 0.5) };
+        std::copy_n(rgba, 4, color + 4 * j);
+        offsets[j] = j;
+        connectivity[j] = j;
+      }
+    });
   offsets[count] = count;
   arrays.Verts->SetData(arrays.VertOffsets, arrays.VertConnectivity);
   output->SetPoints(arrays.Points);
@@ -244,12 +258,16 @@ void vtkOFBParticleAdvector::FillTrails(vtkPolyData* output)
   const vtkOFBParticleSystem& system = this->Internals->System;
   vtkOFBParticleArrays& arrays = this->Internals->Arrays;
   const vtkIdType n = static_cast<vtkIdType>(system.Particles.size());
-  // Trails of two points or more: their number and points first.
+  // Trails of two points or more: where each one's line and points start.
+  std::vector<vtkIdType>& slots = this->Internals->Slots;
+  slots.resize(2 * n);
   vtkIdType numLines = 0;
   vtkIdType numPoints = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
     const int count = system.TrailCount[i];
+    slots[2 * i] = numLines;
+    slots[2 * i + 1] = numPoints;
     if (system.Particles[i].Status != vtkOFBParticleSystem::Waiting && count >= 2)
     {
       ++numLines;
@@ -260,24 +278,27 @@ void vtkOFBParticleAdvector::FillTrails(vtkPolyData* output)
   vtkIdType* offsets = ValuesOf(arrays.LineOffsets.Get(), numLines + 1);
   vtkIdType* connectivity = ValuesOf(arrays.LineConnectivity.Get(), numPoints);
   vtkIdType* ids = ValuesOf(arrays.TrailIds.Get(), numLines);
-  vtkIdType line = 0;
-  vtkIdType point = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    if (system.Particles[i].Status == vtkOFBParticleSystem::Waiting || system.TrailCount[i] < 2)
+  vtkSMPTools::For(0,
+    n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      continue;
-    }
-    const int count = system.GetTrail(i, reinterpret_cast<glm::dvec3*>(x + 3 * point));
-    offsets[line] = point;
-    ids[line] = i;
-    for (int k = 0; k < count; ++k)
-    {
-      connectivity[point + k] = point + k;
-    }
-    point += count;
-    ++line;
-  }
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (system.Particles[i].Status == vtkOFBParticleSystem::Waiting || system.TrailCount[i] < 2)
+        {
+          continue;
+        }
+        const vtkIdType line = slots[2 * i];
+        const vtkIdType point = slots[2 * i + 1];
+        const int count = system.GetTrail(i, reinterpret_cast<glm::dvec3*>(x + 3 * point));
+        offsets[line] = point;
+        ids[line] = i;
+        for (int k = 0; k < count; ++k)
+        {
+          connectivity[point + k] = point + k;
+        }
+      }
+    });
   offsets[numLines] = numPoints;
   arrays.Lines->SetData(arrays.LineOffsets, arrays.LineConnectivity);
   output->SetPoints(arrays.TrailPoints);

@@ -4,35 +4,13 @@
 #include <cmath>
 
 //------------------------------------------------------------------------------
-bool vtkOFBParticleStepper::Slope(const vtkOFBSurfacePoint& p, glm::dvec2& slope) const
-{
-  const glm::dvec2 v = this->Walker->Field2(p);
-  const double speed = glm::length(v);
-  if (!(speed > this->StopSpeed))
-  {
-    slope = glm::dvec2(0.0);
-    return false;
-  }
-  slope = this->Sign * (this->Normalize ? v / speed : v * this->Scale);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-glm::dvec2 vtkOFBParticleStepper::StageSlope(const vtkOFBSurfacePoint& p, const glm::dvec2& d) const
-{
-  vtkOFBSurfacePoint q = p;
-  glm::dmat2 frame(1.0);
-  this->Walker->Walk(q, d, &frame);
-  glm::dvec2 slope;
-  this->Slope(q, slope);
-  // Back into p's frame: the turns are orthogonal, their inverse is the transpose.
-  return glm::transpose(frame) * slope;
-}
-
-//------------------------------------------------------------------------------
 vtkOFBParticleStepper::Result vtkOFBParticleStepper::Final(vtkOFBSurfacePoint& p,
   const glm::dvec2& d) const
 {
+  if (this->Walker->WalkInside(p, d))
+  {
+    return Moved;
+  }
   const auto walk = this->Walker->Walk(p, d, nullptr);
   return walk == vtkOFBTriangleWalker::Boundary ? StoppedAtBoundary : Moved;
 }
@@ -65,6 +43,66 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(vtkOFBSurfacePoint&
       const glm::dvec2 k3 = this->StageSlope(p, 0.5 * h * k2);
       const glm::dvec2 k4 = this->StageSlope(p, h * k3);
       return this->Final(p, (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleStepper::Advance(int n,
+  vtkOFBSurfacePoint* const* points,
+  double* const* subSteps,
+  Result* results) const
+{
+  if (this->Integrator == RK45 || n > MaximumBatch)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      results[j] = this->Advance(*points[j], *subSteps[j]);
+    }
+    return;
+  }
+  // The stages of Advance (Euler, RK2, RK4), each for all particles in turn.
+  const double h = this->Length;
+  glm::dvec2 k[MaximumBatch];
+  glm::dvec2 sum[MaximumBatch];
+  bool moving[MaximumBatch];
+  for (int j = 0; j < n; ++j)
+  {
+    moving[j] = this->Slope(*points[j], k[j]);
+    results[j] = moving[j] ? Moved : StoppedAtZero;
+    sum[j] = k[j];
+  }
+  if (this->Integrator == RK2)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      sum[j] = moving[j] ? this->StageSlope(*points[j], 0.5 * h * k[j]) : sum[j];
+    }
+  }
+  else if (this->Integrator == RK4)
+  {
+    static const double along[3] = { 0.5, 0.5, 1.0 };
+    static const double weight[3] = { 2.0, 2.0, 1.0 };
+    for (int stage = 0; stage < 3; ++stage)
+    {
+      for (int j = 0; j < n; ++j)
+      {
+        if (moving[j])
+        {
+          k[j] = this->StageSlope(*points[j], along[stage] * h * k[j]);
+          sum[j] += weight[stage] * k[j];
+        }
+      }
+    }
+  }
+  const double scale = this->Integrator == RK4 ? h / 6.0 : h;
+  for (int j = 0; j < n; ++j)
+  {
+    if (moving[j])
+    {
+      results[j] = this->Final(*points[j], scale * sum[j]);
+      // The caller reads the corners of where it ended next.
+      this->Walker->PrefetchCorners(points[j]->Triangle);
     }
   }
 }

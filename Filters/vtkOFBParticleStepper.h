@@ -52,11 +52,26 @@ public:
   /// RK45: largest error of a sub-step (world units).
   double Tolerance = 1e-3;
 
+  /// The most particles `Advance` takes in one call.
+  static constexpr int MaximumBatch = 16;
+
   /**
    * Advance `p` by one step. `subStep` is the RK45 sub-step length carried from
    * the particle's previous step (0 at first; updated).
    */
   Result Advance(vtkOFBSurfacePoint& p, double& subStep) const;
+
+  /**
+   * Advance `n` (at most MaximumBatch) particles by one step each, with the same
+   * result for each as `Advance` alone. The stages go across the particles (the
+   * first stage of all, then the second...): the work of one particle does not
+   * wait for the previous one's, so the processor overlaps their chains of
+   * dependent arithmetic and memory loads.
+   */
+  void Advance(int n,
+    vtkOFBSurfacePoint* const* points,
+    double* const* subSteps,
+    Result* results) const;
 
   /// The slope at `p` in its triangle's 2-D frame; false where the field is zero.
   bool Slope(const vtkOFBSurfacePoint& p, glm::dvec2& slope) const;
@@ -72,5 +87,37 @@ private:
     double h,
     double& error) const;
 };
+
+// Inline: called for every stage of every particle.
+inline bool vtkOFBParticleStepper::Slope(const vtkOFBSurfacePoint& p, glm::dvec2& slope) const
+{
+  const glm::dvec2 v = this->Walker->Field2(p);
+  const double speed = glm::length(v);
+  if (!(speed > this->StopSpeed))
+  {
+    slope = glm::dvec2(0.0);
+    return false;
+  }
+  slope = this->Sign * (this->Normalize ? v / speed : v * this->Scale);
+  return true;
+}
+
+inline glm::dvec2 vtkOFBParticleStepper::StageSlope(const vtkOFBSurfacePoint& p,
+  const glm::dvec2& d) const
+{
+  vtkOFBSurfacePoint q = p;
+  glm::dvec2 slope;
+  if (this->Walker->WalkInside(q, d))
+  {
+    // No edge crossed: the slope is in p's frame already.
+    this->Slope(q, slope);
+    return slope;
+  }
+  glm::dmat2 frame(1.0);
+  this->Walker->Walk(q, d, &frame);
+  this->Slope(q, slope);
+  // Back into p's frame: the turns are orthogonal, their inverse is the transpose.
+  return glm::transpose(frame) * slope;
+}
 
 #endif

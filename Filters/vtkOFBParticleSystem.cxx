@@ -9,10 +9,6 @@
 namespace
 {
 // SplitMix64's finalizer: a well-mixed 64-bit hash.
-// How many particles ahead a step fetches the triangle data of the particle it
-// will move then.
-constexpr vtkIdType PrefetchDistance = 8;
-
 inline std::uint64_t Mix(std::uint64_t x)
 {
   x += 0x9E3779B97F4A7C15ull;
@@ -185,59 +181,87 @@ void vtkOFBParticleSystem::Advance(const Coloring& coloring, vtkIdType numSteps)
 {
   const vtkIdType first = this->CurrentStep;
   this->CurrentStep += numSteps;
+  constexpr vtkIdType batch = vtkOFBParticleStepper::MaximumBatch;
   vtkSMPTools::For(0,
     static_cast<vtkIdType>(this->Particles.size()),
     [&](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType i = begin; i < end; ++i)
+      for (vtkIdType i = begin; i < end; i += batch)
       {
-        if (i + PrefetchDistance < end)
+        const vtkIdType last = std::min(end, i + batch);
+        for (vtkIdType k = last; k < std::min(end, last + batch); ++k)
         {
-          const Particle& ahead = this->Particles[i + PrefetchDistance];
-          if (ahead.Point.Triangle >= 0)
+          if (this->Particles[k].Point.Triangle >= 0)
           {
-            this->Walker->Prefetch(ahead.Point.Triangle);
+            this->Walker->Prefetch(this->Particles[k].Point.Triangle);
           }
         }
-        // All the steps of one particle in a row: its triangles stay in the cache.
+        // All the steps of a batch of particles in a row: their triangles stay in
+        // the cache.
         for (vtkIdType step = first; step < first + numSteps; ++step)
         {
-          this->AdvanceParticle(i, step, coloring);
+          this->AdvanceBatch(i, last, step, coloring);
         }
       }
     });
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBParticleSystem::AdvanceParticle(vtkIdType i, vtkIdType step, const Coloring& coloring)
+void vtkOFBParticleSystem::AdvanceBatch(vtkIdType begin,
+  vtkIdType end,
+  vtkIdType step,
+  const Coloring& coloring)
 {
-  Particle& p = this->Particles[i];
-  p.Painted = false;
-  if (p.Status == Waiting)
-  {
-    // Released at its seed when the step count reaches its release step.
-    if (step + 1 >= static_cast<vtkIdType>(p.Chain) * this->Setup.ChainSpacing)
-    {
-      this->Release(i, p);
-      p.Painted = true;
-      this->ColorParticle(coloring, step + 1, p);
-    }
-    return;
-  }
+  vtkOFBSurfacePoint* points[vtkOFBParticleStepper::MaximumBatch];
+  double* subSteps[vtkOFBParticleStepper::MaximumBatch];
+  vtkIdType moving[vtkOFBParticleStepper::MaximumBatch];
+  vtkOFBParticleStepper::Result results[vtkOFBParticleStepper::MaximumBatch];
+  int n = 0;
   const int lifetime = this->Setup.Lifetime;
-  if (lifetime > 0 && (p.Age >= lifetime || p.Status == Stopped))
+  for (vtkIdType i = begin; i < end; ++i)
   {
-    this->Reseed(i, p);
+    // Where the stages of the step may go: fetched for all the batch at once.
+    if (this->Particles[i].Status == Moving)
+    {
+      this->Walker->PrefetchNeighbors(this->Particles[i].Point.Triangle);
+    }
   }
-  ++p.Age;
-  if (p.Status == Moving)
+  for (vtkIdType i = begin; i < end; ++i)
   {
-    p.Previous = p.Position;
-    this->Walker->PrefetchNeighbors(p.Point.Triangle);
-    const auto result = this->Stepper.Advance(p.Point, p.SubStep);
+    Particle& p = this->Particles[i];
+    p.Painted = false;
+    if (p.Status == Waiting)
+    {
+      // Released at its seed when the step count reaches its release step.
+      if (step + 1 >= static_cast<vtkIdType>(p.Chain) * this->Setup.ChainSpacing)
+      {
+        this->Release(i, p);
+        p.Painted = true;
+      }
+      continue;
+    }
+    if (lifetime > 0 && (p.Age >= lifetime || p.Status == Stopped))
+    {
+      this->Reseed(i, p);
+    }
+    ++p.Age;
+    if (p.Status == Moving)
+    {
+      p.Previous = p.Position;
+      points[n] = &p.Point;
+      subSteps[n] = &p.SubStep;
+      moving[n] = i;
+      ++n;
+    }
+  }
+  this->Stepper.Advance(n, points, subSteps, results);
+  for (int j = 0; j < n; ++j)
+  {
+    const vtkIdType i = moving[j];
+    Particle& p = this->Particles[i];
     p.Position = this->Walker->Position(p.Point);
-    p.Painted = result != vtkOFBParticleStepper::StoppedAtZero;
-    if (result != vtkOFBParticleStepper::Moved)
+    p.Painted = results[j] != vtkOFBParticleStepper::StoppedAtZero;
+    if (results[j] != vtkOFBParticleStepper::Moved)
     {
       p.Status = Stopped;
     }
@@ -246,7 +270,14 @@ void vtkOFBParticleSystem::AdvanceParticle(vtkIdType i, vtkIdType step, const Co
       this->PushTrail(i, p.Position);
     }
   }
-  this->ColorParticle(coloring, step + 1, p);
+  for (vtkIdType i = begin; i < end; ++i)
+  {
+    Particle& p = this->Particles[i];
+    if (p.Status != Waiting)
+    {
+      this->ColorParticle(coloring, step + 1, p);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

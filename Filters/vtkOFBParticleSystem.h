@@ -88,9 +88,9 @@ public:
   void Start();
 
   /**
-   * `numSteps` steps of every particle (each particle makes all of them in a row);
-   * colours from `coloring` at each new step. Footprints and `Painted` are those of
-   * the last step.
+   * `numSteps` steps of every particle (each batch of the stepper's MaximumBatch
+   * particles makes all of them in a row); colours from `coloring` at each new
+   * step. Footprints and `Painted` are those of the last step.
    */
   void Advance(const Coloring& coloring, vtkIdType numSteps = 1);
 
@@ -113,7 +113,8 @@ private:
   void Reseed(vtkIdType i, Particle& p);
   void Release(vtkIdType i, Particle& p);
   void PushTrail(vtkIdType i, const glm::dvec3& x);
-  void AdvanceParticle(vtkIdType i, vtkIdType step, const Coloring& coloring);
+  /// One step (`step` to `step + 1`) of particles begin..end-1 (at most a batch).
+  void AdvanceBatch(vtkIdType begin, vtkIdType end, vtkIdType step, const Coloring& coloring);
   /// The colour of `p` at `step` (steps since the seeds).
   void ColorParticle(const Coloring& coloring, vtkIdType step, Particle& p) const;
 };

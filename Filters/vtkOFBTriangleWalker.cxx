@@ -11,6 +11,8 @@
 #include <array>
 #include <cmath>
 
+static_assert(sizeof(vtkOFBWalkerTriangle) == 64, "a walker record is one cache line");
+
 namespace
 {
 // A walk that crosses more edges than this for one displacement circles a vertex
@@ -33,6 +35,7 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
   this->Points.resize(numPoints);
   this->Vectors.assign(numPoints, glm::dvec3(0.0));
   this->Records.clear();
+  this->Turns.clear();
   this->MaximumSpeed = 0.0;
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
@@ -97,9 +100,11 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
     polys->InsertNextCell(3, &this->Corners[3 * t]);
   }
   this->Triangles->SetPolys(polys);
-  // Only the projected corner vectors are kept.
+  // Only the projected corner vectors and the records' gradients are kept.
   this->Vectors.clear();
   this->Vectors.shrink_to_fit();
+  this->Gradients.clear();
+  this->Gradients.shrink_to_fit();
   return true;
 }
 
@@ -108,6 +113,8 @@ void vtkOFBTriangleWalker::BuildGeometry()
 {
   const vtkIdType numTriangles = this->GetNumberOfTriangles();
   this->Records.resize(numTriangles);
+  this->Turns.resize(numTriangles);
+  this->Gradients.resize(3 * numTriangles);
   this->Normals.resize(numTriangles);
   this->CornerPoints.resize(3 * numTriangles);
   this->Axes.resize(2 * numTriangles);
@@ -132,14 +139,16 @@ void vtkOFBTriangleWalker::BuildGeometry()
       // Gradient of barycentric i: towards corner i, of length 1 / height.
       const glm::dvec3 edge = p[(i + 2) % 3] - p[(i + 1) % 3];
       const glm::dvec3 g = glm::cross(unit, edge) / area2;
-      r.Gradient[i] = glm::dvec2(glm::dot(g, ex), glm::dot(g, ey));
+      this->Gradients[3 * t + i] = glm::dvec2(glm::dot(g, ex), glm::dot(g, ey));
+      if (i < 2)
+      {
+        r.Gradient[i] = glm::vec2(this->Gradients[3 * t + i]);
+      }
       const glm::dvec3& v = this->Vectors[c[i]];
-      r.Vector[i] = glm::dvec2(glm::dot(v, ex), glm::dot(v, ey));
+      r.Vector[i] = glm::vec2(glm::dot(v, ex), glm::dot(v, ey));
       r.Next[i] = -1;
-      r.Opposite[i] = -1;
-      r.NextA[i] = -1;
-      r.Turn[i] = glm::dvec2(1.0, 0.0);
-      r.Reflect[i] = false;
+      r.Link[i] = 0;
+      this->Turns[t].Turn[i] = glm::vec2(1.f, 0.f);
     }
     area += 0.5 * area2;
     this->Area[t] = area;
@@ -195,8 +204,6 @@ void vtkOFBTriangleWalker::Link(vtkIdType t, int edge, vtkIdType next, int oppos
   const int na =
     nc[(opposite + 1) % 3] == this->Corners[3 * t + a] ? (opposite + 1) % 3 : (opposite + 2) % 3;
   r.Next[edge] = static_cast<int>(next);
-  r.Opposite[edge] = static_cast<signed char>(opposite);
-  r.NextA[edge] = static_cast<signed char>(na);
 
   // The turn about the shared edge (the unfolding of the two triangles into one
   // plane) in the two frames: the edge direction stays, the direction out of t
@@ -207,11 +214,12 @@ void vtkOFBTriangleWalker::Link(vtkIdType t, int edge, vtkIdType next, int oppos
   const glm::dvec3* nextAxes = &this->Axes[2 * next];
   const glm::dvec2 e2(glm::dot(e, axes[0]), glm::dot(e, axes[1]));
   const glm::dvec2 ne2(glm::dot(e, nextAxes[0]), glm::dot(e, nextAxes[1]));
-  const glm::dvec2 out = -glm::normalize(r.Gradient[edge]);
-  const glm::dvec2 in = glm::normalize(this->Records[next].Gradient[opposite]);
+  const glm::dvec2 out = -glm::normalize(this->Gradients[3 * t + edge]);
+  const glm::dvec2 in = glm::normalize(this->Gradients[3 * next + opposite]);
   const glm::dmat2 turn = glm::outerProduct(ne2, e2) + glm::outerProduct(in, out);
-  r.Turn[edge] = glm::normalize(turn[0]);
-  r.Reflect[edge] = glm::determinant(turn) < 0.0;
+  this->Turns[t].Turn[edge] = glm::vec2(glm::normalize(turn[0]));
+  const bool reflect = glm::determinant(turn) < 0.0;
+  r.Link[edge] = static_cast<unsigned char>(opposite | (na << 2) | (reflect ? 16 : 0));
 }
 
 //------------------------------------------------------------------------------
@@ -233,8 +241,7 @@ vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& 
   for (int crossing = 0; crossing < MaximumCrossings; ++crossing)
   {
     const vtkOFBWalkerTriangle& r = this->Records[p.Triangle];
-    const glm::dvec3 db(
-      glm::dot(r.Gradient[0], d), glm::dot(r.Gradient[1], d), glm::dot(r.Gradient[2], d));
+    const glm::dvec3 db = r.Rates(d);
 
     // The first edge the path meets, at the fraction `exit` of d.
     double exit = 1.0;
@@ -253,24 +260,30 @@ vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& 
       p.Bary = glm::max(p.Bary + db, glm::dvec3(0.0));
       return Inside;
     }
-    p.Bary += exit * db;
+    // On the edge: the barycentric of its opposite corner is 0, the other two sum
+    // to 1 (the second is 1 - the first rather than a division of both by their sum).
+    const int a = edge == 2 ? 0 : edge + 1;
+    const double ba = std::min(1.0, std::max(0.0, p.Bary[a] + exit * db[a]));
     p.Bary[edge] = 0.0;
-    Normalize(p.Bary);
+    p.Bary[a] = ba;
+    p.Bary[3 - edge - a] = 1.0 - ba;
 
     const int next = r.Next[edge];
     if (next < 0)
     {
       return Boundary;
     }
-    const int na = r.NextA[edge];
+    const int na = r.NextA(edge);
     glm::dvec3 bary(0.0);
     bary[na] = p.Bary[(edge + 1) % 3];
-    bary[3 - r.Opposite[edge] - na] = p.Bary[(edge + 2) % 3];
-    d = (1.0 - exit) * r.Apply(edge, d);
+    bary[3 - r.Opposite(edge) - na] = p.Bary[(edge + 2) % 3];
+    const vtkOFBWalkerTurn& turn = this->Turns[p.Triangle];
+    const bool reflect = r.Reflect(edge);
+    d = (1.0 - exit) * turn.Apply(edge, reflect, d);
     if (frame)
     {
-      (*frame)[0] = r.Apply(edge, (*frame)[0]);
-      (*frame)[1] = r.Apply(edge, (*frame)[1]);
+      (*frame)[0] = turn.Apply(edge, reflect, (*frame)[0]);
+      (*frame)[1] = turn.Apply(edge, reflect, (*frame)[1]);
     }
     p.Triangle = next;
     p.Bary = bary;
@@ -285,9 +298,9 @@ vtkOFBSurfacePoint vtkOFBTriangleWalker::Locate(vtkIdType t, const double x[3]) 
   p.Triangle = t;
   const glm::dvec3 r3 = glm::dvec3(x[0], x[1], x[2]) - this->Points[this->Corners[3 * t]];
   const glm::dvec2 r(glm::dot(r3, this->Axes[2 * t]), glm::dot(r3, this->Axes[2 * t + 1]));
-  const glm::dvec2* g = this->Records[t].Gradient;
   // Barycentrics of the projection: b_i = b_i(corner 0) + g_i . r
-  p.Bary = glm::dvec3(1.0 + glm::dot(g[0], r), glm::dot(g[1], r), glm::dot(g[2], r));
+  const glm::dvec3 rates = this->Records[t].Rates(r);
+  p.Bary = glm::dvec3(1.0 + rates[0], rates[1], rates[2]);
   if (!std::isfinite(p.Bary[0] + p.Bary[1] + p.Bary[2]))
   {
     p.Bary = glm::dvec3(1.0 / 3.0);

@@ -15,9 +15,9 @@
  * slopes it samples elsewhere back into the plane where it started.
  *
  * Vectors of a walk are 2-D, in an orthonormal frame of each triangle's plane: a
- * flat record per triangle (vtkOFBWalkerTriangle) holds what a walk reads, and
- * each shared edge has its turn as a 2x2 matrix from one frame to the other, all
- * made once per input.
+ * flat record per triangle (vtkOFBWalkerTriangle, one cache line) holds what a
+ * walk reads, and each shared edge has its turn from one frame to the other
+ * (vtkOFBWalkerTurn), all made once per input.
  *
  * Edges with one triangle (the boundary of an open surface), edges shared by more
  * than two triangles and edges of triangles of zero area are boundaries: a walk
@@ -47,28 +47,49 @@ struct vtkOFBSurfacePoint
 
 /**
  * One triangle as a walk reads it, in the triangle's own 2-D frame (an orthonormal
- * basis of its plane): the gradients of the barycentrics, the corner vectors
- * projected into the plane, the neighbours across the edges and the turn from this
- * frame to each neighbour's (the unfolding about the shared edge: a rotation by
- * (cos, sin), or a reflection where the neighbour's normal points the other way).
- * Three cache lines, fetched together ahead of a particle's step.
+ * basis of its plane), in one cache line: the gradients of two barycentrics (the
+ * third is minus their sum), the corner vectors projected into the plane and the
+ * neighbours across the edges. Single precision: these are rates and directions
+ * (relative error 6e-8); positions stay double barycentrics of double corners, so
+ * a particle stays exactly on the surface. The turns across the edges are in a
+ * separate array (vtkOFBWalkerTurn), read only when a walk crosses an edge.
  */
 struct alignas(64) vtkOFBWalkerTriangle
 {
-  glm::dvec2 Gradient[3];  ///< gradient of barycentric i (1 / height, towards corner i)
-  glm::dvec2 Vector[3];    ///< the field at corner i, projected (world units)
-  glm::dvec2 Turn[3];      ///< (cos, sin) of the turn across the edge opposite corner i
-  int Next[3];             ///< the neighbour across the edge opposite corner i; -1 boundary
-  signed char Opposite[3]; ///< that edge's opposite corner in the neighbour
-  signed char NextA[3];    ///< where corner (i + 1) % 3 is in the neighbour
-  bool Reflect[3];         ///< the turn is a reflection
+  glm::vec2 Gradient[2]; ///< gradients of barycentrics 0 and 1 (1 / height, towards the corner)
+  glm::vec2 Vector[3];   ///< the field at corner i, projected (world units)
+  int Next[3];           ///< the neighbour across the edge opposite corner i; -1 boundary
+  /// Per edge: bits 0-1 that edge's opposite corner in the neighbour, bits 2-3 where
+  /// corner (i + 1) % 3 is in the neighbour, bit 4 the turn is a reflection.
+  unsigned char Link[3];
 
-  /// The turn across edge i applied to a vector of this frame.
-  glm::dvec2 Apply(int i, const glm::dvec2& v) const
+  int Opposite(int i) const { return this->Link[i] & 3; }
+  int NextA(int i) const { return (this->Link[i] >> 2) & 3; }
+  bool Reflect(int i) const { return (this->Link[i] & 16) != 0; }
+
+  /// The rates of change of the three barycentrics along `d`.
+  glm::dvec3 Rates(const glm::dvec2& d) const
   {
-    const glm::dvec2& cs = this->Turn[i];
-    const glm::dvec2 second =
-      this->Reflect[i] ? glm::dvec2(cs[1], -cs[0]) : glm::dvec2(-cs[1], cs[0]);
+    const double r0 = this->Gradient[0][0] * d[0] + this->Gradient[0][1] * d[1];
+    const double r1 = this->Gradient[1][0] * d[0] + this->Gradient[1][1] * d[1];
+    return glm::dvec3(r0, r1, -(r0 + r1));
+  }
+};
+
+/**
+ * The turns from a triangle's frame to each neighbour's across its edges (the
+ * unfolding about the shared edge: a rotation by (cos, sin), or a reflection where
+ * the neighbour's normal points the other way, see vtkOFBWalkerTriangle::Link).
+ */
+struct vtkOFBWalkerTurn
+{
+  glm::vec2 Turn[3];
+
+  /// The turn across edge i (a reflection when `reflect`) applied to a vector.
+  glm::dvec2 Apply(int i, bool reflect, const glm::dvec2& v) const
+  {
+    const glm::dvec2 cs(this->Turn[i]);
+    const glm::dvec2 second = reflect ? glm::dvec2(cs[1], -cs[0]) : glm::dvec2(-cs[1], cs[0]);
     return v[0] * cs + v[1] * second;
   }
 };
@@ -124,7 +145,8 @@ public:
   glm::dvec2 Field2(const vtkOFBSurfacePoint& p) const
   {
     const vtkOFBWalkerTriangle& t = this->Records[p.Triangle];
-    return p.Bary[0] * t.Vector[0] + p.Bary[1] * t.Vector[1] + p.Bary[2] * t.Vector[2];
+    return p.Bary[0] * glm::dvec2(t.Vector[0]) + p.Bary[1] * glm::dvec2(t.Vector[1]) +
+      p.Bary[2] * glm::dvec2(t.Vector[2]);
   }
 
   /// The field at a surface point, projected into its triangle's plane (world units).
@@ -147,10 +169,19 @@ public:
   void Prefetch(vtkIdType t) const
   {
 #if defined(__GNUC__) || defined(__clang__)
-    const char* r = reinterpret_cast<const char*>(&this->Records[t]);
-    __builtin_prefetch(r);
-    __builtin_prefetch(r + 64);
-    __builtin_prefetch(r + 128);
+    __builtin_prefetch(&this->Records[t]);
+    const char* c = reinterpret_cast<const char*>(&this->CornerPoints[3 * t]);
+    __builtin_prefetch(c);
+    __builtin_prefetch(c + 64);
+#else
+    (void)t;
+#endif
+  }
+
+  /// Fetch ahead the corner positions of `t` (for `Position`).
+  void PrefetchCorners(vtkIdType t) const
+  {
+#if defined(__GNUC__) || defined(__clang__)
     const char* c = reinterpret_cast<const char*>(&this->CornerPoints[3 * t]);
     __builtin_prefetch(c);
     __builtin_prefetch(c + 64);
@@ -168,11 +199,10 @@ public:
     {
       if (r.Next[i] >= 0)
       {
-        const char* n = reinterpret_cast<const char*>(&this->Records[r.Next[i]]);
-        __builtin_prefetch(n);
-        __builtin_prefetch(n + 64);
+        __builtin_prefetch(&this->Records[r.Next[i]]);
       }
     }
+    __builtin_prefetch(&this->Turns[t]);
 #else
     (void)t;
 #endif
@@ -180,6 +210,26 @@ public:
 
   /// Barycentric interpolation of a point array's component at a surface point.
   double Interpolate(vtkDataArray* array, int component, const vtkOFBSurfacePoint& p) const;
+
+  /**
+   * Move `p` by `d` when the path stays inside p's triangle (the common case of a
+   * short step) and return true, as `Walk` would; otherwise leave `p` as it is and
+   * return false. Inline, so that a step that crosses no edge makes no call.
+   */
+  bool WalkInside(vtkOFBSurfacePoint& p, const glm::dvec2& d) const
+  {
+    const glm::dvec3 db = this->Records[p.Triangle].Rates(d);
+    // The same test as Walk's for the first edge met before the end of d.
+    for (int i = 0; i < 3; ++i)
+    {
+      if (db[i] < 0.0 && p.Bary[i] < -db[i])
+      {
+        return false;
+      }
+    }
+    p.Bary = glm::max(p.Bary + db, glm::dvec3(0.0));
+    return true;
+  }
 
   /**
    * Move `p` by `d` (a vector of p's triangle's 2-D frame, world units). When
@@ -210,6 +260,8 @@ private:
   std::vector<glm::dvec3> Vectors;
   std::vector<vtkIdType> Corners;            // 3 point ids per triangle
   std::vector<vtkOFBWalkerTriangle> Records; // what a walk reads
+  std::vector<vtkOFBWalkerTurn> Turns;       // the turns across the edges
+  std::vector<glm::dvec2> Gradients;         // 3 per triangle, double, while building
   std::vector<glm::dvec3> CornerPoints;      // 3 per triangle: its corners' positions
   std::vector<glm::dvec3> Normals;           // unit normal per triangle
   std::vector<glm::dvec3> Axes;              // 2 per triangle: the 2-D frame in world space

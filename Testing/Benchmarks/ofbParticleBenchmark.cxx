@@ -7,7 +7,13 @@
 //     seeds, step length and number of steps for both, with 1 and 2 threads.
 //  3. Painting: one step of 10,000 particles each painting a footprint of radius 2.5
 //     cells into the horse's OFB at 2048, in ms, with 1 and 2 threads.
-// Not a test: run it by hand, `ofbParticleBenchmark [--steps N] [--seeds N] [--part 1|2|3]`.
+//     The step is split into advection, painting and output building as the
+//     advector times them; the scaling from 1 to 2 threads of both parts.
+// Rounds are interleaved with the peer and reported as medians with the load
+// average (the machine may be shared).
+// Not a test: run it by hand,
+// `ofbParticleBenchmark [--steps N] [--seeds N] [--part 1|2|3] [--rounds N] [--no-peer]`
+// (--no-peer: ours alone, for profiling).
 #include "vtkOFBReadMesh.h"
 
 #include "vtkCellArray.h"
@@ -30,6 +36,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -168,8 +175,35 @@ void Accuracy(int steps, int numSeeds)
             << "   speed ratio " << (oursSteps / oursTime) / (peerSteps / peerTime) << "x\n";
 }
 
+double Median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+}
+
+// The load average of the machine (other work running beside the benchmark).
+std::string Load()
+{
+  std::ifstream file("/proc/loadavg");
+  std::string one, five;
+  file >> one >> five;
+  return one.empty() ? std::string("unknown") : one + " (1 min), " + five + " (5 min)";
+}
+
+struct SpeedResult
+{
+  double Ours = 0.0; // median M steps/s
+  double Peer = 0.0;
+};
+
 // 2. RK4 steps on the horse, both tracers from the same seeds.
-void Speed(vtkPolyData* horse, int numSeeds, int steps, int threads)
+SpeedResult Speed(vtkPolyData* horse,
+  int numSeeds,
+  int steps,
+  int threads,
+  int rounds,
+  bool peerToo)
 {
   vtkSMPTools::Initialize(threads);
   vtkNew<vtkOFBParticleAdvector> advector;
@@ -192,33 +226,51 @@ void Speed(vtkPolyData* horse, int numSeeds, int steps, int threads)
   tracer->SetMaximumNumberOfSteps(steps);
   tracer->SetMaximumPropagation(1e30);
   tracer->SetTerminalSpeed(1e-12);
-  // The best of three rounds of each, taken in turns (the machine may be shared).
+  // Rounds of each, taken in turns (the machine may be shared): medians.
   vtkNew<vtkTimerLog> timer;
-  double oursTime = 1e30, peerTime = 1e30;
-  for (int round = 0; round < 3; ++round)
+  std::vector<double> ours, peer, ratio;
+  double peerSteps = 0.0;
+  for (int round = 0; round < rounds; ++round)
   {
     timer->StartTimer();
     advector->Step();
     timer->StopTimer();
-    oursTime = std::min(oursTime, timer->GetElapsedTime());
+    ours.push_back(static_cast<double>(numSeeds) * steps / timer->GetElapsedTime() / 1e6);
+    if (!peerToo)
+    {
+      continue;
+    }
     tracer->Modified();
     timer->StartTimer();
     tracer->Update();
     timer->StopTimer();
-    peerTime = std::min(peerTime, timer->GetElapsedTime());
+    vtkPolyData* lines = tracer->GetOutput();
+    peerSteps = static_cast<double>(lines->GetNumberOfPoints() - lines->GetNumberOfLines());
+    peer.push_back(peerSteps / timer->GetElapsedTime() / 1e6);
+    ratio.push_back(ours.back() / peer.back());
   }
-  const double ours = static_cast<double>(numSeeds) * steps / oursTime;
-  vtkPolyData* lines = tracer->GetOutput();
-  const double peerSteps =
-    static_cast<double>(lines->GetNumberOfPoints() - lines->GetNumberOfLines());
-  const double peer = peerSteps / peerTime;
-  std::cout << "   " << threads << " thread(s): vtkOFBParticleAdvector " << ours / 1e6
-            << " M steps/s, vtkStreamTracer " << peer / 1e6 << " M steps/s ("
-            << static_cast<vtkIdType>(peerSteps) << " steps), ratio " << ours / peer << "x\n";
+  SpeedResult result;
+  result.Ours = Median(ours);
+  result.Peer = Median(peer);
+  std::cout << "   " << threads << " thread(s): vtkOFBParticleAdvector " << result.Ours
+            << " M steps/s, vtkStreamTracer " << result.Peer << " M steps/s ("
+            << static_cast<vtkIdType>(peerSteps) << " steps), ratio " << Median(ratio)
+            << "x (median of " << rounds << " rounds; range "
+            << (ratio.empty() ? 0.0 : *std::min_element(ratio.begin(), ratio.end())) << "-"
+            << (ratio.empty() ? 0.0 : *std::max_element(ratio.begin(), ratio.end())) << ")\n";
+  return result;
 }
 
-// 3. One painting step of many particles.
-void Paint(vtkPolyData* horse, int threads)
+struct PaintResult
+{
+  double Step = 0.0; // median ms
+  double Advection = 0.0;
+  double Painting = 0.0;
+  double Outputs = 0.0;
+};
+
+// 3. One painting step of many particles, split as the advector times it.
+PaintResult Paint(vtkPolyData* horse, int threads, int rounds)
 {
   vtkSMPTools::Initialize(threads);
   vtkNew<vtkOFBSampler> sampler;
@@ -234,26 +286,29 @@ void Paint(vtkPolyData* horse, int threads)
   advector->SetFootprintRadius(2.5);
   advector->Step(); // warm-up: seeds, first footprints
   vtkNew<vtkTimerLog> timer;
-  double best = 1e30;
-  for (int round = 0; round < 5; ++round)
+  std::vector<double> step, advection, painting, outputs, rest;
+  for (int round = 0; round < rounds; ++round)
   {
     timer->StartTimer();
     advector->Step();
     timer->StopTimer();
-    best = std::min(best, timer->GetElapsedTime());
+    step.push_back(1e3 * timer->GetElapsedTime());
+    advection.push_back(1e3 * advector->GetLastAdvectionTime());
+    painting.push_back(1e3 * advector->GetLastPaintingTime());
+    outputs.push_back(1e3 * advector->GetLastOutputTime());
+    rest.push_back(step.back() - advection.back() - painting.back() - outputs.back());
   }
-  advector->PaintOff();
-  double moveOnly = 1e30;
-  for (int round = 0; round < 5; ++round)
-  {
-    timer->StartTimer();
-    advector->Step();
-    timer->StopTimer();
-    moveOnly = std::min(moveOnly, timer->GetElapsedTime());
-  }
+  PaintResult result;
+  result.Step = Median(step);
+  result.Advection = Median(advection);
+  result.Painting = Median(painting);
+  result.Outputs = Median(outputs);
   std::cout << "   " << threads << " thread(s): one step of 10,000 particles with footprints "
-            << 1e3 * best << " ms (moving alone " << 1e3 * moveOnly << " ms), "
+            << result.Step << " ms: advection " << result.Advection << ", painting "
+            << result.Painting << ", outputs " << result.Outputs << ", the rest (pipeline) "
+            << Median(rest) << " ms (medians of " << rounds << " steps), "
             << ofb->GetNumberOfSamples() << " samples\n";
+  return result;
 }
 }
 
@@ -262,6 +317,8 @@ int main(int argc, char* argv[])
   int steps = 2000;
   int seeds = 1000;
   int part = 0; // all
+  int rounds = 7;
+  bool peer = true;
   std::string mesh = std::string(VTKOFB_DATA_DIR) + "/horse.ply";
   for (int i = 1; i < argc; ++i)
   {
@@ -277,6 +334,14 @@ int main(int argc, char* argv[])
     {
       part = std::atoi(argv[++i]);
     }
+    else if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc)
+    {
+      rounds = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (!std::strcmp(argv[i], "--no-peer"))
+    {
+      peer = false;
+    }
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc)
     {
       mesh = argv[++i];
@@ -284,7 +349,7 @@ int main(int argc, char* argv[])
     else
     {
       std::cout << "ofbParticleBenchmark [--steps N (per revolution, 2000)] [--seeds N (1000)] "
-                   "[--mesh FILE (horse)] [--part 1|2|3 (all)]\n";
+                   "[--mesh FILE (horse)] [--part 1|2|3 (all)] [--rounds N (7)] [--no-peer]\n";
       return argv[i] == std::string("--help") ? 0 : 1;
     }
   }
@@ -305,19 +370,21 @@ int main(int argc, char* argv[])
   if (part == 0 || part == 2)
   {
     std::cout << "2. " << mesh << " (" << horse->GetNumberOfPolys() << " triangles), " << seeds
-              << " seeds, RK4, 200 steps of 1 cell (1/1024 of the box):\n";
-    for (int threads : { 1, 2 })
-    {
-      Speed(horse, seeds, 200, threads);
-    }
+              << " seeds, RK4, 200 steps of 1 cell (1/1024 of the box); load " << Load() << ":\n";
+    const SpeedResult one = Speed(horse, seeds, 200, 1, rounds, peer);
+    const SpeedResult two = Speed(horse, seeds, 200, 2, rounds, peer);
+    std::cout << "   scaling 1 -> 2 threads: vtkOFBParticleAdvector " << two.Ours / one.Ours
+              << "x, vtkStreamTracer " << (one.Peer > 0.0 ? two.Peer / one.Peer : 0.0) << "x\n";
   }
   if (part == 0 || part == 3)
   {
-    std::cout << "3. Painting on " << mesh << " at 2048, footprint radius 2.5 cells:\n";
-    for (int threads : { 1, 2 })
-    {
-      Paint(horse, threads);
-    }
+    std::cout << "3. Painting on " << mesh << " at 2048, footprint radius 2.5 cells; load "
+              << Load() << ":\n";
+    const PaintResult one = Paint(horse, 1, rounds);
+    const PaintResult two = Paint(horse, 2, rounds);
+    std::cout << "   scaling 1 -> 2 threads: step " << one.Step / two.Step << "x, advection "
+              << one.Advection / two.Advection << "x, painting " << one.Painting / two.Painting
+              << "x, outputs " << one.Outputs / two.Outputs << "x\n";
   }
   vtkSMPTools::Initialize(0);
   return 0;

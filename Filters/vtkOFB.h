@@ -231,6 +231,15 @@ public:
    */
   template <typename Functor>
   void ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const;
+
+  /**
+   * As above; `prefetch(vtkIdType first, vtkIdType last)` is called a row ahead with
+   * the range of sample ids that `f` will soon be offered, so that the caller can
+   * prefetch its own arrays indexed by sample id (the query prefetches its own).
+   */
+  template <typename Functor, typename Prefetch>
+  void ForEachSampleInSphere(
+    const double center[3], double radius, Functor&& f, Prefetch&& prefetch) const;
 #endif
 
   ///@{
@@ -377,11 +386,20 @@ private:
 template <typename Functor>
 void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const
 {
+  this->ForEachSampleInSphere(center, radius, f, [](vtkIdType, vtkIdType) {});
+}
+
+template <typename Functor, typename Prefetch>
+void vtkOFB::ForEachSampleInSphere(
+  const double center[3], double radius, Functor&& f, Prefetch&& prefetch) const
+{
   if (this->CellSize <= 0.0 || !(radius >= 0.0) || this->GetNumberOfSamples() == 0)
   {
     return;
   }
   const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  const vtkTypeUInt32* cellOf = this->CellIndex->GetPointer(0);
+  const float* depths = this->Depths->GetPointer(0);
   const bool indexed = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples();
   const double s = this->CellSize;
   const double r2 = radius * radius;
@@ -405,37 +423,74 @@ void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functo
     const vtkIdType u1 = static_cast<vtkIdType>(std::floor(std::min(hu, nu - 1.0)));
     const vtkIdType v0 = static_cast<vtkIdType>(std::ceil(std::max(lv, 0.0)));
     const vtkIdType v1 = static_cast<vtkIdType>(std::floor(std::min(hv, nv - 1.0)));
-    SphereRow row;
-    row.D = center[a] - this->Origin[a];
-    row.R2 = r2;
-    row.DLow = static_cast<float>(row.D - radius);
-    row.DHigh = row.D + radius;
-    row.UCentre = center[ua];
-    row.UAxis = ua;
+    SphereRow base;
+    base.D = center[a] - this->Origin[a];
+    base.R2 = r2;
+    base.DLow = static_cast<float>(base.D - radius);
+    base.DHigh = base.D + radius;
+    base.UCentre = center[ua];
+    base.UAxis = ua;
     const double cu = (center[ua] - this->Origin[ua]) / s - 0.5; // centre in cell units
-    for (vtkIdType iv = v0; iv <= v1; ++iv)
+    // Row iv: only the cells under the circle's chord, one cell wider on each side
+    // than exact arithmetic needs (the distance test decides), clamped before they
+    // become integers as above. False if the row misses the sphere.
+    auto chord = [&](vtkIdType iv, SphereRow& row)
     {
+      row = base;
       const double dv = this->Origin[va] + (iv + 0.5) * s - center[va];
       row.DV2 = dv * dv;
       if (row.DV2 > r2)
       {
-        continue;
+        return false;
       }
       row.RowBase = this->CellBase[a] + iv * nu;
-      if (iv < v1)
-      {
-        __builtin_prefetch(offsets + row.RowBase + nu + u0);
-      }
-      // Only the cells under the circle's chord on this row, one cell wider on each
-      // side than exact arithmetic needs: the distance test decides.
       const double half = std::sqrt(r2 - row.DV2) / s;
-      // (Clamped before they become integers, as above.)
       row.U0 = static_cast<vtkIdType>(std::max(static_cast<double>(u0), std::floor(cu - half)));
       row.U1 = static_cast<vtkIdType>(std::min(static_cast<double>(u1), std::ceil(cu + half)));
-      if (row.U0 > row.U1)
+      return row.U0 <= row.U1;
+    };
+    // Rows are computed two ahead (their offsets prefetched) and their samples are
+    // prefetched one ahead: a dab's rows lie far apart in memory.
+    SphereRow ring[3];
+    bool valid[3] = { false, false, false };
+    for (vtkIdType iv = v0; iv <= std::min(v1, v0 + 1); ++iv)
+    {
+      valid[iv % 3] = chord(iv, ring[iv % 3]);
+    }
+    for (vtkIdType iv = v0; iv <= v1; ++iv)
+    {
+      if (iv + 2 <= v1)
+      {
+        SphereRow& ahead = ring[(iv + 2) % 3];
+        valid[(iv + 2) % 3] = chord(iv + 2, ahead);
+        if (valid[(iv + 2) % 3])
+        {
+          __builtin_prefetch(offsets + ahead.RowBase + ahead.U0);
+          __builtin_prefetch(offsets + ahead.RowBase + ahead.U1 + 1);
+        }
+      }
+      if (iv + 1 <= v1 && valid[(iv + 1) % 3])
+      {
+        const SphereRow& next = ring[(iv + 1) % 3];
+        const vtkIdType first = offsets[next.RowBase + next.U0];
+        const vtkIdType last = std::min<vtkIdType>(offsets[next.RowBase + next.U1 + 1], first + 512);
+        for (vtkIdType i = first; i < last; i += 16)
+        {
+          __builtin_prefetch(depths + i);
+          __builtin_prefetch(cellOf + i);
+        }
+        if (first < last)
+        {
+          __builtin_prefetch(depths + last - 1);
+          __builtin_prefetch(cellOf + last - 1);
+          prefetch(first, last);
+        }
+      }
+      if (!valid[iv % 3])
       {
         continue;
       }
+      const SphereRow& row = ring[iv % 3];
       // A row's samples are consecutive: where its cells hold few samples each, one
       // linear pass over them all beats a search of each cell's depth range.
       const vtkIdType cells = row.U1 - row.U0 + 1;

@@ -850,6 +850,19 @@ void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
       flag |= static_cast<unsigned char>(ChangedInCall | ColorRecorded);
       this->MarkBlockChanged(i, work);
       std::memcpy(c, result, 4);
+    },
+    [colors, flags](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; i += 16)
+      {
+        __builtin_prefetch(colors + 4 * i, 1);
+      }
+      __builtin_prefetch(colors + 4 * (last - 1), 1);
+      for (vtkIdType i = first; i < last; i += 64)
+      {
+        __builtin_prefetch(flags + i, 1);
+      }
+      __builtin_prefetch(flags + last - 1, 1);
     });
 }
 

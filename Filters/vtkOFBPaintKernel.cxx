@@ -29,7 +29,8 @@ inline unsigned char ToByte(float v)
 }
 
 // The falloff at normalized distance x: Kind is the falloff when known when compiling
-// (the default Smooth, inlined), -1 for any (vtkOFBPaintKernel::Falloff).
+// (the brush's default Smooth and the particles' default Constant, inlined), -1 for
+// any (vtkOFBPaintKernel::Falloff).
 template <int Kind>
 inline double FalloffOf(const vtkOFBPaintSettings& s, double x)
 {
@@ -41,6 +42,10 @@ inline double FalloffOf(const vtkOFBPaintSettings& s, double x)
     }
     const double t = 1.0 - std::max(x, 0.0);
     return t * t * (3.0 - 2.0 * t);
+  }
+  else if constexpr (Kind == vtkOFBBrush::Constant)
+  {
+    return x <= 1.0 ? 1.0 : 0.0;
   }
   else
   {
@@ -777,26 +782,36 @@ void vtkOFBPaintKernel::PaintDab(const vtkOFBDab& dab,
       src[k] += amount * (carried[k] - src[k]);
     }
   }
-  // The default falloff and blend mode compiled in, the others chosen per sample.
-  const bool smooth = settings.Falloff == vtkOFBBrush::Smooth;
+  // The default falloffs and blend mode compiled in, the others chosen per sample.
   if (settings.BlendMode == vtkOFBBrush::Mix)
   {
-    if (smooth)
-    {
-      this->PaintColors<vtkOFBBrush::Mix, vtkOFBBrush::Smooth>(dab, settings, src, cone, work);
-    }
-    else
-    {
-      this->PaintColors<vtkOFBBrush::Mix, -1>(dab, settings, src, cone, work);
-    }
-  }
-  else if (smooth)
-  {
-    this->PaintColors<-1, vtkOFBBrush::Smooth>(dab, settings, src, cone, work);
+    this->PaintColorsWith<vtkOFBBrush::Mix>(dab, settings, src, cone, work);
   }
   else
   {
-    this->PaintColors<-1, -1>(dab, settings, src, cone, work);
+    this->PaintColorsWith<-1>(dab, settings, src, cone, work);
+  }
+}
+
+//------------------------------------------------------------------------------
+template <int Mode>
+void vtkOFBPaintKernel::PaintColorsWith(const vtkOFBDab& dab,
+  const vtkOFBPaintSettings& settings,
+  const float src[4],
+  const float* centreNormal,
+  DabWork& work)
+{
+  switch (settings.Falloff)
+  {
+    case vtkOFBBrush::Smooth:
+      this->PaintColors<Mode, vtkOFBBrush::Smooth>(dab, settings, src, centreNormal, work);
+      break;
+    case vtkOFBBrush::Constant:
+      this->PaintColors<Mode, vtkOFBBrush::Constant>(dab, settings, src, centreNormal, work);
+      break;
+    default:
+      this->PaintColors<Mode, -1>(dab, settings, src, centreNormal, work);
+      break;
   }
 }
 

@@ -473,7 +473,8 @@ void vtkOFB::ForEachSampleInSphere(
       {
         const SphereRow& next = ring[(iv + 1) % 3];
         const vtkIdType first = offsets[next.RowBase + next.U0];
-        const vtkIdType last = std::min<vtkIdType>(offsets[next.RowBase + next.U1 + 1], first + 512);
+        const vtkIdType last =
+          std::min<vtkIdType>(offsets[next.RowBase + next.U1 + 1], first + 512);
         for (vtkIdType i = first; i < last; i += 16)
         {
           __builtin_prefetch(depths + i);

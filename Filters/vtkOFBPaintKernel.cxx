@@ -1,4 +1,5 @@
 #include "vtkOFBPaintKernel.h"
+#include "vtkOFBPaintBlend.h"
 
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
@@ -14,6 +15,10 @@
 #include <cstring>
 #include <thread>
 
+using vtkofbpaint::Blend;
+using vtkofbpaint::Facing;
+using vtkofbpaint::FalloffOf;
+
 namespace
 {
 // Progress is reported every this many visited samples (serial dabs only).
@@ -21,118 +26,6 @@ constexpr vtkIdType ProgressMask = (vtkIdType(1) << 20) - 1;
 
 // Waves smaller than this run on the calling thread.
 constexpr size_t MinParallelWave = 8;
-
-inline unsigned char ToByte(float v)
-{
-  v = std::min(1.0f, std::max(0.0f, v));
-  return static_cast<unsigned char>(v * 255.0f + 0.5f);
-}
-
-// The falloff at normalized distance x: Kind is the falloff when known when compiling
-// (the brush's default Smooth and the particles' default Constant, inlined), -1 for
-// any (vtkOFBPaintKernel::Falloff).
-template <int Kind>
-inline double FalloffOf(const vtkOFBPaintSettings& s, double x)
-{
-  if constexpr (Kind == vtkOFBBrush::Smooth)
-  {
-    if (!(x <= 1.0))
-    {
-      return 0.0;
-    }
-    const double t = 1.0 - std::max(x, 0.0);
-    return t * t * (3.0 - 2.0 * t);
-  }
-  else if constexpr (Kind == vtkOFBBrush::Constant)
-  {
-    return x <= 1.0 ? 1.0 : 0.0;
-  }
-  else
-  {
-    return vtkOFBPaintKernel::Falloff(s, x);
-  }
-}
-
-// vtkOFBPaintKernel::BlendColor; Mode is the blend mode when known when compiling
-// (the default Mix), -1 for `mode`.
-template <int Mode>
-inline void Blend(const unsigned char dst[4],
-  const float src[4],
-  float g,
-  int mode,
-  const unsigned char initial[4],
-  unsigned char out[4])
-{
-  const int m = Mode >= 0 ? Mode : mode;
-  float d[4];
-  for (int k = 0; k < 4; ++k)
-  {
-    d[k] = dst[k] * (1.0f / 255.0f);
-  }
-  const float a = g * src[3];
-  float r[4] = { d[0], d[1], d[2], d[3] };
-  switch (m)
-  {
-    case vtkOFBBrush::Mix: // source over destination
-    {
-      const float ao = a + d[3] * (1.0f - a);
-      if (ao > 0.0f)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          r[k] = (src[k] * a + d[k] * d[3] * (1.0f - a)) / ao;
-        }
-      }
-      r[3] = ao;
-      break;
-    }
-    case vtkOFBBrush::Erase: // back to the initial colour
-      for (int k = 0; k < 4; ++k)
-      {
-        r[k] = d[k] + g * (initial[k] * (1.0f / 255.0f) - d[k]);
-      }
-      break;
-    case vtkOFBBrush::EraseAlpha:
-      r[3] = d[3] * (1.0f - g);
-      break;
-    default: // Add, Subtract, Multiply, Lighten, Darken
-      for (int k = 0; k < 3; ++k)
-      {
-        float f;
-        switch (m)
-        {
-          case vtkOFBBrush::Add:
-            f = std::min(1.0f, d[k] + src[k]);
-            break;
-          case vtkOFBBrush::Subtract:
-            f = std::max(0.0f, d[k] - src[k]);
-            break;
-          case vtkOFBBrush::Multiply:
-            f = d[k] * src[k];
-            break;
-          case vtkOFBBrush::Lighten:
-            f = std::max(d[k], src[k]);
-            break;
-          default:
-            f = std::min(d[k], src[k]);
-            break;
-        }
-        r[k] = d[k] + a * (f - d[k]);
-      }
-      r[3] = d[3] + (1.0f - d[3]) * a;
-      break;
-  }
-  for (int k = 0; k < 4; ++k)
-  {
-    out[k] = ToByte(r[k]);
-  }
-}
-
-// Whether normal n lies within the normal-aware cone around the unit normal nc.
-inline bool Facing(const float* n, const float* nc, float cosMax)
-{
-  return !(n[0] * nc[0] + n[1] * nc[1] + n[2] * nc[2] < cosMax);
-}
 
 // Morton code of a point in units of the largest dab reach (21 bits per axis).
 vtkTypeUInt64 MortonCode(const glm::dvec3& q)
@@ -483,8 +376,8 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtk
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPaintKernel::ComputeWaves(
-  const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings)
+void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
+  const vtkOFBPaintSettings& settings)
 {
   // Each dab's bounding sphere covers what it writes and, for a smear, what it reads.
   Scratch& s = *this->Work;
@@ -794,7 +687,7 @@ void vtkOFBPaintKernel::PaintDab(const vtkOFBDab& dab,
 }
 
 //------------------------------------------------------------------------------
-template <int Mode>
+template<int Mode>
 void vtkOFBPaintKernel::PaintColorsWith(const vtkOFBDab& dab,
   const vtkOFBPaintSettings& settings,
   const float src[4],
@@ -816,7 +709,7 @@ void vtkOFBPaintKernel::PaintColorsWith(const vtkOFBDab& dab,
 }
 
 //------------------------------------------------------------------------------
-template <int Mode, int FalloffKind>
+template<int Mode, int FalloffKind>
 void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
   const vtkOFBPaintSettings& settings,
   const float src[4],
@@ -831,7 +724,8 @@ void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
   const double strength = dab.Strength;
   const int mode = Mode >= 0 ? Mode : settings.BlendMode;
   std::vector<vtkOFBColorRecord>& records = work.Records->Colors;
-  this->OFB->ForEachSampleInSphere(dab.Center,
+  this->OFB->ForEachSampleInSphere(
+    dab.Center,
     dab.Radius,
     [&](vtkIdType i, double d2)
     {
@@ -843,13 +737,15 @@ void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
       {
         return;
       }
-      const float g = static_cast<float>(strength * FalloffOf<FalloffKind>(settings, std::sqrt(d2) * invR));
+      const float g =
+        static_cast<float>(strength * FalloffOf<FalloffKind>(settings, std::sqrt(d2) * invR));
       if (g <= 0.0f)
       {
         return;
       }
       unsigned char* c = colors + 4 * i;
-      const unsigned char* initial = mode == vtkOFBBrush::Erase ? this->InitialColor(i, work) : nullptr;
+      const unsigned char* initial =
+        mode == vtkOFBBrush::Erase ? this->InitialColor(i, work) : nullptr;
       unsigned char result[4];
       Blend<Mode>(c, src, g, mode, initial, result);
       if (std::memcmp(result, c, 4) == 0)

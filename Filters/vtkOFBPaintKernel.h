@@ -145,13 +145,13 @@ private:
   void ComputeWaves(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings);
   void OrderWaves(int numberOfWaves, const glm::dvec3& low, double maxReach);
   void PaintDab(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, DabWork& work);
-  template <int Mode>
+  template<int Mode>
   void PaintColorsWith(const vtkOFBDab& dab,
     const vtkOFBPaintSettings& settings,
     const float src[4],
     const float* centreNormal,
     DabWork& work);
-  template <int Mode, int FalloffKind>
+  template<int Mode, int FalloffKind>
   void PaintColors(const vtkOFBDab& dab,
     const vtkOFBPaintSettings& settings,
     const float src[4],

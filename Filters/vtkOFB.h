@@ -225,11 +225,21 @@ public:
 #ifndef __VTK_WRAP__
   /**
    * Call `f(vtkIdType id, double squaredDistance)` for every sample within `radius`
-   * of `center`. Candidates come from the projections of the sphere's bounding box
-   * on the three grids and a binary search on depth; no allocation.
+   * of `center`, grid by grid (axis 0, 1, 2), row by row, cell by cell in order of
+   * depth. Candidates are the cells under the sphere's projection on each grid and
+   * the depth range [d - r, d + r] of each; no allocation.
    */
   template <typename Functor>
   void ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const;
+
+  /**
+   * As above; `prefetch(vtkIdType first, vtkIdType last)` is called a row ahead with
+   * the range of sample ids that `f` will soon be offered, so that the caller can
+   * prefetch its own arrays indexed by sample id (the query prefetches its own).
+   */
+  template <typename Functor, typename Prefetch>
+  void ForEachSampleInSphere(
+    const double center[3], double radius, Functor&& f, Prefetch&& prefetch) const;
 #endif
 
   ///@{
@@ -312,6 +322,26 @@ protected:
     return static_cast<vtkIdType>(std::lower_bound(depths + begin, depths + end, d) - depths);
   }
 
+#ifndef __VTK_WRAP__
+  /// One row of cells [u0, u1] of ForEachSampleInSphere's grid `a` (see there).
+  struct SphereRow
+  {
+    vtkIdType RowBase; // global id of cell u = 0 of the row
+    vtkIdType U0, U1;
+    double UCentre; // the centre's u, world units relative to cell 0's centre
+    double D;       // the centre's depth relative to the origin
+    double DV2;     // squared distance of the row from the centre in v
+    double DHigh;
+    double R2;
+    float DLow;
+    int UAxis;
+  };
+  template <typename Functor>
+  void ForEachSampleInRowScan(const SphereRow& row, Functor& f) const;
+  template <typename Functor>
+  void ForEachSampleInRowCells(const SphereRow& row, Functor& f) const;
+#endif
+
   double Origin[3];
   double CellSize;
   vtkIdType Dimensions[3];
@@ -356,12 +386,21 @@ private:
 template <typename Functor>
 void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const
 {
+  this->ForEachSampleInSphere(center, radius, f, [](vtkIdType, vtkIdType) {});
+}
+
+template <typename Functor, typename Prefetch>
+void vtkOFB::ForEachSampleInSphere(
+  const double center[3], double radius, Functor&& f, Prefetch&& prefetch) const
+{
   if (this->CellSize <= 0.0 || !(radius >= 0.0) || this->GetNumberOfSamples() == 0)
   {
     return;
   }
   const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  const vtkTypeUInt32* cellOf = this->CellIndex->GetPointer(0);
   const float* depths = this->Depths->GetPointer(0);
+  const bool indexed = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples();
   const double s = this->CellSize;
   const double r2 = radius * radius;
   for (int a = 0; a < 3; ++a)
@@ -384,37 +423,171 @@ void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functo
     const vtkIdType u1 = static_cast<vtkIdType>(std::floor(std::min(hu, nu - 1.0)));
     const vtkIdType v0 = static_cast<vtkIdType>(std::ceil(std::max(lv, 0.0)));
     const vtkIdType v1 = static_cast<vtkIdType>(std::floor(std::min(hv, nv - 1.0)));
-    const double d = center[a] - this->Origin[a];
-    const float dLow = static_cast<float>(d - radius);
-    const double dHigh = d + radius;
+    SphereRow base;
+    base.D = center[a] - this->Origin[a];
+    base.R2 = r2;
+    base.DLow = static_cast<float>(base.D - radius);
+    base.DHigh = base.D + radius;
+    base.UCentre = center[ua];
+    base.UAxis = ua;
+    const double cu = (center[ua] - this->Origin[ua]) / s - 0.5; // centre in cell units
+    // Row iv: only the cells under the circle's chord, one cell wider on each side
+    // than exact arithmetic needs (the distance test decides), clamped before they
+    // become integers as above. False if the row misses the sphere.
+    auto chord = [&](vtkIdType iv, SphereRow& row)
+    {
+      row = base;
+      const double dv = this->Origin[va] + (iv + 0.5) * s - center[va];
+      row.DV2 = dv * dv;
+      if (row.DV2 > r2)
+      {
+        return false;
+      }
+      row.RowBase = this->CellBase[a] + iv * nu;
+      const double half = std::sqrt(r2 - row.DV2) / s;
+      row.U0 = static_cast<vtkIdType>(std::max(static_cast<double>(u0), std::floor(cu - half)));
+      row.U1 = static_cast<vtkIdType>(std::min(static_cast<double>(u1), std::ceil(cu + half)));
+      return row.U0 <= row.U1;
+    };
+    // Rows are computed two ahead (their offsets prefetched) and their samples are
+    // prefetched one ahead: a dab's rows lie far apart in memory.
+    SphereRow ring[3];
+    bool valid[3] = { false, false, false };
+    for (vtkIdType iv = v0; iv <= std::min(v1, v0 + 1); ++iv)
+    {
+      valid[iv % 3] = chord(iv, ring[iv % 3]);
+    }
     for (vtkIdType iv = v0; iv <= v1; ++iv)
     {
-      const double dv = this->Origin[va] + (iv + 0.5) * s - center[va];
-      const double dv2 = dv * dv;
-      const vtkIdType rowBase = this->CellBase[a] + iv * nu;
-      for (vtkIdType iu = u0; iu <= u1; ++iu)
+      if (iv + 2 <= v1)
       {
-        const double du = this->Origin[ua] + (iu + 0.5) * s - center[ua];
-        const double duv2 = du * du + dv2;
-        if (duv2 > r2)
+        SphereRow& ahead = ring[(iv + 2) % 3];
+        valid[(iv + 2) % 3] = chord(iv + 2, ahead);
+        if (valid[(iv + 2) % 3])
         {
-          continue;
+          __builtin_prefetch(offsets + ahead.RowBase + ahead.U0);
+          __builtin_prefetch(offsets + ahead.RowBase + ahead.U1 + 1);
         }
-        const vtkIdType cell = rowBase + iu;
-        const vtkIdType end = offsets[cell + 1];
-        for (vtkIdType i = this->LowerBound(offsets[cell], end, dLow); i < end; ++i)
+      }
+      if (iv + 1 <= v1 && valid[(iv + 1) % 3])
+      {
+        const SphereRow& next = ring[(iv + 1) % 3];
+        const vtkIdType first = offsets[next.RowBase + next.U0];
+        const vtkIdType last =
+          std::min<vtkIdType>(offsets[next.RowBase + next.U1 + 1], first + 512);
+        for (vtkIdType i = first; i < last; i += 16)
         {
-          if (depths[i] > dHigh)
-          {
-            break;
-          }
-          const double dd = depths[i] - d;
-          const double dist2 = duv2 + dd * dd;
-          if (dist2 <= r2)
-          {
-            f(i, dist2);
-          }
+          __builtin_prefetch(depths + i);
+          __builtin_prefetch(cellOf + i);
         }
+        if (first < last)
+        {
+          __builtin_prefetch(depths + last - 1);
+          __builtin_prefetch(cellOf + last - 1);
+          prefetch(first, last);
+        }
+      }
+      if (!valid[iv % 3])
+      {
+        continue;
+      }
+      const SphereRow& row = ring[iv % 3];
+      // A row's samples are consecutive: where its cells hold few samples each, one
+      // linear pass over them all beats a search of each cell's depth range.
+      const vtkIdType cells = row.U1 - row.U0 + 1;
+      const vtkIdType samples = offsets[row.RowBase + row.U1 + 1] - offsets[row.RowBase + row.U0];
+      if (indexed && samples <= 6 * cells)
+      {
+        this->ForEachSampleInRowScan(row, f);
+      }
+      else
+      {
+        this->ForEachSampleInRowCells(row, f);
+      }
+    }
+  }
+}
+
+template <typename Functor>
+void vtkOFB::ForEachSampleInRowScan(const SphereRow& row, Functor& f) const
+{
+  // Every sample of the row's cells, tested without a branch into a small batch of
+  // hits, then handed to `f` in order. The squared distance is computed as in
+  // ForEachSampleInRowCells, to the bit.
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  const vtkTypeUInt32* cellOf = this->CellIndex->GetPointer(0);
+  const float* depths = this->Depths->GetPointer(0);
+  const double s = this->CellSize;
+  const double ou = this->Origin[row.UAxis];
+  constexpr int Batch = 64;
+  vtkIdType hit[Batch];
+  double hitD2[Batch];
+  vtkIdType i = offsets[row.RowBase + row.U0];
+  const vtkIdType end = offsets[row.RowBase + row.U1 + 1];
+  while (i < end)
+  {
+    const vtkIdType stop = std::min(end, i + Batch);
+    int n = 0;
+    for (; i < stop; ++i)
+    {
+      const double iu = static_cast<double>(static_cast<vtkIdType>(cellOf[i]) - row.RowBase);
+      const double du = ou + (iu + 0.5) * s - row.UCentre;
+      const double duv2 = du * du + row.DV2;
+      const double dd = depths[i] - row.D;
+      const double dist2 = duv2 + dd * dd;
+      hit[n] = i;
+      hitD2[n] = dist2;
+      n += dist2 <= row.R2;
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      f(hit[k], hitD2[k]);
+    }
+  }
+}
+
+template <typename Functor>
+void vtkOFB::ForEachSampleInRowCells(const SphereRow& row, Functor& f) const
+{
+  // Cell by cell: a cell's first sample at depth >= d - r by a linear scan over the
+  // few samples of a typical cell, a binary search over many.
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  const float* depths = this->Depths->GetPointer(0);
+  const double s = this->CellSize;
+  const double ou = this->Origin[row.UAxis];
+  for (vtkIdType iu = row.U0; iu <= row.U1; ++iu)
+  {
+    const double du = ou + (iu + 0.5) * s - row.UCentre;
+    const double duv2 = du * du + row.DV2;
+    if (duv2 > row.R2)
+    {
+      continue;
+    }
+    const vtkIdType cell = row.RowBase + iu;
+    vtkIdType i = offsets[cell];
+    const vtkIdType end = offsets[cell + 1];
+    if (end - i > 8)
+    {
+      i = this->LowerBound(i, end, row.DLow);
+    }
+    else
+    {
+      while (i < end && depths[i] < row.DLow)
+      {
+        ++i;
+      }
+    }
+    for (; i < end; ++i)
+    {
+      if (depths[i] > row.DHigh)
+      {
+        break;
+      }
+      const double dd = depths[i] - row.D;
+      const double dist2 = duv2 + dd * dd;
+      if (dist2 <= row.R2)
+      {
+        f(i, dist2);
       }
     }
   }

@@ -1,8 +1,9 @@
 #include "vtkOFBPaintKernel.h"
-#include "vtkOFBPaintSampleGrid.h"
+#include "vtkOFBPaintBlend.h"
 
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
+#include "vtkOFBBrush.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
@@ -14,6 +15,10 @@
 #include <cstring>
 #include <thread>
 
+using vtkofbpaint::Blend;
+using vtkofbpaint::Facing;
+using vtkofbpaint::FalloffOf;
+
 namespace
 {
 // Progress is reported every this many visited samples (serial dabs only).
@@ -21,12 +26,6 @@ constexpr vtkIdType ProgressMask = (vtkIdType(1) << 20) - 1;
 
 // Waves smaller than this run on the calling thread.
 constexpr size_t MinParallelWave = 8;
-
-unsigned char ToByte(float v)
-{
-  v = std::min(1.0f, std::max(0.0f, v));
-  return static_cast<unsigned char>(v * 255.0f + 0.5f);
-}
 
 // Morton code of a point in units of the largest dab reach (21 bits per axis).
 vtkTypeUInt64 MortonCode(const glm::dvec3& q)
@@ -53,15 +52,48 @@ struct LocalRecords
 
 }
 
-/// What one thread needs while painting dabs.
+/// What one thread needs while painting dabs, and what it knows already: the last
+/// changed-block flag it set and the last initial-value block it made sure of (both
+/// stay so until the end of the call), so that a run of samples in one block pays
+/// for the shared, atomic state once.
 struct vtkOFBPaintKernel::DabWork
 {
   LocalRecords* Records;
   const std::function<void(double)>* Progress; // null in parallel waves
-  vtkIdType Visited;
-  double ProgressBase;
-  double ProgressSpan;
+  vtkIdType Visited = 0;
+  double ProgressBase = 0.0;
+  double ProgressSpan = 0.0;
+  vtkIdType ChangedBlock = -1;
+  vtkIdType InitialColorBlockId = -1;
+  const unsigned char* InitialColors = nullptr;
+  vtkIdType InitialNormalBlockId = -1;
+  const float* InitialNormals = nullptr;
 };
+
+/// Buffers of Paint() and ComputeWaves(), kept from call to call.
+struct vtkOFBPaintKernel::Scratch
+{
+  std::vector<int> Order;      // dabs by wave, then in Morton order
+  std::vector<int> WaveStarts; // first position in Order of each wave, and the end
+  std::vector<glm::dvec3> Centre;
+  std::vector<double> Reach;
+  std::vector<size_t> BucketOf;
+  std::vector<int> BucketStart;
+  std::vector<int> Fill;
+  std::vector<int> Members;
+  std::vector<int> Wave;
+  std::vector<vtkTypeUInt64> Key;
+  vtkSMPThreadLocal<LocalRecords> Records;
+};
+
+//------------------------------------------------------------------------------
+vtkOFBPaintKernel::vtkOFBPaintKernel()
+  : Work(new Scratch)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPaintKernel::~vtkOFBPaintKernel() = default;
 
 //------------------------------------------------------------------------------
 void vtkOFBPaintKernel::Reset(vtkOFB* ofb, vtkUnsignedCharArray* colors, vtkFloatArray* normals)
@@ -170,74 +202,12 @@ void vtkOFBPaintKernel::BlendColor(const unsigned char dst[4],
   const unsigned char initial[4],
   unsigned char out[4])
 {
-  float d[4];
-  for (int k = 0; k < 4; ++k)
-  {
-    d[k] = dst[k] * (1.0f / 255.0f);
-  }
-  const float a = g * src[3];
-  float r[4] = { d[0], d[1], d[2], d[3] };
-  switch (mode)
-  {
-    case 0: // Mix: source over destination
-    {
-      const float ao = a + d[3] * (1.0f - a);
-      if (ao > 0.0f)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          r[k] = (src[k] * a + d[k] * d[3] * (1.0f - a)) / ao;
-        }
-      }
-      r[3] = ao;
-      break;
-    }
-    case 6: // Erase: back to the initial colour
-      for (int k = 0; k < 4; ++k)
-      {
-        r[k] = d[k] + g * (initial[k] * (1.0f / 255.0f) - d[k]);
-      }
-      break;
-    case 7: // EraseAlpha
-      r[3] = d[3] * (1.0f - g);
-      break;
-    default: // Add, Subtract, Multiply, Lighten, Darken
-      for (int k = 0; k < 3; ++k)
-      {
-        float f;
-        switch (mode)
-        {
-          case 1:
-            f = std::min(1.0f, d[k] + src[k]);
-            break;
-          case 2:
-            f = std::max(0.0f, d[k] - src[k]);
-            break;
-          case 3:
-            f = d[k] * src[k];
-            break;
-          case 4:
-            f = std::max(d[k], src[k]);
-            break;
-          default:
-            f = std::min(d[k], src[k]);
-            break;
-        }
-        r[k] = d[k] + a * (f - d[k]);
-      }
-      r[3] = d[3] + (1.0f - d[3]) * a;
-      break;
-  }
-  for (int k = 0; k < 4; ++k)
-  {
-    out[k] = ToByte(r[k]);
-  }
+  Blend<-1>(dst, src, g, mode, initial, out);
 }
 
 //------------------------------------------------------------------------------
-const unsigned char* vtkOFBPaintKernel::InitialColor(vtkIdType id)
+const unsigned char* vtkOFBPaintKernel::InitialColorBlock(vtkIdType b)
 {
-  const vtkIdType b = id >> InitialBlockShift;
   std::atomic<unsigned char>& state = this->InitialColorState[b];
   if (state.load(std::memory_order_acquire) != 2)
   {
@@ -257,13 +227,12 @@ const unsigned char* vtkOFBPaintKernel::InitialColor(vtkIdType id)
       std::this_thread::yield();
     }
   }
-  return this->InitialColors[b].get() + 4 * (id & ((vtkIdType(1) << InitialBlockShift) - 1));
+  return this->InitialColors[b].get();
 }
 
 //------------------------------------------------------------------------------
-const float* vtkOFBPaintKernel::InitialNormal(vtkIdType id)
+const float* vtkOFBPaintKernel::InitialNormalBlock(vtkIdType b)
 {
-  const vtkIdType b = id >> InitialBlockShift;
   std::atomic<unsigned char>& state = this->InitialNormalState[b];
   if (state.load(std::memory_order_acquire) != 2)
   {
@@ -285,7 +254,57 @@ const float* vtkOFBPaintKernel::InitialNormal(vtkIdType id)
       std::this_thread::yield();
     }
   }
-  return this->InitialNormals[b].get() + 3 * (id & ((vtkIdType(1) << InitialBlockShift) - 1));
+  return this->InitialNormals[b].get();
+}
+
+//------------------------------------------------------------------------------
+inline const unsigned char* vtkOFBPaintKernel::InitialColor(vtkIdType id, DabWork& work)
+{
+  const vtkIdType b = id >> InitialBlockShift;
+  if (b != work.InitialColorBlockId)
+  {
+    work.InitialColors = this->InitialColorBlock(b);
+    work.InitialColorBlockId = b;
+  }
+  return work.InitialColors + 4 * (id & ((vtkIdType(1) << InitialBlockShift) - 1));
+}
+
+//------------------------------------------------------------------------------
+inline const float* vtkOFBPaintKernel::InitialNormal(vtkIdType id, DabWork& work)
+{
+  const vtkIdType b = id >> InitialBlockShift;
+  if (b != work.InitialNormalBlockId)
+  {
+    work.InitialNormals = this->InitialNormalBlock(b);
+    work.InitialNormalBlockId = b;
+  }
+  return work.InitialNormals + 3 * (id & ((vtkIdType(1) << InitialBlockShift) - 1));
+}
+
+//------------------------------------------------------------------------------
+inline void vtkOFBPaintKernel::MarkBlockChanged(vtkIdType id, DabWork& work)
+{
+  // The block flag is shared by the threads of a wave, hence atomic.
+  const vtkIdType b = id >> ChangedBlockShift;
+  if (b != work.ChangedBlock)
+  {
+    work.ChangedBlock = b;
+    std::atomic<unsigned char>& block = this->ChangedBlocks[b];
+    if (!block.load(std::memory_order_relaxed))
+    {
+      block.store(1, std::memory_order_relaxed);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::ReportProgress(DabWork& work) const
+{
+  if ((++work.Visited & ProgressMask) == 0)
+  {
+    const double total = static_cast<double>(this->NumberOfSamples);
+    (*work.Progress)(work.ProgressBase + work.ProgressSpan * std::min(1.0, work.Visited / total));
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -293,19 +312,6 @@ void vtkOFBPaintKernel::MarkChanged(vtkTypeUInt32 id)
 {
   this->Flags[id] |= ChangedInCall;
   this->ChangedBlocks[id >> ChangedBlockShift].store(1, std::memory_order_relaxed);
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBPaintKernel::Touch(vtkIdType id, unsigned char recordedBit)
-{
-  // Only the thread painting the dab that owns this sample in the current wave
-  // writes its flag byte; the block flag is shared, hence atomic.
-  this->Flags[id] |= static_cast<unsigned char>(ChangedInCall | recordedBit);
-  std::atomic<unsigned char>& block = this->ChangedBlocks[id >> ChangedBlockShift];
-  if (!block.load(std::memory_order_relaxed))
-  {
-    block.store(1, std::memory_order_relaxed);
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -371,15 +377,17 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtk
 
 //------------------------------------------------------------------------------
 void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
-  const vtkOFBPaintSettings& settings,
-  std::vector<int>& order,
-  std::vector<int>& waveStarts) const
+  const vtkOFBPaintSettings& settings)
 {
   // Each dab's bounding sphere covers what it writes and, for a smear, what it reads.
+  Scratch& s = *this->Work;
   const size_t n = dabs.size();
-  std::vector<glm::dvec3> centre(n);
-  std::vector<double> reach(n);
+  auto& centre = s.Centre;
+  auto& reach = s.Reach;
+  centre.resize(n);
+  reach.resize(n);
   double maxReach = 0.0;
+  glm::dvec3 low(VTK_DOUBLE_MAX);
   for (size_t j = 0; j < n; ++j)
   {
     const vtkOFBDab& d = dabs[j];
@@ -394,25 +402,29 @@ void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
     centre[j] = c;
     reach[j] = r;
     maxReach = std::max(maxReach, r);
+    low = glm::min(low, c);
   }
   // Spatial hash of cells of edge 2 * maxReach: overlapping dabs lie in
   // neighbouring cells. Buckets list their dabs in increasing order.
   const double h = 2.0 * maxReach;
+  const double invH = 1.0 / h;
   size_t tableSize = 1;
   while (tableSize < 2 * n)
   {
     tableSize <<= 1;
   }
   auto cellOf = [&](const glm::dvec3& c)
-  { return glm::i64vec3(std::floor(c.x / h), std::floor(c.y / h), std::floor(c.z / h)); };
+  { return glm::i64vec3(std::floor(c.x * invH), std::floor(c.y * invH), std::floor(c.z * invH)); };
   auto hashOf = [&](const glm::i64vec3& k)
   {
     const vtkTypeUInt64 v = static_cast<vtkTypeUInt64>(k.x) * 73856093ull ^
       static_cast<vtkTypeUInt64>(k.y) * 19349663ull ^ static_cast<vtkTypeUInt64>(k.z) * 83492791ull;
     return static_cast<size_t>(v & (tableSize - 1));
   };
-  std::vector<size_t> bucketOf(n);
-  std::vector<int> bucketStart(tableSize + 1, 0);
+  auto& bucketOf = s.BucketOf;
+  auto& bucketStart = s.BucketStart;
+  bucketOf.resize(n);
+  bucketStart.assign(tableSize + 1, 0);
   for (size_t j = 0; j < n; ++j)
   {
     bucketOf[j] = hashOf(cellOf(centre[j]));
@@ -422,13 +434,14 @@ void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
   {
     bucketStart[b + 1] += bucketStart[b];
   }
-  std::vector<int> fill(bucketStart.begin(), bucketStart.end() - 1);
-  std::vector<int> members(n);
+  s.Fill.assign(bucketStart.begin(), bucketStart.end() - 1);
+  s.Members.resize(n);
   for (size_t j = 0; j < n; ++j)
   {
-    members[fill[bucketOf[j]]++] = static_cast<int>(j);
+    s.Members[s.Fill[bucketOf[j]]++] = static_cast<int>(j);
   }
-  std::vector<int> wave(n, 0);
+  auto& wave = s.Wave;
+  wave.assign(n, 0);
   int numberOfWaves = n > 0 ? 1 : 0;
   for (size_t j = 0; j < n; ++j)
   {
@@ -443,7 +456,7 @@ void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
           const size_t b = hashOf(k + glm::i64vec3(dx, dy, dz));
           for (int m = bucketStart[b]; m < bucketStart[b + 1]; ++m)
           {
-            const int i = members[m];
+            const int i = s.Members[m];
             if (i >= static_cast<int>(j))
             {
               break;
@@ -461,35 +474,41 @@ void vtkOFBPaintKernel::ComputeWaves(const std::vector<vtkOFBDab>& dabs,
     wave[j] = w;
     numberOfWaves = std::max(numberOfWaves, w + 1);
   }
+  this->OrderWaves(numberOfWaves, low, maxReach);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::OrderWaves(int numberOfWaves, const glm::dvec3& low, double maxReach)
+{
   // Dabs ordered by wave, then by index.
+  Scratch& s = *this->Work;
+  const size_t n = s.Wave.size();
+  auto& waveStarts = s.WaveStarts;
+  auto& order = s.Order;
   waveStarts.assign(numberOfWaves + 1, 0);
   for (size_t j = 0; j < n; ++j)
   {
-    ++waveStarts[wave[j] + 1];
+    ++waveStarts[s.Wave[j] + 1];
   }
   for (int w = 0; w < numberOfWaves; ++w)
   {
     waveStarts[w + 1] += waveStarts[w];
   }
-  std::vector<int> next(waveStarts.begin(), waveStarts.end() - 1);
+  s.Fill.assign(waveStarts.begin(), waveStarts.end() - 1);
   order.resize(n);
   for (size_t j = 0; j < n; ++j)
   {
-    order[next[wave[j]]++] = static_cast<int>(j);
+    order[s.Fill[s.Wave[j]]++] = static_cast<int>(j);
   }
   // Within a wave the order does not change the result (its dabs share no
   // sample): paint in Morton order of the centres, so that consecutive dabs read
   // neighbouring rows of the grids' offsets, depths and colours.
-  glm::dvec3 low(VTK_DOUBLE_MAX);
+  auto& key = s.Key;
+  key.resize(n);
+  const double scale = 1.0 / std::max(maxReach, 1e-300);
   for (size_t j = 0; j < n; ++j)
   {
-    low = glm::min(low, centre[j]);
-  }
-  std::vector<vtkTypeUInt64> key(n);
-  for (size_t j = 0; j < n; ++j)
-  {
-    const glm::dvec3 q = (centre[j] - low) / std::max(maxReach, 1e-300);
-    key[j] = MortonCode(q);
+    key[j] = MortonCode((s.Centre[j] - low) * scale);
   }
   for (int w = 0; w < numberOfWaves; ++w)
   {
@@ -513,15 +532,17 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
   {
     return;
   }
-  std::vector<int> order;
-  std::vector<int> waveStarts;
-  this->ComputeWaves(dabs, settings, order, waveStarts);
-  vtkofbpaint::SampleGrid grid;
-  grid.Set(this->OFB);
-  this->Grid = &grid;
-
-  vtkSMPThreadLocal<LocalRecords> records;
+  this->ComputeWaves(dabs, settings);
+  Scratch& s = *this->Work;
+  const std::vector<int>& order = s.Order;
+  const std::vector<int>& waveStarts = s.WaveStarts;
+  for (auto& local : s.Records)
+  {
+    local.Colors.clear();
+    local.Normals.clear();
+  }
   const double total = static_cast<double>(dabs.size());
+  DabWork serial{ &s.Records.Local(), progress ? &progress : nullptr };
   for (size_t w = 0; w + 1 < waveStarts.size(); ++w)
   {
     const int begin = waveStarts[w];
@@ -530,8 +551,10 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
     {
       for (int k = begin; k < end; ++k)
       {
-        DabWork work{ &records.Local(), progress ? &progress : nullptr, 0, k / total, 1.0 / total };
-        this->PaintDab(dabs[order[k]], settings, work);
+        serial.Visited = 0;
+        serial.ProgressBase = k / total;
+        serial.ProgressSpan = 1.0 / total;
+        this->PaintDab(dabs[order[k]], settings, serial);
       }
     }
     else
@@ -540,7 +563,7 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
         end,
         [&](vtkIdType first, vtkIdType last)
         {
-          DabWork work{ &records.Local(), nullptr, 0, 0.0, 0.0 };
+          DabWork work{ &s.Records.Local(), nullptr };
           for (vtkIdType k = first; k < last; ++k)
           {
             this->PaintDab(dabs[order[k]], settings, work);
@@ -548,12 +571,11 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
         });
     }
   }
-  for (auto& local : records)
+  for (auto& local : s.Records)
   {
     colorUndo.insert(colorUndo.end(), local.Colors.begin(), local.Colors.end());
     normalUndo.insert(normalUndo.end(), local.Normals.begin(), local.Normals.end());
   }
-  this->Grid = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -600,7 +622,7 @@ bool vtkOFBPaintKernel::SmearSource(const vtkOFBDab& dab,
   const double invR = 1.0 / dab.Radius;
   double sum[4] = { 0.0, 0.0, 0.0, 0.0 };
   double weight = 0.0;
-  this->Grid->ForEachInSphere(dab.Previous,
+  this->OFB->ForEachSampleInSphere(dab.Previous,
     dab.Radius,
     [&](vtkIdType i, double d2)
     {
@@ -627,94 +649,18 @@ void vtkOFBPaintKernel::PaintDab(const vtkOFBDab& dab,
   const vtkOFBPaintSettings& settings,
   DabWork& work)
 {
-  const double invR = 1.0 / dab.Radius;
   const float* normals = this->Normals ? this->Normals->GetPointer(0) : nullptr;
   double centreNormal[3] = { 0.0, 0.0, 0.0 };
   const bool aware = settings.NormalAware && normals && this->CentreNormal(dab, centreNormal);
   const float nc[3] = { static_cast<float>(centreNormal[0]),
     static_cast<float>(centreNormal[1]),
     static_cast<float>(centreNormal[2]) };
-  const float cosMax = static_cast<float>(settings.CosMaxAngle);
-  const double total = static_cast<double>(this->NumberOfSamples);
-
-  // Shared by both targets: progress, normal-aware test, weight. Returns the
-  // weight G (0: leave the sample alone).
-  auto weightOf = [&](vtkIdType i, double d2) -> float
-  {
-    if (work.Progress && (++work.Visited & ProgressMask) == 0)
-    {
-      (*work.Progress)(work.ProgressBase + work.ProgressSpan * std::min(1.0, work.Visited / total));
-    }
-    if (aware)
-    {
-      const float* n = normals + 3 * i;
-      if (n[0] * nc[0] + n[1] * nc[1] + n[2] * nc[2] < cosMax)
-      {
-        return 0.0f;
-      }
-    }
-    return static_cast<float>(dab.Strength * Falloff(settings, std::sqrt(d2) * invR));
-  };
-
+  const float* cone = aware ? nc : nullptr;
   if (settings.Target == 1)
   {
-    float* out = this->Normals->GetPointer(0);
-    const bool erase = settings.BlendMode == 6;
-    const glm::dvec3 c(dab.Center[0], dab.Center[1], dab.Center[2]);
-    this->Grid->ForEachInSphere(dab.Center,
-      dab.Radius,
-      [&](vtkIdType i, double d2)
-      {
-        const float g = weightOf(i, d2);
-        if (g <= 0.0f)
-        {
-          return;
-        }
-        float* n = out + 3 * i;
-        const glm::vec3 old(n[0], n[1], n[2]);
-        glm::vec3 v;
-        if (erase)
-        {
-          const float* n0 = this->InitialNormal(i);
-          const glm::vec3 initial(n0[0], n0[1], n0[2]);
-          v = g >= 1.0f ? initial : old + g * (initial - old);
-        }
-        else
-        {
-          double x[3];
-          this->OFB->GetSamplePosition(i, x);
-          glm::dvec3 t = (glm::dvec3(x[0], x[1], x[2]) - c) * invR;
-          const glm::dvec3 nd(old);
-          t -= glm::dot(t, nd) * nd;
-          v = glm::vec3(nd + settings.BumpDepth * g * t);
-        }
-        const float len = glm::length(v);
-        if (!(len > 0.0f))
-        {
-          return;
-        }
-        if (!(erase && g >= 1.0f))
-        {
-          v /= len; // (a full erase restores the initial normal as it was)
-        }
-        if (v == old)
-        {
-          return;
-        }
-        this->InitialNormal(i); // keep the initial value before the first change
-        if (!(this->Flags[i] & NormalRecorded))
-        {
-          work.Records->Normals.push_back(
-            { static_cast<vtkTypeUInt32>(i), { old.x, old.y, old.z } });
-        }
-        this->Touch(i, NormalRecorded);
-        n[0] = v.x;
-        n[1] = v.y;
-        n[2] = v.z;
-      });
+    this->PaintNormals(dab, settings, cone, work);
     return;
   }
-
   float src[4] = { dab.Color[0], dab.Color[1], dab.Color[2], dab.Color[3] };
   if (settings.Target == 2)
   {
@@ -729,32 +675,179 @@ void vtkOFBPaintKernel::PaintDab(const vtkOFBDab& dab,
       src[k] += amount * (carried[k] - src[k]);
     }
   }
+  // The default falloffs and blend mode compiled in, the others chosen per sample.
+  if (settings.BlendMode == vtkOFBBrush::Mix)
+  {
+    this->PaintColorsWith<vtkOFBBrush::Mix>(dab, settings, src, cone, work);
+  }
+  else
+  {
+    this->PaintColorsWith<-1>(dab, settings, src, cone, work);
+  }
+}
+
+//------------------------------------------------------------------------------
+template<int Mode>
+void vtkOFBPaintKernel::PaintColorsWith(const vtkOFBDab& dab,
+  const vtkOFBPaintSettings& settings,
+  const float src[4],
+  const float* centreNormal,
+  DabWork& work)
+{
+  switch (settings.Falloff)
+  {
+    case vtkOFBBrush::Smooth:
+      this->PaintColors<Mode, vtkOFBBrush::Smooth>(dab, settings, src, centreNormal, work);
+      break;
+    case vtkOFBBrush::Constant:
+      this->PaintColors<Mode, vtkOFBBrush::Constant>(dab, settings, src, centreNormal, work);
+      break;
+    default:
+      this->PaintColors<Mode, -1>(dab, settings, src, centreNormal, work);
+      break;
+  }
+}
+
+//------------------------------------------------------------------------------
+template<int Mode, int FalloffKind>
+void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
+  const vtkOFBPaintSettings& settings,
+  const float src[4],
+  const float* centreNormal,
+  DabWork& work)
+{
   unsigned char* colors = this->Colors->GetPointer(0);
-  const int mode = settings.BlendMode;
-  this->Grid->ForEachInSphere(dab.Center,
+  unsigned char* flags = this->Flags.get();
+  const float* normals = this->Normals ? this->Normals->GetPointer(0) : nullptr;
+  const float cosMax = static_cast<float>(settings.CosMaxAngle);
+  const double invR = 1.0 / dab.Radius;
+  const double strength = dab.Strength;
+  const int mode = Mode >= 0 ? Mode : settings.BlendMode;
+  std::vector<vtkOFBColorRecord>& records = work.Records->Colors;
+  this->OFB->ForEachSampleInSphere(
+    dab.Center,
     dab.Radius,
     [&](vtkIdType i, double d2)
     {
-      const float g = weightOf(i, d2);
+      if (work.Progress)
+      {
+        this->ReportProgress(work);
+      }
+      if (centreNormal && !Facing(normals + 3 * i, centreNormal, cosMax))
+      {
+        return;
+      }
+      const float g =
+        static_cast<float>(strength * FalloffOf<FalloffKind>(settings, std::sqrt(d2) * invR));
       if (g <= 0.0f)
       {
         return;
       }
       unsigned char* c = colors + 4 * i;
-      const unsigned char* initial = mode == 6 ? this->InitialColor(i) : nullptr;
+      const unsigned char* initial =
+        mode == vtkOFBBrush::Erase ? this->InitialColor(i, work) : nullptr;
       unsigned char result[4];
-      BlendColor(c, src, g, mode, initial, result);
+      Blend<Mode>(c, src, g, mode, initial, result);
       if (std::memcmp(result, c, 4) == 0)
       {
         return;
       }
-      this->InitialColor(i); // keep the initial value before the first change
-      if (!(this->Flags[i] & ColorRecorded))
+      this->InitialColor(i, work); // keep the initial value before the first change
+      unsigned char& flag = flags[i];
+      if (!(flag & ColorRecorded))
       {
-        work.Records->Colors.push_back(
-          { static_cast<vtkTypeUInt32>(i), { c[0], c[1], c[2], c[3] } });
+        records.push_back({ static_cast<vtkTypeUInt32>(i), { c[0], c[1], c[2], c[3] } });
       }
-      this->Touch(i, ColorRecorded);
+      flag |= static_cast<unsigned char>(ChangedInCall | ColorRecorded);
+      this->MarkBlockChanged(i, work);
       std::memcpy(c, result, 4);
+    },
+    [colors, flags](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; i += 16)
+      {
+        __builtin_prefetch(colors + 4 * i, 1);
+      }
+      __builtin_prefetch(colors + 4 * (last - 1), 1);
+      for (vtkIdType i = first; i < last; i += 64)
+      {
+        __builtin_prefetch(flags + i, 1);
+      }
+      __builtin_prefetch(flags + last - 1, 1);
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintKernel::PaintNormals(const vtkOFBDab& dab,
+  const vtkOFBPaintSettings& settings,
+  const float* centreNormal,
+  DabWork& work)
+{
+  float* out = this->Normals->GetPointer(0);
+  unsigned char* flags = this->Flags.get();
+  const float cosMax = static_cast<float>(settings.CosMaxAngle);
+  const double invR = 1.0 / dab.Radius;
+  const bool erase = settings.BlendMode == vtkOFBBrush::Erase;
+  const glm::dvec3 c(dab.Center[0], dab.Center[1], dab.Center[2]);
+  std::vector<vtkOFBNormalRecord>& records = work.Records->Normals;
+  this->OFB->ForEachSampleInSphere(dab.Center,
+    dab.Radius,
+    [&](vtkIdType i, double d2)
+    {
+      if (work.Progress)
+      {
+        this->ReportProgress(work);
+      }
+      float* n = out + 3 * i;
+      if (centreNormal && !Facing(n, centreNormal, cosMax))
+      {
+        return;
+      }
+      const float g = static_cast<float>(dab.Strength * Falloff(settings, std::sqrt(d2) * invR));
+      if (g <= 0.0f)
+      {
+        return;
+      }
+      const glm::vec3 old(n[0], n[1], n[2]);
+      glm::vec3 v;
+      if (erase)
+      {
+        const float* n0 = this->InitialNormal(i, work);
+        const glm::vec3 initial(n0[0], n0[1], n0[2]);
+        v = g >= 1.0f ? initial : old + g * (initial - old);
+      }
+      else
+      {
+        double x[3];
+        this->OFB->GetSamplePosition(i, x);
+        glm::dvec3 t = (glm::dvec3(x[0], x[1], x[2]) - c) * invR;
+        const glm::dvec3 nd(old);
+        t -= glm::dot(t, nd) * nd;
+        v = glm::vec3(nd + settings.BumpDepth * g * t);
+      }
+      const float len = glm::length(v);
+      if (!(len > 0.0f))
+      {
+        return;
+      }
+      if (!(erase && g >= 1.0f))
+      {
+        v /= len; // (a full erase restores the initial normal as it was)
+      }
+      if (v == old)
+      {
+        return;
+      }
+      this->InitialNormal(i, work); // keep the initial value before the first change
+      unsigned char& flag = flags[i];
+      if (!(flag & NormalRecorded))
+      {
+        records.push_back({ static_cast<vtkTypeUInt32>(i), { old.x, old.y, old.z } });
+      }
+      flag |= static_cast<unsigned char>(ChangedInCall | NormalRecorded);
+      this->MarkBlockChanged(i, work);
+      n[0] = v.x;
+      n[1] = v.y;
+      n[2] = v.z;
     });
 }

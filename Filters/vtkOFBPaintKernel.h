@@ -21,6 +21,8 @@
 
 #include "vtkType.h"
 
+#include <glm/vec3.hpp>
+
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -68,14 +70,14 @@ struct vtkOFBNormalRecord
   float Value[3];
 };
 
-namespace vtkofbpaint
-{
-struct SampleGrid;
-}
-
 class vtkOFBPaintKernel
 {
 public:
+  vtkOFBPaintKernel();
+  ~vtkOFBPaintKernel();
+  vtkOFBPaintKernel(const vtkOFBPaintKernel&) = delete;
+  vtkOFBPaintKernel& operator=(const vtkOFBPaintKernel&) = delete;
+
   /// Flag bits of a sample.
   enum : unsigned char
   {
@@ -138,20 +140,37 @@ public:
 
 private:
   struct DabWork;
+  struct Scratch;
 
-  void ComputeWaves(const std::vector<vtkOFBDab>& dabs,
-    const vtkOFBPaintSettings& settings,
-    std::vector<int>& order,
-    std::vector<int>& waveStarts) const;
+  void ComputeWaves(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings);
+  void OrderWaves(int numberOfWaves, const glm::dvec3& low, double maxReach);
   void PaintDab(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, DabWork& work);
+  template<int Mode>
+  void PaintColorsWith(const vtkOFBDab& dab,
+    const vtkOFBPaintSettings& settings,
+    const float src[4],
+    const float* centreNormal,
+    DabWork& work);
+  template<int Mode, int FalloffKind>
+  void PaintColors(const vtkOFBDab& dab,
+    const vtkOFBPaintSettings& settings,
+    const float src[4],
+    const float* centreNormal,
+    DabWork& work);
+  void PaintNormals(const vtkOFBDab& dab,
+    const vtkOFBPaintSettings& settings,
+    const float* centreNormal,
+    DabWork& work);
   bool SmearSource(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, float src[4]) const;
   bool CentreNormal(const vtkOFBDab& dab, double n[3]) const;
-  const unsigned char* InitialColor(vtkIdType id);
-  const float* InitialNormal(vtkIdType id);
-  void Touch(vtkIdType id, unsigned char recordedBit);
+  const unsigned char* InitialColorBlock(vtkIdType block);
+  const float* InitialNormalBlock(vtkIdType block);
+  const unsigned char* InitialColor(vtkIdType id, DabWork& work);
+  const float* InitialNormal(vtkIdType id, DabWork& work);
+  void MarkBlockChanged(vtkIdType id, DabWork& work);
+  void ReportProgress(DabWork& work) const;
 
   vtkOFB* OFB = nullptr;
-  const vtkofbpaint::SampleGrid* Grid = nullptr; // the OFB's storage, during Paint()
   vtkUnsignedCharArray* Colors = nullptr;
   vtkFloatArray* Normals = nullptr;
   vtkIdType NumberOfSamples = 0;
@@ -164,6 +183,7 @@ private:
   std::vector<std::unique_ptr<unsigned char[]>> InitialColors;
   std::vector<std::unique_ptr<float[]>> InitialNormals;
   std::atomic<vtkIdType> InitialBlocksHeld{ 0 };
+  std::unique_ptr<Scratch> Work; // buffers reused from call to call
 };
 
 #endif

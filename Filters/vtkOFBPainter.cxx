@@ -619,11 +619,17 @@ void vtkOFBPainter::CloseStep()
     return;
   }
   impl.Kernel.ClearRecorded(impl.Open.Colors, impl.Open.Normals);
-  auto byId = [](const auto& x, const auto& y) { return x.Id < y.Id; };
-  std::sort(impl.Open.Colors.begin(), impl.Open.Colors.end(), byId);
-  std::sort(impl.Open.Normals.begin(), impl.Open.Normals.end(), byId);
-  impl.Open.Colors.shrink_to_fit();
-  impl.Open.Normals.shrink_to_fit();
+  // A step records each sample once, so the order of its records does not matter to
+  // Restore(). Spare capacity beyond a quarter is given back.
+  auto trim = [](auto& v)
+  {
+    if (v.capacity() > v.size() + v.size() / 4)
+    {
+      v.shrink_to_fit();
+    }
+  };
+  trim(impl.Open.Colors);
+  trim(impl.Open.Normals);
   impl.UndoSteps.push_back(std::move(impl.Open));
   impl.Open = Step();
   impl.RedoSteps.clear();

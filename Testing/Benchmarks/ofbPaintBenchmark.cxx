@@ -573,6 +573,8 @@ int main(int argc, char* argv[])
     static_cast<long long>(surface->GetNumberOfPolys()),
     vtkSMPTools::GetBackend(),
     o.Repetitions);
+  std::printf("The OFB painter also records undo and marks the changed ranges for the "
+              "mapper; the peers do neither. Same dabs, same Mix blend and smooth falloff.\n");
   for (size_t r = 0; r < o.Resolutions.size(); ++r)
   {
     const int resolution = o.Resolutions[r];

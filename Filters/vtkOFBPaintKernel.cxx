@@ -724,6 +724,7 @@ void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
   const double strength = dab.Strength;
   const int mode = Mode >= 0 ? Mode : settings.BlendMode;
   std::vector<vtkOFBColorRecord>& records = work.Records->Colors;
+  const unsigned char recordBit = settings.RecordUndo ? ColorRecorded : 0;
   this->OFB->ForEachSampleInSphere(
     dab.Center,
     dab.Radius,
@@ -754,11 +755,11 @@ void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
       }
       this->InitialColor(i, work); // keep the initial value before the first change
       unsigned char& flag = flags[i];
-      if (!(flag & ColorRecorded))
+      if (recordBit && !(flag & ColorRecorded))
       {
         records.push_back({ static_cast<vtkTypeUInt32>(i), { c[0], c[1], c[2], c[3] } });
       }
-      flag |= static_cast<unsigned char>(ChangedInCall | ColorRecorded);
+      flag |= static_cast<unsigned char>(ChangedInCall | recordBit);
       this->MarkBlockChanged(i, work);
       std::memcpy(c, result, 4);
     },
@@ -790,6 +791,7 @@ void vtkOFBPaintKernel::PaintNormals(const vtkOFBDab& dab,
   const bool erase = settings.BlendMode == vtkOFBBrush::Erase;
   const glm::dvec3 c(dab.Center[0], dab.Center[1], dab.Center[2]);
   std::vector<vtkOFBNormalRecord>& records = work.Records->Normals;
+  const unsigned char recordBit = settings.RecordUndo ? NormalRecorded : 0;
   this->OFB->ForEachSampleInSphere(dab.Center,
     dab.Radius,
     [&](vtkIdType i, double d2)
@@ -840,11 +842,11 @@ void vtkOFBPaintKernel::PaintNormals(const vtkOFBDab& dab,
       }
       this->InitialNormal(i, work); // keep the initial value before the first change
       unsigned char& flag = flags[i];
-      if (!(flag & NormalRecorded))
+      if (recordBit && !(flag & NormalRecorded))
       {
         records.push_back({ static_cast<vtkTypeUInt32>(i), { old.x, old.y, old.z } });
       }
-      flag |= static_cast<unsigned char>(ChangedInCall | NormalRecorded);
+      flag |= static_cast<unsigned char>(ChangedInCall | recordBit);
       this->MarkBlockChanged(i, work);
       n[0] = v.x;
       n[1] = v.y;

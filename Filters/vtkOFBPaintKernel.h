@@ -55,6 +55,7 @@ struct vtkOFBPaintSettings
   double BumpDepth = 0.5;
   bool NormalAware = false;
   double CosMaxAngle = 0.0;
+  bool RecordUndo = true; // false: keep no previous values (an UndoLimit of 0)
   std::vector<double> CustomTable; // Custom falloff sampled at x = i / (size - 1)
 };
 

@@ -360,6 +360,13 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   settings.BumpDepth = brush->GetBumpDepth();
   settings.NormalAware = brush->GetNormalAware();
   settings.CosMaxAngle = std::cos(vtkMath::RadiansFromDegrees(brush->GetMaxNormalAngle()));
+  // Without an undo budget the previous values would be dropped at once: keep none,
+  // and drop the older steps, which no longer lead back from what this call paints.
+  settings.RecordUndo = this->UndoLimit > 0;
+  if (!settings.RecordUndo)
+  {
+    this->ClearHistory();
+  }
   if (settings.Falloff == vtkOFBBrush::Custom && brush->GetCustomFalloff())
   {
     settings.CustomTable.resize(CustomTableSize);

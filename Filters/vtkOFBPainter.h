@@ -46,7 +46,8 @@
  * EndStroke), is one step. A step keeps only the previous values of the samples
  * it changed (sample id and value), so its memory is proportional to the number
  * of changed samples. The oldest steps are dropped when the history exceeds
- * UndoLimit bytes. If the OFB was changed by something else since this painter's
+ * UndoLimit bytes; with an UndoLimit of 0 no previous value is kept at all (the
+ * particle advector paints so). If the OFB was changed by something else since this painter's
  * last change (its modification time moved on, or its samples were rebuilt), the
  * history no longer describes it: the painter drops it, with a warning.
  *

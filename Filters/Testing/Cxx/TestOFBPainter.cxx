@@ -566,6 +566,22 @@ TEST(Painter, UndoRedoExactAndMemoryProportional)
   painter->Dab(-1.0, 0.0, 0.0);
   EXPECT_FALSE(painter->CanUndo());
   EXPECT_EQ(painter->GetUndoMemory(), 0);
+
+  // Without an undo budget nothing is kept, in a stroke either; a budget given back
+  // records the next step in full (no sample left marked as recorded).
+  painter->BeginStroke();
+  painter->StrokeTo(-1.0, 0.0, 0.0);
+  painter->StrokeTo(-1.0, 0.5, 0.0);
+  painter->EndStroke();
+  EXPECT_FALSE(painter->CanUndo());
+  EXPECT_EQ(painter->GetUndoMemory(), 0);
+  painter->SetUndoLimit(VTK_ID_MAX);
+  const std::vector<unsigned char> beforeLast = Copy(Colors(ofb));
+  painter->GetBrush()->SetColor(0.1, 0.9, 0.3);
+  const vtkIdType last = painter->Dab(-1.0, 0.25, 0.0);
+  EXPECT_GT(last, 0);
+  EXPECT_EQ(painter->Undo(), last);
+  EXPECT_TRUE(Copy(Colors(ofb)) == beforeLast);
 }
 
 //------------------------------------------------------------------------------

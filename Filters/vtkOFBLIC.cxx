@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -30,33 +32,66 @@ namespace
 // Samples per block between progress events and abort checks.
 constexpr vtkIdType BlockSize = 1 << 16;
 
-/// The normals as unit float vectors (the sampler's are already; other types convert).
-vtkSmartPointer<vtkFloatArray> UnitNormals(vtkDataArray* normals)
+/// A list of the values an intermediate result depends on, compared bit for bit.
+class CacheKey
 {
-  vtkSmartPointer<vtkFloatArray> out = vtkSmartPointer<vtkFloatArray>::New();
-  out->SetNumberOfComponents(3);
-  out->SetNumberOfTuples(normals->GetNumberOfTuples());
-  float* o = out->GetPointer(0);
-  vtkSMPTools::For(0,
-    normals->GetNumberOfTuples(),
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double n[3];
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        normals->GetTuple(i, n);
-        glm::dvec3 v(n[0], n[1], n[2]);
-        const double len = glm::length(v);
-        v = (len > 0.0 && std::isfinite(len)) ? v / len : glm::dvec3(0.0);
-        o[3 * i] = static_cast<float>(v.x);
-        o[3 * i + 1] = static_cast<float>(v.y);
-        o[3 * i + 2] = static_cast<float>(v.z);
-      }
-    });
-  return out;
+public:
+  CacheKey& Add(double v)
+  {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof(bits));
+    this->Values.push_back(bits);
+    return *this;
+  }
+  CacheKey& Add(std::uint64_t v)
+  {
+    this->Values.push_back(v);
+    return *this;
+  }
+  CacheKey& Add(const void* p) { return this->Add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p))); }
+  bool operator==(const CacheKey& o) const { return this->Values == o.Values; }
+  bool operator!=(const CacheKey& o) const { return !(*this == o); }
+
+private:
+  std::vector<std::uint64_t> Values;
+};
+
+template <typename T>
+void Release(std::vector<T>& v)
+{
+  std::vector<T>().swap(v);
 }
 }
+
+/**
+ * What vtkOFBLIC keeps between updates (see the class description), each part with the
+ * key of what it was computed from; an empty key is never valid.
+ */
+class vtkOFBLICCache
+{
+public:
+  CacheKey SamplesKey; // Samples, Mask, Masked
+  std::vector<vtkOFBLICSample> Samples;
+  std::vector<unsigned char> Mask;
+  vtkIdType Masked = 0;
+  CacheKey NoiseKey;
+  std::vector<float> Noise;
+  CacheKey LinesKey;
+  std::vector<vtkTypeInt32> Lines;
+  std::vector<float> Values; // work buffers, kept to avoid allocating every update
+  std::vector<float> Scratch;
+
+  void Clear()
+  {
+    *this = vtkOFBLICCache();
+    Release(this->Samples);
+    Release(this->Mask);
+    Release(this->Noise);
+    Release(this->Lines);
+    Release(this->Values);
+    Release(this->Scratch);
+  }
+};
 
 //------------------------------------------------------------------------------
 vtkOFBLIC::vtkOFBLIC()
@@ -90,8 +125,10 @@ vtkOFBLIC::vtkOFBLIC()
   , MaskOnSurface(false)
   , MaskColor{ 0.5, 0.5, 0.5 }
   , MaskIntensity(0.0)
+  , CacheStreamlines(true)
   , NumberOfMaskedSamples(0)
   , LastExecutionTime(0.0)
+  , Cache(new vtkOFBLICCache)
 {
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
@@ -101,6 +138,23 @@ vtkOFBLIC::vtkOFBLIC()
 vtkOFBLIC::~vtkOFBLIC()
 {
   this->SetNoiseArrayName(nullptr);
+  delete this->Cache;
+}
+
+//------------------------------------------------------------------------------
+unsigned long vtkOFBLIC::GetCacheMemorySize() const
+{
+  const vtkOFBLICCache& c = *this->Cache;
+  const std::size_t bytes = c.Samples.capacity() * sizeof(vtkOFBLICSample) + c.Mask.capacity() +
+    (c.Noise.capacity() + c.Values.capacity() + c.Scratch.capacity()) * sizeof(float) +
+    c.Lines.capacity() * sizeof(vtkTypeInt32);
+  return static_cast<unsigned long>((bytes + 1023) / 1024);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::ReleaseCache()
+{
+  this->Cache->Clear();
 }
 
 //------------------------------------------------------------------------------
@@ -144,20 +198,85 @@ vtkDataArray* vtkOFBLIC::FindField(vtkOFB* input)
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBLIC::PrepareField(vtkOFB* input,
-  vtkDataArray* vectors,
-  const float* normals,
-  std::vector<float>& field,
-  std::vector<unsigned char>& mask)
+bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normals)
+{
+  vtkOFBLICCache& cache = *this->Cache;
+  const vtkIdType n = input->GetNumberOfSamples();
+  const double structure = static_cast<double>(input->GetStructureMTime());
+  CacheKey samplesKey;
+  samplesKey.Add(structure)
+    .Add(static_cast<double>(n))
+    .Add(vectors)
+    .Add(static_cast<double>(vectors->GetMTime()))
+    .Add(normals)
+    .Add(static_cast<double>(normals->GetMTime()))
+    .Add(this->NormalizeVectors ? 1.0 : 0.0)
+    .Add(this->MaskThreshold)
+    .Add(this->MaskOnSurface ? 1.0 : 0.0);
+  if (cache.SamplesKey != samplesKey)
+  {
+    cache.SamplesKey = CacheKey();
+    cache.LinesKey = CacheKey();
+    cache.NoiseKey = CacheKey();
+    cache.Masked = this->PrepareSamples(input, vectors, normals);
+    cache.SamplesKey = samplesKey;
+  }
+  this->NumberOfMaskedSamples = cache.Masked;
+  if (cache.Masked == n)
+  {
+    vtkWarningMacro("The vector field is masked at every sample (zero, non-finite or below "
+                    "MaskThreshold): the LIC is the mask value everywhere.");
+  }
+  CacheKey noiseKey;
+  noiseKey.Add(structure).Add(static_cast<double>(n));
+  vtkDataArray* noiseArray = this->NoiseArrayName && *this->NoiseArrayName
+    ? input->GetSampleData()->GetArray(this->NoiseArrayName)
+    : nullptr;
+  if (noiseArray)
+  {
+    noiseKey.Add(noiseArray).Add(static_cast<double>(noiseArray->GetMTime()));
+  }
+  else
+  {
+    noiseKey.Add(this->NoiseArrayName && *this->NoiseArrayName ? 1.0 : 0.0)
+      .Add(static_cast<double>(this->NoiseType))
+      .Add(this->NoiseGrainSize)
+      .Add(this->MinNoiseValue)
+      .Add(this->MaxNoiseValue)
+      .Add(static_cast<double>(this->NumberOfNoiseLevels))
+      .Add(this->ImpulseNoiseProbability)
+      .Add(this->ImpulseNoiseBackgroundValue)
+      .Add(static_cast<double>(this->NoiseGeneratorSeed));
+  }
+  if (cache.NoiseKey != noiseKey)
+  {
+    cache.NoiseKey = CacheKey();
+    if (!this->PrepareNoise(input))
+    {
+      return false;
+    }
+    cache.NoiseKey = noiseKey;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normalsIn)
 {
   const vtkIdType n = input->GetNumberOfSamples();
-  field.assign(3 * n, 0.0f);
-  mask.assign(n, 0);
+  std::vector<vtkOFBLICSample>& samples = this->Cache->Samples;
+  std::vector<unsigned char>& mask = this->Cache->Mask;
+  samples.resize(n);
+  mask.resize(n);
+  // Float normals are used as given (the sampler's are unit); others are made unit.
+  vtkFloatArray* floatNormals = vtkFloatArray::SafeDownCast(normalsIn);
+  const float* normals = floatNormals ? floatNormals->GetPointer(0) : nullptr;
   const double threshold = this->MaskThreshold;
   const bool onSurface = this->MaskOnSurface;
   vtkSMPThreadLocal<double> localMax(0.0);
   vtkSMPThreadLocal<vtkIdType> localMasked(0);
-  // Tangential part, mask, and the largest magnitude left (for NormalizeVectors off).
+  // Position, normal, grid, the tangential part of the field, the mask, and the largest
+  // magnitude left (for NormalizeVectors off).
   vtkSMPTools::For(0,
     n,
     4096,
@@ -166,24 +285,49 @@ vtkIdType vtkOFBLIC::PrepareField(vtkOFB* input,
       double& maxMag = localMax.Local();
       vtkIdType& masked = localMasked.Local();
       double t[3];
+      double x[3];
       for (vtkIdType i = begin; i < end; ++i)
       {
+        vtkOFBLICSample& s = samples[i];
+        input->GetSamplePosition(i, x);
+        glm::dvec3 nrm;
+        if (normals)
+        {
+          nrm = vtkOFBLICTracer::Vec(normals, i);
+        }
+        else
+        {
+          normalsIn->GetTuple(i, t);
+          nrm = glm::dvec3(t[0], t[1], t[2]);
+          const double len = glm::length(nrm);
+          nrm = (len > 0.0 && std::isfinite(len)) ? nrm / len : glm::dvec3(0.0);
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          s.Position[c] = static_cast<float>(x[c]);
+          s.Normal[c] = static_cast<float>(nrm[c]);
+          s.Field[c] = 0.0f;
+        }
+        // The float normal, as the tracer reads it.
+        nrm = vtkOFBLICTracer::Vec(s.Normal);
+        s.Flags = input->GetSampleAxis(i);
         vectors->GetTuple(i, t);
         const glm::dvec3 v(t[0], t[1], t[2]);
-        const glm::dvec3 nrm = vtkOFBLICTracer::Vec(normals, i);
         const glm::dvec3 tangent = v - glm::dot(v, nrm) * nrm;
         const double mag = glm::length(tangent);
         const double test = onSurface ? mag : glm::length(v);
         if (!(mag > 0.0) || !std::isfinite(mag) || !std::isfinite(test) || test < threshold)
         {
           mask[i] = 1;
+          s.Flags |= 4;
           ++masked;
           continue;
         }
+        mask[i] = 0;
         maxMag = std::max(maxMag, mag);
         for (int c = 0; c < 3; ++c)
         {
-          field[3 * i + c] = static_cast<float>(tangent[c]);
+          s.Field[c] = static_cast<float>(tangent[c]);
         }
       }
     });
@@ -210,11 +354,12 @@ vtkIdType vtkOFBLIC::PrepareField(vtkOFB* input,
         {
           continue;
         }
-        glm::dvec3 v = vtkOFBLICTracer::Vec(field.data(), i);
+        float* f = samples[i].Field;
+        glm::dvec3 v = vtkOFBLICTracer::Vec(f);
         v /= normalize ? glm::length(v) : maxMag;
         for (int c = 0; c < 3; ++c)
         {
-          field[3 * i + c] = static_cast<float>(v[c]);
+          f[c] = static_cast<float>(v[c]);
         }
       }
     });
@@ -222,9 +367,11 @@ vtkIdType vtkOFBLIC::PrepareField(vtkOFB* input,
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBLIC::PrepareNoise(vtkOFB* input, const float* positions, std::vector<float>& noise)
+bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
 {
   const vtkIdType n = input->GetNumberOfSamples();
+  std::vector<float>& noise = this->Cache->Noise;
+  const vtkOFBLICSample* samples = this->Cache->Samples.data();
   noise.resize(n);
   if (this->NoiseArrayName && *this->NoiseArrayName)
   {
@@ -265,7 +412,7 @@ bool vtkOFBLIC::PrepareNoise(vtkOFB* input, const float* positions, std::vector<
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        noise[i] = generator.Evaluate(vtkOFBLICTracer::Vec(positions, i));
+        noise[i] = generator.Evaluate(vtkOFBLICTracer::Vec(samples[i].Position));
       }
     });
   return true;
@@ -304,23 +451,46 @@ std::vector<double> vtkOFBLIC::ComputeKernel() const
 
 //------------------------------------------------------------------------------
 bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
+  vtkTypeInt32* lines,
+  bool trace,
+  const std::vector<double>& weights,
   const float* input,
   float* output,
-  vtkIdType n,
   double progress0,
   double progress1)
 {
+  const vtkIdType n = static_cast<vtkIdType>(this->Cache->Mask.size());
+  const unsigned char* mask = this->Cache->Mask.data();
+  const int steps = tracer.NumberOfSteps;
+  const double* w = weights.data();
+  vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
   for (vtkIdType first = 0; first < n; first += BlockSize)
   {
     const vtkIdType last = std::min(n, first + BlockSize);
     vtkSMPTools::For(first,
       last,
-      512,
+      trace || !lines ? 512 : 4096,
       [&](vtkIdType begin, vtkIdType end)
       {
+        std::vector<vtkTypeInt32>& local = localLine.Local();
+        local.resize(2 * steps);
         for (vtkIdType i = begin; i < end; ++i)
         {
-          output[i] = tracer.Mask[i] ? input[i] : tracer.Convolve(i, input);
+          vtkTypeInt32* line = lines ? lines + 2 * steps * i : local.data();
+          if (mask[i])
+          {
+            if (trace)
+            {
+              std::fill(line, line + 2 * steps, -1);
+            }
+            output[i] = input[i];
+            continue;
+          }
+          if (trace || !lines)
+          {
+            tracer.Trace(i, line);
+          }
+          output[i] = vtkOFBLICTracer::Gather(i, line, steps, w, input);
         }
       });
     this->UpdateProgress(progress0 + (progress1 - progress0) * last / n);
@@ -387,14 +557,14 @@ void vtkOFBLIC::Stretch(std::vector<float>& values,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBLIC::HighPass(vtkOFB* input,
-  const float* positions,
-  const unsigned char* mask,
-  std::vector<float>& values)
+void vtkOFBLIC::HighPass(vtkOFB* input, std::vector<float>& values)
 {
+  const unsigned char* mask = this->Cache->Mask.data();
+  const vtkOFBLICSample* samples = this->Cache->Samples.data();
   Stretch(values, mask, 0.0, 0.0);
   const vtkIdType n = static_cast<vtkIdType>(values.size());
-  std::vector<float> out(n);
+  std::vector<float>& out = this->Cache->Scratch;
+  out.resize(n);
   const double radius = 1.5 * input->GetCellSize();
   vtkSMPTools::For(0,
     n,
@@ -408,7 +578,7 @@ void vtkOFBLIC::HighPass(vtkOFB* input,
           out[i] = values[i];
           continue;
         }
-        const glm::dvec3 c = vtkOFBLICTracer::Vec(positions, i);
+        const glm::dvec3 c = vtkOFBLICTracer::Vec(samples[i].Position);
         double sum = 0.0;
         int count = 0;
         input->ForEachSampleInSphere(&c.x,
@@ -539,39 +709,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     return 1;
   }
 
-  // Prepare: unit normals, sample positions, the tangential field, the mask, the noise.
-  vtkSmartPointer<vtkFloatArray> normals = vtkFloatArray::SafeDownCast(normalsIn);
-  if (!normals)
-  {
-    normals = UnitNormals(normalsIn);
-  }
-  std::vector<float> positions(3 * n);
-  vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double x[3];
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        input->GetSamplePosition(i, x);
-        for (int c = 0; c < 3; ++c)
-        {
-          positions[3 * i + c] = static_cast<float>(x[c]);
-        }
-      }
-    });
-  std::vector<float> field;
-  std::vector<unsigned char> mask;
-  this->NumberOfMaskedSamples =
-    this->PrepareField(input, vectors, normals->GetPointer(0), field, mask);
-  if (this->NumberOfMaskedSamples == n)
-  {
-    vtkWarningMacro("The vector field is masked at every sample (zero, non-finite or below "
-                    "MaskThreshold): the LIC is the mask value everywhere.");
-  }
-  std::vector<float> noise;
-  if (!this->PrepareNoise(input, positions.data(), noise))
+  if (!this->Prepare(input, vectors, normalsIn))
   {
     output->Initialize();
     return 1;
@@ -579,35 +717,63 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   this->UpdateProgress(0.05);
 
   // Convolve (Eq. 4), then the enhanced pass and the contrast stretch.
+  vtkOFBLICCache& cache = *this->Cache;
   vtkOFBLICTracer tracer;
   tracer.SetOFB(input);
-  tracer.Positions = positions.data();
-  tracer.Normals = normals->GetPointer(0);
-  tracer.Field = field.data();
-  tracer.Mask = mask.data();
+  tracer.Samples = cache.Samples.data();
   tracer.NumberOfSteps = this->NumberOfSteps;
   tracer.Step = this->StepSize * input->GetCellSize();
   tracer.SearchRadius = std::sqrt(3.0) * input->GetCellSize();
   tracer.FieldRadius =
     this->FieldInterpolation == FIELD_INVERSE_DISTANCE ? 1.5 * input->GetCellSize() : 0.0;
-  tracer.Weights = this->ComputeKernel();
-  std::vector<float> values(n);
+  const std::vector<double> weights = this->ComputeKernel();
+  // The kept streamlines, traced during the first pass when they are not valid.
+  CacheKey linesKey = cache.SamplesKey;
+  linesKey.Add(static_cast<double>(this->NumberOfSteps))
+    .Add(this->StepSize)
+    .Add(static_cast<double>(this->FieldInterpolation));
+  bool trace = true;
+  if (!this->CacheStreamlines)
+  {
+    cache.LinesKey = CacheKey();
+    Release(cache.Lines);
+  }
+  else if (cache.LinesKey == linesKey && !cache.Lines.empty())
+  {
+    trace = false;
+  }
+  else
+  {
+    cache.LinesKey = CacheKey();
+    cache.Lines.resize(static_cast<std::size_t>(n) * 2 * this->NumberOfSteps);
+  }
+  vtkTypeInt32* lines = cache.Lines.empty() ? nullptr : cache.Lines.data();
+  std::vector<float>& values = cache.Values;
+  values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
-  if (!this->Convolve(tracer, noise.data(), values.data(), n, 0.05, enhanced ? 0.5 : 0.95))
+  if (!this->Convolve(
+        tracer, lines, trace, weights, cache.Noise.data(), values.data(), 0.05, enhanced ? 0.5 : 0.95))
   {
     output->Initialize();
     return 1;
   }
+  if (lines)
+  {
+    cache.LinesKey = linesKey;
+  }
   if (enhanced)
   {
-    this->HighPass(input, positions.data(), mask.data(), values);
-    noise.swap(values);
-    if (!this->Convolve(tracer, noise.data(), values.data(), n, 0.5, 0.95))
+    this->HighPass(input, values);
+    std::vector<float>& pass1 = cache.Scratch;
+    pass1.swap(values);
+    values.resize(n);
+    if (!this->Convolve(tracer, lines, false, weights, pass1.data(), values.data(), 0.5, 0.95))
     {
       output->Initialize();
       return 1;
     }
   }
+  const std::vector<unsigned char>& mask = cache.Mask;
   if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
     this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)
   {
@@ -664,6 +830,7 @@ void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaskColor: (" << this->MaskColor[0] << ", " << this->MaskColor[1] << ", "
      << this->MaskColor[2] << ")\n";
   os << indent << "MaskIntensity: " << this->MaskIntensity << "\n";
+ os << indent << "CacheStreamlines: " << (this->CacheStreamlines ? "On" : "Off") << "\n";
   os << indent << "NumberOfMaskedSamples: " << this->NumberOfMaskedSamples << "\n";
   os << indent << "LastExecutionTime: " << this->LastExecutionTime << " ms\n";
 }

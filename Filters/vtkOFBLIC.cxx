@@ -29,8 +29,9 @@ vtkStandardNewMacro(vtkOFBLIC);
 
 namespace
 {
-// Samples per block between progress events and abort checks.
-constexpr vtkIdType BlockSize = 1 << 16;
+// Half-length of the long streamlines traced from a seed, in NumberOfSteps: each gives
+// the streamlines of the samples of its tile that it meets (fast LIC).
+constexpr int LongSteps = 4;
 
 /// A list of the values an intermediate result depends on, compared bit for bit.
 class CacheKey
@@ -56,11 +57,6 @@ private:
   std::vector<std::uint64_t> Values;
 };
 
-template <typename T>
-void Release(std::vector<T>& v)
-{
-  std::vector<T>().swap(v);
-}
 }
 
 /**
@@ -71,25 +67,28 @@ class vtkOFBLICCache
 {
 public:
   CacheKey SamplesKey; // Samples, Mask, Masked
-  std::vector<vtkOFBLICSample> Samples;
-  std::vector<unsigned char> Mask;
+  vtkOFBLICBuffer<vtkOFBLICSample> Samples;
+  vtkOFBLICBuffer<unsigned char> Mask;
   vtkIdType Masked = 0;
   CacheKey NoiseKey;
-  std::vector<float> Noise;
+  vtkOFBLICBuffer<float> Noise;
   CacheKey LinesKey;
-  std::vector<vtkTypeInt32> Lines;
-  std::vector<float> Values; // work buffers, kept to avoid allocating every update
-  std::vector<float> Scratch;
+  vtkOFBLICBuffer<vtkTypeInt32> Lines;
+  vtkOFBLICBuffer<unsigned char> Covered; // samples given their streamline, while tracing
+  vtkOFBLICBuffer<float> Values; // work buffers, kept to avoid allocating every update
+  vtkOFBLICBuffer<float> Scratch;
 
   void Clear()
   {
-    *this = vtkOFBLICCache();
-    Release(this->Samples);
-    Release(this->Mask);
-    Release(this->Noise);
-    Release(this->Lines);
-    Release(this->Values);
-    Release(this->Scratch);
+    this->SamplesKey = this->NoiseKey = this->LinesKey = CacheKey();
+    this->Masked = 0;
+    this->Samples.Release();
+    this->Mask.Release();
+    this->Noise.Release();
+    this->Lines.Release();
+    this->Covered.Release();
+    this->Values.Release();
+    this->Scratch.Release();
   }
 };
 
@@ -146,6 +145,7 @@ unsigned long vtkOFBLIC::GetCacheMemorySize() const
 {
   const vtkOFBLICCache& c = *this->Cache;
   const std::size_t bytes = c.Samples.capacity() * sizeof(vtkOFBLICSample) + c.Mask.capacity() +
+    c.Covered.capacity() +
     (c.Noise.capacity() + c.Values.capacity() + c.Scratch.capacity()) * sizeof(float) +
     c.Lines.capacity() * sizeof(vtkTypeInt32);
   return static_cast<unsigned long>((bytes + 1023) / 1024);
@@ -264,8 +264,8 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
 vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normalsIn)
 {
   const vtkIdType n = input->GetNumberOfSamples();
-  std::vector<vtkOFBLICSample>& samples = this->Cache->Samples;
-  std::vector<unsigned char>& mask = this->Cache->Mask;
+  vtkOFBLICBuffer<vtkOFBLICSample>& samples = this->Cache->Samples;
+  vtkOFBLICBuffer<unsigned char>& mask = this->Cache->Mask;
   samples.resize(n);
   mask.resize(n);
   // Float normals are used as given (the sampler's are unit); others are made unit.
@@ -275,59 +275,96 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
   const bool onSurface = this->MaskOnSurface;
   vtkSMPThreadLocal<double> localMax(0.0);
   vtkSMPThreadLocal<vtkIdType> localMasked(0);
-  // Position, normal, grid, the tangential part of the field, the mask, and the largest
-  // magnitude left (for NormalizeVectors off).
+  // Position, normal, grid and tile, the tangential part of the field, the mask, and the
+  // largest magnitude left (for NormalizeVectors off); row by row of cells.
+  const vtkOFBLICTiles tiles(input->GetDimensions());
+  const vtkTypeUInt32* offsets = input->GetCellOffsets()->GetPointer(0);
+  const float* depths = input->GetDepths()->GetPointer(0);
+  vtkFloatArray* floatVectors = vtkFloatArray::SafeDownCast(vectors);
+  const float* vectorValues = floatVectors ? floatVectors->GetPointer(0) : nullptr;
+  const double* origin = input->GetOrigin();
+  const double cellSize = input->GetCellSize();
+  vtkIdType rowBase[4] = { 0, 0, 0, 0 };
+  for (int a = 0; a < 3; ++a)
+  {
+    rowBase[a + 1] = rowBase[a] + tiles.Dimensions[(a + 2) % 3];
+  }
   vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
+    rowBase[3],
+    16,
+    [&](vtkIdType beginRow, vtkIdType endRow)
     {
       double& maxMag = localMax.Local();
       vtkIdType& masked = localMasked.Local();
       double t[3];
       double x[3];
-      for (vtkIdType i = begin; i < end; ++i)
+      for (vtkIdType r = beginRow; r < endRow; ++r)
       {
-        vtkOFBLICSample& s = samples[i];
-        input->GetSamplePosition(i, x);
-        glm::dvec3 nrm;
-        if (normals)
+        const int a = r < rowBase[1] ? 0 : (r < rowBase[2] ? 1 : 2);
+        const int ua = (a + 1) % 3;
+        const int va = (a + 2) % 3;
+        const vtkIdType iv = r - rowBase[a];
+        const vtkIdType nu = tiles.Dimensions[ua];
+        const vtkIdType row = input->GetGridCellBase(a) + iv * nu;
+        x[va] = origin[va] + (iv + 0.5) * cellSize;
+        for (vtkIdType iu = 0; iu < nu; ++iu)
         {
-          nrm = vtkOFBLICTracer::Vec(normals, i);
-        }
-        else
-        {
-          normalsIn->GetTuple(i, t);
-          nrm = glm::dvec3(t[0], t[1], t[2]);
-          const double len = glm::length(nrm);
-          nrm = (len > 0.0 && std::isfinite(len)) ? nrm / len : glm::dvec3(0.0);
-        }
-        for (int c = 0; c < 3; ++c)
-        {
-          s.Position[c] = static_cast<float>(x[c]);
-          s.Normal[c] = static_cast<float>(nrm[c]);
-          s.Field[c] = 0.0f;
-        }
-        // The float normal, as the tracer reads it.
-        nrm = vtkOFBLICTracer::Vec(s.Normal);
-        s.Flags = input->GetSampleAxis(i);
-        vectors->GetTuple(i, t);
-        const glm::dvec3 v(t[0], t[1], t[2]);
-        const glm::dvec3 tangent = v - glm::dot(v, nrm) * nrm;
-        const double mag = glm::length(tangent);
-        const double test = onSurface ? mag : glm::length(v);
-        if (!(mag > 0.0) || !std::isfinite(mag) || !std::isfinite(test) || test < threshold)
-        {
-          mask[i] = 1;
-          s.Flags |= 4;
-          ++masked;
-          continue;
-        }
-        mask[i] = 0;
-        maxMag = std::max(maxMag, mag);
-        for (int c = 0; c < 3; ++c)
-        {
-          s.Field[c] = static_cast<float>(tangent[c]);
+          x[ua] = origin[ua] + (iu + 0.5) * cellSize;
+          const vtkTypeInt32 flags =
+            static_cast<vtkTypeInt32>(a | (tiles.TileOf(a, iu, iv) << 3));
+          for (vtkIdType i = offsets[row + iu], end = offsets[row + iu + 1]; i < end; ++i)
+          {
+            x[a] = origin[a] + depths[i];
+            vtkOFBLICSample& s = samples[i];
+            glm::dvec3 nrm;
+            if (normals)
+            {
+              nrm = vtkOFBLICTracer::Vec(normals, i);
+            }
+            else
+            {
+              normalsIn->GetTuple(i, t);
+              nrm = glm::dvec3(t[0], t[1], t[2]);
+              const double len = glm::length(nrm);
+              nrm = (len > 0.0 && std::isfinite(len)) ? nrm / len : glm::dvec3(0.0);
+            }
+            for (int c = 0; c < 3; ++c)
+            {
+              s.Position[c] = static_cast<float>(x[c]);
+              s.Normal[c] = static_cast<float>(nrm[c]);
+              s.Field[c] = 0.0f;
+            }
+            // The float normal, as the tracer reads it.
+            nrm = vtkOFBLICTracer::Vec(s.Normal);
+            s.Flags = flags;
+            if (vectorValues)
+            {
+              t[0] = vectorValues[3 * i];
+              t[1] = vectorValues[3 * i + 1];
+              t[2] = vectorValues[3 * i + 2];
+            }
+            else
+            {
+              vectors->GetTuple(i, t);
+            }
+            const glm::dvec3 v(t[0], t[1], t[2]);
+            const glm::dvec3 tangent = v - glm::dot(v, nrm) * nrm;
+            const double mag = glm::length(tangent);
+            const double test = onSurface ? mag : glm::length(v);
+            if (!(mag > 0.0) || !std::isfinite(mag) || !std::isfinite(test) || test < threshold)
+            {
+              mask[i] = 1;
+              s.Flags |= 4;
+              ++masked;
+              continue;
+            }
+            mask[i] = 0;
+            maxMag = std::max(maxMag, mag);
+            for (int c = 0; c < 3; ++c)
+            {
+              s.Field[c] = static_cast<float>(tangent[c]);
+            }
+          }
         }
       }
     });
@@ -370,7 +407,7 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
 bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
 {
   const vtkIdType n = input->GetNumberOfSamples();
-  std::vector<float>& noise = this->Cache->Noise;
+  vtkOFBLICBuffer<float>& noise = this->Cache->Noise;
   const vtkOFBLICSample* samples = this->Cache->Samples.data();
   noise.resize(n);
   if (this->NoiseArrayName && *this->NoiseArrayName)
@@ -459,41 +496,55 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   double progress0,
   double progress1)
 {
-  const vtkIdType n = static_cast<vtkIdType>(this->Cache->Mask.size());
   const unsigned char* mask = this->Cache->Mask.data();
   const int steps = tracer.NumberOfSteps;
   const double* w = weights.data();
-  vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
-  for (vtkIdType first = 0; first < n; first += BlockSize)
+  const vtkOFBLICTiles tiles(tracer.Dimensions);
+  const vtkIdType numberOfTiles = tiles.GetNumberOfTiles();
+  const vtkIdType tilesPerBlock = std::max<vtkIdType>(1, numberOfTiles / 16);
+  const bool fast = lines && trace;
+  if (fast)
   {
-    const vtkIdType last = std::min(n, first + BlockSize);
+    this->Cache->Covered.resize(this->Cache->Mask.size());
+  }
+  unsigned char* covered = this->Cache->Covered.data();
+  vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
+  for (vtkIdType first = 0; first < numberOfTiles; first += tilesPerBlock)
+  {
+    const vtkIdType last = std::min(numberOfTiles, first + tilesPerBlock);
     vtkSMPTools::For(first,
       last,
-      trace || !lines ? 512 : 4096,
+      1,
       [&](vtkIdType begin, vtkIdType end)
       {
         std::vector<vtkTypeInt32>& local = localLine.Local();
-        local.resize(2 * steps);
-        for (vtkIdType i = begin; i < end; ++i)
+        local.resize(std::max(2 * steps, 2 * LongSteps * steps + 1));
+        for (vtkIdType t = begin; t < end; ++t)
         {
-          vtkTypeInt32* line = lines ? lines + 2 * steps * i : local.data();
-          if (mask[i])
+          if (fast)
           {
-            if (trace)
+            this->TraceTile(tracer, tiles, t, lines, covered, local.data());
+          }
+          tiles.ForEachSample(t,
+            tracer.Offsets,
+            tracer.CellBase,
+            [&](vtkIdType i)
             {
-              std::fill(line, line + 2 * steps, -1);
-            }
-            output[i] = input[i];
-            continue;
-          }
-          if (trace || !lines)
-          {
-            tracer.Trace(i, line);
-          }
-          output[i] = vtkOFBLICTracer::Gather(i, line, steps, w, input);
+              if (mask[i])
+              {
+                output[i] = input[i];
+                return;
+              }
+              vtkTypeInt32* line = lines ? lines + 2 * steps * i : local.data();
+              if (!lines)
+              {
+                tracer.Trace(i, line);
+              }
+              output[i] = vtkOFBLICTracer::Gather(i, line, steps, w, input);
+            });
         }
       });
-    this->UpdateProgress(progress0 + (progress1 - progress0) * last / n);
+    this->UpdateProgress(progress0 + (progress1 - progress0) * last / numberOfTiles);
     if (this->GetAbortExecute())
     {
       return false;
@@ -503,12 +554,68 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBLIC::Stretch(std::vector<float>& values,
+void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
+  const vtkOFBLICTiles& tiles,
+  vtkIdType tile,
+  vtkTypeInt32* lines,
+  unsigned char* covered,
+  vtkTypeInt32* sequence)
+{
+  const unsigned char* mask = this->Cache->Mask.data();
+  const vtkOFBLICSample* samples = tracer.Samples;
+  const int n = tracer.NumberOfSteps;
+  const int m = LongSteps * n;
+  tiles.ForEachSample(tile, tracer.Offsets, tracer.CellBase, [&](vtkIdType i) { covered[i] = 0; });
+  tiles.ForEachSample(tile,
+    tracer.Offsets,
+    tracer.CellBase,
+    [&](vtkIdType i)
+    {
+      if (mask[i])
+      {
+        std::fill(lines + 2 * n * i, lines + 2 * n * (i + 1), -1);
+        return;
+      }
+      if (covered[i])
+      {
+        return;
+      }
+      // A long streamline through i: backward steps reversed, i, forward steps.
+      vtkTypeInt32* seq = sequence;
+      const int back = tracer.TraceDirection(i, -1, m, seq);
+      std::reverse(seq, seq + back);
+      seq[back] = static_cast<vtkTypeInt32>(i);
+      const int ahead = tracer.TraceDirection(i, 1, m, seq + back + 1);
+      const int length = back + 1 + ahead;
+      // Where the streamline stopped by itself, a window may end there (as a sample's own
+      // streamline would); where it ran out of steps, the window must fit.
+      const int low = back < m ? 0 : n;
+      const int high = ahead < m ? length - 1 : length - 1 - n;
+      for (int t = low; t <= high; ++t)
+      {
+        const vtkIdType k = seq[t];
+        if (samples[k].Tile() != tile || covered[k])
+        {
+          continue;
+        }
+        covered[k] = 1;
+        vtkTypeInt32* line = lines + 2 * n * k;
+        for (int s = 1; s <= n; ++s)
+        {
+          line[s - 1] = t + s < length ? seq[t + s] : -1;
+          line[n + s - 1] = t - s >= 0 ? seq[t - s] : -1;
+        }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::Stretch(float* values,
+  vtkIdType n,
   const unsigned char* mask,
   double low,
   double high)
 {
-  const vtkIdType n = static_cast<vtkIdType>(values.size());
   vtkSMPThreadLocal<float> localMin(std::numeric_limits<float>::max());
   vtkSMPThreadLocal<float> localMax(std::numeric_limits<float>::lowest());
   vtkSMPTools::For(0,
@@ -557,13 +664,14 @@ void vtkOFBLIC::Stretch(std::vector<float>& values,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBLIC::HighPass(vtkOFB* input, std::vector<float>& values)
+void vtkOFBLIC::HighPass(vtkOFB* input)
 {
+  vtkOFBLICBuffer<float>& values = this->Cache->Values;
   const unsigned char* mask = this->Cache->Mask.data();
   const vtkOFBLICSample* samples = this->Cache->Samples.data();
-  Stretch(values, mask, 0.0, 0.0);
   const vtkIdType n = static_cast<vtkIdType>(values.size());
-  std::vector<float>& out = this->Cache->Scratch;
+  Stretch(values.data(), n, mask, 0.0, 0.0);
+  vtkOFBLICBuffer<float>& out = this->Cache->Scratch;
   out.resize(n);
   const double radius = 1.5 * input->GetCellSize();
   vtkSMPTools::For(0,
@@ -596,16 +704,16 @@ void vtkOFBLIC::HighPass(vtkOFB* input, std::vector<float>& values)
       }
     });
   values.swap(out);
-  Stretch(values, mask, 0.0, 0.0);
+  Stretch(values.data(), n, mask, 0.0, 0.0);
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBLIC::WriteOutput(vtkOFB* input,
   vtkOFB* output,
-  const std::vector<float>& values,
-  const std::vector<unsigned char>& mask)
+  const float* values,
+  const unsigned char* mask,
+  vtkIdType n)
 {
-  const vtkIdType n = static_cast<vtkIdType>(values.size());
   // A re-run over the same input (another AnimationPhase) writes into the previous
   // output's LIC and LICMask, recycled by the pipeline (vtkOFB::Recycle), and marks
   // Modified() only what changed; the shallow copy of an unchanged input keeps the
@@ -688,7 +796,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   const vtkIdType n = input->GetNumberOfSamples();
   if (n == 0)
   {
-    this->WriteOutput(input, output, std::vector<float>(), std::vector<unsigned char>());
+    this->WriteOutput(input, output, nullptr, nullptr, 0);
     return 1;
   }
   vtkDataArray* vectors = this->FindField(input);
@@ -736,7 +844,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   if (!this->CacheStreamlines)
   {
     cache.LinesKey = CacheKey();
-    Release(cache.Lines);
+    cache.Lines.Release();
   }
   else if (cache.LinesKey == linesKey && !cache.Lines.empty())
   {
@@ -748,7 +856,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     cache.Lines.resize(static_cast<std::size_t>(n) * 2 * this->NumberOfSteps);
   }
   vtkTypeInt32* lines = cache.Lines.empty() ? nullptr : cache.Lines.data();
-  std::vector<float>& values = cache.Values;
+  vtkOFBLICBuffer<float>& values = cache.Values;
   values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
   if (!this->Convolve(
@@ -763,8 +871,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   }
   if (enhanced)
   {
-    this->HighPass(input, values);
-    std::vector<float>& pass1 = cache.Scratch;
+    this->HighPass(input);
+    vtkOFBLICBuffer<float>& pass1 = cache.Scratch;
     pass1.swap(values);
     values.resize(n);
     if (!this->Convolve(tracer, lines, false, weights, pass1.data(), values.data(), 0.5, 0.95))
@@ -773,17 +881,17 @@ int vtkOFBLIC::RequestData(vtkInformation*,
       return 1;
     }
   }
-  const std::vector<unsigned char>& mask = cache.Mask;
   if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
     this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)
   {
-    Stretch(values,
-      mask.data(),
+    Stretch(values.data(),
+      n,
+      cache.Mask.data(),
       this->LowLICContrastEnhancementFactor,
       this->HighLICContrastEnhancementFactor);
   }
 
-  this->WriteOutput(input, output, values, mask);
+  this->WriteOutput(input, output, values.data(), cache.Mask.data(), n);
   this->UpdateProgress(1.0);
   timer->StopTimer();
   this->LastExecutionTime = 1000.0 * timer->GetElapsedTime();

@@ -35,18 +35,29 @@
  * LICIntensity, MapModeBias, the colour part of EnhanceContrast, MaskColor and
  * MaskIntensity in the final colour) are stored for the mapper.
  *
+ * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (64 x 64
+ * cells of a grid); from each sample of the tile not yet given a streamline, one four
+ * times as long is traced both ways, and every sample of the tile that it meets gets the
+ * NumberOfSteps steps each way around that meeting as its streamline. Each sample's
+ * streamline thus passes through it (within the half cell of the sample lookup), but
+ * most are read off a neighbour's instead of traced: a few steps a sample instead of
+ * 2 NumberOfSteps. Tiles are independent, so the result does not depend on the number
+ * of threads.
+ *
  * Streamlines are traced once and kept (CacheStreamlines, default on): an update that
  * changes only the kernel, AnimationPhase, the noise or the enhancement re-convolves by
  * reading the kept streamlines instead of tracing them again, which makes an animation
  * frame many times cheaper than the first computation. What is kept, per sample:
  * 4 bytes x 2 NumberOfSteps of streamline (80 bytes at 10 steps, 160 at the default 20),
  * 40 bytes of packed position, normal and field, 1 byte of mask and 4 of noise, plus
- * 8 bytes of work buffers: 133 bytes a sample at 10 steps (127 MB for 956549 samples).
+ * 9 bytes of work buffers: 134 bytes a sample at 10 steps (128 MB for 956549 samples).
  * The streamlines are traced again when the input's structure, field or normals array
  * (pointer or MTime), NumberOfSteps, StepSize, NormalizeVectors, FieldInterpolation,
  * MaskThreshold or MaskOnSurface change. With CacheStreamlines off only the packed
- * samples, mask, noise and work buffers are kept (53 bytes a sample) and every update
- * traces again. GetCacheMemorySize() gives what is held.
+ * samples, mask, noise and work buffers are kept (53 bytes a sample), every update
+ * traces again, and every sample traces its own streamline from its own position (the
+ * plain LIC, several times slower than fast LIC). GetCacheMemorySize() gives what is
+ * held.
  *
  * The convolution runs with vtkSMPTools; every sample is computed independently, so the
  * result is the same for any number of threads, with or without the kept streamlines. Progress events are sent and
@@ -73,6 +84,7 @@
 class vtkDataArray;
 class vtkOFBLICCache;
 class vtkOFBLICTracer;
+struct vtkOFBLICTiles;
 
 class VTKOFBFILTERS_EXPORT vtkOFBLIC : public vtkOFBAlgorithm
 {
@@ -385,18 +397,34 @@ protected:
     double progress0,
     double progress1);
 
+  /**
+   * The streamlines of the samples of one tile into `lines` (fast LIC): from each sample
+   * not yet given one, a streamline LongSteps times as long is traced, and every sample
+   * of the tile it meets gets the window of NumberOfSteps steps each way around that
+   * meeting. `covered` marks the samples given one; `sequence` is a buffer of
+   * 2 LongSteps NumberOfSteps + 1 ids.
+   */
+  void TraceTile(const vtkOFBLICTracer& tracer,
+    const vtkOFBLICTiles& tiles,
+    vtkIdType tile,
+    vtkTypeInt32* lines,
+    unsigned char* covered,
+    vtkTypeInt32* sequence);
+
   /// The first pass's result stretched and high-pass filtered, in place (EnhancedLIC).
-  void HighPass(vtkOFB* input, std::vector<float>& values);
+  void HighPass(vtkOFB* input);
 
   /// The input's arrays shared, with "LIC" (values clamped, the mask value where masked)
   /// and "LICMask" added.
   void WriteOutput(vtkOFB* input,
     vtkOFB* output,
-    const std::vector<float>& values,
-    const std::vector<unsigned char>& mask);
+    const float* values,
+    const unsigned char* mask,
+    vtkIdType n);
 
   /// Stretch the unmasked values: m + low * range -> 0, M - high * range -> 1, clamped.
-  static void Stretch(std::vector<float>& values,
+  static void Stretch(float* values,
+    vtkIdType n,
     const unsigned char* mask,
     double low,
     double high);

@@ -8,14 +8,121 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <new>
+#include <utility>
 #include <vector>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
+/**
+ * An array of trivially copyable T whose values are not initialized (resize() leaves
+ * them undefined, even the old ones when it grows): vtkOFBLIC writes every value before
+ * reading it, so clearing would only cost time. Large arrays are mapped in 2 MiB pages
+ * where the system offers them (Linux transparent huge pages), which makes the first
+ * touch of a new array hundreds of times fewer page faults.
+ */
+template <typename T>
+class vtkOFBLICBuffer
+{
+public:
+  vtkOFBLICBuffer() = default;
+  vtkOFBLICBuffer(const vtkOFBLICBuffer&) = delete;
+  vtkOFBLICBuffer& operator=(const vtkOFBLICBuffer&) = delete;
+  ~vtkOFBLICBuffer() { this->Release(); }
+
+  void resize(std::size_t n)
+  {
+    if (n > this->Capacity)
+    {
+      this->Release();
+      this->Allocate(n);
+    }
+    this->Size = n;
+  }
+  void Release()
+  {
+    if (this->Data)
+    {
+#ifdef __linux__
+      if (this->Mapped)
+      {
+        munmap(this->Mapped, this->MappedBytes);
+      }
+      else
+#endif
+      {
+        std::free(this->Data);
+      }
+    }
+    this->Data = nullptr;
+    this->Mapped = nullptr;
+    this->Size = this->Capacity = this->MappedBytes = 0;
+  }
+  void swap(vtkOFBLICBuffer& o)
+  {
+    std::swap(this->Data, o.Data);
+    std::swap(this->Mapped, o.Mapped);
+    std::swap(this->MappedBytes, o.MappedBytes);
+    std::swap(this->Size, o.Size);
+    std::swap(this->Capacity, o.Capacity);
+  }
+  T* data() { return this->Data; }
+  const T* data() const { return this->Data; }
+  std::size_t size() const { return this->Size; }
+  std::size_t capacity() const { return this->Capacity; }
+  bool empty() const { return this->Size == 0; }
+  T& operator[](std::size_t i) { return this->Data[i]; }
+  const T& operator[](std::size_t i) const { return this->Data[i]; }
+
+private:
+  void Allocate(std::size_t n)
+  {
+    const std::size_t bytes = n * sizeof(T);
+#ifdef __linux__
+    constexpr std::size_t huge = std::size_t(2) << 20;
+    if (bytes >= 2 * huge)
+    {
+      // Over-map by a page and use the 2 MiB aligned part inside.
+      const std::size_t mapped = (bytes + 2 * huge - 1) / huge * huge;
+      void* p = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+      if (p != MAP_FAILED)
+      {
+        const std::size_t address = reinterpret_cast<std::size_t>(p);
+        const std::size_t aligned = (address + huge - 1) / huge * huge;
+        madvise(reinterpret_cast<void*>(aligned), mapped - (aligned - address), MADV_HUGEPAGE);
+        this->Mapped = p;
+        this->MappedBytes = mapped;
+        this->Data = reinterpret_cast<T*>(aligned);
+        this->Capacity = n;
+        return;
+      }
+    }
+#endif
+    this->Data = static_cast<T*>(std::malloc(std::max<std::size_t>(bytes, 1)));
+    if (!this->Data)
+    {
+      throw std::bad_alloc();
+    }
+    this->Capacity = n;
+  }
+
+  T* Data = nullptr;
+  void* Mapped = nullptr;
+  std::size_t MappedBytes = 0;
+  std::size_t Size = 0;
+  std::size_t Capacity = 0;
+};
 
 /**
  * What a streamline step reads of a sample, packed in 40 bytes so that one step touches
  * one place: the position (world coordinates), the unit normal, the tangent field
  * (scaled to the step, zero where masked) and the flags (grid axis in bits 0-1,
- * masked in bit 2).
+ * masked in bit 2, the tile of vtkOFBLICTiles from bit 3).
  */
 struct vtkOFBLICSample
 {
@@ -26,6 +133,66 @@ struct vtkOFBLICSample
 
   int Axis() const { return this->Flags & 3; }
   bool Masked() const { return (this->Flags & 4) != 0; }
+  vtkIdType Tile() const { return this->Flags >> 3; }
+};
+
+/**
+ * The cells of the three grids in square tiles of Size x Size cells, numbered grid by
+ * grid, row by row: vtkOFBLIC traces and convolves tile by tile (the streamlines of a
+ * tile stay in a neighbourhood that stays in a core's cache).
+ */
+struct vtkOFBLICTiles
+{
+  static constexpr vtkIdType Size = 128;
+  vtkIdType Dimensions[3] = { 0, 0, 0 };
+  vtkIdType U[3] = { 0, 0, 0 }; // tiles along u and v of each grid
+  vtkIdType V[3] = { 0, 0, 0 };
+  vtkIdType Base[4] = { 0, 0, 0, 0 };
+
+  explicit vtkOFBLICTiles(const vtkIdType dims[3])
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Dimensions[a] = dims[a];
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      this->U[a] = (dims[(a + 1) % 3] + Size - 1) / Size;
+      this->V[a] = (dims[(a + 2) % 3] + Size - 1) / Size;
+      this->Base[a + 1] = this->Base[a] + this->U[a] * this->V[a];
+    }
+  }
+
+  vtkIdType GetNumberOfTiles() const { return this->Base[3]; }
+
+  /// The tile of cell (u, v) of grid a.
+  vtkIdType TileOf(int a, vtkIdType u, vtkIdType v) const
+  {
+    return this->Base[a] + (v / Size) * this->U[a] + u / Size;
+  }
+
+  /**
+   * Call f(i) for every sample of tile t, row by row (`offsets`: the OFB's cell offsets,
+   * `cellBase`: the first cell of each grid).
+   */
+  template <typename F>
+  void ForEachSample(vtkIdType t, const vtkTypeUInt32* offsets, const vtkIdType* cellBase, F&& f) const
+  {
+    const int a = t < this->Base[1] ? 0 : (t < this->Base[2] ? 1 : 2);
+    const vtkIdType nu = this->Dimensions[(a + 1) % 3];
+    const vtkIdType nv = this->Dimensions[(a + 2) % 3];
+    const vtkIdType tu = (t - this->Base[a]) % this->U[a] * Size;
+    const vtkIdType tv = (t - this->Base[a]) / this->U[a] * Size;
+    for (vtkIdType v = tv; v < std::min(nv, tv + Size); ++v)
+    {
+      const vtkIdType row = cellBase[a] + v * nu;
+      const vtkIdType end = offsets[row + std::min(nu, tu + Size)];
+      for (vtkIdType i = offsets[row + tu]; i < end; ++i)
+      {
+        f(i);
+      }
+    }
+  }
 };
 
 /**
@@ -114,6 +281,26 @@ public:
     return best;
   }
 
+  /**
+   * Up to `steps` steps from sample i in direction dir (+1 forward, -1 backward), the
+   * samples met written to out; returns how many (fewer where the streamline stops).
+   */
+  int TraceDirection(vtkIdType i, int dir, int steps, vtkTypeInt32* out) const
+  {
+    glm::dvec3 p = Vec(this->Samples[i].Position);
+    vtkIdType j = i;
+    for (int s = 0; s < steps; ++s)
+    {
+      j = this->Advance(p, j, dir);
+      if (j < 0)
+      {
+        return s;
+      }
+      out[s] = static_cast<vtkTypeInt32>(j);
+    }
+    return steps;
+  }
+
   /// The streamline of sample i into line[0, 2 NumberOfSteps) (see the class comment).
   void Trace(vtkIdType i, vtkTypeInt32* line) const
   {
@@ -121,22 +308,7 @@ public:
     for (int dir = 1; dir >= -1; dir -= 2)
     {
       vtkTypeInt32* out = line + (dir > 0 ? 0 : n);
-      glm::dvec3 p = Vec(this->Samples[i].Position);
-      vtkIdType j = i;
-      int s = 0;
-      for (; s < n; ++s)
-      {
-        j = this->Advance(p, j, dir);
-        if (j < 0)
-        {
-          break;
-        }
-        out[s] = static_cast<vtkTypeInt32>(j);
-      }
-      for (; s < n; ++s)
-      {
-        out[s] = -1;
-      }
+      std::fill(out + this->TraceDirection(i, dir, n, out), out + n, -1);
     }
   }
 

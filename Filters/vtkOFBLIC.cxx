@@ -31,7 +31,7 @@ namespace
 {
 // Half-length of the long streamlines traced from a seed, in NumberOfSteps: each gives
 // the streamlines of the samples of its tile that it meets (fast LIC).
-constexpr int LongSteps = 4;
+constexpr int LongSteps = 3;
 
 /// A list of the values an intermediate result depends on, compared bit for bit.
 class CacheKey
@@ -518,7 +518,7 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
       [&](vtkIdType begin, vtkIdType end)
       {
         std::vector<vtkTypeInt32>& local = localLine.Local();
-        local.resize(std::max(2 * steps, 2 * LongSteps * steps + 1));
+        local.resize(std::max(2 * steps, 3 * LongSteps * steps + 1));
         for (vtkIdType t = begin; t < end; ++t)
         {
           if (fast)
@@ -581,11 +581,12 @@ void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
         return;
       }
       // A long streamline through i: backward steps reversed, i, forward steps.
-      vtkTypeInt32* seq = sequence;
-      const int back = tracer.TraceDirection(i, -1, m, seq);
-      std::reverse(seq, seq + back);
+      int ahead, back;
+      vtkTypeInt32* backward = sequence + 2 * m + 1;
+      tracer.TraceBoth(i, m, sequence + m + 1, ahead, backward, back);
+      vtkTypeInt32* seq = sequence + m - back;
+      std::reverse_copy(backward, backward + back, seq);
       seq[back] = static_cast<vtkTypeInt32>(i);
-      const int ahead = tracer.TraceDirection(i, 1, m, seq + back + 1);
       const int length = back + 1 + ahead;
       // Where the streamline stopped by itself, a window may end there (as a sample's own
       // streamline would); where it ran out of steps, the window must fit.
@@ -673,34 +674,84 @@ void vtkOFBLIC::HighPass(vtkOFB* input)
   Stretch(values.data(), n, mask, 0.0, 0.0);
   vtkOFBLICBuffer<float>& out = this->Cache->Scratch;
   out.resize(n);
-  const double radius = 1.5 * input->GetCellSize();
+  // The mean over the samples within 1.5 cells: those of the sample's own grid, in the
+  // 3 x 3 cells around its cell (no other cell of the grid is that near), else, where
+  // fewer than three are (the grid sees the surface at a grazing angle), those of all
+  // three grids.
+  const double cellSize = input->GetCellSize();
+  const double radius = 1.5 * cellSize;
+  const vtkIdType* dims = input->GetDimensions();
+  const vtkTypeUInt32* offsets = input->GetCellOffsets()->GetPointer(0);
+  const float* depths = input->GetDepths()->GetPointer(0);
+  vtkIdType rowBase[4] = { 0, 0, 0, 0 };
+  for (int a = 0; a < 3; ++a)
+  {
+    rowBase[a + 1] = rowBase[a] + dims[(a + 2) % 3];
+  }
   vtkSMPTools::For(0,
-    n,
-    1024,
-    [&](vtkIdType begin, vtkIdType end)
+    rowBase[3],
+    16,
+    [&](vtkIdType beginRow, vtkIdType endRow)
     {
-      for (vtkIdType i = begin; i < end; ++i)
+      for (vtkIdType r = beginRow; r < endRow; ++r)
       {
-        if (mask[i])
+        const int a = r < rowBase[1] ? 0 : (r < rowBase[2] ? 1 : 2);
+        const vtkIdType nu = dims[(a + 1) % 3];
+        const vtkIdType nv = dims[(a + 2) % 3];
+        const vtkIdType iv = r - rowBase[a];
+        const vtkIdType row = input->GetGridCellBase(a) + iv * nu;
+        for (vtkIdType iu = 0; iu < nu; ++iu)
         {
-          out[i] = values[i];
-          continue;
-        }
-        const glm::dvec3 c = vtkOFBLICTracer::Vec(samples[i].Position);
-        double sum = 0.0;
-        int count = 0;
-        input->ForEachSampleInSphere(&c.x,
-          radius,
-          [&](vtkIdType j, double)
+          for (vtkIdType i = offsets[row + iu], end = offsets[row + iu + 1]; i < end; ++i)
           {
-            if (j != i && !mask[j])
+            if (mask[i])
             {
-              sum += values[j];
-              ++count;
+              out[i] = values[i];
+              continue;
             }
-          });
-        const double mean = count ? sum / count : values[i];
-        out[i] = static_cast<float>(values[i] + 4.0 * (values[i] - mean));
+            double sum = 0.0;
+            int count = 0;
+            for (vtkIdType dv = -1; dv <= 1; ++dv)
+            {
+              for (vtkIdType du = -1; du <= 1; ++du)
+              {
+                if (iv + dv < 0 || iv + dv >= nv || iu + du < 0 || iu + du >= nu)
+                {
+                  continue;
+                }
+                const vtkIdType cell = row + dv * nu + iu + du;
+                const double planar = static_cast<double>(du * du + dv * dv) * cellSize * cellSize;
+                for (vtkIdType j = offsets[cell], last = offsets[cell + 1]; j < last; ++j)
+                {
+                  const double dd = static_cast<double>(depths[j]) - depths[i];
+                  if (j != i && !mask[j] && planar + dd * dd <= radius * radius)
+                  {
+                    sum += values[j];
+                    ++count;
+                  }
+                }
+              }
+            }
+            if (count < 3)
+            {
+              const glm::dvec3 c = vtkOFBLICTracer::Vec(samples[i].Position);
+              sum = 0.0;
+              count = 0;
+              input->ForEachSampleInSphere(&c.x,
+                radius,
+                [&](vtkIdType j, double)
+                {
+                  if (j != i && !mask[j])
+                  {
+                    sum += values[j];
+                    ++count;
+                  }
+                });
+            }
+            const double mean = count ? sum / count : values[i];
+            out[i] = static_cast<float>(values[i] + 4.0 * (values[i] - mean));
+          }
+        }
       }
     });
   values.swap(out);

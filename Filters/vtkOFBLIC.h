@@ -36,7 +36,7 @@
  * MaskIntensity in the final colour) are stored for the mapper.
  *
  * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (64 x 64
- * cells of a grid); from each sample of the tile not yet given a streamline, one four
+ * cells of a grid); from each sample of the tile not yet given a streamline, one three
  * times as long is traced both ways, and every sample of the tile that it meets gets the
  * NumberOfSteps steps each way around that meeting as its streamline. Each sample's
  * streamline thus passes through it (within the half cell of the sample lookup), but
@@ -402,7 +402,7 @@ protected:
    * not yet given one, a streamline LongSteps times as long is traced, and every sample
    * of the tile it meets gets the window of NumberOfSteps steps each way around that
    * meeting. `covered` marks the samples given one; `sequence` is a buffer of
-   * 2 LongSteps NumberOfSteps + 1 ids.
+   * 3 LongSteps NumberOfSteps + 1 ids.
    */
   void TraceTile(const vtkOFBLICTracer& tracer,
     const vtkOFBLICTiles& tiles,

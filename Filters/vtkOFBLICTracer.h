@@ -143,7 +143,7 @@ struct vtkOFBLICSample
  */
 struct vtkOFBLICTiles
 {
-  static constexpr vtkIdType Size = 128;
+  static constexpr vtkIdType Size = 64;
   vtkIdType Dimensions[3] = { 0, 0, 0 };
   vtkIdType U[3] = { 0, 0, 0 }; // tiles along u and v of each grid
   vtkIdType V[3] = { 0, 0, 0 };
@@ -282,34 +282,59 @@ public:
   }
 
   /**
-   * Up to `steps` steps from sample i in direction dir (+1 forward, -1 backward), the
-   * samples met written to out; returns how many (fewer where the streamline stops).
+   * Up to `steps` steps each way from sample i: the samples met forward to ahead[] and
+   * backward to back[], their numbers returned in nAhead and nBack. The two directions
+   * advance together: two independent chains of dependent loads, which the processor
+   * overlaps.
    */
-  int TraceDirection(vtkIdType i, int dir, int steps, vtkTypeInt32* out) const
+  void TraceBoth(vtkIdType i,
+    int steps,
+    vtkTypeInt32* ahead,
+    int& nAhead,
+    vtkTypeInt32* back,
+    int& nBack) const
   {
-    glm::dvec3 p = Vec(this->Samples[i].Position);
-    vtkIdType j = i;
-    for (int s = 0; s < steps; ++s)
+    glm::dvec3 pf = Vec(this->Samples[i].Position);
+    glm::dvec3 pb = pf;
+    vtkIdType jf = i;
+    vtkIdType jb = i;
+    nAhead = 0;
+    nBack = 0;
+    bool forward = steps > 0;
+    bool backward = steps > 0;
+    while (forward || backward)
     {
-      j = this->Advance(p, j, dir);
-      if (j < 0)
+      if (forward)
       {
-        return s;
+        jf = this->Advance(pf, jf, 1);
+        forward = jf >= 0;
+        if (forward)
+        {
+          ahead[nAhead++] = static_cast<vtkTypeInt32>(jf);
+          forward = nAhead < steps;
+        }
       }
-      out[s] = static_cast<vtkTypeInt32>(j);
+      if (backward)
+      {
+        jb = this->Advance(pb, jb, -1);
+        backward = jb >= 0;
+        if (backward)
+        {
+          back[nBack++] = static_cast<vtkTypeInt32>(jb);
+          backward = nBack < steps;
+        }
+      }
     }
-    return steps;
   }
 
   /// The streamline of sample i into line[0, 2 NumberOfSteps) (see the class comment).
   void Trace(vtkIdType i, vtkTypeInt32* line) const
   {
     const int n = this->NumberOfSteps;
-    for (int dir = 1; dir >= -1; dir -= 2)
-    {
-      vtkTypeInt32* out = line + (dir > 0 ? 0 : n);
-      std::fill(out + this->TraceDirection(i, dir, n, out), out + n, -1);
-    }
+    int ahead, back;
+    this->TraceBoth(i, n, line, ahead, line + n, back);
+    std::fill(line + ahead, line + n, -1);
+    std::fill(line + n + back, line + 2 * n, -1);
   }
 
   /**

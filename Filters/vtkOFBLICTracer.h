@@ -232,6 +232,7 @@ public:
   const float* Depths = nullptr;
   double Origin[3] = { 0.0, 0.0, 0.0 };
   double CellSize = 0.0;
+  double InverseCellSize = 0.0;
   vtkIdType Dimensions[3] = { 0, 0, 0 };
   vtkIdType CellBase[4] = { 0, 0, 0, 0 };
 
@@ -243,6 +244,7 @@ public:
     this->Depths = ofb->GetDepths()->GetPointer(0);
     ofb->GetOrigin(this->Origin);
     this->CellSize = ofb->GetCellSize();
+    this->InverseCellSize = 1.0 / this->CellSize;
     ofb->GetDimensions(this->Dimensions);
     for (int a = 0; a < 4; ++a)
     {
@@ -258,8 +260,8 @@ public:
   {
     const int u = (a + 1) % 3;
     const int v = (a + 2) % 3;
-    const double fu = std::floor((q[u] - this->Origin[u]) / this->CellSize);
-    const double fv = std::floor((q[v] - this->Origin[v]) / this->CellSize);
+    const double fu = std::floor((q[u] - this->Origin[u]) * this->InverseCellSize);
+    const double fv = std::floor((q[v] - this->Origin[v]) * this->InverseCellSize);
     if (!(fu >= 0.0 && fv >= 0.0 && fu < this->Dimensions[u] && fv < this->Dimensions[v]))
     {
       return -1;

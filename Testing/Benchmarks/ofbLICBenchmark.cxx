@@ -20,8 +20,10 @@
 //   measured with the same number of threads in the same run.
 // Frames (2 threads, each mesh and resolution): the median frame time of the plain
 // mapper (one colour), of vtkOFBPolyDataMapper showing the LIC (Nearest and
-// InverseDistance lookups) and of an animation frame (new AnimationPhase, LIC update,
-// upload of the LIC array and render), as ratios to the plain mapper's frame. The
+// InverseDistance lookups), of the same mapper without the LIC (Nearest, the sampler's
+// colours: what the LIC itself adds to a frame) and of an animation frame (new
+// AnimationPhase, LIC update, upload of the LIC array and render), as ratios to the
+// plain mapper's frame. The
 // mappers take turns within every round, so that a change of load hits all of them.
 // On a shared machine the numbers are noisy: compare the ratios, repeat, and note the
 // load (printed from /proc/loadavg at the start and the end).
@@ -203,7 +205,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 /// number of threads: the best of 5 runs in bytes per second (3 x 8 bytes an element).
 double TriadBandwidth()
 {
-  const vtkIdType n = 1 << 25; // 32 Mi doubles: 256 MiB an array
+  const vtkIdType n = 1 << 24; // 16 Mi doubles: 128 MiB an array
   std::vector<double> a(n), b(n, 1.0), c(n, 2.0);
   vtkSMPTools::For(0, n, 1 << 16, [&](vtkIdType begin, vtkIdType end) {
     std::fill(a.data() + begin, a.data() + end, 0.0);
@@ -314,7 +316,7 @@ void RunLIC(const Options& o, const std::string& name, int resolution, vtkOFB* o
               << std::setprecision(1) << std::setw(7) << triad / 1e9 << std::setw(7)
               << 1e3 * buildSeconds << " | " << cell(first, true, false) << " | "
               << cell(animate, false, false) << " | " << cell(firstEnh, true, true) << " | "
-              << cell(animateEnh, false, true) << "\n";
+              << cell(animateEnh, false, true) << std::endl;
   }
 }
 
@@ -377,14 +379,20 @@ void RunFrames(const Options& o, const std::string& name, int resolution, vtkPol
   plain->SetInputData(mesh);
   plain->ScalarVisibilityOff();
   std::vector<vtkSmartPointer<vtkMapper>> mappers = { plain.Get() };
-  for (int mode : { vtkOFBPolyDataMapper::Nearest, vtkOFBPolyDataMapper::InverseDistance })
+  // The OFB mapper showing the LIC (Nearest, InverseDistance), then without it (Nearest,
+  // the sampler's colours only): the cost of the LIC in the display itself.
+  for (int mode : { vtkOFBPolyDataMapper::Nearest, vtkOFBPolyDataMapper::InverseDistance,
+         vtkOFBPolyDataMapper::Nearest })
   {
     vtkNew<vtkOFBPolyDataMapper> m;
     m->SetInputData(mesh);
     m->SetOFBConnection(lic->GetOutputPort());
     m->SetLookupMode(mode);
-    m->SetIntensityArrayName("LIC");
-    m->IntensityModulationOn();
+    if (mappers.size() < 3)
+    {
+      m->SetIntensityArrayName("LIC");
+      m->IntensityModulationOn();
+    }
     mappers.emplace_back(m.Get());
   }
   actor->SetMapper(plain);
@@ -392,8 +400,9 @@ void RunFrames(const Options& o, const std::string& name, int resolution, vtkPol
   window->Render();
   vtkNew<vtkCamera> start;
   start->DeepCopy(renderer->GetActiveCamera());
-  // Rows: plain, Nearest, InverseDistance, animation (Nearest with a new phase a frame).
-  std::vector<std::vector<double>> ms(4);
+  // Rows: plain, LIC Nearest, LIC InverseDistance, Nearest without the LIC, animation
+  // (LIC Nearest with a new phase a frame).
+  std::vector<std::vector<double>> ms(5);
   auto nothing = [](int) {};
   for (int r = 0; r < o.Rounds; ++r)
   {
@@ -403,19 +412,19 @@ void RunFrames(const Options& o, const std::string& name, int resolution, vtkPol
       ms[m].push_back(TimeFrames(window, renderer, start, o.Frames, nothing));
     }
     actor->SetMapper(mappers[1]);
-    ms[3].push_back(TimeFrames(window, renderer, start, o.Frames,
+    ms[4].push_back(TimeFrames(window, renderer, start, o.Frames,
       [&](int i) { lic->SetAnimationPhase(0.05 * (i + 1) + 0.01 * r); }));
   }
   const double peer = Median(ms[0]);
   std::cout << std::left << std::setw(7) << name << std::right << std::setw(5) << resolution
             << std::fixed << std::setprecision(1) << std::setw(10) << peer;
-  for (int m = 1; m < 4; ++m)
+  for (int m = 1; m < 5; ++m)
   {
     const double t = Median(ms[m]);
     std::cout << std::setw(10) << t << " (" << std::setprecision(2) << t / peer << "x)"
               << std::setprecision(1);
   }
-  std::cout << "\n";
+  std::cout << std::endl;
   auto* ofbMapper = vtkOFBPolyDataMapper::SafeDownCast(mappers[1]);
   if (!ofbMapper->GetLastRenderUsedOFB())
   {
@@ -478,8 +487,8 @@ int main(int argc, char* argv[])
   {
     std::cout << "\nFrames (ms, " << o.Width << "x" << o.Height << ", " << o.Frames
               << " frames a mapper and round, LIC on 2 threads):\n"
-              << "mesh     res     plain  LIC Nearest        LIC InverseDistance    "
-                 "animation frame (new phase + render)\n";
+              << "mesh     res     plain  LIC Nearest        LIC InverseDistance   "
+                 "no LIC, Nearest    animation frame (new phase + render)\n";
     for (const Built& b : built)
     {
       RunFrames(o, b.Name, b.Resolution, b.Mesh, b.OFB);

@@ -49,7 +49,10 @@ public:
     this->Values.push_back(v);
     return *this;
   }
-  CacheKey& Add(const void* p) { return this->Add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p))); }
+  CacheKey& Add(const void* p)
+  {
+    return this->Add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p)));
+  }
   bool operator==(const CacheKey& o) const { return this->Values == o.Values; }
   bool operator!=(const CacheKey& o) const { return !(*this == o); }
 
@@ -75,7 +78,7 @@ public:
   CacheKey LinesKey;
   vtkOFBLICBuffer<vtkTypeInt32> Lines;
   vtkOFBLICBuffer<unsigned char> Covered; // samples given their streamline, while tracing
-  vtkOFBLICBuffer<float> Values; // work buffers, kept to avoid allocating every update
+  vtkOFBLICBuffer<float> Values;          // work buffers, kept to avoid allocating every update
   vtkOFBLICBuffer<float> Scratch;
 
   void Clear()
@@ -310,8 +313,7 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
         for (vtkIdType iu = 0; iu < nu; ++iu)
         {
           x[ua] = origin[ua] + (iu + 0.5) * cellSize;
-          const vtkTypeInt32 flags =
-            static_cast<vtkTypeInt32>(a | (tiles.TileOf(a, iu, iv) << 3));
+          const vtkTypeInt32 flags = static_cast<vtkTypeInt32>(a | (tiles.TileOf(a, iu, iv) << 3));
           for (vtkIdType i = offsets[row + iu], end = offsets[row + iu + 1]; i < end; ++i)
           {
             x[a] = origin[a] + depths[i];
@@ -771,8 +773,8 @@ void vtkOFBLIC::WriteOutput(vtkOFB* input,
   // output's structure time, so the mapper uploads the LIC array alone.
   vtkSmartPointer<vtkFloatArray> lic =
     vtkFloatArray::SafeDownCast(output->TakeSpareArray("LIC", VTK_FLOAT, 1, n));
-  vtkSmartPointer<vtkUnsignedCharArray> maskArray = vtkUnsignedCharArray::SafeDownCast(
-    output->TakeSpareArray("LICMask", VTK_UNSIGNED_CHAR, 1, n));
+  vtkSmartPointer<vtkUnsignedCharArray> maskArray =
+    vtkUnsignedCharArray::SafeDownCast(output->TakeSpareArray("LICMask", VTK_UNSIGNED_CHAR, 1, n));
   const bool newMask = !maskArray;
   if (!lic)
   {
@@ -910,8 +912,14 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   vtkOFBLICBuffer<float>& values = cache.Values;
   values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
-  if (!this->Convolve(
-        tracer, lines, trace, weights, cache.Noise.data(), values.data(), 0.05, enhanced ? 0.5 : 0.95))
+  if (!this->Convolve(tracer,
+        lines,
+        trace,
+        weights,
+        cache.Noise.data(),
+        values.data(),
+        0.05,
+        enhanced ? 0.5 : 0.95))
   {
     output->Initialize();
     return 1;
@@ -989,7 +997,7 @@ void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaskColor: (" << this->MaskColor[0] << ", " << this->MaskColor[1] << ", "
      << this->MaskColor[2] << ")\n";
   os << indent << "MaskIntensity: " << this->MaskIntensity << "\n";
- os << indent << "CacheStreamlines: " << (this->CacheStreamlines ? "On" : "Off") << "\n";
+  os << indent << "CacheStreamlines: " << (this->CacheStreamlines ? "On" : "Off") << "\n";
   os << indent << "NumberOfMaskedSamples: " << this->NumberOfMaskedSamples << "\n";
   os << indent << "LastExecutionTime: " << this->LastExecutionTime << " ms\n";
 }

@@ -60,8 +60,8 @@
  * held.
  *
  * The convolution runs with vtkSMPTools; every sample is computed independently, so the
- * result is the same for any number of threads, with or without the kept streamlines. Progress events are sent and
- * AbortExecute is honoured between blocks of samples (an aborted run gives an empty
+ * result is the same for any number of threads. Progress events are sent and
+ * AbortExecute is honoured between blocks of tiles (an aborted run gives an empty
  * output).
  *
  * Bad input: no field array, a field without 3 components or an input without

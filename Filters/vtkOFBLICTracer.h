@@ -26,7 +26,7 @@
  * where the system offers them (Linux transparent huge pages), which makes the first
  * touch of a new array hundreds of times fewer page faults.
  */
-template <typename T>
+template<typename T>
 class vtkOFBLICBuffer
 {
 public:
@@ -71,13 +71,34 @@ public:
     std::swap(this->Size, o.Size);
     std::swap(this->Capacity, o.Capacity);
   }
-  T* data() { return this->Data; }
-  const T* data() const { return this->Data; }
-  std::size_t size() const { return this->Size; }
-  std::size_t capacity() const { return this->Capacity; }
-  bool empty() const { return this->Size == 0; }
-  T& operator[](std::size_t i) { return this->Data[i]; }
-  const T& operator[](std::size_t i) const { return this->Data[i]; }
+  T* data()
+  {
+    return this->Data;
+  }
+  const T* data() const
+  {
+    return this->Data;
+  }
+  std::size_t size() const
+  {
+    return this->Size;
+  }
+  std::size_t capacity() const
+  {
+    return this->Capacity;
+  }
+  bool empty() const
+  {
+    return this->Size == 0;
+  }
+  T& operator[](std::size_t i)
+  {
+    return this->Data[i];
+  }
+  const T& operator[](std::size_t i) const
+  {
+    return this->Data[i];
+  }
 
 private:
   void Allocate(std::size_t n)
@@ -175,8 +196,11 @@ struct vtkOFBLICTiles
    * Call f(i) for every sample of tile t, row by row (`offsets`: the OFB's cell offsets,
    * `cellBase`: the first cell of each grid).
    */
-  template <typename F>
-  void ForEachSample(vtkIdType t, const vtkTypeUInt32* offsets, const vtkIdType* cellBase, F&& f) const
+  template<typename F>
+  void ForEachSample(vtkIdType t,
+    const vtkTypeUInt32* offsets,
+    const vtkIdType* cellBase,
+    F&& f) const
   {
     const int a = t < this->Base[1] ? 0 : (t < this->Base[2] ? 1 : 2);
     const vtkIdType nu = this->Dimensions[(a + 1) % 3];
@@ -343,8 +367,11 @@ public:
    * Eq. 4 at sample i over the per-sample values `input`, along its streamline `line`;
    * `weights` has 2 n + 1 entries, index n is t = 0.
    */
-  static float Gather(
-    vtkIdType i, const vtkTypeInt32* line, int n, const double* weights, const float* input)
+  static float Gather(vtkIdType i,
+    const vtkTypeInt32* line,
+    int n,
+    const double* weights,
+    const float* input)
   {
     double acc = weights[n] * input[i];
     double sum = weights[n];

@@ -207,23 +207,28 @@ double TriadBandwidth()
 {
   const vtkIdType n = 1 << 24; // 16 Mi doubles: 128 MiB an array
   std::vector<double> a(n), b(n, 1.0), c(n, 2.0);
-  vtkSMPTools::For(0, n, 1 << 16, [&](vtkIdType begin, vtkIdType end) {
-    std::fill(a.data() + begin, a.data() + end, 0.0);
-  });
+  vtkSMPTools::For(0,
+    n,
+    1 << 16,
+    [&](vtkIdType begin, vtkIdType end) { std::fill(a.data() + begin, a.data() + end, 0.0); });
   double best = 0.0;
   for (int r = 0; r < 5; ++r)
   {
     const double s = 1.0 + r;
     const Clock::time_point t0 = Clock::now();
-    vtkSMPTools::For(0, n, 1 << 16, [&](vtkIdType begin, vtkIdType end) {
-      double* pa = a.data();
-      const double* pb = b.data();
-      const double* pc = c.data();
-      for (vtkIdType i = begin; i < end; ++i)
+    vtkSMPTools::For(0,
+      n,
+      1 << 16,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        pa[i] = pb[i] + s * pc[i];
-      }
-    });
+        double* pa = a.data();
+        const double* pb = b.data();
+        const double* pc = c.data();
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          pa[i] = pb[i] + s * pc[i];
+        }
+      });
     best = std::max(best, 3.0 * sizeof(double) * n / Seconds(t0));
   }
   return best + 0.0 * a[n / 2];
@@ -283,7 +288,10 @@ double BytesPerSample(int steps, bool first, bool enhanced)
 }
 
 /// The LIC rows of one OFB for every number of threads.
-void RunLIC(const Options& o, const std::string& name, int resolution, vtkOFB* ofb,
+void RunLIC(const Options& o,
+  const std::string& name,
+  int resolution,
+  vtkOFB* ofb,
   double buildSeconds)
 {
   const vtkIdType n = ofb->GetNumberOfSamples();
@@ -305,26 +313,27 @@ void RunLIC(const Options& o, const std::string& name, int resolution, vtkOFB* o
       const double m = Median(t);
       const double bytes = BytesPerSample(o.Steps, isFirst, enhanced) * n / m;
       std::ostringstream s;
-      s << std::fixed << std::setprecision(1) << std::setw(7) << 1e3 * m << " ms "
-        << std::setw(6) << n / m / 1e6 << " M/s " << std::setprecision(2) << std::setw(5)
-        << bytes / 1e9 << " GB/s " << std::setprecision(0) << std::setw(3)
-        << 100.0 * bytes / triad << "%";
+      s << std::fixed << std::setprecision(1) << std::setw(7) << 1e3 * m << " ms " << std::setw(6)
+        << n / m / 1e6 << " M/s " << std::setprecision(2) << std::setw(5) << bytes / 1e9 << " GB/s "
+        << std::setprecision(0) << std::setw(3) << 100.0 * bytes / triad << "%";
       return s.str();
     };
     std::cout << std::left << std::setw(7) << name << std::right << std::setw(5) << resolution
-              << std::setw(9) << n << std::setw(3) << threads << std::fixed
-              << std::setprecision(1) << std::setw(7) << triad / 1e9 << std::setw(7)
-              << 1e3 * buildSeconds << " | " << cell(first, true, false) << " | "
-              << cell(animate, false, false) << " | " << cell(firstEnh, true, true) << " | "
-              << cell(animateEnh, false, true) << std::endl;
+              << std::setw(9) << n << std::setw(3) << threads << std::fixed << std::setprecision(1)
+              << std::setw(7) << triad / 1e9 << std::setw(7) << 1e3 * buildSeconds << " | "
+              << cell(first, true, false) << " | " << cell(animate, false, false) << " | "
+              << cell(firstEnh, true, true) << " | " << cell(animateEnh, false, true) << std::endl;
   }
 }
 
 // Milliseconds per frame of `frames` renders while the camera turns once around the
 // surface (after 3 untimed ones), waiting for completion; `before` runs before each
 // frame (the animation's LIC update), its time included.
-template <typename Before>
-double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, vtkCamera* start, int frames,
+template<typename Before>
+double TimeFrames(vtkRenderWindow* window,
+  vtkRenderer* renderer,
+  vtkCamera* start,
+  int frames,
   Before&& before)
 {
   vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
@@ -356,7 +365,10 @@ double TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, vtkCamera* sta
 }
 
 /// The frame rows of one mesh and OFB (2 threads for the LIC).
-void RunFrames(const Options& o, const std::string& name, int resolution, vtkPolyData* mesh,
+void RunFrames(const Options& o,
+  const std::string& name,
+  int resolution,
+  vtkPolyData* mesh,
   vtkOFB* ofb)
 {
   vtkSMPTools::Initialize(2);
@@ -381,7 +393,8 @@ void RunFrames(const Options& o, const std::string& name, int resolution, vtkPol
   std::vector<vtkSmartPointer<vtkMapper>> mappers = { plain.Get() };
   // The OFB mapper showing the LIC (Nearest, InverseDistance), then without it (Nearest,
   // the sampler's colours only): the cost of the LIC in the display itself.
-  for (int mode : { vtkOFBPolyDataMapper::Nearest, vtkOFBPolyDataMapper::InverseDistance,
+  for (int mode : { vtkOFBPolyDataMapper::Nearest,
+         vtkOFBPolyDataMapper::InverseDistance,
          vtkOFBPolyDataMapper::Nearest })
   {
     vtkNew<vtkOFBPolyDataMapper> m;
@@ -412,7 +425,10 @@ void RunFrames(const Options& o, const std::string& name, int resolution, vtkPol
       ms[m].push_back(TimeFrames(window, renderer, start, o.Frames, nothing));
     }
     actor->SetMapper(mappers[1]);
-    ms[4].push_back(TimeFrames(window, renderer, start, o.Frames,
+    ms[4].push_back(TimeFrames(window,
+      renderer,
+      start,
+      o.Frames,
       [&](int i) { lic->SetAnimationPhase(0.05 * (i + 1) + 0.01 * r); }));
   }
   const double peer = Median(ms[0]);

@@ -374,14 +374,12 @@ TEST(LIC, ChangedFieldOrStepsTraceAgain)
   // Other steps: the streamlines are traced again, as a fresh filter does.
   kept->SetNumberOfSteps(7);
   fresh->SetNumberOfSteps(7);
-  EXPECT_EQ(std::memcmp(LICValues(RunLIC(kept, ofb)), LICValues(RunLIC(fresh, ofb)),
-              n * sizeof(float)),
-    0);
+  EXPECT_EQ(
+    std::memcmp(LICValues(RunLIC(kept, ofb)), LICValues(RunLIC(fresh, ofb)), n * sizeof(float)), 0);
   kept->SetStepSize(0.6);
   fresh->SetStepSize(0.6);
-  EXPECT_EQ(std::memcmp(LICValues(RunLIC(kept, ofb)), LICValues(RunLIC(fresh, ofb)),
-              n * sizeof(float)),
-    0);
+  EXPECT_EQ(
+    std::memcmp(LICValues(RunLIC(kept, ofb)), LICValues(RunLIC(fresh, ofb)), n * sizeof(float)), 0);
   kept->ReleaseCache();
   EXPECT_EQ(kept->GetCacheMemorySize(), 0ul);
 }

@@ -6,6 +6,8 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBLICCache.h"
+#include "vtkOFBLICEnhance.h"
 #include "vtkOFBLICNoise.h"
 #include "vtkOFBLICTracer.h"
 #include "vtkObjectFactory.h"
@@ -32,68 +34,7 @@ namespace
 // Half-length of the long streamlines traced from a seed, in NumberOfSteps: each gives
 // the streamlines of the samples of its tile that it meets (fast LIC).
 constexpr int LongSteps = 3;
-
-/// A list of the values an intermediate result depends on, compared bit for bit.
-class CacheKey
-{
-public:
-  CacheKey& Add(double v)
-  {
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof(bits));
-    this->Values.push_back(bits);
-    return *this;
-  }
-  CacheKey& Add(std::uint64_t v)
-  {
-    this->Values.push_back(v);
-    return *this;
-  }
-  CacheKey& Add(const void* p)
-  {
-    return this->Add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p)));
-  }
-  bool operator==(const CacheKey& o) const { return this->Values == o.Values; }
-  bool operator!=(const CacheKey& o) const { return !(*this == o); }
-
-private:
-  std::vector<std::uint64_t> Values;
-};
-
 }
-
-/**
- * What vtkOFBLIC keeps between updates (see the class description), each part with the
- * key of what it was computed from; an empty key is never valid.
- */
-class vtkOFBLICCache
-{
-public:
-  CacheKey SamplesKey; // Samples, Mask, Masked
-  vtkOFBLICBuffer<vtkOFBLICSample> Samples;
-  vtkOFBLICBuffer<unsigned char> Mask;
-  vtkIdType Masked = 0;
-  CacheKey NoiseKey;
-  vtkOFBLICBuffer<float> Noise;
-  CacheKey LinesKey;
-  vtkOFBLICBuffer<vtkTypeInt32> Lines;
-  vtkOFBLICBuffer<unsigned char> Covered; // samples given their streamline, while tracing
-  vtkOFBLICBuffer<float> Values;          // work buffers, kept to avoid allocating every update
-  vtkOFBLICBuffer<float> Scratch;
-
-  void Clear()
-  {
-    this->SamplesKey = this->NoiseKey = this->LinesKey = CacheKey();
-    this->Masked = 0;
-    this->Samples.Release();
-    this->Mask.Release();
-    this->Noise.Release();
-    this->Lines.Release();
-    this->Covered.Release();
-    this->Values.Release();
-    this->Scratch.Release();
-  }
-};
 
 //------------------------------------------------------------------------------
 vtkOFBLIC::vtkOFBLIC()
@@ -206,7 +147,7 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
   vtkOFBLICCache& cache = *this->Cache;
   const vtkIdType n = input->GetNumberOfSamples();
   const double structure = static_cast<double>(input->GetStructureMTime());
-  CacheKey samplesKey;
+  vtkOFBLICCacheKey samplesKey;
   samplesKey.Add(structure)
     .Add(static_cast<double>(n))
     .Add(vectors)
@@ -218,9 +159,9 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
     .Add(this->MaskOnSurface ? 1.0 : 0.0);
   if (cache.SamplesKey != samplesKey)
   {
-    cache.SamplesKey = CacheKey();
-    cache.LinesKey = CacheKey();
-    cache.NoiseKey = CacheKey();
+    cache.SamplesKey = vtkOFBLICCacheKey();
+    cache.LinesKey = vtkOFBLICCacheKey();
+    cache.NoiseKey = vtkOFBLICCacheKey();
     cache.Masked = this->PrepareSamples(input, vectors, normals);
     cache.SamplesKey = samplesKey;
   }
@@ -230,7 +171,7 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
     vtkWarningMacro("The vector field is masked at every sample (zero, non-finite or below "
                     "MaskThreshold): the LIC is the mask value everywhere.");
   }
-  CacheKey noiseKey;
+  vtkOFBLICCacheKey noiseKey;
   noiseKey.Add(structure).Add(static_cast<double>(n));
   vtkDataArray* noiseArray = this->NoiseArrayName && *this->NoiseArrayName
     ? input->GetSampleData()->GetArray(this->NoiseArrayName)
@@ -253,7 +194,7 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
   }
   if (cache.NoiseKey != noiseKey)
   {
-    cache.NoiseKey = CacheKey();
+    cache.NoiseKey = vtkOFBLICCacheKey();
     if (!this->PrepareNoise(input))
     {
       return false;
@@ -613,154 +554,6 @@ void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBLIC::Stretch(float* values,
-  vtkIdType n,
-  const unsigned char* mask,
-  double low,
-  double high)
-{
-  vtkSMPThreadLocal<float> localMin(std::numeric_limits<float>::max());
-  vtkSMPThreadLocal<float> localMax(std::numeric_limits<float>::lowest());
-  vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      float& lo = localMin.Local();
-      float& hi = localMax.Local();
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        if (!mask[i])
-        {
-          lo = std::min(lo, values[i]);
-          hi = std::max(hi, values[i]);
-        }
-      }
-    });
-  float lo = std::numeric_limits<float>::max();
-  float hi = std::numeric_limits<float>::lowest();
-  for (float v : localMin)
-  {
-    lo = std::min(lo, v);
-  }
-  for (float v : localMax)
-  {
-    hi = std::max(hi, v);
-  }
-  if (!(hi > lo))
-  {
-    return;
-  }
-  const double range = hi - lo;
-  const double m = lo + low * range;
-  const double scale = 1.0 / std::max(1e-12, (hi - high * range) - m);
-  vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        values[i] = static_cast<float>(std::min(1.0, std::max(0.0, (values[i] - m) * scale)));
-      }
-    });
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBLIC::HighPass(vtkOFB* input)
-{
-  vtkOFBLICBuffer<float>& values = this->Cache->Values;
-  const unsigned char* mask = this->Cache->Mask.data();
-  const vtkOFBLICSample* samples = this->Cache->Samples.data();
-  const vtkIdType n = static_cast<vtkIdType>(values.size());
-  Stretch(values.data(), n, mask, 0.0, 0.0);
-  vtkOFBLICBuffer<float>& out = this->Cache->Scratch;
-  out.resize(n);
-  // The mean over the samples within 1.5 cells: those of the sample's own grid, in the
-  // 3 x 3 cells around its cell (no other cell of the grid is that near), else, where
-  // fewer than three are (the grid sees the surface at a grazing angle), those of all
-  // three grids.
-  const double cellSize = input->GetCellSize();
-  const double radius = 1.5 * cellSize;
-  const vtkIdType* dims = input->GetDimensions();
-  const vtkTypeUInt32* offsets = input->GetCellOffsets()->GetPointer(0);
-  const float* depths = input->GetDepths()->GetPointer(0);
-  vtkIdType rowBase[4] = { 0, 0, 0, 0 };
-  for (int a = 0; a < 3; ++a)
-  {
-    rowBase[a + 1] = rowBase[a] + dims[(a + 2) % 3];
-  }
-  vtkSMPTools::For(0,
-    rowBase[3],
-    16,
-    [&](vtkIdType beginRow, vtkIdType endRow)
-    {
-      for (vtkIdType r = beginRow; r < endRow; ++r)
-      {
-        const int a = r < rowBase[1] ? 0 : (r < rowBase[2] ? 1 : 2);
-        const vtkIdType nu = dims[(a + 1) % 3];
-        const vtkIdType nv = dims[(a + 2) % 3];
-        const vtkIdType iv = r - rowBase[a];
-        const vtkIdType row = input->GetGridCellBase(a) + iv * nu;
-        for (vtkIdType iu = 0; iu < nu; ++iu)
-        {
-          for (vtkIdType i = offsets[row + iu], end = offsets[row + iu + 1]; i < end; ++i)
-          {
-            if (mask[i])
-            {
-              out[i] = values[i];
-              continue;
-            }
-            double sum = 0.0;
-            int count = 0;
-            for (vtkIdType dv = -1; dv <= 1; ++dv)
-            {
-              for (vtkIdType du = -1; du <= 1; ++du)
-              {
-                if (iv + dv < 0 || iv + dv >= nv || iu + du < 0 || iu + du >= nu)
-                {
-                  continue;
-                }
-                const vtkIdType cell = row + dv * nu + iu + du;
-                const double planar = static_cast<double>(du * du + dv * dv) * cellSize * cellSize;
-                for (vtkIdType j = offsets[cell], last = offsets[cell + 1]; j < last; ++j)
-                {
-                  const double dd = static_cast<double>(depths[j]) - depths[i];
-                  if (j != i && !mask[j] && planar + dd * dd <= radius * radius)
-                  {
-                    sum += values[j];
-                    ++count;
-                  }
-                }
-              }
-            }
-            if (count < 3)
-            {
-              const glm::dvec3 c = vtkOFBLICTracer::Vec(samples[i].Position);
-              sum = 0.0;
-              count = 0;
-              input->ForEachSampleInSphere(&c.x,
-                radius,
-                [&](vtkIdType j, double)
-                {
-                  if (j != i && !mask[j])
-                  {
-                    sum += values[j];
-                    ++count;
-                  }
-                });
-            }
-            const double mean = count ? sum / count : values[i];
-            out[i] = static_cast<float>(values[i] + 4.0 * (values[i] - mean));
-          }
-        }
-      }
-    });
-  values.swap(out);
-  Stretch(values.data(), n, mask, 0.0, 0.0);
-}
-
-//------------------------------------------------------------------------------
 void vtkOFBLIC::WriteOutput(vtkOFB* input,
   vtkOFB* output,
   const float* values,
@@ -889,14 +682,14 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     this->FieldInterpolation == FIELD_INVERSE_DISTANCE ? 1.5 * input->GetCellSize() : 0.0;
   const std::vector<double> weights = this->ComputeKernel();
   // The kept streamlines, traced during the first pass when they are not valid.
-  CacheKey linesKey = cache.SamplesKey;
+  vtkOFBLICCacheKey linesKey = cache.SamplesKey;
   linesKey.Add(static_cast<double>(this->NumberOfSteps))
     .Add(this->StepSize)
     .Add(static_cast<double>(this->FieldInterpolation));
   bool trace = true;
   if (!this->CacheStreamlines)
   {
-    cache.LinesKey = CacheKey();
+    cache.LinesKey = vtkOFBLICCacheKey();
     cache.Lines.Release();
   }
   else if (cache.LinesKey == linesKey && !cache.Lines.empty())
@@ -905,7 +698,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   }
   else
   {
-    cache.LinesKey = CacheKey();
+    cache.LinesKey = vtkOFBLICCacheKey();
     cache.Lines.resize(static_cast<std::size_t>(n) * 2 * this->NumberOfSteps);
   }
   vtkTypeInt32* lines = cache.Lines.empty() ? nullptr : cache.Lines.data();
@@ -930,7 +723,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   }
   if (enhanced)
   {
-    this->HighPass(input);
+    vtkOFBLICHighPass(input, cache);
     vtkOFBLICBuffer<float>& pass1 = cache.Scratch;
     pass1.swap(values);
     values.resize(n);
@@ -943,7 +736,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
     this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)
   {
-    Stretch(values.data(),
+    vtkOFBLICStretch(values.data(),
       n,
       cache.Mask.data(),
       this->LowLICContrastEnhancementFactor,

@@ -411,9 +411,6 @@ protected:
     unsigned char* covered,
     vtkTypeInt32* sequence);
 
-  /// The first pass's result stretched and high-pass filtered, in place (EnhancedLIC).
-  void HighPass(vtkOFB* input);
-
   /// The input's arrays shared, with "LIC" (values clamped, the mask value where masked)
   /// and "LICMask" added.
   void WriteOutput(vtkOFB* input,
@@ -421,13 +418,6 @@ protected:
     const float* values,
     const unsigned char* mask,
     vtkIdType n);
-
-  /// Stretch the unmasked values: m + low * range -> 0, M - high * range -> 1, clamped.
-  static void Stretch(float* values,
-    vtkIdType n,
-    const unsigned char* mask,
-    double low,
-    double high);
 
   int NumberOfSteps;
   double StepSize;

@@ -6,6 +6,8 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBLICCache.h"
+#include "vtkOFBLICEnhance.h"
 #include "vtkOFBLICNoise.h"
 #include "vtkOFBLICTracer.h"
 #include "vtkObjectFactory.h"
@@ -20,6 +22,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -27,35 +31,9 @@ vtkStandardNewMacro(vtkOFBLIC);
 
 namespace
 {
-// Samples per block between progress events and abort checks.
-constexpr vtkIdType BlockSize = 1 << 16;
-
-/// The normals as unit float vectors (the sampler's are already; other types convert).
-vtkSmartPointer<vtkFloatArray> UnitNormals(vtkDataArray* normals)
-{
-  vtkSmartPointer<vtkFloatArray> out = vtkSmartPointer<vtkFloatArray>::New();
-  out->SetNumberOfComponents(3);
-  out->SetNumberOfTuples(normals->GetNumberOfTuples());
-  float* o = out->GetPointer(0);
-  vtkSMPTools::For(0,
-    normals->GetNumberOfTuples(),
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double n[3];
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        normals->GetTuple(i, n);
-        glm::dvec3 v(n[0], n[1], n[2]);
-        const double len = glm::length(v);
-        v = (len > 0.0 && std::isfinite(len)) ? v / len : glm::dvec3(0.0);
-        o[3 * i] = static_cast<float>(v.x);
-        o[3 * i + 1] = static_cast<float>(v.y);
-        o[3 * i + 2] = static_cast<float>(v.z);
-      }
-    });
-  return out;
-}
+// Half-length of the long streamlines traced from a seed, in NumberOfSteps: each gives
+// the streamlines of the samples of its tile that it meets (fast LIC).
+constexpr int LongSteps = 3;
 }
 
 //------------------------------------------------------------------------------
@@ -90,8 +68,10 @@ vtkOFBLIC::vtkOFBLIC()
   , MaskOnSurface(false)
   , MaskColor{ 0.5, 0.5, 0.5 }
   , MaskIntensity(0.0)
+  , CacheStreamlines(true)
   , NumberOfMaskedSamples(0)
   , LastExecutionTime(0.0)
+  , Cache(new vtkOFBLICCache)
 {
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
@@ -101,6 +81,24 @@ vtkOFBLIC::vtkOFBLIC()
 vtkOFBLIC::~vtkOFBLIC()
 {
   this->SetNoiseArrayName(nullptr);
+  delete this->Cache;
+}
+
+//------------------------------------------------------------------------------
+unsigned long vtkOFBLIC::GetCacheMemorySize() const
+{
+  const vtkOFBLICCache& c = *this->Cache;
+  const std::size_t bytes = c.Samples.capacity() * sizeof(vtkOFBLICSample) + c.Mask.capacity() +
+    c.Covered.capacity() +
+    (c.Noise.capacity() + c.Values.capacity() + c.Scratch.capacity()) * sizeof(float) +
+    c.Lines.capacity() * sizeof(vtkTypeInt32);
+  return static_cast<unsigned long>((bytes + 1023) / 1024);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::ReleaseCache()
+{
+  this->Cache->Clear();
 }
 
 //------------------------------------------------------------------------------
@@ -144,46 +142,172 @@ vtkDataArray* vtkOFBLIC::FindField(vtkOFB* input)
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBLIC::PrepareField(vtkOFB* input,
-  vtkDataArray* vectors,
-  const float* normals,
-  std::vector<float>& field,
-  std::vector<unsigned char>& mask)
+bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normals)
+{
+  vtkOFBLICCache& cache = *this->Cache;
+  const vtkIdType n = input->GetNumberOfSamples();
+  const double structure = static_cast<double>(input->GetStructureMTime());
+  vtkOFBLICCacheKey samplesKey;
+  samplesKey.Add(structure)
+    .Add(static_cast<double>(n))
+    .Add(vectors)
+    .Add(static_cast<double>(vectors->GetMTime()))
+    .Add(normals)
+    .Add(static_cast<double>(normals->GetMTime()))
+    .Add(this->NormalizeVectors ? 1.0 : 0.0)
+    .Add(this->MaskThreshold)
+    .Add(this->MaskOnSurface ? 1.0 : 0.0);
+  if (cache.SamplesKey != samplesKey)
+  {
+    cache.SamplesKey = vtkOFBLICCacheKey();
+    cache.LinesKey = vtkOFBLICCacheKey();
+    cache.NoiseKey = vtkOFBLICCacheKey();
+    cache.Masked = this->PrepareSamples(input, vectors, normals);
+    cache.SamplesKey = samplesKey;
+  }
+  this->NumberOfMaskedSamples = cache.Masked;
+  if (cache.Masked == n)
+  {
+    vtkWarningMacro("The vector field is masked at every sample (zero, non-finite or below "
+                    "MaskThreshold): the LIC is the mask value everywhere.");
+  }
+  vtkOFBLICCacheKey noiseKey;
+  noiseKey.Add(structure).Add(static_cast<double>(n));
+  vtkDataArray* noiseArray = this->NoiseArrayName && *this->NoiseArrayName
+    ? input->GetSampleData()->GetArray(this->NoiseArrayName)
+    : nullptr;
+  if (noiseArray)
+  {
+    noiseKey.Add(noiseArray).Add(static_cast<double>(noiseArray->GetMTime()));
+  }
+  else
+  {
+    noiseKey.Add(this->NoiseArrayName && *this->NoiseArrayName ? 1.0 : 0.0)
+      .Add(static_cast<double>(this->NoiseType))
+      .Add(this->NoiseGrainSize)
+      .Add(this->MinNoiseValue)
+      .Add(this->MaxNoiseValue)
+      .Add(static_cast<double>(this->NumberOfNoiseLevels))
+      .Add(this->ImpulseNoiseProbability)
+      .Add(this->ImpulseNoiseBackgroundValue)
+      .Add(static_cast<double>(this->NoiseGeneratorSeed));
+  }
+  if (cache.NoiseKey != noiseKey)
+  {
+    cache.NoiseKey = vtkOFBLICCacheKey();
+    if (!this->PrepareNoise(input))
+    {
+      return false;
+    }
+    cache.NoiseKey = noiseKey;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normalsIn)
 {
   const vtkIdType n = input->GetNumberOfSamples();
-  field.assign(3 * n, 0.0f);
-  mask.assign(n, 0);
+  vtkOFBLICBuffer<vtkOFBLICSample>& samples = this->Cache->Samples;
+  vtkOFBLICBuffer<unsigned char>& mask = this->Cache->Mask;
+  samples.resize(n);
+  mask.resize(n);
+  // Float normals are used as given (the sampler's are unit); others are made unit.
+  vtkFloatArray* floatNormals = vtkFloatArray::SafeDownCast(normalsIn);
+  const float* normals = floatNormals ? floatNormals->GetPointer(0) : nullptr;
   const double threshold = this->MaskThreshold;
   const bool onSurface = this->MaskOnSurface;
   vtkSMPThreadLocal<double> localMax(0.0);
   vtkSMPThreadLocal<vtkIdType> localMasked(0);
-  // Tangential part, mask, and the largest magnitude left (for NormalizeVectors off).
+  // Position, normal, grid and tile, the tangential part of the field, the mask, and the
+  // largest magnitude left (for NormalizeVectors off); row by row of cells.
+  const vtkOFBLICTiles tiles(input->GetDimensions());
+  const vtkTypeUInt32* offsets = input->GetCellOffsets()->GetPointer(0);
+  const float* depths = input->GetDepths()->GetPointer(0);
+  vtkFloatArray* floatVectors = vtkFloatArray::SafeDownCast(vectors);
+  const float* vectorValues = floatVectors ? floatVectors->GetPointer(0) : nullptr;
+  const double* origin = input->GetOrigin();
+  const double cellSize = input->GetCellSize();
+  vtkIdType rowBase[4] = { 0, 0, 0, 0 };
+  for (int a = 0; a < 3; ++a)
+  {
+    rowBase[a + 1] = rowBase[a] + tiles.Dimensions[(a + 2) % 3];
+  }
   vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
+    rowBase[3],
+    16,
+    [&](vtkIdType beginRow, vtkIdType endRow)
     {
       double& maxMag = localMax.Local();
       vtkIdType& masked = localMasked.Local();
       double t[3];
-      for (vtkIdType i = begin; i < end; ++i)
+      double x[3];
+      for (vtkIdType r = beginRow; r < endRow; ++r)
       {
-        vectors->GetTuple(i, t);
-        const glm::dvec3 v(t[0], t[1], t[2]);
-        const glm::dvec3 nrm = vtkOFBLICTracer::Vec(normals, i);
-        const glm::dvec3 tangent = v - glm::dot(v, nrm) * nrm;
-        const double mag = glm::length(tangent);
-        const double test = onSurface ? mag : glm::length(v);
-        if (!(mag > 0.0) || !std::isfinite(mag) || !std::isfinite(test) || test < threshold)
+        const int a = r < rowBase[1] ? 0 : (r < rowBase[2] ? 1 : 2);
+        const int ua = (a + 1) % 3;
+        const int va = (a + 2) % 3;
+        const vtkIdType iv = r - rowBase[a];
+        const vtkIdType nu = tiles.Dimensions[ua];
+        const vtkIdType row = input->GetGridCellBase(a) + iv * nu;
+        x[va] = origin[va] + (iv + 0.5) * cellSize;
+        for (vtkIdType iu = 0; iu < nu; ++iu)
         {
-          mask[i] = 1;
-          ++masked;
-          continue;
-        }
-        maxMag = std::max(maxMag, mag);
-        for (int c = 0; c < 3; ++c)
-        {
-          field[3 * i + c] = static_cast<float>(tangent[c]);
+          x[ua] = origin[ua] + (iu + 0.5) * cellSize;
+          const vtkTypeInt32 flags = static_cast<vtkTypeInt32>(a | (tiles.TileOf(a, iu, iv) << 3));
+          for (vtkIdType i = offsets[row + iu], end = offsets[row + iu + 1]; i < end; ++i)
+          {
+            x[a] = origin[a] + depths[i];
+            vtkOFBLICSample& s = samples[i];
+            glm::dvec3 nrm;
+            if (normals)
+            {
+              nrm = vtkOFBLICTracer::Vec(normals, i);
+            }
+            else
+            {
+              normalsIn->GetTuple(i, t);
+              nrm = glm::dvec3(t[0], t[1], t[2]);
+              const double len = glm::length(nrm);
+              nrm = (len > 0.0 && std::isfinite(len)) ? nrm / len : glm::dvec3(0.0);
+            }
+            for (int c = 0; c < 3; ++c)
+            {
+              s.Position[c] = static_cast<float>(x[c]);
+              s.Normal[c] = static_cast<float>(nrm[c]);
+              s.Field[c] = 0.0f;
+            }
+            // The float normal, as the tracer reads it.
+            nrm = vtkOFBLICTracer::Vec(s.Normal);
+            s.Flags = flags;
+            if (vectorValues)
+            {
+              t[0] = vectorValues[3 * i];
+              t[1] = vectorValues[3 * i + 1];
+              t[2] = vectorValues[3 * i + 2];
+            }
+            else
+            {
+              vectors->GetTuple(i, t);
+            }
+            const glm::dvec3 v(t[0], t[1], t[2]);
+            const glm::dvec3 tangent = v - glm::dot(v, nrm) * nrm;
+            const double mag = glm::length(tangent);
+            const double test = onSurface ? mag : glm::length(v);
+            if (!(mag > 0.0) || !std::isfinite(mag) || !std::isfinite(test) || test < threshold)
+            {
+              mask[i] = 1;
+              s.Flags |= 4;
+              ++masked;
+              continue;
+            }
+            mask[i] = 0;
+            maxMag = std::max(maxMag, mag);
+            for (int c = 0; c < 3; ++c)
+            {
+              s.Field[c] = static_cast<float>(tangent[c]);
+            }
+          }
         }
       }
     });
@@ -210,11 +334,12 @@ vtkIdType vtkOFBLIC::PrepareField(vtkOFB* input,
         {
           continue;
         }
-        glm::dvec3 v = vtkOFBLICTracer::Vec(field.data(), i);
+        float* f = samples[i].Field;
+        glm::dvec3 v = vtkOFBLICTracer::Vec(f);
         v /= normalize ? glm::length(v) : maxMag;
         for (int c = 0; c < 3; ++c)
         {
-          field[3 * i + c] = static_cast<float>(v[c]);
+          f[c] = static_cast<float>(v[c]);
         }
       }
     });
@@ -222,9 +347,11 @@ vtkIdType vtkOFBLIC::PrepareField(vtkOFB* input,
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBLIC::PrepareNoise(vtkOFB* input, const float* positions, std::vector<float>& noise)
+bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
 {
   const vtkIdType n = input->GetNumberOfSamples();
+  vtkOFBLICBuffer<float>& noise = this->Cache->Noise;
+  const vtkOFBLICSample* samples = this->Cache->Samples.data();
   noise.resize(n);
   if (this->NoiseArrayName && *this->NoiseArrayName)
   {
@@ -265,7 +392,7 @@ bool vtkOFBLIC::PrepareNoise(vtkOFB* input, const float* positions, std::vector<
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        noise[i] = generator.Evaluate(vtkOFBLICTracer::Vec(positions, i));
+        noise[i] = generator.Evaluate(vtkOFBLICTracer::Vec(samples[i].Position));
       }
     });
   return true;
@@ -304,26 +431,63 @@ std::vector<double> vtkOFBLIC::ComputeKernel() const
 
 //------------------------------------------------------------------------------
 bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
+  vtkTypeInt32* lines,
+  bool trace,
+  const std::vector<double>& weights,
   const float* input,
   float* output,
-  vtkIdType n,
   double progress0,
   double progress1)
 {
-  for (vtkIdType first = 0; first < n; first += BlockSize)
+  const unsigned char* mask = this->Cache->Mask.data();
+  const int steps = tracer.NumberOfSteps;
+  const double* w = weights.data();
+  const vtkOFBLICTiles tiles(tracer.Dimensions);
+  const vtkIdType numberOfTiles = tiles.GetNumberOfTiles();
+  const vtkIdType tilesPerBlock = std::max<vtkIdType>(1, numberOfTiles / 16);
+  const bool fast = lines && trace;
+  if (fast)
   {
-    const vtkIdType last = std::min(n, first + BlockSize);
+    this->Cache->Covered.resize(this->Cache->Mask.size());
+  }
+  unsigned char* covered = this->Cache->Covered.data();
+  vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
+  for (vtkIdType first = 0; first < numberOfTiles; first += tilesPerBlock)
+  {
+    const vtkIdType last = std::min(numberOfTiles, first + tilesPerBlock);
     vtkSMPTools::For(first,
       last,
-      512,
+      1,
       [&](vtkIdType begin, vtkIdType end)
       {
-        for (vtkIdType i = begin; i < end; ++i)
+        std::vector<vtkTypeInt32>& local = localLine.Local();
+        local.resize(std::max(2 * steps, 3 * LongSteps * steps + 1));
+        for (vtkIdType t = begin; t < end; ++t)
         {
-          output[i] = tracer.Mask[i] ? input[i] : tracer.Convolve(i, input);
+          if (fast)
+          {
+            this->TraceTile(tracer, tiles, t, lines, covered, local.data());
+          }
+          tiles.ForEachSample(t,
+            tracer.Offsets,
+            tracer.CellBase,
+            [&](vtkIdType i)
+            {
+              if (mask[i])
+              {
+                output[i] = input[i];
+                return;
+              }
+              vtkTypeInt32* line = lines ? lines + 2 * steps * i : local.data();
+              if (!lines)
+              {
+                tracer.Trace(i, line);
+              }
+              output[i] = vtkOFBLICTracer::Gather(i, line, steps, w, input);
+            });
         }
       });
-    this->UpdateProgress(progress0 + (progress1 - progress0) * last / n);
+    this->UpdateProgress(progress0 + (progress1 - progress0) * last / numberOfTiles);
     if (this->GetAbortExecute())
     {
       return false;
@@ -333,117 +497,77 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBLIC::Stretch(std::vector<float>& values,
-  const unsigned char* mask,
-  double low,
-  double high)
+void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
+  const vtkOFBLICTiles& tiles,
+  vtkIdType tile,
+  vtkTypeInt32* lines,
+  unsigned char* covered,
+  vtkTypeInt32* sequence)
 {
-  const vtkIdType n = static_cast<vtkIdType>(values.size());
-  vtkSMPThreadLocal<float> localMin(std::numeric_limits<float>::max());
-  vtkSMPThreadLocal<float> localMax(std::numeric_limits<float>::lowest());
-  vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
+  const unsigned char* mask = this->Cache->Mask.data();
+  const vtkOFBLICSample* samples = tracer.Samples;
+  const int n = tracer.NumberOfSteps;
+  const int m = LongSteps * n;
+  tiles.ForEachSample(tile, tracer.Offsets, tracer.CellBase, [&](vtkIdType i) { covered[i] = 0; });
+  tiles.ForEachSample(tile,
+    tracer.Offsets,
+    tracer.CellBase,
+    [&](vtkIdType i)
     {
-      float& lo = localMin.Local();
-      float& hi = localMax.Local();
-      for (vtkIdType i = begin; i < end; ++i)
+      if (mask[i])
       {
-        if (!mask[i])
-        {
-          lo = std::min(lo, values[i]);
-          hi = std::max(hi, values[i]);
-        }
+        std::fill(lines + 2 * n * i, lines + 2 * n * (i + 1), -1);
+        return;
       }
-    });
-  float lo = std::numeric_limits<float>::max();
-  float hi = std::numeric_limits<float>::lowest();
-  for (float v : localMin)
-  {
-    lo = std::min(lo, v);
-  }
-  for (float v : localMax)
-  {
-    hi = std::max(hi, v);
-  }
-  if (!(hi > lo))
-  {
-    return;
-  }
-  const double range = hi - lo;
-  const double m = lo + low * range;
-  const double scale = 1.0 / std::max(1e-12, (hi - high * range) - m);
-  vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
+      if (covered[i])
       {
-        values[i] = static_cast<float>(std::min(1.0, std::max(0.0, (values[i] - m) * scale)));
+        return;
       }
-    });
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBLIC::HighPass(vtkOFB* input,
-  const float* positions,
-  const unsigned char* mask,
-  std::vector<float>& values)
-{
-  Stretch(values, mask, 0.0, 0.0);
-  const vtkIdType n = static_cast<vtkIdType>(values.size());
-  std::vector<float> out(n);
-  const double radius = 1.5 * input->GetCellSize();
-  vtkSMPTools::For(0,
-    n,
-    1024,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
+      // A long streamline through i: backward steps reversed, i, forward steps.
+      int ahead, back;
+      vtkTypeInt32* backward = sequence + 2 * m + 1;
+      tracer.TraceBoth(i, m, sequence + m + 1, ahead, backward, back);
+      vtkTypeInt32* seq = sequence + m - back;
+      std::reverse_copy(backward, backward + back, seq);
+      seq[back] = static_cast<vtkTypeInt32>(i);
+      const int length = back + 1 + ahead;
+      // Where the streamline stopped by itself, a window may end there (as a sample's own
+      // streamline would); where it ran out of steps, the window must fit.
+      const int low = back < m ? 0 : n;
+      const int high = ahead < m ? length - 1 : length - 1 - n;
+      for (int t = low; t <= high; ++t)
       {
-        if (mask[i])
+        const vtkIdType k = seq[t];
+        if (samples[k].Tile() != tile || covered[k])
         {
-          out[i] = values[i];
           continue;
         }
-        const glm::dvec3 c = vtkOFBLICTracer::Vec(positions, i);
-        double sum = 0.0;
-        int count = 0;
-        input->ForEachSampleInSphere(&c.x,
-          radius,
-          [&](vtkIdType j, double)
-          {
-            if (j != i && !mask[j])
-            {
-              sum += values[j];
-              ++count;
-            }
-          });
-        const double mean = count ? sum / count : values[i];
-        out[i] = static_cast<float>(values[i] + 4.0 * (values[i] - mean));
+        covered[k] = 1;
+        vtkTypeInt32* line = lines + 2 * n * k;
+        for (int s = 1; s <= n; ++s)
+        {
+          line[s - 1] = t + s < length ? seq[t + s] : -1;
+          line[n + s - 1] = t - s >= 0 ? seq[t - s] : -1;
+        }
       }
     });
-  values.swap(out);
-  Stretch(values, mask, 0.0, 0.0);
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBLIC::WriteOutput(vtkOFB* input,
   vtkOFB* output,
-  const std::vector<float>& values,
-  const std::vector<unsigned char>& mask)
+  const float* values,
+  const unsigned char* mask,
+  vtkIdType n)
 {
-  const vtkIdType n = static_cast<vtkIdType>(values.size());
   // A re-run over the same input (another AnimationPhase) writes into the previous
   // output's LIC and LICMask, recycled by the pipeline (vtkOFB::Recycle), and marks
   // Modified() only what changed; the shallow copy of an unchanged input keeps the
   // output's structure time, so the mapper uploads the LIC array alone.
   vtkSmartPointer<vtkFloatArray> lic =
     vtkFloatArray::SafeDownCast(output->TakeSpareArray("LIC", VTK_FLOAT, 1, n));
-  vtkSmartPointer<vtkUnsignedCharArray> maskArray = vtkUnsignedCharArray::SafeDownCast(
-    output->TakeSpareArray("LICMask", VTK_UNSIGNED_CHAR, 1, n));
+  vtkSmartPointer<vtkUnsignedCharArray> maskArray =
+    vtkUnsignedCharArray::SafeDownCast(output->TakeSpareArray("LICMask", VTK_UNSIGNED_CHAR, 1, n));
   const bool newMask = !maskArray;
   if (!lic)
   {
@@ -518,7 +642,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   const vtkIdType n = input->GetNumberOfSamples();
   if (n == 0)
   {
-    this->WriteOutput(input, output, std::vector<float>(), std::vector<unsigned char>());
+    this->WriteOutput(input, output, nullptr, nullptr, 0);
     return 1;
   }
   vtkDataArray* vectors = this->FindField(input);
@@ -539,39 +663,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     return 1;
   }
 
-  // Prepare: unit normals, sample positions, the tangential field, the mask, the noise.
-  vtkSmartPointer<vtkFloatArray> normals = vtkFloatArray::SafeDownCast(normalsIn);
-  if (!normals)
-  {
-    normals = UnitNormals(normalsIn);
-  }
-  std::vector<float> positions(3 * n);
-  vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double x[3];
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        input->GetSamplePosition(i, x);
-        for (int c = 0; c < 3; ++c)
-        {
-          positions[3 * i + c] = static_cast<float>(x[c]);
-        }
-      }
-    });
-  std::vector<float> field;
-  std::vector<unsigned char> mask;
-  this->NumberOfMaskedSamples =
-    this->PrepareField(input, vectors, normals->GetPointer(0), field, mask);
-  if (this->NumberOfMaskedSamples == n)
-  {
-    vtkWarningMacro("The vector field is masked at every sample (zero, non-finite or below "
-                    "MaskThreshold): the LIC is the mask value everywhere.");
-  }
-  std::vector<float> noise;
-  if (!this->PrepareNoise(input, positions.data(), noise))
+  if (!this->Prepare(input, vectors, normalsIn))
   {
     output->Initialize();
     return 1;
@@ -579,30 +671,63 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   this->UpdateProgress(0.05);
 
   // Convolve (Eq. 4), then the enhanced pass and the contrast stretch.
+  vtkOFBLICCache& cache = *this->Cache;
   vtkOFBLICTracer tracer;
   tracer.SetOFB(input);
-  tracer.Positions = positions.data();
-  tracer.Normals = normals->GetPointer(0);
-  tracer.Field = field.data();
-  tracer.Mask = mask.data();
+  tracer.Samples = cache.Samples.data();
   tracer.NumberOfSteps = this->NumberOfSteps;
   tracer.Step = this->StepSize * input->GetCellSize();
   tracer.SearchRadius = std::sqrt(3.0) * input->GetCellSize();
   tracer.FieldRadius =
     this->FieldInterpolation == FIELD_INVERSE_DISTANCE ? 1.5 * input->GetCellSize() : 0.0;
-  tracer.Weights = this->ComputeKernel();
-  std::vector<float> values(n);
+  const std::vector<double> weights = this->ComputeKernel();
+  // The kept streamlines, traced during the first pass when they are not valid.
+  vtkOFBLICCacheKey linesKey = cache.SamplesKey;
+  linesKey.Add(static_cast<double>(this->NumberOfSteps))
+    .Add(this->StepSize)
+    .Add(static_cast<double>(this->FieldInterpolation));
+  bool trace = true;
+  if (!this->CacheStreamlines)
+  {
+    cache.LinesKey = vtkOFBLICCacheKey();
+    cache.Lines.Release();
+  }
+  else if (cache.LinesKey == linesKey && !cache.Lines.empty())
+  {
+    trace = false;
+  }
+  else
+  {
+    cache.LinesKey = vtkOFBLICCacheKey();
+    cache.Lines.resize(static_cast<std::size_t>(n) * 2 * this->NumberOfSteps);
+  }
+  vtkTypeInt32* lines = cache.Lines.empty() ? nullptr : cache.Lines.data();
+  vtkOFBLICBuffer<float>& values = cache.Values;
+  values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
-  if (!this->Convolve(tracer, noise.data(), values.data(), n, 0.05, enhanced ? 0.5 : 0.95))
+  if (!this->Convolve(tracer,
+        lines,
+        trace,
+        weights,
+        cache.Noise.data(),
+        values.data(),
+        0.05,
+        enhanced ? 0.5 : 0.95))
   {
     output->Initialize();
     return 1;
   }
+  if (lines)
+  {
+    cache.LinesKey = linesKey;
+  }
   if (enhanced)
   {
-    this->HighPass(input, positions.data(), mask.data(), values);
-    noise.swap(values);
-    if (!this->Convolve(tracer, noise.data(), values.data(), n, 0.5, 0.95))
+    vtkOFBLICHighPass(input, cache);
+    vtkOFBLICBuffer<float>& pass1 = cache.Scratch;
+    pass1.swap(values);
+    values.resize(n);
+    if (!this->Convolve(tracer, lines, false, weights, pass1.data(), values.data(), 0.5, 0.95))
     {
       output->Initialize();
       return 1;
@@ -611,13 +736,14 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
     this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)
   {
-    Stretch(values,
-      mask.data(),
+    vtkOFBLICStretch(values.data(),
+      n,
+      cache.Mask.data(),
       this->LowLICContrastEnhancementFactor,
       this->HighLICContrastEnhancementFactor);
   }
 
-  this->WriteOutput(input, output, values, mask);
+  this->WriteOutput(input, output, values.data(), cache.Mask.data(), n);
   this->UpdateProgress(1.0);
   timer->StopTimer();
   this->LastExecutionTime = 1000.0 * timer->GetElapsedTime();
@@ -664,6 +790,7 @@ void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaskColor: (" << this->MaskColor[0] << ", " << this->MaskColor[1] << ", "
      << this->MaskColor[2] << ")\n";
   os << indent << "MaskIntensity: " << this->MaskIntensity << "\n";
+  os << indent << "CacheStreamlines: " << (this->CacheStreamlines ? "On" : "Off") << "\n";
   os << indent << "NumberOfMaskedSamples: " << this->NumberOfMaskedSamples << "\n";
   os << indent << "LastExecutionTime: " << this->LastExecutionTime << " ms\n";
 }

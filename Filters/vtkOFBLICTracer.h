@@ -4,16 +4,102 @@
 #define vtkOFBLICTracer_h
 
 #include "vtkOFB.h"
+#include "vtkType.h"
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 /**
+ * What a streamline step reads of a sample, packed in 40 bytes so that one step touches
+ * one place: the position (world coordinates), the unit normal, the tangent field
+ * (scaled to the step, zero where masked) and the flags (grid axis in bits 0-1,
+ * masked in bit 2, the tile of vtkOFBLICTiles from bit 3).
+ */
+struct vtkOFBLICSample
+{
+  float Position[3];
+  float Normal[3];
+  float Field[3];
+  vtkTypeInt32 Flags;
+
+  int Axis() const { return this->Flags & 3; }
+  bool Masked() const { return (this->Flags & 4) != 0; }
+  vtkIdType Tile() const { return this->Flags >> 3; }
+};
+
+/**
+ * The cells of the three grids in square tiles of Size x Size cells, numbered grid by
+ * grid, row by row: vtkOFBLIC traces and convolves tile by tile (the streamlines of a
+ * tile stay in a neighbourhood that stays in a core's cache).
+ */
+struct vtkOFBLICTiles
+{
+  static constexpr vtkIdType Size = 64;
+  vtkIdType Dimensions[3] = { 0, 0, 0 };
+  vtkIdType U[3] = { 0, 0, 0 }; // tiles along u and v of each grid
+  vtkIdType V[3] = { 0, 0, 0 };
+  vtkIdType Base[4] = { 0, 0, 0, 0 };
+
+  explicit vtkOFBLICTiles(const vtkIdType dims[3])
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Dimensions[a] = dims[a];
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      this->U[a] = (dims[(a + 1) % 3] + Size - 1) / Size;
+      this->V[a] = (dims[(a + 2) % 3] + Size - 1) / Size;
+      this->Base[a + 1] = this->Base[a] + this->U[a] * this->V[a];
+    }
+  }
+
+  vtkIdType GetNumberOfTiles() const { return this->Base[3]; }
+
+  /// The tile of cell (u, v) of grid a.
+  vtkIdType TileOf(int a, vtkIdType u, vtkIdType v) const
+  {
+    return this->Base[a] + (v / Size) * this->U[a] + u / Size;
+  }
+
+  /**
+   * Call f(i) for every sample of tile t, row by row (`offsets`: the OFB's cell offsets,
+   * `cellBase`: the first cell of each grid).
+   */
+  template<typename F>
+  void ForEachSample(vtkIdType t,
+    const vtkTypeUInt32* offsets,
+    const vtkIdType* cellBase,
+    F&& f) const
+  {
+    const int a = t < this->Base[1] ? 0 : (t < this->Base[2] ? 1 : 2);
+    const vtkIdType nu = this->Dimensions[(a + 1) % 3];
+    const vtkIdType nv = this->Dimensions[(a + 2) % 3];
+    const vtkIdType tu = (t - this->Base[a]) % this->U[a] * Size;
+    const vtkIdType tv = (t - this->Base[a]) / this->U[a] * Size;
+    for (vtkIdType v = tv; v < std::min(nv, tv + Size); ++v)
+    {
+      const vtkIdType row = cellBase[a] + v * nu;
+      const vtkIdType end = offsets[row + std::min(nu, tu + Size)];
+      for (vtkIdType i = offsets[row + tu]; i < end; ++i)
+      {
+        f(i);
+      }
+    }
+  }
+};
+
+/**
  * Traces a streamline forward and backward from a sample over the surface the OFB
- * samples, reading a per-sample input (the noise, or the first pass's result) at the
- * samples it meets, and returns the kernel-weighted mean of what it read (Eq. 4).
+ * samples, recording the samples it meets (Trace), and returns the kernel-weighted mean
+ * of a per-sample input (the noise, or the first pass's result) over those samples
+ * (Gather, Eq. 4). A streamline is 2 NumberOfSteps sample ids: the forward steps, then
+ * the backward steps, each direction ended early by -1 where the streamline stops.
+ * Tracing depends only on the geometry and the field, the weights only on the kernel
+ * and AnimationPhase: vtkOFBLIC keeps the streamlines and re-convolves by gathering.
  *
  * A step moves the 3-D position by the field of the current sample (in its tangent
  * plane, StepSize cells long when normalized), looks up the sample there
@@ -26,28 +112,24 @@
  * of an open surface), or where the normal turns by more than 120 degrees in one step
  * (a jump to another sheet of a thin part).
  *
- * Every member is read-only while convolving: one tracer serves all threads.
+ * Every member is read-only while tracing: one tracer serves all threads.
  */
 class vtkOFBLICTracer
 {
 public:
   const vtkOFB* OFB = nullptr;
-  const float* Positions = nullptr; // 3 per sample, world coordinates
-  const float* Normals = nullptr;   // 3 per sample, unit
-  const float* Field = nullptr;     // 3 per sample, tangent, scaled to the step
-  const unsigned char* Mask = nullptr;
+  const vtkOFBLICSample* Samples = nullptr;
   int NumberOfSteps = 0;
-  double Step = 0.0;           // world units
-  double SearchRadius = 0.0;   // world units
-  double FieldRadius = 0.0;    // world units; > 0: inverse-distance field, else nearest
-  std::vector<double> Weights; // 2 * NumberOfSteps + 1, index NumberOfSteps is t = 0
+  double Step = 0.0;         // world units
+  double SearchRadius = 0.0; // world units
+  double FieldRadius = 0.0;  // world units; > 0: inverse-distance field, else nearest
 
   // The OFB's frame and storage, read directly in the inner loop.
-  const vtkTypeUInt32* CellIndex = nullptr;
   const vtkTypeUInt32* Offsets = nullptr;
   const float* Depths = nullptr;
   double Origin[3] = { 0.0, 0.0, 0.0 };
   double CellSize = 0.0;
+  double InverseCellSize = 0.0;
   vtkIdType Dimensions[3] = { 0, 0, 0 };
   vtkIdType CellBase[4] = { 0, 0, 0, 0 };
 
@@ -55,11 +137,11 @@ public:
   void SetOFB(vtkOFB* ofb)
   {
     this->OFB = ofb;
-    this->CellIndex = ofb->GetCellIndex()->GetPointer(0);
     this->Offsets = ofb->GetCellOffsets()->GetPointer(0);
     this->Depths = ofb->GetDepths()->GetPointer(0);
     ofb->GetOrigin(this->Origin);
     this->CellSize = ofb->GetCellSize();
+    this->InverseCellSize = 1.0 / this->CellSize;
     ofb->GetDimensions(this->Dimensions);
     for (int a = 0; a < 4; ++a)
     {
@@ -75,8 +157,8 @@ public:
   {
     const int u = (a + 1) % 3;
     const int v = (a + 2) % 3;
-    const double fu = std::floor((q[u] - this->Origin[u]) / this->CellSize);
-    const double fv = std::floor((q[v] - this->Origin[v]) / this->CellSize);
+    const double fu = std::floor((q[u] - this->Origin[u]) * this->InverseCellSize);
+    const double fv = std::floor((q[v] - this->Origin[v]) * this->InverseCellSize);
     if (!(fu >= 0.0 && fv >= 0.0 && fu < this->Dimensions[u] && fv < this->Dimensions[v]))
     {
       return -1;
@@ -84,9 +166,13 @@ public:
     const vtkIdType cell = this->CellBase[a] + static_cast<vtkIdType>(fv) * this->Dimensions[u] +
       static_cast<vtkIdType>(fu);
     const double d = q[a] - this->Origin[a];
+    const vtkIdType begin = this->Offsets[cell];
+    // The record of the cell's first sample, the likely answer, is fetched while the
+    // depths are compared: the two misses of the step's chain overlap.
+    __builtin_prefetch(this->Samples + begin);
     vtkIdType best = -1;
     double bestDistance = this->CellSize;
-    for (vtkIdType i = this->Offsets[cell], end = this->Offsets[cell + 1]; i < end; ++i)
+    for (vtkIdType i = begin, end = this->Offsets[cell + 1]; i < end; ++i)
     {
       const double distance = std::fabs(this->Depths[i] - d);
       if (distance <= bestDistance)
@@ -98,29 +184,85 @@ public:
     return best;
   }
 
-  /// Eq. 4 at sample i over the per-sample values `input`.
-  float Convolve(vtkIdType i, const float* input) const
+  /**
+   * Up to `steps` steps each way from sample i: the samples met forward to ahead[] and
+   * backward to back[], their numbers returned in nAhead and nBack. The two directions
+   * advance together: two independent chains of dependent loads, which the processor
+   * overlaps.
+   */
+  void TraceBoth(vtkIdType i,
+    int steps,
+    vtkTypeInt32* ahead,
+    int& nAhead,
+    vtkTypeInt32* back,
+    int& nBack) const
   {
-    const int n = this->NumberOfSteps;
-    double acc = this->Weights[n] * input[i];
-    double weights = this->Weights[n];
-    for (int dir = 1; dir >= -1; dir -= 2)
+    glm::dvec3 pf = Vec(this->Samples[i].Position);
+    glm::dvec3 pb = pf;
+    vtkIdType jf = i;
+    vtkIdType jb = i;
+    nAhead = 0;
+    nBack = 0;
+    bool forward = steps > 0;
+    bool backward = steps > 0;
+    while (forward || backward)
     {
-      glm::dvec3 p = Vec(this->Positions, i);
-      vtkIdType j = i;
-      for (int s = 1; s <= n; ++s)
+      if (forward)
       {
-        j = this->Advance(p, j, dir);
-        if (j < 0)
+        jf = this->Advance(pf, jf, 1);
+        forward = jf >= 0;
+        if (forward)
         {
-          break;
+          ahead[nAhead++] = static_cast<vtkTypeInt32>(jf);
+          forward = nAhead < steps;
         }
-        const double w = this->Weights[n + dir * s];
-        acc += w * input[j];
-        weights += w;
+      }
+      if (backward)
+      {
+        jb = this->Advance(pb, jb, -1);
+        backward = jb >= 0;
+        if (backward)
+        {
+          back[nBack++] = static_cast<vtkTypeInt32>(jb);
+          backward = nBack < steps;
+        }
       }
     }
-    return weights > 1e-9 ? static_cast<float>(acc / weights) : input[i];
+  }
+
+  /// The streamline of sample i into line[0, 2 NumberOfSteps) (see the class comment).
+  void Trace(vtkIdType i, vtkTypeInt32* line) const
+  {
+    const int n = this->NumberOfSteps;
+    int ahead, back;
+    this->TraceBoth(i, n, line, ahead, line + n, back);
+    std::fill(line + ahead, line + n, -1);
+    std::fill(line + n + back, line + 2 * n, -1);
+  }
+
+  /**
+   * Eq. 4 at sample i over the per-sample values `input`, along its streamline `line`;
+   * `weights` has 2 n + 1 entries, index n is t = 0.
+   */
+  static float Gather(vtkIdType i,
+    const vtkTypeInt32* line,
+    int n,
+    const double* weights,
+    const float* input)
+  {
+    double acc = weights[n] * input[i];
+    double sum = weights[n];
+    for (int dir = 1; dir >= -1; dir -= 2)
+    {
+      const vtkTypeInt32* ids = line + (dir > 0 ? 0 : n);
+      const double* w = weights + n + dir;
+      for (int s = 0; s < n && ids[s] >= 0; ++s, w += dir)
+      {
+        acc += *w * input[ids[s]];
+        sum += *w;
+      }
+    }
+    return sum > 1e-9 ? static_cast<float>(acc / sum) : input[i];
   }
 
   /**
@@ -130,12 +272,12 @@ public:
    */
   vtkIdType Advance(glm::dvec3& p, vtkIdType j, int dir) const
   {
-    const glm::dvec3 nj = Vec(this->Normals, j);
+    const vtkOFBLICSample& sj = this->Samples[j];
+    const glm::dvec3 nj = Vec(sj.Normal);
     glm::dvec3 q = p + (dir * this->Step) * this->FieldAt(p, j);
     // The grid of sample j first (the surface mostly goes on in the same grid), then the
     // grid of its normal, then all three.
-    const vtkIdType cellJ = this->CellIndex[j];
-    const int axis = cellJ < this->CellBase[1] ? 0 : (cellJ < this->CellBase[2] ? 1 : 2);
+    const int axis = sj.Axis();
     vtkIdType k = this->FindInGrid(axis, q);
     const int normalAxis = Dominant(nj);
     if (k < 0 && normalAxis != axis)
@@ -146,16 +288,17 @@ public:
     {
       k = this->OFB->FindClosestSample(&q.x, this->SearchRadius);
     }
-    if (k < 0 || this->Mask[k])
+    if (k < 0 || this->Samples[k].Masked())
     {
       return -1;
     }
-    const glm::dvec3 nk = Vec(this->Normals, k);
+    const vtkOFBLICSample& sk = this->Samples[k];
+    const glm::dvec3 nk = Vec(sk.Normal);
     if (glm::dot(nj, nk) < -0.5)
     {
       return -1;
     }
-    q -= glm::dot(q - Vec(this->Positions, k), nk) * nk;
+    q -= glm::dot(q - Vec(sk.Position), nk) * nk;
     p = q;
     return k;
   }
@@ -168,21 +311,22 @@ public:
    */
   glm::dvec3 FieldAt(const glm::dvec3& p, vtkIdType j) const
   {
-    const glm::dvec3 vj = Vec(this->Field, j);
+    const glm::dvec3 vj = Vec(this->Samples[j].Field);
     if (this->FieldRadius <= 0.0)
     {
       return vj;
     }
-    const glm::dvec3 nj = Vec(this->Normals, j);
+    const glm::dvec3 nj = Vec(this->Samples[j].Normal);
     const double eps = 1e-4 * this->CellSize * this->CellSize;
     glm::dvec3 sum(0.0);
     this->OFB->ForEachSampleInSphere(&p.x,
       this->FieldRadius,
       [&](vtkIdType k, double d2)
       {
-        if (!this->Mask[k] && glm::dot(Vec(this->Normals, k), nj) > 0.5)
+        const vtkOFBLICSample& sk = this->Samples[k];
+        if (!sk.Masked() && glm::dot(Vec(sk.Normal), nj) > 0.5)
         {
-          sum += Vec(this->Field, k) / (d2 + eps);
+          sum += Vec(sk.Field) / (d2 + eps);
         }
       });
     sum -= glm::dot(sum, nj) * nj;
@@ -196,6 +340,8 @@ public:
     const glm::dvec3 a = glm::abs(n);
     return a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
   }
+
+  static glm::dvec3 Vec(const float* a) { return glm::dvec3(a[0], a[1], a[2]); }
 
   static glm::dvec3 Vec(const float* a, vtkIdType i)
   {

@@ -1,165 +1,515 @@
-// ofbLICBenchmark: throughput of vtkOFBLIC (samples per second) on a mesh's OFB, with the
-// OFB's own construction (vtkOFBSampler) measured in the same run as the peer.
-// Not a test: run it by hand:
-//   ofbLICBenchmark [--mesh FILE] [--resolution N] [--threads N] [--steps N] [--rounds N]
-// Defaults: the Stanford bunny, 1024 cells, 2 threads, 10 steps each way (2 x 10 steps
-// per sample), 3 rounds. Each round times: the sampler; the first LIC (field, noise and
-// one convolution, EnhancedLIC off); the same with EnhancedLIC on (two convolutions); a
-// re-convolution for animation (a new AnimationPhase). Medians over the rounds are
-// printed as M samples/s and as ratios to the sampler's time. On a shared machine the
-// numbers are noisy: compare the ratios, and repeat.
+// ofbLICBenchmark: throughput of vtkOFBLIC (M samples/s) on the OFBs of the horse and
+// the Stanford bunny, against the machine's memory bandwidth measured in the same run, and
+// the frame time of vtkOFBPolyDataMapper showing the LIC against a plain
+// vtkPolyDataMapper on the same mesh in the same window.
+// Not a test: run it by hand, under xvfb-run on a headless machine:
+//   xvfb-run -a -s "-screen 0 1280x1024x24" ofbLICBenchmark [options]
+// Options: --meshes LIST (comma-separated files or bunny,horse; default bunny,horse),
+// --resolutions LIST (default 1024,2048), --threads LIST (default 1,2), --steps N (each
+// way, default 10: 2 x 10 steps a sample), --rounds N (default 3), --frames N (timed
+// frames per mapper and round, default 20; 0: no rendering), --width W --height H
+// (default 1024x768).
+// Rows, per mesh, resolution and number of threads (medians over the rounds):
+// - first: a new vtkOFBLIC on the sampler's OFB, everything included (packed samples,
+//   tangential field and mask, noise, tracing, convolution, output), EnhancedLIC off
+//   (Eq. 4 once); first+enh: the same with EnhancedLIC on (two passes, high-pass);
+// - anim: a re-convolution with a new AnimationPhase (the kept streamlines gathered
+//   again); anim+enh: the same with EnhancedLIC on;
+// - GB/s: the bytes the LIC must move (a model: the arrays it streams through once,
+//   printed per sample) per second, and its share of the STREAM-triad bandwidth
+//   measured with the same number of threads in the same run.
+// Frames (2 threads, each mesh and resolution): the median frame time of the plain
+// mapper (one colour), of vtkOFBPolyDataMapper showing the LIC (Nearest and
+// InverseDistance lookups), of the same mapper without the LIC (Nearest, the sampler's
+// colours: what the LIC itself adds to a frame) and of an animation frame (new
+// AnimationPhase, LIC update, upload of the LIC array and render), as ratios to the
+// plain mapper's frame. The
+// mappers take turns within every round, so that a change of load hits all of them.
+// On a shared machine the numbers are noisy: compare the ratios, repeat, and note the
+// load (printed from /proc/loadavg at the start and the end).
 #include "vtkOFBReadMesh.h"
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBLIC.h"
+#include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBSampler.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
-#include <cstring>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
-#include <sys/resource.h>
-
 namespace
 {
-double Seconds(const std::chrono::steady_clock::time_point& start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using Clock = std::chrono::steady_clock;
 
-/// CPU time of the process (all threads), in seconds: less disturbed by other load.
-double CPUSeconds()
+double Seconds(const Clock::time_point& start)
 {
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+  return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 double Median(std::vector<double> v)
 {
+  if (v.empty())
+  {
+    return 0.0;
+  }
   std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-/// A rotation about a tilted axis through the centre of the mesh, as point vectors.
-void AddField(vtkPolyData* mesh)
+std::string Load()
 {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
+
+std::vector<std::string> Split(const std::string& list)
+{
+  std::vector<std::string> out;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ','))
+  {
+    if (!item.empty())
+    {
+      out.push_back(item);
+    }
+  }
+  return out;
+}
+
+struct Options
+{
+  std::vector<std::string> Meshes = { "bunny", "horse" };
+  std::vector<int> Resolutions = { 1024, 2048 };
+  std::vector<int> Threads = { 1, 2 };
+  int Steps = 10;
+  int Rounds = 3;
+  int Frames = 20;
+  int Width = 1024;
+  int Height = 768;
+};
+
+// Returns -1 when the options are fine, else the exit code (usage printed).
+int ParseOptions(int argc, char* argv[], Options& o)
+{
+  auto ints = [](const std::string& list)
+  {
+    std::vector<int> v;
+    for (const std::string& s : Split(list))
+    {
+      v.push_back(std::max(1, std::atoi(s.c_str())));
+    }
+    return v;
+  };
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (arg == "--meshes" && hasValue)
+      o.Meshes = Split(argv[++i]);
+    else if (arg == "--resolutions" && hasValue)
+      o.Resolutions = ints(argv[++i]);
+    else if (arg == "--threads" && hasValue)
+      o.Threads = ints(argv[++i]);
+    else if (arg == "--steps" && hasValue)
+      o.Steps = std::max(0, std::atoi(argv[++i]));
+    else if (arg == "--rounds" && hasValue)
+      o.Rounds = std::max(1, std::atoi(argv[++i]));
+    else if (arg == "--frames" && hasValue)
+      o.Frames = std::max(0, std::atoi(argv[++i]));
+    else if (arg == "--width" && hasValue)
+      o.Width = std::max(16, std::atoi(argv[++i]));
+    else if (arg == "--height" && hasValue)
+      o.Height = std::max(16, std::atoi(argv[++i]));
+    else
+    {
+      std::cout << "usage: ofbLICBenchmark [--meshes bunny,horse|FILES] [--resolutions LIST] "
+                   "[--threads LIST] [--steps N] [--rounds N] [--frames N] [--width W] "
+                   "[--height H]\n";
+      return arg == "--help" ? 0 : 1;
+    }
+  }
+  return -1;
+}
+
+std::string MeshPath(const std::string& name)
+{
+  if (name == "bunny")
+  {
+    return std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
+  }
+  if (name == "horse")
+  {
+    return std::string(VTKOFB_DATA_DIR) + "/horse.ply";
+  }
+  return name;
+}
+
+/// The mesh with point normals and a rotation about a tilted axis through its centre as
+/// the point vectors.
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
+{
+  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(path);
+  if (!mesh)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(mesh);
+  normals->SplittingOff();
+  normals->Update();
+  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
   double b[6];
-  mesh->GetBounds(b);
+  out->GetBounds(b);
   const double c[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
   const double a[3] = { 0.36, 0.89, 0.27 };
   vtkNew<vtkFloatArray> flow;
   flow->SetName("Flow");
   flow->SetNumberOfComponents(3);
-  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
   {
-    const double* x = mesh->GetPoint(p);
+    const double* x = out->GetPoint(p);
     const double r[3] = { x[0] - c[0], x[1] - c[1], x[2] - c[2] };
     flow->InsertNextTuple3(
       a[1] * r[2] - a[2] * r[1], a[2] * r[0] - a[0] * r[2], a[0] * r[1] - a[1] * r[0]);
   }
-  mesh->GetPointData()->SetVectors(flow);
+  out->GetPointData()->SetVectors(flow);
+  return out;
+}
+
+/// STREAM triad a = b + s c over arrays far larger than the caches, with the current
+/// number of threads: the best of 5 runs in bytes per second (3 x 8 bytes an element).
+double TriadBandwidth()
+{
+  const vtkIdType n = 1 << 24; // 16 Mi doubles: 128 MiB an array
+  std::vector<double> a(n), b(n, 1.0), c(n, 2.0);
+  vtkSMPTools::For(0,
+    n,
+    1 << 16,
+    [&](vtkIdType begin, vtkIdType end) { std::fill(a.data() + begin, a.data() + end, 0.0); });
+  double best = 0.0;
+  for (int r = 0; r < 5; ++r)
+  {
+    const double s = 1.0 + r;
+    const Clock::time_point t0 = Clock::now();
+    vtkSMPTools::For(0,
+      n,
+      1 << 16,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        double* pa = a.data();
+        const double* pb = b.data();
+        const double* pc = c.data();
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          pa[i] = pb[i] + s * pc[i];
+        }
+      });
+    best = std::max(best, 3.0 * sizeof(double) * n / Seconds(t0));
+  }
+  return best + 0.0 * a[n / 2];
+}
+
+/// Times of one round of the LIC rows, in seconds.
+struct LICTimes
+{
+  double First, Animate, FirstEnhanced, AnimateEnhanced;
+};
+
+LICTimes TimeLIC(vtkOFB* ofb, int steps)
+{
+  LICTimes t;
+  auto update = [](vtkOFBLIC* lic)
+  {
+    const Clock::time_point t0 = Clock::now();
+    lic->Update();
+    return Seconds(t0);
+  };
+  for (int enhanced = 0; enhanced < 2; ++enhanced)
+  {
+    vtkNew<vtkOFBLIC> lic;
+    lic->SetInputData(ofb);
+    lic->SetNumberOfSteps(steps);
+    lic->SetEnhancedLIC(enhanced != 0);
+    lic->AnimateOn();
+    const double first = update(lic);
+    lic->SetAnimationPhase(0.1);
+    const double animate = update(lic);
+    (enhanced ? t.FirstEnhanced : t.First) = first;
+    (enhanced ? t.AnimateEnhanced : t.Animate) = animate;
+  }
+  return t;
+}
+
+/**
+ * Bytes a sample that the LIC moves at least (the model of the bandwidth share): the
+ * re-convolution streams the kept streamline (8 steps bytes), reads the mask and the
+ * noise and writes the result (9 bytes), and the output reads the result and the mask
+ * and writes LIC and LICMask (10 bytes); the first computation also reads the input's
+ * depth, cell index, normal and field (32 bytes), writes the packed sample and the noise
+ * (44 bytes) and writes the streamlines (8 steps bytes).
+ */
+double BytesPerSample(int steps, bool first, bool enhanced)
+{
+  double bytes = 8.0 * steps + 19.0;
+  if (enhanced)
+  {
+    bytes += 8.0 * steps + 9.0 + 16.0; // the second pass, and the high-pass's read and write
+  }
+  if (first)
+  {
+    bytes += 76.0 + 8.0 * steps;
+  }
+  return bytes;
+}
+
+/// The LIC rows of one OFB for every number of threads.
+void RunLIC(const Options& o,
+  const std::string& name,
+  int resolution,
+  vtkOFB* ofb,
+  double buildSeconds)
+{
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  for (int threads : o.Threads)
+  {
+    vtkSMPTools::Initialize(threads);
+    const double triad = TriadBandwidth();
+    std::vector<double> first, animate, firstEnh, animateEnh;
+    for (int r = 0; r < o.Rounds; ++r)
+    {
+      const LICTimes t = TimeLIC(ofb, o.Steps);
+      first.push_back(t.First);
+      animate.push_back(t.Animate);
+      firstEnh.push_back(t.FirstEnhanced);
+      animateEnh.push_back(t.AnimateEnhanced);
+    }
+    auto cell = [&](const std::vector<double>& t, bool isFirst, bool enhanced)
+    {
+      const double m = Median(t);
+      const double bytes = BytesPerSample(o.Steps, isFirst, enhanced) * n / m;
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(1) << std::setw(7) << 1e3 * m << " ms " << std::setw(6)
+        << n / m / 1e6 << " M/s " << std::setprecision(2) << std::setw(5) << bytes / 1e9 << " GB/s "
+        << std::setprecision(0) << std::setw(3) << 100.0 * bytes / triad << "%";
+      return s.str();
+    };
+    std::cout << std::left << std::setw(7) << name << std::right << std::setw(5) << resolution
+              << std::setw(9) << n << std::setw(3) << threads << std::fixed << std::setprecision(1)
+              << std::setw(7) << triad / 1e9 << std::setw(7) << 1e3 * buildSeconds << " | "
+              << cell(first, true, false) << " | " << cell(animate, false, false) << " | "
+              << cell(firstEnh, true, true) << " | " << cell(animateEnh, false, true) << std::endl;
+  }
+}
+
+// Milliseconds per frame of `frames` renders while the camera turns once around the
+// surface (after 3 untimed ones), waiting for completion; `before` runs before each
+// frame (the animation's LIC update), its time included.
+template<typename Before>
+double TimeFrames(vtkRenderWindow* window,
+  vtkRenderer* renderer,
+  vtkCamera* start,
+  int frames,
+  Before&& before)
+{
+  vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->DeepCopy(start);
+  for (int i = 0; i < 3; ++i)
+  {
+    before(i);
+    window->Render();
+  }
+  if (gl)
+  {
+    gl->WaitForCompletion();
+  }
+  const Clock::time_point t0 = Clock::now();
+  for (int i = 0; i < frames; ++i)
+  {
+    before(i);
+    camera->Azimuth(360.0 / frames);
+    window->Render();
+    if (gl)
+    {
+      gl->WaitForCompletion();
+    }
+  }
+  const double ms = 1e3 * Seconds(t0) / frames;
+  camera->DeepCopy(start);
+  return ms;
+}
+
+/// The frame rows of one mesh and OFB (2 threads for the LIC).
+void RunFrames(const Options& o,
+  const std::string& name,
+  int resolution,
+  vtkPolyData* mesh,
+  vtkOFB* ofb)
+{
+  vtkSMPTools::Initialize(2);
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetInputData(ofb);
+  lic->SetNumberOfSteps(o.Steps);
+  lic->EnhancedLICOff();
+  lic->AnimateOn();
+  lic->Update();
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(o.Width, o.Height);
+  window->SetMultiSamples(0);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.1, 0.1, 0.15);
+  window->AddRenderer(renderer);
+  vtkNew<vtkActor> actor;
+  actor->GetProperty()->SetColor(0.9, 0.85, 0.75);
+  renderer->AddActor(actor);
+  vtkNew<vtkPolyDataMapper> plain;
+  plain->SetInputData(mesh);
+  plain->ScalarVisibilityOff();
+  std::vector<vtkSmartPointer<vtkMapper>> mappers = { plain.Get() };
+  // The OFB mapper showing the LIC (Nearest, InverseDistance), then without it (Nearest,
+  // the sampler's colours only): the cost of the LIC in the display itself.
+  for (int mode : { vtkOFBPolyDataMapper::Nearest,
+         vtkOFBPolyDataMapper::InverseDistance,
+         vtkOFBPolyDataMapper::Nearest })
+  {
+    vtkNew<vtkOFBPolyDataMapper> m;
+    m->SetInputData(mesh);
+    m->SetOFBConnection(lic->GetOutputPort());
+    m->SetLookupMode(mode);
+    if (mappers.size() < 3)
+    {
+      m->SetIntensityArrayName("LIC");
+      m->IntensityModulationOn();
+    }
+    mappers.emplace_back(m.Get());
+  }
+  actor->SetMapper(plain);
+  renderer->ResetCamera();
+  window->Render();
+  vtkNew<vtkCamera> start;
+  start->DeepCopy(renderer->GetActiveCamera());
+  // Rows: plain, LIC Nearest, LIC InverseDistance, Nearest without the LIC, animation
+  // (LIC Nearest with a new phase a frame).
+  std::vector<std::vector<double>> ms(5);
+  auto nothing = [](int) {};
+  for (int r = 0; r < o.Rounds; ++r)
+  {
+    for (size_t m = 0; m < mappers.size(); ++m)
+    {
+      actor->SetMapper(mappers[m]);
+      ms[m].push_back(TimeFrames(window, renderer, start, o.Frames, nothing));
+    }
+    actor->SetMapper(mappers[1]);
+    ms[4].push_back(TimeFrames(window,
+      renderer,
+      start,
+      o.Frames,
+      [&](int i) { lic->SetAnimationPhase(0.05 * (i + 1) + 0.01 * r); }));
+  }
+  const double peer = Median(ms[0]);
+  std::cout << std::left << std::setw(7) << name << std::right << std::setw(5) << resolution
+            << std::fixed << std::setprecision(1) << std::setw(10) << peer;
+  for (int m = 1; m < 5; ++m)
+  {
+    const double t = Median(ms[m]);
+    std::cout << std::setw(10) << t << " (" << std::setprecision(2) << t / peer << "x)"
+              << std::setprecision(1);
+  }
+  std::cout << std::endl;
+  auto* ofbMapper = vtkOFBPolyDataMapper::SafeDownCast(mappers[1]);
+  if (!ofbMapper->GetLastRenderUsedOFB())
+  {
+    std::cout << "  (vtkOFBPolyDataMapper did not draw from the OFB on this context)\n";
+  }
 }
 }
 
 int main(int argc, char* argv[])
 {
-  std::string mesh = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
-  int resolution = 1024, threads = 2, steps = 10, rounds = 3;
-  for (int i = 1; i < argc; ++i)
+  Options o;
+  const int parsed = ParseOptions(argc, argv, o);
+  if (parsed >= 0)
   {
-    const std::string arg = argv[i];
-    const bool hasValue = i + 1 < argc;
-    if (arg == "--mesh" && hasValue)
-      mesh = argv[++i];
-    else if (arg == "--resolution" && hasValue)
-      resolution = std::atoi(argv[++i]);
-    else if (arg == "--threads" && hasValue)
-      threads = std::atoi(argv[++i]);
-    else if (arg == "--steps" && hasValue)
-      steps = std::atoi(argv[++i]);
-    else if (arg == "--rounds" && hasValue)
-      rounds = std::max(1, std::atoi(argv[++i]));
-    else
+    return parsed;
+  }
+  std::cout << "ofbLICBenchmark: 2 x " << o.Steps << " steps a sample, medians of " << o.Rounds
+            << " rounds, load " << Load() << "\n"
+            << "first: new vtkOFBLIC, everything included; anim: re-convolution with a new "
+               "AnimationPhase; +enh: EnhancedLIC on.\n"
+            << "Each cell: time, M samples/s, GB/s the LIC moves (model: "
+            << BytesPerSample(o.Steps, true, false) << ", " << BytesPerSample(o.Steps, false, false)
+            << ", " << BytesPerSample(o.Steps, true, true) << ", "
+            << BytesPerSample(o.Steps, false, true)
+            << " bytes a sample), % of the STREAM triad (triad GB/s, same threads, same run).\n"
+            << "mesh     res  samples th  triad  build |        first                      | "
+               "        anim                      |        first+enh                  |  "
+               "      anim+enh\n";
+  struct Built
+  {
+    std::string Name;
+    int Resolution;
+    vtkSmartPointer<vtkPolyData> Mesh;
+    vtkSmartPointer<vtkOFB> OFB;
+  };
+  std::vector<Built> built;
+  for (const std::string& name : o.Meshes)
+  {
+    vtkSmartPointer<vtkPolyData> mesh = ReadMesh(MeshPath(name));
+    if (!mesh)
     {
-      std::cerr << "usage: " << argv[0]
-                << " [--mesh FILE] [--resolution N] [--threads N] [--steps N] [--rounds N]\n";
-      return arg == "--help" ? 0 : 1;
+      std::cerr << "Cannot read " << MeshPath(name) << "\n";
+      return 1;
+    }
+    for (int resolution : o.Resolutions)
+    {
+      vtkSMPTools::Initialize(2);
+      vtkNew<vtkOFBSampler> sampler;
+      sampler->SetInputData(mesh);
+      sampler->SetResolution(resolution);
+      const Clock::time_point t0 = Clock::now();
+      sampler->Update();
+      const double buildSeconds = Seconds(t0);
+      vtkSmartPointer<vtkOFB> ofb = sampler->GetOutput();
+      RunLIC(o, name, resolution, ofb, buildSeconds);
+      built.push_back({ name, resolution, mesh, ofb });
     }
   }
-  vtkSmartPointer<vtkPolyData> surface = vtkofbtest::ReadMeshFile(mesh);
-  if (!surface)
+  if (o.Frames > 0)
   {
-    std::cerr << "Cannot read " << mesh << "\n";
-    return 1;
+    std::cout << "\nFrames (ms, " << o.Width << "x" << o.Height << ", " << o.Frames
+              << " frames a mapper and round, LIC on 2 threads):\n"
+              << "mesh     res     plain  LIC Nearest        LIC InverseDistance   "
+                 "no LIC, Nearest    animation frame (new phase + render)\n";
+    for (const Built& b : built)
+    {
+      RunFrames(o, b.Name, b.Resolution, b.Mesh, b.OFB);
+    }
   }
-  AddField(surface);
-  vtkSMPTools::Initialize(threads);
-
-  std::vector<double> build, first, enhanced, animate;
-  std::vector<double> buildCPU, firstCPU, enhancedCPU, animateCPU;
-  double c0 = 0.0;
-  vtkIdType n = 0;
-  for (int r = 0; r < rounds; ++r)
-  {
-    vtkNew<vtkOFBSampler> sampler;
-    sampler->SetInputData(surface);
-    sampler->SetResolution(resolution);
-    auto t0 = std::chrono::steady_clock::now();
-    c0 = CPUSeconds();
-    sampler->Update();
-    build.push_back(Seconds(t0));
-    buildCPU.push_back(CPUSeconds() - c0);
-    n = sampler->GetOutput()->GetNumberOfSamples();
-
-    vtkNew<vtkOFBLIC> lic;
-    lic->SetInputData(sampler->GetOutput());
-    lic->SetNumberOfSteps(steps);
-    lic->EnhancedLICOff();
-    lic->AnimateOn();
-    t0 = std::chrono::steady_clock::now();
-    c0 = CPUSeconds();
-    lic->Update();
-    first.push_back(Seconds(t0));
-    firstCPU.push_back(CPUSeconds() - c0);
-    lic->SetAnimationPhase(0.1);
-    t0 = std::chrono::steady_clock::now();
-    c0 = CPUSeconds();
-    lic->Update();
-    animate.push_back(Seconds(t0));
-    animateCPU.push_back(CPUSeconds() - c0);
-    lic->EnhancedLICOn();
-    t0 = std::chrono::steady_clock::now();
-    c0 = CPUSeconds();
-    lic->Update();
-    enhanced.push_back(Seconds(t0));
-    enhancedCPU.push_back(CPUSeconds() - c0);
-  }
-  const double b = Median(build);
-  std::cout << mesh << " at " << resolution << ": " << n << " samples, " << threads
-            << " threads, 2 x " << steps << " steps, median of " << rounds << " rounds\n";
-  const double bc = Median(buildCPU);
-  auto report = [&](const char* what, const std::vector<double>& t, const std::vector<double>& c)
-  {
-    const double m = Median(t);
-    const double mc = Median(c);
-    std::cout << "  " << what << ": " << 1000.0 * m << " ms, " << n / m / 1e6 << " M samples/s, "
-              << m / b << " x the OFB build; CPU " << 1000.0 * mc << " ms, " << mc / bc
-              << " x the OFB build's CPU\n";
-  };
-  std::cout << "  OFB build (peer): " << 1000.0 * b << " ms, " << n / b / 1e6
-            << " M samples/s; CPU " << 1000.0 * bc << " ms\n";
-  report("first LIC", first, firstCPU);
-  report("animation re-convolution", animate, animateCPU);
-  report("enhanced LIC (two passes)", enhanced, enhancedCPU);
+  std::cout << "load at the end " << Load() << "\n";
   return 0;
 }

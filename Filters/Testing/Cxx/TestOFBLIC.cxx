@@ -292,6 +292,99 @@ TEST(LIC, AnimationPhaseMovesTheStreaksAndRepeats)
 }
 
 //------------------------------------------------------------------------------
+TEST(LIC, KeptStreamlinesGiveTheResultOfAFreshComputation)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  const double axis[3] = { 0.3, 1.0, 0.2 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(bunny, 128, RotationField(axis));
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  ASSERT_GT(n, 0);
+  for (int enhanced = 0; enhanced < 2; ++enhanced)
+  {
+    // Re-convolved from the kept streamlines: a new phase, then a new kernel and noise.
+    vtkNew<vtkOFBLIC> kept;
+    kept->SetNumberOfSteps(8);
+    kept->SetEnhancedLIC(enhanced != 0);
+    kept->AnimateOn();
+    RunLIC(kept, ofb);
+    const unsigned long keptKiB = kept->GetCacheMemorySize();
+    kept->SetAnimationPhase(0.3);
+    vtkSmartPointer<vtkOFB> phase = RunLIC(kept, ofb);
+    kept->SetKernelTypeToHann();
+    kept->SetNoiseGeneratorSeed(5);
+    vtkSmartPointer<vtkOFB> kernel = RunLIC(kept, ofb);
+    // A new filter computing everything for the same settings.
+    vtkNew<vtkOFBLIC> fresh;
+    fresh->SetNumberOfSteps(8);
+    fresh->SetEnhancedLIC(enhanced != 0);
+    fresh->AnimateOn();
+    fresh->SetAnimationPhase(0.3);
+    vtkSmartPointer<vtkOFB> freshPhase = RunLIC(fresh, ofb);
+    fresh->SetKernelTypeToHann();
+    fresh->SetNoiseGeneratorSeed(5);
+    vtkSmartPointer<vtkOFB> freshKernel = RunLIC(fresh, ofb);
+    // Without keeping them, every sample traces its own streamline (not the fast LIC's
+    // windows of longer streamlines): another LIC of the same field and noise, correlated
+    // with it (two LICs of independent noise are not).
+    vtkNew<vtkOFBLIC> unkept;
+    unkept->CacheStreamlinesOff();
+    unkept->SetNumberOfSteps(8);
+    unkept->SetEnhancedLIC(enhanced != 0);
+    unkept->AnimateOn();
+    unkept->SetAnimationPhase(0.3);
+    vtkSmartPointer<vtkOFB> unkeptPhase = RunLIC(unkept, ofb);
+    // The kept streamlines are 2 x 8 steps x 4 bytes a sample more.
+    EXPECT_GE(keptKiB, unkept->GetCacheMemorySize() + n * 2 * 8 * 4 / 1024);
+    std::vector<double> a(LICValues(phase), LICValues(phase) + n);
+    std::vector<double> b(LICValues(unkeptPhase), LICValues(unkeptPhase) + n);
+    EXPECT_GT(Pearson(a, b).Value, 0.5) << "enhanced " << enhanced;
+    EXPECT_EQ(std::memcmp(LICValues(phase), LICValues(freshPhase), n * sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(LICValues(kernel), LICValues(freshKernel), n * sizeof(float)), 0);
+    EXPECT_NE(std::memcmp(LICValues(phase), LICValues(kernel), n * sizeof(float)), 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, ChangedFieldOrStepsTraceAgain)
+{
+  const double dir[3] = { 1.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSquare(), 96, UniformField(dir));
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  vtkNew<vtkOFBLIC> kept;
+  kept->EnhancedLICOff();
+  vtkSmartPointer<vtkOFB> before = RunLIC(kept, ofb);
+  // The field turned by 90 degrees in place (the same array, Modified()).
+  vtkDataArray* field = ofb->GetSampleData()->GetVectors();
+  ASSERT_NE(field, nullptr);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double v[3];
+    field->GetTuple(i, v);
+    field->SetTuple3(i, -v[1], v[0], v[2]);
+  }
+  field->Modified();
+  kept->Modified();
+  vtkSmartPointer<vtkOFB> turned = RunLIC(kept, ofb);
+  vtkNew<vtkOFBLIC> fresh;
+  fresh->EnhancedLICOff();
+  vtkSmartPointer<vtkOFB> freshTurned = RunLIC(fresh, ofb);
+  EXPECT_NE(std::memcmp(LICValues(before), LICValues(turned), n * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(LICValues(turned), LICValues(freshTurned), n * sizeof(float)), 0);
+  // Other steps: the streamlines are traced again, as a fresh filter does.
+  kept->SetNumberOfSteps(7);
+  fresh->SetNumberOfSteps(7);
+  EXPECT_EQ(
+    std::memcmp(LICValues(RunLIC(kept, ofb)), LICValues(RunLIC(fresh, ofb)), n * sizeof(float)), 0);
+  kept->SetStepSize(0.6);
+  fresh->SetStepSize(0.6);
+  EXPECT_EQ(
+    std::memcmp(LICValues(RunLIC(kept, ofb)), LICValues(RunLIC(fresh, ofb)), n * sizeof(float)), 0);
+  kept->ReleaseCache();
+  EXPECT_EQ(kept->GetCacheMemorySize(), 0ul);
+}
+
+//------------------------------------------------------------------------------
 TEST(LIC, KernelsAndOrientedLICDiffer)
 {
   const double dir[3] = { 1.0, 0.0, 0.0 };

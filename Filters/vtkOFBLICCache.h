@@ -1,0 +1,203 @@
+// Private header of vtkOFBLIC: what it keeps between updates (the packed samples, the
+// noise, the traced streamlines and work buffers), each part with the key of what it was
+// computed from.
+#ifndef vtkOFBLICCache_h
+#define vtkOFBLICCache_h
+
+#include "vtkOFBHugePages.h"
+#include "vtkOFBLICTracer.h"
+#include "vtkType.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <utility>
+#include <vector>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
+/// A list of the values an intermediate result depends on, compared bit for bit.
+class vtkOFBLICCacheKey
+{
+public:
+  vtkOFBLICCacheKey& Add(double v)
+  {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof(bits));
+    this->Values.push_back(bits);
+    return *this;
+  }
+  vtkOFBLICCacheKey& Add(std::uint64_t v)
+  {
+    this->Values.push_back(v);
+    return *this;
+  }
+  vtkOFBLICCacheKey& Add(const void* p)
+  {
+    return this->Add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p)));
+  }
+  bool operator==(const vtkOFBLICCacheKey& o) const { return this->Values == o.Values; }
+  bool operator!=(const vtkOFBLICCacheKey& o) const { return !(*this == o); }
+
+private:
+  std::vector<std::uint64_t> Values;
+};
+
+/**
+ * An array of trivially copyable T whose values are not initialized (resize() leaves
+ * them undefined, even the old ones when it grows): vtkOFBLIC writes every value before
+ * reading it, so clearing would only cost time. Large arrays are mapped in 2 MiB pages
+ * where the system offers them (Linux transparent huge pages), which makes the first
+ * touch of a new array hundreds of times fewer page faults.
+ */
+template<typename T>
+class vtkOFBLICBuffer
+{
+public:
+  vtkOFBLICBuffer() = default;
+  vtkOFBLICBuffer(const vtkOFBLICBuffer&) = delete;
+  vtkOFBLICBuffer& operator=(const vtkOFBLICBuffer&) = delete;
+  ~vtkOFBLICBuffer() { this->Release(); }
+
+  void resize(std::size_t n)
+  {
+    if (n > this->Capacity)
+    {
+      this->Release();
+      this->Allocate(n);
+    }
+    this->Size = n;
+  }
+  void Release()
+  {
+    if (this->Data)
+    {
+#ifdef __linux__
+      if (this->Mapped)
+      {
+        munmap(this->Mapped, this->MappedBytes);
+      }
+      else
+#endif
+      {
+        std::free(this->Data);
+      }
+    }
+    this->Data = nullptr;
+    this->Mapped = nullptr;
+    this->Size = this->Capacity = this->MappedBytes = 0;
+  }
+  void swap(vtkOFBLICBuffer& o)
+  {
+    std::swap(this->Data, o.Data);
+    std::swap(this->Mapped, o.Mapped);
+    std::swap(this->MappedBytes, o.MappedBytes);
+    std::swap(this->Size, o.Size);
+    std::swap(this->Capacity, o.Capacity);
+  }
+  T* data()
+  {
+    return this->Data;
+  }
+  const T* data() const
+  {
+    return this->Data;
+  }
+  std::size_t size() const
+  {
+    return this->Size;
+  }
+  std::size_t capacity() const
+  {
+    return this->Capacity;
+  }
+  bool empty() const
+  {
+    return this->Size == 0;
+  }
+  T& operator[](std::size_t i)
+  {
+    return this->Data[i];
+  }
+  const T& operator[](std::size_t i) const
+  {
+    return this->Data[i];
+  }
+
+private:
+  void Allocate(std::size_t n)
+  {
+    const std::size_t bytes = n * sizeof(T);
+#ifdef __linux__
+    constexpr std::size_t huge = std::size_t(2) << 20;
+    if (bytes >= 2 * huge)
+    {
+      // Over-map by a page and use the 2 MiB aligned part inside.
+      const std::size_t mapped = (bytes + 2 * huge - 1) / huge * huge;
+      void* p = mmap(nullptr, mapped, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+      if (p != MAP_FAILED)
+      {
+        const std::size_t address = reinterpret_cast<std::size_t>(p);
+        const std::size_t aligned = (address + huge - 1) / huge * huge;
+        vtkofb::AdviseHugePages(reinterpret_cast<void*>(aligned), mapped - (aligned - address));
+        this->Mapped = p;
+        this->MappedBytes = mapped;
+        this->Data = reinterpret_cast<T*>(aligned);
+        this->Capacity = n;
+        return;
+      }
+    }
+#endif
+    this->Data = static_cast<T*>(std::malloc(std::max<std::size_t>(bytes, 1)));
+    if (!this->Data)
+    {
+      throw std::bad_alloc();
+    }
+    this->Capacity = n;
+  }
+
+  T* Data = nullptr;
+  void* Mapped = nullptr;
+  std::size_t MappedBytes = 0;
+  std::size_t Size = 0;
+  std::size_t Capacity = 0;
+};
+
+/**
+ * What vtkOFBLIC keeps between updates (see the class description), each part with the
+ * key of what it was computed from; an empty key is never valid.
+ */
+class vtkOFBLICCache
+{
+public:
+  vtkOFBLICCacheKey SamplesKey; // Samples, Mask, Masked
+  vtkOFBLICBuffer<vtkOFBLICSample> Samples;
+  vtkOFBLICBuffer<unsigned char> Mask;
+  vtkIdType Masked = 0;
+  vtkOFBLICCacheKey NoiseKey;
+  vtkOFBLICBuffer<float> Noise;
+  vtkOFBLICCacheKey LinesKey;
+  vtkOFBLICBuffer<vtkTypeInt32> Lines;
+  vtkOFBLICBuffer<unsigned char> Covered; // samples given their streamline, while tracing
+  vtkOFBLICBuffer<float> Values;          // work buffers, kept to avoid allocating every update
+  vtkOFBLICBuffer<float> Scratch;
+
+  void Clear()
+  {
+    this->SamplesKey = this->NoiseKey = this->LinesKey = vtkOFBLICCacheKey();
+    this->Masked = 0;
+    this->Samples.Release();
+    this->Mask.Release();
+    this->Noise.Release();
+    this->Lines.Release();
+    this->Covered.Release();
+    this->Values.Release();
+    this->Scratch.Release();
+  }
+};
+
+#endif

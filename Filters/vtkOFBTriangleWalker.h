@@ -170,12 +170,8 @@ public:
   {
 #if defined(__GNUC__) || defined(__clang__)
     __builtin_prefetch(&this->Records[t]);
-    const char* c = reinterpret_cast<const char*>(&this->CornerPoints[3 * t]);
-    __builtin_prefetch(c);
-    __builtin_prefetch(c + 64);
-#else
-    (void)t;
 #endif
+    this->PrefetchCorners(t);
   }
 
   /// Fetch ahead the corner positions of `t` (for `Position`).

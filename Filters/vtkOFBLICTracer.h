@@ -169,7 +169,7 @@ public:
     const vtkIdType begin = this->Offsets[cell];
     // The record of the cell's first sample, the likely answer, is fetched while the
     // depths are compared: the two misses of the step's chain overlap.
-    __builtin_prefetch(this->Samples + begin);
+    VTKOFB_PREFETCH(this->Samples + begin);
     vtkIdType best = -1;
     double bestDistance = this->CellSize;
     for (vtkIdType i = begin, end = this->Offsets[cell + 1]; i < end; ++i)

@@ -767,14 +767,14 @@ void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
     {
       for (vtkIdType i = first; i < last; i += 16)
       {
-        __builtin_prefetch(colors + 4 * i, 1);
+        VTKOFB_PREFETCH_WRITE(colors + 4 * i);
       }
-      __builtin_prefetch(colors + 4 * (last - 1), 1);
+      VTKOFB_PREFETCH_WRITE(colors + 4 * (last - 1));
       for (vtkIdType i = first; i < last; i += 64)
       {
-        __builtin_prefetch(flags + i, 1);
+        VTKOFB_PREFETCH_WRITE(flags + i);
       }
-      __builtin_prefetch(flags + last - 1, 1);
+      VTKOFB_PREFETCH_WRITE(flags + last - 1);
     });
 }
 

@@ -250,6 +250,20 @@ public:
   template <typename Functor, typename Prefetch>
   void ForEachSampleInSphere(
     const double center[3], double radius, Functor&& f, Prefetch&& prefetch) const;
+
+  /**
+   * Many sphere queries in one call, with the result of calling
+   * ForEachSampleInSphere on each in turn: `sphere(vtkIdType k, double center[3],
+   * double& radius)` sets sphere k of [0, n), and `f(vtkIdType k, vtkIdType id,
+   * double squaredDistance)` is called for its samples, spheres in increasing k, each
+   * sphere's samples in ForEachSampleInSphere's order; `sphere(k)` may be called before
+   * `f` is done with sphere k - 2, never earlier. The spheres are software-pipelined:
+   * while sphere k is visited, sphere k + 1's samples and sphere k + 2's cell offsets
+   * are on their way from memory, which is what many small spheres (particle
+   * footprints, small brushes) wait for one by one. `prefetch` as above.
+   */
+  template <typename Sphere, typename Functor, typename Prefetch>
+  void ForEachSampleInSpheres(vtkIdType n, Sphere&& sphere, Functor&& f, Prefetch&& prefetch) const;
 #endif
 
   ///@{
@@ -333,19 +347,37 @@ protected:
   }
 
 #ifndef __VTK_WRAP__
-  /// One row of cells [u0, u1] of ForEachSampleInSphere's grid `a` (see there).
+  /// One row of cells [u0, u1] of a sphere query on grid `a` (vtkOFBSphereQuery.txx).
   struct SphereRow
   {
     vtkIdType RowBase; // global id of cell u = 0 of the row
     vtkIdType U0, U1;
-    double UCentre; // the centre's u, world units relative to cell 0's centre
-    double D;       // the centre's depth relative to the origin
-    double DV2;     // squared distance of the row from the centre in v
+    vtkIdType First, Last; // the samples of cells [U0, U1] (set by FetchSphereRow)
+    double UCentre;        // the centre's u, world units relative to cell 0's centre
+    double D;              // the centre's depth relative to the origin
+    double DV2;            // squared distance of the row from the centre in v
     double DHigh;
     double R2;
     float DLow;
     int UAxis;
   };
+  /// The cells of grid `a` under a sphere's bounding box, and what its rows share.
+  struct SphereGrid
+  {
+    vtkIdType U0, U1, V0, V1, NU;
+    double CU; // the centre's u in cell units
+    double CV; // the centre's v, world units
+    int VAxis;
+    SphereRow Base;
+  };
+  /// False if the sphere's box misses grid `a`.
+  bool BeginSphereGrid(int a, const double center[3], double radius, SphereGrid& grid) const;
+  /// Row `iv` of the grid, only the cells under the circle's chord; false if it misses.
+  bool SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow& row) const;
+  /// Read the row's sample range and prefetch its depths and cell indices.
+  void FetchSphereRow(SphereRow& row) const;
+  template <typename Functor>
+  void ForEachSampleInRow(const SphereRow& row, bool indexed, Functor& f) const;
   template <typename Functor>
   void ForEachSampleInRowScan(const SphereRow& row, Functor& f) const;
   template <typename Functor>
@@ -393,215 +425,7 @@ private:
 };
 
 #ifndef __VTK_WRAP__
-template <typename Functor>
-void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const
-{
-  this->ForEachSampleInSphere(center, radius, f, [](vtkIdType, vtkIdType) {});
-}
-
-template <typename Functor, typename Prefetch>
-void vtkOFB::ForEachSampleInSphere(
-  const double center[3], double radius, Functor&& f, Prefetch&& prefetch) const
-{
-  if (this->CellSize <= 0.0 || !(radius >= 0.0) || this->GetNumberOfSamples() == 0)
-  {
-    return;
-  }
-  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
-  const vtkTypeUInt32* cellOf = this->CellIndex->GetPointer(0);
-  const float* depths = this->Depths->GetPointer(0);
-  const bool indexed = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples();
-  const double s = this->CellSize;
-  const double r2 = radius * radius;
-  for (int a = 0; a < 3; ++a)
-  {
-    const int ua = (a + 1) % 3;
-    const int va = (a + 2) % 3;
-    const vtkIdType nu = this->Dimensions[ua];
-    const vtkIdType nv = this->Dimensions[va];
-    // Cells whose centre lies within the projected box [c - r, c + r], clamped to the
-    // grid before they become integers (a huge or infinite radius covers the grid).
-    const double lu = (center[ua] - radius - this->Origin[ua]) / s - 0.5;
-    const double hu = (center[ua] + radius - this->Origin[ua]) / s - 0.5;
-    const double lv = (center[va] - radius - this->Origin[va]) / s - 0.5;
-    const double hv = (center[va] + radius - this->Origin[va]) / s - 0.5;
-    if (!(hu >= 0.0 && hv >= 0.0 && lu <= nu - 1 && lv <= nv - 1))
-    {
-      continue;
-    }
-    const vtkIdType u0 = static_cast<vtkIdType>(std::ceil(std::max(lu, 0.0)));
-    const vtkIdType u1 = static_cast<vtkIdType>(std::floor(std::min(hu, nu - 1.0)));
-    const vtkIdType v0 = static_cast<vtkIdType>(std::ceil(std::max(lv, 0.0)));
-    const vtkIdType v1 = static_cast<vtkIdType>(std::floor(std::min(hv, nv - 1.0)));
-    SphereRow base;
-    base.D = center[a] - this->Origin[a];
-    base.R2 = r2;
-    base.DLow = static_cast<float>(base.D - radius);
-    base.DHigh = base.D + radius;
-    base.UCentre = center[ua];
-    base.UAxis = ua;
-    const double cu = (center[ua] - this->Origin[ua]) / s - 0.5; // centre in cell units
-    // Row iv: only the cells under the circle's chord, one cell wider on each side
-    // than exact arithmetic needs (the distance test decides), clamped before they
-    // become integers as above. False if the row misses the sphere.
-    auto chord = [&](vtkIdType iv, SphereRow& row)
-    {
-      row = base;
-      const double dv = this->Origin[va] + (iv + 0.5) * s - center[va];
-      row.DV2 = dv * dv;
-      if (row.DV2 > r2)
-      {
-        return false;
-      }
-      row.RowBase = this->CellBase[a] + iv * nu;
-      const double half = std::sqrt(r2 - row.DV2) / s;
-      row.U0 = static_cast<vtkIdType>(std::max(static_cast<double>(u0), std::floor(cu - half)));
-      row.U1 = static_cast<vtkIdType>(std::min(static_cast<double>(u1), std::ceil(cu + half)));
-      return row.U0 <= row.U1;
-    };
-    // Rows are computed two ahead (their offsets prefetched) and their samples are
-    // prefetched one ahead: a dab's rows lie far apart in memory.
-    SphereRow ring[3];
-    bool valid[3] = { false, false, false };
-    for (vtkIdType iv = v0; iv <= std::min(v1, v0 + 1); ++iv)
-    {
-      valid[iv % 3] = chord(iv, ring[iv % 3]);
-    }
-    for (vtkIdType iv = v0; iv <= v1; ++iv)
-    {
-      if (iv + 2 <= v1)
-      {
-        SphereRow& ahead = ring[(iv + 2) % 3];
-        valid[(iv + 2) % 3] = chord(iv + 2, ahead);
-        if (valid[(iv + 2) % 3])
-        {
-          VTKOFB_PREFETCH(offsets + ahead.RowBase + ahead.U0);
-          VTKOFB_PREFETCH(offsets + ahead.RowBase + ahead.U1 + 1);
-        }
-      }
-      if (iv + 1 <= v1 && valid[(iv + 1) % 3])
-      {
-        const SphereRow& next = ring[(iv + 1) % 3];
-        const vtkIdType first = offsets[next.RowBase + next.U0];
-        const vtkIdType last =
-          std::min<vtkIdType>(offsets[next.RowBase + next.U1 + 1], first + 512);
-        for (vtkIdType i = first; i < last; i += 16)
-        {
-          VTKOFB_PREFETCH(depths + i);
-          VTKOFB_PREFETCH(cellOf + i);
-        }
-        if (first < last)
-        {
-          VTKOFB_PREFETCH(depths + last - 1);
-          VTKOFB_PREFETCH(cellOf + last - 1);
-          prefetch(first, last);
-        }
-      }
-      if (!valid[iv % 3])
-      {
-        continue;
-      }
-      const SphereRow& row = ring[iv % 3];
-      // A row's samples are consecutive: where its cells hold few samples each, one
-      // linear pass over them all beats a search of each cell's depth range.
-      const vtkIdType cells = row.U1 - row.U0 + 1;
-      const vtkIdType samples = offsets[row.RowBase + row.U1 + 1] - offsets[row.RowBase + row.U0];
-      if (indexed && samples <= 6 * cells)
-      {
-        this->ForEachSampleInRowScan(row, f);
-      }
-      else
-      {
-        this->ForEachSampleInRowCells(row, f);
-      }
-    }
-  }
-}
-
-template <typename Functor>
-void vtkOFB::ForEachSampleInRowScan(const SphereRow& row, Functor& f) const
-{
-  // Every sample of the row's cells, tested without a branch into a small batch of
-  // hits, then handed to `f` in order. The squared distance is computed as in
-  // ForEachSampleInRowCells, to the bit.
-  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
-  const vtkTypeUInt32* cellOf = this->CellIndex->GetPointer(0);
-  const float* depths = this->Depths->GetPointer(0);
-  const double s = this->CellSize;
-  const double ou = this->Origin[row.UAxis];
-  constexpr int Batch = 64;
-  vtkIdType hit[Batch];
-  double hitD2[Batch];
-  vtkIdType i = offsets[row.RowBase + row.U0];
-  const vtkIdType end = offsets[row.RowBase + row.U1 + 1];
-  while (i < end)
-  {
-    const vtkIdType stop = std::min(end, i + Batch);
-    int n = 0;
-    for (; i < stop; ++i)
-    {
-      const double iu = static_cast<double>(static_cast<vtkIdType>(cellOf[i]) - row.RowBase);
-      const double du = ou + (iu + 0.5) * s - row.UCentre;
-      const double duv2 = du * du + row.DV2;
-      const double dd = depths[i] - row.D;
-      const double dist2 = duv2 + dd * dd;
-      hit[n] = i;
-      hitD2[n] = dist2;
-      n += dist2 <= row.R2;
-    }
-    for (int k = 0; k < n; ++k)
-    {
-      f(hit[k], hitD2[k]);
-    }
-  }
-}
-
-template <typename Functor>
-void vtkOFB::ForEachSampleInRowCells(const SphereRow& row, Functor& f) const
-{
-  // Cell by cell: a cell's first sample at depth >= d - r by a linear scan over the
-  // few samples of a typical cell, a binary search over many.
-  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
-  const float* depths = this->Depths->GetPointer(0);
-  const double s = this->CellSize;
-  const double ou = this->Origin[row.UAxis];
-  for (vtkIdType iu = row.U0; iu <= row.U1; ++iu)
-  {
-    const double du = ou + (iu + 0.5) * s - row.UCentre;
-    const double duv2 = du * du + row.DV2;
-    if (duv2 > row.R2)
-    {
-      continue;
-    }
-    const vtkIdType cell = row.RowBase + iu;
-    vtkIdType i = offsets[cell];
-    const vtkIdType end = offsets[cell + 1];
-    if (end - i > 8)
-    {
-      i = this->LowerBound(i, end, row.DLow);
-    }
-    else
-    {
-      while (i < end && depths[i] < row.DLow)
-      {
-        ++i;
-      }
-    }
-    for (; i < end; ++i)
-    {
-      if (depths[i] > row.DHigh)
-      {
-        break;
-      }
-      const double dd = depths[i] - row.D;
-      const double dist2 = duv2 + dd * dd;
-      if (dist2 <= row.R2)
-      {
-        f(i, dist2);
-      }
-    }
-  }
-}
+#include "vtkOFBSphereQuery.txx" // IWYU pragma: export
 #endif
 
 #endif

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <thread>
 
 using vtkofbpaint::Blend;
@@ -43,14 +44,15 @@ vtkTypeUInt64 MortonCode(const glm::dvec3& q)
   return spread(q.x) | (spread(q.y) << 1) | (spread(q.z) << 2);
 }
 
-// Per-thread undo records of one call.
-struct LocalRecords
+}
+
+/// Per-thread undo records of one call, and scratch for resolved dabs.
+struct vtkOFBPaintKernel::LocalRecords
 {
   std::vector<vtkOFBColorRecord> Colors;
   std::vector<vtkOFBNormalRecord> Normals;
+  std::vector<ColorDab> ColorDabs;
 };
-
-}
 
 /// What one thread needs while painting dabs, and what it knows already: the last
 /// changed-block flag it set and the last initial-value block it made sure of (both
@@ -554,7 +556,7 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
         serial.Visited = 0;
         serial.ProgressBase = k / total;
         serial.ProgressSpan = 1.0 / total;
-        this->PaintDab(dabs[order[k]], settings, serial);
+        this->PaintDabs(dabs, order.data() + k, 1, settings, serial);
       }
     }
     else
@@ -564,10 +566,7 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
         [&](vtkIdType first, vtkIdType last)
         {
           DabWork work{ &s.Records.Local(), nullptr };
-          for (vtkIdType k = first; k < last; ++k)
-          {
-            this->PaintDab(dabs[order[k]], settings, work);
-          }
+          this->PaintDabs(dabs, order.data() + first, last - first, settings, work);
         });
     }
   }
@@ -645,101 +644,135 @@ bool vtkOFBPaintKernel::SmearSource(const vtkOFBDab& dab,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPaintKernel::PaintDab(const vtkOFBDab& dab,
+void vtkOFBPaintKernel::PaintDabs(const std::vector<vtkOFBDab>& dabs,
+  const int* order,
+  vtkIdType count,
   const vtkOFBPaintSettings& settings,
   DabWork& work)
 {
-  const float* normals = this->Normals ? this->Normals->GetPointer(0) : nullptr;
-  double centreNormal[3] = { 0.0, 0.0, 0.0 };
-  const bool aware = settings.NormalAware && normals && this->CentreNormal(dab, centreNormal);
-  const float nc[3] = { static_cast<float>(centreNormal[0]),
-    static_cast<float>(centreNormal[1]),
-    static_cast<float>(centreNormal[2]) };
-  const float* cone = aware ? nc : nullptr;
   if (settings.Target == 1)
   {
-    this->PaintNormals(dab, settings, cone, work);
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      const vtkOFBDab& dab = dabs[order[k]];
+      double n[3] = { 0.0, 0.0, 0.0 };
+      const bool aware = settings.NormalAware && this->CentreNormal(dab, n);
+      const float cone[3] = { static_cast<float>(n[0]),
+        static_cast<float>(n[1]),
+        static_cast<float>(n[2]) };
+      this->PaintNormals(dab, settings, aware ? cone : nullptr, work);
+    }
     return;
   }
-  float src[4] = { dab.Color[0], dab.Color[1], dab.Color[2], dab.Color[3] };
+  // The default falloffs and blend mode compiled in, the others chosen per sample.
+  if (settings.BlendMode == vtkOFBBrush::Mix)
+  {
+    this->PaintColorsWith<vtkOFBBrush::Mix>(dabs, order, count, settings, work);
+  }
+  else
+  {
+    this->PaintColorsWith<-1>(dabs, order, count, settings, work);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPaintKernel::ResolveColorDab(
+  const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, ColorDab& out) const
+{
+  for (int k = 0; k < 4; ++k)
+  {
+    out.Source[k] = dab.Color[k];
+  }
+  out.InverseRadius = 1.0 / dab.Radius;
+  out.Strength = dab.Strength;
+  double n[3] = { 0.0, 0.0, 0.0 };
+  out.Aware = settings.NormalAware && this->Normals && this->CentreNormal(dab, n);
+  for (int k = 0; k < 3; ++k)
+  {
+    out.Cone[k] = static_cast<float>(n[k]);
+  }
   if (settings.Target == 2)
   {
     float carried[4];
     if (!dab.HasPrevious || !this->SmearSource(dab, settings, carried))
     {
-      return; // nothing to carry (the first dab of a stroke)
+      return false; // nothing to carry (the first dab of a stroke)
     }
     const float amount = static_cast<float>(settings.SmearAmount);
     for (int k = 0; k < 4; ++k)
     {
-      src[k] += amount * (carried[k] - src[k]);
+      out.Source[k] += amount * (carried[k] - out.Source[k]);
     }
   }
-  // The default falloffs and blend mode compiled in, the others chosen per sample.
-  if (settings.BlendMode == vtkOFBBrush::Mix)
-  {
-    this->PaintColorsWith<vtkOFBBrush::Mix>(dab, settings, src, cone, work);
-  }
-  else
-  {
-    this->PaintColorsWith<-1>(dab, settings, src, cone, work);
-  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
 template<int Mode>
-void vtkOFBPaintKernel::PaintColorsWith(const vtkOFBDab& dab,
+void vtkOFBPaintKernel::PaintColorsWith(const std::vector<vtkOFBDab>& dabs,
+  const int* order,
+  vtkIdType count,
   const vtkOFBPaintSettings& settings,
-  const float src[4],
-  const float* centreNormal,
   DabWork& work)
 {
   switch (settings.Falloff)
   {
     case vtkOFBBrush::Smooth:
-      this->PaintColors<Mode, vtkOFBBrush::Smooth>(dab, settings, src, centreNormal, work);
+      this->PaintColors<Mode, vtkOFBBrush::Smooth>(dabs, order, count, settings, work);
       break;
     case vtkOFBBrush::Constant:
-      this->PaintColors<Mode, vtkOFBBrush::Constant>(dab, settings, src, centreNormal, work);
+      this->PaintColors<Mode, vtkOFBBrush::Constant>(dabs, order, count, settings, work);
       break;
     default:
-      this->PaintColors<Mode, -1>(dab, settings, src, centreNormal, work);
+      this->PaintColors<Mode, -1>(dabs, order, count, settings, work);
       break;
   }
 }
 
 //------------------------------------------------------------------------------
 template<int Mode, int FalloffKind>
-void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
+void vtkOFBPaintKernel::PaintColors(const std::vector<vtkOFBDab>& dabs,
+  const int* order,
+  vtkIdType count,
   const vtkOFBPaintSettings& settings,
-  const float src[4],
-  const float* centreNormal,
   DabWork& work)
 {
   unsigned char* colors = this->Colors->GetPointer(0);
   unsigned char* flags = this->Flags.get();
   const float* normals = this->Normals ? this->Normals->GetPointer(0) : nullptr;
   const float cosMax = static_cast<float>(settings.CosMaxAngle);
-  const double invR = 1.0 / dab.Radius;
-  const double strength = dab.Strength;
   const int mode = Mode >= 0 ? Mode : settings.BlendMode;
   std::vector<vtkOFBColorRecord>& records = work.Records->Colors;
+  std::vector<ColorDab>& state = work.Records->ColorDabs;
+  state.resize(count);
   const unsigned char recordBit = settings.RecordUndo ? ColorRecorded : 0;
-  this->OFB->ForEachSampleInSphere(
-    dab.Center,
-    dab.Radius,
-    [&](vtkIdType i, double d2)
+  // The dabs are resolved (smear source, centre normal) as the pipelined query
+  // reaches them; a dab with nothing to paint gets a NaN radius (no samples).
+  this->OFB->ForEachSampleInSpheres(
+    count,
+    [&](vtkIdType k, double center[3], double& radius)
+    {
+      const vtkOFBDab& dab = dabs[order[k]];
+      center[0] = dab.Center[0];
+      center[1] = dab.Center[1];
+      center[2] = dab.Center[2];
+      radius = this->ResolveColorDab(dab, settings, state[k])
+        ? dab.Radius
+        : std::numeric_limits<double>::quiet_NaN();
+    },
+    [&](vtkIdType k, vtkIdType i, double d2)
     {
       if (work.Progress)
       {
         this->ReportProgress(work);
       }
-      if (centreNormal && !Facing(normals + 3 * i, centreNormal, cosMax))
+      const ColorDab& dab = state[k];
+      if (dab.Aware && !Facing(normals + 3 * i, dab.Cone, cosMax))
       {
         return;
       }
-      const float g =
-        static_cast<float>(strength * FalloffOf<FalloffKind>(settings, std::sqrt(d2) * invR));
+      const float g = static_cast<float>(
+        dab.Strength * FalloffOf<FalloffKind>(settings, std::sqrt(d2) * dab.InverseRadius));
       if (g <= 0.0f)
       {
         return;
@@ -748,7 +781,7 @@ void vtkOFBPaintKernel::PaintColors(const vtkOFBDab& dab,
       const unsigned char* initial =
         mode == vtkOFBBrush::Erase ? this->InitialColor(i, work) : nullptr;
       unsigned char result[4];
-      Blend<Mode>(c, src, g, mode, initial, result);
+      Blend<Mode>(c, dab.Source, g, mode, initial, result);
       if (std::memcmp(result, c, 4) == 0)
       {
         return;

@@ -145,18 +145,36 @@ private:
 
   void ComputeWaves(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings);
   void OrderWaves(int numberOfWaves, const glm::dvec3& low, double maxReach);
-  void PaintDab(const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, DabWork& work);
-  template<int Mode>
-  void PaintColorsWith(const vtkOFBDab& dab,
+  /// What painting a colour dab needs, resolved before its samples are visited.
+  struct ColorDab
+  {
+    float Source[4]; // the colour laid down (a smear's carried colour mixed in)
+    double InverseRadius;
+    double Strength;
+    float Cone[3]; // the centre's normal, when Aware
+    bool Aware;
+  };
+  struct LocalRecords;
+  /// Paint dabs[order[0 .. count - 1]] in that order (one wave's share, or one dab).
+  void PaintDabs(const std::vector<vtkOFBDab>& dabs,
+    const int* order,
+    vtkIdType count,
     const vtkOFBPaintSettings& settings,
-    const float src[4],
-    const float* centreNormal,
+    DabWork& work);
+  /// False if the dab paints nothing (a smear with nothing to carry).
+  bool ResolveColorDab(
+    const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, ColorDab& out) const;
+  template<int Mode>
+  void PaintColorsWith(const std::vector<vtkOFBDab>& dabs,
+    const int* order,
+    vtkIdType count,
+    const vtkOFBPaintSettings& settings,
     DabWork& work);
   template<int Mode, int FalloffKind>
-  void PaintColors(const vtkOFBDab& dab,
+  void PaintColors(const std::vector<vtkOFBDab>& dabs,
+    const int* order,
+    vtkIdType count,
     const vtkOFBPaintSettings& settings,
-    const float src[4],
-    const float* centreNormal,
     DabWork& work);
   void PaintNormals(const vtkOFBDab& dab,
     const vtkOFBPaintSettings& settings,

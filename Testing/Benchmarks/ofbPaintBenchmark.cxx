@@ -89,6 +89,7 @@ struct Options
   int Repetitions = 3;
   bool OpenVDB = true;
   bool Render = true;
+  bool FootprintsOnly = false; // only the 10,000 footprints (for profiling)
 };
 
 bool ParseOptions(int argc, char* argv[], Options& o)
@@ -131,11 +132,15 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       o.Render = false;
     }
+    else if (arg == "--footprints-only")
+    {
+      o.FootprintsOnly = true;
+    }
     else
     {
       std::cerr << "usage: ofbPaintBenchmark [--mesh FILE] [--resolutions 1024,2048] "
                    "[--dabs5 20000] [--dabs25 2000] [--repetitions 3] [--no-openvdb] "
-                   "[--no-render]\n";
+                   "[--no-render] [--footprints-only]\n";
       return false;
     }
   }
@@ -597,6 +602,11 @@ int main(int argc, char* argv[])
     auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb.OFB->GetSampleData()->GetArray("Colors"));
     ofb.Initial.assign(
       colors->GetPointer(0), colors->GetPointer(0) + 4 * colors->GetNumberOfTuples());
+    if (o.FootprintsOnly)
+    {
+      TimeParticles(ofb, o);
+      continue;
+    }
     LocatorPeer locator;
     locator.Build(ofb.OFB);
     void* vdb = nullptr;

@@ -1,11 +1,11 @@
 // Queries, copies and the point-cloud converter of vtkOFB.
 #include "vtkOFBTestUtilities.h"
 
+#include "vtkExecutive.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
-#include "vtkExecutive.h"
 #include "vtkOFBToPolyData.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
@@ -94,6 +94,87 @@ TEST(Queries, SphereQueryMatchesBruteForce)
 }
 
 //------------------------------------------------------------------------------
+TEST(Queries, ManySpheresMatchOneByOne)
+{
+  // ForEachSampleInSpheres gives each sphere's samples with their squared distances
+  // in the order of ForEachSampleInSphere, spheres in order: small spheres (the
+  // pipelined path), spheres of more rows than a plan holds, a NaN radius, spheres
+  // off the grid, and runs of 0, 1 and 2 spheres.
+  vtkSmartPointer<vtkOFB> ofb = BunnyOFB(256);
+  ASSERT_NE(ofb, nullptr);
+  const double s = ofb->GetCellSize();
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(11);
+  std::vector<double> centers;
+  std::vector<double> radii;
+  for (int q = 0; q < 300; ++q)
+  {
+    double x[3];
+    random->Next();
+    ofb->GetSamplePosition(
+      static_cast<vtkIdType>(random->GetValue() * (ofb->GetNumberOfSamples() - 1)), x);
+    random->Next();
+    double r = (0.3 + 4.0 * random->GetValue()) * s;
+    if (q % 50 == 7)
+    {
+      r = 30.0 * s; // more rows than a plan holds: queried alone
+    }
+    else if (q % 50 == 13)
+    {
+      r = std::nan("");
+    }
+    else if (q % 50 == 29)
+    {
+      x[0] += 1e3 * s; // off the grid
+    }
+    centers.insert(centers.end(), x, x + 3);
+    radii.push_back(r);
+  }
+  struct Hit
+  {
+    vtkIdType Sphere, Id;
+    double D2;
+    bool operator==(const Hit& o) const
+    {
+      return this->Sphere == o.Sphere && this->Id == o.Id && this->D2 == o.D2;
+    }
+  };
+  for (vtkIdType count : { vtkIdType(0), vtkIdType(1), vtkIdType(2), vtkIdType(300) })
+  {
+    std::vector<Hit> expected, found;
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      ofb->ForEachSampleInSphere(&centers[3 * k],
+        radii[k],
+        [&](vtkIdType i, double d2) {
+          expected.push_back({ k, i, d2 });
+        });
+    }
+    vtkIdType prefetched = 0;
+    ofb->ForEachSampleInSpheres(
+      count,
+      [&](vtkIdType k, double c[3], double& r)
+      {
+        std::copy_n(&centers[3 * k], 3, c);
+        r = radii[k];
+      },
+      [&](vtkIdType k, vtkIdType i, double d2) {
+        found.push_back({ k, i, d2 });
+      },
+      [&](vtkIdType first, vtkIdType last)
+      {
+        EXPECT_LE(0, first);
+        EXPECT_LT(first, last);
+        EXPECT_LE(last, ofb->GetNumberOfSamples());
+        ++prefetched;
+      });
+    EXPECT_TRUE(found == expected)
+      << count << " spheres: " << found.size() << " hits, " << expected.size() << " one by one";
+    EXPECT_EQ(prefetched > 0, count > 0);
+  }
+}
+
+//------------------------------------------------------------------------------
 TEST(Queries, FindSampleUsesTheGridOfTheNormal)
 {
   vtkSmartPointer<vtkOFB> ofb = BunnyOFB(256);
@@ -144,8 +225,7 @@ TEST(Queries, ShallowAndDeepCopies)
   // Painting the deep copy leaves the original alone; the shallow copy shares it.
   auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetScalars());
   auto* deepColors = vtkUnsignedCharArray::SafeDownCast(deep->GetSampleData()->GetScalars());
-  auto* shallowColors =
-    vtkUnsignedCharArray::SafeDownCast(shallow->GetSampleData()->GetScalars());
+  auto* shallowColors = vtkUnsignedCharArray::SafeDownCast(shallow->GetSampleData()->GetScalars());
   ASSERT_NE(colors, nullptr);
   deepColors->SetValue(0, 17);
   EXPECT_EQ(colors->GetValue(0), 255);

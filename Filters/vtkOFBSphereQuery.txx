@@ -1,0 +1,380 @@
+/**
+ * @file   vtkOFBSphereQuery.txx
+ * @brief  vtkOFB's sphere queries: ForEachSampleInSphere and ForEachSampleInSpheres
+ *
+ * Included by vtkOFB.h. A sphere's candidates are, on each grid, the rows of cells
+ * under its projection (a disc), each row only over the circle's chord; a row's
+ * samples are consecutive in memory, so a row is one range of sample ids.
+ */
+
+#ifndef vtkOFBSphereQuery_txx
+#define vtkOFBSphereQuery_txx
+
+#include <algorithm>
+#include <cmath>
+
+//------------------------------------------------------------------------------
+inline bool vtkOFB::BeginSphereGrid(int a,
+  const double center[3],
+  double radius,
+  SphereGrid& grid) const
+{
+  const int ua = (a + 1) % 3;
+  const int va = (a + 2) % 3;
+  const double s = this->CellSize;
+  const vtkIdType nu = this->Dimensions[ua];
+  const vtkIdType nv = this->Dimensions[va];
+  // Cells whose centre lies within the projected box [c - r, c + r], clamped to the
+  // grid before they become integers (a huge or infinite radius covers the grid).
+  const double lu = (center[ua] - radius - this->Origin[ua]) / s - 0.5;
+  const double hu = (center[ua] + radius - this->Origin[ua]) / s - 0.5;
+  const double lv = (center[va] - radius - this->Origin[va]) / s - 0.5;
+  const double hv = (center[va] + radius - this->Origin[va]) / s - 0.5;
+  if (!(hu >= 0.0 && hv >= 0.0 && lu <= nu - 1 && lv <= nv - 1))
+  {
+    return false;
+  }
+  grid.U0 = static_cast<vtkIdType>(std::ceil(std::max(lu, 0.0)));
+  grid.U1 = static_cast<vtkIdType>(std::floor(std::min(hu, nu - 1.0)));
+  grid.V0 = static_cast<vtkIdType>(std::ceil(std::max(lv, 0.0)));
+  grid.V1 = static_cast<vtkIdType>(std::floor(std::min(hv, nv - 1.0)));
+  grid.CU = (center[ua] - this->Origin[ua]) / s - 0.5; // centre in cell units
+  grid.CV = center[va];
+  grid.VAxis = va;
+  grid.NU = nu;
+  SphereRow& base = grid.Base;
+  base.RowBase = this->CellBase[a];
+  base.D = center[a] - this->Origin[a];
+  base.R2 = radius * radius;
+  base.DLow = static_cast<float>(base.D - radius);
+  base.DHigh = base.D + radius;
+  base.UCentre = center[ua];
+  base.UAxis = ua;
+  base.First = base.Last = 0;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+inline bool vtkOFB::SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow& row) const
+{
+  // Only the cells under the circle's chord, one cell wider on each side than exact
+  // arithmetic needs (the distance test decides), clamped before they become
+  // integers as above. False if the row misses the sphere.
+  const double s = this->CellSize;
+  row = grid.Base;
+  const double dv = this->Origin[grid.VAxis] + (iv + 0.5) * s - grid.CV;
+  row.DV2 = dv * dv;
+  if (row.DV2 > row.R2)
+  {
+    return false;
+  }
+  row.RowBase = grid.Base.RowBase + iv * grid.NU;
+  const double half = std::sqrt(row.R2 - row.DV2) / s;
+  row.U0 =
+    static_cast<vtkIdType>(std::max(static_cast<double>(grid.U0), std::floor(grid.CU - half)));
+  row.U1 =
+    static_cast<vtkIdType>(std::min(static_cast<double>(grid.U1), std::ceil(grid.CU + half)));
+  return row.U0 <= row.U1;
+}
+
+//------------------------------------------------------------------------------
+inline void vtkOFB::FetchSphereRow(SphereRow& row) const
+{
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  row.First = offsets[row.RowBase + row.U0];
+  row.Last = offsets[row.RowBase + row.U1 + 1];
+  const vtkIdType last = std::min<vtkIdType>(row.Last, row.First + 512);
+  const float* depths = this->Depths->GetPointer(0);
+  const vtkTypeUInt32* cellOf = this->CellIndex->GetPointer(0);
+  for (vtkIdType i = row.First; i < last; i += 16)
+  {
+    VTKOFB_PREFETCH(depths + i);
+    VTKOFB_PREFETCH(cellOf + i);
+  }
+  if (row.First < last)
+  {
+    VTKOFB_PREFETCH(depths + last - 1);
+    VTKOFB_PREFETCH(cellOf + last - 1);
+  }
+}
+
+//------------------------------------------------------------------------------
+template<typename Functor>
+void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const
+{
+  this->ForEachSampleInSphere(center, radius, f, [](vtkIdType, vtkIdType) {});
+}
+
+//------------------------------------------------------------------------------
+template<typename Functor, typename Prefetch>
+void vtkOFB::ForEachSampleInSphere(const double center[3],
+  double radius,
+  Functor&& f,
+  Prefetch&& prefetch) const
+{
+  if (this->CellSize <= 0.0 || !(radius >= 0.0) || this->GetNumberOfSamples() == 0)
+  {
+    return;
+  }
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  const bool indexed = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples();
+  for (int a = 0; a < 3; ++a)
+  {
+    SphereGrid grid;
+    if (!this->BeginSphereGrid(a, center, radius, grid))
+    {
+      continue;
+    }
+    // Rows are computed two ahead (their offsets prefetched) and their samples are
+    // prefetched one ahead: a sphere's rows lie far apart in memory.
+    SphereRow ring[3];
+    bool valid[3] = { false, false, false };
+    for (vtkIdType iv = grid.V0; iv <= std::min(grid.V1, grid.V0 + 1); ++iv)
+    {
+      valid[iv % 3] = this->SphereChord(grid, iv, ring[iv % 3]);
+    }
+    for (vtkIdType iv = grid.V0; iv <= grid.V1; ++iv)
+    {
+      if (iv + 2 <= grid.V1)
+      {
+        SphereRow& ahead = ring[(iv + 2) % 3];
+        valid[(iv + 2) % 3] = this->SphereChord(grid, iv + 2, ahead);
+        if (valid[(iv + 2) % 3])
+        {
+          VTKOFB_PREFETCH(offsets + ahead.RowBase + ahead.U0);
+          VTKOFB_PREFETCH(offsets + ahead.RowBase + ahead.U1 + 1);
+        }
+      }
+      if (iv == grid.V0 && valid[iv % 3])
+      {
+        this->FetchSphereRow(ring[iv % 3]);
+      }
+      if (iv + 1 <= grid.V1 && valid[(iv + 1) % 3])
+      {
+        SphereRow& next = ring[(iv + 1) % 3];
+        this->FetchSphereRow(next);
+        if (next.First < next.Last)
+        {
+          prefetch(next.First, std::min<vtkIdType>(next.Last, next.First + 512));
+        }
+      }
+      if (valid[iv % 3])
+      {
+        this->ForEachSampleInRow(ring[iv % 3], indexed, f);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+template<typename Sphere, typename Functor, typename Prefetch>
+void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
+  Sphere&& sphere,
+  Functor&& f,
+  Prefetch&& prefetch) const
+{
+  if (n <= 0 || this->CellSize <= 0.0 || this->GetNumberOfSamples() == 0)
+  {
+    return;
+  }
+  // A sphere of a few cells has a few rows, each a separate place in memory: one
+  // sphere at a time waits for memory at every row. Here the rows of sphere k + 2
+  // are found and their cell offsets prefetched, sphere k + 1's samples are
+  // prefetched, and sphere k's are visited, so that each sphere's memory latency
+  // overlaps the work of the two before it. Spheres of more rows than a plan holds
+  // are queried alone (their rows hide each other's latency).
+  constexpr int MaxRows = 48;
+  struct Plan
+  {
+    double Center[3];
+    double Radius;
+    int NumberOfRows;
+    bool Alone;
+    SphereRow Rows[MaxRows];
+  };
+  constexpr vtkIdType PlanAhead = 2;
+  constexpr vtkIdType FetchAhead = 1;
+  constexpr vtkIdType Ring = PlanAhead + 1;
+  Plan plans[Ring];
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  const bool indexed = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples();
+  auto plan = [&](vtkIdType k, Plan& p)
+  {
+    sphere(k, p.Center, p.Radius);
+    p.NumberOfRows = 0;
+    p.Alone = false;
+    if (!(p.Radius >= 0.0))
+    {
+      return;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      SphereGrid grid;
+      if (!this->BeginSphereGrid(a, p.Center, p.Radius, grid))
+      {
+        continue;
+      }
+      if (p.NumberOfRows + (grid.V1 - grid.V0 + 1) > MaxRows)
+      {
+        p.Alone = true;
+        return;
+      }
+      for (vtkIdType iv = grid.V0; iv <= grid.V1; ++iv)
+      {
+        SphereRow& row = p.Rows[p.NumberOfRows];
+        if (this->SphereChord(grid, iv, row))
+        {
+          VTKOFB_PREFETCH(offsets + row.RowBase + row.U0);
+          VTKOFB_PREFETCH(offsets + row.RowBase + row.U1 + 1);
+          ++p.NumberOfRows;
+        }
+      }
+    }
+  };
+  auto fetch = [&](Plan& p)
+  {
+    for (int j = 0; j < p.NumberOfRows; ++j)
+    {
+      SphereRow& row = p.Rows[j];
+      this->FetchSphereRow(row);
+      if (row.First < row.Last)
+      {
+        prefetch(row.First, std::min<vtkIdType>(row.Last, row.First + 512));
+      }
+    }
+  };
+  for (vtkIdType k = 0; k < std::min<vtkIdType>(n, PlanAhead); ++k)
+  {
+    plan(k, plans[k % Ring]);
+  }
+  for (vtkIdType k = 0; k < std::min<vtkIdType>(n, FetchAhead); ++k)
+  {
+    fetch(plans[k % Ring]);
+  }
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    if (k + PlanAhead < n)
+    {
+      plan(k + PlanAhead, plans[(k + PlanAhead) % Ring]);
+    }
+    if (k + FetchAhead < n)
+    {
+      fetch(plans[(k + FetchAhead) % Ring]);
+    }
+    Plan& p = plans[k % Ring];
+    auto fk = [&f, k](vtkIdType i, double d2) { f(k, i, d2); };
+    if (p.Alone)
+    {
+      this->ForEachSampleInSphere(p.Center, p.Radius, fk, prefetch);
+      continue;
+    }
+    for (int j = 0; j < p.NumberOfRows; ++j)
+    {
+      this->ForEachSampleInRow(p.Rows[j], indexed, fk);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+template<typename Functor>
+void vtkOFB::ForEachSampleInRow(const SphereRow& row, bool indexed, Functor& f) const
+{
+  // A row's samples are consecutive: where its cells hold few samples each, one
+  // linear pass over them all beats a search of each cell's depth range.
+  if (indexed && row.Last - row.First <= 6 * (row.U1 - row.U0 + 1))
+  {
+    this->ForEachSampleInRowScan(row, f);
+  }
+  else
+  {
+    this->ForEachSampleInRowCells(row, f);
+  }
+}
+
+//------------------------------------------------------------------------------
+template<typename Functor>
+void vtkOFB::ForEachSampleInRowScan(const SphereRow& row, Functor& f) const
+{
+  // Every sample of the row's cells, tested without a branch into a small batch of
+  // hits, then handed to `f` in order. The squared distance is computed as in
+  // ForEachSampleInRowCells, to the bit.
+  const vtkTypeUInt32* cellOf = this->CellIndex->GetPointer(0);
+  const float* depths = this->Depths->GetPointer(0);
+  const double s = this->CellSize;
+  const double ou = this->Origin[row.UAxis];
+  constexpr int Batch = 64;
+  vtkIdType hit[Batch];
+  double hitD2[Batch];
+  vtkIdType i = row.First;
+  const vtkIdType end = row.Last;
+  while (i < end)
+  {
+    const vtkIdType stop = std::min(end, i + Batch);
+    int n = 0;
+    for (; i < stop; ++i)
+    {
+      const double iu = static_cast<double>(static_cast<vtkIdType>(cellOf[i]) - row.RowBase);
+      const double du = ou + (iu + 0.5) * s - row.UCentre;
+      const double duv2 = du * du + row.DV2;
+      const double dd = depths[i] - row.D;
+      const double dist2 = duv2 + dd * dd;
+      hit[n] = i;
+      hitD2[n] = dist2;
+      n += dist2 <= row.R2;
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      f(hit[k], hitD2[k]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+template<typename Functor>
+void vtkOFB::ForEachSampleInRowCells(const SphereRow& row, Functor& f) const
+{
+  // Cell by cell: a cell's first sample at depth >= d - r by a linear scan over the
+  // few samples of a typical cell, a binary search over many.
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  const float* depths = this->Depths->GetPointer(0);
+  const double s = this->CellSize;
+  const double ou = this->Origin[row.UAxis];
+  for (vtkIdType iu = row.U0; iu <= row.U1; ++iu)
+  {
+    const double du = ou + (iu + 0.5) * s - row.UCentre;
+    const double duv2 = du * du + row.DV2;
+    if (duv2 > row.R2)
+    {
+      continue;
+    }
+    const vtkIdType cell = row.RowBase + iu;
+    vtkIdType i = offsets[cell];
+    const vtkIdType end = offsets[cell + 1];
+    if (end - i > 8)
+    {
+      i = this->LowerBound(i, end, row.DLow);
+    }
+    else
+    {
+      while (i < end && depths[i] < row.DLow)
+      {
+        ++i;
+      }
+    }
+    for (; i < end; ++i)
+    {
+      if (depths[i] > row.DHigh)
+      {
+        break;
+      }
+      const double dd = depths[i] - row.D;
+      const double dist2 = duv2 + dd * dd;
+      if (dist2 <= row.R2)
+      {
+        f(i, dist2);
+      }
+    }
+  }
+}
+
+#endif

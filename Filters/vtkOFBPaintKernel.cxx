@@ -4,6 +4,7 @@
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
+#include "vtkOFBHugePages.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
@@ -84,7 +85,8 @@ struct vtkOFBPaintKernel::Scratch
   std::vector<int> Fill;
   std::vector<int> Members;
   std::vector<int> Wave;
-  std::vector<vtkTypeUInt64> Key;
+  std::vector<std::pair<vtkTypeUInt64, int>> Key; // Morton code, dab
+  std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>> ChangedParts;
   vtkSMPThreadLocal<LocalRecords> Records;
 };
 
@@ -108,6 +110,7 @@ void vtkOFBPaintKernel::Reset(vtkOFB* ofb, vtkUnsignedCharArray* colors, vtkFloa
   {
     this->NumberOfSamples = n;
     this->Flags.reset(new unsigned char[std::max<vtkIdType>(n, 1)]);
+    vtkofb::AdviseHugePages(this->Flags.get(), static_cast<size_t>(n)); // before the memset
     this->NumberOfChangedBlocks = (n >> ChangedBlockShift) + 1;
     this->ChangedBlocks.reset(new std::atomic<unsigned char>[this->NumberOfChangedBlocks]);
   }
@@ -331,13 +334,14 @@ void vtkOFBPaintKernel::ClearRecorded(const std::vector<vtkOFBColorRecord>& colo
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges)
+vtkIdType vtkOFBPaintKernel::CollectChangedBlocks(vtkIdType firstBlock,
+  vtkIdType lastBlock,
+  std::vector<std::pair<vtkIdType, vtkIdType>>& ranges)
 {
-  ranges.clear();
   vtkIdType count = 0;
   const vtkIdType n = this->NumberOfSamples;
   unsigned char* flags = this->Flags.get();
-  for (vtkIdType b = 0; b < this->NumberOfChangedBlocks; ++b)
+  for (vtkIdType b = firstBlock; b < lastBlock; ++b)
   {
     if (!this->ChangedBlocks[b].load(std::memory_order_relaxed))
     {
@@ -371,6 +375,48 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtk
       else
       {
         ranges.emplace_back(i, i + 1);
+      }
+    }
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges)
+{
+  // Chunks of blocks in parallel, their ranges joined in order (a run that spans two
+  // chunks is joined too), so the result does not depend on the number of threads.
+  ranges.clear();
+  const vtkIdType blocks = this->NumberOfChangedBlocks;
+  constexpr vtkIdType ChunkBlocks = 256;
+  const vtkIdType chunks = (blocks + ChunkBlocks - 1) / ChunkBlocks;
+  std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>>& parts = this->Work->ChangedParts;
+  parts.resize(static_cast<size_t>(chunks));
+  std::vector<vtkIdType> counts(static_cast<size_t>(chunks), 0);
+  vtkSMPTools::For(0,
+    chunks,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType c = first; c < last; ++c)
+      {
+        parts[c].clear();
+        counts[c] = this->CollectChangedBlocks(
+          c * ChunkBlocks, std::min(blocks, (c + 1) * ChunkBlocks), parts[c]);
+      }
+    });
+  vtkIdType count = 0;
+  for (vtkIdType c = 0; c < chunks; ++c)
+  {
+    count += counts[c];
+    for (const auto& r : parts[c])
+    {
+      if (!ranges.empty() && ranges.back().second == r.first)
+      {
+        ranges.back().second = r.second;
+      }
+      else
+      {
+        ranges.push_back(r);
       }
     }
   }
@@ -508,17 +554,22 @@ void vtkOFBPaintKernel::OrderWaves(int numberOfWaves, const glm::dvec3& low, dou
   auto& key = s.Key;
   key.resize(n);
   const double scale = 1.0 / std::max(maxReach, 1e-300);
-  for (size_t j = 0; j < n; ++j)
-  {
-    key[j] = MortonCode((s.Centre[j] - low) * scale);
-  }
   for (int w = 0; w < numberOfWaves; ++w)
   {
-    if (waveStarts[w + 1] - waveStarts[w] > 2)
+    const int begin = waveStarts[w];
+    const int end = waveStarts[w + 1];
+    if (end - begin <= 2)
     {
-      std::sort(order.begin() + waveStarts[w],
-        order.begin() + waveStarts[w + 1],
-        [&key](int a, int b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
+      continue;
+    }
+    for (int k = begin; k < end; ++k)
+    {
+      key[k] = { MortonCode((s.Centre[order[k]] - low) * scale), order[k] };
+    }
+    std::sort(key.begin() + begin, key.begin() + end);
+    for (int k = begin; k < end; ++k)
+    {
+      order[k] = key[k].second;
     }
   }
 }
@@ -657,9 +708,9 @@ void vtkOFBPaintKernel::PaintDabs(const std::vector<vtkOFBDab>& dabs,
       const vtkOFBDab& dab = dabs[order[k]];
       double n[3] = { 0.0, 0.0, 0.0 };
       const bool aware = settings.NormalAware && this->CentreNormal(dab, n);
-      const float cone[3] = { static_cast<float>(n[0]),
-        static_cast<float>(n[1]),
-        static_cast<float>(n[2]) };
+      const float cone[3] = {
+        static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2])
+      };
       this->PaintNormals(dab, settings, aware ? cone : nullptr, work);
     }
     return;
@@ -676,8 +727,9 @@ void vtkOFBPaintKernel::PaintDabs(const std::vector<vtkOFBDab>& dabs,
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPaintKernel::ResolveColorDab(
-  const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, ColorDab& out) const
+bool vtkOFBPaintKernel::ResolveColorDab(const vtkOFBDab& dab,
+  const vtkOFBPaintSettings& settings,
+  ColorDab& out) const
 {
   for (int k = 0; k < 4; ++k)
   {

@@ -26,6 +26,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 class vtkOFB;
@@ -55,7 +56,7 @@ struct vtkOFBPaintSettings
   double BumpDepth = 0.5;
   bool NormalAware = false;
   double CosMaxAngle = 0.0;
-  bool RecordUndo = true; // false: keep no previous values (an UndoLimit of 0)
+  bool RecordUndo = true;          // false: keep no previous values (an UndoLimit of 0)
   std::vector<double> CustomTable; // Custom falloff sampled at x = i / (size - 1)
 };
 
@@ -162,8 +163,9 @@ private:
     const vtkOFBPaintSettings& settings,
     DabWork& work);
   /// False if the dab paints nothing (a smear with nothing to carry).
-  bool ResolveColorDab(
-    const vtkOFBDab& dab, const vtkOFBPaintSettings& settings, ColorDab& out) const;
+  bool ResolveColorDab(const vtkOFBDab& dab,
+    const vtkOFBPaintSettings& settings,
+    ColorDab& out) const;
   template<int Mode>
   void PaintColorsWith(const std::vector<vtkOFBDab>& dabs,
     const int* order,
@@ -188,6 +190,9 @@ private:
   const float* InitialNormal(vtkIdType id, DabWork& work);
   void MarkBlockChanged(vtkIdType id, DabWork& work);
   void ReportProgress(DabWork& work) const;
+  vtkIdType CollectChangedBlocks(vtkIdType firstBlock,
+    vtkIdType lastBlock,
+    std::vector<std::pair<vtkIdType, vtkIdType>>& ranges);
 
   vtkOFB* OFB = nullptr;
   vtkUnsignedCharArray* Colors = nullptr;

@@ -144,8 +144,6 @@ private:
   struct DabWork;
   struct Scratch;
 
-  void ComputeWaves(const std::vector<vtkOFBDab>& dabs, const vtkOFBPaintSettings& settings);
-  void OrderWaves(int numberOfWaves, const glm::dvec3& low, double maxReach);
   /// What painting a colour dab needs, resolved before its samples are visited.
   struct ColorDab
   {

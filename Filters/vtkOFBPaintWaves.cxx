@@ -1,0 +1,175 @@
+#include "vtkOFBPaintWaves.h"
+
+#include "vtkOFBPaintKernel.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+// Morton code of a point in units of the largest dab reach (21 bits per axis).
+vtkTypeUInt64 MortonCode(const glm::dvec3& q)
+{
+  auto spread = [](double v)
+  {
+    vtkTypeUInt64 x = static_cast<vtkTypeUInt64>(std::min(std::max(v, 0.0), 2097151.0));
+    x = (x | (x << 32)) & 0x1f00000000ffffull;
+    x = (x | (x << 16)) & 0x1f0000ff0000ffull;
+    x = (x | (x << 8)) & 0x100f00f00f00f00full;
+    x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
+    x = (x | (x << 2)) & 0x1249249249249249ull;
+    return x;
+  };
+  return spread(q.x) | (spread(q.y) << 1) | (spread(q.z) << 2);
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintWaves::Compute(const std::vector<vtkOFBDab>& dabs, bool smear)
+{
+  // Each dab's bounding sphere covers what it writes and, for a smear, what it reads.
+  const size_t n = dabs.size();
+  auto& centre = this->Centre;
+  auto& reach = this->Reach;
+  centre.resize(n);
+  reach.resize(n);
+  double maxReach = 0.0;
+  glm::dvec3 low(VTK_DOUBLE_MAX);
+  for (size_t j = 0; j < n; ++j)
+  {
+    const vtkOFBDab& d = dabs[j];
+    glm::dvec3 c(d.Center[0], d.Center[1], d.Center[2]);
+    double r = d.Radius;
+    if (smear && d.HasPrevious)
+    {
+      const glm::dvec3 p(d.Previous[0], d.Previous[1], d.Previous[2]);
+      r += 0.5 * glm::length(c - p);
+      c = 0.5 * (c + p);
+    }
+    centre[j] = c;
+    reach[j] = r;
+    maxReach = std::max(maxReach, r);
+    low = glm::min(low, c);
+  }
+  // Spatial hash of cells of edge 2 * maxReach: overlapping dabs lie in
+  // neighbouring cells. Buckets list their dabs in increasing order.
+  const double h = 2.0 * maxReach;
+  const double invH = 1.0 / h;
+  size_t tableSize = 1;
+  while (tableSize < 2 * n)
+  {
+    tableSize <<= 1;
+  }
+  auto cellOf = [&](const glm::dvec3& c)
+  { return glm::i64vec3(std::floor(c.x * invH), std::floor(c.y * invH), std::floor(c.z * invH)); };
+  auto hashOf = [&](const glm::i64vec3& k)
+  {
+    const vtkTypeUInt64 v = static_cast<vtkTypeUInt64>(k.x) * 73856093ull ^
+      static_cast<vtkTypeUInt64>(k.y) * 19349663ull ^ static_cast<vtkTypeUInt64>(k.z) * 83492791ull;
+    return static_cast<size_t>(v & (tableSize - 1));
+  };
+  auto& bucketOf = this->BucketOf;
+  auto& bucketStart = this->BucketStart;
+  bucketOf.resize(n);
+  bucketStart.assign(tableSize + 1, 0);
+  for (size_t j = 0; j < n; ++j)
+  {
+    bucketOf[j] = hashOf(cellOf(centre[j]));
+    ++bucketStart[bucketOf[j] + 1];
+  }
+  for (size_t b = 0; b < tableSize; ++b)
+  {
+    bucketStart[b + 1] += bucketStart[b];
+  }
+  this->Fill.assign(bucketStart.begin(), bucketStart.end() - 1);
+  this->Members.resize(n);
+  for (size_t j = 0; j < n; ++j)
+  {
+    this->Members[this->Fill[bucketOf[j]]++] = static_cast<int>(j);
+  }
+  auto& wave = this->Wave;
+  wave.assign(n, 0);
+  int numberOfWaves = n > 0 ? 1 : 0;
+  for (size_t j = 0; j < n; ++j)
+  {
+    const glm::i64vec3 k = cellOf(centre[j]);
+    int w = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+    {
+      for (int dy = -1; dy <= 1; ++dy)
+      {
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          const size_t b = hashOf(k + glm::i64vec3(dx, dy, dz));
+          for (int m = bucketStart[b]; m < bucketStart[b + 1]; ++m)
+          {
+            const int i = this->Members[m];
+            if (i >= static_cast<int>(j))
+            {
+              break;
+            }
+            const double reachSum = reach[i] + reach[j];
+            const glm::dvec3 dc = centre[i] - centre[j];
+            if (wave[i] + 1 > w && glm::dot(dc, dc) <= reachSum * reachSum)
+            {
+              w = wave[i] + 1;
+            }
+          }
+        }
+      }
+    }
+    wave[j] = w;
+    numberOfWaves = std::max(numberOfWaves, w + 1);
+  }
+  this->Sort(numberOfWaves, low, maxReach);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPaintWaves::Sort(int numberOfWaves, const glm::dvec3& low, double maxReach)
+{
+  // Dabs ordered by wave, then by index.
+  const size_t n = this->Wave.size();
+  auto& waveStarts = this->WaveStarts;
+  auto& order = this->Order;
+  waveStarts.assign(numberOfWaves + 1, 0);
+  for (size_t j = 0; j < n; ++j)
+  {
+    ++waveStarts[this->Wave[j] + 1];
+  }
+  for (int w = 0; w < numberOfWaves; ++w)
+  {
+    waveStarts[w + 1] += waveStarts[w];
+  }
+  this->Fill.assign(waveStarts.begin(), waveStarts.end() - 1);
+  order.resize(n);
+  for (size_t j = 0; j < n; ++j)
+  {
+    order[this->Fill[this->Wave[j]]++] = static_cast<int>(j);
+  }
+  // Within a wave the order does not change the result (its dabs share no
+  // sample): paint in Morton order of the centres, so that consecutive dabs read
+  // neighbouring rows of the grids' offsets, depths and colours.
+  auto& key = this->Key;
+  key.resize(n);
+  const double scale = 1.0 / std::max(maxReach, 1e-300);
+  for (int w = 0; w < numberOfWaves; ++w)
+  {
+    const int begin = waveStarts[w];
+    const int end = waveStarts[w + 1];
+    if (end - begin <= 2)
+    {
+      continue;
+    }
+    for (int k = begin; k < end; ++k)
+    {
+      key[k] = { MortonCode((this->Centre[order[k]] - low) * scale), order[k] };
+    }
+    std::sort(key.begin() + begin, key.begin() + end);
+    for (int k = begin; k < end; ++k)
+    {
+      order[k] = key[k].second;
+    }
+  }
+}

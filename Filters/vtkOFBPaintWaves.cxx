@@ -53,9 +53,11 @@ void vtkOFBPaintWaves::Compute(const std::vector<vtkOFBDab>& dabs, bool smear)
     maxReach = std::max(maxReach, r);
     low = glm::min(low, c);
   }
-  // Spatial hash of cells of edge 2 * maxReach: overlapping dabs lie in
-  // neighbouring cells. Buckets list their dabs in increasing order.
-  const double h = 2.0 * maxReach;
+  // Spatial hash of cells of edge 4 * maxReach: two overlapping dabs' centres are at
+  // most 2 * maxReach, half a cell, apart, so the other centre lies in the dab's own
+  // cell or the neighbour on the nearer side along each axis (8 cells, not 27).
+  // Buckets list their dabs in increasing order.
+  const double h = 4.0 * maxReach;
   const double invH = 1.0 / h;
   size_t tableSize = 1;
   while (tableSize < 2 * n)
@@ -94,29 +96,28 @@ void vtkOFBPaintWaves::Compute(const std::vector<vtkOFBDab>& dabs, bool smear)
   int numberOfWaves = n > 0 ? 1 : 0;
   for (size_t j = 0; j < n; ++j)
   {
+    const glm::dvec3 q = centre[j] * invH;
     const glm::i64vec3 k = cellOf(centre[j]);
+    const glm::i64vec3 side(q.x - std::floor(q.x) < 0.5 ? -1 : 1,
+      q.y - std::floor(q.y) < 0.5 ? -1 : 1,
+      q.z - std::floor(q.z) < 0.5 ? -1 : 1);
     int w = 0;
-    for (int dz = -1; dz <= 1; ++dz)
+    for (int corner = 0; corner < 8; ++corner)
     {
-      for (int dy = -1; dy <= 1; ++dy)
+      const glm::i64vec3 offset(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+      const size_t b = hashOf(k + offset * side);
+      for (int m = bucketStart[b]; m < bucketStart[b + 1]; ++m)
       {
-        for (int dx = -1; dx <= 1; ++dx)
+        const int i = this->Members[m];
+        if (i >= static_cast<int>(j))
         {
-          const size_t b = hashOf(k + glm::i64vec3(dx, dy, dz));
-          for (int m = bucketStart[b]; m < bucketStart[b + 1]; ++m)
-          {
-            const int i = this->Members[m];
-            if (i >= static_cast<int>(j))
-            {
-              break;
-            }
-            const double reachSum = reach[i] + reach[j];
-            const glm::dvec3 dc = centre[i] - centre[j];
-            if (wave[i] + 1 > w && glm::dot(dc, dc) <= reachSum * reachSum)
-            {
-              w = wave[i] + 1;
-            }
-          }
+          break;
+        }
+        const double reachSum = reach[i] + reach[j];
+        const glm::dvec3 dc = centre[i] - centre[j];
+        if (wave[i] + 1 > w && glm::dot(dc, dc) <= reachSum * reachSum)
+        {
+          w = wave[i] + 1;
         }
       }
     }

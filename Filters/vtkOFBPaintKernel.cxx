@@ -27,6 +27,21 @@ namespace
 // Progress is reported every this many visited samples (serial dabs only).
 constexpr vtkIdType ProgressMask = (vtkIdType(1) << 20) - 1;
 
+// Number of trailing zero bits of a non-zero word.
+inline int TrailingZeros(vtkTypeUInt64 v)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctzll(v);
+#else
+  int n = 0;
+  for (; !(v & 1); v >>= 1)
+  {
+    ++n;
+  }
+  return n;
+#endif
+}
+
 // Waves smaller than this run on the calling thread.
 constexpr size_t MinParallelWave = 8;
 
@@ -51,7 +66,8 @@ struct vtkOFBPaintKernel::DabWork
   vtkIdType Visited = 0;
   double ProgressBase = 0.0;
   double ProgressSpan = 0.0;
-  vtkIdType ChangedBlock = -1;
+  vtkIdType ChangedWord = -1; // the word of the changed bits gathered in ChangedBits
+  vtkTypeUInt64 ChangedBits = 0;
   vtkIdType InitialColorBlockId = -1;
   const unsigned char* InitialColors = nullptr;
   vtkIdType InitialNormalBlockId = -1;
@@ -87,13 +103,13 @@ void vtkOFBPaintKernel::Reset(vtkOFB* ofb, vtkUnsignedCharArray* colors, vtkFloa
     this->NumberOfSamples = n;
     this->Flags.reset(new unsigned char[std::max<vtkIdType>(n, 1)]);
     vtkofb::AdviseHugePages(this->Flags.get(), static_cast<size_t>(n)); // before the memset
-    this->NumberOfChangedBlocks = (n >> ChangedBlockShift) + 1;
-    this->ChangedBlocks.reset(new std::atomic<unsigned char>[this->NumberOfChangedBlocks]);
+    this->NumberOfChangedWords = (n >> 6) + 1;
+    this->ChangedWords.reset(new std::atomic<vtkTypeUInt64>[this->NumberOfChangedWords]);
   }
   std::memset(this->Flags.get(), 0, static_cast<size_t>(std::max<vtkIdType>(n, 1)));
-  for (vtkIdType b = 0; b < this->NumberOfChangedBlocks; ++b)
+  for (vtkIdType w = 0; w < this->NumberOfChangedWords; ++w)
   {
-    this->ChangedBlocks[b].store(0, std::memory_order_relaxed);
+    this->ChangedWords[w].store(0, std::memory_order_relaxed);
   }
   this->ResetInitialValues();
 }
@@ -128,7 +144,7 @@ void vtkOFBPaintKernel::ResetInitialValues()
 vtkIdType vtkOFBPaintKernel::GetMemory() const
 {
   const vtkIdType block = vtkIdType(1) << InitialBlockShift;
-  return this->NumberOfSamples + this->NumberOfChangedBlocks +
+  return this->NumberOfSamples + 8 * this->NumberOfChangedWords +
     2 * this->NumberOfInitialBlocks * static_cast<vtkIdType>(sizeof(void*) + 1) +
     this->InitialBlocksHeld.load() * block * 4;
 }
@@ -263,18 +279,27 @@ inline const float* vtkOFBPaintKernel::InitialNormal(vtkIdType id, DabWork& work
 }
 
 //------------------------------------------------------------------------------
-inline void vtkOFBPaintKernel::MarkBlockChanged(vtkIdType id, DabWork& work)
+inline void vtkOFBPaintKernel::MarkChangedInWork(vtkIdType id, DabWork& work)
 {
-  // The block flag is shared by the threads of a wave, hence atomic.
-  const vtkIdType b = id >> ChangedBlockShift;
-  if (b != work.ChangedBlock)
+  // A dab's changes come in runs of increasing ids (rows of cells): gather a word's
+  // bits and set them with one atomic OR (the word may hold samples another thread
+  // of the wave changes).
+  const vtkIdType w = id >> 6;
+  if (w != work.ChangedWord)
   {
-    work.ChangedBlock = b;
-    std::atomic<unsigned char>& block = this->ChangedBlocks[b];
-    if (!block.load(std::memory_order_relaxed))
-    {
-      block.store(1, std::memory_order_relaxed);
-    }
+    this->FlushChanged(work);
+    work.ChangedWord = w;
+  }
+  work.ChangedBits |= vtkTypeUInt64(1) << (id & 63);
+}
+
+//------------------------------------------------------------------------------
+inline void vtkOFBPaintKernel::FlushChanged(DabWork& work)
+{
+  if (work.ChangedBits)
+  {
+    this->ChangedWords[work.ChangedWord].fetch_or(work.ChangedBits, std::memory_order_relaxed);
+    work.ChangedBits = 0;
   }
 }
 
@@ -291,8 +316,7 @@ void vtkOFBPaintKernel::ReportProgress(DabWork& work) const
 //------------------------------------------------------------------------------
 void vtkOFBPaintKernel::MarkChanged(vtkTypeUInt32 id)
 {
-  this->Flags[id] |= ChangedInCall;
-  this->ChangedBlocks[id >> ChangedBlockShift].store(1, std::memory_order_relaxed);
+  this->ChangedWords[id >> 6].fetch_or(vtkTypeUInt64(1) << (id & 63), std::memory_order_relaxed);
 }
 
 //------------------------------------------------------------------------------
@@ -310,48 +334,37 @@ void vtkOFBPaintKernel::ClearRecorded(const std::vector<vtkOFBColorRecord>& colo
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBPaintKernel::CollectChangedBlocks(vtkIdType firstBlock,
-  vtkIdType lastBlock,
+vtkIdType vtkOFBPaintKernel::CollectChangedWords(vtkIdType firstWord,
+  vtkIdType lastWord,
   std::vector<std::pair<vtkIdType, vtkIdType>>& ranges)
 {
   vtkIdType count = 0;
-  const vtkIdType n = this->NumberOfSamples;
-  unsigned char* flags = this->Flags.get();
-  for (vtkIdType b = firstBlock; b < lastBlock; ++b)
+  for (vtkIdType w = firstWord; w < lastWord; ++w)
   {
-    if (!this->ChangedBlocks[b].load(std::memory_order_relaxed))
+    vtkTypeUInt64 bits = this->ChangedWords[w].load(std::memory_order_relaxed);
+    if (!bits)
     {
       continue;
     }
-    this->ChangedBlocks[b].store(0, std::memory_order_relaxed);
-    const vtkIdType first = b << ChangedBlockShift;
-    const vtkIdType last = std::min(n, first + (vtkIdType(1) << ChangedBlockShift));
-    for (vtkIdType i = first; i < last; ++i)
+    this->ChangedWords[w].store(0, std::memory_order_relaxed);
+    while (bits)
     {
-      if ((i & 7) == 0 && i + 8 <= last)
+      // The next run of set bits: [first, last).
+      const int low = TrailingZeros(bits);
+      const vtkTypeUInt64 shifted = bits >> low;
+      const int length = ~shifted ? TrailingZeros(~shifted) : 64 - low;
+      const vtkIdType first = (w << 6) + low;
+      const vtkIdType last = first + length;
+      count += length;
+      if (!ranges.empty() && ranges.back().second == first)
       {
-        vtkTypeUInt64 word;
-        std::memcpy(&word, flags + i, 8);
-        if (!(word & 0x0101010101010101ull))
-        {
-          i += 7; // eight samples without a change
-          continue;
-        }
-      }
-      if (!(flags[i] & ChangedInCall))
-      {
-        continue;
-      }
-      flags[i] &= static_cast<unsigned char>(~ChangedInCall);
-      ++count;
-      if (!ranges.empty() && ranges.back().second == i)
-      {
-        ranges.back().second = i + 1;
+        ranges.back().second = last;
       }
       else
       {
-        ranges.emplace_back(i, i + 1);
+        ranges.emplace_back(first, last);
       }
+      bits = low + length >= 64 ? 0 : bits & (~vtkTypeUInt64(0) << (low + length));
     }
   }
   return count;
@@ -363,9 +376,9 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtk
   // Chunks of blocks in parallel, their ranges joined in order (a run that spans two
   // chunks is joined too), so the result does not depend on the number of threads.
   ranges.clear();
-  const vtkIdType blocks = this->NumberOfChangedBlocks;
-  constexpr vtkIdType ChunkBlocks = 256;
-  const vtkIdType chunks = (blocks + ChunkBlocks - 1) / ChunkBlocks;
+  const vtkIdType words = this->NumberOfChangedWords;
+  constexpr vtkIdType ChunkWords = 4096;
+  const vtkIdType chunks = (words + ChunkWords - 1) / ChunkWords;
   std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>>& parts = this->Work->ChangedParts;
   parts.resize(static_cast<size_t>(chunks));
   std::vector<vtkIdType> counts(static_cast<size_t>(chunks), 0);
@@ -376,8 +389,8 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtk
       for (vtkIdType c = first; c < last; ++c)
       {
         parts[c].clear();
-        counts[c] = this->CollectChangedBlocks(
-          c * ChunkBlocks, std::min(blocks, (c + 1) * ChunkBlocks), parts[c]);
+        counts[c] = this->CollectChangedWords(
+          c * ChunkWords, std::min(words, (c + 1) * ChunkWords), parts[c]);
       }
     });
   vtkIdType count = 0;
@@ -538,10 +551,9 @@ void vtkOFBPaintKernel::PaintDabs(const std::vector<vtkOFBDab>& dabs,
       };
       this->PaintNormals(dab, settings, aware ? cone : nullptr, work);
     }
-    return;
   }
   // The default falloffs and blend mode compiled in, the others chosen per sample.
-  if (settings.BlendMode == vtkOFBBrush::Mix)
+  else if (settings.BlendMode == vtkOFBBrush::Mix)
   {
     this->PaintColorsWith<vtkOFBBrush::Mix>(dabs, order, count, settings, work);
   }
@@ -549,6 +561,7 @@ void vtkOFBPaintKernel::PaintDabs(const std::vector<vtkOFBDab>& dabs,
   {
     this->PaintColorsWith<-1>(dabs, order, count, settings, work);
   }
+  this->FlushChanged(work); // before the wave ends
 }
 
 //------------------------------------------------------------------------------
@@ -664,22 +677,25 @@ void vtkOFBPaintKernel::PaintColors(const std::vector<vtkOFBDab>& dabs,
         return;
       }
       this->InitialColor(i, work); // keep the initial value before the first change
-      unsigned char& flag = flags[i];
-      if (recordBit && !(flag & ColorRecorded))
+      if (recordBit && !(flags[i] & recordBit))
       {
         records.push_back({ static_cast<vtkTypeUInt32>(i), { c[0], c[1], c[2], c[3] } });
+        flags[i] |= recordBit;
       }
-      flag |= static_cast<unsigned char>(ChangedInCall | recordBit);
-      this->MarkBlockChanged(i, work);
+      this->MarkChangedInWork(i, work);
       std::memcpy(c, result, 4);
     },
-    [colors, flags](vtkIdType first, vtkIdType last)
+    [colors, flags, recordBit](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType i = first; i < last; i += 16)
       {
         VTKOFB_PREFETCH_WRITE(colors + 4 * i);
       }
       VTKOFB_PREFETCH_WRITE(colors + 4 * (last - 1));
+      if (!recordBit)
+      {
+        return;
+      }
       for (vtkIdType i = first; i < last; i += 64)
       {
         VTKOFB_PREFETCH_WRITE(flags + i);
@@ -751,13 +767,12 @@ void vtkOFBPaintKernel::PaintNormals(const vtkOFBDab& dab,
         return;
       }
       this->InitialNormal(i, work); // keep the initial value before the first change
-      unsigned char& flag = flags[i];
-      if (recordBit && !(flag & NormalRecorded))
+      if (recordBit && !(flags[i] & recordBit))
       {
         records.push_back({ static_cast<vtkTypeUInt32>(i), { old.x, old.y, old.z } });
+        flags[i] |= recordBit;
       }
-      flag |= static_cast<unsigned char>(ChangedInCall | recordBit);
-      this->MarkBlockChanged(i, work);
+      this->MarkChangedInWork(i, work);
       n[0] = v.x;
       n[1] = v.y;
       n[2] = v.z;

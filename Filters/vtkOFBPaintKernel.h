@@ -2,12 +2,12 @@
  * @file   vtkOFBPaintKernel.h
  * @brief  Private: the per-sample work of vtkOFBPainter (waves, blending, change tracking)
  *
- * vtkOFBPaintKernel holds what a painter keeps per painted OFB: one flag byte per
- * sample (changed by the current call; previous value recorded in the current
- * undo step), a flag per block of samples changed by the current call (so that
- * collecting the changed ranges reads only the touched blocks), and the initial
- * colours and normals, copied block by block the first time a block changes
- * (what the Erase blend mode restores).
+ * vtkOFBPaintKernel holds what a painter keeps per painted OFB: one bit per sample
+ * changed by the current call (a bitmap small enough to stay in cache, set a word
+ * at a time), one flag byte per sample whose previous value the current undo step
+ * holds (touched only while undo is recorded), and the initial colours and normals,
+ * copied block by block the first time a block changes (what the Erase blend mode
+ * restores).
  *
  * Paint() applies a list of dabs with the result of applying them one after the
  * other: dabs are grouped into waves (a dab goes one wave after the last earlier
@@ -80,14 +80,12 @@ public:
   vtkOFBPaintKernel(const vtkOFBPaintKernel&) = delete;
   vtkOFBPaintKernel& operator=(const vtkOFBPaintKernel&) = delete;
 
-  /// Flag bits of a sample.
+  /// Flag bits of a sample: its previous value is in the current undo step.
   enum : unsigned char
   {
-    ChangedInCall = 1,
     ColorRecorded = 2,
     NormalRecorded = 4
   };
-  static constexpr int ChangedBlockShift = 9;  // 512 samples per changed-block flag
   static constexpr int InitialBlockShift = 12; // 4096 samples per initial-value block
 
   /// Size the per-sample data for `ofb` (clears it, drops the initial values).
@@ -112,7 +110,7 @@ public:
 
   /**
    * The sorted, merged [first, last) ranges of the samples changed since the last
-   * call of this function; clears their ChangedInCall flags. Returns the number
+   * call of this function; clears their changed bits. Returns the number
    * of samples in them.
    */
   vtkIdType CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges);
@@ -186,19 +184,20 @@ private:
   const float* InitialNormalBlock(vtkIdType block);
   const unsigned char* InitialColor(vtkIdType id, DabWork& work);
   const float* InitialNormal(vtkIdType id, DabWork& work);
-  void MarkBlockChanged(vtkIdType id, DabWork& work);
+  void MarkChangedInWork(vtkIdType id, DabWork& work);
+  void FlushChanged(DabWork& work);
   void ReportProgress(DabWork& work) const;
-  vtkIdType CollectChangedBlocks(vtkIdType firstBlock,
-    vtkIdType lastBlock,
+  vtkIdType CollectChangedWords(vtkIdType firstWord,
+    vtkIdType lastWord,
     std::vector<std::pair<vtkIdType, vtkIdType>>& ranges);
 
   vtkOFB* OFB = nullptr;
   vtkUnsignedCharArray* Colors = nullptr;
   vtkFloatArray* Normals = nullptr;
   vtkIdType NumberOfSamples = 0;
-  std::unique_ptr<unsigned char[]> Flags; // one thread per sample within a wave
-  std::unique_ptr<std::atomic<unsigned char>[]> ChangedBlocks;
-  vtkIdType NumberOfChangedBlocks = 0;
+  std::unique_ptr<unsigned char[]> Flags;                     // one thread per sample within a wave
+  std::unique_ptr<std::atomic<vtkTypeUInt64>[]> ChangedWords; // bit i & 63 of word i >> 6
+  vtkIdType NumberOfChangedWords = 0;
   vtkIdType NumberOfInitialBlocks = 0;
   std::unique_ptr<std::atomic<unsigned char>[]> InitialColorState; // 0 none, 1 copying, 2 done
   std::unique_ptr<std::atomic<unsigned char>[]> InitialNormalState;

@@ -125,42 +125,56 @@ void vtkOFB::ForEachSampleInSphere(const double center[3],
     {
       continue;
     }
-    // Rows are computed two ahead (their offsets prefetched) and their samples are
-    // prefetched one ahead: a sphere's rows lie far apart in memory.
-    SphereRow ring[3];
-    bool valid[3] = { false, false, false };
-    for (vtkIdType iv = grid.V0; iv <= std::min(grid.V1, grid.V0 + 1); ++iv)
+    // Rows are computed three ahead (their offsets prefetched) and their samples are
+    // prefetched two ahead: a sphere's rows lie far apart in memory.
+    constexpr vtkIdType PlanAhead = 3;
+    constexpr vtkIdType FetchAhead = 2;
+    constexpr vtkIdType Ring = 4;
+    SphereRow ring[Ring];
+    bool valid[Ring] = { false, false, false, false };
+    auto plan = [&](vtkIdType iv)
     {
-      valid[iv % 3] = this->SphereChord(grid, iv, ring[iv % 3]);
+      SphereRow& row = ring[iv % Ring];
+      valid[iv % Ring] = this->SphereChord(grid, iv, row);
+      if (valid[iv % Ring])
+      {
+        VTKOFB_PREFETCH(offsets + row.RowBase + row.U0);
+        VTKOFB_PREFETCH(offsets + row.RowBase + row.U1 + 1);
+      }
+    };
+    auto fetch = [&](vtkIdType iv)
+    {
+      SphereRow& row = ring[iv % Ring];
+      if (valid[iv % Ring])
+      {
+        this->FetchSphereRow(row);
+        if (row.First < row.Last)
+        {
+          prefetch(row.First, std::min<vtkIdType>(row.Last, row.First + 512));
+        }
+      }
+    };
+    for (vtkIdType iv = grid.V0; iv <= std::min(grid.V1, grid.V0 + PlanAhead - 1); ++iv)
+    {
+      plan(iv);
+    }
+    for (vtkIdType iv = grid.V0; iv <= std::min(grid.V1, grid.V0 + FetchAhead - 1); ++iv)
+    {
+      fetch(iv);
     }
     for (vtkIdType iv = grid.V0; iv <= grid.V1; ++iv)
     {
-      if (iv + 2 <= grid.V1)
+      if (iv + PlanAhead <= grid.V1)
       {
-        SphereRow& ahead = ring[(iv + 2) % 3];
-        valid[(iv + 2) % 3] = this->SphereChord(grid, iv + 2, ahead);
-        if (valid[(iv + 2) % 3])
-        {
-          VTKOFB_PREFETCH(offsets + ahead.RowBase + ahead.U0);
-          VTKOFB_PREFETCH(offsets + ahead.RowBase + ahead.U1 + 1);
-        }
+        plan(iv + PlanAhead);
       }
-      if (iv == grid.V0 && valid[iv % 3])
+      if (iv + FetchAhead <= grid.V1)
       {
-        this->FetchSphereRow(ring[iv % 3]);
+        fetch(iv + FetchAhead);
       }
-      if (iv + 1 <= grid.V1 && valid[(iv + 1) % 3])
+      if (valid[iv % Ring])
       {
-        SphereRow& next = ring[(iv + 1) % 3];
-        this->FetchSphereRow(next);
-        if (next.First < next.Last)
-        {
-          prefetch(next.First, std::min<vtkIdType>(next.Last, next.First + 512));
-        }
-      }
-      if (valid[iv % 3])
-      {
-        this->ForEachSampleInRow(ring[iv % 3], indexed, f);
+        this->ForEachSampleInRow(ring[iv % Ring], indexed, f);
       }
     }
   }

@@ -2,7 +2,10 @@
 # Runs the frame-time benchmarks on a lent NVIDIA machine (the `device` tool), from the
 # folder scripts/device/pack.sh filled (carried as .devcarry):
 #
-#   bash .devcarry/run.sh [PART...]     PART: probe mapper lic paint offscreen (default all)
+#   bash .devcarry/run.sh [PART...]     PART: probe mapper lic paint mapper-offscreen
+#                                       lic-offscreen (default all)
+# Environment: ROUNDS (default 3), LIC_FRAMES (default 20), MAPPER_FRAMES (default 30):
+# the benchmarks' --rounds and --frames.
 #
 # Sets up: glvnd from gl/*.deb (unpacked into /, as the device tool's README says), the
 # archive into /tmp/ofb, Xvfb on :99 with Mesa's swrast for its GLX extension, then
@@ -14,7 +17,8 @@ set -u
 CARRY="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 OUT="${OUT:-/tmp/out}"
 mkdir -p "$OUT"
-PARTS="${*:-probe mapper lic paint offscreen}"
+PARTS="${*:-probe mapper lic paint mapper-offscreen lic-offscreen}"
+R="${ROUNDS:-3}" LF="${LIC_FRAMES:-20}" MF="${MAPPER_FRAMES:-30}"
 T0=$(date +%s)
 stamp() { echo "== $(($(date +%s) - T0)) s: $*"; }
 
@@ -74,14 +78,14 @@ part() { # name timeout command...
 for p in $PARTS; do
   case $p in
     probe) ;;
-    mapper) part mapper 120 "$O/bin/ofbMapperBenchmark" --frames 30 --rounds 3 ;;
-    lic) part lic 240 "$O/bin/ofbLICBenchmark" --frames-only --rounds 3 --frames 20 ;;
+    mapper) part mapper 120 "$O/bin/ofbMapperBenchmark" --frames "$MF" --rounds "$R" ;;
+    lic) part lic 400 "$O/bin/ofbLICBenchmark" --frames-only --rounds "$R" --frames "$LF" ;;
     paint) part paint 180 "$O/bin/ofbPaintBenchmark" --resolutions 2048 --dabs5 100 \
       --dabs25 10 --no-openvdb ;;
-    offscreen)
-      part mapper-offscreen 120 "$O/bin/ofbMapperBenchmark" --frames 30 --rounds 3 --offscreen
-      part lic-offscreen 240 "$O/bin/ofbLICBenchmark" --frames-only --rounds 3 --frames 20 \
-        --offscreen ;;
+    mapper-offscreen) part mapper-offscreen 120 "$O/bin/ofbMapperBenchmark" --frames "$MF" \
+      --rounds "$R" --offscreen ;;
+    lic-offscreen) part lic-offscreen 400 "$O/bin/ofbLICBenchmark" --frames-only --rounds "$R" \
+      --frames "$LF" --offscreen ;;
   esac
 done
 stamp "done"

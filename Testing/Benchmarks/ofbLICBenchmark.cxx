@@ -8,7 +8,9 @@
 // --resolutions LIST (default 1024,2048), --threads LIST (default 1,2), --steps N (each
 // way, default 10: 2 x 10 steps a sample), --rounds N (default 3), --frames N (timed
 // frames per mapper and round, default 20; 0: no rendering), --width W --height H
-// (default 1024x768).
+// (default 1024x768), --frames-only (skip the LIC throughput rows: only the sampler and
+// the frame rows, e.g. for a GPU whose frames are the question), --offscreen (render off
+// screen: the frame is not copied to the X server).
 // Rows, per mesh, resolution and number of threads (medians over the rounds):
 // - first: a new vtkOFBLIC on the sampler's OFB, everything included (packed samples,
 //   tangential field and mask, noise, tracing, convolution, output), EnhancedLIC off
@@ -111,6 +113,8 @@ struct Options
   int Frames = 20;
   int Width = 1024;
   int Height = 768;
+  bool FramesOnly = false;
+  bool OffScreen = false;
 };
 
 // Returns -1 when the options are fine, else the exit code (usage printed).
@@ -145,11 +149,15 @@ int ParseOptions(int argc, char* argv[], Options& o)
       o.Width = std::max(16, std::atoi(argv[++i]));
     else if (arg == "--height" && hasValue)
       o.Height = std::max(16, std::atoi(argv[++i]));
+    else if (arg == "--frames-only")
+      o.FramesOnly = true;
+    else if (arg == "--offscreen")
+      o.OffScreen = true;
     else
     {
       std::cout << "usage: ofbLICBenchmark [--meshes bunny,horse|FILES] [--resolutions LIST] "
                    "[--threads LIST] [--steps N] [--rounds N] [--frames N] [--width W] "
-                   "[--height H]\n";
+                   "[--height H] [--frames-only] [--offscreen]\n";
       return arg == "--help" ? 0 : 1;
     }
   }
@@ -379,6 +387,7 @@ void RunFrames(const Options& o,
   lic->AnimateOn();
   lic->Update();
   vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(o.OffScreen);
   window->SetSize(o.Width, o.Height);
   window->SetMultiSamples(0);
   vtkNew<vtkRenderer> renderer;
@@ -495,13 +504,17 @@ int main(int argc, char* argv[])
       sampler->Update();
       const double buildSeconds = Seconds(t0);
       vtkSmartPointer<vtkOFB> ofb = sampler->GetOutput();
-      RunLIC(o, name, resolution, ofb, buildSeconds);
+      if (!o.FramesOnly)
+      {
+        RunLIC(o, name, resolution, ofb, buildSeconds);
+      }
       built.push_back({ name, resolution, mesh, ofb });
     }
   }
   if (o.Frames > 0)
   {
-    std::cout << "\nFrames (ms, " << o.Width << "x" << o.Height << ", " << o.Frames
+    std::cout << "\nFrames (ms, " << o.Width << "x" << o.Height
+              << (o.OffScreen ? " off screen" : "") << ", " << o.Frames
               << " frames a mapper and round, LIC on 2 threads):\n"
               << "mesh     res     plain  LIC Nearest        LIC InverseDistance   "
                  "no LIC, Nearest    animation frame (new phase + render)\n";

@@ -7,14 +7,16 @@
 // --frames N (timed frames per mapper and round, default 30), --rounds N (default 3),
 // --warmup N (untimed frames before each timing, default 3), --modes LIST (comma-separated
 // subset of nearest,idw,mipmapped; default all), --width W --height H (1280x1024),
-// --images PREFIX (write PREFIX<k>-<mapper>.ppm of the first view of every mapper).
+// --images PREFIX (write PREFIX<k>-<mapper>.ppm of the first view of every mapper),
+// --offscreen (render off screen: the frame is not copied to the X server).
 // Fairness: one window, renderer, actor, property and headlight for every mapper; each
 // timing starts from the same camera and turns it once around the surface; the mappers
 // take turns within every round (so that a change of machine load hits all of them), and
 // the medians over the rounds are compared. The frame time includes the clear and the
-// copy of the frame to the X server, which are the same for every mapper. Besides the
-// wall-clock times (the goal's measure) it prints the CPU time of the process (llvmpipe's
-// rendering threads included), which other load on a shared machine disturbs less.
+// copy of the frame to the X server (none with --offscreen), the same for every mapper.
+// Besides the wall-clock times (the goal's measure) it prints the CPU time of the process
+// (llvmpipe's rendering threads included), which other load on a shared machine disturbs
+// less.
 #include "vtkOFBReadMesh.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -165,6 +167,7 @@ struct Options
   int Width = 1280;
   int Height = 1024;
   std::string Images;
+  bool OffScreen = false;
   std::vector<int> Modes = { vtkOFBPolyDataMapper::Nearest,
     vtkOFBPolyDataMapper::InverseDistance, vtkOFBPolyDataMapper::Mipmapped };
 };
@@ -219,6 +222,11 @@ int ParseOptions(int argc, char* argv[], Options& o)
       o.Images = argv[++i];
       continue;
     }
+    if (arg == "--offscreen")
+    {
+      o.OffScreen = true;
+      continue;
+    }
     if (arg == "--modes" && hasValue)
     {
       if (!ParseModes(argv[++i], o.Modes))
@@ -264,7 +272,7 @@ int ParseOptions(int argc, char* argv[], Options& o)
     }
     std::cout << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
                  "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped] [--width W] "
-                 "[--height H] [--images PREFIX]\n";
+                 "[--height H] [--images PREFIX] [--offscreen]\n";
     return arg == "--help" ? 0 : 1;
   }
   return -1;
@@ -339,6 +347,7 @@ struct Bench
 // use the OFB on this context.
 bool SetUp(Bench& b, const Options& o, vtkPolyData* surface, vtkPolyData* colored, vtkOFB* ofb)
 {
+  b.Window->SetOffScreenRendering(o.OffScreen);
   b.Window->SetSize(o.Width, o.Height);
   b.Renderer->SetBackground(0.2, 0.2, 0.25);
   b.Window->AddRenderer(b.Renderer);
@@ -382,7 +391,8 @@ void PrintHeader(Bench& b, const Options& o, vtkPolyData* surface, vtkOFB* ofb)
             << "  triangles " << surface->GetNumberOfPolys() << ", OFB resolution "
             << o.Resolution << ", samples " << ofb->GetNumberOfSamples()
             << ", depth complexity " << ofb->GetDepthComplexity() << ", window " << o.Width
-            << "x" << o.Height << ", " << o.Frames << " frames per mapper and round, "
+            << "x" << o.Height << (o.OffScreen ? " off screen" : "") << ", " << o.Frames
+            << " frames per mapper and round, "
             << o.Rounds << " rounds\n";
   const std::string::size_type at = capabilities.find("OpenGL renderer string:");
   if (at != std::string::npos)

@@ -571,13 +571,11 @@ void vtkOFBLIC::WriteOutput(vtkOFB* input,
   const bool newMask = !maskArray;
   if (!lic)
   {
-    lic = vtkSmartPointer<vtkFloatArray>::New();
-    lic->SetName("LIC");
+    lic = vtkOFBLICNewOutputArray<vtkFloatArray>("LIC", n);
   }
   if (newMask)
   {
-    maskArray = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    maskArray->SetName("LICMask");
+    maskArray = vtkOFBLICNewOutputArray<vtkUnsignedCharArray>("LICMask", n);
   }
   lic->SetNumberOfTuples(n);
   maskArray->SetNumberOfTuples(n);

@@ -10,7 +10,12 @@
 // frames per mapper and round, default 20; 0: no rendering), --width W --height H
 // (default 1024x768), --frames-only (skip the LIC throughput rows: only the sampler and
 // the frame rows, e.g. for a GPU whose frames are the question), --offscreen (render off
-// screen: the frame is not copied to the X server).
+// screen: the frame is not copied to the X server),
+// --parts LIST (which LIC columns to time, of first,anim,first+enh,
+// anim+enh; default all: `--parts first --rounds 1 --frames 0` under perf profiles the first
+// computation alone), --checksum (a line per OFB with a 32-bit FNV-1a hash of the LIC
+// array of each part: the same numbers before and after a change of the code mean a
+// bit-for-bit identical result).
 // Rows, per mesh, resolution and number of threads (medians over the rounds):
 // - first: a new vtkOFBLIC on the sampler's OFB, everything included (packed samples,
 //   tangential field and mask, noise, tracing, convolution, output), EnhancedLIC off
@@ -51,6 +56,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -115,7 +121,11 @@ struct Options
   int Height = 768;
   bool FramesOnly = false;
   bool OffScreen = false;
+  bool Parts[4] = { true, true, true, true }; // first, anim, first+enh, anim+enh
+  bool Checksum = false;
 };
+
+const char* const PartNames[4] = { "first", "anim", "first+enh", "anim+enh" };
 
 // Returns -1 when the options are fine, else the exit code (usage printed).
 int ParseOptions(int argc, char* argv[], Options& o)
@@ -153,11 +163,22 @@ int ParseOptions(int argc, char* argv[], Options& o)
       o.FramesOnly = true;
     else if (arg == "--offscreen")
       o.OffScreen = true;
+    else if (arg == "--parts" && hasValue)
+    {
+      const std::vector<std::string> parts = Split(argv[++i]);
+      for (int p = 0; p < 4; ++p)
+      {
+        o.Parts[p] = std::find(parts.begin(), parts.end(), PartNames[p]) != parts.end();
+      }
+    }
+    else if (arg == "--checksum")
+      o.Checksum = true;
     else
     {
       std::cout << "usage: ofbLICBenchmark [--meshes bunny,horse|FILES] [--resolutions LIST] "
                    "[--threads LIST] [--steps N] [--rounds N] [--frames N] [--width W] "
-                   "[--height H] [--frames-only] [--offscreen]\n";
+                   "[--height H] [--frames-only] [--offscreen] "
+                   "[--parts first,anim,first+enh,anim+enh] [--checksum]\n";
       return arg == "--help" ? 0 : 1;
     }
   }
@@ -242,13 +263,32 @@ double TriadBandwidth()
   return best + 0.0 * a[n / 2];
 }
 
-/// Times of one round of the LIC rows, in seconds.
+/// Times of one round of the LIC parts (first, anim, first+enh, anim+enh), in seconds (0:
+/// not timed), and the FNV-1a hash of each part's LIC array.
 struct LICTimes
 {
-  double First, Animate, FirstEnhanced, AnimateEnhanced;
+  double Seconds[4] = { 0.0, 0.0, 0.0, 0.0 };
+  std::uint32_t Hash[4] = { 0, 0, 0, 0 };
 };
 
-LICTimes TimeLIC(vtkOFB* ofb, int steps)
+std::uint32_t HashLIC(vtkOFBLIC* lic)
+{
+  vtkFloatArray* a =
+    vtkFloatArray::SafeDownCast(lic->GetOutput()->GetSampleData()->GetArray("LIC"));
+  std::uint32_t h = 2166136261u;
+  if (!a)
+  {
+    return h;
+  }
+  const unsigned char* bytes = reinterpret_cast<const unsigned char*>(a->GetPointer(0));
+  for (vtkIdType i = 0, n = a->GetNumberOfValues() * 4; i < n; ++i)
+  {
+    h = (h ^ bytes[i]) * 16777619u;
+  }
+  return h;
+}
+
+LICTimes TimeLIC(vtkOFB* ofb, int steps, const bool parts[4])
 {
   LICTimes t;
   auto update = [](vtkOFBLIC* lic)
@@ -259,16 +299,24 @@ LICTimes TimeLIC(vtkOFB* ofb, int steps)
   };
   for (int enhanced = 0; enhanced < 2; ++enhanced)
   {
+    const int first = 2 * enhanced;
+    if (!parts[first] && !parts[first + 1])
+    {
+      continue;
+    }
     vtkNew<vtkOFBLIC> lic;
     lic->SetInputData(ofb);
     lic->SetNumberOfSteps(steps);
     lic->SetEnhancedLIC(enhanced != 0);
     lic->AnimateOn();
-    const double first = update(lic);
-    lic->SetAnimationPhase(0.1);
-    const double animate = update(lic);
-    (enhanced ? t.FirstEnhanced : t.First) = first;
-    (enhanced ? t.AnimateEnhanced : t.Animate) = animate;
+    t.Seconds[first] = update(lic);
+    t.Hash[first] = HashLIC(lic);
+    if (parts[first + 1])
+    {
+      lic->SetAnimationPhase(0.1);
+      t.Seconds[first + 1] = update(lic);
+      t.Hash[first + 1] = HashLIC(lic);
+    }
   }
   return t;
 }
@@ -307,18 +355,25 @@ void RunLIC(const Options& o,
   {
     vtkSMPTools::Initialize(threads);
     const double triad = TriadBandwidth();
-    std::vector<double> first, animate, firstEnh, animateEnh;
+    std::vector<double> times[4];
+    LICTimes last;
     for (int r = 0; r < o.Rounds; ++r)
     {
-      const LICTimes t = TimeLIC(ofb, o.Steps);
-      first.push_back(t.First);
-      animate.push_back(t.Animate);
-      firstEnh.push_back(t.FirstEnhanced);
-      animateEnh.push_back(t.AnimateEnhanced);
+      last = TimeLIC(ofb, o.Steps, o.Parts);
+      for (int p = 0; p < 4; ++p)
+      {
+        times[p].push_back(last.Seconds[p]);
+      }
     }
-    auto cell = [&](const std::vector<double>& t, bool isFirst, bool enhanced)
+    auto cell = [&](int part)
     {
-      const double m = Median(t);
+      const bool isFirst = part % 2 == 0;
+      const bool enhanced = part >= 2;
+      const double m = Median(times[part]);
+      if (!o.Parts[part])
+      {
+        return std::string(37, ' ');
+      }
       const double bytes = BytesPerSample(o.Steps, isFirst, enhanced) * n / m;
       std::ostringstream s;
       s << std::fixed << std::setprecision(1) << std::setw(7) << 1e3 * m << " ms " << std::setw(6)
@@ -329,8 +384,20 @@ void RunLIC(const Options& o,
     std::cout << std::left << std::setw(7) << name << std::right << std::setw(5) << resolution
               << std::setw(9) << n << std::setw(3) << threads << std::fixed << std::setprecision(1)
               << std::setw(7) << triad / 1e9 << std::setw(7) << 1e3 * buildSeconds << " | "
-              << cell(first, true, false) << " | " << cell(animate, false, false) << " | "
-              << cell(firstEnh, true, true) << " | " << cell(animateEnh, false, true) << std::endl;
+              << cell(0) << " | " << cell(1) << " | " << cell(2) << " | " << cell(3) << std::endl;
+    if (o.Checksum)
+    {
+      std::cout << "  LIC hashes:";
+      for (int p = 0; p < 4; ++p)
+      {
+        if (o.Parts[p])
+        {
+          std::cout << " " << PartNames[p] << " " << std::hex << std::setw(8) << std::setfill('0')
+                    << last.Hash[p] << std::dec << std::setfill(' ');
+        }
+      }
+      std::cout << std::endl;
+    }
   }
 }
 

@@ -12,8 +12,9 @@
 // Rounds are interleaved with the peer and reported as medians with the load
 // average (the machine may be shared).
 // Not a test: run it by hand,
-// `ofbParticleBenchmark [--steps N] [--seeds N] [--part 1|2|3] [--rounds N] [--no-peer]`
-// (--no-peer: ours alone, for profiling).
+// `ofbParticleBenchmark [--steps N] [--seeds N] [--part 1|2|3] [--rounds N] [--no-peer]
+// [--threads 1|2]` (--no-peer: ours alone, for profiling; --threads: parts 2 and 3 with
+// that number of threads only).
 #include "vtkOFBReadMesh.h"
 
 #include "vtkCellArray.h"
@@ -319,6 +320,7 @@ int main(int argc, char* argv[])
   int part = 0; // all
   int rounds = 7;
   bool peer = true;
+  int threads = 0; // 1 and 2
   std::string mesh = std::string(VTKOFB_DATA_DIR) + "/horse.ply";
   for (int i = 1; i < argc; ++i)
   {
@@ -342,6 +344,10 @@ int main(int argc, char* argv[])
     {
       peer = false;
     }
+    else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
+    {
+      threads = std::max(1, std::atoi(argv[++i]));
+    }
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc)
     {
       mesh = argv[++i];
@@ -349,7 +355,8 @@ int main(int argc, char* argv[])
     else
     {
       std::cout << "ofbParticleBenchmark [--steps N (per revolution, 2000)] [--seeds N (1000)] "
-                   "[--mesh FILE (horse)] [--part 1|2|3 (all)] [--rounds N (7)] [--no-peer]\n";
+                   "[--mesh FILE (horse)] [--part 1|2|3 (all)] [--rounds N (7)] [--no-peer] "
+                   "[--threads N (1 and 2)]\n";
       return argv[i] == std::string("--help") ? 0 : 1;
     }
   }
@@ -371,20 +378,34 @@ int main(int argc, char* argv[])
   {
     std::cout << "2. " << mesh << " (" << horse->GetNumberOfPolys() << " triangles), " << seeds
               << " seeds, RK4, 200 steps of 1 cell (1/1024 of the box); load " << Load() << ":\n";
-    const SpeedResult one = Speed(horse, seeds, 200, 1, rounds, peer);
-    const SpeedResult two = Speed(horse, seeds, 200, 2, rounds, peer);
-    std::cout << "   scaling 1 -> 2 threads: vtkOFBParticleAdvector " << two.Ours / one.Ours
-              << "x, vtkStreamTracer " << (one.Peer > 0.0 ? two.Peer / one.Peer : 0.0) << "x\n";
+    if (threads > 0)
+    {
+      Speed(horse, seeds, 200, threads, rounds, peer);
+    }
+    else
+    {
+      const SpeedResult one = Speed(horse, seeds, 200, 1, rounds, peer);
+      const SpeedResult two = Speed(horse, seeds, 200, 2, rounds, peer);
+      std::cout << "   scaling 1 -> 2 threads: vtkOFBParticleAdvector " << two.Ours / one.Ours
+                << "x, vtkStreamTracer " << (one.Peer > 0.0 ? two.Peer / one.Peer : 0.0) << "x\n";
+    }
   }
   if (part == 0 || part == 3)
   {
     std::cout << "3. Painting on " << mesh << " at 2048, footprint radius 2.5 cells; load "
               << Load() << ":\n";
-    const PaintResult one = Paint(horse, 1, rounds);
-    const PaintResult two = Paint(horse, 2, rounds);
-    std::cout << "   scaling 1 -> 2 threads: step " << one.Step / two.Step << "x, advection "
-              << one.Advection / two.Advection << "x, painting " << one.Painting / two.Painting
-              << "x, outputs " << one.Outputs / two.Outputs << "x\n";
+    if (threads > 0)
+    {
+      Paint(horse, threads, rounds);
+    }
+    else
+    {
+      const PaintResult one = Paint(horse, 1, rounds);
+      const PaintResult two = Paint(horse, 2, rounds);
+      std::cout << "   scaling 1 -> 2 threads: step " << one.Step / two.Step << "x, advection "
+                << one.Advection / two.Advection << "x, painting " << one.Painting / two.Painting
+                << "x, outputs " << one.Outputs / two.Outputs << "x\n";
+    }
   }
   vtkSMPTools::Initialize(0);
   return 0;

@@ -122,6 +122,9 @@ public:
     return static_cast<vtkIdType>(this->Corners.size() / 3);
   }
 
+  /// What a walk reads of triangle `t` (for the batched stages of the stepper).
+  const vtkOFBWalkerTriangle& GetRecord(vtkIdType t) const { return this->Records[t]; }
+
   /// The largest length of a point vector.
   double GetMaximumSpeed() const { return this->MaximumSpeed; }
 

@@ -207,15 +207,34 @@ void vtkOFBParticleStepper::BatchStage(Batch& b,
   {
     LaneSlope(v[0][j], v[1][j], stop, sign, scale, normalize, b.K[0][j], b.K[1][j]);
   }
-  // The walks that leave, one at a time.
+  // The walks that leave, interleaved, then the slopes at their ends carried back
+  // (CrossingSlope).
+  vtkOFBWalkLanes walks;
+  int lane[Lanes];
   for (int j = 0; j < n; ++j)
   {
     if (b.Leaves[j] != 0.0)
     {
-      const glm::dvec2 k = this->CrossingSlope(*points[j], glm::dvec2(b.D[0][j], b.D[1][j]));
-      b.K[0][j] = k[0];
-      b.K[1][j] = k[1];
+      lane[walks.Count] = j;
+      walks.Set(walks.Count++, *points[j], b.D[0][j], b.D[1][j]);
     }
+  }
+  if (walks.Count == 0)
+  {
+    return;
+  }
+  this->Walker->Walk(walks, true);
+  for (int w = 0; w < walks.Count; ++w)
+  {
+    vtkOFBSurfacePoint q;
+    walks.Get(w, q);
+    glm::dvec2 slope;
+    this->Slope(q, slope);
+    const glm::dmat2 frame(
+      walks.Frame[0][w], walks.Frame[1][w], walks.Frame[2][w], walks.Frame[3][w]);
+    const glm::dvec2 k = glm::transpose(frame) * slope;
+    b.K[0][lane[w]] = k[0];
+    b.K[1][lane[w]] = k[1];
   }
 }
 
@@ -239,26 +258,36 @@ void vtkOFBParticleStepper::BatchFinal(Batch& b,
     b.D[0][j] = dx;
     b.D[1][j] = dy;
   }
+  vtkOFBWalkLanes walks;
+  int lane[Lanes];
   for (int j = 0; j < n; ++j)
   {
+    vtkOFBSurfacePoint& p = *points[j];
     if (b.Moving[j] == 0.0)
     {
       results[j] = StoppedAtZero;
-      continue;
     }
-    vtkOFBSurfacePoint& p = *points[j];
-    if (b.Leaves[j] == 0.0)
+    else if (b.Leaves[j] == 0.0)
     {
       p.Bary = glm::dvec3(moved[0][j], moved[1][j], moved[2][j]);
       results[j] = Moved;
+      // The caller reads the corners of where it ended next.
+      this->Walker->PrefetchCorners(p.Triangle);
     }
     else
     {
-      const auto walk = this->Walker->Walk(p, glm::dvec2(b.D[0][j], b.D[1][j]), nullptr);
-      results[j] = walk == vtkOFBTriangleWalker::Boundary ? StoppedAtBoundary : Moved;
+      lane[walks.Count] = j;
+      walks.Set(walks.Count++, p, b.D[0][j], b.D[1][j]);
     }
-    // The caller reads the corners of where it ended next.
-    this->Walker->PrefetchCorners(p.Triangle);
+  }
+  // The walks that leave the start triangle, interleaved (Final).
+  this->Walker->Walk(walks, false);
+  for (int w = 0; w < walks.Count; ++w)
+  {
+    const int j = lane[w];
+    walks.Get(w, *points[j]);
+    results[j] = walks.Result[w] == vtkOFBTriangleWalker::Boundary ? StoppedAtBoundary : Moved;
+    this->Walker->PrefetchCorners(points[j]->Triangle);
   }
 }
 

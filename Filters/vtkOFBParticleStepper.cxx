@@ -228,6 +228,9 @@ void vtkOFBParticleStepper::BatchStage(Batch& b,
   {
     vtkOFBSurfacePoint q;
     walks.Get(w, q);
+    // The step usually ends near the stage points: the caller reads the corners of
+    // where it ends.
+    this->Walker->PrefetchCorners(q.Triangle);
     glm::dvec2 slope;
     this->Slope(q, slope);
     const glm::dmat2 frame(

@@ -10,7 +10,9 @@
 //     The step is split into advection, painting and output building as the
 //     advector times them; the scaling from 1 to 2 threads of both parts.
 // Rounds are interleaved with the peer and reported as medians with the load
-// average (the machine may be shared).
+// average (the machine may be shared); part 2 also gives the ratio of steps per
+// second of processor time of the process (with 1 thread, the time spent waiting
+// for a core on a loaded machine left out).
 // Not a test: run it by hand,
 // `ofbParticleBenchmark [--steps N] [--seeds N] [--part 1|2|3] [--rounds N] [--no-peer]
 // [--threads 1|2]` (--no-peer: ours alone, for profiling; --threads: parts 2 and 3 with
@@ -37,6 +39,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -227,28 +230,38 @@ SpeedResult Speed(vtkPolyData* horse,
   tracer->SetMaximumNumberOfSteps(steps);
   tracer->SetMaximumPropagation(1e30);
   tracer->SetTerminalSpeed(1e-12);
-  // Rounds of each, taken in turns (the machine may be shared): medians.
+  // Rounds of each, taken in turns (the machine may be shared): medians. The
+  // process's processor time is taken too: with one thread, the ratio of steps per
+  // processor second does not count the time the process waited for a core.
   vtkNew<vtkTimerLog> timer;
-  std::vector<double> ours, peer, ratio;
+  std::vector<double> ours, peer, ratio, cpuRatio;
   double peerSteps = 0.0;
   for (int round = 0; round < rounds; ++round)
   {
+    std::clock_t cpu = std::clock();
     timer->StartTimer();
     advector->Step();
     timer->StopTimer();
+    const double oursCPU = static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
     ours.push_back(static_cast<double>(numSeeds) * steps / timer->GetElapsedTime() / 1e6);
     if (!peerToo)
     {
       continue;
     }
     tracer->Modified();
+    cpu = std::clock();
     timer->StartTimer();
     tracer->Update();
     timer->StopTimer();
+    const double peerCPU = static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
     vtkPolyData* lines = tracer->GetOutput();
     peerSteps = static_cast<double>(lines->GetNumberOfPoints() - lines->GetNumberOfLines());
     peer.push_back(peerSteps / timer->GetElapsedTime() / 1e6);
     ratio.push_back(ours.back() / peer.back());
+    if (oursCPU > 0.0 && peerCPU > 0.0)
+    {
+      cpuRatio.push_back((static_cast<double>(numSeeds) * steps / oursCPU) / (peerSteps / peerCPU));
+    }
   }
   SpeedResult result;
   result.Ours = Median(ours);
@@ -259,6 +272,12 @@ SpeedResult Speed(vtkPolyData* horse,
             << "x (median of " << rounds << " rounds; range "
             << (ratio.empty() ? 0.0 : *std::min_element(ratio.begin(), ratio.end())) << "-"
             << (ratio.empty() ? 0.0 : *std::max_element(ratio.begin(), ratio.end())) << ")\n";
+  if (!cpuRatio.empty())
+  {
+    std::cout << "     per processor second (process time): ratio " << Median(cpuRatio)
+              << "x (range " << *std::min_element(cpuRatio.begin(), cpuRatio.end()) << "-"
+              << *std::max_element(cpuRatio.begin(), cpuRatio.end()) << ")\n";
+  }
   return result;
 }
 

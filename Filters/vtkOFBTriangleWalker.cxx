@@ -244,11 +244,13 @@ inline bool vtkOFBTriangleWalker::CrossLane(vtkOFBWalkLanes& w, int j, bool with
   const glm::dvec2 d(w.D[0][j], w.D[1][j]);
   const glm::dvec3 db = r.Rates(d);
   double b[3] = { w.Bary[0][j], w.Bary[1][j], w.Bary[2][j] };
+  // Both tests of an edge in one branch (`&`, not `&&`): which edges a walk meets
+  // is unpredictable, and each mispredicted branch costs more than a comparison.
   double exit = 1.0;
   int edge = -1;
   for (int i = 0; i < 3; ++i)
   {
-    if (db[i] < 0.0 && b[i] < -db[i] * exit)
+    if ((db[i] < 0.0) & (b[i] < -db[i] * exit))
     {
       exit = b[i] / -db[i];
       edge = i;

@@ -211,13 +211,13 @@ void vtkOFBParticleStepper::BatchStage(Batch& b,
   // (CrossingSlope).
   vtkOFBWalkLanes walks;
   int lane[Lanes];
+  // Collected without branches (which lanes leave is unpredictable): every lane is
+  // written to the next free place, which only a leaving lane keeps.
   for (int j = 0; j < n; ++j)
   {
-    if (b.Leaves[j] != 0.0)
-    {
-      lane[walks.Count] = j;
-      walks.Set(walks.Count++, *points[j], b.D[0][j], b.D[1][j]);
-    }
+    lane[walks.Count] = j;
+    walks.Set(walks.Count, *points[j], b.D[0][j], b.D[1][j]);
+    walks.Count += b.Leaves[j] != 0.0;
   }
   if (walks.Count == 0)
   {
@@ -263,25 +263,19 @@ void vtkOFBParticleStepper::BatchFinal(Batch& b,
   }
   vtkOFBWalkLanes walks;
   int lane[Lanes];
+  // Without branches as in BatchStage: a lane that does not move has a zero sum, so
+  // its moved barycentrics are its own; a lane that leaves is set from where it
+  // started and its walk's end overwrites the moved barycentrics.
   for (int j = 0; j < n; ++j)
   {
     vtkOFBSurfacePoint& p = *points[j];
-    if (b.Moving[j] == 0.0)
-    {
-      results[j] = StoppedAtZero;
-    }
-    else if (b.Leaves[j] == 0.0)
-    {
-      p.Bary = glm::dvec3(moved[0][j], moved[1][j], moved[2][j]);
-      results[j] = Moved;
-      // The caller reads the corners of where it ended next.
-      this->Walker->PrefetchCorners(p.Triangle);
-    }
-    else
-    {
-      lane[walks.Count] = j;
-      walks.Set(walks.Count++, p, b.D[0][j], b.D[1][j]);
-    }
+    lane[walks.Count] = j;
+    walks.Set(walks.Count, p, b.D[0][j], b.D[1][j]);
+    walks.Count += b.Leaves[j] != 0.0;
+    p.Bary = glm::dvec3(moved[0][j], moved[1][j], moved[2][j]);
+    results[j] = b.Moving[j] != 0.0 ? Moved : StoppedAtZero;
+    // The caller reads the corners of where it ended next.
+    this->Walker->PrefetchCorners(p.Triangle);
   }
   // The walks that leave the start triangle, interleaved (Final).
   this->Walker->Walk(walks, false);

@@ -51,8 +51,8 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(vtkOFBSurfacePoint&
 // A batch in structure-of-arrays form, one lane per particle: the start triangle's
 // record in double, the start barycentrics, the current slope and the sum of the
 // slopes. The arithmetic of each lane is that of Advance, in the same order, so
-// the results are the same bit for bit (the loops over the lanes vectorize; lanes
-// past `n` hold zeros and are never written back).
+// the results are the same bit for bit (the loops over the lanes vectorize; a lane
+// past `n` holds zeros and is never written back).
 struct vtkOFBParticleStepper::Batch
 {
   static constexpr int Size = MaximumBatch;
@@ -62,6 +62,7 @@ struct vtkOFBParticleStepper::Batch
   double K[2][Size]; // the current slope
   double S[2][Size]; // the sum of the weighted slopes
   double D[2][Size]; // the displacement of the current stage
+  int Count;         // the lanes computed: n rounded up to the SIMD pairs
   // 1 or 0, in double: the loops then hold one type only and vectorize.
   double Moving[Size];
   double Leaves[Size]; // the stage's walk leaves the start triangle
@@ -130,7 +131,9 @@ inline bool LaneSlope(double vx,
 //------------------------------------------------------------------------------
 void vtkOFBParticleStepper::BatchStart(Batch& b, int n, vtkOFBSurfacePoint* const* points) const
 {
-  for (int j = 0; j < Lanes; ++j)
+  // Small batches (the ends of the threads' ranges) compute only their own lanes.
+  b.Count = std::min(Lanes, (n + 1) & ~1);
+  for (int j = 0; j < b.Count; ++j)
   {
     if (j < n)
     {
@@ -167,7 +170,7 @@ void vtkOFBParticleStepper::BatchStart(Batch& b, int n, vtkOFBSurfacePoint* cons
   const double sign = this->Sign;
   const double scale = this->Scale;
   const bool normalize = this->Normalize;
-  for (int j = 0; j < Lanes; ++j)
+  for (int j = 0; j < b.Count; ++j)
   {
     const double vx = b.B[0][j] * b.V[0][j] + b.B[1][j] * b.V[2][j] + b.B[2][j] * b.V[4][j];
     const double vy = b.B[0][j] * b.V[1][j] + b.B[1][j] * b.V[3][j] + b.B[2][j] * b.V[5][j];
@@ -194,7 +197,7 @@ void vtkOFBParticleStepper::BatchStage(Batch& b,
   // the field there, then its slope. A lane that does not move has a zero slope: it
   // stays where it is, so its slope stays zero and it never leaves.
   double v[2][Lanes];
-  for (int j = 0; j < Lanes; ++j)
+  for (int j = 0; j < b.Count; ++j)
   {
     const double dx = c * b.K[0][j];
     const double dy = c * b.K[1][j];
@@ -203,7 +206,7 @@ void vtkOFBParticleStepper::BatchStage(Batch& b,
     b.D[0][j] = dx;
     b.D[1][j] = dy;
   }
-  for (int j = 0; j < Lanes; ++j)
+  for (int j = 0; j < b.Count; ++j)
   {
     LaneSlope(v[0][j], v[1][j], stop, sign, scale, normalize, b.K[0][j], b.K[1][j]);
   }
@@ -249,7 +252,7 @@ void vtkOFBParticleStepper::BatchFinal(Batch& b,
   Result* results) const
 {
   double moved[3][Lanes];
-  for (int j = 0; j < Lanes; ++j)
+  for (int j = 0; j < b.Count; ++j)
   {
     const double dx = c * b.S[0][j];
     const double dy = c * b.S[1][j];
@@ -309,7 +312,7 @@ void vtkOFBParticleStepper::Advance(int n,
   if (this->Integrator == RK2)
   {
     this->BatchStage(b, n, points, 0.5 * h);
-    for (int j = 0; j < Lanes; ++j)
+    for (int j = 0; j < b.Count; ++j)
     {
       b.S[0][j] = b.K[0][j];
       b.S[1][j] = b.K[1][j];
@@ -322,7 +325,7 @@ void vtkOFBParticleStepper::Advance(int n,
     for (int stage = 0; stage < 3; ++stage)
     {
       this->BatchStage(b, n, points, along[stage] * h);
-      for (int j = 0; j < Lanes; ++j)
+      for (int j = 0; j < b.Count; ++j)
       {
         b.S[0][j] += weight[stage] * b.K[0][j];
         b.S[1][j] += weight[stage] * b.K[1][j];

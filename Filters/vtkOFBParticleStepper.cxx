@@ -48,6 +48,250 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(vtkOFBSurfacePoint&
 }
 
 //------------------------------------------------------------------------------
+// A batch in structure-of-arrays form, one lane per particle: the start triangle's
+// record in double, the start barycentrics, the current slope and the sum of the
+// slopes. The arithmetic of each lane is that of Advance, in the same order, so
+// the results are the same bit for bit (the loops over the lanes vectorize; a lane
+// past `n` holds zeros and is never written back).
+struct vtkOFBParticleStepper::Batch
+{
+  static constexpr int Size = MaximumBatch;
+  double G[4][Size]; // gradients of barycentrics 0 and 1: g0.x, g0.y, g1.x, g1.y
+  double V[6][Size]; // the corner vectors: v0.x, v0.y, v1.x, v1.y, v2.x, v2.y
+  double B[3][Size]; // the start barycentrics
+  double K[2][Size]; // the current slope
+  double S[2][Size]; // the sum of the weighted slopes
+  double D[2][Size]; // the displacement of the current stage
+  int Count;         // the lanes computed: n rounded up to the SIMD pairs
+  // 1 or 0, in double: the loops then hold one type only and vectorize.
+  double Moving[Size];
+  double Leaves[Size]; // the stage's walk leaves the start triangle
+};
+
+namespace
+{
+constexpr int Lanes = vtkOFBParticleStepper::MaximumBatch;
+
+// The rates of the barycentrics along (dx, dy) (vtkOFBWalkerTriangle::Rates), the
+// barycentrics moved by them `q` (vtkOFBTriangleWalker::WalkInside), whether the
+// walk leaves the triangle, and the field at q (vtkOFBTriangleWalker::Field2).
+// Straight-line code: the loops over the lanes that call it vectorize.
+inline bool MoveLane(const double (&g)[4][Lanes],
+  const double (&b)[3][Lanes],
+  const double (&v)[6][Lanes],
+  int j,
+  double dx,
+  double dy,
+  double (&q)[3],
+  double& vx,
+  double& vy)
+{
+  const double r0 = g[0][j] * dx + g[1][j] * dy;
+  const double r1 = g[2][j] * dx + g[3][j] * dy;
+  const double r2 = -(r0 + r1);
+  const bool leaves = ((r0 < 0.0) & (b[0][j] < -r0)) | ((r1 < 0.0) & (b[1][j] < -r1)) |
+    ((r2 < 0.0) & (b[2][j] < -r2));
+  const double m0 = b[0][j] + r0;
+  const double m1 = b[1][j] + r1;
+  const double m2 = b[2][j] + r2;
+  q[0] = m0 < 0.0 ? 0.0 : m0;
+  q[1] = m1 < 0.0 ? 0.0 : m1;
+  q[2] = m2 < 0.0 ? 0.0 : m2;
+  vx = q[0] * v[0][j] + q[1] * v[2][j] + q[2] * v[4][j];
+  vy = q[0] * v[1][j] + q[1] * v[3][j] + q[2] * v[5][j];
+  return leaves;
+}
+
+// The slope of the field (vx, vy) as vtkOFBParticleStepper::Slope, 0 where the
+// speed is not above `stop`; both forms are computed, so the loops vectorize.
+inline bool LaneSlope(double vx,
+  double vy,
+  double stop,
+  double sign,
+  double scale,
+  bool normalize,
+  double& kx,
+  double& ky)
+{
+  const double speed = std::sqrt(vx * vx + vy * vy);
+  const bool fast = speed > stop;
+  const double divisor = fast ? speed : 1.0;
+  const double ux = vx / divisor;
+  const double uy = vy / divisor;
+  const double sx = vx * scale;
+  const double sy = vy * scale;
+  const double nx = sign * (normalize ? ux : sx);
+  const double ny = sign * (normalize ? uy : sy);
+  kx = fast ? nx : 0.0;
+  ky = fast ? ny : 0.0;
+  return fast;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleStepper::BatchStart(Batch& b, int n, vtkOFBSurfacePoint* const* points) const
+{
+  // Small batches (the ends of the threads' ranges) compute only their own lanes.
+  b.Count = std::min(Lanes, (n + 1) & ~1);
+  for (int j = 0; j < b.Count; ++j)
+  {
+    if (j < n)
+    {
+      const vtkOFBWalkerTriangle& r = this->Walker->GetRecord(points[j]->Triangle);
+      b.G[0][j] = r.Gradient[0][0];
+      b.G[1][j] = r.Gradient[0][1];
+      b.G[2][j] = r.Gradient[1][0];
+      b.G[3][j] = r.Gradient[1][1];
+      for (int i = 0; i < 3; ++i)
+      {
+        b.V[2 * i][j] = r.Vector[i][0];
+        b.V[2 * i + 1][j] = r.Vector[i][1];
+        b.B[i][j] = points[j]->Bary[i];
+      }
+    }
+    else
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        b.G[i][j] = 0.0;
+      }
+      for (int i = 0; i < 6; ++i)
+      {
+        b.V[i][j] = 0.0;
+      }
+      for (int i = 0; i < 3; ++i)
+      {
+        b.B[i][j] = 0.0;
+      }
+    }
+  }
+  // The first slope, at the start (Slope).
+  const double stop = this->StopSpeed;
+  const double sign = this->Sign;
+  const double scale = this->Scale;
+  const bool normalize = this->Normalize;
+  for (int j = 0; j < b.Count; ++j)
+  {
+    const double vx = b.B[0][j] * b.V[0][j] + b.B[1][j] * b.V[2][j] + b.B[2][j] * b.V[4][j];
+    const double vy = b.B[0][j] * b.V[1][j] + b.B[1][j] * b.V[3][j] + b.B[2][j] * b.V[5][j];
+    double kx, ky;
+    b.Moving[j] = LaneSlope(vx, vy, stop, sign, scale, normalize, kx, ky) ? 1.0 : 0.0;
+    b.K[0][j] = kx;
+    b.K[1][j] = ky;
+    b.S[0][j] = kx;
+    b.S[1][j] = ky;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleStepper::BatchStage(Batch& b,
+  int n,
+  vtkOFBSurfacePoint* const* points,
+  double c) const
+{
+  const double stop = this->StopSpeed;
+  const double sign = this->Sign;
+  const double scale = this->Scale;
+  const bool normalize = this->Normalize;
+  // Every lane as if its walk stayed in the start triangle (StageSlope's first case):
+  // the field there, then its slope. A lane that does not move has a zero slope: it
+  // stays where it is, so its slope stays zero and it never leaves.
+  double v[2][Lanes];
+  for (int j = 0; j < b.Count; ++j)
+  {
+    const double dx = c * b.K[0][j];
+    const double dy = c * b.K[1][j];
+    double q[3];
+    b.Leaves[j] = MoveLane(b.G, b.B, b.V, j, dx, dy, q, v[0][j], v[1][j]) ? 1.0 : 0.0;
+    b.D[0][j] = dx;
+    b.D[1][j] = dy;
+  }
+  for (int j = 0; j < b.Count; ++j)
+  {
+    LaneSlope(v[0][j], v[1][j], stop, sign, scale, normalize, b.K[0][j], b.K[1][j]);
+  }
+  // The walks that leave, interleaved, then the slopes at their ends carried back
+  // (CrossingSlope).
+  vtkOFBWalkLanes walks;
+  int lane[Lanes];
+  // Collected without branches (which lanes leave is unpredictable): every lane is
+  // written to the next free place, which only a leaving lane keeps.
+  for (int j = 0; j < n; ++j)
+  {
+    lane[walks.Count] = j;
+    walks.Set(walks.Count, *points[j], b.D[0][j], b.D[1][j]);
+    walks.Count += b.Leaves[j] != 0.0;
+  }
+  if (walks.Count == 0)
+  {
+    return;
+  }
+  this->Walker->Walk(walks, true);
+  for (int w = 0; w < walks.Count; ++w)
+  {
+    vtkOFBSurfacePoint q;
+    walks.Get(w, q);
+    // The step usually ends near the stage points: the caller reads the corners of
+    // where it ends.
+    this->Walker->PrefetchCorners(q.Triangle);
+    glm::dvec2 slope;
+    this->Slope(q, slope);
+    const glm::dmat2 frame(
+      walks.Frame[0][w], walks.Frame[1][w], walks.Frame[2][w], walks.Frame[3][w]);
+    const glm::dvec2 k = glm::transpose(frame) * slope;
+    b.K[0][lane[w]] = k[0];
+    b.K[1][lane[w]] = k[1];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleStepper::BatchFinal(Batch& b,
+  int n,
+  vtkOFBSurfacePoint* const* points,
+  double c,
+  Result* results) const
+{
+  double moved[3][Lanes];
+  for (int j = 0; j < b.Count; ++j)
+  {
+    const double dx = c * b.S[0][j];
+    const double dy = c * b.S[1][j];
+    double q[3], vx, vy;
+    b.Leaves[j] = MoveLane(b.G, b.B, b.V, j, dx, dy, q, vx, vy) ? 1.0 : 0.0;
+    moved[0][j] = q[0];
+    moved[1][j] = q[1];
+    moved[2][j] = q[2];
+    b.D[0][j] = dx;
+    b.D[1][j] = dy;
+  }
+  vtkOFBWalkLanes walks;
+  int lane[Lanes];
+  // Without branches as in BatchStage: a lane that does not move has a zero sum, so
+  // its moved barycentrics are its own; a lane that leaves is set from where it
+  // started and its walk's end overwrites the moved barycentrics.
+  for (int j = 0; j < n; ++j)
+  {
+    vtkOFBSurfacePoint& p = *points[j];
+    lane[walks.Count] = j;
+    walks.Set(walks.Count, p, b.D[0][j], b.D[1][j]);
+    walks.Count += b.Leaves[j] != 0.0;
+    p.Bary = glm::dvec3(moved[0][j], moved[1][j], moved[2][j]);
+    results[j] = b.Moving[j] != 0.0 ? Moved : StoppedAtZero;
+    // The caller reads the corners of where it ended next.
+    this->Walker->PrefetchCorners(p.Triangle);
+  }
+  // The walks that leave the start triangle, interleaved (Final).
+  this->Walker->Walk(walks, false);
+  for (int w = 0; w < walks.Count; ++w)
+  {
+    const int j = lane[w];
+    walks.Get(w, *points[j]);
+    results[j] = walks.Result[w] == vtkOFBTriangleWalker::Boundary ? StoppedAtBoundary : Moved;
+    this->Walker->PrefetchCorners(points[j]->Triangle);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBParticleStepper::Advance(int n,
   vtkOFBSurfacePoint* const* points,
   double* const* subSteps,
@@ -63,20 +307,15 @@ void vtkOFBParticleStepper::Advance(int n,
   }
   // The stages of Advance (Euler, RK2, RK4), each for all particles in turn.
   const double h = this->Length;
-  glm::dvec2 k[MaximumBatch];
-  glm::dvec2 sum[MaximumBatch];
-  bool moving[MaximumBatch];
-  for (int j = 0; j < n; ++j)
-  {
-    moving[j] = this->Slope(*points[j], k[j]);
-    results[j] = moving[j] ? Moved : StoppedAtZero;
-    sum[j] = k[j];
-  }
+  Batch b;
+  this->BatchStart(b, n, points);
   if (this->Integrator == RK2)
   {
-    for (int j = 0; j < n; ++j)
+    this->BatchStage(b, n, points, 0.5 * h);
+    for (int j = 0; j < b.Count; ++j)
     {
-      sum[j] = moving[j] ? this->StageSlope(*points[j], 0.5 * h * k[j]) : sum[j];
+      b.S[0][j] = b.K[0][j];
+      b.S[1][j] = b.K[1][j];
     }
   }
   else if (this->Integrator == RK4)
@@ -85,26 +324,15 @@ void vtkOFBParticleStepper::Advance(int n,
     static const double weight[3] = { 2.0, 2.0, 1.0 };
     for (int stage = 0; stage < 3; ++stage)
     {
-      for (int j = 0; j < n; ++j)
+      this->BatchStage(b, n, points, along[stage] * h);
+      for (int j = 0; j < b.Count; ++j)
       {
-        if (moving[j])
-        {
-          k[j] = this->StageSlope(*points[j], along[stage] * h * k[j]);
-          sum[j] += weight[stage] * k[j];
-        }
+        b.S[0][j] += weight[stage] * b.K[0][j];
+        b.S[1][j] += weight[stage] * b.K[1][j];
       }
     }
   }
-  const double scale = this->Integrator == RK4 ? h / 6.0 : h;
-  for (int j = 0; j < n; ++j)
-  {
-    if (moving[j])
-    {
-      results[j] = this->Final(*points[j], scale * sum[j]);
-      // The caller reads the corners of where it ended next.
-      this->Walker->PrefetchCorners(points[j]->Triangle);
-    }
-  }
+  this->BatchFinal(b, n, points, this->Integrator == RK4 ? h / 6.0 : h, results);
 }
 
 //------------------------------------------------------------------------------

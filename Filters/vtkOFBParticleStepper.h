@@ -63,10 +63,12 @@ public:
 
   /**
    * Advance `n` (at most MaximumBatch) particles by one step each, with the same
-   * result for each as `Advance` alone. The stages go across the particles (the
-   * first stage of all, then the second...): the work of one particle does not
-   * wait for the previous one's, so the processor overlaps their chains of
-   * dependent arithmetic and memory loads.
+   * result for each as `Advance` alone (bit for bit). The stages go across the
+   * particles (the first stage of all, then the second...) in structure-of-arrays
+   * form: every stage starts from the particle's own triangle, so its record is
+   * read once per step, and the stage points that stay in that triangle (most of
+   * them) are computed for all the batch at once in SIMD loops without branches;
+   * only the stages that cross an edge walk, one particle at a time.
    */
   void Advance(int n,
     vtkOFBSurfacePoint* const* points,
@@ -77,6 +79,19 @@ public:
   bool Slope(const vtkOFBSurfacePoint& p, glm::dvec2& slope) const;
 
 private:
+  struct Batch;
+  /// Batch: the records of the start triangles and the first slopes.
+  void BatchStart(Batch& b, int n, vtkOFBSurfacePoint* const* points) const;
+  /// Batch: the slopes at `c` times the current slopes from the start (one stage).
+  void BatchStage(Batch& b, int n, vtkOFBSurfacePoint* const* points, double c) const;
+  /// Batch: the walk of `c` times the sums of the slopes.
+  void BatchFinal(Batch& b,
+    int n,
+    vtkOFBSurfacePoint* const* points,
+    double c,
+    Result* results) const;
+  /// The slope at the end of a walk from `p` along `d` that leaves p's triangle.
+  glm::dvec2 CrossingSlope(const vtkOFBSurfacePoint& p, const glm::dvec2& d) const;
   /// The slope at the end of a walk from `p` along `d`, in p's plane.
   glm::dvec2 StageSlope(const vtkOFBSurfacePoint& p, const glm::dvec2& d) const;
   Result Final(vtkOFBSurfacePoint& p, const glm::dvec2& d) const;
@@ -113,8 +128,16 @@ inline glm::dvec2 vtkOFBParticleStepper::StageSlope(const vtkOFBSurfacePoint& p,
     this->Slope(q, slope);
     return slope;
   }
+  return this->CrossingSlope(p, d);
+}
+
+inline glm::dvec2 vtkOFBParticleStepper::CrossingSlope(const vtkOFBSurfacePoint& p,
+  const glm::dvec2& d) const
+{
+  vtkOFBSurfacePoint q = p;
   glm::dmat2 frame(1.0);
   this->Walker->Walk(q, d, &frame);
+  glm::dvec2 slope;
   this->Slope(q, slope);
   // Back into p's frame: the turns are orthogonal, their inverse is the transpose.
   return glm::transpose(frame) * slope;

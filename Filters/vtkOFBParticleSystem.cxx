@@ -182,14 +182,18 @@ void vtkOFBParticleSystem::Advance(const Coloring& coloring, vtkIdType numSteps)
   const vtkIdType first = this->CurrentStep;
   this->CurrentStep += numSteps;
   constexpr vtkIdType batch = vtkOFBParticleStepper::MaximumBatch;
+  // Ranges of at least a batch: the stepper's batches cost about the same for a
+  // few particles as for a full batch.
   vtkSMPTools::For(0,
     static_cast<vtkIdType>(this->Particles.size()),
+    batch,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; i += batch)
       {
         const vtkIdType last = std::min(end, i + batch);
-        for (vtkIdType k = last; k < std::min(end, last + batch); ++k)
+        const vtkIdType ahead = std::min(end - last, batch);
+        for (vtkIdType k = last; k < last + ahead; ++k)
         {
           if (this->Particles[k].Point.Triangle >= 0)
           {

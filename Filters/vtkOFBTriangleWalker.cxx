@@ -234,61 +234,130 @@ double vtkOFBTriangleWalker::Interpolate(vtkDataArray* array,
 }
 
 //------------------------------------------------------------------------------
+inline bool vtkOFBTriangleWalker::CrossLane(vtkOFBWalkLanes& w, int j, bool withFrame) const
+{
+  // Moves lane j in barycentric coordinates (the gradients of the barycentrics
+  // give their rates along d) to the first edge its path meets, at the fraction
+  // `exit` of d, or to the end of d.
+  const vtkIdType t = w.Triangle[j];
+  const vtkOFBWalkerTriangle& r = this->Records[t];
+  const glm::dvec2 d(w.D[0][j], w.D[1][j]);
+  const glm::dvec3 db = r.Rates(d);
+  double b[3] = { w.Bary[0][j], w.Bary[1][j], w.Bary[2][j] };
+  // Both tests of an edge in one branch (`&`, not `&&`): which edges a walk meets
+  // is unpredictable, and each mispredicted branch costs more than a comparison.
+  double exit = 1.0;
+  int edge = -1;
+  for (int i = 0; i < 3; ++i)
+  {
+    if ((db[i] < 0.0) & (b[i] < -db[i] * exit))
+    {
+      exit = b[i] / -db[i];
+      edge = i;
+    }
+  }
+  if (edge < 0)
+  {
+    // The gradients sum to zero, so the sum stays 1; only rounding below 0 is cut.
+    for (int i = 0; i < 3; ++i)
+    {
+      const double x = b[i] + db[i];
+      w.Bary[i][j] = x < 0.0 ? 0.0 : x;
+    }
+    w.Result[j] = Inside;
+    return true;
+  }
+  // On the edge: the barycentric of its opposite corner is 0, the other two sum
+  // to 1 (the second is 1 - the first rather than a division of both by their sum).
+  const int a = edge == 2 ? 0 : edge + 1;
+  const double ba = std::min(1.0, std::max(0.0, b[a] + exit * db[a]));
+  const int next = r.Next[edge];
+  if (next < 0)
+  {
+    b[edge] = 0.0;
+    b[a] = ba;
+    b[3 - edge - a] = 1.0 - ba;
+    for (int i = 0; i < 3; ++i)
+    {
+      w.Bary[i][j] = b[i];
+    }
+    w.Result[j] = Boundary;
+    return true;
+  }
+  // Into the neighbour, with the rest of d and the frame turned about the edge.
+  const int na = r.NextA(edge);
+  const int opposite = r.Opposite(edge);
+  w.Bary[na][j] = ba;
+  w.Bary[3 - opposite - na][j] = 1.0 - ba;
+  w.Bary[opposite][j] = 0.0;
+  const vtkOFBWalkerTurn& turn = this->Turns[t];
+  const bool reflect = r.Reflect(edge);
+  const glm::dvec2 turned = (1.0 - exit) * turn.Apply(edge, reflect, d);
+  w.D[0][j] = turned[0];
+  w.D[1][j] = turned[1];
+  if (withFrame)
+  {
+    const glm::dvec2 f0 = turn.Apply(edge, reflect, glm::dvec2(w.Frame[0][j], w.Frame[1][j]));
+    const glm::dvec2 f1 = turn.Apply(edge, reflect, glm::dvec2(w.Frame[2][j], w.Frame[3][j]));
+    w.Frame[0][j] = f0[0];
+    w.Frame[1][j] = f0[1];
+    w.Frame[2][j] = f1[0];
+    w.Frame[3][j] = f1[1];
+  }
+  w.Triangle[j] = next;
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTriangleWalker::Walk(vtkOFBWalkLanes& w, bool withFrame) const
+{
+  // The lanes still walking, kept in order by a compaction after each round.
+  int active[vtkOFBWalkLanes::Size];
+  int count = 0;
+  for (int j = 0; j < w.Count; ++j)
+  {
+    active[count++] = j;
+  }
+  for (int crossing = 0; count > 0 && crossing < MaximumCrossings; ++crossing)
+  {
+    int left = 0;
+    for (int k = 0; k < count; ++k)
+    {
+      const int j = active[k];
+      active[left] = j;
+      left += this->CrossLane(w, j, withFrame) ? 0 : 1;
+    }
+    count = left;
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    w.Result[active[k]] = Stuck;
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkOFBTriangleWalker::WalkResult vtkOFBTriangleWalker::Walk(vtkOFBSurfacePoint& p,
   glm::dvec2 d,
   glm::dmat2* frame) const
 {
-  for (int crossing = 0; crossing < MaximumCrossings; ++crossing)
+  // One lane of the walks below.
+  vtkOFBWalkLanes lane;
+  lane.Count = 1;
+  lane.Set(0, p, d[0], d[1]);
+  if (frame)
   {
-    const vtkOFBWalkerTriangle& r = this->Records[p.Triangle];
-    const glm::dvec3 db = r.Rates(d);
-
-    // The first edge the path meets, at the fraction `exit` of d.
-    double exit = 1.0;
-    int edge = -1;
-    for (int i = 0; i < 3; ++i)
-    {
-      if (db[i] < 0.0 && p.Bary[i] < -db[i] * exit)
-      {
-        exit = p.Bary[i] / -db[i];
-        edge = i;
-      }
-    }
-    if (edge < 0)
-    {
-      // The gradients sum to zero, so the sum stays 1; only rounding below 0 is cut.
-      p.Bary = glm::max(p.Bary + db, glm::dvec3(0.0));
-      return Inside;
-    }
-    // On the edge: the barycentric of its opposite corner is 0, the other two sum
-    // to 1 (the second is 1 - the first rather than a division of both by their sum).
-    const int a = edge == 2 ? 0 : edge + 1;
-    const double ba = std::min(1.0, std::max(0.0, p.Bary[a] + exit * db[a]));
-    p.Bary[edge] = 0.0;
-    p.Bary[a] = ba;
-    p.Bary[3 - edge - a] = 1.0 - ba;
-
-    const int next = r.Next[edge];
-    if (next < 0)
-    {
-      return Boundary;
-    }
-    const int na = r.NextA(edge);
-    glm::dvec3 bary(0.0);
-    bary[na] = p.Bary[(edge + 1) % 3];
-    bary[3 - r.Opposite(edge) - na] = p.Bary[(edge + 2) % 3];
-    const vtkOFBWalkerTurn& turn = this->Turns[p.Triangle];
-    const bool reflect = r.Reflect(edge);
-    d = (1.0 - exit) * turn.Apply(edge, reflect, d);
-    if (frame)
-    {
-      (*frame)[0] = turn.Apply(edge, reflect, (*frame)[0]);
-      (*frame)[1] = turn.Apply(edge, reflect, (*frame)[1]);
-    }
-    p.Triangle = next;
-    p.Bary = bary;
+    lane.Frame[0][0] = (*frame)[0][0];
+    lane.Frame[1][0] = (*frame)[0][1];
+    lane.Frame[2][0] = (*frame)[1][0];
+    lane.Frame[3][0] = (*frame)[1][1];
   }
-  return Stuck;
+  this->Walk(lane, frame != nullptr);
+  lane.Get(0, p);
+  if (frame)
+  {
+    *frame = glm::dmat2(lane.Frame[0][0], lane.Frame[1][0], lane.Frame[2][0], lane.Frame[3][0]);
+  }
+  return static_cast<WalkResult>(lane.Result[0]);
 }
 
 //------------------------------------------------------------------------------

@@ -94,6 +94,46 @@ struct vtkOFBWalkerTurn
   }
 };
 
+/**
+ * Walks of several points at once (vtkOFBTriangleWalker::Walk of lanes), in
+ * structure-of-arrays form: the lanes' triangles, barycentrics, displacements and
+ * frames (the columns of Walk's `frame`: (Frame[0], Frame[1]) and (Frame[2],
+ * Frame[3])), and how each walk ended.
+ */
+struct vtkOFBWalkLanes
+{
+  static constexpr int Size = 16;
+  int Count = 0;
+  vtkIdType Triangle[Size];
+  double Bary[3][Size];
+  double D[2][Size];
+  double Frame[4][Size];
+  int Result[Size];
+
+  /// Lane `j` starts at `p` with displacement `d` and the identity frame.
+  void Set(int j, const vtkOFBSurfacePoint& p, double dx, double dy)
+  {
+    this->Triangle[j] = p.Triangle;
+    for (int i = 0; i < 3; ++i)
+    {
+      this->Bary[i][j] = p.Bary[i];
+    }
+    this->D[0][j] = dx;
+    this->D[1][j] = dy;
+    this->Frame[0][j] = 1.0;
+    this->Frame[1][j] = 0.0;
+    this->Frame[2][j] = 0.0;
+    this->Frame[3][j] = 1.0;
+  }
+
+  /// Where lane `j` ended.
+  void Get(int j, vtkOFBSurfacePoint& p) const
+  {
+    p.Triangle = this->Triangle[j];
+    p.Bary = glm::dvec3(this->Bary[0][j], this->Bary[1][j], this->Bary[2][j]);
+  }
+};
+
 class vtkOFBTriangleWalker
 {
 public:
@@ -121,6 +161,9 @@ public:
   {
     return static_cast<vtkIdType>(this->Corners.size() / 3);
   }
+
+  /// What a walk reads of triangle `t` (for the batched stages of the stepper).
+  const vtkOFBWalkerTriangle& GetRecord(vtkIdType t) const { return this->Records[t]; }
 
   /// The largest length of a point vector.
   double GetMaximumSpeed() const { return this->MaximumSpeed; }
@@ -235,6 +278,14 @@ public:
   WalkResult Walk(vtkOFBSurfacePoint& p, glm::dvec2 d, glm::dmat2* frame) const;
 
   /**
+   * The walks of `lanes.Count` lanes, each as `Walk` (the same results bit for
+   * bit; the frames only when `withFrame`), interleaved: each round makes one edge
+   * crossing of every lane still walking, so the processor overlaps the dependent
+   * loads and divisions of different walks instead of waiting on one at a time.
+   */
+  void Walk(vtkOFBWalkLanes& lanes, bool withFrame) const;
+
+  /**
    * The surface point of triangle `t` closest to `x` (barycentrics of the
    * projection of x on the plane, clamped to the triangle).
    */
@@ -246,6 +297,8 @@ public:
   vtkOFBSurfacePoint Sample(double u0, double u1, double u2) const;
 
 private:
+  /// One round of Walk's loop for lane `j`; true when its walk ended.
+  bool CrossLane(vtkOFBWalkLanes& lanes, int j, bool withFrame) const;
   void BuildGeometry();
   void BuildAdjacency();
   /// Edge `edge` of `t` is shared with edge `opposite` of `next`.

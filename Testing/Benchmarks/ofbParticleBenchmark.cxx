@@ -10,10 +10,13 @@
 //     The step is split into advection, painting and output building as the
 //     advector times them; the scaling from 1 to 2 threads of both parts.
 // Rounds are interleaved with the peer and reported as medians with the load
-// average (the machine may be shared).
+// average (the machine may be shared); part 2 also gives the ratio of steps per
+// second of processor time of the process (with 1 thread, the time spent waiting
+// for a core on a loaded machine left out).
 // Not a test: run it by hand,
-// `ofbParticleBenchmark [--steps N] [--seeds N] [--part 1|2|3] [--rounds N] [--no-peer]`
-// (--no-peer: ours alone, for profiling).
+// `ofbParticleBenchmark [--steps N] [--seeds N] [--part 1|2|3] [--rounds N] [--no-peer]
+// [--threads 1|2]` (--no-peer: ours alone, for profiling; --threads: parts 2 and 3 with
+// that number of threads only).
 #include "vtkOFBReadMesh.h"
 
 #include "vtkCellArray.h"
@@ -36,6 +39,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -226,28 +230,38 @@ SpeedResult Speed(vtkPolyData* horse,
   tracer->SetMaximumNumberOfSteps(steps);
   tracer->SetMaximumPropagation(1e30);
   tracer->SetTerminalSpeed(1e-12);
-  // Rounds of each, taken in turns (the machine may be shared): medians.
+  // Rounds of each, taken in turns (the machine may be shared): medians. The
+  // process's processor time is taken too: with one thread, the ratio of steps per
+  // processor second does not count the time the process waited for a core.
   vtkNew<vtkTimerLog> timer;
-  std::vector<double> ours, peer, ratio;
+  std::vector<double> ours, peer, ratio, cpuRatio;
   double peerSteps = 0.0;
   for (int round = 0; round < rounds; ++round)
   {
+    std::clock_t cpu = std::clock();
     timer->StartTimer();
     advector->Step();
     timer->StopTimer();
+    const double oursCPU = static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
     ours.push_back(static_cast<double>(numSeeds) * steps / timer->GetElapsedTime() / 1e6);
     if (!peerToo)
     {
       continue;
     }
     tracer->Modified();
+    cpu = std::clock();
     timer->StartTimer();
     tracer->Update();
     timer->StopTimer();
+    const double peerCPU = static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
     vtkPolyData* lines = tracer->GetOutput();
     peerSteps = static_cast<double>(lines->GetNumberOfPoints() - lines->GetNumberOfLines());
     peer.push_back(peerSteps / timer->GetElapsedTime() / 1e6);
     ratio.push_back(ours.back() / peer.back());
+    if (oursCPU > 0.0 && peerCPU > 0.0)
+    {
+      cpuRatio.push_back((static_cast<double>(numSeeds) * steps / oursCPU) / (peerSteps / peerCPU));
+    }
   }
   SpeedResult result;
   result.Ours = Median(ours);
@@ -258,6 +272,12 @@ SpeedResult Speed(vtkPolyData* horse,
             << "x (median of " << rounds << " rounds; range "
             << (ratio.empty() ? 0.0 : *std::min_element(ratio.begin(), ratio.end())) << "-"
             << (ratio.empty() ? 0.0 : *std::max_element(ratio.begin(), ratio.end())) << ")\n";
+  if (!cpuRatio.empty())
+  {
+    std::cout << "     per processor second (process time): ratio " << Median(cpuRatio)
+              << "x (range " << *std::min_element(cpuRatio.begin(), cpuRatio.end()) << "-"
+              << *std::max_element(cpuRatio.begin(), cpuRatio.end()) << ")\n";
+  }
   return result;
 }
 
@@ -319,6 +339,7 @@ int main(int argc, char* argv[])
   int part = 0; // all
   int rounds = 7;
   bool peer = true;
+  int threads = 0; // 1 and 2
   std::string mesh = std::string(VTKOFB_DATA_DIR) + "/horse.ply";
   for (int i = 1; i < argc; ++i)
   {
@@ -342,6 +363,10 @@ int main(int argc, char* argv[])
     {
       peer = false;
     }
+    else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
+    {
+      threads = std::max(1, std::atoi(argv[++i]));
+    }
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc)
     {
       mesh = argv[++i];
@@ -349,7 +374,8 @@ int main(int argc, char* argv[])
     else
     {
       std::cout << "ofbParticleBenchmark [--steps N (per revolution, 2000)] [--seeds N (1000)] "
-                   "[--mesh FILE (horse)] [--part 1|2|3 (all)] [--rounds N (7)] [--no-peer]\n";
+                   "[--mesh FILE (horse)] [--part 1|2|3 (all)] [--rounds N (7)] [--no-peer] "
+                   "[--threads N (1 and 2)]\n";
       return argv[i] == std::string("--help") ? 0 : 1;
     }
   }
@@ -371,20 +397,34 @@ int main(int argc, char* argv[])
   {
     std::cout << "2. " << mesh << " (" << horse->GetNumberOfPolys() << " triangles), " << seeds
               << " seeds, RK4, 200 steps of 1 cell (1/1024 of the box); load " << Load() << ":\n";
-    const SpeedResult one = Speed(horse, seeds, 200, 1, rounds, peer);
-    const SpeedResult two = Speed(horse, seeds, 200, 2, rounds, peer);
-    std::cout << "   scaling 1 -> 2 threads: vtkOFBParticleAdvector " << two.Ours / one.Ours
-              << "x, vtkStreamTracer " << (one.Peer > 0.0 ? two.Peer / one.Peer : 0.0) << "x\n";
+    if (threads > 0)
+    {
+      Speed(horse, seeds, 200, threads, rounds, peer);
+    }
+    else
+    {
+      const SpeedResult one = Speed(horse, seeds, 200, 1, rounds, peer);
+      const SpeedResult two = Speed(horse, seeds, 200, 2, rounds, peer);
+      std::cout << "   scaling 1 -> 2 threads: vtkOFBParticleAdvector " << two.Ours / one.Ours
+                << "x, vtkStreamTracer " << (one.Peer > 0.0 ? two.Peer / one.Peer : 0.0) << "x\n";
+    }
   }
   if (part == 0 || part == 3)
   {
     std::cout << "3. Painting on " << mesh << " at 2048, footprint radius 2.5 cells; load "
               << Load() << ":\n";
-    const PaintResult one = Paint(horse, 1, rounds);
-    const PaintResult two = Paint(horse, 2, rounds);
-    std::cout << "   scaling 1 -> 2 threads: step " << one.Step / two.Step << "x, advection "
-              << one.Advection / two.Advection << "x, painting " << one.Painting / two.Painting
-              << "x, outputs " << one.Outputs / two.Outputs << "x\n";
+    if (threads > 0)
+    {
+      Paint(horse, threads, rounds);
+    }
+    else
+    {
+      const PaintResult one = Paint(horse, 1, rounds);
+      const PaintResult two = Paint(horse, 2, rounds);
+      std::cout << "   scaling 1 -> 2 threads: step " << one.Step / two.Step << "x, advection "
+                << one.Advection / two.Advection << "x, painting " << one.Painting / two.Painting
+                << "x, outputs " << one.Outputs / two.Outputs << "x\n";
+    }
   }
   vtkSMPTools::Initialize(0);
   return 0;

@@ -31,19 +31,19 @@
 #define vtkOFB_h
 
 #include "vtkDataObject.h"
+#include "vtkFloatArray.h"       // for inline access
 #include "vtkOFBFiltersModule.h" // for export macro
+#include "vtkPointData.h"        // for inline access
 #include "vtkSmartPointer.h"     // for members
 #include "vtkTypeUInt32Array.h"  // for inline access
-#include "vtkWrappingHints.h"     // for VTK_SIZEHINT
-#include "vtkFloatArray.h"       // for inline access
-#include "vtkPointData.h"        // for inline access
+#include "vtkWrappingHints.h"    // for VTK_SIZEHINT
 
-#include "vtkTimeStamp.h"        // for StructureTime
-#include "vtkWeakPointer.h"      // for the recycled structure
+#include "vtkTimeStamp.h"   // for StructureTime
+#include "vtkWeakPointer.h" // for the recycled structure
 
 #include <algorithm> // for std::lower_bound
-#include <vector>    // for ModifiedRanges
 #include <cmath>     // for std::floor
+#include <vector>    // for ModifiedRanges
 
 /// A hint to fetch the cache line at `p` ahead of use (`VTKOFB_PREFETCH_WRITE`: to be
 /// written); nothing where the compiler has no such builtin.
@@ -81,8 +81,10 @@ public:
    * that writes every offset itself may pass `zeroOffsets` false to leave them
    * uninitialized.
    */
-  bool SetFrame(
-    const double origin[3], double cellSize, const vtkIdType dims[3], bool zeroOffsets = true);
+  bool SetFrame(const double origin[3],
+    double cellSize,
+    const vtkIdType dims[3],
+    bool zeroOffsets = true);
 
   ///@{
   /**
@@ -115,8 +117,10 @@ public:
    * `numberOfComponents` components and room for `numberOfTuples` tuples, resized
    * to them (its values are stale); null when there is none.
    */
-  vtkSmartPointer<vtkDataArray> TakeSpareArray(
-    const char* name, int dataType, int numberOfComponents, vtkIdType numberOfTuples);
+  vtkSmartPointer<vtkDataArray> TakeSpareArray(const char* name,
+    int dataType,
+    int numberOfComponents,
+    vtkIdType numberOfTuples);
 #endif
 
   /**
@@ -137,10 +141,19 @@ public:
    * The frame: low corner of the box (world units), cell edge (world units) and
    * number of cells along x, y and z. An empty OFB has cell size 0.
    */
-  const double* GetOrigin() const VTK_SIZEHINT(3) { return this->Origin; }
+  const double* GetOrigin() const VTK_SIZEHINT(3)
+  {
+    return this->Origin;
+  }
   void GetOrigin(double o[3]) const;
-  double GetCellSize() const { return this->CellSize; }
-  const vtkIdType* GetDimensions() const VTK_SIZEHINT(3) { return this->Dimensions; }
+  double GetCellSize() const
+  {
+    return this->CellSize;
+  }
+  const vtkIdType* GetDimensions() const VTK_SIZEHINT(3)
+  {
+    return this->Dimensions;
+  }
   void GetDimensions(vtkIdType d[3]) const;
   void GetBounds(double bounds[6]) const;
   ///@}
@@ -155,13 +168,19 @@ public:
    * Cell counts: per grid, and over the three grids.
    */
   vtkIdType GetNumberOfGridCells(int axis) const;
-  vtkIdType GetNumberOfCells() const { return this->CellBase[3]; }
+  vtkIdType GetNumberOfCells() const
+  {
+    return this->CellBase[3];
+  }
   ///@}
 
   /**
    * Global index of the first cell of grid `axis` (0..3; 3 gives the total).
    */
-  vtkIdType GetGridCellBase(int axis) const { return this->CellBase[axis]; }
+  vtkIdType GetGridCellBase(int axis) const
+  {
+    return this->CellBase[axis];
+  }
 
   ///@{
   /**
@@ -185,15 +204,27 @@ public:
    * The storage arrays. CellOffsets has GetNumberOfCells()+1 entries; Depths and
    * CellIndex have one entry per sample. Builders and readers fill them.
    */
-  vtkTypeUInt32Array* GetCellOffsets() { return this->CellOffsets; }
-  vtkFloatArray* GetDepths() { return this->Depths; }
-  vtkTypeUInt32Array* GetCellIndex() { return this->CellIndex; }
+  vtkTypeUInt32Array* GetCellOffsets()
+  {
+    return this->CellOffsets;
+  }
+  vtkFloatArray* GetDepths()
+  {
+    return this->Depths;
+  }
+  vtkTypeUInt32Array* GetCellIndex()
+  {
+    return this->CellIndex;
+  }
   ///@}
 
   /**
    * Sample attributes, one tuple per sample.
    */
-  vtkPointData* GetSampleData() { return this->SampleData; }
+  vtkPointData* GetSampleData()
+  {
+    return this->SampleData;
+  }
 
   /**
    * Grid (0, 1, 2) of a sample, or -1 for an invalid id.
@@ -239,7 +270,7 @@ public:
    * depth. Candidates are the cells under the sphere's projection on each grid and
    * the depth range [d - r, d + r] of each; no allocation.
    */
-  template <typename Functor>
+  template<typename Functor>
   void ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const;
 
   /**
@@ -247,9 +278,11 @@ public:
    * the range of sample ids that `f` will soon be offered, so that the caller can
    * prefetch its own arrays indexed by sample id (the query prefetches its own).
    */
-  template <typename Functor, typename Prefetch>
-  void ForEachSampleInSphere(
-    const double center[3], double radius, Functor&& f, Prefetch&& prefetch) const;
+  template<typename Functor, typename Prefetch>
+  void ForEachSampleInSphere(const double center[3],
+    double radius,
+    Functor&& f,
+    Prefetch&& prefetch) const;
 
   /**
    * Many sphere queries in one call, with the result of calling
@@ -262,7 +295,7 @@ public:
    * are on their way from memory, which is what many small spheres (particle
    * footprints, small brushes) wait for one by one. `prefetch` as above.
    */
-  template <typename Sphere, typename Functor, typename Prefetch>
+  template<typename Sphere, typename Functor, typename Prefetch>
   void ForEachSampleInSpheres(vtkIdType n, Sphere&& sphere, Functor&& f, Prefetch&& prefetch) const;
 #endif
 
@@ -285,7 +318,10 @@ public:
   void MarkSamplesModified(vtkIdType first, vtkIdType last);
   void MarkAllSamplesModified();
   void GetSampleRangesModifiedSince(vtkMTimeType t, vtkIdTypeArray* ranges) const;
-  vtkMTimeType GetStructureMTime() const { return this->StructureTime.GetMTime(); }
+  vtkMTimeType GetStructureMTime() const
+  {
+    return this->StructureTime.GetMTime();
+  }
   ///@}
 
   ///@{
@@ -308,7 +344,10 @@ public:
   /**
    * Not a vtkDataSet: report VTK_DATA_OBJECT.
    */
-  int GetDataObjectType() override { return VTK_DATA_OBJECT; }
+  int GetDataObjectType() override
+  {
+    return VTK_DATA_OBJECT;
+  }
 
   ///@{
   /**
@@ -376,11 +415,11 @@ protected:
   bool SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow& row) const;
   /// Read the row's sample range and prefetch its depths and cell indices.
   void FetchSphereRow(SphereRow& row) const;
-  template <typename Functor>
+  template<typename Functor>
   void ForEachSampleInRow(const SphereRow& row, bool indexed, Functor& f) const;
-  template <typename Functor>
+  template<typename Functor>
   void ForEachSampleInRowScan(const SphereRow& row, Functor& f) const;
-  template <typename Functor>
+  template<typename Functor>
   void ForEachSampleInRowCells(const SphereRow& row, Functor& f) const;
 #endif
 

@@ -17,13 +17,13 @@
 // Besides the wall-clock times (the goal's measure) it prints the CPU time of the process
 // (llvmpipe's rendering threads included), which other load on a shared machine disturbs
 // less.
-#include "vtkOFBReadMesh.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBReadMesh.h"
 #include "vtkOFBSampler.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
@@ -101,8 +101,11 @@ double CPUMilliseconds()
 // surface, after `warmup` untimed renders. Every call starts from the same camera, so
 // every mapper draws the same views; Render() returns after glFinish
 // (WaitForCompletion) so that each frame's work is counted in full.
-FrameTime TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, vtkCamera* start,
-  int frames, int warmup)
+FrameTime TimeFrames(vtkRenderWindow* window,
+  vtkRenderer* renderer,
+  vtkCamera* start,
+  int frames,
+  int warmup)
 {
   vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -169,7 +172,8 @@ struct Options
   std::string Images;
   bool OffScreen = false;
   std::vector<int> Modes = { vtkOFBPolyDataMapper::Nearest,
-    vtkOFBPolyDataMapper::InverseDistance, vtkOFBPolyDataMapper::Mipmapped };
+    vtkOFBPolyDataMapper::InverseDistance,
+    vtkOFBPolyDataMapper::Mipmapped };
 };
 
 // Lookup modes from a comma-separated list; false on an unknown name.
@@ -313,8 +317,7 @@ vtkSmartPointer<vtkOFB> BuildColoredOFB(vtkPolyData* surface, int resolution)
   {
     return nullptr;
   }
-  auto* sampleColors =
-    vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
+  auto* sampleColors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
   for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
   {
     double x[3];
@@ -388,12 +391,11 @@ void PrintHeader(Bench& b, const Options& o, vtkPolyData* surface, vtkOFB* ofb)
   const std::string capabilities =
     b.Window->ReportCapabilities() ? b.Window->ReportCapabilities() : "";
   std::cout << "ofbMapperBenchmark: " << o.Mesh << "\n"
-            << "  triangles " << surface->GetNumberOfPolys() << ", OFB resolution "
-            << o.Resolution << ", samples " << ofb->GetNumberOfSamples()
-            << ", depth complexity " << ofb->GetDepthComplexity() << ", window " << o.Width
-            << "x" << o.Height << (o.OffScreen ? " off screen" : "") << ", " << o.Frames
-            << " frames per mapper and round, "
-            << o.Rounds << " rounds\n";
+            << "  triangles " << surface->GetNumberOfPolys() << ", OFB resolution " << o.Resolution
+            << ", samples " << ofb->GetNumberOfSamples() << ", depth complexity "
+            << ofb->GetDepthComplexity() << ", window " << o.Width << "x" << o.Height
+            << (o.OffScreen ? " off screen" : "") << ", " << o.Frames
+            << " frames per mapper and round, " << o.Rounds << " rounds\n";
   const std::string::size_type at = capabilities.find("OpenGL renderer string:");
   if (at != std::string::npos)
   {

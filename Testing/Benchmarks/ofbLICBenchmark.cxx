@@ -48,7 +48,6 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -202,16 +201,11 @@ std::string MeshPath(const std::string& name)
 /// the point vectors.
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 {
-  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(path);
-  if (!mesh)
+  vtkSmartPointer<vtkPolyData> out = vtkofbtest::ReadMeshFileWithNormals(path);
+  if (!out)
   {
     return nullptr;
   }
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(mesh);
-  normals->SplittingOff();
-  normals->Update();
-  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
   double b[6];
   out->GetBounds(b);
   const double c[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };

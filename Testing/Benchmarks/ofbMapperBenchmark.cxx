@@ -29,7 +29,6 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -70,17 +69,7 @@ void ColorAt(const double x[3], const double bounds[6], unsigned char rgba[4])
 /// The mesh with point normals (both mappers shade with the same normals).
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 {
-  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(path);
-  if (!mesh)
-  {
-    return nullptr;
-  }
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(mesh);
-  normals->SplittingOff();
-  normals->Update();
-  vtkSmartPointer<vtkPolyData> out = normals->GetOutput();
-  return out;
+  return vtkofbtest::ReadMeshFileWithNormals(path);
 }
 
 struct FrameTime

@@ -6,6 +6,7 @@
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
@@ -32,6 +33,21 @@ inline vtkSmartPointer<vtkPolyData> ReadMeshFile(const std::string& path)
     mesh = reader->GetOutput();
   }
   return mesh && mesh->GetNumberOfPolys() > 0 ? mesh : nullptr;
+}
+
+/// As ReadMeshFile, with point normals (not split at sharp edges); null likewise.
+inline vtkSmartPointer<vtkPolyData> ReadMeshFileWithNormals(const std::string& path)
+{
+  vtkSmartPointer<vtkPolyData> mesh = ReadMeshFile(path);
+  if (!mesh)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(mesh);
+  normals->SplittingOff();
+  normals->Update();
+  return normals->GetOutput();
 }
 }
 

@@ -411,10 +411,13 @@ protected:
   };
   /// False if the sphere's box misses grid `a`.
   bool BeginSphereGrid(int a, const double center[3], double radius, SphereGrid& grid) const;
-  /// Row `iv` of the grid, only the cells under the circle's chord; false if it misses.
+  /// Row `iv` of the grid, only the cells under the circle's chord (its cell offsets
+  /// prefetched); false if it misses.
   bool SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow& row) const;
-  /// Read the row's sample range and prefetch its depths and cell indices.
-  void FetchSphereRow(SphereRow& row) const;
+  /// Read the row's sample range, prefetch its depths and cell indices, and hand its
+  /// first samples (up to 512) to the caller's `prefetch(first, last)`.
+  template<typename Prefetch>
+  void FetchSphereRow(SphereRow& row, Prefetch& prefetch) const;
   template<typename Functor>
   void ForEachSampleInRow(const SphereRow& row, bool indexed, Functor& f) const;
   template<typename Functor>

@@ -74,11 +74,19 @@ inline bool vtkOFB::SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow&
     static_cast<vtkIdType>(std::max(static_cast<double>(grid.U0), std::floor(grid.CU - half)));
   row.U1 =
     static_cast<vtkIdType>(std::min(static_cast<double>(grid.U1), std::ceil(grid.CU + half)));
-  return row.U0 <= row.U1;
+  if (row.U0 > row.U1)
+  {
+    return false;
+  }
+  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
+  VTKOFB_PREFETCH(offsets + row.RowBase + row.U0); // read by FetchSphereRow
+  VTKOFB_PREFETCH(offsets + row.RowBase + row.U1 + 1);
+  return true;
 }
 
 //------------------------------------------------------------------------------
-inline void vtkOFB::FetchSphereRow(SphereRow& row) const
+template<typename Prefetch>
+inline void vtkOFB::FetchSphereRow(SphereRow& row, Prefetch& prefetch) const
 {
   const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
   row.First = offsets[row.RowBase + row.U0];
@@ -95,6 +103,7 @@ inline void vtkOFB::FetchSphereRow(SphereRow& row) const
   {
     VTKOFB_PREFETCH(depths + last - 1);
     VTKOFB_PREFETCH(cellOf + last - 1);
+    prefetch(row.First, last);
   }
 }
 
@@ -116,7 +125,6 @@ void vtkOFB::ForEachSampleInSphere(const double center[3],
   {
     return;
   }
-  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
   const bool indexed = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples();
   for (int a = 0; a < 3; ++a)
   {
@@ -133,25 +141,12 @@ void vtkOFB::ForEachSampleInSphere(const double center[3],
     SphereRow ring[Ring];
     bool valid[Ring] = { false, false, false, false };
     auto plan = [&](vtkIdType iv)
-    {
-      SphereRow& row = ring[iv % Ring];
-      valid[iv % Ring] = this->SphereChord(grid, iv, row);
-      if (valid[iv % Ring])
-      {
-        VTKOFB_PREFETCH(offsets + row.RowBase + row.U0);
-        VTKOFB_PREFETCH(offsets + row.RowBase + row.U1 + 1);
-      }
-    };
+    { valid[iv % Ring] = this->SphereChord(grid, iv, ring[iv % Ring]); };
     auto fetch = [&](vtkIdType iv)
     {
-      SphereRow& row = ring[iv % Ring];
       if (valid[iv % Ring])
       {
-        this->FetchSphereRow(row);
-        if (row.First < row.Last)
-        {
-          prefetch(row.First, std::min<vtkIdType>(row.Last, row.First + 512));
-        }
+        this->FetchSphereRow(ring[iv % Ring], prefetch);
       }
     };
     for (vtkIdType iv = grid.V0; iv <= std::min(grid.V1, grid.V0 + PlanAhead - 1); ++iv)
@@ -210,7 +205,6 @@ void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
   constexpr vtkIdType FetchAhead = 1;
   constexpr vtkIdType Ring = PlanAhead + 1;
   Plan plans[Ring];
-  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
   const bool indexed = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples();
   auto plan = [&](vtkIdType k, Plan& p)
   {
@@ -238,8 +232,6 @@ void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
         SphereRow& row = p.Rows[p.NumberOfRows];
         if (this->SphereChord(grid, iv, row))
         {
-          VTKOFB_PREFETCH(offsets + row.RowBase + row.U0);
-          VTKOFB_PREFETCH(offsets + row.RowBase + row.U1 + 1);
           ++p.NumberOfRows;
         }
       }
@@ -249,12 +241,7 @@ void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
   {
     for (int j = 0; j < p.NumberOfRows; ++j)
     {
-      SphereRow& row = p.Rows[j];
-      this->FetchSphereRow(row);
-      if (row.First < row.Last)
-      {
-        prefetch(row.First, std::min<vtkIdType>(row.Last, row.First + 512));
-      }
+      this->FetchSphereRow(p.Rows[j], prefetch);
     }
   };
   for (vtkIdType k = 0; k < std::min<vtkIdType>(n, PlanAhead); ++k)

@@ -48,6 +48,21 @@ TEST(Queries, EmptyOFBAnswersNothing)
   ids->InsertNextId(7);
   ofb->FindSamplesInSphere(x, 1e9, ids);
   EXPECT_EQ(ids->GetNumberOfIds(), 0);
+  int calls = 0;
+  for (vtkIdType n : { vtkIdType(-1), vtkIdType(3) })
+  {
+    ofb->ForEachSampleInSpheres(
+      n,
+      [&](vtkIdType, double c[3], double& r)
+      {
+        c[0] = c[1] = c[2] = 0.0;
+        r = 1e9;
+        ++calls;
+      },
+      [&](vtkIdType, vtkIdType, double) { ++calls; },
+      [&](vtkIdType, vtkIdType) { ++calls; });
+  }
+  EXPECT_EQ(calls, 0) << "an empty OFB or a negative count asks and offers nothing";
   std::ostringstream os;
   ofb->Print(os);
   EXPECT_NE(os.str().find("NumberOfSamples: 0"), std::string::npos);

@@ -44,6 +44,9 @@ inline int TrailingZeros(vtkTypeUInt64 v)
 
 // Waves smaller than this run on the calling thread.
 constexpr size_t MinParallelWave = 8;
+// How many dabs ahead of the query's planning a dab's record is prefetched (the
+// dabs of a wave are visited in spatial order, not in memory order).
+constexpr vtkIdType DabLookAhead = 6;
 
 }
 
@@ -629,6 +632,7 @@ void vtkOFBPaintKernel::PaintColors(const std::vector<vtkOFBDab>& dabs,
 {
   unsigned char* colors = this->Colors->GetPointer(0);
   unsigned char* flags = this->Flags.get();
+  const std::atomic<vtkTypeUInt64>* changed = this->ChangedWords.get();
   const float* normals = this->Normals ? this->Normals->GetPointer(0) : nullptr;
   const float cosMax = static_cast<float>(settings.CosMaxAngle);
   const int mode = Mode >= 0 ? Mode : settings.BlendMode;
@@ -642,6 +646,12 @@ void vtkOFBPaintKernel::PaintColors(const std::vector<vtkOFBDab>& dabs,
     count,
     [&](vtkIdType k, double center[3], double& radius)
     {
+      if (k + DabLookAhead < count)
+      {
+        const char* ahead = reinterpret_cast<const char*>(&dabs[order[k + DabLookAhead]]);
+        VTKOFB_PREFETCH(ahead);
+        VTKOFB_PREFETCH(ahead + sizeof(vtkOFBDab) - 1);
+      }
       const vtkOFBDab& dab = dabs[order[k]];
       center[0] = dab.Center[0];
       center[1] = dab.Center[1];
@@ -685,13 +695,15 @@ void vtkOFBPaintKernel::PaintColors(const std::vector<vtkOFBDab>& dabs,
       this->MarkChangedInWork(i, work);
       std::memcpy(c, result, 4);
     },
-    [colors, flags, recordBit](vtkIdType first, vtkIdType last)
+    [colors, flags, recordBit, changed](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType i = first; i < last; i += 16)
       {
         VTKOFB_PREFETCH_WRITE(colors + 4 * i);
       }
       VTKOFB_PREFETCH_WRITE(colors + 4 * (last - 1));
+      VTKOFB_PREFETCH_WRITE(changed + (first >> 6));
+      VTKOFB_PREFETCH_WRITE(changed + ((last - 1) >> 6));
       if (!recordBit)
       {
         return;

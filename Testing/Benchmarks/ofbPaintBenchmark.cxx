@@ -17,6 +17,7 @@
 // Options: --mesh FILE (default the Stanford bunny), --resolutions 1024,2048,
 // --dabs5 N (default 20000), --dabs25 N (default 2000), --repetitions N (default 3,
 // the median is printed), --no-openvdb, --no-render.
+#include "vtkOFBMemoryFloor.h"
 #include "vtkOFBReadMesh.h"
 
 #include "vtkActor.h"
@@ -446,6 +447,14 @@ void TimeParticles(OFBUnderTest& ofb, const Options& o)
   const int count = 10000;
   vtkSmartPointer<vtkPoints> centres = RandomCentres(ofb.OFB, count, 99u);
   ofb.Painter->GetBrush()->SetRadius(2.5 * ofb.OFB->GetCellSize());
+  const vtkofb_bench::FootprintLines lines =
+    vtkofb_bench::CountFootprintLines(ofb.OFB, centres, 2.5 * ofb.OFB->GetCellSize());
+  std::printf("  per dab: %.1f rows with samples, %.1f samples painted, at least %.0f cache lines "
+              "touched (%.0f MB in all)\n",
+    lines.Rows,
+    lines.Hits,
+    lines.Lines,
+    count * lines.Lines * 64.0 / 1e6);
   for (int threads : { 1, 2 })
   {
     double t = 0.0, cpu = 0.0;
@@ -458,11 +467,22 @@ void TimeParticles(OFBUnderTest& ofb, const Options& o)
           [&]() { ofb.Painter->Dabs(centres); },
           &cpu);
       });
-    std::printf("  10,000 dabs of radius 2.5 cells, %d thread%s: %.2f ms (CPU time %.2f ms)\n",
+    double floor = 0.0;
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads },
+      [&]()
+      {
+        floor = vtkofb_bench::RandomLineFloor(static_cast<size_t>(count * lines.Lines),
+          size_t(1024) * ofb.OFB->GetActualMemorySize(),
+          std::max(5, o.Repetitions));
+      });
+    std::printf("  10,000 dabs of radius 2.5 cells, %d thread%s: %.2f ms (CPU time %.2f ms); "
+                "touching as many random cache lines alone: %.2f ms (painter %.2fx that floor)\n",
       threads,
       threads > 1 ? "s" : "",
       1e3 * t,
-      1e3 * cpu);
+      1e3 * cpu,
+      1e3 * floor,
+      t / floor);
   }
 }
 

@@ -17,6 +17,7 @@
 // `ofbParticleBenchmark [--steps N] [--seeds N] [--part 1|2|3] [--rounds N] [--no-peer]
 // [--threads 1|2]` (--no-peer: ours alone, for profiling; --threads: parts 2 and 3 with
 // that number of threads only).
+#include "vtkOFBMemoryFloor.h"
 #include "vtkOFBReadMesh.h"
 
 #include "vtkCellArray.h"
@@ -318,6 +319,14 @@ PaintResult Paint(vtkPolyData* horse, int threads, int rounds)
     outputs.push_back(1e3 * advector->GetLastOutputTime());
     rest.push_back(step.back() - advection.back() - painting.back() - outputs.back());
   }
+  // The floor: touching as many random cache lines as the footprints do.
+  const vtkofb_bench::FootprintLines lines = vtkofb_bench::CountFootprintLines(
+    ofb, advector->GetParticles()->GetPoints(), 2.5 * ofb->GetCellSize());
+  const double floor = 1e3 *
+    vtkofb_bench::RandomLineFloor(
+      static_cast<size_t>(lines.Lines * advector->GetParticles()->GetNumberOfPoints()),
+      size_t(1024) * ofb->GetActualMemorySize(),
+      rounds);
   PaintResult result;
   result.Step = Median(step);
   result.Advection = Median(advection);
@@ -327,7 +336,11 @@ PaintResult Paint(vtkPolyData* horse, int threads, int rounds)
             << result.Step << " ms: advection " << result.Advection << ", painting "
             << result.Painting << ", outputs " << result.Outputs << ", the rest (pipeline) "
             << Median(rest) << " ms (medians of " << rounds << " steps), "
-            << ofb->GetNumberOfSamples() << " samples\n";
+            << ofb->GetNumberOfSamples() << " samples\n"
+            << "     footprints: " << lines.Rows << " rows with samples, " << lines.Hits
+            << " samples painted and at least " << lines.Lines
+            << " cache lines touched per particle; touching as many random cache lines alone "
+            << floor << " ms (painting " << result.Painting / floor << "x that floor)\n";
   return result;
 }
 }

@@ -411,12 +411,17 @@ protected:
     double R2;
     float DLow;
     int UAxis;
+    // The OFB's arrays, taken once per sphere and grid (not per row).
+    const vtkTypeUInt32* Offsets;
+    const float* Depths;
+    const vtkTypeUInt32* CellOf; // null without a cell index
   };
   /// The cells of grid `a` under a sphere's bounding box, and what its rows share.
   struct SphereGrid
   {
     vtkIdType U0, U1, V0, V1, NU;
     double CU; // the centre's u in cell units
+    double InverseCellSize;
     double CV; // the centre's v, world units
     int VAxis;
     SphereRow Base;

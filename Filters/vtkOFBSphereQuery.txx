@@ -39,6 +39,7 @@ inline bool vtkOFB::BeginSphereGrid(int a,
   grid.V0 = static_cast<vtkIdType>(std::ceil(std::max(lv, 0.0)));
   grid.V1 = static_cast<vtkIdType>(std::floor(std::min(hv, nv - 1.0)));
   grid.CU = (center[ua] - this->Origin[ua]) / s - 0.5; // centre in cell units
+  grid.InverseCellSize = 1.0 / s;
   grid.CV = center[va];
   grid.VAxis = va;
   grid.NU = nu;
@@ -51,6 +52,11 @@ inline bool vtkOFB::BeginSphereGrid(int a,
   base.UCentre = center[ua];
   base.UAxis = ua;
   base.First = base.Last = 0;
+  base.Offsets = this->CellOffsets->GetPointer(0);
+  base.Depths = this->Depths->GetPointer(0);
+  base.CellOf = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples()
+    ? this->CellIndex->GetPointer(0)
+    : nullptr;
   return true;
 }
 
@@ -61,15 +67,15 @@ inline bool vtkOFB::SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow&
   // arithmetic needs (the distance test decides), clamped before they become
   // integers as above. False if the row misses the sphere.
   const double s = this->CellSize;
-  row = grid.Base;
   const double dv = this->Origin[grid.VAxis] + (iv + 0.5) * s - grid.CV;
-  row.DV2 = dv * dv;
-  if (row.DV2 > row.R2)
+  if (dv * dv > grid.Base.R2)
   {
     return false;
   }
+  row = grid.Base;
+  row.DV2 = dv * dv;
   row.RowBase = grid.Base.RowBase + iv * grid.NU;
-  const double half = std::sqrt(row.R2 - row.DV2) / s;
+  const double half = std::sqrt(row.R2 - row.DV2) * grid.InverseCellSize;
   row.U0 =
     static_cast<vtkIdType>(std::max(static_cast<double>(grid.U0), std::floor(grid.CU - half)));
   row.U1 =
@@ -78,9 +84,8 @@ inline bool vtkOFB::SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow&
   {
     return false;
   }
-  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
-  VTKOFB_PREFETCH(offsets + row.RowBase + row.U0); // read by FetchSphereRow
-  VTKOFB_PREFETCH(offsets + row.RowBase + row.U1 + 1);
+  VTKOFB_PREFETCH(row.Offsets + row.RowBase + row.U0); // read by FetchSphereRow
+  VTKOFB_PREFETCH(row.Offsets + row.RowBase + row.U1 + 1);
   return true;
 }
 
@@ -88,21 +93,22 @@ inline bool vtkOFB::SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow&
 template<typename Prefetch>
 inline void vtkOFB::FetchSphereRow(SphereRow& row, Prefetch& prefetch) const
 {
-  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
-  row.First = offsets[row.RowBase + row.U0];
-  row.Last = offsets[row.RowBase + row.U1 + 1];
+  row.First = row.Offsets[row.RowBase + row.U0];
+  row.Last = row.Offsets[row.RowBase + row.U1 + 1];
   const vtkIdType last = std::min<vtkIdType>(row.Last, row.First + 512);
-  const float* depths = this->Depths->GetPointer(0);
-  const vtkTypeUInt32* cellOf = this->CellIndex->GetPointer(0);
+  const float* depths = row.Depths;
+  // Without a cell index (never scanned then) the depths are prefetched twice.
+  const void* cellOf = row.CellOf ? static_cast<const void*>(row.CellOf) : depths;
+  const vtkTypeUInt32* cellIndex = static_cast<const vtkTypeUInt32*>(cellOf);
   for (vtkIdType i = row.First; i < last; i += 16)
   {
     VTKOFB_PREFETCH(depths + i);
-    VTKOFB_PREFETCH(cellOf + i);
+    VTKOFB_PREFETCH(cellIndex + i);
   }
   if (row.First < last)
   {
     VTKOFB_PREFETCH(depths + last - 1);
-    VTKOFB_PREFETCH(cellOf + last - 1);
+    VTKOFB_PREFETCH(cellIndex + last - 1);
     prefetch(row.First, last);
   }
 }
@@ -299,8 +305,8 @@ void vtkOFB::ForEachSampleInRowScan(const SphereRow& row, Functor& f) const
   // Every sample of the row's cells, tested without a branch into a small batch of
   // hits, then handed to `f` in order. The squared distance is computed as in
   // ForEachSampleInRowCells, to the bit.
-  const vtkTypeUInt32* cellOf = this->CellIndex->GetPointer(0);
-  const float* depths = this->Depths->GetPointer(0);
+  const vtkTypeUInt32* cellOf = row.CellOf;
+  const float* depths = row.Depths;
   const double s = this->CellSize;
   const double ou = this->Origin[row.UAxis];
   constexpr int Batch = 64;
@@ -336,8 +342,8 @@ void vtkOFB::ForEachSampleInRowCells(const SphereRow& row, Functor& f) const
 {
   // Cell by cell: a cell's first sample at depth >= d - r by a linear scan over the
   // few samples of a typical cell, a binary search over many.
-  const vtkTypeUInt32* offsets = this->CellOffsets->GetPointer(0);
-  const float* depths = this->Depths->GetPointer(0);
+  const vtkTypeUInt32* offsets = row.Offsets;
+  const float* depths = row.Depths;
   const double s = this->CellSize;
   const double ou = this->Origin[row.UAxis];
   for (vtkIdType iu = row.U0; iu <= row.U1; ++iu)

@@ -42,6 +42,25 @@ inline int TrailingZeros(vtkTypeUInt64 v)
 #endif
 }
 
+// Smallest b with 2^b >= v, for v >= 1.
+inline int CeilLog2(vtkTypeUInt64 v)
+{
+  if (v <= 1)
+  {
+    return 0;
+  }
+#if defined(__GNUC__) || defined(__clang__)
+  return 64 - __builtin_clzll(v - 1);
+#else
+  int b = 0;
+  for (--v; v; v >>= 1)
+  {
+    ++b;
+  }
+  return b;
+#endif
+}
+
 // Waves smaller than this run on the calling thread.
 constexpr size_t MinParallelWave = 8;
 // How many dabs ahead of the query's planning a dab's record is prefetched (the
@@ -82,6 +101,8 @@ struct vtkOFBPaintKernel::Scratch
 {
   vtkOFBPaintWaves Waves;
   std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>> ChangedParts;
+  std::vector<vtkIdType> ChangedCounts;
+  std::vector<vtkIdType> GapHistograms; // 64 buckets a chunk: gaps by CeilLog2
   vtkSMPThreadLocal<LocalRecords> Records;
 };
 
@@ -374,35 +395,125 @@ vtkIdType vtkOFBPaintKernel::CollectChangedWords(vtkIdType firstWord,
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges)
+vtkIdType vtkOFBPaintKernel::CollectChanged(
+  std::vector<std::pair<vtkIdType, vtkIdType>>& ranges, size_t maxRanges)
 {
-  // Chunks of blocks in parallel, their ranges joined in order (a run that spans two
-  // chunks is joined too), so the result does not depend on the number of threads.
+  // Chunks of words in parallel: each chunk's runs of changed samples and a histogram
+  // of the gaps between them. Joining runs across their gaps, smallest first by a
+  // threshold doubled from 64 samples until at most maxRanges remain, gives the same
+  // ranges as joining across every gap up to the final threshold at once: the
+  // histogram picks that threshold, and the chunks join their runs in parallel.
+  // Chunks are joined in order, so the result does not depend on the number of
+  // threads.
   ranges.clear();
   const vtkIdType words = this->NumberOfChangedWords;
   constexpr vtkIdType ChunkWords = 4096;
+  constexpr int Buckets = 64;
   const vtkIdType chunks = (words + ChunkWords - 1) / ChunkWords;
-  std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>>& parts = this->Work->ChangedParts;
+  Scratch& work = *this->Work;
+  std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>>& parts = work.ChangedParts;
   parts.resize(static_cast<size_t>(chunks));
-  std::vector<vtkIdType> counts(static_cast<size_t>(chunks), 0);
+  work.ChangedCounts.assign(static_cast<size_t>(chunks), 0);
+  work.GapHistograms.assign(static_cast<size_t>(chunks * Buckets), 0);
   vtkSMPTools::For(0,
     chunks,
     [&](vtkIdType first, vtkIdType last)
     {
       for (vtkIdType c = first; c < last; ++c)
       {
-        parts[c].clear();
-        counts[c] = this->CollectChangedWords(
-          c * ChunkWords, std::min(words, (c + 1) * ChunkWords), parts[c]);
+        std::vector<std::pair<vtkIdType, vtkIdType>>& runs = parts[c];
+        runs.clear();
+        work.ChangedCounts[c] = this->CollectChangedWords(
+          c * ChunkWords, std::min(words, (c + 1) * ChunkWords), runs);
+        vtkIdType* histogram = work.GapHistograms.data() + c * Buckets;
+        for (size_t i = 1; i < runs.size(); ++i)
+        {
+          ++histogram[CeilLog2(runs[i].first - runs[i - 1].second)];
+        }
       }
     });
+  // The gaps between chunks (a run that spans two chunks has none), and the totals.
+  vtkIdType histogram[Buckets] = {};
   vtkIdType count = 0;
+  vtkIdType runs = 0;
+  vtkIdType previousEnd = -1;
   for (vtkIdType c = 0; c < chunks; ++c)
   {
-    count += counts[c];
+    count += work.ChangedCounts[c];
+    for (int b = 0; b < Buckets; ++b)
+    {
+      histogram[b] += work.GapHistograms[c * Buckets + b];
+    }
+    if (parts[c].empty())
+    {
+      continue;
+    }
+    runs += static_cast<vtkIdType>(parts[c].size());
+    if (previousEnd >= 0)
+    {
+      const vtkIdType gap = parts[c].front().first - previousEnd;
+      if (gap > 0)
+      {
+        ++histogram[CeilLog2(gap)];
+      }
+      else
+      {
+        --runs; // joined with the previous chunk's last run
+      }
+    }
+    previousEnd = parts[c].back().second;
+  }
+  // The threshold: gaps of at most `join` samples are joined (0: none).
+  vtkIdType join = 0;
+  if (maxRanges > 0 && runs > static_cast<vtkIdType>(maxRanges))
+  {
+    int log2Join = 6;
+    auto rangesAfter = [&histogram](int log2Gap)
+    {
+      vtkIdType wider = 0; // gaps > 2^log2Gap
+      for (int b = log2Gap + 1; b < Buckets; ++b)
+      {
+        wider += histogram[b];
+      }
+      return wider + 1;
+    };
+    while (log2Join < Buckets - 1 && rangesAfter(log2Join) > static_cast<vtkIdType>(maxRanges))
+    {
+      ++log2Join;
+    }
+    join = vtkIdType(1) << log2Join;
+  }
+  if (join > 0)
+  {
+    // In place (the chunks' vectors keep their memory from call to call).
+    vtkSMPTools::For(0,
+      chunks,
+      [&](vtkIdType first, vtkIdType last)
+      {
+        for (vtkIdType c = first; c < last; ++c)
+        {
+          std::vector<std::pair<vtkIdType, vtkIdType>>& runs = parts[c];
+          size_t out = 0;
+          for (size_t i = 1; i < runs.size(); ++i)
+          {
+            if (runs[i].first - runs[out].second <= join)
+            {
+              runs[out].second = runs[i].second;
+            }
+            else
+            {
+              runs[++out] = runs[i];
+            }
+          }
+          runs.resize(runs.empty() ? 0 : out + 1);
+        }
+      });
+  }
+  for (vtkIdType c = 0; c < chunks; ++c)
+  {
     for (const auto& r : parts[c])
     {
-      if (!ranges.empty() && ranges.back().second == r.first)
+      if (!ranges.empty() && r.first - ranges.back().second <= join)
       {
         ranges.back().second = r.second;
       }

@@ -109,11 +109,14 @@ public:
     const std::function<void(double)>& progress);
 
   /**
-   * The sorted, merged [first, last) ranges of the samples changed since the last
-   * call of this function; clears their changed bits. Returns the number
-   * of samples in them.
+   * The sorted [first, last) ranges of the samples changed since the last call of
+   * this function; clears their changed bits. Returns the number of samples changed.
+   * Runs of changed samples are joined across the gaps between them, the smallest
+   * first (gaps of up to 64 samples, then 128, ...), until at most `maxRanges`
+   * remain; 0 keeps every run.
    */
-  vtkIdType CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges);
+  vtkIdType CollectChanged(
+    std::vector<std::pair<vtkIdType, vtkIdType>>& ranges, size_t maxRanges = 0);
 
   /// Mark `ids` changed in this call (undo and redo).
   void MarkChanged(vtkTypeUInt32 id);

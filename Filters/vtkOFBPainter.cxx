@@ -270,28 +270,11 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
 vtkIdType vtkOFBPainter::Finish()
 {
   Internals& impl = *this->Impl;
-  const vtkIdType count = impl.Kernel.CollectChanged(impl.Ranges);
   // A large dab changes hundreds of short runs (rows of cells, interrupted by
-  // samples at other depths). vtkOFB keeps its newest 192 marks exact: join runs
-  // across the smallest gaps first (doubling the gap) until at most 128 remain,
-  // so that one call's marks stay exact and the mapper re-sends few extra samples.
-  auto& ranges = impl.Ranges;
-  for (vtkIdType gap = 64; ranges.size() > 128; gap *= 2)
-  {
-    size_t out = 0;
-    for (size_t i = 1; i < ranges.size(); ++i)
-    {
-      if (ranges[i].first - ranges[out].second <= gap)
-      {
-        ranges[out].second = ranges[i].second;
-      }
-      else
-      {
-        ranges[++out] = ranges[i];
-      }
-    }
-    ranges.resize(out + 1);
-  }
+  // samples at other depths). vtkOFB keeps its newest 192 marks exact: runs are
+  // joined across the smallest gaps first until at most 128 remain, so that one
+  // call's marks stay exact and the mapper re-sends few extra samples.
+  const vtkIdType count = impl.Kernel.CollectChanged(impl.Ranges, 128);
   for (const auto& r : impl.Ranges)
   {
     impl.OFB->MarkSamplesModified(r.first, r.second);

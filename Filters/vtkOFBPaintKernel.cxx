@@ -395,8 +395,8 @@ vtkIdType vtkOFBPaintKernel::CollectChangedWords(vtkIdType firstWord,
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBPaintKernel::CollectChanged(
-  std::vector<std::pair<vtkIdType, vtkIdType>>& ranges, size_t maxRanges)
+vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges,
+  size_t maxRanges)
 {
   // Chunks of words in parallel: each chunk's runs of changed samples and a histogram
   // of the gaps between them. Joining runs across their gaps, smallest first by a
@@ -423,8 +423,8 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(
       {
         std::vector<std::pair<vtkIdType, vtkIdType>>& runs = parts[c];
         runs.clear();
-        work.ChangedCounts[c] = this->CollectChangedWords(
-          c * ChunkWords, std::min(words, (c + 1) * ChunkWords), runs);
+        work.ChangedCounts[c] =
+          this->CollectChangedWords(c * ChunkWords, std::min(words, (c + 1) * ChunkWords), runs);
         vtkIdType* histogram = work.GapHistograms.data() + c * Buckets;
         for (size_t i = 1; i < runs.size(); ++i)
         {

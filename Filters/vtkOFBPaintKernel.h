@@ -115,8 +115,8 @@ public:
    * first (gaps of up to 64 samples, then 128, ...), until at most `maxRanges`
    * remain; 0 keeps every run.
    */
-  vtkIdType CollectChanged(
-    std::vector<std::pair<vtkIdType, vtkIdType>>& ranges, size_t maxRanges = 0);
+  vtkIdType CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges,
+    size_t maxRanges = 0);
 
   /// Mark `ids` changed in this call (undo and redo).
   void MarkChanged(vtkTypeUInt32 id);

@@ -83,7 +83,8 @@ inline double RandomLineFloor(size_t lines, size_t bytes, int repetitions)
 {
   const size_t numberOfLines = std::max<size_t>(bytes / 64, 1);
   // Not value-initialized: the pages are first touched after the madvise.
-  std::unique_ptr<unsigned char[]> buffer(new unsigned char[numberOfLines * 64 + (size_t(1) << 21)]);
+  std::unique_ptr<unsigned char[]> buffer(
+    new unsigned char[numberOfLines * 64 + (size_t(1) << 21)]);
   unsigned char* base = reinterpret_cast<unsigned char*>(
     (reinterpret_cast<uintptr_t>(buffer.get()) + (uintptr_t(1) << 21) - 1) &
     ~((uintptr_t(1) << 21) - 1));

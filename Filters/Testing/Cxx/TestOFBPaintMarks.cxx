@@ -29,8 +29,10 @@ namespace
 using Ranges = std::vector<std::pair<vtkIdType, vtkIdType>>;
 
 // The runs of samples whose colour differs, joined as the painter documents it.
-Ranges ExpectedMarks(
-  const unsigned char* before, const unsigned char* after, vtkIdType n, size_t& numberOfRuns)
+Ranges ExpectedMarks(const unsigned char* before,
+  const unsigned char* after,
+  vtkIdType n,
+  size_t& numberOfRuns)
 {
   Ranges runs;
   for (vtkIdType i = 0; i < n; ++i)

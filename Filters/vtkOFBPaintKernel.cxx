@@ -90,6 +90,7 @@ struct vtkOFBPaintKernel::DabWork
   double ProgressSpan = 0.0;
   vtkIdType ChangedWord = -1; // the word of the changed bits gathered in ChangedBits
   vtkTypeUInt64 ChangedBits = 0;
+  vtkTypeUInt64 ChangedChunks = 0; // ChunkBit of the words set, published by PaintDabs
   vtkIdType InitialColorBlockId = -1;
   const unsigned char* InitialColors = nullptr;
   vtkIdType InitialNormalBlockId = -1;
@@ -101,6 +102,7 @@ struct vtkOFBPaintKernel::Scratch
 {
   vtkOFBPaintWaves Waves;
   std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>> ChangedParts;
+  std::vector<vtkIdType> ChangedChunkList; // the chunks of changed words of a call
   std::vector<vtkIdType> ChangedCounts;
   std::vector<vtkIdType> GapHistograms; // 64 buckets a chunk: gaps by CeilLog2
   vtkSMPThreadLocal<LocalRecords> Records;
@@ -129,12 +131,14 @@ void vtkOFBPaintKernel::Reset(vtkOFB* ofb, vtkUnsignedCharArray* colors, vtkFloa
     vtkofb::AdviseHugePages(this->Flags.get(), static_cast<size_t>(n)); // before the memset
     this->NumberOfChangedWords = (n >> 6) + 1;
     this->ChangedWords.reset(new std::atomic<vtkTypeUInt64>[this->NumberOfChangedWords]);
+    this->NumberOfChangedChunks = (this->NumberOfChangedWords >> ChangedChunkShift) + 1;
   }
   std::memset(this->Flags.get(), 0, static_cast<size_t>(std::max<vtkIdType>(n, 1)));
   for (vtkIdType w = 0; w < this->NumberOfChangedWords; ++w)
   {
     this->ChangedWords[w].store(0, std::memory_order_relaxed);
   }
+  this->ChangedChunks.store(0, std::memory_order_relaxed);
   this->ResetInitialValues();
 }
 
@@ -323,6 +327,7 @@ inline void vtkOFBPaintKernel::FlushChanged(DabWork& work)
   if (work.ChangedBits)
   {
     this->ChangedWords[work.ChangedWord].fetch_or(work.ChangedBits, std::memory_order_relaxed);
+    work.ChangedChunks |= ChunkBit(work.ChangedWord);
     work.ChangedBits = 0;
   }
 }
@@ -341,6 +346,7 @@ void vtkOFBPaintKernel::ReportProgress(DabWork& work) const
 void vtkOFBPaintKernel::MarkChanged(vtkTypeUInt32 id)
 {
   this->ChangedWords[id >> 6].fetch_or(vtkTypeUInt64(1) << (id & 63), std::memory_order_relaxed);
+  this->ChangedChunks.fetch_or(ChunkBit(id >> 6), std::memory_order_relaxed);
 }
 
 //------------------------------------------------------------------------------
@@ -405,12 +411,24 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtk
   // histogram picks that threshold, and the chunks join their runs in parallel.
   // Chunks are joined in order, so the result does not depend on the number of
   // threads.
+  // Only the chunks flagged as changed are read (a dab or two of a stroke changes a
+  // few of them; the whole bitmap is a megabyte at 8 M samples).
   ranges.clear();
   const vtkIdType words = this->NumberOfChangedWords;
-  constexpr vtkIdType ChunkWords = 4096;
+  constexpr vtkIdType ChunkWords = vtkIdType(1) << ChangedChunkShift;
   constexpr int Buckets = 64;
-  const vtkIdType chunks = (words + ChunkWords - 1) / ChunkWords;
   Scratch& work = *this->Work;
+  std::vector<vtkIdType>& changedChunks = work.ChangedChunkList;
+  changedChunks.clear();
+  const vtkTypeUInt64 chunkBits = this->ChangedChunks.exchange(0, std::memory_order_relaxed);
+  for (vtkIdType c = 0; c < this->NumberOfChangedChunks; ++c)
+  {
+    if (chunkBits & ChunkBit(c << ChangedChunkShift))
+    {
+      changedChunks.push_back(c);
+    }
+  }
+  const auto chunks = static_cast<vtkIdType>(changedChunks.size());
   std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>>& parts = work.ChangedParts;
   parts.resize(static_cast<size_t>(chunks));
   work.ChangedCounts.assign(static_cast<size_t>(chunks), 0);
@@ -419,13 +437,14 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtk
     chunks,
     [&](vtkIdType first, vtkIdType last)
     {
-      for (vtkIdType c = first; c < last; ++c)
+      for (vtkIdType k = first; k < last; ++k)
       {
-        std::vector<std::pair<vtkIdType, vtkIdType>>& runs = parts[c];
+        const vtkIdType c = changedChunks[k];
+        std::vector<std::pair<vtkIdType, vtkIdType>>& runs = parts[k];
         runs.clear();
-        work.ChangedCounts[c] =
+        work.ChangedCounts[k] =
           this->CollectChangedWords(c * ChunkWords, std::min(words, (c + 1) * ChunkWords), runs);
-        vtkIdType* histogram = work.GapHistograms.data() + c * Buckets;
+        vtkIdType* histogram = work.GapHistograms.data() + k * Buckets;
         for (size_t i = 1; i < runs.size(); ++i)
         {
           ++histogram[CeilLog2(runs[i].first - runs[i - 1].second)];
@@ -676,6 +695,8 @@ void vtkOFBPaintKernel::PaintDabs(const std::vector<vtkOFBDab>& dabs,
     this->PaintColorsWith<-1>(dabs, order, count, settings, work);
   }
   this->FlushChanged(work); // before the wave ends
+  this->ChangedChunks.fetch_or(work.ChangedChunks, std::memory_order_relaxed);
+  work.ChangedChunks = 0;
 }
 
 //------------------------------------------------------------------------------

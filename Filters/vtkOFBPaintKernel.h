@@ -201,6 +201,16 @@ private:
   std::unique_ptr<unsigned char[]> Flags;                     // one thread per sample within a wave
   std::unique_ptr<std::atomic<vtkTypeUInt64>[]> ChangedWords; // bit i & 63 of word i >> 6
   vtkIdType NumberOfChangedWords = 0;
+  // Chunks of 4096 words (262,144 samples); bit c & 63 of ChangedChunks is set when a
+  // word of chunk c may be set (so that a call that changes a few samples reads a few
+  // chunks, not the whole bitmap).
+  static constexpr int ChangedChunkShift = 12;
+  static vtkTypeUInt64 ChunkBit(vtkIdType word)
+  {
+    return vtkTypeUInt64(1) << ((word >> ChangedChunkShift) & 63);
+  }
+  std::atomic<vtkTypeUInt64> ChangedChunks{ 0 };
+  vtkIdType NumberOfChangedChunks = 0;
   vtkIdType NumberOfInitialBlocks = 0;
   std::unique_ptr<std::atomic<unsigned char>[]> InitialColorState; // 0 none, 1 copying, 2 done
   std::unique_ptr<std::atomic<unsigned char>[]> InitialNormalState;

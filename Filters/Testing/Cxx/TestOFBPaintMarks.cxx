@@ -131,3 +131,42 @@ TEST(PaintMarks, ManyRunsAreJoinedSmallestGapsFirst)
     EXPECT_EQ(differing, changed);
   }
 }
+
+//------------------------------------------------------------------------------
+TEST(PaintMarks, SmallCallsOnALargeOFBMarkExactly)
+{
+  // Over half a million samples: the changed-sample bitmap has three chunks, of which a
+  // small call reads only those it changed.
+  vtkSmartPointer<vtkOFB> ofb = Build(MakeSphere(1.0, 96), 512);
+  ASSERT_GT(ofb->GetNumberOfSamples(), 2 * 262144);
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(ofb);
+  painter->GetBrush()->SetRadius(3.0 * ofb->GetCellSize());
+  painter->Dab(0, 0, 1); // creates "Colors"
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
+  ASSERT_NE(colors, nullptr);
+  const double centres[][3] = {
+    { 1, 0, 0 }, { 0, -1, 0 }, { 0, 0, -1 }, { 0.6, 0.8, 0 }, { -0.6, 0, 0.8 }
+  };
+  int call = 0;
+  for (const auto& c : centres)
+  {
+    for (bool undo : { false, true })
+    {
+      SCOPED_TRACE(call);
+      ++call;
+      painter->GetBrush()->SetColor(0.1 * call, 0.5, 0.9);
+      const std::vector<unsigned char> before(
+        colors->GetPointer(0), colors->GetPointer(0) + 4 * colors->GetNumberOfTuples());
+      vtkTimeStamp t;
+      t.Modified();
+      const vtkIdType changed = undo ? painter->Undo() : painter->Dab(c);
+      ASSERT_GT(changed, 0);
+      size_t runs = 0;
+      const Ranges expected =
+        ExpectedMarks(before.data(), colors->GetPointer(0), ofb->GetNumberOfSamples(), runs);
+      ASSERT_GT(runs, 0u);
+      EXPECT_EQ(Marks(ofb, t.GetMTime()), expected);
+    }
+  }
+}

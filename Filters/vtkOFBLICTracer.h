@@ -188,14 +188,22 @@ public:
    * Up to `steps` steps each way from sample i: the samples met forward to ahead[] and
    * backward to back[], their numbers returned in nAhead and nBack. The two directions
    * advance together: two independent chains of dependent loads, which the processor
-   * overlaps.
+   * overlaps. A direction also stops once its last `idle` samples all failed `useful`
+   * (fast LIC: the samples a seed streamline can still give a window to); `ended` is
+   * true for a direction that stopped by itself (masked sample, border, fold), not for
+   * one that ran out of steps or went idle.
    */
+  template<typename Useful>
   void TraceBoth(vtkIdType i,
     int steps,
+    int idle,
+    Useful&& useful,
     vtkTypeInt32* ahead,
     int& nAhead,
+    bool& aheadEnded,
     vtkTypeInt32* back,
-    int& nBack) const
+    int& nBack,
+    bool& backEnded) const
   {
     glm::dvec3 pf = Vec(this->Samples[i].Position);
     glm::dvec3 pb = pf;
@@ -203,6 +211,10 @@ public:
     vtkIdType jb = i;
     nAhead = 0;
     nBack = 0;
+    aheadEnded = false;
+    backEnded = false;
+    int idleAhead = 0;
+    int idleBack = 0;
     bool forward = steps > 0;
     bool backward = steps > 0;
     while (forward || backward)
@@ -210,21 +222,25 @@ public:
       if (forward)
       {
         jf = this->Advance(pf, jf, 1);
-        forward = jf >= 0;
+        aheadEnded = jf < 0;
+        forward = !aheadEnded;
         if (forward)
         {
           ahead[nAhead++] = static_cast<vtkTypeInt32>(jf);
-          forward = nAhead < steps;
+          idleAhead = useful(jf) ? 0 : idleAhead + 1;
+          forward = nAhead < steps && idleAhead < idle;
         }
       }
       if (backward)
       {
         jb = this->Advance(pb, jb, -1);
-        backward = jb >= 0;
+        backEnded = jb < 0;
+        backward = !backEnded;
         if (backward)
         {
           back[nBack++] = static_cast<vtkTypeInt32>(jb);
-          backward = nBack < steps;
+          idleBack = useful(jb) ? 0 : idleBack + 1;
+          backward = nBack < steps && idleBack < idle;
         }
       }
     }
@@ -235,7 +251,9 @@ public:
   {
     const int n = this->NumberOfSteps;
     int ahead, back;
-    this->TraceBoth(i, n, line, ahead, line + n, back);
+    bool aheadEnded, backEnded;
+    this->TraceBoth(
+      i, n, n + 1, [](vtkIdType) { return true; }, line, ahead, aheadEnded, line + n, back, backEnded);
     std::fill(line + ahead, line + n, -1);
     std::fill(line + n + back, line + 2 * n, -1);
   }
@@ -263,6 +281,27 @@ public:
       }
     }
     return sum > 1e-9 ? static_cast<float>(acc / sum) : input[i];
+  }
+
+  /**
+   * Eq. 4 as Gather, along a streamline kept in a run of fast LIC: at[0] is the sample,
+   * at[s] and at[-s] its steps forward and backward, -1 where the streamline stops.
+   */
+  static float GatherRun(const vtkTypeInt32* at, int n, const double* weights, const float* input)
+  {
+    double acc = weights[n] * input[at[0]];
+    double sum = weights[n];
+    for (int s = 1; s <= n && at[s] >= 0; ++s)
+    {
+      acc += weights[n + s] * input[at[s]];
+      sum += weights[n + s];
+    }
+    for (int s = 1; s <= n && at[-s] >= 0; ++s)
+    {
+      acc += weights[n - s] * input[at[-s]];
+      sum += weights[n - s];
+    }
+    return sum > 1e-9 ? static_cast<float>(acc / sum) : input[at[0]];
   }
 
   /**

@@ -185,6 +185,76 @@ public:
   }
 
   /**
+   * vtkOFB::FindClosestSample(q, SearchRadius) for the few cells of a radius of
+   * sqrt(3) cells: the same candidates, distances computed as vtkOFB computes them and
+   * the same tie-break (the lowest id), so the same sample, without the general sphere
+   * query's planning and prefetching of rows.
+   */
+  vtkIdType FindClosest(const glm::dvec3& q) const
+  {
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+    {
+      return -1;
+    }
+    const double s = this->CellSize;
+    const double r = this->SearchRadius;
+    const double r2 = r * r;
+    vtkIdType best = -1;
+    double bestDistance2 = r2;
+    for (int a = 0; a < 3; ++a)
+    {
+      const int ua = (a + 1) % 3;
+      const int va = (a + 2) % 3;
+      const vtkIdType nu = this->Dimensions[ua];
+      const vtkIdType nv = this->Dimensions[va];
+      const double lu = (q[ua] - r - this->Origin[ua]) / s - 0.5;
+      const double hu = (q[ua] + r - this->Origin[ua]) / s - 0.5;
+      const double lv = (q[va] - r - this->Origin[va]) / s - 0.5;
+      const double hv = (q[va] + r - this->Origin[va]) / s - 0.5;
+      if (!(hu >= 0.0 && hv >= 0.0 && lu <= nu - 1 && lv <= nv - 1))
+      {
+        continue;
+      }
+      const vtkIdType u0 = static_cast<vtkIdType>(std::ceil(std::max(lu, 0.0)));
+      const vtkIdType u1 = static_cast<vtkIdType>(std::floor(std::min(hu, nu - 1.0)));
+      const vtkIdType v0 = static_cast<vtkIdType>(std::ceil(std::max(lv, 0.0)));
+      const vtkIdType v1 = static_cast<vtkIdType>(std::floor(std::min(hv, nv - 1.0)));
+      const double d = q[a] - this->Origin[a];
+      for (vtkIdType v = v0; v <= v1; ++v)
+      {
+        const double dv = this->Origin[va] + (v + 0.5) * s - q[va];
+        const double dv2 = dv * dv;
+        if (dv2 > r2)
+        {
+          continue;
+        }
+        const vtkIdType row = this->CellBase[a] + v * nu;
+        for (vtkIdType u = u0; u <= u1; ++u)
+        {
+          const double du = this->Origin[ua] + (u + 0.5) * s - q[ua];
+          const double duv2 = du * du + dv2;
+          if (duv2 > r2)
+          {
+            continue;
+          }
+          for (vtkIdType i = this->Offsets[row + u], end = this->Offsets[row + u + 1]; i < end;
+               ++i)
+          {
+            const double dd = this->Depths[i] - d;
+            const double distance2 = duv2 + dd * dd;
+            if (distance2 < bestDistance2 || (distance2 == bestDistance2 && best < 0))
+            {
+              bestDistance2 = distance2;
+              best = i;
+            }
+          }
+        }
+      }
+    }
+    return best;
+  }
+
+  /**
    * Up to `steps` steps each way from sample i: the samples met forward to ahead[] and
    * backward to back[], their numbers returned in nAhead and nBack. The two directions
    * advance together: two independent chains of dependent loads, which the processor
@@ -325,7 +395,7 @@ public:
     }
     if (k < 0)
     {
-      k = this->OFB->FindClosestSample(&q.x, this->SearchRadius);
+      k = this->FindClosest(q);
     }
     if (k < 0 || this->Samples[k].Masked())
     {

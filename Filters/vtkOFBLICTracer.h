@@ -12,6 +12,14 @@
 #include <cmath>
 #include <vector>
 
+// The step's functions inlined into the tracing loop (a call per step, through the
+// shared library's PLT, otherwise).
+#if defined(__GNUC__)
+#define VTKOFB_LIC_INLINE __attribute__((always_inline)) inline
+#else
+#define VTKOFB_LIC_INLINE inline
+#endif
+
 /**
  * What a streamline step reads of a sample, packed in 40 bytes so that one step touches
  * one place: the position (world coordinates), the unit normal, the tangent field
@@ -152,20 +160,24 @@ public:
   /**
    * The sample of grid `a` closest in depth to q in the cell under q, within one cell
    * (vtkOFB::FindSample for a known grid, with a linear scan: cells hold few samples).
+   * Coordinates are taken by pointer (glm's operator[] branches on the index), and a
+   * cell coordinate known to be non-negative is floored by truncation.
    */
-  vtkIdType FindInGrid(int a, const glm::dvec3& q) const
+  VTKOFB_LIC_INLINE vtkIdType FindInGrid(int a, const glm::dvec3& q) const
   {
-    const int u = (a + 1) % 3;
-    const int v = (a + 2) % 3;
-    const double fu = std::floor((q[u] - this->Origin[u]) * this->InverseCellSize);
-    const double fv = std::floor((q[v] - this->Origin[v]) * this->InverseCellSize);
+    static constexpr int Next[5] = { 0, 1, 2, 0, 1 };
+    const int u = Next[a + 1];
+    const int v = Next[a + 2];
+    const double* x = &q.x;
+    const double fu = (x[u] - this->Origin[u]) * this->InverseCellSize;
+    const double fv = (x[v] - this->Origin[v]) * this->InverseCellSize;
     if (!(fu >= 0.0 && fv >= 0.0 && fu < this->Dimensions[u] && fv < this->Dimensions[v]))
     {
       return -1;
     }
     const vtkIdType cell = this->CellBase[a] + static_cast<vtkIdType>(fv) * this->Dimensions[u] +
       static_cast<vtkIdType>(fu);
-    const double d = q[a] - this->Origin[a];
+    const double d = x[a] - this->Origin[a];
     const vtkIdType begin = this->Offsets[cell];
     // The record of the cell's first sample, the likely answer, is fetched while the
     // depths are compared: the two misses of the step's chain overlap.
@@ -379,7 +391,7 @@ public:
    * p becomes the new position on the surface; returns the new sample, or -1 where
    * the streamline stops.
    */
-  vtkIdType Advance(glm::dvec3& p, vtkIdType j, int dir) const
+  VTKOFB_LIC_INLINE vtkIdType Advance(glm::dvec3& p, vtkIdType j, int dir) const
   {
     const vtkOFBLICSample& sj = this->Samples[j];
     const glm::dvec3 nj = Vec(sj.Normal);

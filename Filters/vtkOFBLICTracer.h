@@ -111,9 +111,9 @@ struct vtkOFBLICTiles
  *
  * A step moves the 3-D position by the field of the current sample (in its tangent
  * plane, StepSize cells long when normalized), looks up the sample there
- * (as vtkOFB::FindSample: in the grid of the current sample, else in the grid most
- * aligned with its normal, else
- * vtkOFB::FindClosestSample within sqrt(3) cells over all three grids, so that a
+ * (in the cell under it of the grid of the current sample, else of the other two grids
+ * in the order of the normal's components, else as vtkOFB::FindClosestSample within
+ * sqrt(3) cells over all three grids, so that a
  * streamline crosses from one grid to another and over edges of the surface) and
  * projects the position onto that sample's tangent plane, which keeps it on the
  * surface. A streamline stops at a masked sample, where no sample is near (the border
@@ -397,13 +397,21 @@ public:
     const glm::dvec3 nj = Vec(sj.Normal);
     glm::dvec3 q = p + (dir * this->Step) * this->FieldAt(p, j);
     // The grid of sample j first (the surface mostly goes on in the same grid), then the
-    // grid of its normal, then all three.
+    // other two in the order of the normal's components (where the surface goes on in
+    // another grid, the cell under q mostly holds its sample), then all three within
+    // sqrt(3) cells.
     const int axis = sj.Axis();
     vtkIdType k = this->FindInGrid(axis, q);
-    const int normalAxis = Dominant(nj);
-    if (k < 0 && normalAxis != axis)
+    if (k < 0)
     {
-      k = this->FindInGrid(normalAxis, q);
+      const int b = (axis + 1) % 3;
+      const int c = (axis + 2) % 3;
+      const bool bFirst = std::fabs(nj[b]) >= std::fabs(nj[c]);
+      k = this->FindInGrid(bFirst ? b : c, q);
+      if (k < 0)
+      {
+        k = this->FindInGrid(bFirst ? c : b, q);
+      }
     }
     if (k < 0)
     {

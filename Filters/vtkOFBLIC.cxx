@@ -487,7 +487,11 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
           std::lock_guard<std::mutex> lock(storesMutex);
           if (freeStores.empty())
           {
+            // Room for the runs of all samples at 4 ids a sample (the horse and the
+            // bunny need about 2.5): mapped, not touched, so growing never copies in
+            // practice and only the pages used are faulted in.
             cache.Runs.emplace_back(new vtkOFBLICRunStore);
+            cache.Runs.back()->Ids.reserve(4 * cache.Mask.size() + 4096);
             freeStores.push_back(cache.Runs.back().get());
           }
           store = freeStores.back();

@@ -284,7 +284,7 @@ public:
       this->TileRuns.capacity() * sizeof(const vtkTypeInt32*);
     for (const auto& r : this->Runs)
     {
-      bytes += r->Ids.capacity() * sizeof(vtkTypeInt32);
+      bytes += r->Ids.size() * sizeof(vtkTypeInt32); // the pages used of a larger mapping
     }
     return bytes;
   }

@@ -91,7 +91,9 @@ unsigned long vtkOFBLIC::GetCacheMemorySize() const
 {
   const vtkOFBLICCache& c = *this->Cache;
   const std::size_t bytes = c.Samples.capacity() * sizeof(vtkOFBLICSample) + c.Mask.capacity() +
-    c.Covered.capacity() +
+    c.Covered.capacity() + c.NeighbourCount.capacity() +
+    c.NeighbourOffsets.capacity() * sizeof(vtkTypeInt16) +
+    c.SearchedSamples.capacity() * sizeof(vtkOFBLICCache::SearchedSample) +
     (c.Noise.capacity() + c.Values.capacity() + c.Scratch.capacity()) * sizeof(float) +
     c.LinesBytes();
   return static_cast<unsigned long>((bytes + 1023) / 1024);

@@ -53,7 +53,9 @@
  * seed streamlines as sample ids (4 bytes each, a few a sample: each sample's streamline
  * is a window of one of them) and the sample's place in them (4 bytes), 40 bytes of
  * packed position, normal and field, 1 byte of mask and 4 of noise, plus 9 bytes of
- * work buffers.
+ * work buffers; with EnhancedLIC also the high-pass's neighbours of each sample
+ * (17 bytes: a count and up to 8 offsets), found once, so that an enhanced
+ * re-convolution does not search them again.
  * The streamlines are traced again when the input's structure, field or normals array
  * (pointer or MTime), NumberOfSteps, StepSize, NormalizeVectors, FieldInterpolation,
  * MaskThreshold or MaskOnSurface change. With CacheStreamlines off only the packed

@@ -257,6 +257,21 @@ public:
   vtkOFBLICBuffer<unsigned char> Covered; // samples given their streamline, while tracing
   vtkOFBLICBuffer<float> Values;          // work buffers, kept to avoid allocating every update
   vtkOFBLICBuffer<float> Scratch;
+  // The high-pass's neighbours of each sample (EnhancedLIC; see vtkOFBLICHighPass): a
+  // count, or SearchNeighbours, and up to MaxNeighbours offsets to their ids.
+  static constexpr int MaxNeighbours = 8;
+  static constexpr unsigned char SearchNeighbours = 255;
+  vtkOFBLICCacheKey NeighboursKey; // the SamplesKey they were found for
+  vtkOFBLICBuffer<unsigned char> NeighbourCount;
+  vtkOFBLICBuffer<vtkTypeInt16> NeighbourOffsets;
+  struct SearchedSample // a sample whose neighbours did not fit, and its cell
+  {
+    vtkIdType Id;
+    int Axis;
+    vtkIdType U;
+    vtkIdType V;
+  };
+  std::vector<SearchedSample> SearchedSamples;
 
   void Clear()
   {
@@ -269,6 +284,10 @@ public:
     this->Covered.Release();
     this->Values.Release();
     this->Scratch.Release();
+    this->NeighboursKey = vtkOFBLICCacheKey();
+    this->NeighbourCount.Release();
+    this->NeighbourOffsets.Release();
+    std::vector<SearchedSample>().swap(this->SearchedSamples);
   }
 
   void ReleaseLines()

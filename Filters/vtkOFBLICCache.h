@@ -250,10 +250,10 @@ public:
   vtkIdType Masked = 0;
   vtkOFBLICCacheKey NoiseKey;
   vtkOFBLICBuffer<float> Noise;
-  vtkOFBLICCacheKey LinesKey; // Where, Runs, TileRuns
+  vtkOFBLICCacheKey LinesKey;          // Where, Runs, TileRuns
   vtkOFBLICBuffer<vtkTypeInt32> Where; // per sample: its place in its tile's seed streamlines
   std::vector<std::unique_ptr<vtkOFBLICRunStore>> Runs; // one a thread that traced
-  std::vector<const vtkTypeInt32*> TileRuns;           // per tile: its first run id
+  std::vector<const vtkTypeInt32*> TileRuns;            // per tile: its first run id
   vtkOFBLICBuffer<unsigned char> Covered; // samples given their streamline, while tracing
   vtkOFBLICBuffer<float> Values;          // work buffers, kept to avoid allocating every update
   vtkOFBLICBuffer<float> Scratch;

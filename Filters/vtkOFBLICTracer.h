@@ -249,8 +249,7 @@ public:
           {
             continue;
           }
-          for (vtkIdType i = this->Offsets[row + u], end = this->Offsets[row + u + 1]; i < end;
-               ++i)
+          for (vtkIdType i = this->Offsets[row + u], end = this->Offsets[row + u + 1]; i < end; ++i)
           {
             const double dd = this->Depths[i] - d;
             const double distance2 = duv2 + dd * dd;
@@ -335,7 +334,16 @@ public:
     int ahead, back;
     bool aheadEnded, backEnded;
     this->TraceBoth(
-      i, n, n + 1, [](vtkIdType) { return true; }, line, ahead, aheadEnded, line + n, back, backEnded);
+      i,
+      n,
+      n + 1,
+      [](vtkIdType) { return true; },
+      line,
+      ahead,
+      aheadEnded,
+      line + n,
+      back,
+      backEnded);
     std::fill(line + ahead, line + n, -1);
     std::fill(line + n + back, line + 2 * n, -1);
   }

@@ -25,15 +25,17 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <string>
 
 vtkStandardNewMacro(vtkOFBLIC);
 
 namespace
 {
-// Half-length of the long streamlines traced from a seed, in NumberOfSteps: each gives
-// the streamlines of the samples of its tile that it meets (fast LIC).
-constexpr int LongSteps = 3;
+// The most steps each way of a seed streamline of fast LIC, in NumberOfSteps: each gives
+// the streamlines of the samples of its tile that it meets, and stops earlier once it
+// meets no sample it can give one (see TraceTile).
+constexpr int LongSteps = 10;
 }
 
 //------------------------------------------------------------------------------
@@ -89,9 +91,11 @@ unsigned long vtkOFBLIC::GetCacheMemorySize() const
 {
   const vtkOFBLICCache& c = *this->Cache;
   const std::size_t bytes = c.Samples.capacity() * sizeof(vtkOFBLICSample) + c.Mask.capacity() +
-    c.Covered.capacity() +
+    c.Covered.capacity() + c.NeighbourCount.capacity() +
+    c.NeighbourOffsets.capacity() * sizeof(vtkTypeInt16) +
+    c.SearchedSamples.capacity() * sizeof(vtkOFBLICCache::SearchedSample) +
     (c.Noise.capacity() + c.Values.capacity() + c.Scratch.capacity()) * sizeof(float) +
-    c.Lines.capacity() * sizeof(vtkTypeInt32);
+    c.LinesBytes();
   return static_cast<unsigned long>((bytes + 1023) / 1024);
 }
 
@@ -431,7 +435,7 @@ std::vector<double> vtkOFBLIC::ComputeKernel() const
 
 //------------------------------------------------------------------------------
 bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
-  vtkTypeInt32* lines,
+  bool keep,
   bool trace,
   const std::vector<double>& weights,
   const float* input,
@@ -439,18 +443,35 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   double progress0,
   double progress1)
 {
-  const unsigned char* mask = this->Cache->Mask.data();
+  vtkOFBLICCache& cache = *this->Cache;
+  const unsigned char* mask = cache.Mask.data();
   const int steps = tracer.NumberOfSteps;
   const double* w = weights.data();
   const vtkOFBLICTiles tiles(tracer.Dimensions);
   const vtkIdType numberOfTiles = tiles.GetNumberOfTiles();
   const vtkIdType tilesPerBlock = std::max<vtkIdType>(1, numberOfTiles / 16);
-  const bool fast = lines && trace;
+  const bool fast = keep && trace;
+  // Fast LIC: each thread appends the seed streamlines of its tiles to a store of its
+  // own (the stores of an earlier tracing are reused); where a tile's runs start is
+  // known once every tile is traced (stores grow).
+  std::vector<vtkOFBLICRunStore*> freeStores;
+  std::vector<std::pair<vtkOFBLICRunStore*, std::size_t>> tileStart;
+  std::mutex storesMutex;
   if (fast)
   {
-    this->Cache->Covered.resize(this->Cache->Mask.size());
+    cache.Covered.resize(cache.Mask.size());
+    cache.Where.resize(cache.Mask.size());
+    cache.TileRuns.assign(numberOfTiles, nullptr);
+    tileStart.assign(numberOfTiles, { nullptr, 0 });
+    for (auto& store : cache.Runs)
+    {
+      store->Ids.resize(0);
+      freeStores.push_back(store.get());
+    }
   }
-  unsigned char* covered = this->Cache->Covered.data();
+  unsigned char* covered = cache.Covered.data();
+  vtkTypeInt32* where = cache.Where.data();
+  vtkSMPThreadLocal<vtkOFBLICRunStore*> localStore(nullptr);
   vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
   for (vtkIdType first = 0; first < numberOfTiles; first += tilesPerBlock)
   {
@@ -461,12 +482,32 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
       [&](vtkIdType begin, vtkIdType end)
       {
         std::vector<vtkTypeInt32>& local = localLine.Local();
-        local.resize(std::max(2 * steps, 3 * LongSteps * steps + 1));
+        local.resize(std::max(2 * steps, 2 * LongSteps * steps + 1));
+        vtkOFBLICRunStore*& store = localStore.Local();
+        if (fast && !store)
+        {
+          std::lock_guard<std::mutex> lock(storesMutex);
+          if (freeStores.empty())
+          {
+            // Room for the runs of all samples at 4 ids a sample (the horse and the
+            // bunny need about 2.5): mapped, not touched, so growing never copies in
+            // practice and only the pages used are faulted in.
+            cache.Runs.emplace_back(new vtkOFBLICRunStore);
+            cache.Runs.back()->Ids.reserve(4 * cache.Mask.size() + 4096);
+            freeStores.push_back(cache.Runs.back().get());
+          }
+          store = freeStores.back();
+          freeStores.pop_back();
+        }
         for (vtkIdType t = begin; t < end; ++t)
         {
+          const vtkTypeInt32* runs = keep ? cache.TileRuns[t] : nullptr;
           if (fast)
           {
-            this->TraceTile(tracer, tiles, t, lines, covered, local.data());
+            const std::size_t start = store->size();
+            this->TraceTile(tracer, tiles, t, *store, covered, where, local.data());
+            tileStart[t] = { store, start };
+            runs = store->Ids.data() + start;
           }
           tiles.ForEachSample(t,
             tracer.Offsets,
@@ -476,14 +517,16 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
               if (mask[i])
               {
                 output[i] = input[i];
-                return;
               }
-              vtkTypeInt32* line = lines ? lines + 2 * steps * i : local.data();
-              if (!lines)
+              else if (keep)
               {
-                tracer.Trace(i, line);
+                output[i] = vtkOFBLICTracer::GatherRun(runs + where[i], steps, w, input);
               }
-              output[i] = vtkOFBLICTracer::Gather(i, line, steps, w, input);
+              else
+              {
+                tracer.Trace(i, local.data());
+                output[i] = vtkOFBLICTracer::Gather(i, local.data(), steps, w, input);
+              }
             });
         }
       });
@@ -493,6 +536,16 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
       return false;
     }
   }
+  if (fast)
+  {
+    for (vtkIdType t = 0; t < numberOfTiles; ++t)
+    {
+      if (tileStart[t].first)
+      {
+        cache.TileRuns[t] = tileStart[t].first->Ids.data() + tileStart[t].second;
+      }
+    }
+  }
   return true;
 }
 
@@ -500,55 +553,77 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
 void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
   const vtkOFBLICTiles& tiles,
   vtkIdType tile,
-  vtkTypeInt32* lines,
+  vtkOFBLICRunStore& store,
   unsigned char* covered,
+  vtkTypeInt32* where,
   vtkTypeInt32* sequence)
 {
   const unsigned char* mask = this->Cache->Mask.data();
   const vtkOFBLICSample* samples = tracer.Samples;
   const int n = tracer.NumberOfSteps;
   const int m = LongSteps * n;
-  tiles.ForEachSample(tile, tracer.Offsets, tracer.CellBase, [&](vtkIdType i) { covered[i] = 0; });
+  const std::size_t start = store.size();
+  *store.Extend(1) = -1;
+  // The tile's records and depths are fetched in row order first (streams the hardware
+  // follows), so that the streamlines' random order of visits finds them in the cache.
   tiles.ForEachSample(tile,
     tracer.Offsets,
     tracer.CellBase,
     [&](vtkIdType i)
     {
-      if (mask[i])
+      VTKOFB_PREFETCH(samples + i);
+      VTKOFB_PREFETCH(tracer.Depths + i);
+      covered[i] = 0;
+    });
+  tiles.ForEachSample(tile,
+    tracer.Offsets,
+    tracer.CellBase,
+    [&](vtkIdType i)
+    {
+      if (mask[i] || covered[i])
       {
-        std::fill(lines + 2 * n * i, lines + 2 * n * (i + 1), -1);
         return;
       }
-      if (covered[i])
-      {
-        return;
-      }
-      // A long streamline through i: backward steps reversed, i, forward steps.
+      // A long streamline through i: backward steps reversed, i, forward steps. A
+      // direction stops early once its last n samples are of other tiles or covered:
+      // every sample before them that it can still cover has its full window.
       int ahead, back;
-      vtkTypeInt32* backward = sequence + 2 * m + 1;
-      tracer.TraceBoth(i, m, sequence + m + 1, ahead, backward, back);
-      vtkTypeInt32* seq = sequence + m - back;
-      std::reverse_copy(backward, backward + back, seq);
-      seq[back] = static_cast<vtkTypeInt32>(i);
+      bool aheadEnded, backEnded;
+      vtkTypeInt32* backward = sequence + m + 1;
+      tracer.TraceBoth(
+        i,
+        m,
+        std::max(n, 1),
+        [&](vtkIdType k) { return samples[k].Tile() == tile && !covered[k]; },
+        sequence,
+        ahead,
+        aheadEnded,
+        backward,
+        back,
+        backEnded);
+      // The run in the store: -1 (already there), backward reversed, i, forward, -1.
       const int length = back + 1 + ahead;
-      // Where the streamline stopped by itself, a window may end there (as a sample's own
-      // streamline would); where it ran out of steps, the window must fit.
-      const int low = back < m ? 0 : n;
-      const int high = ahead < m ? length - 1 : length - 1 - n;
+      vtkTypeInt32* run = store.Extend(length + 1);
+      const std::size_t base = store.size() - (length + 1) - start;
+      std::reverse_copy(backward, backward + back, run);
+      run[back] = static_cast<vtkTypeInt32>(i);
+      std::copy(sequence, sequence + ahead, run + back + 1);
+      run[length] = -1;
+      // Every sample of the tile met gets the window around its meeting as its
+      // streamline: where the streamline stopped by itself, a window may end there (as
+      // a sample's own streamline would); where it ran out of steps or went idle, the
+      // window must fit.
+      const int low = backEnded ? 0 : n;
+      const int high = aheadEnded ? length - 1 : length - 1 - n;
       for (int t = low; t <= high; ++t)
       {
-        const vtkIdType k = seq[t];
+        const vtkIdType k = run[t];
         if (samples[k].Tile() != tile || covered[k])
         {
           continue;
         }
         covered[k] = 1;
-        vtkTypeInt32* line = lines + 2 * n * k;
-        for (int s = 1; s <= n; ++s)
-        {
-          line[s - 1] = t + s < length ? seq[t + s] : -1;
-          line[n + s - 1] = t - s >= 0 ? seq[t - s] : -1;
-        }
+        where[k] = static_cast<vtkTypeInt32>(base + t);
       }
     });
 }
@@ -685,26 +760,25 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     .Add(this->StepSize)
     .Add(static_cast<double>(this->FieldInterpolation));
   bool trace = true;
-  if (!this->CacheStreamlines)
+  const bool keep = this->CacheStreamlines && this->NumberOfSteps > 0;
+  if (!keep)
   {
     cache.LinesKey = vtkOFBLICCacheKey();
-    cache.Lines.Release();
+    cache.ReleaseLines();
   }
-  else if (cache.LinesKey == linesKey && !cache.Lines.empty())
+  else if (cache.LinesKey == linesKey && !cache.TileRuns.empty())
   {
     trace = false;
   }
   else
   {
     cache.LinesKey = vtkOFBLICCacheKey();
-    cache.Lines.resize(static_cast<std::size_t>(n) * 2 * this->NumberOfSteps);
   }
-  vtkTypeInt32* lines = cache.Lines.empty() ? nullptr : cache.Lines.data();
   vtkOFBLICBuffer<float>& values = cache.Values;
   values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
   if (!this->Convolve(tracer,
-        lines,
+        keep,
         trace,
         weights,
         cache.Noise.data(),
@@ -715,7 +789,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     output->Initialize();
     return 1;
   }
-  if (lines)
+  if (keep)
   {
     cache.LinesKey = linesKey;
   }
@@ -725,7 +799,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     vtkOFBLICBuffer<float>& pass1 = cache.Scratch;
     pass1.swap(values);
     values.resize(n);
-    if (!this->Convolve(tracer, lines, false, weights, pass1.data(), values.data(), 0.5, 0.95))
+    if (!this->Convolve(tracer, keep, false, weights, pass1.data(), values.data(), 0.5, 0.95))
     {
       output->Initialize();
       return 1;

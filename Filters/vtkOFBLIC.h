@@ -36,9 +36,11 @@
  * MaskIntensity in the final colour) are stored for the mapper.
  *
  * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (64 x 64
- * cells of a grid); from each sample of the tile not yet given a streamline, one three
- * times as long is traced both ways, and every sample of the tile that it meets gets the
- * NumberOfSteps steps each way around that meeting as its streamline. Each sample's
+ * cells of a grid); from each sample of the tile not yet given a streamline, a longer
+ * one is traced both ways, and every sample of the tile that it meets gets the
+ * NumberOfSteps steps each way around that meeting as its streamline. Each way goes on
+ * while it keeps meeting samples it can give a streamline to (at most 10 NumberOfSteps
+ * steps) and stops NumberOfSteps steps after the last such sample. Each sample's
  * streamline thus passes through it (within the half cell of the sample lookup), but
  * most are read off a neighbour's instead of traced: a few steps a sample instead of
  * 2 NumberOfSteps. Tiles are independent, so the result does not depend on the number
@@ -47,10 +49,13 @@
  * Streamlines are traced once and kept (CacheStreamlines, default on): an update that
  * changes only the kernel, AnimationPhase, the noise or the enhancement re-convolves by
  * reading the kept streamlines instead of tracing them again, which makes an animation
- * frame many times cheaper than the first computation. What is kept, per sample:
- * 4 bytes x 2 NumberOfSteps of streamline (80 bytes at 10 steps, 160 at the default 20),
- * 40 bytes of packed position, normal and field, 1 byte of mask and 4 of noise, plus
- * 9 bytes of work buffers: 134 bytes a sample at 10 steps (128 MB for 956549 samples).
+ * frame many times cheaper than the first computation. What is kept, per sample: the
+ * seed streamlines as sample ids (4 bytes each, a few a sample: each sample's streamline
+ * is a window of one of them) and the sample's place in them (4 bytes), 40 bytes of
+ * packed position, normal and field, 1 byte of mask and 4 of noise, plus 9 bytes of
+ * work buffers; with EnhancedLIC also the high-pass's neighbours of each sample
+ * (17 bytes: a count and up to 8 offsets), found once, so that an enhanced
+ * re-convolution does not search them again.
  * The streamlines are traced again when the input's structure, field or normals array
  * (pointer or MTime), NumberOfSteps, StepSize, NormalizeVectors, FieldInterpolation,
  * MaskThreshold or MaskOnSurface change. With CacheStreamlines off only the packed
@@ -83,6 +88,7 @@
 
 class vtkDataArray;
 class vtkOFBLICCache;
+struct vtkOFBLICRunStore;
 class vtkOFBLICTracer;
 struct vtkOFBLICTiles;
 
@@ -323,8 +329,9 @@ public:
   /**
    * Keep the traced streamlines between updates (default on), so that a new
    * AnimationPhase, kernel, noise or enhancement re-convolves without tracing (see the
-   * class description for the memory: 8 bytes x NumberOfSteps a sample). Turn it off for
-   * an OFB too large to keep them; every update then traces again.
+   * class description for the memory: a few ids of 4 bytes a sample). Turn it off for
+   * an OFB too large to keep them; every update then traces again (and every sample its
+   * own streamline, several times slower).
    */
   vtkSetMacro(CacheStreamlines, bool);
   vtkGetMacro(CacheStreamlines, bool);
@@ -383,13 +390,13 @@ protected:
   std::vector<double> ComputeKernel() const;
 
   /**
-   * One convolution of `input` into `output` over all samples, in blocks with progress
-   * from `progress0` to `progress1`: each sample's streamline is read from `lines`
-   * (2 NumberOfSteps ids a sample), traced into it first when `trace` is true, or traced
-   * into a per-thread buffer when `lines` is null. False when aborted.
+   * One convolution of `input` into `output` over all samples, in blocks of tiles with
+   * progress from `progress0` to `progress1`. With `keep`, each sample's streamline is
+   * read from the kept runs of fast LIC, traced first (TraceTile) when `trace` is true;
+   * else every sample traces its own. False when aborted.
    */
   bool Convolve(const vtkOFBLICTracer& tracer,
-    vtkTypeInt32* lines,
+    bool keep,
     bool trace,
     const std::vector<double>& weights,
     const float* input,
@@ -398,17 +405,20 @@ protected:
     double progress1);
 
   /**
-   * The streamlines of the samples of one tile into `lines` (fast LIC): from each sample
-   * not yet given one, a streamline LongSteps times as long is traced, and every sample
-   * of the tile it meets gets the window of NumberOfSteps steps each way around that
-   * meeting. `covered` marks the samples given one; `sequence` is a buffer of
-   * 3 LongSteps NumberOfSteps + 1 ids.
+   * The streamlines of the samples of one tile (fast LIC): from each sample not yet
+   * given one, a seed streamline of up to LongSteps NumberOfSteps steps each way is
+   * traced (each way stopping early once its last NumberOfSteps samples are of other
+   * tiles or already given one) and appended to `store` as a run; every sample of the
+   * tile it meets gets the window of NumberOfSteps steps each way around that meeting:
+   * `where` receives the meeting's place in the runs of the tile, `covered` marks it.
+   * `sequence` is a buffer of 2 LongSteps NumberOfSteps + 1 ids.
    */
   void TraceTile(const vtkOFBLICTracer& tracer,
     const vtkOFBLICTiles& tiles,
     vtkIdType tile,
-    vtkTypeInt32* lines,
+    vtkOFBLICRunStore& store,
     unsigned char* covered,
+    vtkTypeInt32* where,
     vtkTypeInt32* sequence);
 
   /// The input's arrays shared, with "LIC" (values clamped, the mask value where masked)

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <utility>
 #include <vector>
@@ -91,6 +92,22 @@ public:
     this->Data = nullptr;
     this->Mapped = nullptr;
     this->Size = this->Capacity = this->MappedBytes = 0;
+  }
+  /// Capacity for at least n values (at least doubled when it grows), the values kept.
+  void reserve(std::size_t n)
+  {
+    if (n <= this->Capacity)
+    {
+      return;
+    }
+    vtkOFBLICBuffer bigger;
+    bigger.Allocate(std::max(n, 2 * this->Capacity));
+    if (this->Size)
+    {
+      std::memcpy(static_cast<void*>(bigger.Data), this->Data, this->Size * sizeof(T));
+    }
+    bigger.Size = this->Size;
+    this->swap(bigger);
   }
   void swap(vtkOFBLICBuffer& o)
   {
@@ -202,6 +219,25 @@ vtkSmartPointer<ArrayT> vtkOFBLICNewOutputArray(const char* name, vtkIdType n)
 }
 
 /**
+ * The seed streamlines of fast LIC that one thread traced, tile after tile, as sample
+ * ids, each streamline with -1 before and after it (see vtkOFBLIC::TraceTile).
+ */
+struct vtkOFBLICRunStore
+{
+  vtkOFBLICBuffer<vtkTypeInt32> Ids;
+
+  std::size_t size() const { return this->Ids.size(); }
+  /// Room for n more ids; returns where they go.
+  vtkTypeInt32* Extend(std::size_t n)
+  {
+    const std::size_t old = this->Ids.size();
+    this->Ids.reserve(old + n);
+    this->Ids.resize(old + n);
+    return this->Ids.data() + old;
+  }
+};
+
+/**
  * What vtkOFBLIC keeps between updates (see the class description), each part with the
  * key of what it was computed from; an empty key is never valid.
  */
@@ -214,11 +250,28 @@ public:
   vtkIdType Masked = 0;
   vtkOFBLICCacheKey NoiseKey;
   vtkOFBLICBuffer<float> Noise;
-  vtkOFBLICCacheKey LinesKey;
-  vtkOFBLICBuffer<vtkTypeInt32> Lines;
+  vtkOFBLICCacheKey LinesKey;          // Where, Runs, TileRuns
+  vtkOFBLICBuffer<vtkTypeInt32> Where; // per sample: its place in its tile's seed streamlines
+  std::vector<std::unique_ptr<vtkOFBLICRunStore>> Runs; // one a thread that traced
+  std::vector<const vtkTypeInt32*> TileRuns;            // per tile: its first run id
   vtkOFBLICBuffer<unsigned char> Covered; // samples given their streamline, while tracing
   vtkOFBLICBuffer<float> Values;          // work buffers, kept to avoid allocating every update
   vtkOFBLICBuffer<float> Scratch;
+  // The high-pass's neighbours of each sample (EnhancedLIC; see vtkOFBLICHighPass): a
+  // count, or SearchNeighbours, and up to MaxNeighbours offsets to their ids.
+  static constexpr int MaxNeighbours = 8;
+  static constexpr unsigned char SearchNeighbours = 255;
+  vtkOFBLICCacheKey NeighboursKey; // the SamplesKey they were found for
+  vtkOFBLICBuffer<unsigned char> NeighbourCount;
+  vtkOFBLICBuffer<vtkTypeInt16> NeighbourOffsets;
+  struct SearchedSample // a sample whose neighbours did not fit, and its cell
+  {
+    vtkIdType Id;
+    int Axis;
+    vtkIdType U;
+    vtkIdType V;
+  };
+  std::vector<SearchedSample> SearchedSamples;
 
   void Clear()
   {
@@ -227,10 +280,32 @@ public:
     this->Samples.Release();
     this->Mask.Release();
     this->Noise.Release();
-    this->Lines.Release();
+    this->ReleaseLines();
     this->Covered.Release();
     this->Values.Release();
     this->Scratch.Release();
+    this->NeighboursKey = vtkOFBLICCacheKey();
+    this->NeighbourCount.Release();
+    this->NeighbourOffsets.Release();
+    std::vector<SearchedSample>().swap(this->SearchedSamples);
+  }
+
+  void ReleaseLines()
+  {
+    this->Where.Release();
+    this->Runs.clear();
+    std::vector<const vtkTypeInt32*>().swap(this->TileRuns);
+  }
+
+  std::size_t LinesBytes() const
+  {
+    std::size_t bytes = this->Where.capacity() * sizeof(vtkTypeInt32) +
+      this->TileRuns.capacity() * sizeof(const vtkTypeInt32*);
+    for (const auto& r : this->Runs)
+    {
+      bytes += r->Ids.size() * sizeof(vtkTypeInt32); // the pages used of a larger mapping
+    }
+    return bytes;
   }
 };
 

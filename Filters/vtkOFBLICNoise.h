@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 /**
  * Settings of the generated noise, in the units of vtkOFBLIC's knobs (see there).
@@ -47,6 +48,10 @@ public:
     , Origin(s.Origin[0], s.Origin[1], s.Origin[2])
     , InvGrain(1.0 / s.Grain)
   {
+    if (s.Type == 1 && s.Levels > 1 && s.Levels <= MaxTabulatedLevels)
+    {
+      this->TabulateGaussian();
+    }
   }
 
   /// The noise value at world position x.
@@ -67,13 +72,17 @@ public:
         u = this->Perlin(g);
         break;
       default:
-        u = this->Gaussian(ix, iy, iz);
+        u = this->Thresholds.empty() ? this->Gaussian(ix, iy, iz) : this->Uniform(ix, iy, iz, 1);
         break;
     }
     if (this->S.ImpulseProbability < 1.0 &&
       this->Uniform(ix, iy, iz, 3) >= this->S.ImpulseProbability)
     {
       return static_cast<float>(this->S.ImpulseBackground);
+    }
+    if (!this->Thresholds.empty())
+    {
+      return static_cast<float>(this->FinishLevel(this->GaussianLevel(u)));
     }
     return static_cast<float>(this->Finish(u));
   }
@@ -171,17 +180,68 @@ private:
   double Finish(double u) const
   {
     const int levels = this->S.Levels;
-    double q = 1.0;
-    if (levels > 1)
+    if (levels <= 1)
     {
-      q = std::min<double>(levels - 1, std::floor(u * levels)) / (levels - 1);
+      return this->S.MaxValue;
     }
+    return this->FinishLevel(std::min<int>(levels - 1, static_cast<int>(std::floor(u * levels))));
+  }
+
+  /// Level j of Levels mapped to [MinValue, MaxValue].
+  double FinishLevel(int j) const
+  {
+    const double q = static_cast<double>(j) / (this->S.Levels - 1);
     return this->S.MinValue + q * (this->S.MaxValue - this->S.MinValue);
   }
+
+  /**
+   * Gaussian noise quantized to Levels levels, drawn from one uniform u by inverting
+   * its distribution: the level of Gaussian() followed by Finish() is at least k with
+   * probability 1 - Phi(6 (k / Levels - 1/2)), so the level is the number of
+   * thresholds Phi(6 (k / Levels - 1/2)), k = 1 ... Levels - 1, at or below u. The
+   * same distribution as Box-Muller's, for one hash and no logarithm or cosine.
+   */
+  void TabulateGaussian()
+  {
+    const int levels = this->S.Levels;
+    this->Thresholds.resize(levels - 1);
+    for (int k = 1; k < levels; ++k)
+    {
+      const double x = 6.0 * (static_cast<double>(k) / levels - 0.5);
+      this->Thresholds[k - 1] = 0.5 * std::erfc(-x / std::sqrt(2.0));
+    }
+    // Buckets of u: the thresholds below each bucket's start.
+    this->Buckets.resize(NumberOfBuckets + 1);
+    for (int b = 0, j = 0; b <= NumberOfBuckets; ++b)
+    {
+      const double start = static_cast<double>(b) / NumberOfBuckets;
+      while (j < levels - 1 && this->Thresholds[j] < start)
+      {
+        ++j;
+      }
+      this->Buckets[b] = j;
+    }
+  }
+
+  int GaussianLevel(double u) const
+  {
+    int j = this->Buckets[static_cast<int>(u * NumberOfBuckets)];
+    const int last = static_cast<int>(this->Thresholds.size());
+    while (j < last && this->Thresholds[j] <= u)
+    {
+      ++j;
+    }
+    return j;
+  }
+
+  static constexpr int MaxTabulatedLevels = 1 << 16;
+  static constexpr int NumberOfBuckets = 4096;
 
   vtkOFBLICNoiseSettings S;
   glm::dvec3 Origin;
   double InvGrain;
+  std::vector<double> Thresholds; // Gaussian levels (TabulateGaussian), else empty
+  std::vector<int> Buckets;
 };
 
 #endif

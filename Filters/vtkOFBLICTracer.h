@@ -12,6 +12,14 @@
 #include <cmath>
 #include <vector>
 
+// The step's functions inlined into the tracing loop (a call per step, through the
+// shared library's PLT, otherwise).
+#if defined(__GNUC__)
+#define VTKOFB_LIC_INLINE __attribute__((always_inline)) inline
+#else
+#define VTKOFB_LIC_INLINE inline
+#endif
+
 /**
  * What a streamline step reads of a sample, packed in 40 bytes so that one step touches
  * one place: the position (world coordinates), the unit normal, the tangent field
@@ -103,9 +111,9 @@ struct vtkOFBLICTiles
  *
  * A step moves the 3-D position by the field of the current sample (in its tangent
  * plane, StepSize cells long when normalized), looks up the sample there
- * (as vtkOFB::FindSample: in the grid of the current sample, else in the grid most
- * aligned with its normal, else
- * vtkOFB::FindClosestSample within sqrt(3) cells over all three grids, so that a
+ * (in the cell under it of the grid of the current sample, else of the other two grids
+ * in the order of the normal's components, else as vtkOFB::FindClosestSample within
+ * sqrt(3) cells over all three grids, so that a
  * streamline crosses from one grid to another and over edges of the surface) and
  * projects the position onto that sample's tangent plane, which keeps it on the
  * surface. A streamline stops at a masked sample, where no sample is near (the border
@@ -152,20 +160,24 @@ public:
   /**
    * The sample of grid `a` closest in depth to q in the cell under q, within one cell
    * (vtkOFB::FindSample for a known grid, with a linear scan: cells hold few samples).
+   * Coordinates are taken by pointer (glm's operator[] branches on the index), and a
+   * cell coordinate known to be non-negative is floored by truncation.
    */
-  vtkIdType FindInGrid(int a, const glm::dvec3& q) const
+  VTKOFB_LIC_INLINE vtkIdType FindInGrid(int a, const glm::dvec3& q) const
   {
-    const int u = (a + 1) % 3;
-    const int v = (a + 2) % 3;
-    const double fu = std::floor((q[u] - this->Origin[u]) * this->InverseCellSize);
-    const double fv = std::floor((q[v] - this->Origin[v]) * this->InverseCellSize);
+    static constexpr int Next[5] = { 0, 1, 2, 0, 1 };
+    const int u = Next[a + 1];
+    const int v = Next[a + 2];
+    const double* x = &q.x;
+    const double fu = (x[u] - this->Origin[u]) * this->InverseCellSize;
+    const double fv = (x[v] - this->Origin[v]) * this->InverseCellSize;
     if (!(fu >= 0.0 && fv >= 0.0 && fu < this->Dimensions[u] && fv < this->Dimensions[v]))
     {
       return -1;
     }
     const vtkIdType cell = this->CellBase[a] + static_cast<vtkIdType>(fv) * this->Dimensions[u] +
       static_cast<vtkIdType>(fu);
-    const double d = q[a] - this->Origin[a];
+    const double d = x[a] - this->Origin[a];
     const vtkIdType begin = this->Offsets[cell];
     // The record of the cell's first sample, the likely answer, is fetched while the
     // depths are compared: the two misses of the step's chain overlap.
@@ -185,17 +197,94 @@ public:
   }
 
   /**
+   * vtkOFB::FindClosestSample(q, SearchRadius) for the few cells of a radius of
+   * sqrt(3) cells: the same candidates, distances computed as vtkOFB computes them and
+   * the same tie-break (the lowest id), so the same sample, without the general sphere
+   * query's planning and prefetching of rows.
+   */
+  vtkIdType FindClosest(const glm::dvec3& q) const
+  {
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+    {
+      return -1;
+    }
+    const double s = this->CellSize;
+    const double r = this->SearchRadius;
+    const double r2 = r * r;
+    vtkIdType best = -1;
+    double bestDistance2 = r2;
+    for (int a = 0; a < 3; ++a)
+    {
+      const int ua = (a + 1) % 3;
+      const int va = (a + 2) % 3;
+      const vtkIdType nu = this->Dimensions[ua];
+      const vtkIdType nv = this->Dimensions[va];
+      const double lu = (q[ua] - r - this->Origin[ua]) / s - 0.5;
+      const double hu = (q[ua] + r - this->Origin[ua]) / s - 0.5;
+      const double lv = (q[va] - r - this->Origin[va]) / s - 0.5;
+      const double hv = (q[va] + r - this->Origin[va]) / s - 0.5;
+      if (!(hu >= 0.0 && hv >= 0.0 && lu <= nu - 1 && lv <= nv - 1))
+      {
+        continue;
+      }
+      const vtkIdType u0 = static_cast<vtkIdType>(std::ceil(std::max(lu, 0.0)));
+      const vtkIdType u1 = static_cast<vtkIdType>(std::floor(std::min(hu, nu - 1.0)));
+      const vtkIdType v0 = static_cast<vtkIdType>(std::ceil(std::max(lv, 0.0)));
+      const vtkIdType v1 = static_cast<vtkIdType>(std::floor(std::min(hv, nv - 1.0)));
+      const double d = q[a] - this->Origin[a];
+      for (vtkIdType v = v0; v <= v1; ++v)
+      {
+        const double dv = this->Origin[va] + (v + 0.5) * s - q[va];
+        const double dv2 = dv * dv;
+        if (dv2 > r2)
+        {
+          continue;
+        }
+        const vtkIdType row = this->CellBase[a] + v * nu;
+        for (vtkIdType u = u0; u <= u1; ++u)
+        {
+          const double du = this->Origin[ua] + (u + 0.5) * s - q[ua];
+          const double duv2 = du * du + dv2;
+          if (duv2 > r2)
+          {
+            continue;
+          }
+          for (vtkIdType i = this->Offsets[row + u], end = this->Offsets[row + u + 1]; i < end; ++i)
+          {
+            const double dd = this->Depths[i] - d;
+            const double distance2 = duv2 + dd * dd;
+            if (distance2 < bestDistance2 || (distance2 == bestDistance2 && best < 0))
+            {
+              bestDistance2 = distance2;
+              best = i;
+            }
+          }
+        }
+      }
+    }
+    return best;
+  }
+
+  /**
    * Up to `steps` steps each way from sample i: the samples met forward to ahead[] and
    * backward to back[], their numbers returned in nAhead and nBack. The two directions
    * advance together: two independent chains of dependent loads, which the processor
-   * overlaps.
+   * overlaps. A direction also stops once its last `idle` samples all failed `useful`
+   * (fast LIC: the samples a seed streamline can still give a window to); `ended` is
+   * true for a direction that stopped by itself (masked sample, border, fold), not for
+   * one that ran out of steps or went idle.
    */
+  template<typename Useful>
   void TraceBoth(vtkIdType i,
     int steps,
+    int idle,
+    Useful&& useful,
     vtkTypeInt32* ahead,
     int& nAhead,
+    bool& aheadEnded,
     vtkTypeInt32* back,
-    int& nBack) const
+    int& nBack,
+    bool& backEnded) const
   {
     glm::dvec3 pf = Vec(this->Samples[i].Position);
     glm::dvec3 pb = pf;
@@ -203,6 +292,10 @@ public:
     vtkIdType jb = i;
     nAhead = 0;
     nBack = 0;
+    aheadEnded = false;
+    backEnded = false;
+    int idleAhead = 0;
+    int idleBack = 0;
     bool forward = steps > 0;
     bool backward = steps > 0;
     while (forward || backward)
@@ -210,21 +303,25 @@ public:
       if (forward)
       {
         jf = this->Advance(pf, jf, 1);
-        forward = jf >= 0;
+        aheadEnded = jf < 0;
+        forward = !aheadEnded;
         if (forward)
         {
           ahead[nAhead++] = static_cast<vtkTypeInt32>(jf);
-          forward = nAhead < steps;
+          idleAhead = useful(jf) ? 0 : idleAhead + 1;
+          forward = nAhead < steps && idleAhead < idle;
         }
       }
       if (backward)
       {
         jb = this->Advance(pb, jb, -1);
-        backward = jb >= 0;
+        backEnded = jb < 0;
+        backward = !backEnded;
         if (backward)
         {
           back[nBack++] = static_cast<vtkTypeInt32>(jb);
-          backward = nBack < steps;
+          idleBack = useful(jb) ? 0 : idleBack + 1;
+          backward = nBack < steps && idleBack < idle;
         }
       }
     }
@@ -235,7 +332,18 @@ public:
   {
     const int n = this->NumberOfSteps;
     int ahead, back;
-    this->TraceBoth(i, n, line, ahead, line + n, back);
+    bool aheadEnded, backEnded;
+    this->TraceBoth(
+      i,
+      n,
+      n + 1,
+      [](vtkIdType) { return true; },
+      line,
+      ahead,
+      aheadEnded,
+      line + n,
+      back,
+      backEnded);
     std::fill(line + ahead, line + n, -1);
     std::fill(line + n + back, line + 2 * n, -1);
   }
@@ -266,27 +374,56 @@ public:
   }
 
   /**
+   * Eq. 4 as Gather, along a streamline kept in a run of fast LIC: at[0] is the sample,
+   * at[s] and at[-s] its steps forward and backward, -1 where the streamline stops.
+   */
+  static float GatherRun(const vtkTypeInt32* at, int n, const double* weights, const float* input)
+  {
+    double acc = weights[n] * input[at[0]];
+    double sum = weights[n];
+    for (int s = 1; s <= n && at[s] >= 0; ++s)
+    {
+      acc += weights[n + s] * input[at[s]];
+      sum += weights[n + s];
+    }
+    for (int s = 1; s <= n && at[-s] >= 0; ++s)
+    {
+      acc += weights[n - s] * input[at[-s]];
+      sum += weights[n - s];
+    }
+    return sum > 1e-9 ? static_cast<float>(acc / sum) : input[at[0]];
+  }
+
+  /**
    * One step from position p at sample j in direction dir (+1 forward, -1 backward):
    * p becomes the new position on the surface; returns the new sample, or -1 where
    * the streamline stops.
    */
-  vtkIdType Advance(glm::dvec3& p, vtkIdType j, int dir) const
+  VTKOFB_LIC_INLINE vtkIdType Advance(glm::dvec3& p, vtkIdType j, int dir) const
   {
     const vtkOFBLICSample& sj = this->Samples[j];
     const glm::dvec3 nj = Vec(sj.Normal);
     glm::dvec3 q = p + (dir * this->Step) * this->FieldAt(p, j);
     // The grid of sample j first (the surface mostly goes on in the same grid), then the
-    // grid of its normal, then all three.
+    // other two in the order of the normal's components (where the surface goes on in
+    // another grid, the cell under q mostly holds its sample), then all three within
+    // sqrt(3) cells.
     const int axis = sj.Axis();
     vtkIdType k = this->FindInGrid(axis, q);
-    const int normalAxis = Dominant(nj);
-    if (k < 0 && normalAxis != axis)
+    if (k < 0)
     {
-      k = this->FindInGrid(normalAxis, q);
+      const int b = (axis + 1) % 3;
+      const int c = (axis + 2) % 3;
+      const bool bFirst = std::fabs(nj[b]) >= std::fabs(nj[c]);
+      k = this->FindInGrid(bFirst ? b : c, q);
+      if (k < 0)
+      {
+        k = this->FindInGrid(bFirst ? c : b, q);
+      }
     }
     if (k < 0)
     {
-      k = this->OFB->FindClosestSample(&q.x, this->SearchRadius);
+      k = this->FindClosest(q);
     }
     if (k < 0 || this->Samples[k].Masked())
     {

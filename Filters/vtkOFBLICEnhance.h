@@ -71,58 +71,62 @@ inline void vtkOFBLICStretch(float* values,
 }
 
 /**
- * The first pass's result in cache.Values stretched and high-pass filtered, in place.
- * The neighbours of each sample are found once per packed samples (geometry and mask)
- * and kept in the cache (vtkOFBLICCache::NeighbourCount, NeighbourOffsets): a later
- * enhanced re-convolution (a new AnimationPhase) then sums the kept neighbours in the
- * same order, in one pass over the samples, instead of searching again (the same
- * values, bit for bit); only the samples whose neighbours do not fit
- * (vtkOFBLICCache::SearchedSamples, about 1 % on the horse) are searched every time.
+ * The high-pass of vtkOFBLICHighPass over one OFB and its cache: the mean over the
+ * samples within 1.5 cells, those of the sample's own grid in the 3 x 3 cells around
+ * its cell (no other cell of the grid is that near), else, where fewer than three are
+ * (the grid sees the surface at a grazing angle), those of all three grids.
  */
-inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
+struct vtkOFBLICHighPassWork
 {
-  vtkOFBLICBuffer<float>& values = cache.Values;
-  const unsigned char* mask = cache.Mask.data();
-  const vtkOFBLICSample* samples = cache.Samples.data();
-  const vtkIdType n = static_cast<vtkIdType>(values.size());
-  vtkOFBLICStretch(values.data(), n, mask, 0.0, 0.0);
-  vtkOFBLICBuffer<float>& out = cache.Scratch;
-  out.resize(n);
-  constexpr int K = vtkOFBLICCache::MaxNeighbours;
-  constexpr unsigned char Searched = vtkOFBLICCache::SearchNeighbours;
-  const bool build =
-    cache.NeighboursKey != cache.SamplesKey || cache.NeighbourCount.size() != values.size();
-  if (build)
+  static constexpr int K = vtkOFBLICCache::MaxNeighbours;
+
+  vtkOFB* Input;
+  vtkOFBLICCache& Cache;
+  const float* Values;
+  float* Out;
+  const unsigned char* Mask;
+  const vtkOFBLICSample* Samples;
+  unsigned char* NeighbourCount;
+  vtkTypeInt16* NeighbourOffsets;
+  const vtkIdType* Dims;
+  const vtkTypeUInt32* Offsets;
+  const float* Depths;
+  double CellSize;
+  double Radius;
+
+  vtkOFBLICHighPassWork(vtkOFB* input, vtkOFBLICCache& cache)
+    : Input(input)
+    , Cache(cache)
+    , Values(cache.Values.data())
+    , Out(cache.Scratch.data())
+    , Mask(cache.Mask.data())
+    , Samples(cache.Samples.data())
+    , NeighbourCount(cache.NeighbourCount.data())
+    , NeighbourOffsets(cache.NeighbourOffsets.data())
+    , Dims(input->GetDimensions())
+    , Offsets(input->GetCellOffsets()->GetPointer(0))
+    , Depths(input->GetDepths()->GetPointer(0))
+    , CellSize(input->GetCellSize())
+    , Radius(1.5 * input->GetCellSize())
   {
-    cache.NeighboursKey = vtkOFBLICCacheKey();
-    cache.NeighbourCount.resize(n);
-    cache.NeighbourOffsets.resize(static_cast<std::size_t>(n) * K);
-    cache.SearchedSamples.clear();
   }
-  unsigned char* neighbourCount = cache.NeighbourCount.data();
-  vtkTypeInt16* neighbourOffsets = cache.NeighbourOffsets.data();
-  // The mean over the samples within 1.5 cells: those of the sample's own grid, in the
-  // 3 x 3 cells around its cell (no other cell of the grid is that near), else, where
-  // fewer than three are (the grid sees the surface at a grazing angle), those of all
-  // three grids.
-  const double cellSize = input->GetCellSize();
-  const double radius = 1.5 * cellSize;
-  const vtkIdType* dims = input->GetDimensions();
-  const vtkTypeUInt32* offsets = input->GetCellOffsets()->GetPointer(0);
-  const float* depths = input->GetDepths()->GetPointer(0);
-  auto highPass = [&](vtkIdType i, double sum, int count)
+
+  void HighPass(vtkIdType i, double sum, int count) const
   {
-    const double mean = count ? sum / count : values[i];
-    out[i] = static_cast<float>(values[i] + 4.0 * (values[i] - mean));
-  };
-  // The search of sample i of grid a in cell (iu, iv); the neighbours kept where they
-  // fit (at most K, each within an int16 of i), else false.
-  auto search = [&](vtkIdType i, int a, vtkIdType iu, vtkIdType iv)
+    const double mean = count ? sum / count : this->Values[i];
+    this->Out[i] = static_cast<float>(this->Values[i] + 4.0 * (this->Values[i] - mean));
+  }
+
+  /// Search the neighbours of sample i of grid a in cell (iu, iv) and filter it. The
+  /// number of neighbours, kept where they fit (at most K, each within an int16 of
+  /// i), else -1.
+  int Search(vtkIdType i, int a, vtkIdType iu, vtkIdType iv) const
   {
-    const vtkIdType nu = dims[(a + 1) % 3];
-    const vtkIdType nv = dims[(a + 2) % 3];
-    const vtkIdType row = input->GetGridCellBase(a) + iv * nu;
-    vtkTypeInt16* kept = neighbourOffsets + K * i;
+    const vtkIdType nu = this->Dims[(a + 1) % 3];
+    const vtkIdType nv = this->Dims[(a + 2) % 3];
+    const vtkIdType row = this->Input->GetGridCellBase(a) + iv * nu;
+    vtkTypeInt16* kept = this->NeighbourOffsets + K * i;
+    const double r2 = this->Radius * this->Radius;
     bool fits = true;
     double sum = 0.0;
     int count = 0;
@@ -135,11 +139,12 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
           continue;
         }
         const vtkIdType cell = row + dv * nu + iu + du;
-        const double planar = static_cast<double>(du * du + dv * dv) * cellSize * cellSize;
-        for (vtkIdType j = offsets[cell], last = offsets[cell + 1]; j < last; ++j)
+        const double planar =
+          static_cast<double>(du * du + dv * dv) * this->CellSize * this->CellSize;
+        for (vtkIdType j = this->Offsets[cell], last = this->Offsets[cell + 1]; j < last; ++j)
         {
-          const double dd = static_cast<double>(depths[j]) - depths[i];
-          if (j != i && !mask[j] && planar + dd * dd <= radius * radius)
+          const double dd = static_cast<double>(this->Depths[j]) - this->Depths[i];
+          if (j != i && !this->Mask[j] && planar + dd * dd <= r2)
           {
             if (count < K && std::abs(j - i) <= 32767)
             {
@@ -149,7 +154,7 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
             {
               fits = false;
             }
-            sum += values[j];
+            sum += this->Values[j];
             ++count;
           }
         }
@@ -158,25 +163,35 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
     if (count < 3)
     {
       fits = false;
-      const glm::dvec3 c = vtkOFBLICTracer::Vec(samples[i].Position);
-      sum = 0.0;
-      count = 0;
-      input->ForEachSampleInSphere(&c.x,
-        radius,
-        [&](vtkIdType j, double)
-        {
-          if (j != i && !mask[j])
-          {
-            sum += values[j];
-            ++count;
-          }
-        });
+      this->SearchAllGrids(i, sum, count);
     }
-    highPass(i, sum, count);
+    this->HighPass(i, sum, count);
     return fits ? count : -1;
-  };
-  if (!build)
+  }
+
+  /// The neighbours of sample i in all three grids.
+  void SearchAllGrids(vtkIdType i, double& sum, int& count) const
   {
+    const glm::dvec3 c = vtkOFBLICTracer::Vec(this->Samples[i].Position);
+    sum = 0.0;
+    count = 0;
+    this->Input->ForEachSampleInSphere(&c.x,
+      this->Radius,
+      [&](vtkIdType j, double)
+      {
+        if (j != i && !this->Mask[j])
+        {
+          sum += this->Values[j];
+          ++count;
+        }
+      });
+  }
+
+  /// Filter every sample with the kept neighbours, searching again where they did not
+  /// fit.
+  void FromKeptNeighbours(vtkIdType n) const
+  {
+    constexpr unsigned char Searched = vtkOFBLICCache::SearchNeighbours;
     vtkSMPTools::For(0,
       n,
       4096,
@@ -184,24 +199,24 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
       {
         for (vtkIdType i = begin; i < end; ++i)
         {
-          const unsigned char known = neighbourCount[i];
-          if (mask[i])
+          const unsigned char known = this->NeighbourCount[i];
+          if (this->Mask[i])
           {
-            out[i] = values[i];
+            this->Out[i] = this->Values[i];
           }
           else if (known != Searched)
           {
-            const vtkTypeInt16* kept = neighbourOffsets + K * i;
+            const vtkTypeInt16* kept = this->NeighbourOffsets + K * i;
             double sum = 0.0;
             for (int k = 0; k < known; ++k)
             {
-              sum += values[i + kept[k]];
+              sum += this->Values[i + kept[k]];
             }
-            highPass(i, sum, known);
+            this->HighPass(i, sum, known);
           }
         }
       });
-    const std::vector<vtkOFBLICCache::SearchedSample>& searched = cache.SearchedSamples;
+    const std::vector<vtkOFBLICCache::SearchedSample>& searched = this->Cache.SearchedSamples;
     vtkSMPTools::For(0,
       static_cast<vtkIdType>(searched.size()),
       256,
@@ -210,16 +225,20 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
         for (vtkIdType k = begin; k < end; ++k)
         {
           const vtkOFBLICCache::SearchedSample& e = searched[k];
-          search(e.Id, e.Axis, e.U, e.V);
+          this->Search(e.Id, e.Axis, e.U, e.V);
         }
       });
   }
-  else
+
+  /// Filter every sample by searching its neighbours, row by row of the three grids,
+  /// and keep them (or the sample in SearchedSamples where they do not fit).
+  void SearchingNeighbours()
   {
+    constexpr unsigned char Searched = vtkOFBLICCache::SearchNeighbours;
     vtkIdType rowBase[4] = { 0, 0, 0, 0 };
     for (int a = 0; a < 3; ++a)
     {
-      rowBase[a + 1] = rowBase[a] + dims[(a + 2) % 3];
+      rowBase[a + 1] = rowBase[a] + this->Dims[(a + 2) % 3];
     }
     vtkSMPThreadLocal<std::vector<vtkOFBLICCache::SearchedSample>> localSearched;
     vtkSMPTools::For(0,
@@ -231,20 +250,21 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
         for (vtkIdType r = beginRow; r < endRow; ++r)
         {
           const int a = r < rowBase[1] ? 0 : (r < rowBase[2] ? 1 : 2);
-          const vtkIdType nu = dims[(a + 1) % 3];
+          const vtkIdType nu = this->Dims[(a + 1) % 3];
           const vtkIdType iv = r - rowBase[a];
-          const vtkIdType row = input->GetGridCellBase(a) + iv * nu;
+          const vtkIdType row = this->Input->GetGridCellBase(a) + iv * nu;
           for (vtkIdType iu = 0; iu < nu; ++iu)
           {
-            for (vtkIdType i = offsets[row + iu], end = offsets[row + iu + 1]; i < end; ++i)
+            for (vtkIdType i = this->Offsets[row + iu], end = this->Offsets[row + iu + 1]; i < end;
+                 ++i)
             {
-              if (mask[i])
+              if (this->Mask[i])
               {
-                out[i] = values[i];
+                this->Out[i] = this->Values[i];
                 continue;
               }
-              const int count = search(i, a, iu, iv);
-              neighbourCount[i] = count >= 0 ? static_cast<unsigned char>(count) : Searched;
+              const int count = this->Search(i, a, iu, iv);
+              this->NeighbourCount[i] = count >= 0 ? static_cast<unsigned char>(count) : Searched;
               if (count < 0)
               {
                 list.push_back({ i, a, iu, iv });
@@ -255,12 +275,48 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
       });
     for (const auto& list : localSearched)
     {
-      cache.SearchedSamples.insert(cache.SearchedSamples.end(), list.begin(), list.end());
+      this->Cache.SearchedSamples.insert(
+        this->Cache.SearchedSamples.end(), list.begin(), list.end());
     }
-    cache.NeighboursKey = cache.SamplesKey;
+    this->Cache.NeighboursKey = this->Cache.SamplesKey;
   }
-  values.swap(out);
-  vtkOFBLICStretch(values.data(), n, mask, 0.0, 0.0);
+};
+
+/**
+ * The first pass's result in cache.Values stretched and high-pass filtered, in place.
+ * The neighbours of each sample are found once per packed samples (geometry and mask)
+ * and kept in the cache (vtkOFBLICCache::NeighbourCount, NeighbourOffsets): a later
+ * enhanced re-convolution (a new AnimationPhase) then sums the kept neighbours in the
+ * same order, in one pass over the samples, instead of searching again (the same
+ * values, bit for bit); only the samples whose neighbours do not fit
+ * (vtkOFBLICCache::SearchedSamples, about 1 % on the horse) are searched every time.
+ */
+inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
+{
+  vtkOFBLICBuffer<float>& values = cache.Values;
+  const vtkIdType n = static_cast<vtkIdType>(values.size());
+  vtkOFBLICStretch(values.data(), n, cache.Mask.data(), 0.0, 0.0);
+  cache.Scratch.resize(n);
+  const bool build =
+    cache.NeighboursKey != cache.SamplesKey || cache.NeighbourCount.size() != values.size();
+  if (build)
+  {
+    cache.NeighboursKey = vtkOFBLICCacheKey();
+    cache.NeighbourCount.resize(n);
+    cache.NeighbourOffsets.resize(static_cast<std::size_t>(n) * vtkOFBLICCache::MaxNeighbours);
+    cache.SearchedSamples.clear();
+  }
+  vtkOFBLICHighPassWork work(input, cache); // after the resizes: it holds raw pointers
+  if (build)
+  {
+    work.SearchingNeighbours();
+  }
+  else
+  {
+    work.FromKeptNeighbours(n);
+  }
+  values.swap(cache.Scratch);
+  vtkOFBLICStretch(values.data(), n, cache.Mask.data(), 0.0, 0.0);
 }
 
 #endif

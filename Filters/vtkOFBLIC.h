@@ -65,9 +65,9 @@
  * held.
  *
  * The convolution runs with vtkSMPTools; every sample is computed independently, so the
- * result is the same for any number of threads. Progress events are sent and
- * AbortExecute is honoured between blocks of tiles (an aborted run gives an empty
- * output).
+ * result is the same for any number of threads. Progress events (in steps of about
+ * 1 % of a pass) are sent and AbortExecute is honoured between tiles, by the thread that
+ * called Update (an aborted run gives an empty output).
  *
  * Bad input: no field array, a field without 3 components or an input without
  * "Normals": an error and an empty output. NaN and zero vectors are masked; a field
@@ -390,7 +390,7 @@ protected:
   std::vector<double> ComputeKernel() const;
 
   /**
-   * One convolution of `input` into `output` over all samples, in blocks of tiles with
+   * One convolution of `input` into `output` over all samples, tile by tile, with
    * progress from `progress0` to `progress1`. With `keep`, each sample's streamline is
    * read from the kept runs of fast LIC, traced first (TraceTile) when `trace` is true;
    * else every sample traces its own. False when aborted.

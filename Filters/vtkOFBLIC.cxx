@@ -37,6 +37,77 @@ namespace
 // the streamlines of the samples of its tile that it meets, and stops earlier once it
 // meets no sample it can give one (see TraceTile).
 constexpr int LongSteps = 10;
+
+/**
+ * Packs one sample's record for the tracer: position, unit normal (float normals are
+ * used as given, the sampler's are unit), the tangential part of the field and the mask
+ * (zero, non-finite or below the threshold). Pack returns 1 for a masked sample.
+ */
+struct SamplePacker
+{
+  const float* Normals;       // float normals, else null
+  vtkDataArray* NormalsArray; // the normals of any type
+  const float* Vectors;       // float vectors, else null
+  vtkDataArray* VectorsArray; // the field of any type
+  double Threshold;
+  bool OnSurface;
+
+  vtkIdType Pack(vtkOFBLICSample& s,
+    vtkIdType i,
+    const double x[3],
+    double& maxMag,
+    unsigned char& mask) const
+  {
+    double t[3];
+    glm::dvec3 nrm;
+    if (this->Normals)
+    {
+      nrm = vtkOFBLICTracer::Vec(this->Normals, i);
+    }
+    else
+    {
+      this->NormalsArray->GetTuple(i, t);
+      nrm = glm::dvec3(t[0], t[1], t[2]);
+      const double len = glm::length(nrm);
+      nrm = (len > 0.0 && std::isfinite(len)) ? nrm / len : glm::dvec3(0.0);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      s.Position[c] = static_cast<float>(x[c]);
+      s.Normal[c] = static_cast<float>(nrm[c]);
+      s.Field[c] = 0.0f;
+    }
+    // The float normal, as the tracer reads it.
+    nrm = vtkOFBLICTracer::Vec(s.Normal);
+    if (this->Vectors)
+    {
+      t[0] = this->Vectors[3 * i];
+      t[1] = this->Vectors[3 * i + 1];
+      t[2] = this->Vectors[3 * i + 2];
+    }
+    else
+    {
+      this->VectorsArray->GetTuple(i, t);
+    }
+    const glm::dvec3 v(t[0], t[1], t[2]);
+    const glm::dvec3 tangent = v - glm::dot(v, nrm) * nrm;
+    const double mag = glm::length(tangent);
+    const double test = this->OnSurface ? mag : glm::length(v);
+    if (!(mag > 0.0) || !std::isfinite(mag) || !std::isfinite(test) || test < this->Threshold)
+    {
+      mask = 1;
+      s.Flags |= 4;
+      return 1;
+    }
+    mask = 0;
+    maxMag = std::max(maxMag, mag);
+    for (int c = 0; c < 3; ++c)
+    {
+      s.Field[c] = static_cast<float>(tangent[c]);
+    }
+    return 0;
+  }
+};
 }
 
 //------------------------------------------------------------------------------
@@ -92,6 +163,7 @@ unsigned long vtkOFBLIC::GetCacheMemorySize() const
 {
   const vtkOFBLICCache& c = *this->Cache;
   const std::size_t bytes = c.Samples.capacity() * sizeof(vtkOFBLICSample) + c.Mask.capacity() +
+    c.TileFirst.capacity() * sizeof(vtkIdType) + c.TileIds.capacity() * sizeof(vtkTypeInt32) +
     c.Covered.capacity() + c.NeighbourCount.capacity() +
     c.NeighbourOffsets.capacity() * sizeof(vtkTypeInt16) +
     c.SearchedSamples.capacity() * sizeof(vtkOFBLICCache::SearchedSample) +
@@ -220,97 +292,98 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
   // Float normals are used as given (the sampler's are unit); others are made unit.
   vtkFloatArray* floatNormals = vtkFloatArray::SafeDownCast(normalsIn);
   const float* normals = floatNormals ? floatNormals->GetPointer(0) : nullptr;
-  const double threshold = this->MaskThreshold;
-  const bool onSurface = this->MaskOnSurface;
   vtkSMPThreadLocal<double> localMax(0.0);
   vtkSMPThreadLocal<vtkIdType> localMasked(0);
   // Position, normal, grid and tile, the tangential part of the field, the mask, and the
-  // largest magnitude left (for NormalizeVectors off); row by row of cells.
-  const vtkOFBLICTiles tiles(input->GetDimensions());
+  // largest magnitude left (for NormalizeVectors off), row by row of cells in chunks of
+  // rows of about equal numbers of samples; each chunk counts its samples per tile.
+  const double* origin = input->GetOrigin();
+  const double cellSize = input->GetCellSize();
+  const vtkIdType* dims = input->GetDimensions();
+  const vtkOFBLICTiles tiles(dims, origin, cellSize);
+  const vtkIdType numberOfTiles = tiles.GetNumberOfTiles();
   const vtkTypeUInt32* offsets = input->GetCellOffsets()->GetPointer(0);
   const float* depths = input->GetDepths()->GetPointer(0);
   vtkFloatArray* floatVectors = vtkFloatArray::SafeDownCast(vectors);
-  const float* vectorValues = floatVectors ? floatVectors->GetPointer(0) : nullptr;
-  const double* origin = input->GetOrigin();
-  const double cellSize = input->GetCellSize();
+  const SamplePacker packer = { normals,
+    normalsIn,
+    floatVectors ? floatVectors->GetPointer(0) : nullptr,
+    vectors,
+    this->MaskThreshold,
+    this->MaskOnSurface != 0 };
   vtkIdType rowBase[4] = { 0, 0, 0, 0 };
   for (int a = 0; a < 3; ++a)
   {
-    rowBase[a + 1] = rowBase[a] + tiles.Dimensions[(a + 2) % 3];
+    rowBase[a + 1] = rowBase[a] + dims[(a + 2) % 3];
   }
+  auto gridOfRow = [&](vtkIdType r) { return r < rowBase[1] ? 0 : (r < rowBase[2] ? 1 : 2); };
+  auto firstSampleOfRow = [&](vtkIdType r) -> vtkIdType
+  {
+    if (r >= rowBase[3])
+    {
+      return n;
+    }
+    const int a = gridOfRow(r);
+    return offsets[input->GetGridCellBase(a) + (r - rowBase[a]) * dims[(a + 1) % 3]];
+  };
+  const vtkIdType chunks = std::min<vtkIdType>(std::max<vtkIdType>(1, rowBase[3]),
+    4 * std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()));
+  std::vector<vtkIdType> chunkRow(chunks + 1, rowBase[3]);
+  std::vector<vtkIdType> chunkFirst(chunks + 1, n);
+  for (vtkIdType c = 0; c < chunks; ++c)
+  {
+    // The first row whose first sample is at or after c n / chunks.
+    vtkIdType lo = c > 0 ? chunkRow[c - 1] : 0;
+    vtkIdType hi = rowBase[3];
+    const vtkIdType target = n * c / chunks;
+    while (lo < hi)
+    {
+      const vtkIdType mid = (lo + hi) / 2;
+      if (firstSampleOfRow(mid) < target)
+      {
+        lo = mid + 1;
+      }
+      else
+      {
+        hi = mid;
+      }
+    }
+    chunkRow[c] = c > 0 ? lo : 0;
+    chunkFirst[c] = firstSampleOfRow(chunkRow[c]);
+  }
+  // Per chunk and tile: the count, then where the chunk's next sample of the tile goes.
+  std::vector<vtkTypeUInt32> perTile(static_cast<std::size_t>(chunks * numberOfTiles), 0);
   vtkSMPTools::For(0,
-    rowBase[3],
-    16,
-    [&](vtkIdType beginRow, vtkIdType endRow)
+    chunks,
+    1,
+    [&](vtkIdType beginChunk, vtkIdType endChunk)
     {
       double& maxMag = localMax.Local();
       vtkIdType& masked = localMasked.Local();
-      double t[3];
       double x[3];
-      for (vtkIdType r = beginRow; r < endRow; ++r)
+      for (vtkIdType chunk = beginChunk; chunk < endChunk; ++chunk)
       {
-        const int a = r < rowBase[1] ? 0 : (r < rowBase[2] ? 1 : 2);
-        const int ua = (a + 1) % 3;
-        const int va = (a + 2) % 3;
-        const vtkIdType iv = r - rowBase[a];
-        const vtkIdType nu = tiles.Dimensions[ua];
-        const vtkIdType row = input->GetGridCellBase(a) + iv * nu;
-        x[va] = origin[va] + (iv + 0.5) * cellSize;
-        for (vtkIdType iu = 0; iu < nu; ++iu)
+        vtkTypeUInt32* count = perTile.data() + chunk * numberOfTiles;
+        for (vtkIdType r = chunkRow[chunk]; r < chunkRow[chunk + 1]; ++r)
         {
-          x[ua] = origin[ua] + (iu + 0.5) * cellSize;
-          const vtkTypeInt32 flags = static_cast<vtkTypeInt32>(a | (tiles.TileOf(a, iu, iv) << 3));
-          for (vtkIdType i = offsets[row + iu], end = offsets[row + iu + 1]; i < end; ++i)
+          const int a = gridOfRow(r);
+          const int ua = (a + 1) % 3;
+          const int va = (a + 2) % 3;
+          const vtkIdType iv = r - rowBase[a];
+          const vtkIdType nu = dims[ua];
+          const vtkIdType row = input->GetGridCellBase(a) + iv * nu;
+          x[va] = origin[va] + (iv + 0.5) * cellSize;
+          for (vtkIdType iu = 0; iu < nu; ++iu)
           {
-            x[a] = origin[a] + depths[i];
-            vtkOFBLICSample& s = samples[i];
-            glm::dvec3 nrm;
-            if (normals)
+            x[ua] = origin[ua] + (iu + 0.5) * cellSize;
+            for (vtkIdType i = offsets[row + iu], end = offsets[row + iu + 1]; i < end; ++i)
             {
-              nrm = vtkOFBLICTracer::Vec(normals, i);
-            }
-            else
-            {
-              normalsIn->GetTuple(i, t);
-              nrm = glm::dvec3(t[0], t[1], t[2]);
-              const double len = glm::length(nrm);
-              nrm = (len > 0.0 && std::isfinite(len)) ? nrm / len : glm::dvec3(0.0);
-            }
-            for (int c = 0; c < 3; ++c)
-            {
-              s.Position[c] = static_cast<float>(x[c]);
-              s.Normal[c] = static_cast<float>(nrm[c]);
-              s.Field[c] = 0.0f;
-            }
-            // The float normal, as the tracer reads it.
-            nrm = vtkOFBLICTracer::Vec(s.Normal);
-            s.Flags = flags;
-            if (vectorValues)
-            {
-              t[0] = vectorValues[3 * i];
-              t[1] = vectorValues[3 * i + 1];
-              t[2] = vectorValues[3 * i + 2];
-            }
-            else
-            {
-              vectors->GetTuple(i, t);
-            }
-            const glm::dvec3 v(t[0], t[1], t[2]);
-            const glm::dvec3 tangent = v - glm::dot(v, nrm) * nrm;
-            const double mag = glm::length(tangent);
-            const double test = onSurface ? mag : glm::length(v);
-            if (!(mag > 0.0) || !std::isfinite(mag) || !std::isfinite(test) || test < threshold)
-            {
-              mask[i] = 1;
-              s.Flags |= 4;
-              ++masked;
-              continue;
-            }
-            mask[i] = 0;
-            maxMag = std::max(maxMag, mag);
-            for (int c = 0; c < 3; ++c)
-            {
-              s.Field[c] = static_cast<float>(tangent[c]);
+              x[a] = origin[a] + depths[i];
+              const vtkIdType tile = tiles.TileOf(x);
+              ++count[tile];
+              vtkOFBLICSample& s = samples[i];
+              s.Flags = static_cast<vtkTypeInt32>(a | (tile << 3));
+              masked += packer.Pack(s, i, x, maxMag, mask[i]);
             }
           }
         }
@@ -326,25 +399,50 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
   {
     masked += m;
   }
-  // Scale: unit vectors, or relative to the strongest flow.
-  const bool normalize = this->NormalizeVectors;
-  vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType begin, vtkIdType end)
+  // The tiles' lists: chunk after chunk within each tile, so each list is in increasing
+  // order whatever the number of threads.
+  vtkOFBLICCache& cache = *this->Cache;
+  cache.TileFirst.resize(numberOfTiles + 1);
+  cache.TileIds.resize(n);
+  vtkIdType next = 0;
+  for (vtkIdType tile = 0; tile < numberOfTiles; ++tile)
+  {
+    cache.TileFirst[tile] = next;
+    for (vtkIdType chunk = 0; chunk < chunks; ++chunk)
     {
-      for (vtkIdType i = begin; i < end; ++i)
+      vtkTypeUInt32& entry = perTile[chunk * numberOfTiles + tile];
+      const vtkTypeUInt32 count = entry;
+      entry = static_cast<vtkTypeUInt32>(next);
+      next += count;
+    }
+  }
+  cache.TileFirst[numberOfTiles] = next;
+  // Scale the field (unit vectors, or relative to the strongest flow) and list the
+  // samples in their tiles.
+  const bool normalize = this->NormalizeVectors;
+  vtkTypeInt32* tileIds = cache.TileIds.data();
+  vtkSMPTools::For(0,
+    chunks,
+    1,
+    [&](vtkIdType beginChunk, vtkIdType endChunk)
+    {
+      for (vtkIdType chunk = beginChunk; chunk < endChunk; ++chunk)
       {
-        if (mask[i])
+        vtkTypeUInt32* where = perTile.data() + chunk * numberOfTiles;
+        for (vtkIdType i = chunkFirst[chunk]; i < chunkFirst[chunk + 1]; ++i)
         {
-          continue;
-        }
-        float* f = samples[i].Field;
-        glm::dvec3 v = vtkOFBLICTracer::Vec(f);
-        v /= normalize ? glm::length(v) : maxMag;
-        for (int c = 0; c < 3; ++c)
-        {
-          f[c] = static_cast<float>(v[c]);
+          tileIds[where[samples[i].Tile()]++] = static_cast<vtkTypeInt32>(i);
+          if (mask[i])
+          {
+            continue;
+          }
+          float* f = samples[i].Field;
+          glm::dvec3 v = vtkOFBLICTracer::Vec(f);
+          v /= normalize ? glm::length(v) : maxMag;
+          for (int c = 0; c < 3; ++c)
+          {
+            f[c] = static_cast<float>(v[c]);
+          }
         }
       }
     });
@@ -448,7 +546,9 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   const unsigned char* mask = cache.Mask.data();
   const int steps = tracer.NumberOfSteps;
   const double* w = weights.data();
-  const vtkOFBLICTiles tiles(tracer.Dimensions);
+  vtkOFBLICTiles tiles(tracer.Dimensions, tracer.Origin, tracer.CellSize);
+  tiles.First = cache.TileFirst.data();
+  tiles.Ids = cache.TileIds.data();
   const vtkIdType numberOfTiles = tiles.GetNumberOfTiles();
   const bool fast = keep && trace;
   // Fast LIC: each thread appends the seed streamlines of its tiles to a store of its
@@ -507,7 +607,7 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
       for (vtkIdType t = begin; t < end && !aborted.load(std::memory_order_relaxed); ++t)
       {
         const vtkTypeInt32* runs = keep ? cache.TileRuns[t] : nullptr;
-        if (fast)
+        if (fast && tiles.First[t] < tiles.First[t + 1])
         {
           const std::size_t start = store->size();
           this->TraceTile(tracer, tiles, t, *store, covered, where, local.data());
@@ -515,8 +615,6 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
           runs = store->Ids.data() + start;
         }
         tiles.ForEachSample(t,
-          tracer.Offsets,
-          tracer.CellBase,
           [&](vtkIdType i)
           {
             if (mask[i])
@@ -585,8 +683,6 @@ void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
   // The tile's records and depths are fetched in row order first (streams the hardware
   // follows), so that the streamlines' random order of visits finds them in the cache.
   tiles.ForEachSample(tile,
-    tracer.Offsets,
-    tracer.CellBase,
     [&](vtkIdType i)
     {
       VTKOFB_PREFETCH(samples + i);
@@ -594,8 +690,6 @@ void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
       covered[i] = 0;
     });
   tiles.ForEachSample(tile,
-    tracer.Offsets,
-    tracer.CellBase,
     [&](vtkIdType i)
     {
       if (mask[i] || covered[i])

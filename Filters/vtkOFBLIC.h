@@ -35,8 +35,8 @@
  * LICIntensity, MapModeBias, the colour part of EnhanceContrast, MaskColor and
  * MaskIntensity in the final colour) are stored for the mapper.
  *
- * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (64 x 64
- * cells of a grid); from each sample of the tile not yet given a streamline, a longer
+ * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (the
+ * samples of all three grids in a cube of 64 x 64 x 64 cells); from each sample of the tile not yet given a streamline, a longer
  * one is traced both ways, and every sample of the tile that it meets gets the
  * NumberOfSteps steps each way around that meeting as its streamline. Each way goes on
  * while it keeps meeting samples it can give a streamline to (at most 10 NumberOfSteps

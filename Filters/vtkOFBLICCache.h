@@ -248,6 +248,8 @@ public:
   vtkOFBLICBuffer<vtkOFBLICSample> Samples;
   vtkOFBLICBuffer<unsigned char> Mask;
   vtkIdType Masked = 0;
+  std::vector<vtkIdType> TileFirst; // the samples of each tile (vtkOFBLICTiles)
+  vtkOFBLICBuffer<vtkTypeInt32> TileIds;
   vtkOFBLICCacheKey NoiseKey;
   vtkOFBLICBuffer<float> Noise;
   vtkOFBLICCacheKey LinesKey;          // Where, Runs, TileRuns
@@ -279,6 +281,8 @@ public:
     this->Masked = 0;
     this->Samples.Release();
     this->Mask.Release();
+    std::vector<vtkIdType>().swap(this->TileFirst);
+    this->TileIds.Release();
     this->Noise.Release();
     this->ReleaseLines();
     this->Covered.Release();

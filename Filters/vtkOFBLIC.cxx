@@ -167,6 +167,7 @@ unsigned long vtkOFBLIC::GetCacheMemorySize() const
     c.Covered.capacity() + c.NeighbourCount.capacity() +
     c.NeighbourOffsets.capacity() * sizeof(vtkTypeInt16) +
     c.SearchedSamples.capacity() * sizeof(vtkOFBLICCache::SearchedSample) +
+    c.SearchedIds.capacity() * sizeof(vtkTypeInt32) +
     (c.Noise.capacity() + c.Values.capacity() + c.Scratch.capacity()) * sizeof(float) +
     c.LinesBytes();
   return static_cast<unsigned long>((bytes + 1023) / 1024);

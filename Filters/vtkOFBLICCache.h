@@ -266,14 +266,14 @@ public:
   vtkOFBLICCacheKey NeighboursKey; // the SamplesKey they were found for
   vtkOFBLICBuffer<unsigned char> NeighbourCount;
   vtkOFBLICBuffer<vtkTypeInt16> NeighbourOffsets;
-  struct SearchedSample // a sample whose neighbours did not fit, and its cell
+  struct SearchedSample // a sample whose neighbours did not fit, and where its ids are
   {
     vtkIdType Id;
-    int Axis;
-    vtkIdType U;
-    vtkIdType V;
+    vtkIdType First; // in SearchedIds
+    vtkIdType Count;
   };
   std::vector<SearchedSample> SearchedSamples;
+  std::vector<vtkTypeInt32> SearchedIds; // their neighbours, in the order they are summed
 
   void Clear()
   {
@@ -292,6 +292,7 @@ public:
     this->NeighbourCount.Release();
     this->NeighbourOffsets.Release();
     std::vector<SearchedSample>().swap(this->SearchedSamples);
+    std::vector<vtkTypeInt32>().swap(this->SearchedIds);
   }
 
   void ReleaseLines()

@@ -615,6 +615,9 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
           tileStart[t] = { store, start };
           runs = store->Ids.data() + start;
         }
+        // The tile's input values first (the gather reads them in the streamlines' order,
+        // and tracing did not touch them).
+        tiles.ForEachSample(t, [&](vtkIdType i) { VTKOFB_PREFETCH(input + i); });
         tiles.ForEachSample(t,
           [&](vtkIdType i)
           {

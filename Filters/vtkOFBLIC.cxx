@@ -547,6 +547,7 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   const unsigned char* mask = cache.Mask.data();
   const int steps = tracer.NumberOfSteps;
   const double* w = weights.data();
+  const double inverseTotal = vtkOFBLICTracer::InverseTotal(w, steps);
   vtkOFBLICTiles tiles(tracer.Dimensions, tracer.Origin, tracer.CellSize);
   tiles.First = cache.TileFirst.data();
   tiles.Ids = cache.TileIds.data();
@@ -627,12 +628,13 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
             }
             else if (keep)
             {
-              output[i] = vtkOFBLICTracer::GatherRun(runs + where[i], steps, w, input);
+              output[i] =
+                vtkOFBLICTracer::GatherRun(runs + where[i], steps, w, inverseTotal, input);
             }
             else
             {
               tracer.Trace(i, local.data());
-              output[i] = vtkOFBLICTracer::Gather(i, local.data(), steps, w, input);
+              output[i] = vtkOFBLICTracer::Gather(i, local.data(), steps, w, inverseTotal, input);
             }
           });
         const vtkIdType done = ++tilesDone;

@@ -343,25 +343,34 @@ public:
 
   /**
    * Eq. 4 at sample i over the per-sample values `input`, along its streamline `line`;
-   * `weights` has 2 n + 1 entries, index n is t = 0.
+   * `weights` has 2 n + 1 entries, index n is t = 0; `inverseTotal` is 1 over their sum
+   * in the order summed here (a full streamline multiplies by it instead of dividing).
    */
   static float Gather(vtkIdType i,
     const vtkTypeInt32* line,
     int n,
     const double* weights,
+    double inverseTotal,
     const float* input)
   {
     double acc = weights[n] * input[i];
     double sum = weights[n];
+    int full = 0;
     for (int dir = 1; dir >= -1; dir -= 2)
     {
       const vtkTypeInt32* ids = line + (dir > 0 ? 0 : n);
       const double* w = weights + n + dir;
-      for (int s = 0; s < n && ids[s] >= 0; ++s, w += dir)
+      int s = 0;
+      for (; s < n && ids[s] >= 0; ++s, w += dir)
       {
         acc += *w * input[ids[s]];
         sum += *w;
       }
+      full += s;
+    }
+    if (full == 2 * n && inverseTotal > 0.0)
+    {
+      return static_cast<float>(acc * inverseTotal);
     }
     return sum > 1e-9 ? static_cast<float>(acc / sum) : input[i];
   }
@@ -370,21 +379,50 @@ public:
    * Eq. 4 as Gather, along a streamline kept in a run of fast LIC: at[0] is the sample,
    * at[s] and at[-s] its steps forward and backward, -1 where the streamline stops.
    */
-  static float GatherRun(const vtkTypeInt32* at, int n, const double* weights, const float* input)
+  static float GatherRun(const vtkTypeInt32* at,
+    int n,
+    const double* weights,
+    double inverseTotal,
+    const float* input)
   {
     double acc = weights[n] * input[at[0]];
     double sum = weights[n];
-    for (int s = 1; s <= n && at[s] >= 0; ++s)
+    int s = 1;
+    for (; s <= n && at[s] >= 0; ++s)
     {
       acc += weights[n + s] * input[at[s]];
       sum += weights[n + s];
     }
-    for (int s = 1; s <= n && at[-s] >= 0; ++s)
+    int b = 1;
+    for (; b <= n && at[-b] >= 0; ++b)
     {
-      acc += weights[n - s] * input[at[-s]];
-      sum += weights[n - s];
+      acc += weights[n - b] * input[at[-b]];
+      sum += weights[n - b];
+    }
+    if (s + b == 2 * n + 2 && inverseTotal > 0.0)
+    {
+      return static_cast<float>(acc * inverseTotal);
     }
     return sum > 1e-9 ? static_cast<float>(acc / sum) : input[at[0]];
+  }
+
+  /**
+   * 1 over the sum of the 2 n + 1 weights in the order Gather and GatherRun add them
+   * (the centre, then forward, then backward), 0 where it is not above 1e-9 (the
+   * division and its fallback then apply).
+   */
+  static double InverseTotal(const double* weights, int n)
+  {
+    double sum = weights[n];
+    for (int s = 1; s <= n; ++s)
+    {
+      sum += weights[n + s];
+    }
+    for (int s = 1; s <= n; ++s)
+    {
+      sum += weights[n - s];
+    }
+    return sum > 1e-9 ? 1.0 / sum : 0.0;
   }
 
   /**

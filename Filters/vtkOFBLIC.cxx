@@ -9,6 +9,7 @@
 #include "vtkOFBLICCache.h"
 #include "vtkOFBLICEnhance.h"
 #include "vtkOFBLICNoise.h"
+#include "vtkOFBLICPack.h"
 #include "vtkOFBLICTracer.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -37,77 +38,6 @@ namespace
 // the streamlines of the samples of its tile that it meets, and stops earlier once it
 // meets no sample it can give one (see TraceTile).
 constexpr int LongSteps = 10;
-
-/**
- * Packs one sample's record for the tracer: position, unit normal (float normals are
- * used as given, the sampler's are unit), the tangential part of the field and the mask
- * (zero, non-finite or below the threshold). Pack returns 1 for a masked sample.
- */
-struct SamplePacker
-{
-  const float* Normals;       // float normals, else null
-  vtkDataArray* NormalsArray; // the normals of any type
-  const float* Vectors;       // float vectors, else null
-  vtkDataArray* VectorsArray; // the field of any type
-  double Threshold;
-  bool OnSurface;
-
-  vtkIdType Pack(vtkOFBLICSample& s,
-    vtkIdType i,
-    const double x[3],
-    double& maxMag,
-    unsigned char& mask) const
-  {
-    double t[3];
-    glm::dvec3 nrm;
-    if (this->Normals)
-    {
-      nrm = vtkOFBLICTracer::Vec(this->Normals, i);
-    }
-    else
-    {
-      this->NormalsArray->GetTuple(i, t);
-      nrm = glm::dvec3(t[0], t[1], t[2]);
-      const double len = glm::length(nrm);
-      nrm = (len > 0.0 && std::isfinite(len)) ? nrm / len : glm::dvec3(0.0);
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      s.Position[c] = static_cast<float>(x[c]);
-      s.Normal[c] = static_cast<float>(nrm[c]);
-      s.Field[c] = 0.0f;
-    }
-    // The float normal, as the tracer reads it.
-    nrm = vtkOFBLICTracer::Vec(s.Normal);
-    if (this->Vectors)
-    {
-      t[0] = this->Vectors[3 * i];
-      t[1] = this->Vectors[3 * i + 1];
-      t[2] = this->Vectors[3 * i + 2];
-    }
-    else
-    {
-      this->VectorsArray->GetTuple(i, t);
-    }
-    const glm::dvec3 v(t[0], t[1], t[2]);
-    const glm::dvec3 tangent = v - glm::dot(v, nrm) * nrm;
-    const double mag = glm::length(tangent);
-    const double test = this->OnSurface ? mag : glm::length(v);
-    if (!(mag > 0.0) || !std::isfinite(mag) || !std::isfinite(test) || test < this->Threshold)
-    {
-      mask = 1;
-      s.Flags |= 4;
-      return 1;
-    }
-    mask = 0;
-    maxMag = std::max(maxMag, mag);
-    for (int c = 0; c < 3; ++c)
-    {
-      s.Field[c] = static_cast<float>(tangent[c]);
-    }
-    return 0;
-  }
-};
 }
 
 //------------------------------------------------------------------------------
@@ -286,76 +216,35 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
 vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normalsIn)
 {
   const vtkIdType n = input->GetNumberOfSamples();
-  vtkOFBLICBuffer<vtkOFBLICSample>& samples = this->Cache->Samples;
-  vtkOFBLICBuffer<unsigned char>& mask = this->Cache->Mask;
+  vtkOFBLICCache& cache = *this->Cache;
+  vtkOFBLICBuffer<vtkOFBLICSample>& samples = cache.Samples;
+  vtkOFBLICBuffer<unsigned char>& mask = cache.Mask;
   samples.resize(n);
   mask.resize(n);
-  // Float normals are used as given (the sampler's are unit); others are made unit.
   vtkFloatArray* floatNormals = vtkFloatArray::SafeDownCast(normalsIn);
-  const float* normals = floatNormals ? floatNormals->GetPointer(0) : nullptr;
-  vtkSMPThreadLocal<double> localMax(0.0);
-  vtkSMPThreadLocal<vtkIdType> localMasked(0);
-  // Position, normal, grid and tile, the tangential part of the field, the mask, and the
-  // largest magnitude left (for NormalizeVectors off), row by row of cells in chunks of
-  // rows of about equal numbers of samples; each chunk counts its samples per tile.
-  const double* origin = input->GetOrigin();
-  const double cellSize = input->GetCellSize();
-  const vtkIdType* dims = input->GetDimensions();
-  const vtkOFBLICTiles tiles(dims, origin, cellSize);
-  const vtkIdType numberOfTiles = tiles.GetNumberOfTiles();
-  const vtkTypeUInt32* offsets = input->GetCellOffsets()->GetPointer(0);
-  const float* depths = input->GetDepths()->GetPointer(0);
   vtkFloatArray* floatVectors = vtkFloatArray::SafeDownCast(vectors);
-  const SamplePacker packer = { normals,
+  const vtkOFBLICPacker packer = { floatNormals ? floatNormals->GetPointer(0) : nullptr,
     normalsIn,
     floatVectors ? floatVectors->GetPointer(0) : nullptr,
     vectors,
     this->MaskThreshold,
     this->MaskOnSurface != 0 };
-  vtkIdType rowBase[4] = { 0, 0, 0, 0 };
-  for (int a = 0; a < 3; ++a)
-  {
-    rowBase[a + 1] = rowBase[a] + dims[(a + 2) % 3];
-  }
-  auto gridOfRow = [&](vtkIdType r) { return r < rowBase[1] ? 0 : (r < rowBase[2] ? 1 : 2); };
-  auto firstSampleOfRow = [&](vtkIdType r) -> vtkIdType
-  {
-    if (r >= rowBase[3])
-    {
-      return n;
-    }
-    const int a = gridOfRow(r);
-    return offsets[input->GetGridCellBase(a) + (r - rowBase[a]) * dims[(a + 1) % 3]];
-  };
-  const vtkIdType chunks = std::min<vtkIdType>(std::max<vtkIdType>(1, rowBase[3]),
-    4 * std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()));
-  std::vector<vtkIdType> chunkRow(chunks + 1, rowBase[3]);
-  std::vector<vtkIdType> chunkFirst(chunks + 1, n);
-  for (vtkIdType c = 0; c < chunks; ++c)
-  {
-    // The first row whose first sample is at or after c n / chunks.
-    vtkIdType lo = c > 0 ? chunkRow[c - 1] : 0;
-    vtkIdType hi = rowBase[3];
-    const vtkIdType target = n * c / chunks;
-    while (lo < hi)
-    {
-      const vtkIdType mid = (lo + hi) / 2;
-      if (firstSampleOfRow(mid) < target)
-      {
-        lo = mid + 1;
-      }
-      else
-      {
-        hi = mid;
-      }
-    }
-    chunkRow[c] = c > 0 ? lo : 0;
-    chunkFirst[c] = firstSampleOfRow(chunkRow[c]);
-  }
-  // Per chunk and tile: the count, then where the chunk's next sample of the tile goes.
-  std::vector<vtkTypeUInt32> perTile(static_cast<std::size_t>(chunks * numberOfTiles), 0);
+  vtkSMPThreadLocal<double> localMax(0.0);
+  vtkSMPThreadLocal<vtkIdType> localMasked(0);
+  // Position, normal, grid and tile, the tangential part of the field, the mask, and the
+  // largest magnitude left (for NormalizeVectors off), row by row of cells in chunks of
+  // rows; each chunk counts its samples per tile.
+  const double* origin = input->GetOrigin();
+  const double cellSize = input->GetCellSize();
+  const vtkIdType* dims = input->GetDimensions();
+  const vtkOFBLICTiles tiles(dims, origin, cellSize);
+  const vtkTypeUInt32* offsets = input->GetCellOffsets()->GetPointer(0);
+  const float* depths = input->GetDepths()->GetPointer(0);
+  const vtkOFBLICRowChunks chunks(
+    input, 4 * std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()));
+  vtkOFBLICTileSort sort(chunks.Count, tiles.GetNumberOfTiles());
   vtkSMPTools::For(0,
-    chunks,
+    chunks.Count,
     1,
     [&](vtkIdType beginChunk, vtkIdType endChunk)
     {
@@ -364,27 +253,24 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
       double x[3];
       for (vtkIdType chunk = beginChunk; chunk < endChunk; ++chunk)
       {
-        vtkTypeUInt32* count = perTile.data() + chunk * numberOfTiles;
-        for (vtkIdType r = chunkRow[chunk]; r < chunkRow[chunk + 1]; ++r)
+        for (vtkIdType r = chunks.Row[chunk]; r < chunks.Row[chunk + 1]; ++r)
         {
-          const int a = gridOfRow(r);
+          const int a = chunks.GridOf(r);
           const int ua = (a + 1) % 3;
           const int va = (a + 2) % 3;
-          const vtkIdType iv = r - rowBase[a];
-          const vtkIdType nu = dims[ua];
-          const vtkIdType row = input->GetGridCellBase(a) + iv * nu;
+          const vtkIdType iv = r - chunks.RowBase[a];
+          const vtkIdType row = input->GetGridCellBase(a) + iv * dims[ua];
           x[va] = origin[va] + (iv + 0.5) * cellSize;
-          for (vtkIdType iu = 0; iu < nu; ++iu)
+          for (vtkIdType iu = 0; iu < dims[ua]; ++iu)
           {
             x[ua] = origin[ua] + (iu + 0.5) * cellSize;
             for (vtkIdType i = offsets[row + iu], end = offsets[row + iu + 1]; i < end; ++i)
             {
               x[a] = origin[a] + depths[i];
               const vtkIdType tile = tiles.TileOf(x);
-              ++count[tile];
-              vtkOFBLICSample& s = samples[i];
-              s.Flags = static_cast<vtkTypeInt32>(a | (tile << 3));
-              masked += packer.Pack(s, i, x, maxMag, mask[i]);
+              sort.Count(chunk, tile);
+              samples[i].Flags = static_cast<vtkTypeInt32>(a | (tile << 3));
+              masked += packer.Pack(samples[i], i, x, maxMag, mask[i]);
             }
           }
         }
@@ -400,39 +286,22 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
   {
     masked += m;
   }
-  // The tiles' lists: chunk after chunk within each tile, so each list is in increasing
-  // order whatever the number of threads.
-  vtkOFBLICCache& cache = *this->Cache;
-  cache.TileFirst.resize(numberOfTiles + 1);
+  sort.Finish(chunks.Count, cache.TileFirst);
   cache.TileIds.resize(n);
-  vtkIdType next = 0;
-  for (vtkIdType tile = 0; tile < numberOfTiles; ++tile)
-  {
-    cache.TileFirst[tile] = next;
-    for (vtkIdType chunk = 0; chunk < chunks; ++chunk)
-    {
-      vtkTypeUInt32& entry = perTile[chunk * numberOfTiles + tile];
-      const vtkTypeUInt32 count = entry;
-      entry = static_cast<vtkTypeUInt32>(next);
-      next += count;
-    }
-  }
-  cache.TileFirst[numberOfTiles] = next;
   // Scale the field (unit vectors, or relative to the strongest flow) and list the
   // samples in their tiles.
   const bool normalize = this->NormalizeVectors;
   vtkTypeInt32* tileIds = cache.TileIds.data();
   vtkSMPTools::For(0,
-    chunks,
+    chunks.Count,
     1,
     [&](vtkIdType beginChunk, vtkIdType endChunk)
     {
       for (vtkIdType chunk = beginChunk; chunk < endChunk; ++chunk)
       {
-        vtkTypeUInt32* where = perTile.data() + chunk * numberOfTiles;
-        for (vtkIdType i = chunkFirst[chunk]; i < chunkFirst[chunk + 1]; ++i)
+        for (vtkIdType i = chunks.First[chunk]; i < chunks.First[chunk + 1]; ++i)
         {
-          tileIds[where[samples[i].Tile()]++] = static_cast<vtkTypeInt32>(i);
+          sort.Place(chunk, samples[i].Tile(), i, tileIds);
           if (mask[i])
           {
             continue;

@@ -237,7 +237,7 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
   const double* origin = input->GetOrigin();
   const double cellSize = input->GetCellSize();
   const vtkIdType* dims = input->GetDimensions();
-  const vtkOFBLICTiles tiles(dims, origin, cellSize);
+  const vtkOFBLICTiles tiles(dims, origin, cellSize, n);
   const vtkTypeUInt32* offsets = input->GetCellOffsets()->GetPointer(0);
   const float* depths = input->GetDepths()->GetPointer(0);
   const vtkOFBLICRowChunks chunks(
@@ -417,7 +417,8 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   const int steps = tracer.NumberOfSteps;
   const double* w = weights.data();
   const double inverseTotal = vtkOFBLICTracer::InverseTotal(w, steps);
-  vtkOFBLICTiles tiles(tracer.Dimensions, tracer.Origin, tracer.CellSize);
+  vtkOFBLICTiles tiles(
+    tracer.Dimensions, tracer.Origin, tracer.CellSize, tracer.OFB->GetNumberOfSamples());
   tiles.First = cache.TileFirst.data();
   tiles.Ids = cache.TileIds.data();
   const vtkIdType numberOfTiles = tiles.GetNumberOfTiles();

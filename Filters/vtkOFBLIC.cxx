@@ -434,6 +434,7 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
     cache.Covered.resize(cache.Mask.size());
     cache.Where.resize(cache.Mask.size());
     cache.TileRuns.assign(numberOfTiles, nullptr);
+    cache.TileRunLengths.assign(numberOfTiles, 0);
     tileStart.assign(numberOfTiles, { nullptr, 0 });
     for (auto& store : cache.Runs)
     {
@@ -445,6 +446,7 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   vtkTypeInt32* where = cache.Where.data();
   vtkSMPThreadLocal<vtkOFBLICRunStore*> localStore(nullptr);
   vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
+  vtkSMPThreadLocal<std::vector<float>> localValues; // a tile's run values
   // One parallel loop over all tiles (16 loops over blocks of tiles, each waiting for
   // its slowest tile, took 8-10 % longer on the horse at 1024). Progress and abort are
   // handled by the calling thread between its tiles (observers run where they would
@@ -484,11 +486,22 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
           const std::size_t start = store->size();
           this->TraceTile(tracer, tiles, t, *store, covered, where, local.data());
           tileStart[t] = { store, start };
+          cache.TileRunLengths[t] = static_cast<vtkIdType>(store->size() - start);
           runs = store->Ids.data() + start;
         }
-        // The tile's input values first (the gather reads them in the streamlines' order,
-        // and tracing did not touch them).
+        // The tile's input values first (tracing did not touch them); with kept runs,
+        // copied in the runs' order so that each window is read contiguously.
         tiles.ForEachSample(t, [&](vtkIdType i) { VTKOFB_PREFETCH(input + i); });
+        std::vector<float>& values = localValues.Local();
+        if (runs)
+        {
+          const vtkIdType length = cache.TileRunLengths[t];
+          values.resize(std::max<std::size_t>(values.size(), length));
+          for (vtkIdType k = 0; k < length; ++k)
+          {
+            values[k] = runs[k] >= 0 ? input[runs[k]] : 0.0f;
+          }
+        }
         tiles.ForEachSample(t,
           [&](vtkIdType i)
           {
@@ -498,8 +511,8 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
             }
             else if (keep)
             {
-              output[i] =
-                vtkOFBLICTracer::GatherRun(runs + where[i], steps, w, inverseTotal, input);
+              output[i] = vtkOFBLICTracer::GatherRun(
+                runs + where[i], values.data() + where[i], steps, w, inverseTotal);
             }
             else
             {

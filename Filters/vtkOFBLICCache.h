@@ -256,6 +256,7 @@ public:
   vtkOFBLICBuffer<vtkTypeInt32> Where; // per sample: its place in its tile's seed streamlines
   std::vector<std::unique_ptr<vtkOFBLICRunStore>> Runs; // one a thread that traced
   std::vector<const vtkTypeInt32*> TileRuns;            // per tile: its first run id
+  std::vector<vtkIdType> TileRunLengths;                // per tile: its ids in the runs
   vtkOFBLICBuffer<unsigned char> Covered; // samples given their streamline, while tracing
   vtkOFBLICBuffer<float> Values;          // work buffers, kept to avoid allocating every update
   vtkOFBLICBuffer<float> Scratch;
@@ -300,12 +301,14 @@ public:
     this->Where.Release();
     this->Runs.clear();
     std::vector<const vtkTypeInt32*>().swap(this->TileRuns);
+    std::vector<vtkIdType>().swap(this->TileRunLengths);
   }
 
   std::size_t LinesBytes() const
   {
     std::size_t bytes = this->Where.capacity() * sizeof(vtkTypeInt32) +
-      this->TileRuns.capacity() * sizeof(const vtkTypeInt32*);
+      this->TileRuns.capacity() * sizeof(const vtkTypeInt32*) +
+      this->TileRunLengths.capacity() * sizeof(vtkIdType);
     for (const auto& r : this->Runs)
     {
       bytes += r->Ids.size() * sizeof(vtkTypeInt32); // the pages used of a larger mapping

@@ -398,33 +398,35 @@ public:
 
   /**
    * Eq. 4 as Gather, along a streamline kept in a run of fast LIC: at[0] is the sample,
-   * at[s] and at[-s] its steps forward and backward, -1 where the streamline stops.
+   * at[s] and at[-s] its steps forward and backward, -1 where the streamline stops, and
+   * v[s] the input value at at[s] (the run's values copied beside it, so that the window
+   * is read contiguously; a gather through the ids waited on its loads).
    */
   static float GatherRun(const vtkTypeInt32* at,
+    const float* v,
     int n,
     const double* weights,
-    double inverseTotal,
-    const float* input)
+    double inverseTotal)
   {
-    double acc = weights[n] * input[at[0]];
+    double acc = weights[n] * v[0];
     double sum = weights[n];
     int s = 1;
     for (; s <= n && at[s] >= 0; ++s)
     {
-      acc += weights[n + s] * input[at[s]];
+      acc += weights[n + s] * v[s];
       sum += weights[n + s];
     }
     int b = 1;
     for (; b <= n && at[-b] >= 0; ++b)
     {
-      acc += weights[n - b] * input[at[-b]];
+      acc += weights[n - b] * v[-b];
       sum += weights[n - b];
     }
     if (s + b == 2 * n + 2 && inverseTotal > 0.0)
     {
       return static_cast<float>(acc * inverseTotal);
     }
-    return sum > 1e-9 ? static_cast<float>(acc / sum) : input[at[0]];
+    return sum > 1e-9 ? static_cast<float>(acc / sum) : v[0];
   }
 
   /**

@@ -38,6 +38,55 @@ namespace
 // the streamlines of the samples of its tile that it meets, and stops earlier once it
 // meets no sample it can give one (see TraceTile).
 constexpr int LongSteps = 10;
+
+/**
+ * Progress and abort of one parallel loop over tiles: the thread that called Update
+ * sends the progress events (in steps of about 1 % of the loop) and reads AbortExecute
+ * after each of its tiles (observers run where they would outside the loop); the other
+ * threads see the abort through Aborted() and skip their remaining tiles.
+ */
+class TileProgress
+{
+public:
+  TileProgress(vtkAlgorithm* algorithm, vtkIdType tiles, double from, double to)
+    : Algorithm(algorithm)
+    , Tiles(tiles)
+    , From(from)
+    , To(to)
+    , Caller(std::this_thread::get_id())
+  {
+  }
+
+  bool Aborted() const { return this->Abort.load(std::memory_order_relaxed); }
+
+  void TileDone()
+  {
+    const vtkIdType done = ++this->Done;
+    if (std::this_thread::get_id() != this->Caller)
+    {
+      return;
+    }
+    if (100 * done / this->Tiles > 100 * this->Reported / this->Tiles)
+    {
+      this->Reported = done;
+      this->Algorithm->UpdateProgress(this->From + (this->To - this->From) * done / this->Tiles);
+    }
+    if (this->Algorithm->GetAbortExecute())
+    {
+      this->Abort = true;
+    }
+  }
+
+private:
+  vtkAlgorithm* Algorithm;
+  vtkIdType Tiles;
+  double From;
+  double To;
+  std::thread::id Caller;
+  std::atomic<vtkIdType> Done{ 0 };
+  std::atomic<bool> Abort{ false };
+  vtkIdType Reported = 0; // read and written by the calling thread only
+};
 }
 
 //------------------------------------------------------------------------------
@@ -448,13 +497,8 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
   vtkSMPThreadLocal<std::vector<float>> localValues; // a tile's run values
   // One parallel loop over all tiles (16 loops over blocks of tiles, each waiting for
-  // its slowest tile, took 8-10 % longer on the horse at 1024). Progress and abort are
-  // handled by the calling thread between its tiles (observers run where they would
-  // outside the loop); the other threads skip their remaining tiles on abort.
-  const std::thread::id caller = std::this_thread::get_id();
-  std::atomic<vtkIdType> tilesDone(0);
-  std::atomic<bool> aborted(false);
-  vtkIdType reported = 0; // read and written by the calling thread only
+  // its slowest tile, took 8-10 % longer on the horse at 1024).
+  TileProgress progress(this, numberOfTiles, progress0, progress1);
   vtkSMPTools::For(0,
     numberOfTiles,
     1,
@@ -478,7 +522,7 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
         store = freeStores.back();
         freeStores.pop_back();
       }
-      for (vtkIdType t = begin; t < end && !aborted.load(std::memory_order_relaxed); ++t)
+      for (vtkIdType t = begin; t < end && !progress.Aborted(); ++t)
       {
         const vtkTypeInt32* runs = keep ? cache.TileRuns[t] : nullptr;
         if (fast && tiles.First[t] < tiles.First[t + 1])
@@ -520,23 +564,10 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
               output[i] = vtkOFBLICTracer::Gather(i, local.data(), steps, w, inverseTotal, input);
             }
           });
-        const vtkIdType done = ++tilesDone;
-        if (std::this_thread::get_id() == caller)
-        {
-          // Progress events in steps of about 1 % of the pass.
-          if (100 * done / numberOfTiles > 100 * reported / numberOfTiles)
-          {
-            reported = done;
-            this->UpdateProgress(progress0 + (progress1 - progress0) * done / numberOfTiles);
-          }
-          if (this->GetAbortExecute())
-          {
-            aborted = true;
-          }
-        }
+        progress.TileDone();
       }
     });
-  if (aborted || this->GetAbortExecute())
+  if (progress.Aborted() || this->GetAbortExecute())
   {
     return false;
   }

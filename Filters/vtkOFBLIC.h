@@ -35,16 +35,15 @@
  * LICIntensity, MapModeBias, the colour part of EnhanceContrast, MaskColor and
  * MaskIntensity in the final colour) are stored for the mapper.
  *
- * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (the
- * samples of all three grids in a cube of 64 x 64 x 64 cells); from each sample of the tile not yet given a streamline, a longer
- * one is traced both ways, and every sample of the tile that it meets gets the
- * NumberOfSteps steps each way around that meeting as its streamline. Each way goes on
- * while it keeps meeting samples it can give a streamline to (at most 10 NumberOfSteps
- * steps) and stops NumberOfSteps steps after the last such sample. Each sample's
- * streamline thus passes through it (within the half cell of the sample lookup), but
- * most are read off a neighbour's instead of traced: a few steps a sample instead of
- * 2 NumberOfSteps. Tiles are independent, so the result does not depend on the number
- * of threads.
+ * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (the samples of all
+ * three grids in a cube of 64 x 64 x 64 cells); from each sample of the tile not yet given a
+ * streamline, a longer one is traced both ways, and every sample of the tile that it meets gets the
+ * NumberOfSteps steps each way around that meeting as its streamline. Each way goes on while it
+ * keeps meeting samples it can give a streamline to (at most 10 NumberOfSteps steps) and stops
+ * NumberOfSteps steps after the last such sample. Each sample's streamline thus passes through it
+ * (within the half cell of the sample lookup), but most are read off a neighbour's instead of
+ * traced: a few steps a sample instead of 2 NumberOfSteps. Tiles are independent, so the result
+ * does not depend on the number of threads.
  *
  * Streamlines are traced once and kept (CacheStreamlines, default on): an update that
  * changes only the kernel, AnimationPhase, the noise or the enhancement re-convolves by

@@ -46,6 +46,20 @@ float* LICValues(vtkOFB* ofb)
   return a ? a->GetPointer(0) : nullptr;
 }
 
+/// The filter run on 1 thread, then again on 2 (the SMP default restored after).
+void RunOnOneAndTwoThreads(vtkOFBLIC* lic,
+  vtkOFB* ofb,
+  vtkSmartPointer<vtkOFB>& one,
+  vtkSmartPointer<vtkOFB>& two)
+{
+  vtkSMPTools::Initialize(1);
+  one = RunLIC(lic, ofb);
+  vtkSMPTools::Initialize(2);
+  lic->Modified();
+  two = RunLIC(lic, ofb);
+  vtkSMPTools::Initialize(0);
+}
+
 // Whether two outputs have the same number of samples and bit-identical LIC arrays.
 bool SameLIC(vtkOFB* a, vtkOFB* b)
 {
@@ -138,12 +152,8 @@ TEST(LIC, IdenticalWithOneAndTwoThreads)
   vtkNew<vtkOFBLIC> lic;
   lic->SetNumberOfSteps(10);
   lic->SetNoiseGeneratorSeed(7);
-  vtkSMPTools::Initialize(1);
-  vtkSmartPointer<vtkOFB> one = RunLIC(lic, ofb);
-  vtkSMPTools::Initialize(2);
-  lic->Modified();
-  vtkSmartPointer<vtkOFB> two = RunLIC(lic, ofb);
-  vtkSMPTools::Initialize(0);
+  vtkSmartPointer<vtkOFB> one, two;
+  RunOnOneAndTwoThreads(lic, ofb, one, two);
   const vtkIdType n = one->GetNumberOfSamples();
   ASSERT_GT(n, 0);
   ASSERT_EQ(n, two->GetNumberOfSamples());
@@ -179,12 +189,8 @@ TEST(LIC, LargeBoxWithFewSamplesIsTiledToo)
   vtkNew<vtkOFBLIC> lic;
   lic->SetNumberOfSteps(10);
   lic->AnimateOn();
-  vtkSMPTools::Initialize(1);
-  vtkSmartPointer<vtkOFB> one = RunLIC(lic, ofb);
-  vtkSMPTools::Initialize(2);
-  lic->Modified();
-  vtkSmartPointer<vtkOFB> two = RunLIC(lic, ofb);
-  vtkSMPTools::Initialize(0);
+  vtkSmartPointer<vtkOFB> one, two;
+  RunOnOneAndTwoThreads(lic, ofb, one, two);
   EXPECT_TRUE(SameLIC(one, two));
   const float* values = LICValues(two);
   ASSERT_NE(values, nullptr);

@@ -7,9 +7,11 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
+#include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBLIC.h"
+#include "vtkOFBLICTracer.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -213,6 +215,45 @@ TEST(LIC, LargeBoxWithFewSamplesIsTiledToo)
   fresh->SetAnimationPhase(0.4);
   EXPECT_TRUE(SameLIC(phase, RunLIC(fresh, ofb)));
   EXPECT_FALSE(SameLIC(phase, two));
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, TracerClosestSampleIsTheOFBs)
+{
+  // The tracer's fallback lookup is a copy of vtkOFB::FindClosestSample specialised to
+  // its radius of sqrt(3) cells (no query planning): it must find the same sample.
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  const double axis[3] = { 0.3, 1.0, 0.2 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(bunny, 96, RotationField(axis));
+  ASSERT_GT(ofb->GetNumberOfSamples(), 0);
+  vtkOFBLICTracer tracer;
+  tracer.SetOFB(ofb);
+  tracer.SearchRadius = std::sqrt(3.0) * ofb->GetCellSize();
+  double b[6];
+  ofb->GetBounds(b);
+  vtkMinimalStandardRandomSequence* random = vtkMinimalStandardRandomSequence::New();
+  random->SetSeed(11);
+  int found = 0;
+  for (int k = 0; k < 20000; ++k)
+  {
+    // Points near samples (most queries find one) and anywhere in the box.
+    double q[3];
+    const vtkIdType i = static_cast<vtkIdType>(random->GetValue() * ofb->GetNumberOfSamples());
+    random->Next();
+    ofb->GetSamplePosition(std::min(i, ofb->GetNumberOfSamples() - 1), q);
+    for (int c = 0; c < 3; ++c)
+    {
+      q[c] = k % 4 == 0 ? b[2 * c] + random->GetValue() * (b[2 * c + 1] - b[2 * c])
+                        : q[c] + (random->GetValue() - 0.5) * 3.0 * ofb->GetCellSize();
+      random->Next();
+    }
+    const vtkIdType expected = ofb->FindClosestSample(q, tracer.SearchRadius);
+    ASSERT_EQ(tracer.FindClosest(glm::dvec3(q[0], q[1], q[2])), expected) << "query " << k;
+    found += expected >= 0;
+  }
+  random->Delete();
+  EXPECT_GT(found, 10000); // the comparison covered hits, not only misses
 }
 
 //------------------------------------------------------------------------------

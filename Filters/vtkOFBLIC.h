@@ -35,33 +35,33 @@
  * LICIntensity, MapModeBias, the colour part of EnhanceContrast, MaskColor and
  * MaskIntensity in the final colour) are stored for the mapper.
  *
- * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (the samples of all
- * three grids in a cube of 64 x 64 x 64 cells); from each sample of the tile not yet given a
- * streamline, a longer one is traced both ways, and every sample of the tile that it meets gets the
- * NumberOfSteps steps each way around that meeting as its streamline. Each way goes on while it
- * keeps meeting samples it can give a streamline to (at most 10 NumberOfSteps steps) and stops
- * NumberOfSteps steps after the last such sample. Each sample's streamline thus passes through it
- * (within the half cell of the sample lookup), but most are read off a neighbour's instead of
- * traced: a few steps a sample instead of 2 NumberOfSteps. Tiles are independent, so the result
- * does not depend on the number of threads.
+ * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (the
+ * samples of all three grids in a cube of 64 x 64 x 64 cells); from each sample of the
+ * tile not yet given a streamline, a longer one is traced both ways, and every sample
+ * of the tile that it meets gets the NumberOfSteps steps each way around that meeting
+ * as its streamline. Each way goes on while it keeps meeting samples it can give a
+ * streamline to (at most 10 NumberOfSteps steps) and stops NumberOfSteps steps after
+ * the last such sample. Each sample's streamline thus passes through it (within the
+ * half cell of the sample lookup), but most are read off a neighbour's instead of
+ * traced: a few steps a sample instead of 2 NumberOfSteps. Tiles are independent, so
+ * the result does not depend on the number of threads.
  *
  * Streamlines are traced once and kept (CacheStreamlines, default on): an update that
  * changes only the kernel, AnimationPhase, the noise or the enhancement re-convolves by
  * reading the kept streamlines instead of tracing them again, which makes an animation
  * frame many times cheaper than the first computation. What is kept, per sample: the
- * seed streamlines as sample ids (4 bytes each, a few a sample: each sample's streamline
- * is a window of one of them) and the sample's place in them (4 bytes), 40 bytes of
- * packed position, normal and field, 1 byte of mask and 4 of noise, plus 9 bytes of
- * work buffers; with EnhancedLIC also the high-pass's neighbours of each sample
- * (17 bytes: a count and up to 8 offsets), found once, so that an enhanced
- * re-convolution does not search them again.
- * The streamlines are traced again when the input's structure, field or normals array
- * (pointer or MTime), NumberOfSteps, StepSize, NormalizeVectors, FieldInterpolation,
- * MaskThreshold or MaskOnSurface change. With CacheStreamlines off only the packed
- * samples, mask, noise and work buffers are kept (53 bytes a sample), every update
- * traces again, and every sample traces its own streamline from its own position (the
- * plain LIC, several times slower than fast LIC). GetCacheMemorySize() gives what is
- * held.
+ * seed streamlines as sample ids (4 bytes each, a few a sample: each sample's
+ * streamline is a window of one of them) and the sample's place in them (4 bytes), 40
+ * bytes of packed position, normal and field, 1 byte of mask, 4 of noise and 4 of the
+ * tiles' sample lists, plus 9 bytes of work buffers; with EnhancedLIC also the
+ * high-pass's neighbours of each sample (17 bytes: a count and up to 8 offsets), found
+ * once, so that an enhanced re-convolution does not search them again. The streamlines
+ * are traced again when the input's structure, field or normals array (pointer or
+ * MTime), NumberOfSteps, StepSize, NormalizeVectors, FieldInterpolation, MaskThreshold
+ * or MaskOnSurface change. With CacheStreamlines off only the packed samples, mask,
+ * noise tile lists and work buffers are kept (57 bytes a sample), every update traces
+ * again, and every sample traces its own streamline from its own position (the plain
+ * LIC, several times slower than fast LIC). GetCacheMemorySize() gives what is held.
  *
  * The convolution runs with vtkSMPTools; every sample is computed independently, so the
  * result is the same for any number of threads. Progress events (in steps of about

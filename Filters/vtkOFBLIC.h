@@ -59,7 +59,7 @@
  * are traced again when the input's structure, field or normals array (pointer or
  * MTime), NumberOfSteps, StepSize, NormalizeVectors, FieldInterpolation, MaskThreshold
  * or MaskOnSurface change. With CacheStreamlines off only the packed samples, mask,
- * noise tile lists and work buffers are kept (57 bytes a sample), every update traces
+ * noise, tile lists and work buffers are kept (57 bytes a sample), every update traces
  * again, and every sample traces its own streamline from its own position (the plain
  * LIC, several times slower than fast LIC). GetCacheMemorySize() gives what is held.
  *

@@ -10,7 +10,7 @@ intensity of the surface colour: a scalar (the flow's speed) through a lookup ta
 grey.
 
 Run (from a build tree; Debian's python3 has VTK's modules):
-    PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 \
+    PYTHONPATH=build/lib/python3.11/dist-packages /usr/bin/python3 \
         Examples/Python/surface_lic.py Testing/Data/stanford-bunny.obj lic.png
 Options: --resolution (OFB cells on the longest side), --steps, --grain, --noise
 (uniform, gaussian, perlin), --color (speed or grey), --size (pixels), --up (the mesh's

@@ -3,7 +3,7 @@
 vtkOFBParticleAdvector painting it, vtkOFBPolyDataMapper drawing it, and the
 particles' trails as lines. Animated in a window, or headless with --image.
 
-Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages:
+Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages:
     python3 Examples/Python/surface_particles.py [mesh.ply|mesh.obj] [--image out.png]
 """
 

@@ -2,7 +2,7 @@
 """Python tests of vtkOFBLIC: the wrapped class in a pipeline, the LIC read through
 numpy, determinism for a seed, and bad input (an error event and an empty output).
 
-Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages;
+Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages;
 ctest does both.
 """
 

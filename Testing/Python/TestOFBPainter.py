@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Painting through the Python wrapping: a dab, a stroke, undo, the paint filter.
 
-Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages;
+Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages;
 the optional argument is the source directory. ctest does both.
 """
 

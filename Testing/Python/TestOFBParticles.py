@@ -2,7 +2,7 @@
 """Python test of vtkOFBParticleAdvector: the wrapped class in a pipeline, its
 outputs and arrays, painting an OFB, and bad input.
 
-Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages;
+Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages;
 the optional argument is the source directory. ctest does both.
 """
 

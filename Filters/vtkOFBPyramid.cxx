@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <string>
 #include <vector>
 
 namespace
@@ -38,10 +40,10 @@ public:
   }
 
   /**
-   * The arrays of the source to transfer (named, one tuple per sample), each with
-   * a new target array of zeros.
+   * The arrays of the source to transfer (named, one tuple per sample; only those in
+   * `names` unless it is null), each with a new target array of zeros.
    */
-  void CollectArrays()
+  void CollectArrays(const std::set<std::string>* names)
   {
     vtkPointData* spd = this->Source->GetSampleData();
     const vtkIdType nt = this->Target->GetNumberOfSamples();
@@ -49,7 +51,8 @@ public:
     {
       vtkDataArray* array = spd->GetArray(a);
       if (!array || !array->GetName() ||
-        array->GetNumberOfTuples() != this->Source->GetNumberOfSamples())
+        array->GetNumberOfTuples() != this->Source->GetNumberOfSamples() ||
+        (names && !names->count(array->GetName())))
       {
         continue;
       }
@@ -228,6 +231,10 @@ private:
   std::vector<float> TargetNormals;
 };
 
+/// vtkOFBPyramid::Resample of the arrays in `names` (all where it is null).
+bool ResampleArrays(
+  vtkOFB* source, vtkOFB* target, double radius, const std::set<std::string>* names);
+
 /// Scale the 3-component "Normals" sample array of `ofb` to unit length.
 void NormalizeSampleNormals(vtkOFB* ofb)
 {
@@ -249,6 +256,31 @@ void NormalizeSampleNormals(vtkOFB* ofb)
       normals->SetTuple(i, n);
     }
   }
+}
+}
+
+namespace
+{
+bool ResampleArrays(
+  vtkOFB* source, vtkOFB* target, double radius, const std::set<std::string>* names)
+{
+  if (!source || !target || !(radius > 0.0) || source->GetNumberOfSamples() == 0)
+  {
+    return false;
+  }
+  // Search at least the sqrt(3) cells of the source within which a surface point always
+  // has a sample, so that every target sample finds one.
+  radius = std::max(radius, std::sqrt(3.0) * source->GetCellSize());
+  ResampleFunctor transfer(source, target, radius);
+  transfer.CopyTargetNormals();
+  transfer.CollectArrays(names);
+  vtkSMPTools::For(0, target->GetNumberOfSamples(), transfer);
+  transfer.ReplaceTargetArrays();
+  if (!names || names->count("Normals"))
+  {
+    NormalizeSampleNormals(target);
+  }
+  return true;
 }
 }
 
@@ -346,9 +378,13 @@ bool vtkOFBPyramid::UpdateLevels()
     }
     this->StructureTime.Modified();
   }
-  if (rebuild || this->InputOFB->GetMTime() > this->ArraysTime.GetMTime())
+  if (rebuild)
   {
     this->UpdateArrays();
+  }
+  else if (this->InputOFB->GetMTime() > this->ArraysTime.GetMTime())
+  {
+    this->UpdateModifiedArrays();
   }
   return true;
 }
@@ -366,22 +402,55 @@ void vtkOFBPyramid::UpdateArrays()
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBPyramid::UpdateModifiedArrays()
+{
+  if (!this->InputOFB || this->Levels.empty())
+  {
+    this->ArraysTime.Modified();
+    return;
+  }
+  // The named sample arrays of level 0 modified (or new) since the last computation.
+  // All of them where level 1 lacks one of their names, or where none is newer although
+  // the OFB is (values changed in place without the array's Modified()).
+  vtkPointData* pd = this->InputOFB->GetSampleData();
+  vtkPointData* coarse = this->Levels[0]->GetSampleData();
+  std::set<std::string> changed;
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    if (!array || !array->GetName() ||
+      array->GetNumberOfTuples() != this->InputOFB->GetNumberOfSamples())
+    {
+      continue;
+    }
+    if (!coarse->GetArray(array->GetName()))
+    {
+      this->UpdateArrays();
+      return;
+    }
+    if (array->GetMTime() > this->ArraysTime.GetMTime())
+    {
+      changed.insert(array->GetName());
+    }
+  }
+  if (changed.empty())
+  {
+    this->UpdateArrays();
+    return;
+  }
+  for (size_t k = 0; k < this->Levels.size(); ++k)
+  {
+    vtkOFB* finer = k == 0 ? this->InputOFB : this->Levels[k - 1].Get();
+    vtkOFB* level = this->Levels[k];
+    ResampleArrays(finer, level, this->FilterRadius * level->GetCellSize(), &changed);
+  }
+  this->ArraysTime.Modified();
+}
+
+//------------------------------------------------------------------------------
 bool vtkOFBPyramid::Resample(vtkOFB* source, vtkOFB* target, double radius)
 {
-  if (!source || !target || !(radius > 0.0) || source->GetNumberOfSamples() == 0)
-  {
-    return false;
-  }
-  // Search at least the sqrt(3) cells of the source within which a surface point always
-  // has a sample, so that every target sample finds one.
-  radius = std::max(radius, std::sqrt(3.0) * source->GetCellSize());
-  ResampleFunctor transfer(source, target, radius);
-  transfer.CopyTargetNormals();
-  transfer.CollectArrays();
-  vtkSMPTools::For(0, target->GetNumberOfSamples(), transfer);
-  transfer.ReplaceTargetArrays();
-  NormalizeSampleNormals(target);
-  return true;
+  return ResampleArrays(source, target, radius, nullptr);
 }
 
 //------------------------------------------------------------------------------

@@ -12,7 +12,8 @@
  *
  * UpdateLevels() rebuilds the levels when the surface, the structure of level 0 or a
  * setting changed, and recomputes their arrays when level 0 was modified (its MTime)
- * since the last computation; UpdateArrays() forces the latter. (vtkOFBPyramid is a
+ * since the last computation (only the arrays modified since, where their MTimes tell:
+ * UpdateModifiedArrays()); UpdateArrays() recomputes all of them. (vtkOFBPyramid is a
  * helper object, not a pipeline algorithm: nothing updates it but these calls.) Both run on the CPU
  * (vtkSMPTools).
  *
@@ -94,6 +95,15 @@ public:
    * Recompute the sample arrays of levels 1.. from level 0 now.
    */
   void UpdateArrays();
+
+  /**
+   * Recompute only the arrays of levels 1.. whose level-0 array was modified (its
+   * MTime) or added since the last computation, as UpdateLevels() does when the
+   * structure is unchanged: a LIC re-convolution filters the LIC array alone. Where none
+   * is newer (values changed in place, e.g. by painting, with only the OFB Modified())
+   * or a level-0 array is missing from the coarser levels, everything is recomputed.
+   */
+  void UpdateModifiedArrays();
 
   /**
    * Number of levels, level 0 included (0 without an input OFB).

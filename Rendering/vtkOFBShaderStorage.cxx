@@ -171,7 +171,7 @@ vtkIdType vtkOFBShaderStorage::UploadChanges(const Selection& selection, std::st
     count += this->UploadRanges(this->Levels, 0, selection, this->Ranges, AllArrays & ~whole);
     if (mipmapped)
     {
-      count += this->UploadCoarseLevels(selection, whole != 0);
+      count += this->UploadCoarseLevels(selection, whole);
     }
   }
   this->RecordArrays(selection);
@@ -226,18 +226,21 @@ void vtkOFBShaderStorage::RecordArrays(const Selection& selection)
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection, bool arraysChanged)
+vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection, unsigned int whole)
 {
-  // Level 0 changed since the last upload: filter the coarser levels' attributes again.
-  if ((arraysChanged || this->Ranges->GetNumberOfTuples() > 0) &&
-    this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
+  // Level 0 changed since the last upload: filter the coarser levels' attributes again,
+  // only the arrays modified (a new LIC: the LIC alone) unless samples changed in place
+  // (ranges, e.g. painting), and upload the buffers of those arrays.
+  const bool inPlace = this->Ranges->GetNumberOfTuples() > 0;
+  if ((whole || inPlace) && this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
   {
-    this->Pyramid->UpdateArrays();
+    this->Pyramid->UpdateModifiedArrays();
   }
   if (this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
   {
     return 0;
   }
+  const unsigned int buffers = inPlace || !whole ? AllArrays : whole;
   vtkIdType count = 0;
   for (size_t k = 1; k < this->Levels.size(); ++k)
   {
@@ -245,7 +248,7 @@ vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection, bo
     this->Ranges->SetNumberOfComponents(2);
     const vtkIdType all[2] = { 0, this->Levels[k]->GetNumberOfSamples() };
     this->Ranges->InsertNextTypedTuple(all);
-    count += this->UploadRanges(this->Levels, static_cast<int>(k), selection, this->Ranges);
+    count += this->UploadRanges(this->Levels, static_cast<int>(k), selection, this->Ranges, buffers);
   }
   return count;
 }

@@ -201,7 +201,7 @@ private:
 
   void FreeBuffers();
   void ForgetUploads();
-  vtkIdType UploadCoarseLevels(const Selection& selection, bool arraysChanged);
+  vtkIdType UploadCoarseLevels(const Selection& selection, unsigned int whole);
   unsigned int UploadChangedArrays(const Selection& selection, vtkIdType& count);
   void RecordArrays(const Selection& selection);
   bool Allocate(int id, size_t bytes);

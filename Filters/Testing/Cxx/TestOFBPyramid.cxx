@@ -10,8 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -114,6 +116,73 @@ TEST(OFBPyramid, ConstantColourIsKeptAndFinePatternsAverageOut)
   const vtkMTimeType after = pyramid->GetArraysTime();
   ASSERT_TRUE(pyramid->UpdateLevels());
   EXPECT_EQ(pyramid->GetArraysTime(), after);
+}
+
+// A re-convolved LIC (a modified array) filters that array alone: the coarser levels'
+// other arrays stay the same objects, and the LIC's coarse values are those of a full
+// recomputation.
+TEST(OFBPyramid, OnlyModifiedArraysAreFilteredAgain)
+{
+  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
+  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 128);
+  Fill(ofb, 10, 200, 30);
+  vtkNew<vtkFloatArray> lic;
+  lic->SetName("LIC");
+  lic->SetNumberOfTuples(ofb->GetNumberOfSamples());
+  lic->Fill(0.25);
+  ofb->GetSampleData()->AddArray(lic);
+  vtkNew<vtkOFBPyramid> pyramid;
+  pyramid->SetInputOFB(ofb);
+  pyramid->SetSurface(sphere);
+  ASSERT_TRUE(pyramid->UpdateLevels());
+  const int levels = pyramid->GetNumberOfLevels();
+  ASSERT_GE(levels, 3);
+  std::vector<vtkDataArray*> colors;
+  for (int k = 1; k < levels; ++k)
+  {
+    colors.push_back(pyramid->GetLevel(k)->GetSampleData()->GetArray("Colors"));
+    EXPECT_NEAR(pyramid->GetLevel(k)->GetSampleData()->GetArray("LIC")->GetComponent(0, 0),
+      0.25, 1e-6);
+  }
+  // A new LIC: the height of each sample.
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    ofb->GetSamplePosition(i, x);
+    lic->SetValue(i, static_cast<float>(0.5 + 0.5 * x[2]));
+  }
+  lic->Modified();
+  ofb->Modified();
+  const vtkMTimeType before = pyramid->GetArraysTime();
+  ASSERT_TRUE(pyramid->UpdateLevels());
+  EXPECT_GT(pyramid->GetArraysTime(), before);
+  std::vector<std::vector<double>> partial;
+  for (int k = 1; k < levels; ++k)
+  {
+    vtkPointData* pd = pyramid->GetLevel(k)->GetSampleData();
+    EXPECT_EQ(pd->GetArray("Colors"), colors[k - 1]) << "level " << k << " filtered again";
+    vtkDataArray* coarse = pd->GetArray("LIC");
+    partial.emplace_back();
+    for (vtkIdType i = 0; i < coarse->GetNumberOfTuples(); ++i)
+    {
+      partial.back().push_back(coarse->GetComponent(i, 0));
+    }
+  }
+  pyramid->UpdateArrays();
+  for (int k = 1; k < levels; ++k)
+  {
+    vtkPointData* pd = pyramid->GetLevel(k)->GetSampleData();
+    EXPECT_NE(pd->GetArray("Colors"), colors[k - 1]);
+    vtkDataArray* coarse = pd->GetArray("LIC");
+    ASSERT_EQ(static_cast<size_t>(coarse->GetNumberOfTuples()), partial[k - 1].size());
+    double spread = 0.0;
+    for (vtkIdType i = 0; i < coarse->GetNumberOfTuples(); ++i)
+    {
+      ASSERT_NEAR(coarse->GetComponent(i, 0), partial[k - 1][i], 1e-4) << "level " << k;
+      spread = std::max(spread, std::fabs(partial[k - 1][i] - 0.25));
+    }
+    EXPECT_GT(spread, 0.2) << "level " << k << " kept the old LIC";
+  }
 }
 
 TEST(OFBPyramid, ResampleTransfersFloatArrays)

@@ -121,6 +121,8 @@ const char* vtkOFBPolyDataMapper::GetLookupModeAsString(int mode)
       return "InverseDistance";
     case Mipmapped:
       return "Mipmapped";
+    case NearestMipmapped:
+      return "NearestMipmapped";
     default:
       return "Unknown";
   }
@@ -444,7 +446,7 @@ void vtkOFBPolyDataMapper::CheckSurfaceInFrame(vtkOFB* ofb)
 //------------------------------------------------------------------------------
 bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorage::Selection& selection)
 {
-  if (!this->Storage->UpdateLevels(ofb, this->GetInput(), this->LookupMode == Mipmapped,
+  if (!this->Storage->UpdateLevels(ofb, this->GetInput(), this->LookupMode == Mipmapped || this->LookupMode == NearestMipmapped,
         this->MaximumNumberOfMipmapLevels, this->MinimumMipmapResolution))
   {
     this->WarnOnce("The mipmap pyramid could not be built: using level 0 only.");

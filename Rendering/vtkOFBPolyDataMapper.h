@@ -24,6 +24,14 @@
  * - Mipmapped: InverseDistance on a pyramid of coarser OFBs (vtkOFBPyramid, built on
  *   demand from the input surface), the level chosen from the fragment's footprint in
  *   cells and blended between the two nearest levels.
+ * - NearestMipmapped: Nearest on the same pyramid, in the one level whose cells are
+ *   nearest to the fragment's footprint (round(log2(cells per pixel) + MipmapBias), as
+ *   GL_NEAREST_MIPMAP_NEAREST for a texture): detail finer than a pixel (a LIC or paint of
+ *   a high-resolution OFB seen whole) shows its filtered mean instead of aliasing, and the
+ *   lookup reads a level about as fine as the screen, which keeps it in the cache (frame
+ *   times: README, "Surface LIC"). Where the footprint is under 1.41 cells
+ *   (close-ups) it reads level 0 as Nearest does. The pyramid's arrays are filtered
+ *   again whenever the OFB's arrays change (an animated LIC then costs that too).
  *
  * Colour sources: Paint (the OFB's "Colors" array) or Scalars (a named float sample
  * array mapped through the mapper's lookup table over its ScalarRange, or the table's own
@@ -59,7 +67,7 @@
  * | EnhanceContrast COLOR/BOTH,       | not offered: the combined colour is not stretched  |
  * |   Low/HighColorContrastEnh...     |                                                    |
  * | AntiAlias                         | not needed: the LIC lives on the surface; the      |
- * |                                   |   InverseDistance/Mipmapped lookups filter it      |
+ * |                                   |   InverseDistance and mipmapped lookups filter it  |
  * | CompositeStrategy                 | not applicable (no image-space compositing)        |
  *
  * With UsePaintedNormals the OFB's "Normals" shade the surface. The colour replaces the
@@ -119,7 +127,8 @@ public:
   {
     Nearest = 0,
     InverseDistance = 1,
-    Mipmapped = 2
+    Mipmapped = 2,
+    NearestMipmapped = 3
   };
 
   enum ColorSources
@@ -140,14 +149,15 @@ public:
 
   ///@{
   /**
-   * How a fragment's colour is read from the OFB: Nearest (default), InverseDistance or
-   * Mipmapped.
+   * How a fragment's colour is read from the OFB: Nearest (default), InverseDistance,
+   * Mipmapped or NearestMipmapped.
    */
-  vtkSetClampMacro(LookupMode, int, Nearest, Mipmapped);
+  vtkSetClampMacro(LookupMode, int, Nearest, NearestMipmapped);
   vtkGetMacro(LookupMode, int);
   void SetLookupModeToNearest() { this->SetLookupMode(Nearest); }
   void SetLookupModeToInverseDistance() { this->SetLookupMode(InverseDistance); }
   void SetLookupModeToMipmapped() { this->SetLookupMode(Mipmapped); }
+  void SetLookupModeToNearestMipmapped() { this->SetLookupMode(NearestMipmapped); }
   static const char* GetLookupModeAsString(int mode);
   ///@}
 
@@ -163,8 +173,9 @@ public:
 
   ///@{
   /**
-   * Mipmapped mode: number added to the level computed from the footprint (log2 of the
-   * cells a pixel covers); positive values blur, negative sharpen. Default 0.
+   * Mipmapped and NearestMipmapped modes: number added to the level computed from the
+   * footprint (log2 of the cells a pixel covers); positive values blur, negative sharpen.
+   * Default 0.
    */
   vtkSetMacro(MipmapBias, double);
   vtkGetMacro(MipmapBias, double);
@@ -172,8 +183,8 @@ public:
 
   ///@{
   /**
-   * Mipmapped mode: most pyramid levels, level 0 included (1..16, default 8), and the
-   * coarsest resolution in cells on the longest side (default 8).
+   * Mipmapped and NearestMipmapped modes: most pyramid levels, level 0 included (1..16,
+   * default 8), and the coarsest resolution in cells on the longest side (default 8).
    */
   vtkSetClampMacro(MaximumNumberOfMipmapLevels, int, 1, 16);
   vtkGetMacro(MaximumNumberOfMipmapLevels, int);

@@ -3,7 +3,8 @@
 // fragment from the samples of a vtkOFB (paper "Sample-based Surface Coloring", 4.1-4.2).
 //
 // The mapper defines before this text:
-//   OFB_MODE            0 nearest sample, 1 inverse-distance weighting, 2 mipmapped IDW
+//   OFB_MODE            0 nearest sample, 1 inverse-distance weighting, 2 mipmapped IDW,
+//                       3 nearest sample in the level nearest to the fragment's footprint
 //   OFB_MAX_LEVELS      size of the per-level uniform arrays
 //   OFB_SOURCE_SCALARS  colour from a float sample attribute through a lookup table, else paint
 //   OFB_USE_INTENSITY   a float sample array (the LIC) combines with the colour
@@ -287,6 +288,10 @@ ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
   return ofbLookupNearest(0, g0, n);
 #elif OFB_MODE == 1
   return ofbLookupIDW(0, g0);
+#elif OFB_MODE == 3
+  // The level whose cells are nearest to the footprint (level 0 below 1.41 cells).
+  int L = clamp(int(floor(lod + ofbMipmapBias + 0.5)), 0, ofbNumberOfLevels - 1);
+  return ofbLookupNearest(L, ofbLevelPosition(L, g0), n);
 #else
   float level = clamp(lod + ofbMipmapBias, 0.0, float(ofbNumberOfLevels - 1));
   int l0 = int(floor(level));

@@ -12,8 +12,10 @@
 // Keys: Up/Down steps +-5; Right/Left noise grain x2 / /2; m colour mode (the speed
 // through a lookup table combined with the LIC in VTK surface LIC's map mode, then its
 // blend mode with LICIntensity 0.8, then the grey LIC alone); n noise type; o oriented LIC;
-// l enhanced LIC; space animation (the streaks flow: the LIC is recomputed with a new
-// AnimationPhase on a repeating timer). Mouse: VTK's trackball camera.
+// l enhanced LIC; d display lookup (InverseDistance, NearestMipmapped: antialiased where
+// a pixel covers many cells, Nearest); space animation (the streaks flow: the LIC is
+// recomputed with a new AnimationPhase on a repeating timer). Mouse: VTK's trackball
+// camera.
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
@@ -87,7 +89,9 @@ struct App
          << ", n noise: " << noise[this->LIC->GetNoiseType()] << "\n"
          << "o oriented: " << (this->LIC->GetOrientedLIC() ? "on" : "off")
          << ", l enhanced: " << (this->LIC->GetEnhancedLIC() ? "on" : "off")
-         << ", space animation: " << (this->Animating ? "on" : "off");
+         << ", space animation: " << (this->Animating ? "on" : "off") << "\n"
+         << "d display: "
+         << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode());
     this->Text->SetInput(text.str().c_str());
     this->Window->Render();
   }
@@ -122,6 +126,13 @@ struct App
     else if (key == "l")
     {
       lic->SetEnhancedLIC(!lic->GetEnhancedLIC());
+    }
+    else if (key == "d")
+    {
+      static const int next[4] = { vtkOFBPolyDataMapper::InverseDistance,
+        vtkOFBPolyDataMapper::NearestMipmapped, vtkOFBPolyDataMapper::InverseDistance,
+        vtkOFBPolyDataMapper::Nearest };
+      this->Mapper->SetLookupMode(next[this->Mapper->GetLookupMode()]);
     }
     else if (key == "space")
     {
@@ -165,7 +176,7 @@ public:
   }
   void OnChar() override
   {
-    const std::string keys = "mnol ";
+    const std::string keys = "mnold ";
     if (keys.find(this->Interactor->GetKeyCode()) == std::string::npos)
     {
       this->Superclass::OnChar();

@@ -26,11 +26,12 @@
 //   printed per sample) per second, and its share of the STREAM-triad bandwidth
 //   measured with the same number of threads in the same run.
 // Frames (2 threads, each mesh and resolution): the median frame time of the plain
-// mapper (one colour), of vtkOFBPolyDataMapper showing the LIC (Nearest and
-// InverseDistance lookups), of the same mapper without the LIC (Nearest, the sampler's
-// colours: what the LIC itself adds to a frame) and of an animation frame (new
-// AnimationPhase, LIC update, upload of the LIC array and render), as ratios to the
-// plain mapper's frame. The
+// mapper (one colour), of vtkOFBPolyDataMapper showing the LIC (Nearest, InverseDistance
+// and NearestMipmapped lookups), of the same mapper without the LIC (Nearest, the
+// sampler's colours: what the LIC itself adds to a frame) and of an animation frame (new
+// AnimationPhase, LIC update, upload of the LIC array and render; with NearestMipmapped
+// also the filtering of the pyramid's arrays and their upload), as ratios to the plain
+// mapper's frame. The
 // mappers take turns within every round, so that a change of load hits all of them.
 // On a shared machine the numbers are noisy: compare the ratios, repeat, and note the
 // load (printed from /proc/loadavg at the start and the end).
@@ -461,17 +462,19 @@ void RunFrames(const Options& o,
   plain->SetInputData(mesh);
   plain->ScalarVisibilityOff();
   std::vector<vtkSmartPointer<vtkMapper>> mappers = { plain.Get() };
-  // The OFB mapper showing the LIC (Nearest, InverseDistance), then without it (Nearest,
-  // the sampler's colours only): the cost of the LIC in the display itself.
+  // The OFB mapper showing the LIC (Nearest, InverseDistance, NearestMipmapped), then
+  // without it (Nearest, the sampler's colours only): the cost of the LIC in the display
+  // itself.
   for (int mode : { vtkOFBPolyDataMapper::Nearest,
          vtkOFBPolyDataMapper::InverseDistance,
+         vtkOFBPolyDataMapper::NearestMipmapped,
          vtkOFBPolyDataMapper::Nearest })
   {
     vtkNew<vtkOFBPolyDataMapper> m;
     m->SetInputData(mesh);
     m->SetOFBConnection(lic->GetOutputPort());
     m->SetLookupMode(mode);
-    if (mappers.size() < 3)
+    if (mappers.size() < 4)
     {
       m->SetIntensityArrayName("LIC");
       m->IntensityModulationOn();
@@ -483,9 +486,9 @@ void RunFrames(const Options& o,
   window->Render();
   vtkNew<vtkCamera> start;
   start->DeepCopy(renderer->GetActiveCamera());
-  // Rows: plain, LIC Nearest, LIC InverseDistance, Nearest without the LIC, animation
-  // (LIC Nearest with a new phase a frame).
-  std::vector<std::vector<double>> ms(5);
+  // Rows: plain, LIC Nearest, LIC InverseDistance, LIC NearestMipmapped, Nearest without
+  // the LIC, animation (LIC Nearest, then LIC NearestMipmapped, with a new phase a frame).
+  std::vector<std::vector<double>> ms(7);
   auto nothing = [](int) {};
   for (int r = 0; r < o.Rounds; ++r)
   {
@@ -494,17 +497,20 @@ void RunFrames(const Options& o,
       actor->SetMapper(mappers[m]);
       ms[m].push_back(TimeFrames(window, renderer, start, o.Frames, nothing));
     }
-    actor->SetMapper(mappers[1]);
-    ms[4].push_back(TimeFrames(window,
-      renderer,
-      start,
-      o.Frames,
-      [&](int i) { lic->SetAnimationPhase(0.05 * (i + 1) + 0.01 * r); }));
+    for (int a = 0; a < 2; ++a)
+    {
+      actor->SetMapper(mappers[a == 0 ? 1 : 3]);
+      ms[5 + a].push_back(TimeFrames(window,
+        renderer,
+        start,
+        o.Frames,
+        [&](int i) { lic->SetAnimationPhase(0.05 * (i + 1) + 0.01 * r + 0.5 * a); }));
+    }
   }
   const double peer = Median(ms[0]);
   std::cout << std::left << std::setw(7) << name << std::right << std::setw(5) << resolution
             << std::fixed << std::setprecision(1) << std::setw(10) << peer;
-  for (int m = 1; m < 5; ++m)
+  for (int m = 1; m < 7; ++m)
   {
     const double t = Median(ms[m]);
     std::cout << std::setw(10) << t << " (" << std::setprecision(2) << t / peer << "x)"
@@ -578,7 +584,8 @@ int main(int argc, char* argv[])
               << (o.OffScreen ? " off screen" : "") << ", " << o.Frames
               << " frames a mapper and round, LIC on 2 threads):\n"
               << "mesh     res     plain  LIC Nearest        LIC InverseDistance   "
-                 "no LIC, Nearest    animation frame (new phase + render)\n";
+                 "LIC NearestMipmapped  no LIC, Nearest    animation frame (new phase + "
+                 "render): Nearest, NearestMipmapped\n";
     for (const Built& b : built)
     {
       RunFrames(o, b.Name, b.Resolution, b.Mesh, b.OFB);

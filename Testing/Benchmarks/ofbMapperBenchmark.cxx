@@ -1,14 +1,14 @@
 // ofbMapperBenchmark: frame time of vtkOFBPolyDataMapper (Nearest, InverseDistance,
-// Mipmapped) against VTK's own poly data mapper with vertex colours, on the same mesh
+// Mipmapped, NearestMipmapped) against VTK's own poly data mapper with vertex colours, on the same mesh
 // (the Stanford bunny by default) in the same window, printed as ratios.
 // Not a test: run it by hand, under xvfb-run on a headless machine:
 //   xvfb-run -a -s "-screen 0 1280x1024x24" ofbMapperBenchmark [options]
 // Options: --mesh FILE (.obj/.ply), --resolution N (OFB cells, default 1024),
 // --frames N (timed frames per mapper and round, default 30), --rounds N (default 3),
 // --warmup N (untimed frames before each timing, default 3), --modes LIST (comma-separated
-// subset of nearest,idw,mipmapped; default all), --width W --height H (1280x1024),
-// --images PREFIX (write PREFIX<k>-<mapper>.ppm of the first view of every mapper),
-// --offscreen (render off screen: the frame is not copied to the X server).
+// subset of nearest,idw,mipmapped,nearestmipmapped; default all), --width W --height H
+// (1280x1024), --images PREFIX (write PREFIX<k>-<mapper>.ppm of the first view of every
+// mapper), --offscreen (render off screen: the frame is not copied to the X server).
 // Fairness: one window, renderer, actor, property and headlight for every mapper; each
 // timing starts from the same camera and turns it once around the surface; the mappers
 // take turns within every round (so that a change of machine load hits all of them), and
@@ -162,7 +162,8 @@ struct Options
   bool OffScreen = false;
   std::vector<int> Modes = { vtkOFBPolyDataMapper::Nearest,
     vtkOFBPolyDataMapper::InverseDistance,
-    vtkOFBPolyDataMapper::Mipmapped };
+    vtkOFBPolyDataMapper::Mipmapped,
+    vtkOFBPolyDataMapper::NearestMipmapped };
 };
 
 // Lookup modes from a comma-separated list; false on an unknown name.
@@ -185,6 +186,10 @@ bool ParseModes(const std::string& list, std::vector<int>& modes)
     else if (name == "mipmapped")
     {
       modes.push_back(vtkOFBPolyDataMapper::Mipmapped);
+    }
+    else if (name == "nearestmipmapped")
+    {
+      modes.push_back(vtkOFBPolyDataMapper::NearestMipmapped);
     }
     else if (!name.empty())
     {
@@ -264,7 +269,7 @@ int ParseOptions(int argc, char* argv[], Options& o)
       continue;
     }
     std::cout << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
-                 "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped] [--width W] "
+                 "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped,nearestmipmapped] [--width W] "
                  "[--height H] [--images PREFIX] [--offscreen]\n";
     return arg == "--help" ? 0 : 1;
   }
@@ -447,7 +452,7 @@ double PrintMedians(const Bench& b, const Options& o)
 // PREFIX<k>-<mapper>.ppm of the first view of every mapper.
 void WriteImages(Bench& b, const Options& o)
 {
-  const char* files[4] = { "peer", "nearest", "idw", "mipmapped" };
+  const char* files[5] = { "peer", "nearest", "idw", "mipmapped", "nearestmipmapped" };
   for (size_t m = 0; m < b.Mappers.size(); ++m)
   {
     b.Actor->SetMapper(b.Mappers[m]);

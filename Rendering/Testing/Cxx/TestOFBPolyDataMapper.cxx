@@ -26,6 +26,7 @@
 
 #include <array>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -101,7 +102,8 @@ TEST(OFBPolyDataMapper, AllRedOFBGivesARedCentrePixel)
 
 TEST(OFBPolyDataMapper, EveryLookupModeReadsTheOFB)
 {
-  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::Mipmapped; ++mode)
+  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::NearestMipmapped;
+       ++mode)
   {
     Scene scene;
     scene.Fill(0, 0, 255);
@@ -115,13 +117,99 @@ TEST(OFBPolyDataMapper, EveryLookupModeReadsTheOFB)
   }
 }
 
+// The sphere's pixels (those not of the black background) of the window's image: their
+// number and the mean and variance of their red channel.
+struct SpherePixels
+{
+  int Count = 0;
+  double Mean = 0.0;
+  double Variance = 0.0;
+  std::vector<unsigned char> Image;
+};
+
+SpherePixels GrabSphere(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  vtkImageData* image = grab->GetOutput();
+  const int* dims = image->GetDimensions();
+  const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
+  SpherePixels out;
+  out.Image.assign(p, p + 3 * dims[0] * dims[1]);
+  double sum = 0.0;
+  double sum2 = 0.0;
+  for (int k = 0; k < dims[0] * dims[1]; ++k)
+  {
+    if (p[3 * k] + p[3 * k + 1] + p[3 * k + 2] > 0)
+    {
+      ++out.Count;
+      sum += p[3 * k];
+      sum2 += p[3 * k] * p[3 * k];
+    }
+  }
+  if (out.Count > 0)
+  {
+    out.Mean = sum / out.Count;
+    out.Variance = sum2 / out.Count - out.Mean * out.Mean;
+  }
+  return out;
+}
+
+// NearestMipmapped: a checker of 1-cell squares seen from afar (about 5 cells a pixel)
+// aliases with Nearest and averages out with the pyramid; up close (under a cell a
+// pixel) the two modes read the same samples.
+TEST(OFBPolyDataMapper, NearestMipmappedAveragesFarDetailAndIsNearestUpClose)
+{
+  Scene scene(512, 100);
+  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  scene.Actor->GetProperty()->LightingOff();
+  const unsigned char dark[4] = { 40, 40, 40, 255 };
+  const unsigned char light[4] = { 240, 240, 240, 255 };
+  vtkofbtest::PaintChecker(scene.OFB, scene.OFB->GetCellSize(), dark, light);
+  SpherePixels far[2];
+  SpherePixels near[2];
+  for (int m = 0; m < 2; ++m)
+  {
+    scene.Mapper->SetLookupMode(
+      m == 0 ? vtkOFBPolyDataMapper::Nearest : vtkOFBPolyDataMapper::NearestMipmapped);
+    scene.Renderer->ResetCamera();
+    scene.Window->Render();
+    ASSERT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+    far[m] = GrabSphere(scene.Window);
+    scene.Renderer->GetActiveCamera()->Zoom(12.0);
+    scene.Window->Render();
+    near[m] = GrabSphere(scene.Window);
+  }
+  ASSERT_GT(far[0].Count, 2000);
+  EXPECT_EQ(far[0].Count, far[1].Count);
+  // Nearest shows the two colours (variance near 100^2), the pyramid their mean.
+  EXPECT_GT(far[0].Variance, 2500.0);
+  EXPECT_LT(far[1].Variance, 0.25 * far[0].Variance);
+  EXPECT_NEAR(far[1].Mean, 140.0, 30.0);
+  // Up close both read level 0: the same image (a few pixels at the rim, seen at a
+  // grazing angle, may read level 1).
+  ASSERT_EQ(near[0].Image.size(), near[1].Image.size());
+  size_t differ = 0;
+  for (size_t k = 0; k < near[0].Image.size(); k += 3)
+  {
+    differ += near[0].Image[k] != near[1].Image[k];
+  }
+  EXPECT_GT(near[0].Count, 9000);
+  EXPECT_LT(differ, near[0].Image.size() / 3 / 100) << differ << " pixels differ";
+  EXPECT_GT(near[1].Variance, 2500.0);
+}
+
 // Every fragment finds a sample: also along the borders between the regions of the three
 // grids, where the cell under a point in the grid of its triangle and in the other grids
 // can hold no sample within one cell and the Nearest lookup falls back to the neighbouring
 // cells. A fragment without a sample would keep the property colour (green).
 TEST(OFBPolyDataMapper, NoFragmentKeepsThePropertyColour)
 {
-  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::Mipmapped; ++mode)
+  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::NearestMipmapped;
+       ++mode)
   {
     Scene scene(128, 300);
     scene.Fill(255, 0, 0);
@@ -423,13 +511,13 @@ TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)
   EXPECT_EQ(mapper->GetColorSource(), vtkOFBPolyDataMapper::Paint);
   EXPECT_NEAR(mapper->GetInterpolationRadius(), 1.7320508, 1e-6);
   mapper->SetLookupMode(99);
-  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::Mipmapped);
+  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::NearestMipmapped);
   mapper->SetIntensityWeight(3.0);
   EXPECT_EQ(mapper->GetIntensityWeight(), 1.0);
   EXPECT_EQ(mapper->GetOFB(), nullptr);
   std::ostringstream os;
   mapper->Print(os);
-  for (const char* name : { "OFB:", "LookupMode: Mipmapped", "InterpolationRadius",
+  for (const char* name : { "OFB:", "LookupMode: NearestMipmapped", "InterpolationRadius",
          "MipmapBias", "MaximumNumberOfMipmapLevels", "MinimumMipmapResolution", "ColorSource",
          "ScalarArrayName", "ScalarComponent", "IntensityArrayName", "IntensityModulation",
          "IntensityWeight", "LICColorMode: COLOR_MODE_BLEND", "LICIntensity: 0.8",

@@ -1,6 +1,7 @@
 #include "vtkOFBPyramid.h"
 
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOFB.h"
@@ -8,6 +9,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,6 +65,10 @@ public:
       out->SetNumberOfTuples(nt);
       out->Fill(0.0);
       this->From.push_back(array);
+      auto* floats = vtkFloatArray::FastDownCast(array);
+      auto* bytes = vtkUnsignedCharArray::FastDownCast(array);
+      this->FromFloats.push_back(floats ? floats->GetPointer(0) : nullptr);
+      this->FromBytes.push_back(bytes ? bytes->GetPointer(0) : nullptr);
       this->To.push_back(out);
       this->TotalComponents += array->GetNumberOfComponents();
     }
@@ -76,6 +82,8 @@ public:
   void CopyTargetNormals()
   {
     this->SourceNormals = SampleNormals(this->Source->GetSampleData());
+    auto* floats = vtkFloatArray::FastDownCast(this->SourceNormals);
+    this->SourceNormalValues = floats ? floats->GetPointer(0) : nullptr;
     vtkDataArray* targetNormals = SampleNormals(this->Target->GetSampleData());
     if (!targetNormals || !this->SourceNormals ||
       targetNormals->GetNumberOfTuples() != this->Target->GetNumberOfSamples())
@@ -143,31 +151,37 @@ private:
     this->Target->GetSamplePosition(i, x);
     const float* tn = this->TargetNormals.empty() ? nullptr : &this->TargetNormals[3 * i];
     double weights = 0.0;
-    vtkIdType closest = -1;
-    double closestD2 = 4.0 * r * r;
-    this->Source->ForEachSampleInSphere(x, 2.0 * r,
+    this->Source->ForEachSampleInSphere(x, r,
       [&](vtkIdType j, double d2)
       {
-        if (!this->Faces(j, tn))
-        {
-          return;
-        }
-        if (d2 < closestD2)
-        {
-          closestD2 = d2;
-          closest = j;
-        }
-        if (d2 < r * r)
+        if (d2 < r * r && this->Faces(j, tn))
         {
           const double q = 1.0 - d2 / (r * r);
           this->Accumulate(j, q * q, sum);
           weights += q * q;
         }
       });
-    if (weights <= 0.0 && closest >= 0)
+    if (weights > 0.0)
+    {
+      return weights;
+    }
+    // None within r (rare): the closest within 2 r, searched only then (a sphere of
+    // 2 r holds four times the candidates).
+    vtkIdType closest = -1;
+    double closestD2 = 4.0 * r * r;
+    this->Source->ForEachSampleInSphere(x, 2.0 * r,
+      [&](vtkIdType j, double d2)
+      {
+        if (d2 < closestD2 && this->Faces(j, tn))
+        {
+          closestD2 = d2;
+          closest = j;
+        }
+      });
+    if (closest >= 0)
     {
       this->Accumulate(closest, 1.0, sum);
-      weights += 1.0;
+      weights = 1.0;
     }
     return weights;
   }
@@ -180,7 +194,17 @@ private:
       return true;
     }
     double sn[3];
-    this->SourceNormals->GetTuple(j, sn);
+    if (this->SourceNormalValues)
+    {
+      const float* n = this->SourceNormalValues + 3 * j;
+      sn[0] = n[0];
+      sn[1] = n[1];
+      sn[2] = n[2];
+    }
+    else
+    {
+      this->SourceNormals->GetTuple(j, sn);
+    }
     return sn[0] * tn[0] + sn[1] * tn[1] + sn[2] * tn[2] >= 0.0;
   }
 
@@ -188,12 +212,31 @@ private:
   void Accumulate(vtkIdType j, double w, std::vector<double>& sum) const
   {
     int offset = 0;
-    for (vtkDataArray* from : this->From)
+    for (size_t k = 0; k < this->From.size(); ++k)
     {
-      const int nc = from->GetNumberOfComponents();
-      for (int c = 0; c < nc; ++c)
+      const int nc = this->From[k]->GetNumberOfComponents();
+      // Float and byte arrays (the LIC, normals, colours) read directly, the others
+      // through the virtual accessor.
+      if (const float* f = this->FromFloats[k])
       {
-        sum[offset + c] += w * from->GetComponent(j, c);
+        for (int c = 0; c < nc; ++c)
+        {
+          sum[offset + c] += w * f[nc * j + c];
+        }
+      }
+      else if (const unsigned char* b = this->FromBytes[k])
+      {
+        for (int c = 0; c < nc; ++c)
+        {
+          sum[offset + c] += w * b[nc * j + c];
+        }
+      }
+      else
+      {
+        for (int c = 0; c < nc; ++c)
+        {
+          sum[offset + c] += w * this->From[k]->GetComponent(j, c);
+        }
       }
       offset += nc;
     }
@@ -225,15 +268,20 @@ private:
   vtkOFB* Target;
   const double Radius;
   std::vector<vtkDataArray*> From;
+  std::vector<const float*> FromFloats;        // From[k]'s values if float, else null
+  std::vector<const unsigned char*> FromBytes; // From[k]'s values if unsigned char
   std::vector<vtkSmartPointer<vtkDataArray>> To;
   int TotalComponents = 0;
   vtkDataArray* SourceNormals = nullptr;
+  const float* SourceNormalValues = nullptr; // SourceNormals' values if float
   std::vector<float> TargetNormals;
 };
 
 /// vtkOFBPyramid::Resample of the arrays in `names` (all where it is null).
-bool ResampleArrays(
-  vtkOFB* source, vtkOFB* target, double radius, const std::set<std::string>* names);
+bool ResampleArrays(vtkOFB* source,
+  vtkOFB* target,
+  double radius,
+  const std::set<std::string>* names);
 
 /// Scale the 3-component "Normals" sample array of `ofb` to unit length.
 void NormalizeSampleNormals(vtkOFB* ofb)
@@ -261,8 +309,10 @@ void NormalizeSampleNormals(vtkOFB* ofb)
 
 namespace
 {
-bool ResampleArrays(
-  vtkOFB* source, vtkOFB* target, double radius, const std::set<std::string>* names)
+bool ResampleArrays(vtkOFB* source,
+  vtkOFB* target,
+  double radius,
+  const std::set<std::string>* names)
 {
   if (!source || !target || !(radius > 0.0) || source->GetNumberOfSamples() == 0)
   {

@@ -446,8 +446,11 @@ void vtkOFBPolyDataMapper::CheckSurfaceInFrame(vtkOFB* ofb)
 //------------------------------------------------------------------------------
 bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorage::Selection& selection)
 {
-  if (!this->Storage->UpdateLevels(ofb, this->GetInput(), this->LookupMode == Mipmapped || this->LookupMode == NearestMipmapped,
-        this->MaximumNumberOfMipmapLevels, this->MinimumMipmapResolution))
+  if (!this->Storage->UpdateLevels(ofb,
+        this->GetInput(),
+        this->LookupMode == Mipmapped || this->LookupMode == NearestMipmapped,
+        this->MaximumNumberOfMipmapLevels,
+        this->MinimumMipmapResolution))
   {
     this->WarnOnce("The mipmap pyramid could not be built: using level 0 only.");
   }

@@ -248,7 +248,8 @@ vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection, un
     this->Ranges->SetNumberOfComponents(2);
     const vtkIdType all[2] = { 0, this->Levels[k]->GetNumberOfSamples() };
     this->Ranges->InsertNextTypedTuple(all);
-    count += this->UploadRanges(this->Levels, static_cast<int>(k), selection, this->Ranges, buffers);
+    count +=
+      this->UploadRanges(this->Levels, static_cast<int>(k), selection, this->Ranges, buffers);
   }
   return count;
 }

@@ -85,7 +85,8 @@ struct App
          << "steps " << this->LIC->GetNumberOfSteps() << " (Up/Down), grain "
          << this->LIC->GetNoiseGrainSize() << " cells (Right/Left)\n"
          << "m colour: "
-         << (this->ColorMode == 0 ? "speed map LIC" : (this->ColorMode == 1 ? "speed blend LIC" : "LIC"))
+         << (this->ColorMode == 0 ? "speed map LIC"
+                                  : (this->ColorMode == 1 ? "speed blend LIC" : "LIC"))
          << ", n noise: " << noise[this->LIC->GetNoiseType()] << "\n"
          << "o oriented: " << (this->LIC->GetOrientedLIC() ? "on" : "off")
          << ", l enhanced: " << (this->LIC->GetEnhancedLIC() ? "on" : "off")
@@ -130,7 +131,8 @@ struct App
     else if (key == "d")
     {
       static const int next[4] = { vtkOFBPolyDataMapper::InverseDistance,
-        vtkOFBPolyDataMapper::NearestMipmapped, vtkOFBPolyDataMapper::InverseDistance,
+        vtkOFBPolyDataMapper::NearestMipmapped,
+        vtkOFBPolyDataMapper::InverseDistance,
         vtkOFBPolyDataMapper::Nearest };
       this->Mapper->SetLookupMode(next[this->Mapper->GetLookupMode()]);
     }

@@ -1,7 +1,7 @@
 // ofbMapperBenchmark: frame time of vtkOFBPolyDataMapper (Nearest, InverseDistance,
-// Mipmapped, NearestMipmapped) against VTK's own poly data mapper with vertex colours, on the same mesh
-// (the Stanford bunny by default) in the same window, printed as ratios.
-// Not a test: run it by hand, under xvfb-run on a headless machine:
+// Mipmapped, NearestMipmapped) against VTK's own poly data mapper with vertex colours, on the same
+// mesh (the Stanford bunny by default) in the same window, printed as ratios. Not a test: run it by
+// hand, under xvfb-run on a headless machine:
 //   xvfb-run -a -s "-screen 0 1280x1024x24" ofbMapperBenchmark [options]
 // Options: --mesh FILE (.obj/.ply), --resolution N (OFB cells, default 1024),
 // --frames N (timed frames per mapper and round, default 30), --rounds N (default 3),
@@ -268,9 +268,10 @@ int ParseOptions(int argc, char* argv[], Options& o)
       *integer = std::max(minimum, std::atoi(argv[++i]));
       continue;
     }
-    std::cout << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
-                 "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped,nearestmipmapped] [--width W] "
-                 "[--height H] [--images PREFIX] [--offscreen]\n";
+    std::cout
+      << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
+         "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped,nearestmipmapped] [--width W] "
+         "[--height H] [--images PREFIX] [--offscreen]\n";
     return arg == "--help" ? 0 : 1;
   }
   return -1;

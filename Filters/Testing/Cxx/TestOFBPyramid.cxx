@@ -141,8 +141,8 @@ TEST(OFBPyramid, OnlyModifiedArraysAreFilteredAgain)
   for (int k = 1; k < levels; ++k)
   {
     colors.push_back(pyramid->GetLevel(k)->GetSampleData()->GetArray("Colors"));
-    EXPECT_NEAR(pyramid->GetLevel(k)->GetSampleData()->GetArray("LIC")->GetComponent(0, 0),
-      0.25, 1e-6);
+    EXPECT_NEAR(
+      pyramid->GetLevel(k)->GetSampleData()->GetArray("LIC")->GetComponent(0, 0), 0.25, 1e-6);
   }
   // A new LIC: the height of each sample.
   for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)

@@ -4,7 +4,8 @@
 // wide (finer than the triangles).
 //
 // Usage: ofbDemo [mesh.obj|mesh.ply] [--resolution N] [--backend auto|cpu|opengl]
-//                [--lookup nearest|idw|mipmap] [--output file.png] [--width W] [--height H]
+//                [--lookup nearest|idw|mipmap|nearestmipmap] [--output file.png] [--width W]
+//                [--height H]
 //
 // Without a mesh it reads Testing/Data/stanford-bunny.obj of the source tree.
 
@@ -82,7 +83,7 @@ void Usage(const char* argv0)
 {
   std::cerr << "Usage: " << argv0
             << " [mesh.obj|mesh.ply] [--resolution N] [--backend auto|cpu|opengl]\n"
-               "       [--lookup nearest|idw|mipmap] [--output file.png] [--width W] "
+               "       [--lookup nearest|idw|mipmap|nearestmipmap] [--output file.png] [--width W] "
                "[--height H]\n"
                "Builds the OFB of the mesh (default stanford-bunny.obj, resolution 1024), prints\n"
                "its statistics and renders into a PNG (default ofb-demo.png, 1600 x 800) its\n"
@@ -300,8 +301,8 @@ int ParseOptions(int argc, char* argv[], Options& options)
       "bad resolution '" + values["--resolution"] + "'" },
     { backend == "auto" || backend == "cpu" || backend == "opengl",
       "unknown backend '" + values["--backend"] + "' (auto, cpu or opengl)" },
-    { lookup == "nearest" || lookup == "idw" || lookup == "mipmap",
-      "unknown lookup '" + values["--lookup"] + "' (nearest, idw or mipmap)" },
+    { lookup == "nearest" || lookup == "idw" || lookup == "mipmap" || lookup == "nearestmipmap",
+      "unknown lookup '" + values["--lookup"] + "' (nearest, idw, mipmap or nearestmipmap)" },
     { ParseInt(values["--width"], 16, 8192, options.Width),
       "bad width '" + values["--width"] + "'" },
     { ParseInt(values["--height"], 16, 8192, options.Height),
@@ -465,10 +466,12 @@ struct Scene
     this->CloudActor->GetProperty()->SetPointSize(1.5);
     this->SurfaceMapper->SetInputData(mesh);
     this->SurfaceMapper->SetOFB(ofb);
-    this->SurfaceMapper->SetLookupMode(options.Lookup == "idw"
-        ? vtkOFBPolyDataMapper::InverseDistance
-        : (options.Lookup == "mipmap" ? vtkOFBPolyDataMapper::Mipmapped
-                                      : vtkOFBPolyDataMapper::Nearest));
+    const std::map<std::string, int> modes = { { "idw", vtkOFBPolyDataMapper::InverseDistance },
+      { "mipmap", vtkOFBPolyDataMapper::Mipmapped },
+      { "nearestmipmap", vtkOFBPolyDataMapper::NearestMipmapped } };
+    const auto mode = modes.find(options.Lookup);
+    this->SurfaceMapper->SetLookupMode(
+      mode != modes.end() ? mode->second : vtkOFBPolyDataMapper::Nearest);
     this->SurfaceActor->SetMapper(this->SurfaceMapper);
     for (vtkActor* actor : { this->CloudActor.Get(), this->SurfaceActor.Get() })
     {

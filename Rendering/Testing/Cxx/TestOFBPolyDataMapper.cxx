@@ -323,73 +323,87 @@ TEST(OFBPolyDataMapper, OFBFromAPipelineConnection)
 
 TEST(OFBPolyDataMapper, ScalarsThroughTheLookupTableWithIntensity)
 {
-  Scene scene;
-  const vtkIdType n = scene.OFB->GetNumberOfSamples();
-  vtkNew<vtkFloatArray> height;
-  height->SetName("Height");
-  height->SetNumberOfTuples(n);
-  vtkNew<vtkFloatArray> intensity;
-  intensity->SetName("LIC");
-  intensity->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i)
+  // Every lookup mode: each compiles its own shader variant.
+  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::NearestMipmapped;
+       ++mode)
   {
-    double x[3];
-    scene.OFB->GetSamplePosition(i, x);
-    height->SetValue(i, static_cast<float>(x[2]));
-    intensity->SetValue(i, 0.5f);
+    SCOPED_TRACE(vtkOFBPolyDataMapper::GetLookupModeAsString(mode));
+    Scene scene;
+    scene.Mapper->SetLookupMode(mode);
+    const vtkIdType n = scene.OFB->GetNumberOfSamples();
+    vtkNew<vtkFloatArray> height;
+    height->SetName("Height");
+    height->SetNumberOfTuples(n);
+    vtkNew<vtkFloatArray> intensity;
+    intensity->SetName("LIC");
+    intensity->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      scene.OFB->GetSamplePosition(i, x);
+      height->SetValue(i, static_cast<float>(x[2]));
+      intensity->SetValue(i, 0.5f);
+    }
+    scene.OFB->GetSampleData()->AddArray(height);
+    scene.OFB->GetSampleData()->AddArray(intensity);
+    scene.OFB->Modified();
+
+    vtkNew<vtkLookupTable> lut; // red at the low end, blue at the high end
+    lut->SetHueRange(0.0, 0.6667);
+    lut->Build();
+    scene.Mapper->SetLookupTable(lut);
+    scene.Mapper->SetScalarRange(-1.0, 1.0);
+    scene.Mapper->SetColorSourceToScalars();
+    scene.Mapper->SetScalarArrayName("Height");
+    scene.Window->Render();
+    EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+    Pixel p = Centre(scene.Window); // z = 1: the high end
+    EXPECT_TRUE(p[2] > 150 && p[0] < 40 && p[1] < 40) << p[0] << " " << p[1] << " " << p[2];
+
+    scene.Mapper->SetScalarRange(1.0, 3.0); // z = 1 is now the low end
+    scene.Window->Render();
+    p = Centre(scene.Window);
+    EXPECT_TRUE(IsRed(p)) << p[0] << " " << p[1] << " " << p[2];
+
+    scene.Mapper->SetIntensityArrayName("LIC");
+    scene.Mapper->SetLICColorModeToMap(); // the colour times the intensity
+    scene.Mapper->IntensityModulationOn();
+    scene.Window->Render();
+    const Pixel half = Centre(scene.Window);
+    EXPECT_NEAR(half[0], p[0] / 2, 12);
+
+    scene.Mapper->SetIntensityWeight(0.0);
+    scene.Window->Render();
+    EXPECT_NEAR(Centre(scene.Window)[0], p[0], 6);
   }
-  scene.OFB->GetSampleData()->AddArray(height);
-  scene.OFB->GetSampleData()->AddArray(intensity);
-  scene.OFB->Modified();
-
-  vtkNew<vtkLookupTable> lut; // red at the low end, blue at the high end
-  lut->SetHueRange(0.0, 0.6667);
-  lut->Build();
-  scene.Mapper->SetLookupTable(lut);
-  scene.Mapper->SetScalarRange(-1.0, 1.0);
-  scene.Mapper->SetColorSourceToScalars();
-  scene.Mapper->SetScalarArrayName("Height");
-  scene.Window->Render();
-  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
-  Pixel p = Centre(scene.Window); // z = 1: the high end
-  EXPECT_TRUE(p[2] > 150 && p[0] < 40 && p[1] < 40) << p[0] << " " << p[1] << " " << p[2];
-
-  scene.Mapper->SetScalarRange(1.0, 3.0); // z = 1 is now the low end
-  scene.Window->Render();
-  p = Centre(scene.Window);
-  EXPECT_TRUE(IsRed(p)) << p[0] << " " << p[1] << " " << p[2];
-
-  scene.Mapper->SetIntensityArrayName("LIC");
-  scene.Mapper->SetLICColorModeToMap(); // the colour times the intensity
-  scene.Mapper->IntensityModulationOn();
-  scene.Window->Render();
-  const Pixel half = Centre(scene.Window);
-  EXPECT_NEAR(half[0], p[0] / 2, 12);
-
-  scene.Mapper->SetIntensityWeight(0.0);
-  scene.Window->Render();
-  EXPECT_NEAR(Centre(scene.Window)[0], p[0], 6);
 }
 
 TEST(OFBPolyDataMapper, PaintedNormalsShadeTheSurface)
 {
-  Scene scene;
-  scene.Fill(255, 0, 0);
-  scene.Mapper->UsePaintedNormalsOn();
-  scene.Window->Render();
-  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
-  EXPECT_TRUE(IsRed(Centre(scene.Window)));
-  // Normals painted to face away sideways darken the centre.
-  vtkDataArray* normals = scene.OFB->GetSampleData()->GetArray("Normals");
-  ASSERT_NE(normals, nullptr);
-  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+  // Every lookup mode: each compiles its own shader variant.
+  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::NearestMipmapped;
+       ++mode)
   {
-    normals->SetTuple3(i, 1.0, 0.0, 0.05);
+    SCOPED_TRACE(vtkOFBPolyDataMapper::GetLookupModeAsString(mode));
+    Scene scene;
+    scene.Mapper->SetLookupMode(mode);
+    scene.Fill(255, 0, 0);
+    scene.Mapper->UsePaintedNormalsOn();
+    scene.Window->Render();
+    EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+    EXPECT_TRUE(IsRed(Centre(scene.Window)));
+    // Normals painted to face away sideways darken the centre.
+    vtkDataArray* normals = scene.OFB->GetSampleData()->GetArray("Normals");
+    ASSERT_NE(normals, nullptr);
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+    {
+      normals->SetTuple3(i, 1.0, 0.0, 0.05);
+    }
+    scene.OFB->MarkAllSamplesModified();
+    scene.OFB->Modified();
+    scene.Window->Render();
+    EXPECT_LT(Centre(scene.Window)[0], 60);
   }
-  scene.OFB->MarkAllSamplesModified();
-  scene.OFB->Modified();
-  scene.Window->Render();
-  EXPECT_LT(Centre(scene.Window)[0], 60);
 }
 
 TEST(OFBPolyDataMapper, SeveralViewportsAndRestoredBindings)

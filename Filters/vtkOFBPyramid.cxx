@@ -3,9 +3,9 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
-#include "vtkObjectFactory.h"
 #include "vtkOFB.h"
 #include "vtkOFBSampler.h"
+#include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
@@ -151,7 +151,8 @@ private:
     this->Target->GetSamplePosition(i, x);
     const float* tn = this->TargetNormals.empty() ? nullptr : &this->TargetNormals[3 * i];
     double weights = 0.0;
-    this->Source->ForEachSampleInSphere(x, r,
+    this->Source->ForEachSampleInSphere(x,
+      r,
       [&](vtkIdType j, double d2)
       {
         if (d2 < r * r && this->Faces(j, tn))
@@ -169,7 +170,8 @@ private:
     // 2 r holds four times the candidates).
     vtkIdType closest = -1;
     double closestD2 = 4.0 * r * r;
-    this->Source->ForEachSampleInSphere(x, 2.0 * r,
+    this->Source->ForEachSampleInSphere(x,
+      2.0 * r,
       [&](vtkIdType j, double d2)
       {
         if (d2 < closestD2 && this->Faces(j, tn))
@@ -208,6 +210,16 @@ private:
     return sn[0] * tn[0] + sn[1] * tn[1] + sn[2] * tn[2] >= 0.0;
   }
 
+  /// out[c] += w * v[c] for the nc components of one tuple.
+  template<typename T>
+  static void AddTuple(const T* v, int nc, double w, double* out)
+  {
+    for (int c = 0; c < nc; ++c)
+    {
+      out[c] += w * v[c];
+    }
+  }
+
   /// Add weight w times every component of source sample j to `sum`.
   void Accumulate(vtkIdType j, double w, std::vector<double>& sum) const
   {
@@ -215,27 +227,22 @@ private:
     for (size_t k = 0; k < this->From.size(); ++k)
     {
       const int nc = this->From[k]->GetNumberOfComponents();
+      double* out = sum.data() + offset;
       // Float and byte arrays (the LIC, normals, colours) read directly, the others
       // through the virtual accessor.
-      if (const float* f = this->FromFloats[k])
+      if (this->FromFloats[k])
       {
-        for (int c = 0; c < nc; ++c)
-        {
-          sum[offset + c] += w * f[nc * j + c];
-        }
+        AddTuple(this->FromFloats[k] + nc * j, nc, w, out);
       }
-      else if (const unsigned char* b = this->FromBytes[k])
+      else if (this->FromBytes[k])
       {
-        for (int c = 0; c < nc; ++c)
-        {
-          sum[offset + c] += w * b[nc * j + c];
-        }
+        AddTuple(this->FromBytes[k] + nc * j, nc, w, out);
       }
       else
       {
         for (int c = 0; c < nc; ++c)
         {
-          sum[offset + c] += w * this->From[k]->GetComponent(j, c);
+          out[c] += w * this->From[k]->GetComponent(j, c);
         }
       }
       offset += nc;
@@ -249,8 +256,8 @@ private:
     for (size_t k = 0; k < this->From.size(); ++k)
     {
       const int nc = this->From[k]->GetNumberOfComponents();
-      const bool integral = this->From[k]->GetDataType() != VTK_FLOAT &&
-        this->From[k]->GetDataType() != VTK_DOUBLE;
+      const bool integral =
+        this->From[k]->GetDataType() != VTK_FLOAT && this->From[k]->GetDataType() != VTK_DOUBLE;
       for (int c = 0; c < nc; ++c)
       {
         double v = sum[offset + c] / weights;
@@ -277,12 +284,6 @@ private:
   std::vector<float> TargetNormals;
 };
 
-/// vtkOFBPyramid::Resample of the arrays in `names` (all where it is null).
-bool ResampleArrays(vtkOFB* source,
-  vtkOFB* target,
-  double radius,
-  const std::set<std::string>* names);
-
 /// Scale the 3-component "Normals" sample array of `ofb` to unit length.
 void NormalizeSampleNormals(vtkOFB* ofb)
 {
@@ -305,10 +306,8 @@ void NormalizeSampleNormals(vtkOFB* ofb)
     }
   }
 }
-}
 
-namespace
-{
+/// vtkOFBPyramid::Resample of the arrays in `names` (all where it is null).
 bool ResampleArrays(vtkOFB* source,
   vtkOFB* target,
   double radius,
@@ -331,6 +330,20 @@ bool ResampleArrays(vtkOFB* source,
     NormalizeSampleNormals(target);
   }
   return true;
+}
+
+/// Levels 1.. (`levels`) filtered from level 0 (`input`) one after the other: the arrays
+/// in `names`, all where it is null. `radius` in cells of each coarser level.
+void FilterLevels(vtkOFB* input,
+  const std::vector<vtkSmartPointer<vtkOFB>>& levels,
+  double radius,
+  const std::set<std::string>* names)
+{
+  for (size_t k = 0; k < levels.size(); ++k)
+  {
+    vtkOFB* finer = k == 0 ? input : levels[k - 1].Get();
+    ResampleArrays(finer, levels[k], radius * levels[k]->GetCellSize(), names);
+  }
 }
 }
 
@@ -442,12 +455,7 @@ bool vtkOFBPyramid::UpdateLevels()
 //------------------------------------------------------------------------------
 void vtkOFBPyramid::UpdateArrays()
 {
-  for (size_t k = 0; k < this->Levels.size(); ++k)
-  {
-    vtkOFB* finer = k == 0 ? this->InputOFB : this->Levels[k - 1].Get();
-    vtkOFB* coarser = this->Levels[k];
-    vtkOFBPyramid::Resample(finer, coarser, this->FilterRadius * coarser->GetCellSize());
-  }
+  FilterLevels(this->InputOFB, this->Levels, this->FilterRadius, nullptr);
   this->ArraysTime.Modified();
 }
 
@@ -488,12 +496,7 @@ void vtkOFBPyramid::UpdateModifiedArrays()
     this->UpdateArrays();
     return;
   }
-  for (size_t k = 0; k < this->Levels.size(); ++k)
-  {
-    vtkOFB* finer = k == 0 ? this->InputOFB : this->Levels[k - 1].Get();
-    vtkOFB* level = this->Levels[k];
-    ResampleArrays(finer, level, this->FilterRadius * level->GetCellSize(), &changed);
-  }
+  FilterLevels(this->InputOFB, this->Levels, this->FilterRadius, &changed);
   this->ArraysTime.Modified();
 }
 

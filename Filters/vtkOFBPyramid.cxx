@@ -456,6 +456,7 @@ bool vtkOFBPyramid::UpdateLevels()
 void vtkOFBPyramid::UpdateArrays()
 {
   FilterLevels(this->InputOFB, this->Levels, this->FilterRadius, nullptr);
+  this->AllArraysTime.Modified();
   this->ArraysTime.Modified();
 }
 

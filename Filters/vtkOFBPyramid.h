@@ -124,6 +124,12 @@ public:
   ///@}
 
   /**
+   * When all arrays of the levels were last computed (UpdateArrays(), also where
+   * UpdateModifiedArrays() recomputed everything); GetArraysTime() is at least as late.
+   */
+  vtkMTimeType GetAllArraysTime() const { return this->AllArraysTime.GetMTime(); }
+
+  /**
    * Transfer every sample array of `source` to the samples of `target` by distance-
    * weighted averaging over the source samples within `radius` (world units) whose
    * normal does not face away from the target sample's normal, with the smooth compact
@@ -149,6 +155,7 @@ protected:
   std::vector<vtkSmartPointer<vtkOFB>> Levels; // levels 1..
   vtkTimeStamp StructureTime;
   vtkTimeStamp ArraysTime;
+  vtkTimeStamp AllArraysTime;
   vtkWeakPointer<vtkOFB> LastInputOFB; // the level 0 the levels were built from
 
 private:

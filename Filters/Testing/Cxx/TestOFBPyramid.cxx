@@ -154,8 +154,10 @@ TEST(OFBPyramid, OnlyModifiedArraysAreFilteredAgain)
   lic->Modified();
   ofb->Modified();
   const vtkMTimeType before = pyramid->GetArraysTime();
+  const vtkMTimeType allBefore = pyramid->GetAllArraysTime();
   ASSERT_TRUE(pyramid->UpdateLevels());
   EXPECT_GT(pyramid->GetArraysTime(), before);
+  EXPECT_EQ(pyramid->GetAllArraysTime(), allBefore) << "not all arrays were filtered again";
   std::vector<std::vector<double>> partial;
   for (int k = 1; k < levels; ++k)
   {
@@ -169,6 +171,7 @@ TEST(OFBPyramid, OnlyModifiedArraysAreFilteredAgain)
     }
   }
   pyramid->UpdateArrays();
+  EXPECT_GT(pyramid->GetAllArraysTime(), allBefore);
   for (int k = 1; k < levels; ++k)
   {
     vtkPointData* pd = pyramid->GetLevel(k)->GetSampleData();

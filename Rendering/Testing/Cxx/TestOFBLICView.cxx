@@ -7,6 +7,7 @@
 
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
+#include "vtkOFBPyramid.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -280,4 +281,47 @@ TEST(LICView, AnimationUploadsOnlyTheLIC)
   EXPECT_GT(differing, n / 2); // the phase moved the streaks
   scene.Window->Render();
   EXPECT_EQ(scene.Mapper->GetUploadedBytes() - first, 4 * n);
+}
+
+// With NearestMipmapped, a new AnimationPhase filters the LIC down the pyramid and
+// uploads the LIC of every level, nothing else (4 bytes a sample of all levels).
+TEST(LICView, NearestMipmappedAnimationUploadsOnlyTheLICOfEveryLevel)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  double center[3];
+  Center(bunny, center);
+  const double axis[3] = { 0.4, 1.0, 0.3 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(bunny, 128, RotationAbout(axis, center));
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetInputData(ofb);
+  lic->SetNumberOfSteps(8);
+  lic->AnimateOn();
+  lic->Update();
+  vtkOFB* out = lic->GetOutput();
+  LICScene scene(bunny, out, 200);
+  scene.Mapper->SetLookupModeToNearestMipmapped();
+  scene.Renderer->ResetCamera();
+  scene.Window->Render();
+  ASSERT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  scene.Window->Render();
+  const vtkIdType first = scene.Mapper->GetUploadedBytes();
+
+  // The same pyramid as the mapper's (its default levels).
+  vtkNew<vtkOFBPyramid> pyramid;
+  pyramid->SetInputOFB(out);
+  pyramid->SetSurface(bunny);
+  ASSERT_TRUE(pyramid->UpdateLevels());
+  ASSERT_GT(pyramid->GetNumberOfLevels(), 2);
+  vtkIdType samples = 0;
+  for (int k = 0; k < pyramid->GetNumberOfLevels(); ++k)
+  {
+    samples += pyramid->GetLevel(k)->GetNumberOfSamples();
+  }
+  ASSERT_GT(first, 8 * samples); // the first upload: depths, colours and the LIC
+
+  lic->SetAnimationPhase(0.25);
+  lic->Update();
+  scene.Window->Render();
+  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - first, 4 * samples);
 }

@@ -242,8 +242,8 @@ vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection, un
   }
   // Every buffer where other arrays may have changed too: samples changed in place, or
   // the pyramid computed all arrays again since the last upload.
-  const bool all = inPlace || !whole ||
-    this->Pyramid->GetAllArraysTime() > this->UploadTime.GetMTime();
+  const bool all =
+    inPlace || !whole || this->Pyramid->GetAllArraysTime() > this->UploadTime.GetMTime();
   const unsigned int buffers = all ? AllArrays : whole;
   vtkIdType count = 0;
   for (size_t k = 1; k < this->Levels.size(); ++k)

@@ -200,6 +200,13 @@ TEST(OFBPolyDataMapper, NearestMipmappedAveragesFarDetailAndIsNearestUpClose)
   EXPECT_GT(near[0].Count, 9000);
   EXPECT_LT(differ, near[0].Image.size() / 3 / 100) << differ << " pixels differ";
   EXPECT_GT(near[1].Variance, 2500.0);
+
+  // A pyramid of level 0 alone: Nearest's picture, also from afar.
+  scene.Mapper->SetMaximumNumberOfMipmapLevels(1);
+  scene.Renderer->ResetCamera();
+  scene.Window->Render();
+  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_TRUE(GrabSphere(scene.Window).Image == far[0].Image);
 }
 
 // Every fragment finds a sample: also along the borders between the regions of the three

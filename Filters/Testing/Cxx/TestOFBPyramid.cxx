@@ -229,6 +229,9 @@ TEST(OFBPyramid, BadInputGivesAnErrorAndNoLevels)
   EXPECT_FALSE(messages->Errors.empty());
   EXPECT_EQ(pyramid->GetNumberOfLevels(), 0);
   EXPECT_EQ(pyramid->GetLevel(0), nullptr);
+  pyramid->UpdateModifiedArrays(); // no input, no levels: nothing to filter
+  pyramid->UpdateArrays();
+  EXPECT_EQ(pyramid->GetNumberOfLevels(), 0);
 
   vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 16);
   vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 64);

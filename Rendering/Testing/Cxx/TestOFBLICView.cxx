@@ -168,15 +168,40 @@ void Compare(vtkOFB* ofb, const View& a, const View& b, Correlation& surface, Co
 }
 }
 
-//------------------------------------------------------------------------------
-TEST(LICView, GrainMovesWithTheSurface)
+namespace
 {
-  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
-  ASSERT_NE(bunny, nullptr);
+/// The bunny (into `bunny`) and its OFB at `resolution` with the tangential part of a
+/// rotation about a tilted axis through its centre; null if the mesh cannot be read.
+vtkSmartPointer<vtkOFB> RotatingBunny(int resolution, vtkSmartPointer<vtkPolyData>& bunny)
+{
+  bunny = ReadMesh("stanford-bunny.obj");
+  if (!bunny)
+  {
+    return nullptr;
+  }
   double center[3];
   Center(bunny, center);
   const double axis[3] = { 0.4, 1.0, 0.3 };
-  vtkSmartPointer<vtkOFB> ofb = BuildWithField(bunny, 256, RotationAbout(axis, center));
+  return BuildWithField(bunny, resolution, RotationAbout(axis, center));
+}
+
+/// `lic` on `input`, 2 x 8 steps, kept streamlines for animation, at phase 0, updated.
+void StartAnimatedLIC(vtkOFBLIC* lic, vtkOFB* input)
+{
+  lic->SetInputData(input);
+  lic->SetNumberOfSteps(8);
+  lic->AnimateOn();
+  lic->SetAnimationPhase(0.0);
+  lic->Update();
+}
+}
+
+//------------------------------------------------------------------------------
+TEST(LICView, GrainMovesWithTheSurface)
+{
+  vtkSmartPointer<vtkPolyData> bunny;
+  vtkSmartPointer<vtkOFB> ofb = RotatingBunny(256, bunny);
+  ASSERT_NE(ofb, nullptr);
   vtkNew<vtkOFBLIC> lic;
   lic->SetInputData(ofb);
   lic->SetNoiseGrainSize(2.0);
@@ -238,18 +263,11 @@ TEST(LICView, GrainMovesWithTheSurface)
 // the mapper then uploads that array alone (4 bytes a sample), not the whole OFB.
 TEST(LICView, AnimationUploadsOnlyTheLIC)
 {
-  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
-  ASSERT_NE(bunny, nullptr);
-  double center[3];
-  Center(bunny, center);
-  const double axis[3] = { 0.4, 1.0, 0.3 };
-  vtkSmartPointer<vtkOFB> ofb = BuildWithField(bunny, 128, RotationAbout(axis, center));
+  vtkSmartPointer<vtkPolyData> bunny;
+  vtkSmartPointer<vtkOFB> ofb = RotatingBunny(128, bunny);
+  ASSERT_NE(ofb, nullptr);
   vtkNew<vtkOFBLIC> lic;
-  lic->SetInputData(ofb);
-  lic->SetNumberOfSteps(8);
-  lic->AnimateOn();
-  lic->SetAnimationPhase(0.0);
-  lic->Update();
+  StartAnimatedLIC(lic, ofb);
   vtkOFB* out = lic->GetOutput();
   const vtkIdType n = out->GetNumberOfSamples();
   ASSERT_GT(n, 0);
@@ -287,17 +305,11 @@ TEST(LICView, AnimationUploadsOnlyTheLIC)
 // uploads the LIC of every level, nothing else (4 bytes a sample of all levels).
 TEST(LICView, NearestMipmappedAnimationUploadsOnlyTheLICOfEveryLevel)
 {
-  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
-  ASSERT_NE(bunny, nullptr);
-  double center[3];
-  Center(bunny, center);
-  const double axis[3] = { 0.4, 1.0, 0.3 };
-  vtkSmartPointer<vtkOFB> ofb = BuildWithField(bunny, 128, RotationAbout(axis, center));
+  vtkSmartPointer<vtkPolyData> bunny;
+  vtkSmartPointer<vtkOFB> ofb = RotatingBunny(128, bunny);
+  ASSERT_NE(ofb, nullptr);
   vtkNew<vtkOFBLIC> lic;
-  lic->SetInputData(ofb);
-  lic->SetNumberOfSteps(8);
-  lic->AnimateOn();
-  lic->Update();
+  StartAnimatedLIC(lic, ofb);
   vtkOFB* out = lic->GetOutput();
   LICScene scene(bunny, out, 200);
   scene.Mapper->SetLookupModeToNearestMipmapped();

@@ -93,6 +93,12 @@ struct App
          << ", space animation: " << (this->Animating ? "on" : "off") << "\n"
          << "d display: "
          << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode());
+    if (this->Animating &&
+      this->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::NearestMipmapped)
+    {
+      // Every frame filters the new LIC down the pyramid (0.3-2 s).
+      text << " (slow to animate: d for Nearest)";
+    }
     this->Text->SetInput(text.str().c_str());
     this->Window->Render();
   }

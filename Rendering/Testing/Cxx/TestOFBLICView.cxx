@@ -185,15 +185,30 @@ vtkSmartPointer<vtkOFB> RotatingBunny(int resolution, vtkSmartPointer<vtkPolyDat
   return BuildWithField(bunny, resolution, RotationAbout(axis, center));
 }
 
-/// `lic` on `input`, 2 x 8 steps, kept streamlines for animation, at phase 0, updated.
-void StartAnimatedLIC(vtkOFBLIC* lic, vtkOFB* input)
+/// The rotating bunny's OFB at 128 cells and its LIC (2 x 8 steps, streamlines kept for
+/// animation, phase 0), updated; Output is null if the mesh cannot be read.
+struct AnimatedBunnyLIC
 {
-  lic->SetInputData(input);
-  lic->SetNumberOfSteps(8);
-  lic->AnimateOn();
-  lic->SetAnimationPhase(0.0);
-  lic->Update();
-}
+  vtkSmartPointer<vtkPolyData> Bunny;
+  vtkSmartPointer<vtkOFB> Input;
+  vtkNew<vtkOFBLIC> LIC;
+  vtkOFB* Output = nullptr;
+
+  AnimatedBunnyLIC()
+  {
+    this->Input = RotatingBunny(128, this->Bunny);
+    if (!this->Input)
+    {
+      return;
+    }
+    this->LIC->SetInputData(this->Input);
+    this->LIC->SetNumberOfSteps(8);
+    this->LIC->AnimateOn();
+    this->LIC->SetAnimationPhase(0.0);
+    this->LIC->Update();
+    this->Output = this->LIC->GetOutput();
+  }
+};
 }
 
 //------------------------------------------------------------------------------
@@ -263,19 +278,17 @@ TEST(LICView, GrainMovesWithTheSurface)
 // the mapper then uploads that array alone (4 bytes a sample), not the whole OFB.
 TEST(LICView, AnimationUploadsOnlyTheLIC)
 {
-  vtkSmartPointer<vtkPolyData> bunny;
-  vtkSmartPointer<vtkOFB> ofb = RotatingBunny(128, bunny);
-  ASSERT_NE(ofb, nullptr);
-  vtkNew<vtkOFBLIC> lic;
-  StartAnimatedLIC(lic, ofb);
-  vtkOFB* out = lic->GetOutput();
+  AnimatedBunnyLIC animated;
+  ASSERT_NE(animated.Output, nullptr);
+  vtkOFBLIC* lic = animated.LIC;
+  vtkOFB* out = animated.Output;
   const vtkIdType n = out->GetNumberOfSamples();
   ASSERT_GT(n, 0);
   auto* licArray = vtkFloatArray::SafeDownCast(out->GetSampleData()->GetArray("LIC"));
   ASSERT_NE(licArray, nullptr);
   const std::vector<float> before(licArray->GetPointer(0), licArray->GetPointer(0) + n);
 
-  LICScene scene(bunny, out, 200);
+  LICScene scene(animated.Bunny, out, 200);
   scene.Renderer->ResetCamera();
   scene.Window->Render();
   ASSERT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
@@ -286,7 +299,7 @@ TEST(LICView, AnimationUploadsOnlyTheLIC)
   lic->SetAnimationPhase(0.25);
   lic->Update();
   ASSERT_EQ(lic->GetOutput(), out);
-  EXPECT_EQ(out->GetDepths(), ofb->GetDepths());
+  EXPECT_EQ(out->GetDepths(), animated.Input->GetDepths());
   licArray = vtkFloatArray::SafeDownCast(out->GetSampleData()->GetArray("LIC"));
   ASSERT_NE(licArray, nullptr);
   ASSERT_EQ(licArray->GetNumberOfTuples(), n);
@@ -305,13 +318,11 @@ TEST(LICView, AnimationUploadsOnlyTheLIC)
 // uploads the LIC of every level, nothing else (4 bytes a sample of all levels).
 TEST(LICView, NearestMipmappedAnimationUploadsOnlyTheLICOfEveryLevel)
 {
-  vtkSmartPointer<vtkPolyData> bunny;
-  vtkSmartPointer<vtkOFB> ofb = RotatingBunny(128, bunny);
-  ASSERT_NE(ofb, nullptr);
-  vtkNew<vtkOFBLIC> lic;
-  StartAnimatedLIC(lic, ofb);
-  vtkOFB* out = lic->GetOutput();
-  LICScene scene(bunny, out, 200);
+  AnimatedBunnyLIC animated;
+  ASSERT_NE(animated.Output, nullptr);
+  vtkOFBLIC* lic = animated.LIC;
+  vtkOFB* out = animated.Output;
+  LICScene scene(animated.Bunny, out, 200);
   scene.Mapper->SetLookupModeToNearestMipmapped();
   scene.Renderer->ResetCamera();
   scene.Window->Render();
@@ -322,7 +333,7 @@ TEST(LICView, NearestMipmappedAnimationUploadsOnlyTheLICOfEveryLevel)
   // The same pyramid as the mapper's (its default levels).
   vtkNew<vtkOFBPyramid> pyramid;
   pyramid->SetInputOFB(out);
-  pyramid->SetSurface(bunny);
+  pyramid->SetSurface(animated.Bunny);
   ASSERT_TRUE(pyramid->UpdateLevels());
   ASSERT_GT(pyramid->GetNumberOfLevels(), 2);
   vtkIdType samples = 0;

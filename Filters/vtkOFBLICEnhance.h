@@ -120,20 +120,22 @@ struct vtkOFBLICHighPassWork
     this->Out[i] = static_cast<float>(this->Values[i] + 4.0 * (this->Values[i] - mean));
   }
 
-  /// Search the neighbours of sample i of grid a in cell (iu, iv) and filter it. The
-  /// number of neighbours, kept where they fit (at most K, each within an int16 of
-  /// i), else -1; `ids` receives every neighbour in the order summed.
-  int Search(vtkIdType i, int a, vtkIdType iu, vtkIdType iv, std::vector<vtkTypeInt32>& ids) const
+  /// The 3 x 3 cells around cell (iu, iv) of grid a that hold samples, in the order
+  /// Search visits them: where each starts, how many it holds and its planar distance.
+  struct Block
+  {
+    vtkIdType First[9];
+    vtkIdType Count[9];
+    double Planar[9];
+    int Size = 0;
+  };
+
+  void GetBlock(int a, vtkIdType iu, vtkIdType iv, Block& block) const
   {
     const vtkIdType nu = this->Dims[(a + 1) % 3];
     const vtkIdType nv = this->Dims[(a + 2) % 3];
     const vtkIdType row = this->Input->GetGridCellBase(a) + iv * nu;
-    vtkTypeInt16* kept = this->NeighbourOffsets + K * i;
-    const double r2 = this->Radius * this->Radius;
-    bool fits = true;
-    double sum = 0.0;
-    int count = 0;
-    ids.clear();
+    block.Size = 0;
     for (vtkIdType dv = -1; dv <= 1; ++dv)
     {
       for (vtkIdType du = -1; du <= 1; ++du)
@@ -143,25 +145,50 @@ struct vtkOFBLICHighPassWork
           continue;
         }
         const vtkIdType cell = row + dv * nu + iu + du;
-        const double planar =
-          static_cast<double>(du * du + dv * dv) * this->CellSize * this->CellSize;
-        for (vtkIdType j = this->Offsets[cell], last = this->Offsets[cell + 1]; j < last; ++j)
+        const vtkIdType first = this->Offsets[cell];
+        const vtkIdType count = this->Offsets[cell + 1] - first;
+        if (count > 0)
         {
-          const double dd = static_cast<double>(this->Depths[j]) - this->Depths[i];
-          if (j != i && !this->Mask[j] && planar + dd * dd <= r2)
+          block.First[block.Size] = first;
+          block.Count[block.Size] = count;
+          block.Planar[block.Size] =
+            static_cast<double>(du * du + dv * dv) * this->CellSize * this->CellSize;
+          ++block.Size;
+        }
+      }
+    }
+  }
+
+  /// Search the neighbours of sample i in the cells of `block` (the 3 x 3 around its
+  /// cell, GetBlock) and filter it: every sample of those cells tested. The number of
+  /// neighbours, kept where they fit (at most K, each within an int16 of i), else -1;
+  /// `ids` receives every neighbour in the order summed.
+  int Search(vtkIdType i, const Block& block, std::vector<vtkTypeInt32>& ids) const
+  {
+    vtkTypeInt16* kept = this->NeighbourOffsets + K * i;
+    const double r2 = this->Radius * this->Radius;
+    bool fits = true;
+    double sum = 0.0;
+    int count = 0;
+    ids.clear();
+    for (int c = 0; c < block.Size; ++c)
+    {
+      for (vtkIdType j = block.First[c], last = j + block.Count[c]; j < last; ++j)
+      {
+        const double dd = static_cast<double>(this->Depths[j]) - this->Depths[i];
+        if (j != i && !this->Mask[j] && block.Planar[c] + dd * dd <= r2)
+        {
+          if (count < K && std::abs(j - i) <= 32767)
           {
-            if (count < K && std::abs(j - i) <= 32767)
-            {
-              kept[count] = static_cast<vtkTypeInt16>(j - i);
-            }
-            else
-            {
-              fits = false;
-            }
-            ids.push_back(static_cast<vtkTypeInt32>(j));
-            sum += this->Values[j];
-            ++count;
+            kept[count] = static_cast<vtkTypeInt16>(j - i);
           }
+          else
+          {
+            fits = false;
+          }
+          ids.push_back(static_cast<vtkTypeInt32>(j));
+          sum += this->Values[j];
+          ++count;
         }
       }
     }
@@ -243,8 +270,117 @@ struct vtkOFBLICHighPassWork
       });
   }
 
-  /// Filter every sample by searching its neighbours, row by row of the three grids,
-  /// and keep them (the ids in SearchedSamples and SearchedIds where they do not fit).
+  /// The samples of [first, first + count) (sorted by depth) within `r2` of a sample at
+  /// depth d, as [lo, hi): a range, since the distance grows with the depth difference.
+  /// The search starts at g, the sample of the same layer as the searching sample (its
+  /// place in its own cell), where it usually is: the neighbouring cells of a grid see
+  /// the same layers of the surface, so the loops below mostly stop at once, and their
+  /// branches are predictable where testing every sample of the cell was not.
+  static void LayerRange(const float* depths,
+    double d,
+    double planar,
+    double r2,
+    vtkIdType g,
+    vtkIdType first,
+    vtkIdType end,
+    vtkIdType& lo,
+    vtkIdType& hi)
+  {
+    auto within = [&](vtkIdType j)
+    {
+      const double dd = static_cast<double>(depths[j]) - d;
+      return planar + dd * dd <= r2;
+    };
+    if (!within(g))
+    {
+      // The range, if any, lies on the side of g where d is.
+      const vtkIdType step = depths[g] < d ? 1 : -1;
+      for (g += step; g >= first && g < end && !within(g); g += step)
+      {
+        if ((depths[g] < d) != (step > 0))
+        {
+          break; // past d without a sample within: none
+        }
+      }
+      if (g < first || g >= end || !within(g))
+      {
+        lo = hi = first;
+        return;
+      }
+    }
+    lo = g;
+    while (lo > first && within(lo - 1))
+    {
+      --lo;
+    }
+    hi = g + 1;
+    while (hi < end && within(hi))
+    {
+      ++hi;
+    }
+  }
+
+  /// Search's filter of sample i in cell block `block` (layer: its place in its cell)
+  /// where its neighbours fit in the kept offsets, and the number kept; -1 where they do
+  /// not (nothing written then; Search handles it).
+  int SearchBlock(vtkIdType i, vtkIdType layer, const Block& block) const
+  {
+    const float* depths = this->Depths;
+    const unsigned char* mask = this->Mask;
+    const float* values = this->Values;
+    const double r2 = this->Radius * this->Radius;
+    const double d = depths[i];
+    vtkTypeInt16* kept = this->NeighbourOffsets + K * i;
+    double sum = 0.0;
+    int count = 0;
+    for (int c = 0; c < block.Size; ++c)
+    {
+      const vtkIdType first = block.First[c];
+      const vtkIdType n = block.Count[c];
+      vtkIdType lo = first;
+      vtkIdType hi = first;
+      if (n == 1)
+      {
+        const double dd = static_cast<double>(depths[first]) - d;
+        hi += block.Planar[c] + dd * dd <= r2 ? 1 : 0;
+      }
+      else
+      {
+        LayerRange(depths,
+          d,
+          block.Planar[c],
+          r2,
+          first + std::min(layer, n - 1),
+          first,
+          first + n,
+          lo,
+          hi);
+      }
+      for (vtkIdType j = lo; j < hi; ++j)
+      {
+        if (j == i || mask[j])
+        {
+          continue;
+        }
+        if (count == K || std::abs(j - i) > 32767)
+        {
+          return -1;
+        }
+        kept[count++] = static_cast<vtkTypeInt16>(j - i);
+        sum += values[j];
+      }
+    }
+    if (count < 3)
+    {
+      return -1;
+    }
+    this->HighPass(i, sum, count);
+    return count;
+  }
+
+  /// Filter every sample by searching its neighbours, cell by cell of the three grids
+  /// (SearchBlock, else Search), and keep them (the ids in SearchedSamples and SearchedIds
+  /// where they do not fit).
   void SearchingNeighbours()
   {
     constexpr unsigned char Searched = vtkOFBLICCache::SearchNeighbours;
@@ -266,6 +402,7 @@ struct vtkOFBLICHighPassWork
       [&](vtkIdType beginRow, vtkIdType endRow)
       {
         Local& local = locals.Local();
+        Block block;
         for (vtkIdType r = beginRow; r < endRow; ++r)
         {
           const int a = r < rowBase[1] ? 0 : (r < rowBase[2] ? 1 : 2);
@@ -274,15 +411,25 @@ struct vtkOFBLICHighPassWork
           const vtkIdType row = this->Input->GetGridCellBase(a) + iv * nu;
           for (vtkIdType iu = 0; iu < nu; ++iu)
           {
-            for (vtkIdType i = this->Offsets[row + iu], end = this->Offsets[row + iu + 1]; i < end;
-                 ++i)
+            const vtkIdType begin = this->Offsets[row + iu];
+            const vtkIdType end = this->Offsets[row + iu + 1];
+            if (begin == end)
+            {
+              continue;
+            }
+            this->GetBlock(a, iu, iv, block);
+            for (vtkIdType i = begin; i < end; ++i)
             {
               if (this->Mask[i])
               {
                 this->Out[i] = this->Values[i];
                 continue;
               }
-              const int count = this->Search(i, a, iu, iv, local.Found);
+              int count = this->SearchBlock(i, i - begin, block);
+              if (count < 0)
+              {
+                count = this->Search(i, block, local.Found);
+              }
               this->NeighbourCount[i] = count >= 0 ? static_cast<unsigned char>(count) : Searched;
               if (count < 0)
               {

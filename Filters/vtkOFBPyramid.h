@@ -100,8 +100,13 @@ public:
    * Recompute only the arrays of levels 1.. whose level-0 array was modified (its
    * MTime) or added since the last computation, as UpdateLevels() does when the
    * structure is unchanged: a LIC re-convolution filters the LIC array alone. Where none
-   * is newer (values changed in place, e.g. by painting, with only the OFB Modified())
-   * or a level-0 array is missing from the coarser levels, everything is recomputed.
+   * is newer (values changed in place, e.g. by painting, with only the OFB Modified()),
+   * only the samples of each level that may read one of level 0's samples marked
+   * modified since (vtkOFB::MarkSamplesModified) are filtered again, every array, and
+   * they are marked modified on their level, so that a renderer uploads them alone; the
+   * values are those of a full recomputation. Everything is recomputed where no sample
+   * was marked, where more than a quarter of level 0 was, or where a level-0 array is
+   * missing from the coarser levels.
    */
   void UpdateModifiedArrays();
 
@@ -157,6 +162,12 @@ protected:
   vtkTimeStamp ArraysTime;
   vtkTimeStamp AllArraysTime;
   vtkWeakPointer<vtkOFB> LastInputOFB; // the level 0 the levels were built from
+  // Per level 1.., the sampler's normals (3 floats a sample, empty without): the facing
+  // test's target normals at every filtering.
+  std::vector<std::vector<float>> ReferenceNormals;
+
+  /// UpdateModifiedArrays for values changed in place; false where it must do all.
+  bool FilterChangedSamples();
 
 private:
   vtkOFBPyramid(const vtkOFBPyramid&) = delete;

@@ -229,8 +229,9 @@ void vtkOFBShaderStorage::RecordArrays(const Selection& selection)
 vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection, unsigned int whole)
 {
   // Level 0 changed since the last upload: filter the coarser levels' attributes again,
-  // only the arrays modified (a new LIC: the LIC alone) unless samples changed in place
-  // (ranges, e.g. painting), and upload the buffers of those arrays.
+  // only the arrays modified (a new LIC: the LIC alone), or, where samples changed in
+  // place (ranges, e.g. painting), only the samples of each level that read them, and
+  // upload those.
   const bool inPlace = this->Ranges->GetNumberOfTuples() > 0;
   if ((whole || inPlace) && this->Pyramid->GetArraysTime() <= this->UploadTime.GetMTime())
   {
@@ -241,17 +242,26 @@ vtkIdType vtkOFBShaderStorage::UploadCoarseLevels(const Selection& selection, un
     return 0;
   }
   // Every buffer where other arrays may have changed too: samples changed in place, or
-  // the pyramid computed all arrays again since the last upload.
-  const bool all =
-    inPlace || !whole || this->Pyramid->GetAllArraysTime() > this->UploadTime.GetMTime();
+  // the pyramid computed all arrays again since the last upload; the samples marked on
+  // each level where the pyramid filtered those alone.
+  const bool everything = this->Pyramid->GetAllArraysTime() > this->UploadTime.GetMTime();
+  const bool all = inPlace || !whole || everything;
+  const bool marked = inPlace && !whole && !everything;
   const unsigned int buffers = all ? AllArrays : whole;
   vtkIdType count = 0;
   for (size_t k = 1; k < this->Levels.size(); ++k)
   {
-    this->Ranges->Initialize();
-    this->Ranges->SetNumberOfComponents(2);
-    const vtkIdType all[2] = { 0, this->Levels[k]->GetNumberOfSamples() };
-    this->Ranges->InsertNextTypedTuple(all);
+    if (marked)
+    {
+      this->Levels[k]->GetSampleRangesModifiedSince(this->UploadTime.GetMTime(), this->Ranges);
+    }
+    else
+    {
+      this->Ranges->Initialize();
+      this->Ranges->SetNumberOfComponents(2);
+      const vtkIdType range[2] = { 0, this->Levels[k]->GetNumberOfSamples() };
+      this->Ranges->InsertNextTypedTuple(range);
+    }
     count +=
       this->UploadRanges(this->Levels, static_cast<int>(k), selection, this->Ranges, buffers);
   }

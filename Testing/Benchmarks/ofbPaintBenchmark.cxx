@@ -16,7 +16,8 @@
 //   xvfb-run -a -s "-screen 0 1280x1024x24" ofbPaintBenchmark [options]
 // Options: --mesh FILE (default the Stanford bunny), --resolutions 1024,2048,
 // --dabs5 N (default 20000), --dabs25 N (default 2000), --repetitions N (default 3,
-// the median is printed), --no-openvdb, --no-render.
+// the median is printed), --no-openvdb, --no-render, --lookup MODE (the stroke's display:
+// nearest, the default, idw, mipmapped or nearestmipmapped).
 #include "vtkOFBMemoryFloor.h"
 #include "vtkOFBReadMesh.h"
 
@@ -91,6 +92,7 @@ struct Options
   bool OpenVDB = true;
   bool Render = true;
   bool FootprintsOnly = false; // only the 10,000 footprints (for profiling)
+  int Lookup = vtkOFBPolyDataMapper::Nearest; // the stroke's display
 };
 
 bool ParseOptions(int argc, char* argv[], Options& o)
@@ -137,11 +139,31 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       o.FootprintsOnly = true;
     }
+    else if (arg == "--lookup" && hasValue)
+    {
+      const std::string mode = argv[++i];
+      const char* names[] = { "nearest", "idw", "mipmapped", "nearestmipmapped" };
+      const int modes[] = { vtkOFBPolyDataMapper::Nearest,
+        vtkOFBPolyDataMapper::InverseDistance,
+        vtkOFBPolyDataMapper::Mipmapped,
+        vtkOFBPolyDataMapper::NearestMipmapped };
+      o.Lookup = -1;
+      for (int m = 0; m < 4; ++m)
+      {
+        o.Lookup = mode == names[m] ? modes[m] : o.Lookup;
+      }
+      if (o.Lookup < 0)
+      {
+        std::cerr << "--lookup: nearest, idw, mipmapped or nearestmipmapped\n";
+        return false;
+      }
+    }
     else
     {
       std::cerr << "usage: ofbPaintBenchmark [--mesh FILE] [--resolutions 1024,2048] "
                    "[--dabs5 20000] [--dabs25 2000] [--repetitions 3] [--no-openvdb] "
-                   "[--no-render] [--footprints-only]\n";
+                   "[--no-render] [--footprints-only] [--lookup nearest|idw|mipmapped|"
+                   "nearestmipmapped (the stroke's display)]\n";
       return false;
     }
   }
@@ -487,7 +509,7 @@ void TimeParticles(OFBUnderTest& ofb, const Options& o)
 }
 
 /// One stroke of 100 dabs of radius 25 cells with the mapper's incremental upload.
-void TimeStrokeWithUpload(OFBUnderTest& ofb, vtkPolyData* surface)
+void TimeStrokeWithUpload(OFBUnderTest& ofb, vtkPolyData* surface, int lookup)
 {
   vtkOFB* o = ofb.OFB;
   const double s = o->GetCellSize();
@@ -499,6 +521,7 @@ void TimeStrokeWithUpload(OFBUnderTest& ofb, vtkPolyData* surface)
   vtkNew<vtkOFBPolyDataMapper> mapper;
   mapper->SetInputData(surface);
   mapper->SetOFB(o);
+  mapper->SetLookupMode(lookup);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   renderer->AddActor(actor);
@@ -563,11 +586,13 @@ void TimeStrokeWithUpload(OFBUnderTest& ofb, vtkPolyData* surface)
   // The upload's share of a frame (median difference, alternated frames), times the
   // frames, spread over the dabs they carried.
   const double upload = std::max(0.0, Median(changed) - Median(still)) * frames;
-  std::printf("  stroke of %lld dabs of radius 25 cells: paint %.3f ms/dab, frame with upload "
-              "%.2f ms, frame without change %.2f ms (medians of %d alternated frames) -> "
-              "upload %.3f ms/dab; paint + upload %.3f ms/dab (%.0f samples uploaded per "
-              "frame)\n",
+  std::printf(
+    "  stroke of %lld dabs of radius 25 cells (display: %s): paint %.3f ms/dab, frame with upload "
+    "%.2f ms, frame without change %.2f ms (medians of %d alternated frames) -> "
+    "upload %.3f ms/dab; paint + upload %.3f ms/dab (%.0f samples uploaded per "
+    "frame)\n",
     static_cast<long long>(dabs),
+    vtkOFBPolyDataMapper::GetLookupModeAsString(lookup),
     1e3 * paint / dabs,
     1e3 * Median(changed),
     1e3 * Median(still),
@@ -651,7 +676,7 @@ int main(int argc, char* argv[])
     TimeParticles(ofb, o);
     if (o.Render && r + 1 == o.Resolutions.size())
     {
-      TimeStrokeWithUpload(ofb, surface);
+      TimeStrokeWithUpload(ofb, surface, o.Lookup);
     }
   }
   return 0;

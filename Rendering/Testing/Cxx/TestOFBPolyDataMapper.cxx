@@ -8,7 +8,9 @@
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBBrush.h"
 #include "vtkOFBMapperTestHelpers.h"
+#include "vtkOFBPainter.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBSampler.h"
 #include "vtkOFBTestUtilities.h"
@@ -281,6 +283,33 @@ TEST(OFBPolyDataMapper, PaintingUploadsOnlyTheModifiedSamples)
   scene.Window->Render();
   EXPECT_GE(scene.Mapper->GetLastUploadedSampleCount(), 95); // a few may coincide
   EXPECT_LE(scene.Mapper->GetLastUploadedSampleCount(), 100);
+}
+
+// With a mipmapped display, a dab uploads the painted samples and, on each coarser level,
+// only those that read them (vtkOFBPyramid filters those alone), and the paint reaches
+// the screen through the coarse level that a small window reads.
+TEST(OFBPolyDataMapper, PaintingWithMipmapsUploadsOnlyThePaintedNeighbourhood)
+{
+  Scene scene(256);
+  scene.Mapper->SetLookupModeToNearestMipmapped();
+  scene.Fill(255, 0, 0);
+  scene.Window->Render();
+  const vtkIdType all = scene.Mapper->GetLastUploadedSampleCount();
+  ASSERT_GT(all, scene.OFB->GetNumberOfSamples()) << "the coarser levels are uploaded too";
+  ASSERT_TRUE(IsRed(Centre(scene.Window)));
+
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(scene.OFB);
+  painter->GetBrush()->SetColor(0.0, 1.0, 0.0);
+  painter->GetBrush()->SetRadius(0.3);
+  const vtkIdType painted = painter->Dab(0.0, 0.0, 1.0); // the point facing the camera
+  ASSERT_GT(painted, 0);
+  scene.Window->Render();
+  const vtkIdType uploaded = scene.Mapper->GetLastUploadedSampleCount();
+  EXPECT_GT(uploaded, painted) << "the coarser levels' samples near the paint";
+  EXPECT_LT(4 * uploaded, all) << "more than the painted neighbourhood was uploaded";
+  const Pixel p = Centre(scene.Window);
+  EXPECT_TRUE(p[1] > 150 && p[0] < 40) << p[0] << " " << p[1] << " " << p[2];
 }
 
 TEST(OFBPolyDataMapper, IncrementalUploadReachesTheScreen)

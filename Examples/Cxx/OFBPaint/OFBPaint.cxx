@@ -369,7 +369,8 @@ void PaintApp::UpdateTexts(const std::string& message)
           "s  save "
        << SystemTools::GetFilenameName(this->SavePath)
        << "    l  load it    p  "
-          "screenshot (PNG)\nr  reset the view    h  hide this help    q  quit";
+          "screenshot (PNG)\nd  display: Nearest / NearestMipmapped (the mean of detail finer "
+          "than a pixel)\nr  reset the view    h  hide this help    q  quit";
   this->Help->SetInput(help.str().c_str());
   // The brush in two lines: size, strength and colour; falloff, target and blend mode.
   vtkOFBBrush* brush = rep->GetBrush();
@@ -390,7 +391,8 @@ void PaintApp::UpdateTexts(const std::string& message)
   }
   line << "\nfalloff " << vtkOFBBrush::GetFalloffAsString(brush->GetFalloff()) << "   target "
        << vtkOFBBrush::GetTargetAsString(brush->GetTarget()) << "   blend "
-       << vtkOFBBrush::GetBlendModeAsString(brush->GetBlendMode());
+       << vtkOFBBrush::GetBlendModeAsString(brush->GetBlendMode()) << "   display "
+       << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode());
   const std::string status = line.str() + (message.empty() ? "" : "\n" + message);
   this->Status->SetInput(status.c_str());
 }
@@ -438,6 +440,13 @@ void PaintApp::OnKey(vtkObject*, unsigned long, void* clientData, void*)
     }
     case 'r':
       self->ResetView(0.0, 0.0, 1.0);
+      break;
+    case 'd':
+      // NearestMipmapped filters the OFB's pyramid; a stroke then filters again only the
+      // samples of each level near the paint (vtkOFBPyramid), so painting stays fluid.
+      self->Mapper->SetLookupMode(self->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::Nearest
+          ? vtkOFBPolyDataMapper::NearestMipmapped
+          : vtkOFBPolyDataMapper::Nearest);
       break;
     default:
       return; // the widget's keys and the interactor style's

@@ -1,4 +1,5 @@
 #include "vtkOFBPyramid.h"
+#include "vtkOFBPyramidResampler.h"
 
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -13,6 +14,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <set>
 #include <string>
@@ -20,325 +22,6 @@
 
 namespace
 {
-/// The 3-component sample normals of `pd` (the active ones, else "Normals"), or null.
-vtkDataArray* SampleNormals(vtkPointData* pd)
-{
-  vtkDataArray* normals = pd->GetNormals() ? pd->GetNormals() : pd->GetArray("Normals");
-  return normals && normals->GetNumberOfComponents() == 3 ? normals : nullptr;
-}
-
-/**
- * The distance-weighted transfer of vtkOFBPyramid::Resample: the arrays to
- * transfer and their new target arrays, and the filter of one target sample
- * (a functor for vtkSMPTools::For over the target samples).
- */
-class ResampleFunctor
-{
-public:
-  ResampleFunctor(vtkOFB* source, vtkOFB* target, double radius)
-    : Source(source)
-    , Target(target)
-    , Radius(radius)
-  {
-  }
-
-  /**
-   * The arrays of the source to transfer (named, one tuple per sample; only those in
-   * `names` unless it is null), each with a new target array of zeros (`fill`: else
-   * left uninitialized, WriteInPlace replaces it).
-   */
-  void CollectArrays(const std::set<std::string>* names, bool fill = true)
-  {
-    vtkPointData* spd = this->Source->GetSampleData();
-    const vtkIdType nt = this->Target->GetNumberOfSamples();
-    for (int a = 0; a < spd->GetNumberOfArrays(); ++a)
-    {
-      vtkDataArray* array = spd->GetArray(a);
-      if (!array || !array->GetName() ||
-        array->GetNumberOfTuples() != this->Source->GetNumberOfSamples() ||
-        (names && !names->count(array->GetName())))
-      {
-        continue;
-      }
-      vtkSmartPointer<vtkDataArray> out;
-      out.TakeReference(array->NewInstance());
-      out->SetName(array->GetName());
-      out->SetNumberOfComponents(array->GetNumberOfComponents());
-      out->SetNumberOfTuples(fill ? nt : 0);
-      if (fill)
-      {
-        out->Fill(0.0);
-      }
-      this->From.push_back(array);
-      auto* floats = vtkFloatArray::FastDownCast(array);
-      auto* bytes = vtkUnsignedCharArray::FastDownCast(array);
-      this->FromFloats.push_back(floats ? floats->GetPointer(0) : nullptr);
-      this->FromBytes.push_back(bytes ? bytes->GetPointer(0) : nullptr);
-      this->To.push_back(out);
-      this->TotalComponents += array->GetNumberOfComponents();
-    }
-  }
-
-  /**
-   * The normals of the target, to which source samples must not face away: `reference`
-   * (3 floats a target sample) where given, else a copy of the target's normals (the
-   * transfer replaces them by the source's); none when either OFB has no normals.
-   */
-  void SetTargetNormals(const float* reference)
-  {
-    this->SourceNormals = SampleNormals(this->Source->GetSampleData());
-    auto* floats = vtkFloatArray::FastDownCast(this->SourceNormals);
-    this->SourceNormalValues = floats ? floats->GetPointer(0) : nullptr;
-    this->TargetNormalValues = nullptr;
-    if (!this->SourceNormals)
-    {
-      return;
-    }
-    if (reference)
-    {
-      this->TargetNormalValues = reference;
-      return;
-    }
-    vtkDataArray* targetNormals = SampleNormals(this->Target->GetSampleData());
-    if (!targetNormals || targetNormals->GetNumberOfTuples() != this->Target->GetNumberOfSamples())
-    {
-      return;
-    }
-    const vtkIdType nt = this->Target->GetNumberOfSamples();
-    this->TargetNormals.resize(static_cast<size_t>(3 * nt));
-    for (vtkIdType i = 0; i < nt; ++i)
-    {
-      double n[3];
-      targetNormals->GetTuple(i, n);
-      for (int c = 0; c < 3; ++c)
-      {
-        this->TargetNormals[3 * i + c] = static_cast<float>(n[c]);
-      }
-    }
-    this->TargetNormalValues = this->TargetNormals.data();
-  }
-
-  /**
-   * Write into the target's own arrays of the same names instead of new ones (a
-   * transfer to some target samples only, FilterSome); false, with nothing set, where
-   * the target lacks one of them or its size or components differ.
-   */
-  bool WriteInPlace()
-  {
-    std::vector<vtkSmartPointer<vtkDataArray>> own;
-    vtkPointData* tpd = this->Target->GetSampleData();
-    for (const auto& to : this->To)
-    {
-      vtkDataArray* array = tpd->GetArray(to->GetName());
-      if (!array || array->GetDataType() != to->GetDataType() ||
-        array->GetNumberOfComponents() != to->GetNumberOfComponents() ||
-        array->GetNumberOfTuples() != this->Target->GetNumberOfSamples())
-      {
-        return false;
-      }
-      own.emplace_back(array);
-    }
-    this->To = own;
-    return true;
-  }
-
-  /// Filter the target samples ids[begin, end).
-  void FilterSome(const vtkIdType* ids, vtkIdType begin, vtkIdType end) const
-  {
-    std::vector<double> sum(static_cast<size_t>(this->TotalComponents));
-    for (vtkIdType k = begin; k < end; ++k)
-    {
-      std::fill(sum.begin(), sum.end(), 0.0);
-      const double weights = this->Gather(ids[k], sum);
-      if (weights > 0.0)
-      {
-        this->Write(ids[k], sum, weights);
-      }
-    }
-  }
-
-  /// Filter target samples [begin, end).
-  void operator()(vtkIdType begin, vtkIdType end) const
-  {
-    std::vector<double> sum(static_cast<size_t>(this->TotalComponents));
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      std::fill(sum.begin(), sum.end(), 0.0);
-      const double weights = this->Gather(i, sum);
-      if (weights > 0.0)
-      {
-        this->Write(i, sum, weights);
-      }
-    }
-  }
-
-  /// Replace the target's arrays by the transferred ones, with the source's attribute roles.
-  void ReplaceTargetArrays() const
-  {
-    vtkPointData* spd = this->Source->GetSampleData();
-    vtkPointData* tpd = this->Target->GetSampleData();
-    for (const auto& to : this->To)
-    {
-      tpd->RemoveArray(to->GetName());
-      tpd->AddArray(to);
-    }
-    for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
-    {
-      vtkAbstractArray* active = spd->GetAbstractAttribute(attribute);
-      if (active && active->GetName() && tpd->GetArray(active->GetName()))
-      {
-        tpd->SetActiveAttribute(active->GetName(), attribute);
-      }
-    }
-  }
-
-private:
-  /**
-   * The weighted sums of the source samples within Radius of target sample i
-   * that face its way into `sum`, and their total weight; the closest such
-   * sample within 2 Radius, with weight 1, when none is within Radius.
-   */
-  double Gather(vtkIdType i, std::vector<double>& sum) const
-  {
-    const double r = this->Radius;
-    double x[3];
-    this->Target->GetSamplePosition(i, x);
-    const float* tn = this->TargetNormalValues ? this->TargetNormalValues + 3 * i : nullptr;
-    double weights = 0.0;
-    this->Source->ForEachSampleInSphere(x,
-      r,
-      [&](vtkIdType j, double d2)
-      {
-        if (d2 < r * r && this->Faces(j, tn))
-        {
-          const double q = 1.0 - d2 / (r * r);
-          this->Accumulate(j, q * q, sum);
-          weights += q * q;
-        }
-      });
-    if (weights > 0.0)
-    {
-      return weights;
-    }
-    // None within r (rare): the closest within 2 r, searched only then (a sphere of
-    // 2 r holds four times the candidates).
-    vtkIdType closest = -1;
-    double closestD2 = 4.0 * r * r;
-    this->Source->ForEachSampleInSphere(x,
-      2.0 * r,
-      [&](vtkIdType j, double d2)
-      {
-        if (d2 < closestD2 && this->Faces(j, tn))
-        {
-          closestD2 = d2;
-          closest = j;
-        }
-      });
-    if (closest >= 0)
-    {
-      this->Accumulate(closest, 1.0, sum);
-      weights = 1.0;
-    }
-    return weights;
-  }
-
-  /// Whether source sample j does not face away from the target normal tn (if any).
-  bool Faces(vtkIdType j, const float* tn) const
-  {
-    if (!tn)
-    {
-      return true;
-    }
-    double sn[3];
-    if (this->SourceNormalValues)
-    {
-      const float* n = this->SourceNormalValues + 3 * j;
-      sn[0] = n[0];
-      sn[1] = n[1];
-      sn[2] = n[2];
-    }
-    else
-    {
-      this->SourceNormals->GetTuple(j, sn);
-    }
-    return sn[0] * tn[0] + sn[1] * tn[1] + sn[2] * tn[2] >= 0.0;
-  }
-
-  /// out[c] += w * v[c] for the nc components of one tuple.
-  template<typename T>
-  static void AddTuple(const T* v, int nc, double w, double* out)
-  {
-    for (int c = 0; c < nc; ++c)
-    {
-      out[c] += w * v[c];
-    }
-  }
-
-  /// Add weight w times every component of source sample j to `sum`.
-  void Accumulate(vtkIdType j, double w, std::vector<double>& sum) const
-  {
-    int offset = 0;
-    for (size_t k = 0; k < this->From.size(); ++k)
-    {
-      const int nc = this->From[k]->GetNumberOfComponents();
-      double* out = sum.data() + offset;
-      // Float and byte arrays (the LIC, normals, colours) read directly, the others
-      // through the virtual accessor.
-      if (this->FromFloats[k])
-      {
-        AddTuple(this->FromFloats[k] + nc * j, nc, w, out);
-      }
-      else if (this->FromBytes[k])
-      {
-        AddTuple(this->FromBytes[k] + nc * j, nc, w, out);
-      }
-      else
-      {
-        for (int c = 0; c < nc; ++c)
-        {
-          out[c] += w * this->From[k]->GetComponent(j, c);
-        }
-      }
-      offset += nc;
-    }
-  }
-
-  /// Target sample i's values: the sums over their weight, integers rounded.
-  void Write(vtkIdType i, const std::vector<double>& sum, double weights) const
-  {
-    int offset = 0;
-    for (size_t k = 0; k < this->From.size(); ++k)
-    {
-      const int nc = this->From[k]->GetNumberOfComponents();
-      const bool integral =
-        this->From[k]->GetDataType() != VTK_FLOAT && this->From[k]->GetDataType() != VTK_DOUBLE;
-      for (int c = 0; c < nc; ++c)
-      {
-        double v = sum[offset + c] / weights;
-        if (integral)
-        {
-          v = std::floor(v + 0.5);
-        }
-        this->To[k]->SetComponent(i, c, v);
-      }
-      offset += nc;
-    }
-  }
-
-  vtkOFB* Source;
-  vtkOFB* Target;
-  const double Radius;
-  std::vector<vtkDataArray*> From;
-  std::vector<const float*> FromFloats;        // From[k]'s values if float, else null
-  std::vector<const unsigned char*> FromBytes; // From[k]'s values if unsigned char
-  std::vector<vtkSmartPointer<vtkDataArray>> To;
-  int TotalComponents = 0;
-  vtkDataArray* SourceNormals = nullptr;
-  const float* SourceNormalValues = nullptr; // SourceNormals' values if float
-  std::vector<float> TargetNormals;          // a copy, where no reference is given
-  const float* TargetNormalValues = nullptr; // the facing test's target normals, or null
-};
-
 /// Scale the 3-component "Normals" sample array of `ofb` to unit length: samples
 /// ids[0 .. count) where ids is given, else all.
 void NormalizeSampleNormals(vtkOFB* ofb, const vtkIdType* ids = nullptr, vtkIdType count = 0)
@@ -376,20 +59,23 @@ double FilterRadiusOf(vtkOFB* source, double radius)
 /**
  * vtkOFBPyramid::Resample of the arrays in `names` (all where it is null); the facing
  * test's target normals are `reference` (3 floats a target sample) where given, else
- * the target's own.
+ * the target's own; `fellBack` (one byte a target sample), where given, receives 1 for
+ * the target samples with no source within the radius.
  */
 bool ResampleArrays(vtkOFB* source,
   vtkOFB* target,
   double radius,
   const std::set<std::string>* names,
-  const float* reference = nullptr)
+  const float* reference = nullptr,
+  unsigned char* fellBack = nullptr)
 {
   if (!source || !target || !(radius > 0.0) || source->GetNumberOfSamples() == 0)
   {
     return false;
   }
-  ResampleFunctor transfer(source, target, FilterRadiusOf(source, radius));
+  vtkOFBPyramidResampler transfer(source, target, FilterRadiusOf(source, radius));
   transfer.SetTargetNormals(reference);
+  transfer.FellBack = fellBack;
   transfer.CollectArrays(names);
   vtkSMPTools::For(0, target->GetNumberOfSamples(), transfer);
   transfer.ReplaceTargetArrays();
@@ -401,52 +87,78 @@ bool ResampleArrays(vtkOFB* source,
 }
 
 /**
- * The target samples (sorted) whose Resample from `source` may read one of the source
- * samples `changed`: those within 2 `radius` of one (the fallback's reach). The changed
- * samples are gathered into cubes of side `radius` first, and each cube asks for the
- * targets within 2 radius of any point of it (a superset: filtering a target whose
- * sources did not change gives its values again).
+ * The target samples (sorted) whose Resample from `source` (with `radius`) may read one
+ * of the source samples `changed`: those within the radius of one, and those that fell
+ * back (`fellBack`, Resample's closest sample within 2 radius) with one within 2 radius.
+ * The changed samples are gathered into cubes of half the radius first, and each cube
+ * asks for the targets within the radius of any point of it (a superset: filtering a
+ * target whose sources did not change gives its values again).
  */
 std::vector<vtkIdType> AffectedTargets(vtkOFB* source,
   const std::vector<vtkIdType>& changed,
   vtkOFB* target,
-  double radius)
+  double radius,
+  const unsigned char* fellBack)
 {
   const double* origin = source->GetOrigin();
+  const double side = 0.5 * radius;
   std::vector<vtkTypeUInt64> cubes;
   cubes.reserve(changed.size());
+  std::vector<unsigned char> isChanged(static_cast<size_t>(source->GetNumberOfSamples()), 0);
   for (vtkIdType j : changed)
   {
+    isChanged[j] = 1;
     double x[3];
     source->GetSamplePosition(j, x);
     vtkTypeUInt64 key = 0;
     for (int c = 0; c < 3; ++c)
     {
-      const double q = std::max(0.0, std::floor((x[c] - origin[c]) / radius));
+      const double q = std::max(0.0, std::floor((x[c] - origin[c]) / side));
       key = (key << 21) | (static_cast<vtkTypeUInt64>(std::min(q, 2097151.0)));
     }
     cubes.push_back(key);
   }
   std::sort(cubes.begin(), cubes.end());
   cubes.erase(std::unique(cubes.begin(), cubes.end()), cubes.end());
-  std::vector<unsigned char> hit(static_cast<size_t>(target->GetNumberOfSamples()), 0);
-  const double reach = 2.0 * radius + 0.5 * std::sqrt(3.0) * radius;
-  for (vtkTypeUInt64 key : cubes)
-  {
-    double centre[3];
-    for (int c = 2; c >= 0; --c)
+  const vtkIdType nt = target->GetNumberOfSamples();
+  std::vector<std::atomic<unsigned char>> hit(static_cast<size_t>(nt)); // zeros
+  const double reach = radius + 0.5 * std::sqrt(3.0) * side;
+  vtkSMPTools::For(0,
+    static_cast<vtkIdType>(cubes.size()),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      centre[c] = origin[c] + (static_cast<double>(key & 2097151u) + 0.5) * radius;
-      key >>= 21;
-    }
-    target->ForEachSampleInSphere(centre, reach, [&](vtkIdType t, double) { hit[t] = 1; });
-  }
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        vtkTypeUInt64 key = cubes[k];
+        double centre[3];
+        for (int c = 2; c >= 0; --c)
+        {
+          centre[c] = origin[c] + (static_cast<double>(key & 2097151u) + 0.5) * side;
+          key >>= 21;
+        }
+        // Threads may mark the same target: each writes the same value.
+        target->ForEachSampleInSphere(centre,
+          reach,
+          [&](vtkIdType t, double) {
+            reinterpret_cast<std::atomic<unsigned char>&>(hit[t]).store(
+              1, std::memory_order_relaxed);
+          });
+      }
+    });
   std::vector<vtkIdType> ids;
-  for (size_t t = 0; t < hit.size(); ++t)
+  for (vtkIdType t = 0; t < nt; ++t)
   {
-    if (hit[t])
+    bool affected = hit[t].load(std::memory_order_relaxed) != 0;
+    if (!affected && fellBack && fellBack[t])
     {
-      ids.push_back(static_cast<vtkIdType>(t));
+      double x[3];
+      target->GetSamplePosition(t, x);
+      source->ForEachSampleInSphere(
+        x, 2.0 * radius, [&](vtkIdType j, double) { affected = affected || isChanged[j]; });
+    }
+    if (affected)
+    {
+      ids.push_back(t);
     }
   }
   return ids;
@@ -455,17 +167,20 @@ std::vector<vtkIdType> AffectedTargets(vtkOFB* source,
 /**
  * Resample of every array of `source` to the target samples `ids` alone, in place (the
  * other target samples keep their values), their normals scaled to unit length; the
- * facing test's target normals are `reference` where given. False (nothing changed)
+ * facing test's target normals are `reference` where given, `fellBack` as in
+ * ResampleArrays. False (nothing changed)
  * where the target lacks an array of the source or one differs in type or size.
  */
 bool ResampleSome(vtkOFB* source,
   vtkOFB* target,
   double radius,
   const std::vector<vtkIdType>& ids,
-  const float* reference)
+  const float* reference,
+  unsigned char* fellBack)
 {
-  ResampleFunctor transfer(source, target, radius);
+  vtkOFBPyramidResampler transfer(source, target, radius);
   transfer.SetTargetNormals(reference);
+  transfer.FellBack = fellBack;
   transfer.CollectArrays(nullptr, false);
   if (!transfer.WriteInPlace())
   {
@@ -473,26 +188,27 @@ bool ResampleSome(vtkOFB* source,
   }
   vtkSMPTools::For(0,
     static_cast<vtkIdType>(ids.size()),
-    [&](vtkIdType begin, vtkIdType end) { transfer.FilterSome(ids.data(), begin, end); });
+    [&](vtkIdType begin, vtkIdType end) { transfer.Filter(ids.data(), begin, end); });
   NormalizeSampleNormals(target, ids.data(), static_cast<vtkIdType>(ids.size()));
   return true;
 }
 
 /// Levels 1.. (`levels`) filtered from level 0 (`input`) one after the other: the arrays
 /// in `names`, all where it is null. `radius` in cells of each coarser level; the facing
-/// test's normals of level k + 1 are references[k] where it is not empty.
+/// test's target normals and the fallback record of level k + 1 are references[k] and
+/// fellBacks[k] (see ResampleArrays).
 void FilterLevels(vtkOFB* input,
   const std::vector<vtkSmartPointer<vtkOFB>>& levels,
   double radius,
   const std::set<std::string>* names,
-  const std::vector<std::vector<float>>& references)
+  const std::vector<const float*>& references,
+  const std::vector<unsigned char*>& fellBacks)
 {
   for (size_t k = 0; k < levels.size(); ++k)
   {
     vtkOFB* finer = k == 0 ? input : levels[k - 1].Get();
-    const float* reference =
-      k < references.size() && !references[k].empty() ? references[k].data() : nullptr;
-    ResampleArrays(finer, levels[k], radius * levels[k]->GetCellSize(), names, reference);
+    ResampleArrays(
+      finer, levels[k], radius * levels[k]->GetCellSize(), names, references[k], fellBacks[k]);
   }
 }
 
@@ -593,7 +309,7 @@ bool vtkOFBPyramid::UpdateLevels()
   if (rebuild)
   {
     this->Levels.clear();
-    this->ReferenceNormals.clear();
+    this->States.clear();
     this->LastInputOFB = this->InputOFB;
     this->StructureTime.Modified();
     if (this->MaximumNumberOfLevels > 1 && !this->Surface)
@@ -623,7 +339,7 @@ bool vtkOFBPyramid::UpdateLevels()
       {
         vtkErrorMacro("UpdateLevels: level " << k << " could not be sampled.");
         this->Levels.clear();
-        this->ReferenceNormals.clear();
+        this->States.clear();
         return false;
       }
       vtkSmartPointer<vtkOFB> level = vtkSmartPointer<vtkOFB>::New();
@@ -632,11 +348,13 @@ bool vtkOFBPyramid::UpdateLevels()
       // The sampler's normals: the facing test's reference at every filtering (the
       // level's "Normals" become the filtered ones), so that a filtering does not depend
       // on the ones before.
-      this->ReferenceNormals.emplace_back();
-      auto* normals = vtkFloatArray::FastDownCast(SampleNormals(level->GetSampleData()));
+      this->States.emplace_back();
+      LevelState& state = this->States.back();
+      state.FellBack.assign(static_cast<size_t>(level->GetNumberOfSamples()), 0);
+      auto* normals = vtkFloatArray::FastDownCast(vtkOFBSampleNormals(level->GetSampleData()));
       if (normals)
       {
-        this->ReferenceNormals.back().assign(
+        state.ReferenceNormals.assign(
           normals->GetPointer(0), normals->GetPointer(0) + 3 * level->GetNumberOfSamples());
       }
     }
@@ -656,7 +374,7 @@ bool vtkOFBPyramid::UpdateLevels()
 //------------------------------------------------------------------------------
 void vtkOFBPyramid::UpdateArrays()
 {
-  FilterLevels(this->InputOFB, this->Levels, this->FilterRadius, nullptr, this->ReferenceNormals);
+  this->FilterAllLevels(nullptr);
   this->AllArraysTime.Modified();
   this->ArraysTime.Modified();
 }
@@ -701,8 +419,23 @@ void vtkOFBPyramid::UpdateModifiedArrays()
     }
     return;
   }
-  FilterLevels(this->InputOFB, this->Levels, this->FilterRadius, &changed, this->ReferenceNormals);
+  this->FilterAllLevels(&changed);
   this->ArraysTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPyramid::FilterAllLevels(const std::set<std::string>* names)
+{
+  std::vector<const float*> references;
+  std::vector<unsigned char*> fellBacks;
+  for (LevelState& state : this->States)
+  {
+    references.push_back(state.ReferenceNormals.empty() ? nullptr : state.ReferenceNormals.data());
+    fellBacks.push_back(state.FellBack.data());
+  }
+  references.resize(this->Levels.size(), nullptr);
+  fellBacks.resize(this->Levels.size(), nullptr);
+  FilterLevels(this->InputOFB, this->Levels, this->FilterRadius, names, references, fellBacks);
 }
 
 //------------------------------------------------------------------------------
@@ -727,7 +460,7 @@ bool vtkOFBPyramid::FilterChangedSamples()
       changed.push_back(i);
     }
   }
-  if (changed.empty() || this->ReferenceNormals.size() != this->Levels.size())
+  if (changed.empty() || this->States.size() != this->Levels.size())
   {
     return false;
   }
@@ -738,10 +471,12 @@ bool vtkOFBPyramid::FilterChangedSamples()
     vtkOFB* finer = k == 0 ? this->InputOFB : this->Levels[k - 1].Get();
     vtkOFB* level = this->Levels[k];
     const double radius = FilterRadiusOf(finer, this->FilterRadius * level->GetCellSize());
-    std::vector<vtkIdType> targets = AffectedTargets(finer, changed, level, radius);
+    LevelState& state = this->States[k];
+    std::vector<vtkIdType> targets =
+      AffectedTargets(finer, changed, level, radius, state.FellBack.data());
     const float* reference =
-      this->ReferenceNormals[k].empty() ? nullptr : this->ReferenceNormals[k].data();
-    if (!ResampleSome(finer, level, radius, targets, reference))
+      state.ReferenceNormals.empty() ? nullptr : state.ReferenceNormals.data();
+    if (!ResampleSome(finer, level, radius, targets, reference, state.FellBack.data()))
     {
       return false;
     }

@@ -29,6 +29,8 @@
 #include "vtkTimeStamp.h"        // for members
 #include "vtkWeakPointer.h"      // for LastInputOFB
 
+#include <set>    // for FilterAllLevels
+#include <string> // for FilterAllLevels
 #include <vector> // for Levels
 
 class vtkOFB;
@@ -162,12 +164,23 @@ protected:
   vtkTimeStamp ArraysTime;
   vtkTimeStamp AllArraysTime;
   vtkWeakPointer<vtkOFB> LastInputOFB; // the level 0 the levels were built from
-  // Per level 1.., the sampler's normals (3 floats a sample, empty without): the facing
-  // test's target normals at every filtering.
-  std::vector<std::vector<float>> ReferenceNormals;
+  /// What the filtering of a level 1.. keeps: the sampler's normals (3 floats a sample,
+  /// empty without), the facing test's target normals at every filtering; and which
+  /// samples found no source within the filter radius (1 byte a sample; they read the
+  /// closest within twice the radius).
+  struct LevelState
+  {
+    std::vector<float> ReferenceNormals;
+    std::vector<unsigned char> FellBack;
+  };
+
+protected:
+  std::vector<LevelState> States; // levels 1..
 
   /// UpdateModifiedArrays for values changed in place; false where it must do all.
   bool FilterChangedSamples();
+  /// Filter the arrays in `names` (a std::set<std::string>, all where null) of every level.
+  void FilterAllLevels(const std::set<std::string>* names);
 
 private:
   vtkOFBPyramid(const vtkOFBPyramid&) = delete;

@@ -2,6 +2,7 @@
 // Resample, bad input and PrintSelf.
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
@@ -302,6 +303,82 @@ TEST(OFBPyramid, PaintingFiltersOnlyTheSamplesThatReadThePaint)
   ASSERT_TRUE(pyramid->UpdateLevels());
   EXPECT_GT(pyramid->GetAllArraysTime(), allAfter);
   EXPECT_EQ(Snapshot(pyramid->GetLevel(1))["Colors"][2], 255);
+}
+
+// A coarse sample with no facing source within the filter radius r reads the closest one
+// within 2 r: painting a sample that far from it filters it again too. Level 0's normals
+// are flipped within 1.9 r of the level-1 sample T nearest the pole, so that T falls
+// back, then the samples 1.9-2 r from T are painted (farther than the neighbourhood of
+// the painted samples that is filtered again for the samples that did not fall back).
+TEST(OFBPyramid, PaintingNearSamplesThatFellBackFiltersThemToo)
+{
+  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
+  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 128);
+  Fill(ofb, 10, 200, 30);
+  vtkNew<vtkOFBPyramid> pyramid;
+  pyramid->SetInputOFB(ofb);
+  pyramid->SetSurface(sphere);
+  ASSERT_TRUE(pyramid->UpdateLevels());
+  vtkOFB* level = pyramid->GetLevel(1);
+  const double r = std::max(
+    pyramid->GetFilterRadius() * level->GetCellSize(), std::sqrt(3.0) * ofb->GetCellSize());
+  const double pole[3] = { 0.0, 0.0, 1.0 };
+  vtkIdType t = -1;
+  double nearest = 1e30;
+  double c[3];
+  for (vtkIdType i = 0; i < level->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    level->GetSamplePosition(i, x);
+    if (vtkMath::Distance2BetweenPoints(x, pole) < nearest)
+    {
+      nearest = vtkMath::Distance2BetweenPoints(x, pole);
+      t = i;
+      std::copy(x, x + 3, c);
+    }
+  }
+  auto distance = [&](vtkIdType i)
+  {
+    double x[3];
+    ofb->GetSamplePosition(i, x);
+    return std::sqrt(vtkMath::Distance2BetweenPoints(x, c));
+  };
+  vtkDataArray* normals = ofb->GetSampleData()->GetArray("Normals");
+  ASSERT_NE(normals, nullptr);
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    if (distance(i) < 1.9 * r)
+    {
+      double n[3];
+      normals->GetTuple(i, n);
+      normals->SetTuple3(i, -n[0], -n[1], -n[2]);
+    }
+  }
+  ofb->Modified();
+  pyramid->UpdateArrays();
+  const vtkMTimeType allBefore = pyramid->GetAllArraysTime();
+  const unsigned char before = Colors(level)->GetTypedComponent(t, 1);
+  const unsigned char purple[4] = { 200, 0, 200, 255 };
+  int painted = 0;
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    const double d = distance(i);
+    if (d >= 1.9 * r && d < 2.0 * r)
+    {
+      Colors(ofb)->SetTypedTuple(i, purple);
+      ofb->MarkSamplesModified(i, i + 1);
+      ++painted;
+    }
+  }
+  ASSERT_GT(painted, 0);
+  ofb->Modified();
+  ASSERT_TRUE(pyramid->UpdateLevels());
+  ASSERT_EQ(pyramid->GetAllArraysTime(), allBefore) << "everything was filtered again";
+  EXPECT_NE(Colors(level)->GetTypedComponent(t, 1), before) << "the sample that fell back";
+  const auto partial = Snapshot(level);
+  pyramid->UpdateArrays();
+  EXPECT_TRUE(Snapshot(pyramid->GetLevel(1))["Colors"] == partial.at("Colors"))
+    << "a sample that fell back was not filtered again";
 }
 
 TEST(OFBPyramid, ResampleTransfersFloatArrays)

@@ -1,6 +1,7 @@
 #include "vtkOFBPaintKernel.h"
 #include "vtkOFBPaintBlend.h"
 #include "vtkOFBPaintWaves.h"
+#include "vtkOFBRuns.h"
 
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
@@ -511,20 +512,7 @@ vtkIdType vtkOFBPaintKernel::CollectChanged(std::vector<std::pair<vtkIdType, vtk
       {
         for (vtkIdType c = first; c < last; ++c)
         {
-          std::vector<std::pair<vtkIdType, vtkIdType>>& runs = parts[c];
-          size_t out = 0;
-          for (size_t i = 1; i < runs.size(); ++i)
-          {
-            if (runs[i].first - runs[out].second <= join)
-            {
-              runs[out].second = runs[i].second;
-            }
-            else
-            {
-              runs[++out] = runs[i];
-            }
-          }
-          runs.resize(runs.empty() ? 0 : out + 1);
+          vtkOFBJoinRuns(parts[c], join);
         }
       });
   }

@@ -1,5 +1,6 @@
 #include "vtkOFBPyramid.h"
 #include "vtkOFBPyramidResampler.h"
+#include "vtkOFBRuns.h"
 
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -230,19 +231,7 @@ void MarkRuns(vtkOFB* ofb, const std::vector<vtkIdType>& ids)
   }
   for (vtkIdType gap = 64; runs.size() > 128; gap *= 2)
   {
-    size_t out = 0;
-    for (size_t r = 1; r < runs.size(); ++r)
-    {
-      if (runs[r].first - runs[out].second <= gap)
-      {
-        runs[out].second = runs[r].second;
-      }
-      else
-      {
-        runs[++out] = runs[r];
-      }
-    }
-    runs.resize(out + 1);
+    vtkOFBJoinRuns(runs, gap);
   }
   for (const auto& run : runs)
   {

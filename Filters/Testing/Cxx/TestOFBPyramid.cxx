@@ -40,6 +40,21 @@ void Fill(vtkOFB* ofb, unsigned char r, unsigned char g, unsigned char b)
   ofb->Modified();
 }
 
+/// A sphere's OFB at 128 cells in one colour, and a pyramid of it (not updated yet).
+struct SpherePyramid
+{
+  vtkSmartPointer<vtkPolyData> Sphere = vtkofbtest::MakeSphere(1.0, 32);
+  vtkSmartPointer<vtkOFB> OFB = vtkofbtest::Build(Sphere, 128);
+  vtkNew<vtkOFBPyramid> Pyramid;
+
+  SpherePyramid()
+  {
+    Fill(this->OFB, 10, 200, 30);
+    this->Pyramid->SetInputOFB(this->OFB);
+    this->Pyramid->SetSurface(this->Sphere);
+  }
+};
+
 /// The bytes of every named sample array of level k, by name.
 std::map<std::string, std::vector<unsigned char>> Snapshot(vtkOFB* level)
 {
@@ -98,12 +113,9 @@ TEST(OFBPyramid, LevelsHalveTheResolution)
 
 TEST(OFBPyramid, ConstantColourIsKeptAndFinePatternsAverageOut)
 {
-  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
-  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 128);
-  Fill(ofb, 10, 200, 30);
-  vtkNew<vtkOFBPyramid> pyramid;
-  pyramid->SetInputOFB(ofb);
-  pyramid->SetSurface(sphere);
+  SpherePyramid scene;
+  vtkOFB* ofb = scene.OFB;
+  vtkOFBPyramid* pyramid = scene.Pyramid;
   ASSERT_TRUE(pyramid->UpdateLevels());
   for (int k = 1; k < pyramid->GetNumberOfLevels(); ++k)
   {
@@ -157,17 +169,14 @@ TEST(OFBPyramid, ConstantColourIsKeptAndFinePatternsAverageOut)
 // recomputation.
 TEST(OFBPyramid, OnlyModifiedArraysAreFilteredAgain)
 {
-  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
-  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 128);
-  Fill(ofb, 10, 200, 30);
+  SpherePyramid scene;
+  vtkOFB* ofb = scene.OFB;
+  vtkOFBPyramid* pyramid = scene.Pyramid;
   vtkNew<vtkFloatArray> lic;
   lic->SetName("LIC");
   lic->SetNumberOfTuples(ofb->GetNumberOfSamples());
   lic->Fill(0.25);
   ofb->GetSampleData()->AddArray(lic);
-  vtkNew<vtkOFBPyramid> pyramid;
-  pyramid->SetInputOFB(ofb);
-  pyramid->SetSurface(sphere);
   ASSERT_TRUE(pyramid->UpdateLevels());
   const int levels = pyramid->GetNumberOfLevels();
   ASSERT_GE(levels, 3);
@@ -227,12 +236,9 @@ TEST(OFBPyramid, OnlyModifiedArraysAreFilteredAgain)
 // and gives the values of a full recomputation (every array, to the bit).
 TEST(OFBPyramid, PaintingFiltersOnlyTheSamplesThatReadThePaint)
 {
-  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
-  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 128);
-  Fill(ofb, 10, 200, 30);
-  vtkNew<vtkOFBPyramid> pyramid;
-  pyramid->SetInputOFB(ofb);
-  pyramid->SetSurface(sphere);
+  SpherePyramid scene;
+  vtkOFB* ofb = scene.OFB;
+  vtkOFBPyramid* pyramid = scene.Pyramid;
   ASSERT_TRUE(pyramid->UpdateLevels());
   const int levels = pyramid->GetNumberOfLevels();
   ASSERT_GE(levels, 4);
@@ -312,12 +318,9 @@ TEST(OFBPyramid, PaintingFiltersOnlyTheSamplesThatReadThePaint)
 // the painted samples that is filtered again for the samples that did not fall back).
 TEST(OFBPyramid, PaintingNearSamplesThatFellBackFiltersThemToo)
 {
-  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
-  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(sphere, 128);
-  Fill(ofb, 10, 200, 30);
-  vtkNew<vtkOFBPyramid> pyramid;
-  pyramid->SetInputOFB(ofb);
-  pyramid->SetSurface(sphere);
+  SpherePyramid scene;
+  vtkOFB* ofb = scene.OFB;
+  vtkOFBPyramid* pyramid = scene.Pyramid;
   ASSERT_TRUE(pyramid->UpdateLevels());
   vtkOFB* level = pyramid->GetLevel(1);
   const double r = std::max(

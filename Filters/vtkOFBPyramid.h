@@ -173,8 +173,6 @@ protected:
     std::vector<float> ReferenceNormals;
     std::vector<unsigned char> FellBack;
   };
-
-protected:
   std::vector<LevelState> States; // levels 1..
 
   /// UpdateModifiedArrays for values changed in place; false where it must do all.

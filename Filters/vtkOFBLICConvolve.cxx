@@ -1,0 +1,281 @@
+// vtkOFBLIC's convolution (Eq. 4): the tiled fast LIC that traces seed streamlines and
+// keeps them (TraceTile), and the gather along the kept streamlines (Convolve).
+#include "vtkOFBLIC.h"
+
+#include "vtkOFB.h"
+#include "vtkOFBLICCache.h"
+#include "vtkOFBLICTracer.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace
+{
+// The most steps each way of a seed streamline of fast LIC, in NumberOfSteps: each gives
+// the streamlines of the samples of its tile that it meets, and stops earlier once it
+// meets no sample it can give one (see TraceTile).
+constexpr int LongSteps = 10;
+
+/**
+ * Progress and abort of one parallel loop over tiles: the thread that called Update
+ * sends the progress events (in steps of about 1 % of the loop) and reads AbortExecute
+ * after each of its tiles (observers run where they would outside the loop); the other
+ * threads see the abort through Aborted() and skip their remaining tiles.
+ */
+class TileProgress
+{
+public:
+  TileProgress(vtkAlgorithm* algorithm, vtkIdType tiles, double from, double to)
+    : Algorithm(algorithm)
+    , Tiles(tiles)
+    , From(from)
+    , To(to)
+    , Caller(std::this_thread::get_id())
+  {
+  }
+
+  bool Aborted() const { return this->Abort.load(std::memory_order_relaxed); }
+
+  void TileDone()
+  {
+    const vtkIdType done = ++this->Done;
+    if (std::this_thread::get_id() != this->Caller)
+    {
+      return;
+    }
+    if (100 * done / this->Tiles > 100 * this->Reported / this->Tiles)
+    {
+      this->Reported = done;
+      this->Algorithm->UpdateProgress(this->From + (this->To - this->From) * done / this->Tiles);
+    }
+    if (this->Algorithm->GetAbortExecute())
+    {
+      this->Abort = true;
+    }
+  }
+
+private:
+  vtkAlgorithm* Algorithm;
+  vtkIdType Tiles;
+  double From;
+  double To;
+  std::thread::id Caller;
+  std::atomic<vtkIdType> Done{ 0 };
+  std::atomic<bool> Abort{ false };
+  vtkIdType Reported = 0; // read and written by the calling thread only
+};
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
+  bool keep,
+  bool trace,
+  const std::vector<double>& weights,
+  const float* input,
+  float* output,
+  double progress0,
+  double progress1)
+{
+  vtkOFBLICCache& cache = *this->Cache;
+  const unsigned char* mask = cache.Mask.data();
+  const int steps = tracer.NumberOfSteps;
+  const double* w = weights.data();
+  const double inverseTotal = vtkOFBLICTracer::InverseTotal(w, steps);
+  vtkOFBLICTiles tiles(
+    tracer.Dimensions, tracer.Origin, tracer.CellSize, tracer.OFB->GetNumberOfSamples());
+  tiles.First = cache.TileFirst.data();
+  tiles.Ids = cache.TileIds.data();
+  const vtkIdType numberOfTiles = tiles.GetNumberOfTiles();
+  const bool fast = keep && trace;
+  // Fast LIC: each thread appends the seed streamlines of its tiles to a store of its
+  // own (the stores of an earlier tracing are reused); where a tile's runs start is
+  // known once every tile is traced (stores grow).
+  std::vector<vtkOFBLICRunStore*> freeStores;
+  std::vector<std::pair<vtkOFBLICRunStore*, std::size_t>> tileStart;
+  std::mutex storesMutex;
+  if (fast)
+  {
+    cache.Covered.resize(cache.Mask.size());
+    cache.Where.resize(cache.Mask.size());
+    cache.TileRuns.assign(numberOfTiles, nullptr);
+    cache.TileRunLengths.assign(numberOfTiles, 0);
+    tileStart.assign(numberOfTiles, { nullptr, 0 });
+    for (auto& store : cache.Runs)
+    {
+      store->Ids.resize(0);
+      freeStores.push_back(store.get());
+    }
+  }
+  unsigned char* covered = cache.Covered.data();
+  vtkTypeInt32* where = cache.Where.data();
+  vtkSMPThreadLocal<vtkOFBLICRunStore*> localStore(nullptr);
+  vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
+  vtkSMPThreadLocal<std::vector<float>> localValues; // a tile's run values
+  // One parallel loop over all tiles (16 loops over blocks of tiles, each waiting for
+  // its slowest tile, took 8-10 % longer on the horse at 1024).
+  TileProgress progress(this, numberOfTiles, progress0, progress1);
+  vtkSMPTools::For(0,
+    numberOfTiles,
+    1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<vtkTypeInt32>& local = localLine.Local();
+      local.resize(std::max(2 * steps, 2 * LongSteps * steps + 1));
+      vtkOFBLICRunStore*& store = localStore.Local();
+      if (fast && !store)
+      {
+        std::lock_guard<std::mutex> lock(storesMutex);
+        if (freeStores.empty())
+        {
+          // Room for the runs of all samples at 4 ids a sample (the horse and the
+          // bunny need about 2.5): mapped, not touched, so growing never copies in
+          // practice and only the pages used are faulted in.
+          cache.Runs.emplace_back(new vtkOFBLICRunStore);
+          cache.Runs.back()->Ids.reserve(4 * cache.Mask.size() + 4096);
+          freeStores.push_back(cache.Runs.back().get());
+        }
+        store = freeStores.back();
+        freeStores.pop_back();
+      }
+      for (vtkIdType t = begin; t < end && !progress.Aborted(); ++t)
+      {
+        const vtkTypeInt32* runs = keep ? cache.TileRuns[t] : nullptr;
+        if (fast && tiles.First[t] < tiles.First[t + 1])
+        {
+          const std::size_t start = store->size();
+          this->TraceTile(tracer, tiles, t, *store, covered, where, local.data());
+          tileStart[t] = { store, start };
+          cache.TileRunLengths[t] = static_cast<vtkIdType>(store->size() - start);
+          runs = store->Ids.data() + start;
+        }
+        // The tile's input values first (tracing did not touch them); with kept runs,
+        // copied in the runs' order so that each window is read contiguously.
+        tiles.ForEachSample(t, [&](vtkIdType i) { VTKOFB_PREFETCH(input + i); });
+        std::vector<float>& values = localValues.Local();
+        if (runs)
+        {
+          const vtkIdType length = cache.TileRunLengths[t];
+          values.resize(std::max<std::size_t>(values.size(), length));
+          for (vtkIdType k = 0; k < length; ++k)
+          {
+            values[k] = runs[k] >= 0 ? input[runs[k]] : 0.0f;
+          }
+        }
+        tiles.ForEachSample(t,
+          [&](vtkIdType i)
+          {
+            if (mask[i])
+            {
+              output[i] = input[i];
+            }
+            else if (keep)
+            {
+              output[i] = vtkOFBLICTracer::GatherRun(
+                runs + where[i], values.data() + where[i], steps, w, inverseTotal);
+            }
+            else
+            {
+              tracer.Trace(i, local.data());
+              output[i] = vtkOFBLICTracer::Gather(i, local.data(), steps, w, inverseTotal, input);
+            }
+          });
+        progress.TileDone();
+      }
+    });
+  if (progress.Aborted() || this->GetAbortExecute())
+  {
+    return false;
+  }
+  this->UpdateProgress(progress1);
+  if (fast)
+  {
+    for (vtkIdType t = 0; t < numberOfTiles; ++t)
+    {
+      if (tileStart[t].first)
+      {
+        cache.TileRuns[t] = tileStart[t].first->Ids.data() + tileStart[t].second;
+      }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
+  const vtkOFBLICTiles& tiles,
+  vtkIdType tile,
+  vtkOFBLICRunStore& store,
+  unsigned char* covered,
+  vtkTypeInt32* where,
+  vtkTypeInt32* sequence)
+{
+  const unsigned char* mask = this->Cache->Mask.data();
+  const vtkOFBLICSample* samples = tracer.Samples;
+  const int n = tracer.NumberOfSteps;
+  const int m = LongSteps * n;
+  const std::size_t start = store.size();
+  *store.Extend(1) = -1;
+  // The tile's records and depths are fetched in row order first (streams the hardware
+  // follows), so that the streamlines' random order of visits finds them in the cache.
+  tiles.ForEachSample(tile,
+    [&](vtkIdType i)
+    {
+      VTKOFB_PREFETCH(samples + i);
+      VTKOFB_PREFETCH(tracer.Depths + i);
+      covered[i] = 0;
+    });
+  tiles.ForEachSample(tile,
+    [&](vtkIdType i)
+    {
+      if (mask[i] || covered[i])
+      {
+        return;
+      }
+      // A long streamline through i: backward steps reversed, i, forward steps. A
+      // direction stops early once its last n samples are of other tiles or covered:
+      // every sample before them that it can still cover has its full window.
+      int ahead, back;
+      bool aheadEnded, backEnded;
+      vtkTypeInt32* backward = sequence + m + 1;
+      tracer.TraceBoth(
+        i,
+        m,
+        std::max(n, 1),
+        [&](vtkIdType k) { return samples[k].Tile() == tile && !covered[k]; },
+        sequence,
+        ahead,
+        aheadEnded,
+        backward,
+        back,
+        backEnded);
+      // The run in the store: -1 (already there), backward reversed, i, forward, -1.
+      const int length = back + 1 + ahead;
+      vtkTypeInt32* run = store.Extend(length + 1);
+      const std::size_t base = store.size() - (length + 1) - start;
+      std::reverse_copy(backward, backward + back, run);
+      run[back] = static_cast<vtkTypeInt32>(i);
+      std::copy(sequence, sequence + ahead, run + back + 1);
+      run[length] = -1;
+      // Every sample of the tile met gets the window around its meeting as its
+      // streamline: where the streamline stopped by itself, a window may end there (as
+      // a sample's own streamline would); where it ran out of steps or went idle, the
+      // window must fit.
+      const int low = backEnded ? 0 : n;
+      const int high = aheadEnded ? length - 1 : length - 1 - n;
+      for (int t = low; t <= high; ++t)
+      {
+        const vtkIdType k = run[t];
+        if (samples[k].Tile() != tile || covered[k])
+        {
+          continue;
+        }
+        covered[k] = 1;
+        where[k] = static_cast<vtkTypeInt32>(base + t);
+      }
+    });
+}

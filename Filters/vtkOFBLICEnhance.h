@@ -346,15 +346,8 @@ struct vtkOFBLICHighPassWork
       }
       else
       {
-        LayerRange(depths,
-          d,
-          block.Planar[c],
-          r2,
-          first + std::min(layer, n - 1),
-          first,
-          first + n,
-          lo,
-          hi);
+        LayerRange(
+          depths, d, block.Planar[c], r2, first + std::min(layer, n - 1), first, first + n, lo, hi);
       }
       for (vtkIdType j = lo; j < hi; ++j)
       {

@@ -157,9 +157,9 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
         // copied in the runs' order so that each window is read contiguously.
         tiles.ForEachSample(t, [&](vtkIdType i) { VTKOFB_PREFETCH(input + i); });
         std::vector<float>& values = localValues.Local();
+        const vtkIdType length = runs ? cache.TileRunLengths[t] : 0;
         if (runs)
         {
-          const vtkIdType length = cache.TileRunLengths[t];
           values.resize(std::max<std::size_t>(values.size(), length));
           for (vtkIdType k = 0; k < length; ++k)
           {
@@ -175,8 +175,15 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
             }
             else if (keep)
             {
-              output[i] = vtkOFBLICTracer::GatherRun(
-                runs + where[i], values.data() + where[i], steps, w, inverseTotal);
+              const vtkIdType at = where[i];
+              const bool inside = at >= steps && at + steps < length;
+              if (!inside ||
+                !vtkOFBLICTracer::GatherWhole(
+                  runs + at, values.data() + at, steps, w, inverseTotal, output[i]))
+              {
+                output[i] =
+                  vtkOFBLICTracer::GatherRun(runs + at, values.data() + at, steps, w, inverseTotal);
+              }
             }
             else
             {

@@ -430,6 +430,49 @@ public:
   }
 
   /**
+   * GatherRun where the window is whole, at[-n .. n] all samples (no -1 of a run's
+   * end; the caller makes sure that they lie in the run store) and the weights' total
+   * is above 1e-9 (inverseTotal > 0): the weighted sum in four independent
+   * accumulators, times inverseTotal, into `out`. False, with nothing written,
+   * otherwise. (A run's values are contiguous, so the chain of additions of one
+   * accumulator, not the loads, is what GatherRun waits on.)
+   */
+  static bool GatherWhole(const vtkTypeInt32* at,
+    const float* v,
+    int n,
+    const double* weights,
+    double inverseTotal,
+    float& out)
+  {
+    vtkTypeInt32 sign = 0;
+    for (int s = -n; s <= n; ++s)
+    {
+      sign |= at[s];
+    }
+    if (sign < 0 || !(inverseTotal > 0.0))
+    {
+      return false;
+    }
+    const float* x = v - n; // x[k] is the value at position k - n, weights[k] its weight
+    const int count = 2 * n + 1;
+    double a0 = 0.0, a1 = 0.0, a2 = 0.0, a3 = 0.0;
+    int k = 0;
+    for (; k + 4 <= count; k += 4)
+    {
+      a0 += weights[k] * x[k];
+      a1 += weights[k + 1] * x[k + 1];
+      a2 += weights[k + 2] * x[k + 2];
+      a3 += weights[k + 3] * x[k + 3];
+    }
+    for (; k < count; ++k)
+    {
+      a0 += weights[k] * x[k];
+    }
+    out = static_cast<float>(((a0 + a1) + (a2 + a3)) * inverseTotal);
+    return true;
+  }
+
+  /**
    * 1 over the sum of the 2 n + 1 weights in the order Gather and GatherRun add them
    * (the centre, then forward, then backward), 0 where it is not above 1e-9 (the
    * division and its fallback then apply).

@@ -137,13 +137,9 @@ std::vector<vtkIdType> AffectedTargets(vtkOFB* source,
           centre[c] = origin[c] + (static_cast<double>(key & 2097151u) + 0.5) * side;
           key >>= 21;
         }
-        // Threads may mark the same target: each writes the same value.
-        target->ForEachSampleInSphere(centre,
-          reach,
-          [&](vtkIdType t, double) {
-            reinterpret_cast<std::atomic<unsigned char>&>(hit[t]).store(
-              1, std::memory_order_relaxed);
-          });
+        // Threads may mark the same target (each writes the same value).
+        target->ForEachSampleInSphere(
+          centre, reach, [&](vtkIdType t, double) { hit[t].store(1, std::memory_order_relaxed); });
       }
     });
   std::vector<vtkIdType> ids;
@@ -169,8 +165,8 @@ std::vector<vtkIdType> AffectedTargets(vtkOFB* source,
  * Resample of every array of `source` to the target samples `ids` alone, in place (the
  * other target samples keep their values), their normals scaled to unit length; the
  * facing test's target normals are `reference` where given, `fellBack` as in
- * ResampleArrays. False (nothing changed)
- * where the target lacks an array of the source or one differs in type or size.
+ * ResampleArrays. False (nothing changed) where the target lacks an array of the source
+ * or one differs in type or size.
  */
 bool ResampleSome(vtkOFB* source,
   vtkOFB* target,

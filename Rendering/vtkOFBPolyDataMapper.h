@@ -31,7 +31,10 @@
  *   lookup reads a level about as fine as the screen, which keeps it in the cache (frame
  *   times: README, "Surface LIC"). Where the footprint is under 1.41 cells
  *   (close-ups) it reads level 0 as Nearest does. The pyramid's arrays are filtered
- *   again whenever the OFB's arrays change (an animated LIC then costs that too).
+ *   again whenever the OFB's arrays change: a modified array alone (an animated LIC costs
+ *   its filtering down the pyramid), or, for values changed in place and marked with
+ *   vtkOFB::MarkSamplesModified (painting), only the coarse samples that read them, and
+ *   only those are uploaded (vtkOFBPyramid::UpdateModifiedArrays).
  *
  * Colour sources: Paint (the OFB's "Colors" array) or Scalars (a named float sample
  * array mapped through the mapper's lookup table over its ScalarRange, or the table's own

@@ -451,7 +451,7 @@ struct vtkOFBLICHighPassWork
 };
 
 /**
- * The first pass's result in cache.Values stretched and high-pass filtered, in place.
+ * The first pass's result in cache.Values high-pass filtered and stretched, in place.
  * The neighbours of each sample are found once per packed samples (geometry and mask)
  * and kept in the cache (vtkOFBLICCache::NeighbourCount, NeighbourOffsets): a later
  * enhanced re-convolution (a new AnimationPhase) then sums the kept neighbours in the
@@ -465,7 +465,10 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
 {
   vtkOFBLICBuffer<float>& values = cache.Values;
   const vtkIdType n = static_cast<vtkIdType>(values.size());
-  vtkOFBLICStretch(values.data(), n, cache.Mask.data(), 0.0, 0.0);
+  // No stretch before the filter: it is affine, and so is the high-pass (a sample plus
+  // four times its difference to its neighbours' mean), so the stretch after it gives
+  // the same values (to rounding) as a stretch before and after did. Masked samples'
+  // values are never read again (streamlines stop there; the output masks them).
   cache.Scratch.resize(n);
   const bool build =
     cache.NeighboursKey != cache.SamplesKey || cache.NeighbourCount.size() != values.size();

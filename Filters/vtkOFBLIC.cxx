@@ -360,9 +360,8 @@ bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
 }
 
 //------------------------------------------------------------------------------
-std::vector<double> vtkOFBLIC::ComputeKernel() const
+std::vector<double> vtkOFBLIC::ComputeKernel(int n) const
 {
-  const int n = this->NumberOfSteps;
   std::vector<double> w(2 * n + 1, 1.0);
   const double pi = 3.141592653589793;
   for (int s = -n; s <= n; ++s)
@@ -515,7 +514,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   tracer.SearchRadius = std::sqrt(3.0) * input->GetCellSize();
   tracer.FieldRadius =
     this->FieldInterpolation == FIELD_INVERSE_DISTANCE ? 1.5 * input->GetCellSize() : 0.0;
-  const std::vector<double> weights = this->ComputeKernel();
+  const std::vector<double> weights = this->ComputeKernel(this->NumberOfSteps);
   // The kept streamlines, traced during the first pass when they are not valid.
   vtkOFBLICCacheKey linesKey = cache.SamplesKey;
   linesKey.Add(static_cast<double>(this->NumberOfSteps))
@@ -561,7 +560,11 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     vtkOFBLICBuffer<float>& pass1 = cache.Scratch;
     pass1.swap(values);
     values.resize(n);
-    if (!this->Convolve(tracer, keep, false, weights, pass1.data(), values.data(), 0.5, 0.95))
+    // Half the steps each way, as VTK's second pass (its input is smooth along the flow).
+    vtkOFBLICTracer second = tracer;
+    second.NumberOfSteps = std::max(1, this->NumberOfSteps / 2);
+    const std::vector<double> weights2 = this->ComputeKernel(second.NumberOfSteps);
+    if (!this->Convolve(second, keep, false, weights2, pass1.data(), values.data(), 0.5, 0.95))
     {
       output->Initialize();
       return 1;

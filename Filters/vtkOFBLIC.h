@@ -264,7 +264,9 @@ public:
   /**
    * Enhanced LIC (default on, as VTK): a second convolution of the first pass's result,
    * stretched to [0, 1] and high-pass filtered (the sample minus four times the
-   * Laplacian over the samples within 1.5 cells), which sharpens the streaks.
+   * Laplacian over the samples within 1.5 cells), which sharpens the streaks. As in VTK's
+   * vtkLineIntegralConvolution2D, the second pass takes half the steps each way
+   * (NumberOfSteps / 2, at least 1): its input is already smooth along the flow.
    */
   vtkSetMacro(EnhancedLIC, bool);
   vtkGetMacro(EnhancedLIC, bool);
@@ -386,7 +388,8 @@ protected:
   bool PrepareNoise(vtkOFB* input);
 
   /// The kernel weights of the 2 NumberOfSteps + 1 steps.
-  std::vector<double> ComputeKernel() const;
+  /// The kernel's 2 n + 1 weights for n steps each way (index n is t = 0).
+  std::vector<double> ComputeKernel(int n) const;
 
   /**
    * One convolution of `input` into `output` over all samples, tile by tile, with

@@ -1,0 +1,406 @@
+// The preparation of vtkOFBParticleAdvector's inputs: the surface and its field, the
+// OFB to paint, the seeds and the colouring (RequestData calls these before stepping).
+#include "vtkOFBParticleAdvector.h"
+#include "vtkOFBParticleAdvectorInternals.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellDataToPointData.h"
+#include "vtkInformationVector.h"
+#include "vtkLookupTable.h"
+#include "vtkOFB.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkTriangleFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace
+{
+// When the content of a data set last changed: its points, cells and point data
+// (not the data object's own time, which the pipeline's requests move on).
+vtkMTimeType ContentTime(vtkDataSet* data)
+{
+  vtkMTimeType t = data->GetPointData()->GetMTime();
+  if (auto* points =
+        data->IsA("vtkPointSet") ? static_cast<vtkPointSet*>(data)->GetPoints() : nullptr)
+  {
+    t = std::max(t, points->GetMTime());
+  }
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    for (vtkCellArray* cells :
+      { poly->GetVerts(), poly->GetLines(), poly->GetPolys(), poly->GetStrips() })
+    {
+      t = cells ? std::max(t, cells->GetMTime()) : t;
+    }
+  }
+  return t;
+}
+
+vtkMTimeType ContentTime(vtkOFB* ofb)
+{
+  return std::max({ ofb->GetStructureMTime(),
+    ofb->GetSampleData()->GetMTime(),
+    ofb->GetCellOffsets()->GetMTime() });
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::CheckSettings()
+{
+  if (!(this->StepSize > 0.0) || !std::isfinite(this->StepSize))
+  {
+    vtkErrorMacro("StepSize must be positive and finite (cells), not " << this->StepSize << ".");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
+  vtkInformationVector** inputVector,
+  bool& rebuilt)
+{
+  vtkInternals& in = *this->Internals;
+  if (!surface || surface->GetNumberOfPoints() == 0 ||
+    surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("The input surface has no polygons: no particles.");
+    return false;
+  }
+  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  vtkDataArray* vectors = this->GetInputArrayToProcess(0, inputVector, association);
+  if (!vectors && surface->GetCellData()->GetVectors() && !surface->GetPointData()->GetVectors())
+  {
+    vectors = surface->GetCellData()->GetVectors();
+    association = vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  }
+  if (!vectors)
+  {
+    vtkErrorMacro("The input surface has no vector field (the array chosen with "
+                  "SetInputArrayToProcess, by default the active point vectors).");
+    return false;
+  }
+  if (vectors->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro("The vector field '" << (vectors->GetName() ? vectors->GetName() : "") << "' has "
+                                       << vectors->GetNumberOfComponents()
+                                       << " components, not 3.");
+    return false;
+  }
+  if (surface == in.SurfaceObject && ContentTime(surface) == in.SurfaceTime &&
+    vectors == in.VectorArray && vectors->GetMTime() == in.VectorTime)
+  {
+    return true;
+  }
+
+  // Cell vectors: averaged to the points.
+  vtkSmartPointer<vtkDataArray> pointVectors = vectors;
+  if (association == vtkDataObject::FIELD_ASSOCIATION_CELLS)
+  {
+    vtkWarningMacro("The vector field is given on cells: it is averaged to the points.");
+    vtkNew<vtkPolyData> cells;
+    cells->CopyStructure(surface);
+    vtkSmartPointer<vtkDataArray> named = vectors;
+    if (!vectors->GetName())
+    {
+      named.TakeReference(vectors->NewInstance());
+      named->ShallowCopy(vectors);
+      named->SetName("Vectors");
+    }
+    cells->GetCellData()->AddArray(named);
+    vtkNew<vtkCellDataToPointData> toPoints;
+    toPoints->SetInputData(cells);
+    toPoints->Update();
+    pointVectors = toPoints->GetOutput()->GetPointData()->GetArray(named->GetName());
+  }
+  else if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    vtkErrorMacro("The vector field must be a point or cell array.");
+    return false;
+  }
+  const vtkIdType numPoints = surface->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    double v[3];
+    pointVectors->GetTuple(i, v);
+    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+    {
+      vtkErrorMacro("The vector field has a non-finite value at point " << i << ".");
+      return false;
+    }
+  }
+
+  vtkSmartPointer<vtkPolyData> triangles = surface;
+  if (surface->GetNumberOfStrips() > 0 || surface->GetPolys()->IsHomogeneous() != 3)
+  {
+    vtkNew<vtkTriangleFilter> triangulate;
+    triangulate->PassVertsOff();
+    triangulate->PassLinesOff();
+    triangulate->SetInputData(surface);
+    triangulate->Update();
+    triangles = triangulate->GetOutput();
+  }
+  std::string error;
+  if (!in.Walker.Build(triangles, pointVectors, error))
+  {
+    vtkErrorMacro("The input surface cannot carry particles: " << error << ".");
+    return false;
+  }
+  if (!(in.Walker.GetMaximumSpeed() > 0.0))
+  {
+    vtkErrorMacro("The vector field is zero everywhere: no particle can move.");
+    return false;
+  }
+  in.Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+  in.Locator->SetDataSet(in.Walker.GetTriangles());
+  in.Locator->BuildLocator();
+  in.Surface = triangles;
+  in.SurfaceObject = surface;
+  in.SurfaceTime = ContentTime(surface);
+  in.VectorArray = vectors;
+  in.VectorTime = vectors->GetMTime();
+  rebuilt = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::PrepareOFB(vtkOFB* inputOFB, vtkPolyData* surface)
+{
+  vtkInternals& in = *this->Internals;
+  if (this->OFB)
+  {
+    in.Target = this->OFB;
+  }
+  else if (inputOFB)
+  {
+    if (!in.Copy || inputOFB != in.OFBObject || ContentTime(inputOFB) != in.OFBTime)
+    {
+      in.Copy = vtkSmartPointer<vtkOFB>::New();
+      in.Copy->DeepCopy(inputOFB);
+      in.OFBObject = inputOFB;
+      in.OFBTime = ContentTime(inputOFB);
+      in.LastTarget = nullptr; // a new copy: restart
+    }
+    in.Target = in.Copy;
+  }
+  else
+  {
+    in.Copy = nullptr;
+    in.OFBObject = nullptr;
+    in.Target = nullptr;
+  }
+  if (in.Target && in.Target->GetCellSize() > 0.0)
+  {
+    in.CellSize = in.Target->GetCellSize();
+  }
+  else
+  {
+    double bounds[6];
+    surface->GetBounds(bounds);
+    const double longest =
+      std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+    in.CellSize = longest > 0.0 ? longest / 1024.0 : 1.0;
+  }
+  const bool changed = in.Target != in.LastTarget || in.CellSize != in.LastCellSize;
+  in.LastTarget = in.Target;
+  in.LastCellSize = in.CellSize;
+  return changed;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::NeedsRestart(vtkDataSet* seeds)
+{
+  vtkInternals& in = *this->Internals;
+  const vtkOFBParticleMotionKey key{ this->Integrator,
+    this->StepSize,
+    this->ErrorTolerance,
+    this->NormalizeVectors,
+    this->Direction,
+    this->Lifetime,
+    this->NumberOfParticles,
+    this->RandomSeed,
+    this->MaximumSeedDistance,
+    this->ChainLength,
+    this->ChainSpacing,
+    this->TrailLength,
+    this->SeedColorArrayName ? this->SeedColorArrayName : "" };
+  const bool restart = !in.Started || in.ResetRequested || !(key == in.Motion) ||
+    seeds != in.SeedObject || (seeds && ContentTime(seeds) != in.SeedTime);
+  in.Motion = key;
+  return restart;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOFBParticleSystem& system = in.System;
+  system.Walker = &in.Walker;
+  vtkOFBParticleStepper& stepper = system.Stepper;
+  stepper.Walker = &in.Walker;
+  stepper.Integrator = this->Integrator;
+  stepper.Normalize = this->NormalizeVectors;
+  stepper.Sign = this->Direction == BACKWARD ? -1.0 : 1.0;
+  stepper.Scale = 1.0 / in.Walker.GetMaximumSpeed();
+  stepper.StopSpeed = 1e-12 * in.Walker.GetMaximumSpeed();
+  stepper.Length = this->StepSize * in.CellSize;
+  stepper.Tolerance = this->ErrorTolerance * in.CellSize;
+  system.Setup.ChainLength = this->ChainLength;
+  system.Setup.ChainSpacing = this->ChainSpacing;
+  system.Setup.Lifetime = this->Lifetime;
+  system.Setup.TrailLength = this->TrailLength;
+  system.Setup.RandomSeed = this->RandomSeed;
+  system.Setup.RandomSeeds = seeds == nullptr;
+  if (seeds)
+  {
+    this->LocateSeeds(seeds);
+  }
+  else
+  {
+    system.MakeRandomSeeds(this->NumberOfParticles);
+    for (size_t i = 0; i < system.Seeds.size(); ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        system.SeedColors[4 * i + c] = static_cast<float>(this->Color[c]);
+      }
+    }
+  }
+  system.Start();
+  in.Started = true;
+  in.ResetRequested = false;
+  in.SeedObject = seeds;
+  in.SeedTime = seeds ? ContentTime(seeds) : 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::LocateSeeds(vtkDataSet* seeds)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOFBParticleSystem& system = in.System;
+  system.Seeds.clear();
+  system.SeedColors.clear();
+  vtkDataArray* colors = this->SeedColorArrayName
+    ? seeds->GetPointData()->GetArray(this->SeedColorArrayName)
+    : seeds->GetPointData()->GetScalars();
+  if (this->ColorMode == COLOR_FROM_SEEDS && !colors)
+  {
+    vtkWarningMacro("No seed colour array '"
+      << (this->SeedColorArrayName ? this->SeedColorArrayName : "(active scalars)")
+      << "': the seeds take the constant colour.");
+  }
+  const double radius = this->MaximumSeedDistance * in.CellSize;
+  vtkIdType nonFinite = 0;
+  vtkIdType far = 0;
+  for (vtkIdType i = 0; i < seeds->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    seeds->GetPoint(i, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      ++nonFinite;
+      continue;
+    }
+    double closest[3];
+    vtkIdType cell = -1;
+    int subId = 0;
+    double dist2 = 0.0;
+    if (!in.Locator->FindClosestPointWithinRadius(x, radius, closest, cell, subId, dist2) ||
+      cell < 0)
+    {
+      ++far;
+      continue;
+    }
+    system.Seeds.push_back(in.Walker.Locate(cell, closest));
+    float rgba[4] = { static_cast<float>(this->Color[0]),
+      static_cast<float>(this->Color[1]),
+      static_cast<float>(this->Color[2]),
+      1.f };
+    if (colors)
+    {
+      const int n = colors->GetNumberOfComponents();
+      const double scale = colors->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+      float c[4];
+      for (int k = 0; k < std::min(n, 4); ++k)
+      {
+        c[k] = static_cast<float>(std::min(1.0, std::max(0.0, scale * colors->GetComponent(i, k))));
+      }
+      rgba[0] = c[0];
+      rgba[1] = n >= 3 ? c[1] : c[0];
+      rgba[2] = n >= 3 ? c[2] : c[0];
+      rgba[3] = n == 4 ? c[3] : (n == 2 ? c[1] : 1.f);
+    }
+    system.SeedColors.insert(system.SeedColors.end(), rgba, rgba + 4);
+  }
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< nonFinite << " seed point(s) with non-finite coordinates rejected.");
+  }
+  if (far > 0)
+  {
+    vtkWarningMacro(<< far << " seed point(s) farther than MaximumSeedDistance ("
+                    << this->MaximumSeedDistance << " cells) from the surface rejected.");
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::PrepareColoring(vtkPolyData* surface)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOFBParticleSystem::Coloring& coloring = in.Coloring;
+  coloring.Mode = this->ColorMode;
+  coloring.Period = this->ColorPeriod;
+  for (int c = 0; c < 3; ++c)
+  {
+    coloring.Constant[c] = static_cast<float>(this->Color[c]);
+  }
+  coloring.Scalars = nullptr;
+  coloring.Table.clear();
+  if (this->ColorMode != COLOR_BY_SCALAR)
+  {
+    return;
+  }
+  vtkDataArray* scalars = this->ScalarArrayName
+    ? surface->GetPointData()->GetArray(this->ScalarArrayName)
+    : surface->GetPointData()->GetScalars();
+  if (!scalars)
+  {
+    vtkWarningMacro("No surface point array '"
+      << (this->ScalarArrayName ? this->ScalarArrayName : "(active scalars)")
+      << "' to colour by: the particles keep their colour.");
+    return;
+  }
+  vtkSmartPointer<vtkScalarsToColors> lut = this->LookupTable;
+  if (!lut)
+  {
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetHueRange(0.667, 0.0);
+    table->SetRange(scalars->GetRange(0));
+    table->Build();
+    lut = table;
+  }
+  const double* range = lut->GetRange();
+  coloring.Range[0] = range[0];
+  coloring.Range[1] = range[1];
+  // A table of the map, so that the parallel step reads it without calling VTK.
+  const int size = 1024;
+  coloring.Table.resize(3 * size);
+  for (int k = 0; k < size; ++k)
+  {
+    double rgb[3];
+    lut->GetColor(range[0] + (k + 0.5) / size * (range[1] - range[0]), rgb);
+    for (int c = 0; c < 3; ++c)
+    {
+      coloring.Table[3 * k + c] = static_cast<float>(rgb[c]);
+    }
+  }
+  in.ScalarArray = scalars;
+  coloring.Scalars = scalars;
+}

@@ -38,6 +38,7 @@ public:
 
 private:
   void Sort(int numberOfWaves, const glm::dvec3& low, double maxReach);
+  void SortKeys(int begin, int end);
 
   // Kept from call to call.
   std::vector<int> Order;
@@ -50,6 +51,8 @@ private:
   std::vector<int> Members;
   std::vector<int> Wave;
   std::vector<std::pair<vtkTypeUInt64, int>> Key; // Morton code, dab
+  std::vector<std::pair<vtkTypeUInt64, int>> KeyScratch;
+  std::vector<int> DigitCount;
 };
 
 #endif

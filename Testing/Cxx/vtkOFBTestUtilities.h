@@ -4,6 +4,7 @@
 
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
+#include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBReadMesh.h"
@@ -26,6 +27,18 @@ inline std::string DataPath(const std::string& name)
 inline vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& name)
 {
   return ReadMeshFile(DataPath(name));
+}
+
+/// An RGBA colour with random red, green and blue bytes from `random`, and `alpha`.
+inline void RandomColor(vtkMinimalStandardRandomSequence* random,
+  unsigned char alpha,
+  unsigned char c[4])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    c[k] = static_cast<unsigned char>(random->GetNextRangeValue(0, 255));
+  }
+  c[3] = alpha;
 }
 
 /// A finely triangulated sphere (merged seam points), radius `radius` at the origin.

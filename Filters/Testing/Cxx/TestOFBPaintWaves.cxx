@@ -39,10 +39,8 @@ TEST(PaintWaves, ThousandsOfSeparateDabsEqualDabsOneByOne)
     const double phi = std::acos(random->GetNextRangeValue(-1.0, 1.0));
     points->InsertNextPoint(
       std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi));
-    const unsigned char c[4] = { static_cast<unsigned char>(random->GetNextRangeValue(0, 255)),
-      static_cast<unsigned char>(random->GetNextRangeValue(0, 255)),
-      static_cast<unsigned char>(random->GetNextRangeValue(0, 255)),
-      255 };
+    unsigned char c[4];
+    RandomColor(random, 255, c);
     color->InsertNextTypedTuple(c);
   }
   dabs->SetPoints(points);

@@ -466,10 +466,8 @@ TEST(Painter, OneAndTwoThreadsGiveTheColoursOfDabsOneByOne)
       p);
     points->InsertNextPoint(p);
     radius->InsertNextValue(static_cast<float>(random->GetNextRangeValue(0.02, 0.15)));
-    const unsigned char c[4] = { static_cast<unsigned char>(random->GetNextRangeValue(0, 255)),
-      static_cast<unsigned char>(random->GetNextRangeValue(0, 255)),
-      static_cast<unsigned char>(random->GetNextRangeValue(0, 255)),
-      200 };
+    unsigned char c[4];
+    RandomColor(random, 200, c);
     color->InsertNextTypedTuple(c);
   }
   dabs->SetPoints(points);

@@ -387,7 +387,6 @@ protected:
   /// False on error.
   bool PrepareNoise(vtkOFB* input);
 
-  /// The kernel weights of the 2 NumberOfSteps + 1 steps.
   /// The kernel's 2 n + 1 weights for n steps each way (index n is t = 0).
   std::vector<double> ComputeKernel(int n) const;
 

@@ -178,10 +178,11 @@ void vtkOFBPaintWaves::Sort(int numberOfWaves, const glm::dvec3& low, double max
 //------------------------------------------------------------------------------
 void vtkOFBPaintWaves::SortKeys(int begin, int end)
 {
-  // Key[begin, end) by Morton code, dabs of equal codes in their order (increasing: the
-  // order of a wave's dabs): a least-significant-digit radix sort over the codes'
-  // significant bits (about 30 for dabs spread over an OFB of 2048 cells), 3-6 times
-  // faster than std::sort on 10,000 dabs; std::sort below 256 dabs.
+  // Key[begin, end) by Morton code, then dab (a wave's dabs come in increasing order and
+  // the sort is stable: the order of std::sort on the pairs): a least-significant-digit
+  // radix sort over the codes' significant bits (about 30 for dabs spread over an OFB of
+  // 2048 cells; the grouping of 10,000 footprints took 1.41 ms with std::sort, 0.97 ms
+  // with this); std::sort below 256 dabs.
   auto& key = this->Key;
   if (end - begin < 256)
   {

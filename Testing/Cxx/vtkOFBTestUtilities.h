@@ -13,6 +13,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 
+#include <cmath>
 #include <string>
 
 namespace vtkofbtest
@@ -27,6 +28,14 @@ inline std::string DataPath(const std::string& name)
 inline vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& name)
 {
   return ReadMeshFile(DataPath(name));
+}
+
+/// The point of the unit sphere at longitude theta and colatitude phi (radians).
+inline void OnSphere(double theta, double phi, double p[3])
+{
+  p[0] = std::sin(phi) * std::cos(theta);
+  p[1] = std::sin(phi) * std::sin(theta);
+  p[2] = std::cos(phi);
 }
 
 /// An RGBA colour with random red, green and blue bytes from `random`, and `alpha`.

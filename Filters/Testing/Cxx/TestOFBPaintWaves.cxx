@@ -36,9 +36,9 @@ TEST(PaintWaves, ThousandsOfSeparateDabsEqualDabsOneByOne)
   for (int i = 0; i < 4000; ++i)
   {
     const double theta = random->GetNextRangeValue(0.0, 2.0 * vtkMath::Pi());
-    const double phi = std::acos(random->GetNextRangeValue(-1.0, 1.0));
-    points->InsertNextPoint(
-      std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta), std::cos(phi));
+    double p[3];
+    OnSphere(theta, std::acos(random->GetNextRangeValue(-1.0, 1.0)), p);
+    points->InsertNextPoint(p);
     unsigned char c[4];
     RandomColor(random, 255, c);
     color->InsertNextTypedTuple(c);

@@ -161,14 +161,6 @@ std::vector<unsigned char> Copy(vtkUnsignedCharArray* c)
     c->GetPointer(0), c->GetPointer(0) + 4 * c->GetNumberOfTuples());
 }
 
-// A point on the sphere of radius 1.
-void OnSphere(double theta, double phi, double p[3])
-{
-  p[0] = std::sin(phi) * std::cos(theta);
-  p[1] = std::sin(phi) * std::sin(theta);
-  p[2] = std::cos(phi);
-}
-
 // Check one dab against the brute-force reference over every sample: inside the
 // radius within one step of 255 of the reference, outside it bit for bit unchanged.
 void ExpectDabMatchesReference(vtkOFB* ofb,

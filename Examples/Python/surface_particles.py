@@ -5,10 +5,17 @@ particles' trails as lines. Animated in a window, or headless with --image.
 
 Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages:
     python3 Examples/Python/surface_particles.py [mesh.ply|mesh.obj] [--image out.png]
+Options: --particles, --steps (before --image), --resolution (OFB cells on the longest
+side), --check (with --image: exit with an error unless every particle is still there,
+the OFB got paint and the image shows it; the ctest uses it).
 """
 
 import argparse
 import os
+import sys
+
+import numpy as np
+from vtkmodules.util import numpy_support
 
 import vtkofb
 from vtkmodules.vtkCommonCore import vtkDoubleArray
@@ -48,6 +55,23 @@ def rotation_field(mesh, axis=(0.2, 1.0, 0.1)):
     mesh.GetPointData().SetVectors(field)
 
 
+def check(advector, ofb, before, grab):
+    """Every particle still there (no lifetime: none lost), paint where they went, and
+    the painted surface in the image."""
+    particles = advector.GetOutputDataObject(1)
+    painted = np.count_nonzero(np.any(
+        numpy_support.vtk_to_numpy(ofb.GetSampleData().GetArray("Colors")) != before, axis=1))
+    image = numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3]
+    rgb = image.astype(float) / 255.0
+    saturation = (rgb.max(axis=1) - rgb.min(axis=1)) / np.maximum(rgb.max(axis=1), 1e-6)
+    colourful = np.mean(saturation > 0.5)
+    print("%d particles, %d samples painted, saturated colour on %.1f %% of the image"
+          % (particles.GetNumberOfPoints(), painted, 100.0 * colourful))
+    if not (particles.GetNumberOfPoints() == advector.GetNumberOfParticles()
+            and painted > 0.05 * ofb.GetNumberOfSamples() and colourful > 0.02):
+        sys.exit("check failed")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("mesh", nargs="?",
@@ -55,6 +79,8 @@ def main():
     parser.add_argument("--particles", type=int, default=5000)
     parser.add_argument("--steps", type=int, default=100, help="steps before --image")
     parser.add_argument("--image", help="write this PNG after --steps steps and exit")
+    parser.add_argument("--resolution", type=int, default=1024)
+    parser.add_argument("--check", action="store_true")
     args = parser.parse_args()
 
     mesh = read(args.mesh)
@@ -62,7 +88,7 @@ def main():
 
     sampler = vtkofb.vtkOFBSampler()
     sampler.SetInputData(mesh)
-    sampler.SetResolution(1024)
+    sampler.SetResolution(args.resolution)
     sampler.Update()
     ofb = vtkofb.vtkOFB()  # held here, painted in place
     ofb.ShallowCopy(sampler.GetOutput())
@@ -102,9 +128,12 @@ def main():
     camera.SetViewUp(0.0, 0.0, 1.0)
     renderer.ResetCamera()
     camera.Azimuth(-30.0)
+    camera.Dolly(1.6)
+    renderer.ResetCameraClippingRange()
 
     if args.image:
         window.SetOffScreenRendering(1)
+        before = numpy_support.vtk_to_numpy(ofb.GetSampleData().GetArray("Colors")).copy()
         advector.SetStepsPerUpdate(args.steps)
         advector.Step()
         window.Render()
@@ -115,6 +144,8 @@ def main():
         writer.SetInputConnection(grab.GetOutputPort())
         writer.Write()
         print("Wrote %s after %d steps" % (args.image, advector.GetCurrentStep()))
+        if args.check:
+            check(advector, ofb, before, grab)
         return
 
     interactor = vtkRenderWindowInteractor()

@@ -34,25 +34,19 @@ from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkFiltersGeneral import vtkOBBTree
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderer, vtkRenderWindow,
-                                         vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations)
+from vtkmodules.vtkRenderingCore import vtkActor
 
 import vtkofb
+from ofb_example_view import add_view_options, render_offscreen, save_png, vivid_share
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("mesh", help="surface to paint (.obj, .ply, .stl or .vtp)")
 parser.add_argument("png", help="image to write")
 parser.add_argument("--resolution", type=int, default=512)
 parser.add_argument("--rings", type=int, default=5)
-parser.add_argument("--size", type=int, default=600)
-parser.add_argument("--up", choices=["x", "y", "z"], default="y",
-                    help="the mesh's up axis (the bunny's is y, the horse's z)")
-parser.add_argument("--azimuth", type=float, default=20.0)
-parser.add_argument("--elevation", type=float, default=10.0)
+add_view_options(parser, azimuth=20.0)
 parser.add_argument("--save", help="write the painted OFB to this .ofb file")
 parser.add_argument("--check", action="store_true")
 args = parser.parse_args()
@@ -186,33 +180,11 @@ mapper.SetOFBConnection(bumps.GetOutputPort())
 mapper.UsePaintedNormalsOn()
 actor = vtkActor()
 actor.SetMapper(mapper)
-renderer = vtkRenderer()
-renderer.AddActor(actor)
-renderer.SetBackground(0.1, 0.1, 0.15)
-window = vtkRenderWindow()
-window.SetOffScreenRendering(True)
-window.SetSize(args.size, args.size)
-window.AddRenderer(renderer)
-camera = renderer.GetActiveCamera()
-camera.SetFocalPoint(0.0, 0.0, 0.0)
-camera.SetPosition(*[1.0 if k == u else 0.0 for k in range(3)])
-camera.SetViewUp(*[1.0 if k == up else 0.0 for k in range(3)])
-camera.Azimuth(args.azimuth)
-camera.Elevation(args.elevation)
-renderer.ResetCamera()
-camera.Dolly(1.4)
-renderer.ResetCameraClippingRange()
-window.Render()
 
-# 6. Write the image, and the painted OFB if asked.
-grab = vtkWindowToImageFilter()
-grab.SetInput(window)
-grab.ReadFrontBufferOff()
-writer = vtkPNGWriter()
-writer.SetFileName(args.png)
-writer.SetInputConnection(grab.GetOutputPort())
-writer.Write()
-print(f"wrote {args.png}")
+# 6. Render off screen (ofb_example_view.py: a renderer, the camera on the side), write
+#    the image, and the painted OFB if asked.
+window = render_offscreen(actor, args)
+image = save_png(window, args.png)
 if args.save:
     ofb_writer = vtkofb.vtkOFBWriter()
     ofb_writer.SetInputConnection(bumps.GetOutputPort())
@@ -234,10 +206,7 @@ if args.check:
     normals_out = numpy_support.vtk_to_numpy(bumps.GetOutput().GetSampleData().GetArray("Normals"))
     white = np.all(painted == built, axis=1)     # not painted
     smear_changed = np.any(smeared != painted, axis=1) if smeared is not None else None
-    image = numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3]
-    rgb = image.astype(float) / 255.0
-    saturation = (rgb.max(axis=1) - rgb.min(axis=1)) / np.maximum(rgb.max(axis=1), 1e-6)
-    colourful = np.mean(saturation > 0.4)
+    colourful = vivid_share(image)
     print(f"painted {np.count_nonzero(~white) if white is not None else 0} samples, smear "
           f"changed {np.count_nonzero(smear_changed) if smear_changed is not None else 0}, "
           f"groove moved {np.count_nonzero(np.any(normals_out != normals_in, axis=1))} normals; "

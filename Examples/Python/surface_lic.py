@@ -27,13 +27,11 @@ import numpy as np
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkLookupTable
 from vtkmodules.vtkIOGeometry import vtkOBJReader
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderer, vtkRenderWindow,
-                                         vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations)
+from vtkmodules.vtkRenderingCore import vtkActor
 
 import vtkofb
+from ofb_example_view import add_view_options, render_offscreen, save_png
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("mesh", help="surface to show (.obj or .ply)")
@@ -49,11 +47,7 @@ parser.add_argument("--lookup", choices=["idw", "nearest", "nearestmipmapped"], 
                     help="how the display reads the OFB: inverse-distance weights, the "
                          "nearest sample, or the nearest in the mipmap level as fine as a "
                          "pixel (for large OFBs seen whole)")
-parser.add_argument("--size", type=int, default=600)
-parser.add_argument("--up", choices=["x", "y", "z"], default="y",
-                    help="the mesh's up axis (the bunny's is y, the horse's z)")
-parser.add_argument("--azimuth", type=float, default=0.0)
-parser.add_argument("--elevation", type=float, default=10.0)
+add_view_options(parser)
 parser.add_argument("--check", action="store_true")
 args = parser.parse_args()
 
@@ -132,41 +126,17 @@ else:
 
 actor = vtkActor()
 actor.SetMapper(mapper)
-renderer = vtkRenderer()
-renderer.AddActor(actor)
-renderer.SetBackground(0.1, 0.1, 0.15)
-window = vtkRenderWindow()
-window.SetOffScreenRendering(True)
-window.SetSize(args.size, args.size)
-window.AddRenderer(renderer)
-up = "xyz".index(args.up)
-camera = renderer.GetActiveCamera()
-camera.SetFocalPoint(0.0, 0.0, 0.0)
-camera.SetPosition(*[1.0 if k == (up + 1) % 3 else 0.0 for k in range(3)])
-camera.SetViewUp(*[1.0 if k == up else 0.0 for k in range(3)])
-camera.Azimuth(args.azimuth)
-camera.Elevation(args.elevation)
-renderer.ResetCamera()
-camera.Dolly(1.4)
-renderer.ResetCameraClippingRange()
-window.Render()
 
-# 6. Write the image.
-grab = vtkWindowToImageFilter()
-grab.SetInput(window)
-grab.ReadFrontBufferOff()
-writer = vtkPNGWriter()
-writer.SetFileName(args.png)
-writer.SetInputConnection(grab.GetOutputPort())
-writer.Write()
-print(f"wrote {args.png}")
+# 6. Render off screen (ofb_example_view.py: a renderer, the camera on the side) and
+#    write the image.
+window = render_offscreen(actor, args)
+image = save_png(window, args.png)
 
 # 7. With --check: the LIC is in [0, 1] and not flat; the surface fills the image, drawn
 # from the OFB.
 if args.check:
     values = numpy_support.vtk_to_numpy(lic.GetOutput().GetSampleData().GetArray("LIC"))
-    image = numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
-    covered = np.mean(np.any(np.abs(image[:, :3].astype(int) - [25, 25, 38]) > 8, axis=1))
+    covered = np.mean(np.any(np.abs(image.astype(int) - [25, 25, 38]) > 8, axis=1))
     print(f"LIC in [{values.min():.3f}, {values.max():.3f}], std {values.std():.3f}; "
           f"surface on {100 * covered:.0f} % of the image")
     if not (values.min() >= 0.0 and values.max() <= 1.0 and values.std() > 0.05

@@ -29,6 +29,8 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderW
 import vtkmodules.vtkInteractionStyle  # noqa: F401 (interactor style)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factories)
 
+from ofb_example_view import vivid_share
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
@@ -61,10 +63,8 @@ def check(advector, ofb, before, grab):
     particles = advector.GetOutputDataObject(1)
     painted = np.count_nonzero(np.any(
         numpy_support.vtk_to_numpy(ofb.GetSampleData().GetArray("Colors")) != before, axis=1))
-    image = numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3]
-    rgb = image.astype(float) / 255.0
-    saturation = (rgb.max(axis=1) - rgb.min(axis=1)) / np.maximum(rgb.max(axis=1), 1e-6)
-    colourful = np.mean(saturation > 0.5)
+    colourful = vivid_share(
+        numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3], 0.5)
     print("%d particles, %d samples painted, saturated colour on %.1f %% of the image"
           % (particles.GetNumberOfPoints(), painted, 100.0 * colourful))
     if not (particles.GetNumberOfPoints() == advector.GetNumberOfParticles()

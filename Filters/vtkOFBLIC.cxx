@@ -110,10 +110,10 @@ vtkDataArray* vtkOFBLIC::FindField(vtkOFB* input)
   vtkPointData* sd = input->GetSampleData();
   vtkInformation* info = this->GetInputArrayInformation(0);
   vtkDataArray* vectors = nullptr;
-  std::string what = "the active vectors";
+  std::string what = "active vectors";
   if (info && info->Has(vtkDataObject::FIELD_NAME()))
   {
-    what = std::string("the sample array '") + info->Get(vtkDataObject::FIELD_NAME()) + "'";
+    what = std::string("sample array '") + info->Get(vtkDataObject::FIELD_NAME()) + "'";
     vectors = sd->GetArray(info->Get(vtkDataObject::FIELD_NAME()));
   }
   else if (info && info->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))

@@ -11,6 +11,7 @@
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
+#include "vtkOFBDabArrays.h"
 #include "vtkOFBPainter.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -180,19 +181,19 @@ int vtkOFBPaintFilter::FillInputPortInformation(int port, vtkInformation* info)
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
 {
-  vtkPointData* pd = strokes->GetPointData();
-  auto array = [pd](const char* name, int comps) -> vtkDataArray*
-  {
-    vtkDataArray* a = pd->GetArray(name);
-    return a && a->GetNumberOfComponents() >= comps ? a : nullptr;
-  };
+  vtkOFBDabArrays arrays{ strokes, std::string() };
   StrokeValues v{ strokes,
     this->Brush,
-    array("Radius", 1),
-    array("Color", 3),
-    array("Strength", 1),
-    array("Pressure", 1),
+    arrays.Get("Radius", 1),
+    arrays.Get("Color", 3),
+    arrays.Get("Strength", 1),
+    arrays.Get("Pressure", 1),
     1.0 };
+  if (!arrays.Error.empty())
+  {
+    vtkErrorMacro("Strokes: " << arrays.Error);
+    return nullptr;
+  }
   if (v.Color && v.Color->GetDataType() == VTK_UNSIGNED_CHAR)
   {
     v.ColorScale = 1.0 / 255.0;

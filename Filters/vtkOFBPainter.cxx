@@ -6,6 +6,7 @@
 #include "vtkMath.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
+#include "vtkOFBDabArrays.h"
 #include "vtkOFBHugePages.h"
 #include "vtkOFBPaintKernel.h"
 #include "vtkObjectFactory.h"
@@ -433,18 +434,18 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
     vtkErrorMacro("Dabs: no points given.");
     return 0;
   }
-  vtkPointData* pd = input->GetPointData();
-  auto array = [pd](const char* name, int comps) -> vtkDataArray*
+  vtkOFBDabArrays arrays{ input, std::string() };
+  vtkDataArray* radius = arrays.Get("Radius", 1);
+  vtkDataArray* color = arrays.Get("Color", 3);
+  vtkDataArray* strength = arrays.Get("Strength", 1);
+  vtkDataArray* pressure = arrays.Get("Pressure", 1);
+  vtkDataArray* previous = arrays.Get("PreviousPosition", 3);
+  vtkDataArray* normal = arrays.Get("Normal", 3);
+  if (!arrays.Error.empty())
   {
-    vtkDataArray* a = pd->GetArray(name);
-    return a && a->GetNumberOfComponents() >= comps ? a : nullptr;
-  };
-  vtkDataArray* radius = array("Radius", 1);
-  vtkDataArray* color = array("Color", 3);
-  vtkDataArray* strength = array("Strength", 1);
-  vtkDataArray* pressure = array("Pressure", 1);
-  vtkDataArray* previous = array("PreviousPosition", 3);
-  vtkDataArray* normal = array("Normal", 3);
+    vtkErrorMacro("Dabs: " << arrays.Error << " Nothing painted.");
+    return 0;
+  }
   const double colorScale = color && color->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
   if (!this->Impl->Brush)
   {

@@ -202,3 +202,54 @@ TEST(PaintFilter, BadInputGivesAnErrorAndAnEmptyOutput)
   EXPECT_NE(messages->Errors.find("radius"), std::string::npos);
   EXPECT_EQ(filter->GetOutput()->GetNumberOfSamples(), 0);
 }
+
+//------------------------------------------------------------------------------
+TEST(PaintFilter, MisshapenPointArraysAreBadInput)
+{
+  // A "Color" of 2 components, or a "Radius" shorter than the points (reading it would
+  // run past its end): an error naming the array, an empty output, nothing painted; the
+  // same through vtkOFBPainter::Dabs. A well-formed array of the same name paints.
+  vtkSmartPointer<vtkOFB> input = Build(MakeSphere(1.0, 32), 48);
+  const std::vector<unsigned char> before(
+    Colors(input)->GetPointer(0), Colors(input)->GetPointer(0) + 4 * input->GetNumberOfSamples());
+  auto withArray = [](const char* name, int components, vtkIdType tuples)
+  {
+    vtkSmartPointer<vtkPolyData> strokes = Stroke(3);
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    a->SetNumberOfTuples(tuples);
+    a->Fill(0.2);
+    strokes->GetPointData()->AddArray(a);
+    return strokes;
+  };
+  vtkNew<vtkOFBPaintFilter> filter;
+  filter->SetInputData(input);
+  filter->GetBrush()->SetColor(0.9, 0.1, 0.1);
+  vtkNew<MessageObserver> messages;
+  messages->Watch(filter);
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(input);
+  painter->GetBrush()->SetRadius(0.2);
+  vtkNew<MessageObserver> painterMessages;
+  painterMessages->Watch(painter);
+  for (const auto& bad : { withArray("Color", 2, 3), withArray("Radius", 1, 2) })
+  {
+    const std::string name = bad->GetPointData()->GetArrayName(0);
+    messages->Clear();
+    filter->SetStrokesData(bad);
+    filter->Update();
+    EXPECT_NE(messages->Errors.find("'" + name + "'"), std::string::npos) << messages->Errors;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfSamples(), 0);
+    painterMessages->Clear();
+    EXPECT_EQ(painter->Dabs(bad), 0);
+    EXPECT_NE(painterMessages->Errors.find("'" + name + "'"), std::string::npos);
+  }
+  EXPECT_EQ(0, std::memcmp(before.data(), Colors(input)->GetPointer(0), before.size()));
+
+  filter->SetStrokesData(withArray("Radius", 1, 3));
+  messages->Clear();
+  filter->Update();
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_GT(filter->GetNumberOfChangedSamples(), 0);
+}

@@ -134,6 +134,13 @@ vtkDataArray* vtkOFBLIC::FindField(vtkOFB* input)
                                        << " components; LIC needs 3.");
     return nullptr;
   }
+  if (vectors->GetNumberOfTuples() != input->GetNumberOfSamples())
+  {
+    vtkErrorMacro("The vector field '" << (vectors->GetName() ? vectors->GetName() : "") << "' has "
+                                       << vectors->GetNumberOfTuples() << " tuples for "
+                                       << input->GetNumberOfSamples() << " samples.");
+    return nullptr;
+  }
   return vectors;
 }
 

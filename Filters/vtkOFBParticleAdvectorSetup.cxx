@@ -94,6 +94,17 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
                                        << " components, not 3.");
     return false;
   }
+  const vtkIdType needed = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+    ? surface->GetNumberOfCells()
+    : surface->GetNumberOfPoints();
+  if (vectors->GetNumberOfTuples() < needed)
+  {
+    vtkErrorMacro("The vector field '"
+      << (vectors->GetName() ? vectors->GetName() : "") << "' has " << vectors->GetNumberOfTuples()
+      << " tuples for " << needed
+      << (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? " cells." : " points."));
+    return false;
+  }
   if (surface == in.SurfaceObject && ContentTime(surface) == in.SurfaceTime &&
     vectors == in.VectorArray && vectors->GetMTime() == in.VectorTime)
   {
@@ -290,7 +301,14 @@ void vtkOFBParticleAdvector::LocateSeeds(vtkDataSet* seeds)
   vtkDataArray* colors = this->SeedColorArrayName
     ? seeds->GetPointData()->GetArray(this->SeedColorArrayName)
     : seeds->GetPointData()->GetScalars();
-  if (this->ColorMode == COLOR_FROM_SEEDS && !colors)
+  if (colors && colors->GetNumberOfTuples() < seeds->GetNumberOfPoints())
+  {
+    vtkWarningMacro("The seed colour array '"
+      << (colors->GetName() ? colors->GetName() : "") << "' has " << colors->GetNumberOfTuples()
+      << " tuples for " << seeds->GetNumberOfPoints() << " seeds: not used.");
+    colors = nullptr;
+  }
+  else if (this->ColorMode == COLOR_FROM_SEEDS && !colors)
   {
     vtkWarningMacro("No seed colour array '"
       << (this->SeedColorArrayName ? this->SeedColorArrayName : "(active scalars)")
@@ -370,11 +388,11 @@ void vtkOFBParticleAdvector::PrepareColoring(vtkPolyData* surface)
   vtkDataArray* scalars = this->ScalarArrayName
     ? surface->GetPointData()->GetArray(this->ScalarArrayName)
     : surface->GetPointData()->GetScalars();
-  if (!scalars)
+  if (!scalars || scalars->GetNumberOfTuples() < surface->GetNumberOfPoints())
   {
     vtkWarningMacro("No surface point array '"
       << (this->ScalarArrayName ? this->ScalarArrayName : "(active scalars)")
-      << "' to colour by: the particles keep their colour.");
+      << "' of one tuple a point to colour by: the particles keep their colour.");
     return;
   }
   vtkSmartPointer<vtkScalarsToColors> lut = this->LookupTable;

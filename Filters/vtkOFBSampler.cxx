@@ -53,6 +53,12 @@ bool IsColorArray(vtkDataArray* array)
     (array->GetNumberOfComponents() == 3 || array->GetNumberOfComponents() == 4);
 }
 
+/// The name of `array` for messages.
+const char* NameOf(vtkDataArray* array)
+{
+  return array->GetName() ? array->GetName() : "(unnamed)";
+}
+
 /**
  * Items per chunk of the parallel loops below. Their per-chunk results are combined
  * in chunk order, so that nothing depends on the number of threads.
@@ -466,8 +472,18 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
   vtkDataArray* colors = this->SelectColors(input, surface);
   if (this->PassPointArrays)
   {
-    CollectOtherArrays(
-      input->GetPointData(), input->GetNumberOfPoints(), { normals, vectors, colors }, surface);
+    vtkPointData* pd = input->GetPointData();
+    for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+    {
+      vtkDataArray* array = pd->GetArray(i);
+      if (array && array->GetNumberOfTuples() != input->GetNumberOfPoints())
+      {
+        vtkWarningMacro("The point array '"
+          << NameOf(array) << "' has " << array->GetNumberOfTuples() << " tuples for "
+          << input->GetNumberOfPoints() << " points: not sampled.");
+      }
+    }
+    CollectOtherArrays(pd, input->GetNumberOfPoints(), { normals, vectors, colors }, surface);
   }
   return true;
 }
@@ -636,6 +652,13 @@ bool vtkOFBSampler::SelectVectors(
                                        << vectors->GetNumberOfComponents() << ".");
     return false;
   }
+  if (vectors && vectors->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    vtkErrorMacro("The vector field '" << NameOf(vectors) << "' has "
+                                       << vectors->GetNumberOfTuples() << " tuples for "
+                                       << input->GetNumberOfPoints() << " points.");
+    return false;
+  }
   if (vectors)
   {
     auto v = vtkSmartPointer<vtkFloatArray>::New();
@@ -664,6 +687,13 @@ vtkDataArray* vtkOFBSampler::SelectColors(vtkPolyData* input, vtkOFBSurface& sur
     {
       colors = pd->GetArray("Colors");
     }
+  }
+  if (colors && colors->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    vtkWarningMacro("The colour array '"
+      << NameOf(colors) << "' has " << colors->GetNumberOfTuples() << " tuples for "
+      << input->GetNumberOfPoints() << " points: not used, the samples take DefaultColor.");
+    colors = nullptr;
   }
   if (colors)
   {

@@ -383,14 +383,15 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
       selection.ScalarName.clear();
       this->WarnOnce(std::string("Scalar array \"") +
         (this->ScalarArrayName ? this->ScalarArrayName : "") +
-        "\" (or its component) is not in the OFB sample data: colouring with the paint.");
+        "\" (or its component) is not in the OFB sample data, or is shorter than the "
+        "samples: colouring with the paint.");
     }
   }
   if (!this->SourceScalars &&
     !vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Colors, selection))
   {
-    this->WarnOnce("The OFB has no RGB(A) unsigned char \"Colors\" sample array: rendering "
-                   "without OFB colours.");
+    this->WarnOnce("The OFB has no RGB(A) unsigned char \"Colors\" sample array of one tuple a "
+                   "sample: rendering without OFB colours.");
     return false;
   }
   this->UseIntensity = false;
@@ -404,15 +405,16 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
       selection.IntensityName.clear();
       this->WarnOnce(std::string("Intensity array \"") +
         (this->IntensityArrayName ? this->IntensityArrayName : "") +
-        "\" is not in the OFB sample data: no intensity modulation.");
+        "\" is not in the OFB sample data, or is shorter than the samples: no intensity "
+        "modulation.");
     }
   }
   selection.Normals = this->UsePaintedNormals &&
     vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Normals, selection) != nullptr;
   if (this->UsePaintedNormals && !selection.Normals)
   {
-    this->WarnOnce("The OFB has no 3-component \"Normals\" sample array: shading with the "
-                   "surface normals.");
+    this->WarnOnce("The OFB has no 3-component \"Normals\" sample array of one tuple a sample: "
+                   "shading with the surface normals.");
   }
   this->UseNormals = selection.Normals;
   return true;

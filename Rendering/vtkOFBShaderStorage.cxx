@@ -99,6 +99,13 @@ bool vtkOFBShaderStorage::SetContext(vtkOpenGLRenderWindow* window, std::string&
       this->FreeBuffers();
       window->MakeCurrent();
     }
+    else
+    {
+      // The window that held the buffers is gone (this weak pointer is cleared before its
+      // destructor releases graphics resources), and its context with them: their names
+      // mean nothing, or other objects, in the new context. Forget them.
+      this->FreeBuffers();
+    }
     this->Window = window;
     this->ForgetUploads();
   }
@@ -379,7 +386,15 @@ unsigned int vtkOFBShaderStorage::GetBindingPoint(int id)
 //------------------------------------------------------------------------------
 vtkDataArray* vtkOFBShaderStorage::GetArray(vtkOFB* ofb, int id, const Selection& selection)
 {
-  vtkPointData* pd = ofb ? ofb->GetSampleData() : nullptr;
+  // An array with fewer tuples than samples is as good as missing (its upload would read
+  // past its end).
+  vtkDataArray* array = ofb ? FindArray(ofb->GetSampleData(), id, selection) : nullptr;
+  return array && array->GetNumberOfTuples() >= ofb->GetNumberOfSamples() ? array : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkOFBShaderStorage::FindArray(vtkPointData* pd, int id, const Selection& selection)
+{
   if (!pd)
   {
     return nullptr;

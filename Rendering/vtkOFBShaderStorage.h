@@ -36,6 +36,7 @@ class vtkIdTypeArray;
 class vtkOFB;
 class vtkOFBPyramid;
 class vtkOpenGLRenderWindow;
+class vtkPointData;
 class vtkPolyData;
 class vtkScalarsToColors;
 class vtkShaderProgram;
@@ -192,13 +193,18 @@ public:
   static unsigned int GetBindingPoint(int id);
 
   /// The array of `ofb` that an attribute (Colors, Scalars) or a buffer (Intensity, Normals)
-  /// reads under `selection` (null if missing or unusable).
+  /// reads under `selection` (null if missing or unusable, shorter than the samples included).
   static vtkDataArray* GetArray(vtkOFB* ofb, int id, const Selection& selection);
 
 private:
+  /// GetArray's choice among the sample arrays `pd`, before the length check.
+  static vtkDataArray* FindArray(vtkPointData* pd, int id, const Selection& selection);
+
   vtkOFBShaderStorage(const vtkOFBShaderStorage&) = delete;
   void operator=(const vtkOFBShaderStorage&) = delete;
 
+  /// Deletes the buffers in Window's context (which must be current); without a Window
+  /// (gone, and its context with it) only forgets their names.
   void FreeBuffers();
   void ForgetUploads();
   vtkIdType UploadCoarseLevels(const Selection& selection, unsigned int whole);

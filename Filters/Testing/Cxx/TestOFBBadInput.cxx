@@ -2,6 +2,8 @@
 #include "vtkOFBTestUtilities.h"
 
 #include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkTimerLog.h"
 
@@ -167,4 +169,48 @@ TEST(BadInput, ChosenVectorArrayMissingOrWrongShape)
   EXPECT_NE(observer->Errors.find("vector field"), std::string::npos);
   EXPECT_EQ(sampler->GetOutput()->GetNumberOfSamples(), 0);
   observer->Delete();
+}
+
+TEST(BadInput, PointArraysShorterThanThePoints)
+{
+  // vtkPolyData does not enforce one tuple a point. A short vector field is an error (its
+  // interpolation would read past its end); a short colour or other point array is left
+  // out with a warning naming it.
+  vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 16);
+  const vtkIdType n = sphere->GetNumberOfPoints();
+  auto shortArray = [n](const char* name, int components, int type)
+  {
+    vtkSmartPointer<vtkDataArray> a =
+      vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(type));
+    a->SetName(name);
+    a->SetNumberOfComponents(components);
+    a->SetNumberOfTuples(n / 2);
+    a->Fill(1.0);
+    return a;
+  };
+  vtkSmartPointer<vtkDataArray> vectors = shortArray("Flow", 3, VTK_FLOAT);
+  sphere->GetPointData()->SetVectors(vectors);
+  std::string errors = BuildErrors(sphere, 32);
+  EXPECT_NE(errors.find("'Flow'"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("tuples"), std::string::npos) << errors;
+
+  sphere->GetPointData()->RemoveArray("Flow");
+  sphere->GetPointData()->SetScalars(shortArray("Colors", 3, VTK_UNSIGNED_CHAR));
+  sphere->GetPointData()->AddArray(shortArray("Pressure", 1, VTK_DOUBLE));
+  vtkNew<vtkOFBSampler> sampler;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(sampler);
+  sampler->SetInputData(sphere);
+  sampler->SetResolution(32);
+  sampler->Update();
+  EXPECT_TRUE(observer->Errors.empty()) << observer->Errors;
+  EXPECT_NE(observer->Warnings.find("'Colors'"), std::string::npos) << observer->Warnings;
+  EXPECT_NE(observer->Warnings.find("'Pressure'"), std::string::npos) << observer->Warnings;
+  vtkOFB* ofb = sampler->GetOutput();
+  ASSERT_GT(ofb->GetNumberOfSamples(), 0);
+  EXPECT_EQ(ofb->GetSampleData()->GetArray("Pressure"), nullptr);
+  // The samples take DefaultColor (opaque white by default), not the short array's values.
+  vtkDataArray* colors = ofb->GetSampleData()->GetArray("Colors");
+  ASSERT_NE(colors, nullptr);
+  EXPECT_EQ(colors->GetRange(0)[0], 255.0);
 }

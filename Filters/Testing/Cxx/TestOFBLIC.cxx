@@ -678,6 +678,19 @@ TEST(LIC, BadInput)
   lic->Update();
   EXPECT_NE(messages->Errors.find("components"), std::string::npos) << messages->Errors;
   EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0);
+
+  // A field with fewer tuples than samples (reading it would run past its end).
+  messages->Clear();
+  vtkNew<vtkFloatArray> shortField;
+  shortField->SetName("Short");
+  shortField->SetNumberOfComponents(3);
+  shortField->SetNumberOfTuples(plain->GetNumberOfSamples() / 2);
+  shortField->FillValue(1.0f);
+  plain->GetSampleData()->AddArray(shortField);
+  lic->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Short");
+  lic->Update();
+  EXPECT_NE(messages->Errors.find("'Short' has"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0);
   lic->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
 

@@ -325,6 +325,12 @@ TEST(ParticlePaint, BadInput)
     advector->SetInputData(copy);
     advector->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Flat");
     expectEmpty(advector, "components, not 3");
+    // Fewer tuples than points: an error, not a read past the array's end.
+    v2->SetNumberOfComponents(3);
+    v2->SetNumberOfTuples(copy->GetNumberOfPoints() / 2);
+    v2->Fill(1.0);
+    v2->Modified();
+    expectEmpty(advector, "tuples for");
   }
   {
     vtkNew<vtkPolyData> copy;
@@ -372,6 +378,43 @@ TEST(ParticlePaint, BadInput)
     double x[3];
     advector->GetParticles()->GetPoint(0, x);
     EXPECT_LT(std::abs(vtkMath::Norm(x) - 1.0), 2e-3); // on the sphere's facets
+  }
+  // Seed colours and colouring scalars with fewer tuples than seeds or points: not used,
+  // with a warning; the particles are there and take the constant colour.
+  {
+    vtkSmartPointer<vtkPolyData> seeds = MakeSeeds({ { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 } });
+    vtkNew<vtkUnsignedCharArray> seedColors;
+    seedColors->SetName("SeedColor");
+    seedColors->SetNumberOfComponents(3);
+    seedColors->SetNumberOfTuples(1);
+    seedColors->Fill(200);
+    seeds->GetPointData()->AddArray(seedColors);
+    vtkNew<vtkPolyData> surface;
+    surface->DeepCopy(rotating);
+    vtkNew<vtkFloatArray> scalars;
+    scalars->SetName("Height");
+    scalars->SetNumberOfTuples(3);
+    scalars->Fill(1.0);
+    surface->GetPointData()->AddArray(scalars);
+    for (int mode :
+      { vtkOFBParticleAdvector::COLOR_FROM_SEEDS, vtkOFBParticleAdvector::COLOR_BY_SCALAR })
+    {
+      vtkNew<vtkOFBParticleAdvector> advector;
+      advector->SetInputData(surface);
+      advector->SetSeeds(seeds);
+      advector->SetSeedColorArrayName("SeedColor");
+      advector->SetScalarArrayName("Height");
+      advector->SetColorMode(mode);
+      messages->Clear();
+      messages->Watch(advector);
+      advector->Update();
+      EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+      EXPECT_NE(messages->Warnings.find(
+                  mode == vtkOFBParticleAdvector::COLOR_FROM_SEEDS ? "'SeedColor'" : "'Height'"),
+        std::string::npos)
+        << messages->Warnings;
+      EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 2);
+    }
   }
   // Cell vectors: averaged to points, with a warning.
   {

@@ -21,6 +21,7 @@
 #include "vtkRenderer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtk_glew.h"
 
@@ -537,6 +538,52 @@ TEST(OFBPolyDataMapper, MeshAndOFBMismatchWarnsAndKeepsThePropertyColour)
   EXPECT_TRUE(p[1] > 150 && p[0] < 40) << p[0] << " " << p[1] << " " << p[2];
 }
 
+TEST(OFBPolyDataMapper, MovesToANewWindowAfterTheOldOneIsGone)
+{
+  // A mapper rendered in a window that is then destroyed (with the mapper still in its
+  // renderer), then in a new one, several times: its buffers died with the old context
+  // and are made again in the new one (the old names, reused there, would name other
+  // objects or none: the upload failed or overwrote one of VTK's buffers).
+  vtkSmartPointer<vtkPolyData> surface = vtkofbtest::MakeSphere(1.0, 24);
+  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(surface, 128);
+  vtkofbtest::Paint(ofb,
+    [](const double*, unsigned char rgba[4])
+    {
+      rgba[0] = 255;
+      rgba[1] = rgba[2] = 0;
+      rgba[3] = 255;
+    });
+  vtkNew<vtkOFBPolyDataMapper> mapper;
+  mapper->SetInputData(surface);
+  mapper->SetOFB(ofb);
+  vtkNew<vtkofbtest::MessageObserver> messages;
+  messages->Watch(mapper);
+  for (int mode : { vtkOFBPolyDataMapper::Nearest,
+         vtkOFBPolyDataMapper::NearestMipmapped,
+         vtkOFBPolyDataMapper::InverseDistance })
+  {
+    mapper->SetLookupMode(mode);
+    for (int k = 0; k < 3; ++k)
+    {
+      vtkNew<vtkRenderWindow> window;
+      vtkNew<vtkRenderer> renderer;
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      renderer->AddActor(actor);
+      window->SetSize(60, 60);
+      window->AddRenderer(renderer);
+      renderer->ResetCamera();
+      window->Render();
+      EXPECT_TRUE(mapper->GetLastRenderUsedOFB())
+        << vtkOFBPolyDataMapper::GetLookupModeAsString(mode) << ", window " << k << ": "
+        << messages->Warnings;
+      const Pixel p = Centre(window);
+      EXPECT_TRUE(IsRed(p)) << vtkOFBPolyDataMapper::GetLookupModeAsString(mode) << ", window " << k
+                            << ": " << p[0] << " " << p[1] << " " << p[2];
+    }
+  }
+}
+
 TEST(OFBPolyDataMapper, MissingArraysFallBackWithWarnings)
 {
   Scene scene;
@@ -552,6 +599,40 @@ TEST(OFBPolyDataMapper, MissingArraysFallBackWithWarnings)
   EXPECT_NE(messages->Warnings.find("NoSuchArray"), std::string::npos) << messages->Warnings;
   EXPECT_NE(messages->Warnings.find("NoLIC"), std::string::npos) << messages->Warnings;
   EXPECT_TRUE(IsRed(Centre(scene.Window)));
+}
+
+TEST(OFBPolyDataMapper, ArraysShorterThanTheSamplesAreMissing)
+{
+  // An intensity array of 5 tuples (its upload would read past its end): a warning, the
+  // paint shown unmodulated; a "Colors" of 5 tuples: a warning, the property colour.
+  Scene scene;
+  scene.Fill(255, 0, 0);
+  vtkNew<vtkFloatArray> lic;
+  lic->SetName("LIC");
+  lic->SetNumberOfTuples(5);
+  lic->FillValue(0.0f);
+  scene.OFB->GetSampleData()->AddArray(lic);
+  scene.Mapper->SetIntensityArrayName("LIC");
+  scene.Mapper->IntensityModulationOn();
+  vtkNew<vtkofbtest::MessageObserver> messages;
+  messages->Watch(scene.Mapper);
+  scene.Window->Render();
+  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_NE(messages->Warnings.find("\"LIC\""), std::string::npos) << messages->Warnings;
+  EXPECT_TRUE(IsRed(Centre(scene.Window))); // a LIC of 0 would have made it dark
+
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(4);
+  colors->SetNumberOfTuples(5);
+  colors->Fill(0);
+  scene.OFB->GetSampleData()->RemoveArray("Colors");
+  scene.OFB->GetSampleData()->AddArray(colors);
+  scene.OFB->Modified();
+  messages->Clear();
+  scene.Window->Render();
+  EXPECT_FALSE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_NE(messages->Warnings.find("\"Colors\""), std::string::npos) << messages->Warnings;
 }
 
 TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)

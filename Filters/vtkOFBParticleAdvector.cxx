@@ -59,6 +59,7 @@ vtkOFBParticleAdvector::vtkOFBParticleAdvector()
   , SeedColorArrayName(nullptr)
   , ScalarArrayName(nullptr)
   , TrailLength(16)
+  , MemoryLimit(4096)
   , Internals(new vtkInternals)
 {
   this->SetNumberOfInputPorts(3);
@@ -332,9 +333,12 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   const bool targetChanged = this->PrepareOFB(inputOFB, surface);
   const bool settingsChanged = this->NeedsRestart(seeds); // always: it records them
   const bool restart = settingsChanged || rebuilt || targetChanged;
-  if (restart)
+  if (restart && !this->StartParticles(seeds))
   {
-    this->StartParticles(seeds);
+    in.Started = false;
+    this->ClearFootprints();
+    in.PendingSteps = 0;
+    return 1;
   }
 
   // How far to go: the steps asked for by Step(), else the requested time.
@@ -356,9 +360,11 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
         break;
       }
     }
-    if (target < system.CurrentStep)
+    if (target < system.CurrentStep && !this->StartParticles(seeds))
     {
-      this->StartParticles(seeds);
+      in.Started = false;
+      this->ClearFootprints();
+      return 1;
     }
   }
   in.PendingSteps = 0;
@@ -443,6 +449,7 @@ void vtkOFBParticleAdvector::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "LookupTable: " << this->LookupTable << "\n";
   os << indent << "TrailLength: " << this->TrailLength << "\n";
+  os << indent << "MemoryLimit: " << this->MemoryLimit << " MiB\n";
   os << indent << "CurrentStep: " << this->GetCurrentStep() << "\n";
   os << indent << "LastAdvectionTime: " << this->GetLastAdvectionTime() << " s\n";
   os << indent << "LastPaintingTime: " << this->GetLastPaintingTime() << " s\n";

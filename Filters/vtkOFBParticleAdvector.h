@@ -359,6 +359,18 @@ public:
   vtkGetMacro(TrailLength, int);
   ///@}
 
+  ///@{
+  /**
+   * Most memory the particles may take, in MiB (default 4096): the seeds times
+   * ChainLength particles, each with its state and a trail of TrailLength positions,
+   * and their output. The advector estimates it before it allocates the particles and
+   * fails with an error (no particles, empty outputs) when the estimate exceeds the
+   * limit, rather than running out of memory.
+   */
+  vtkSetClampMacro(MemoryLimit, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MemoryLimit, vtkIdType);
+  ///@}
+
   /**
    * Advance StepsPerUpdate steps now (updating the inputs first) and update the
    * outputs.
@@ -420,7 +432,8 @@ protected:
   bool PrepareSurface(vtkPolyData* surface, vtkInformationVector** inputVector, bool& rebuilt);
   bool PrepareOFB(vtkOFB* inputOFB, vtkPolyData* surface);
   bool NeedsRestart(vtkDataSet* seeds);
-  void StartParticles(vtkDataSet* seeds);
+  /// False, with an error, when the particles would exceed MemoryLimit.
+  bool StartParticles(vtkDataSet* seeds);
   void LocateSeeds(vtkDataSet* seeds);
   void PrepareColoring(vtkPolyData* surface);
   void PaintFootprints();
@@ -455,6 +468,7 @@ protected:
   char* SeedColorArrayName;
   char* ScalarArrayName;
   int TrailLength;
+  vtkIdType MemoryLimit;
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -249,8 +249,26 @@ bool vtkOFBParticleAdvector::NeedsRestart(vtkDataSet* seeds)
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
+bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
 {
+  // What the particles will hold: per seed its point and colour; per particle (seeds x
+  // ChainLength) its state, its trail (TrailLength positions, and as many output points
+  // and ids), its footprint and output point. In doubles: the product can exceed 2^63.
+  const double numberOfSeeds =
+    static_cast<double>(seeds ? seeds->GetNumberOfPoints() : this->NumberOfParticles);
+  const double particles = numberOfSeeds * this->ChainLength;
+  const double bytes = numberOfSeeds * (sizeof(vtkOFBSurfacePoint) + 4 * sizeof(float)) +
+    particles *
+      (sizeof(vtkOFBParticleSystem::Particle) + 256.0 +
+        this->TrailLength * (sizeof(glm::dvec3) + 3 * sizeof(float) + sizeof(vtkIdType)));
+  if (bytes > 1048576.0 * static_cast<double>(this->MemoryLimit))
+  {
+    vtkErrorMacro("The particles would take about "
+      << static_cast<vtkIdType>(bytes / 1048576.0) << " MiB (" << numberOfSeeds << " seeds x "
+      << this->ChainLength << " in a chain, trails of " << this->TrailLength
+      << " positions), more than MemoryLimit (" << this->MemoryLimit << " MiB): no particles.");
+    return false;
+  }
   vtkInternals& in = *this->Internals;
   vtkOFBParticleSystem& system = in.System;
   system.Walker = &in.Walker;
@@ -289,6 +307,7 @@ void vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
   in.ResetRequested = false;
   in.SeedObject = seeds;
   in.SeedTime = seeds ? ContentTime(seeds) : 0;
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -361,6 +361,31 @@ TEST(ParticlePaint, BadInput)
     advector->SetInputData(empty);
     expectEmpty(advector, "no polygons");
   }
+  // Particles, chains or trails beyond MemoryLimit: an error before anything is
+  // allocated (not an exhausted memory), and the advector recovers when they fit.
+  {
+    vtkNew<vtkOFBParticleAdvector> advector;
+    advector->SetInputData(rotating);
+    advector->SetNumberOfParticles(VTK_ID_MAX / 2);
+    expectEmpty(advector, "MemoryLimit");
+    advector->SetNumberOfParticles(10000);
+    advector->SetTrailLength(1000000);
+    expectEmpty(advector, "MemoryLimit");
+    advector->SetTrailLength(16);
+    advector->SetNumberOfParticles(20);
+    advector->SetChainLength(1000000);
+    expectEmpty(advector, "MemoryLimit");
+    advector->SetChainLength(1);
+    advector->SetNumberOfParticles(100000);
+    advector->SetMemoryLimit(1);
+    expectEmpty(advector, "MemoryLimit");
+    advector->SetMemoryLimit(4096);
+    advector->SetNumberOfParticles(100);
+    messages->Clear();
+    advector->Update();
+    EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+    EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 100);
+  }
   // NaN seeds and seeds far from the surface are rejected with a warning; seeds
   // near it are moved onto it.
   {

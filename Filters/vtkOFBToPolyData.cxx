@@ -1,5 +1,6 @@
 #include "vtkOFBToPolyData.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -86,6 +87,20 @@ int vtkOFBToPolyData::RequestData(
   }
 
   output->GetPointData()->ShallowCopy(ofb->GetSampleData());
+  // A sample array of another length than the samples would be a point array that
+  // readers of the point cloud index past its end: left out, with a warning.
+  vtkPointData* pd = output->GetPointData();
+  for (int k = pd->GetNumberOfArrays() - 1; k >= 0; --k)
+  {
+    vtkAbstractArray* array = pd->GetAbstractArray(k);
+    if (array && array->GetNumberOfTuples() != n)
+    {
+      vtkWarningMacro("The sample array '" << (array->GetName() ? array->GetName() : "") << "' has "
+                                           << array->GetNumberOfTuples() << " tuples for " << n
+                                           << " samples: left out.");
+      pd->RemoveArray(k);
+    }
+  }
   if (this->GenerateGridAxis)
   {
     auto axis = vtkSmartPointer<vtkUnsignedCharArray>::New();

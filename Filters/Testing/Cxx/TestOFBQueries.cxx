@@ -2,6 +2,7 @@
 #include "vtkOFBTestUtilities.h"
 
 #include "vtkExecutive.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
@@ -395,6 +396,28 @@ TEST(Queries, PointCloudOfAnEmptyOFBIsEmpty)
   EXPECT_FALSE(observer->Errors.empty());
   EXPECT_EQ(wrong->GetOutput()->GetNumberOfPoints(), 0);
   observer->Delete();
+}
+
+//------------------------------------------------------------------------------
+TEST(Queries, PointCloudLeavesOutSampleArraysOfAnotherLength)
+{
+  // A sample array of 3 tuples would be a point array shorter than the cloud's points.
+  vtkSmartPointer<vtkOFB> ofb = Build(MakeSphere(1.0, 16), 32);
+  vtkNew<vtkFloatArray> shortArray;
+  shortArray->SetName("Short");
+  shortArray->SetNumberOfTuples(3);
+  ofb->GetSampleData()->AddArray(shortArray);
+  vtkNew<vtkOFBToPolyData> cloud;
+  vtkNew<MessageObserver> observer;
+  observer->Watch(cloud);
+  cloud->SetInputData(ofb);
+  cloud->Update();
+  vtkPolyData* out = cloud->GetOutput();
+  EXPECT_EQ(out->GetNumberOfPoints(), ofb->GetNumberOfSamples());
+  EXPECT_EQ(out->GetPointData()->GetArray("Short"), nullptr);
+  EXPECT_NE(observer->Warnings.find("'Short'"), std::string::npos) << observer->Warnings;
+  EXPECT_NE(out->GetPointData()->GetArray("Colors"), nullptr); // the others are kept
+  EXPECT_NE(ofb->GetSampleData()->GetArray("Short"), nullptr); // the input is untouched
 }
 
 //------------------------------------------------------------------------------

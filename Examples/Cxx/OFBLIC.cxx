@@ -41,6 +41,8 @@
 #include "vtkTextProperty.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "ofbExampleOptions.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -248,29 +250,49 @@ int main(int argc, char* argv[])
   std::string keys;
   int resolution = 512, steps = 20, size = 800;
   double grain = 1.0;
-  for (int i = 1; i < argc; ++i)
+  bool ok = true; // false once a value is not a number in its range
+  for (int i = 1; i < argc && ok; ++i)
   {
     const std::string arg = argv[i];
     const bool value = i + 1 < argc;
     if (arg == "--resolution" && value)
-      resolution = std::atoi(argv[++i]);
+    {
+      ok = ofbexample::ParseInt(argv[++i], 8, 16384, resolution);
+    }
     else if (arg == "--steps" && value)
-      steps = std::atoi(argv[++i]);
+    {
+      ok = ofbexample::ParseInt(argv[++i], 0, 1000, steps);
+    }
     else if (arg == "--grain" && value)
-      grain = std::atof(argv[++i]);
+    {
+      ok = ofbexample::ParseDouble(argv[++i], 0.01, 100.0, grain);
+    }
     else if (arg == "--image" && value)
+    {
       image = argv[++i];
+    }
     else if (arg == "--keys" && value)
+    {
       keys = argv[++i];
+    }
     else if (arg == "--size" && value)
-      size = std::atoi(argv[++i]);
+    {
+      ok = ofbexample::ParseInt(argv[++i], 64, 8192, size);
+    }
     else if (!arg.empty() && arg[0] != '-')
+    {
       meshPath = arg;
+    }
     else
+    {
+      ok = false;
+    }
+    if (!ok)
     {
       std::cerr << "Usage: " << argv[0]
                 << " [mesh.obj|mesh.ply] [--resolution N] [--steps N] [--grain G]"
-                   " [--image file.png [--keys K1,K2,...]] [--size S]\n";
+                   " [--image file.png [--keys K1,K2,...]] [--size S]\n"
+                   "  resolution 8-16384, steps 0-1000, grain 0.01-100 cells, size 64-8192\n";
       return arg == "--help" ? 0 : 1;
     }
   }
@@ -309,6 +331,12 @@ int main(int argc, char* argv[])
   app.Window->AddRenderer(app.Renderer);
   app.Window->SetSize(size, size);
   app.Window->SetWindowName("OFBLIC: surface LIC on the OFB");
+  app.LIC->Update();
+  if (app.LIC->GetOutput()->GetNumberOfSamples() == 0)
+  {
+    std::cerr << "OFBLIC: no LIC of " << meshPath << " (its OFB could not be built)\n";
+    return 1;
+  }
   app.Renderer->ResetCamera();
   app.Renderer->GetActiveCamera()->Dolly(1.3);
   app.Renderer->ResetCameraClippingRange();

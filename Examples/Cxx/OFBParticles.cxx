@@ -39,6 +39,8 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "ofbExampleOptions.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -66,6 +68,7 @@ struct Options
 
 bool Parse(int argc, char* argv[], Options& o)
 {
+  bool ok = true; // false once a value is not a number in its range
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -84,38 +87,39 @@ bool Parse(int argc, char* argv[], Options& o)
     }
     else if (a == "--particles" && more)
     {
-      o.Particles = std::atoi(argv[++i]);
+      ok = ofbexample::ParseInt(argv[++i], 1, 100000000, o.Particles) && ok;
     }
     else if (a == "--resolution" && more)
     {
-      o.Resolution = std::atoi(argv[++i]);
+      ok = ofbexample::ParseInt(argv[++i], 8, 16384, o.Resolution) && ok;
     }
     else if (a == "--steps" && more)
     {
-      o.Steps = std::atoi(argv[++i]);
+      ok = ofbexample::ParseInt(argv[++i], 1, 1000000, o.Steps) && ok;
     }
     else if (a == "--lifetime" && more)
     {
-      o.Lifetime = std::atoi(argv[++i]);
+      ok = ofbexample::ParseInt(argv[++i], 0, 1000000, o.Lifetime) && ok;
     }
     else if (a == "--radius" && more)
     {
-      o.Radius = std::atof(argv[++i]);
+      ok = ofbexample::ParseDouble(argv[++i], 0.01, 1000.0, o.Radius) && ok;
     }
     else if (a == "--width" && more)
     {
-      o.Width = std::atoi(argv[++i]);
+      ok = ofbexample::ParseInt(argv[++i], 64, 8192, o.Width) && ok;
     }
     else if (a == "--height" && more)
     {
-      o.Height = std::atoi(argv[++i]);
+      ok = ofbexample::ParseInt(argv[++i], 64, 8192, o.Height) && ok;
     }
     else if (a == "--view-up" && i + 3 < argc)
     {
       for (double& x : o.ViewUp)
       {
-        x = std::atof(argv[++i]);
+        ok = ofbexample::ParseDouble(argv[++i], -1e6, 1e6, x) && ok;
       }
+      ok = ok && vtkMath::Norm(o.ViewUp) > 0.0;
     }
     else if (a == "--reveal")
     {
@@ -130,7 +134,7 @@ bool Parse(int argc, char* argv[], Options& o)
       return false;
     }
   }
-  return true;
+  return ok;
 }
 
 
@@ -266,7 +270,9 @@ int main(int argc, char* argv[])
     std::cerr << "Usage: OFBParticles [mesh.obj|mesh.ply] [--field rotation|height|mesh] "
                  "[--particles N] [--resolution N] [--radius CELLS] [--lifetime STEPS] "
                  "[--color constant|seeds|scalar|periodic] [--reveal] [--image out.png "
-                 "--steps N] [--width W] [--height H] [--view-up X Y Z]\n";
+                 "--steps N] [--width W] [--height H] [--view-up X Y Z]\n"
+                 "  N: particles 1-1e8, resolution 8-16384, steps 1-1e6, lifetime 0-1e6;\n"
+                 "  CELLS 0.01-1000; W and H 64-8192; the view-up not zero\n";
     return 1;
   }
   vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(o.Mesh);
@@ -293,6 +299,11 @@ int main(int argc, char* argv[])
   sampler->SetInputData(mesh);
   sampler->SetResolution(o.Resolution);
   sampler->Update();
+  if (sampler->GetOutput()->GetNumberOfSamples() == 0)
+  {
+    std::cerr << "OFBParticles: the OFB of " << o.Mesh << " could not be built\n";
+    return 1;
+  }
   vtkNew<vtkOFB> ofb; // held by the application, painted in place
   ofb->ShallowCopy(sampler->GetOutput());
   ResetPaint(ofb, o.Reveal);

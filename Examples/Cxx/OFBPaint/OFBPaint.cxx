@@ -46,6 +46,8 @@
 #include "vtkXMLPolyDataReader.h"
 #include "vtksys/SystemTools.hxx"
 
+#include "ofbExampleOptions.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <iomanip>
@@ -100,15 +102,6 @@ void Usage(const char* argv0)
        "                   Examples/Cxx/OFBPaint/ofbPaintStrokes.h), with --image OUT.png\n"
        "  --play FILE      play recorded mouse and key events (vtkInteractorEventRecorder's\n"
        "                   format) in the window, then exit: a scripted session\n";
-}
-
-bool ParseInt(const std::string& text, int low, int high, int& value)
-{
-  char* end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  const bool ok = !text.empty() && !*end && v >= low && v <= high;
-  value = ok ? static_cast<int>(v) : value;
-  return ok;
 }
 
 // The surface of an OBJ, PLY, STL or VTP file as triangles with point normals, or null
@@ -469,9 +462,9 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
     return false;
   }
   int resolution = 0, width = 0, height = 0;
-  if (!ParseInt(options.at("--resolution"), 8, 8192, resolution) ||
-    !ParseInt(options.at("--width"), 64, 8192, width) ||
-    !ParseInt(options.at("--height"), 64, 8192, height))
+  if (!ofbexample::ParseInt(options.at("--resolution"), 8, 8192, resolution) ||
+    !ofbexample::ParseInt(options.at("--width"), 64, 8192, width) ||
+    !ofbexample::ParseInt(options.at("--height"), 64, 8192, height))
   {
     std::cerr << "OFBPaint: --resolution must be in [8, 8192], --width and --height in "
                  "[64, 8192]\n";

@@ -37,6 +37,8 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
+#include "ofbExampleOptions.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -90,15 +92,6 @@ void Usage(const char* argv0)
                "samples coloured by grid (X red, Y green, Z blue) and the surface drawn by\n"
                "vtkOFBPolyDataMapper (lookup nearest by default) from an OFB paint of the grid\n"
                "colours with fine stripes.\n";
-}
-
-bool ParseInt(const std::string& text, int low, int high, int& value)
-{
-  char* end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  const bool ok = !text.empty() && !*end && v >= low && v <= high;
-  value = ok ? static_cast<int>(v) : value;
-  return ok;
 }
 
 // VTK 9.1's PLY reader crashes on a truncated file: check that the header is complete and
@@ -297,15 +290,15 @@ int ParseOptions(int argc, char* argv[], Options& options)
   const std::string& backend = options.Backend;
   const std::string& lookup = options.Lookup;
   const std::pair<bool, std::string> checks[] = { // each value valid, or the message
-    { ParseInt(values["--resolution"], -2147483647, 2147483647, options.Resolution),
+    { ofbexample::ParseInt(values["--resolution"], -2147483647, 2147483647, options.Resolution),
       "bad resolution '" + values["--resolution"] + "'" },
     { backend == "auto" || backend == "cpu" || backend == "opengl",
       "unknown backend '" + values["--backend"] + "' (auto, cpu or opengl)" },
     { lookup == "nearest" || lookup == "idw" || lookup == "mipmap" || lookup == "nearestmipmap",
       "unknown lookup '" + values["--lookup"] + "' (nearest, idw, mipmap or nearestmipmap)" },
-    { ParseInt(values["--width"], 16, 8192, options.Width),
+    { ofbexample::ParseInt(values["--width"], 16, 8192, options.Width),
       "bad width '" + values["--width"] + "'" },
-    { ParseInt(values["--height"], 16, 8192, options.Height),
+    { ofbexample::ParseInt(values["--height"], 16, 8192, options.Height),
       "bad height '" + values["--height"] + "'" }
   };
   for (const auto& check : checks)

@@ -322,9 +322,13 @@ void vtkOFBParticleAdvector::LocateSeeds(vtkDataSet* seeds)
     : seeds->GetPointData()->GetScalars();
   if (colors && colors->GetNumberOfTuples() < seeds->GetNumberOfPoints())
   {
-    vtkWarningMacro("The seed colour array '"
-      << (colors->GetName() ? colors->GetName() : "") << "' has " << colors->GetNumberOfTuples()
-      << " tuples for " << seeds->GetNumberOfPoints() << " seeds: not used.");
+    if (this->ColorMode == COLOR_FROM_SEEDS)
+    {
+      vtkWarningMacro("The seed colour array '"
+        << (colors->GetName() ? colors->GetName() : "") << "' has " << colors->GetNumberOfTuples()
+        << " tuples for " << seeds->GetNumberOfPoints()
+        << " seeds: not used, the seeds take the constant colour.");
+    }
     colors = nullptr;
   }
   else if (this->ColorMode == COLOR_FROM_SEEDS && !colors)

@@ -470,19 +470,21 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     return false;
   }
   vtkDataArray* colors = this->SelectColors(input, surface);
+  // Point arrays of another length than the points (vtkPolyData does not enforce it)
+  // are left out: normals are then computed, colours are DefaultColor.
+  vtkPointData* pd = input->GetPointData();
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = pd->GetArray(i);
+    if (array && array->GetNumberOfTuples() != input->GetNumberOfPoints())
+    {
+      vtkWarningMacro("The point array '" << NameOf(array) << "' has " << array->GetNumberOfTuples()
+                                          << " tuples for " << input->GetNumberOfPoints()
+                                          << " points: left out.");
+    }
+  }
   if (this->PassPointArrays)
   {
-    vtkPointData* pd = input->GetPointData();
-    for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
-    {
-      vtkDataArray* array = pd->GetArray(i);
-      if (array && array->GetNumberOfTuples() != input->GetNumberOfPoints())
-      {
-        vtkWarningMacro("The point array '"
-          << NameOf(array) << "' has " << array->GetNumberOfTuples() << " tuples for "
-          << input->GetNumberOfPoints() << " points: not sampled.");
-      }
-    }
     CollectOtherArrays(pd, input->GetNumberOfPoints(), { normals, vectors, colors }, surface);
   }
   return true;
@@ -690,10 +692,7 @@ vtkDataArray* vtkOFBSampler::SelectColors(vtkPolyData* input, vtkOFBSurface& sur
   }
   if (colors && colors->GetNumberOfTuples() != input->GetNumberOfPoints())
   {
-    vtkWarningMacro("The colour array '"
-      << NameOf(colors) << "' has " << colors->GetNumberOfTuples() << " tuples for "
-      << input->GetNumberOfPoints() << " points: not used, the samples take DefaultColor.");
-    colors = nullptr;
+    colors = nullptr; // named by PrepareSurface's warning; the samples take DefaultColor
   }
   if (colors)
   {

@@ -179,7 +179,7 @@ int vtkOFBPaintFilter::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
+vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, double cellSize)
 {
   vtkOFBDabArrays arrays{ strokes, std::string() };
   StrokeValues v{ strokes,
@@ -215,11 +215,35 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
     }
   }
 
+  // The dabs the strokes will place, at most (each segment at its smaller radius).
+  const bool byPressure = this->Brush->GetPressureAffectsRadius();
+  auto radiusAt = [&](vtkIdType i) { return v.RadiusAt(i) * (byPressure ? v.PressureAt(i) : 1.0); };
+  double expected = 0.0;
+  const vtkIdType* ids = nullptr;
+  vtkIdType n = 0;
+  vtkCellArray* lines = strokes->GetLines();
+  for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
+  {
+    for (vtkIdType k = 1; k < n; ++k)
+    {
+      double a[3], b[3];
+      strokes->GetPoint(ids[k - 1], a);
+      strokes->GetPoint(ids[k], b);
+      expected += std::sqrt(vtkMath::Distance2BetweenPoints(a, b)) /
+        vtkOFBDabStep(this->Spacing, std::min(radiusAt(ids[k - 1]), radiusAt(ids[k])), cellSize);
+    }
+  }
+  if (expected > vtkOFBMaximumStrokeDabs)
+  {
+    vtkErrorMacro("The strokes would place about " << expected << " dabs, more than "
+                                                   << vtkOFBMaximumStrokeDabs
+                                                   << " (radii too small for their length).");
+    return nullptr;
+  }
+
   DabArrays out;
   const double none[3] = { std::nan(""), std::nan(""), std::nan("") };
   // Single dabs: vertex cells.
-  const vtkIdType* ids = nullptr;
-  vtkIdType n = 0;
   vtkCellArray* verts = strokes->GetVerts();
   for (verts->InitTraversal(); verts->GetNextCell(n, ids);)
   {
@@ -229,8 +253,6 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
     }
   }
   // Strokes: dabs every Spacing * radius of path length, the radius at the last dab.
-  const bool byPressure = this->Brush->GetPressureAffectsRadius();
-  vtkCellArray* lines = strokes->GetLines();
   for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
   {
     if (n == 0)
@@ -248,7 +270,7 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
       strokes->GetPoint(ids[k - 1], a);
       strokes->GetPoint(ids[k], b);
       const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-      double s = std::max(this->Spacing * lastRadius, 1e-12) - since;
+      double s = vtkOFBDabStep(this->Spacing, lastRadius, cellSize) - since;
       double lastS = -since;
       while (s <= length && length > 0.0)
       {
@@ -258,7 +280,7 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes)
         lastRadius = out.Radius->GetValue(out.Radius->GetNumberOfTuples() - 1) *
           (byPressure ? out.Pressure->GetValue(out.Pressure->GetNumberOfTuples() - 1) : 1.0);
         lastS = s;
-        s += std::max(this->Spacing * lastRadius, 1e-12);
+        s += vtkOFBDabStep(this->Spacing, lastRadius, cellSize);
       }
       since = length - lastS;
     }
@@ -308,7 +330,7 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
   vtkSmartPointer<vtkPolyData> dabs;
   if (strokes && strokes->GetNumberOfPoints() > 0)
   {
-    dabs = this->MakeDabs(strokes);
+    dabs = this->MakeDabs(strokes, input->GetCellSize());
     if (!dabs)
     {
       return 1; // the error is reported

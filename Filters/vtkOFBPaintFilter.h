@@ -61,6 +61,9 @@ public:
   /**
    * Distance between the dabs of a stroke as a fraction of the radius
    * (0.01-10; default 0.25).
+   * Dabs are at least an eighth of an OFB cell apart (a radius of 0, from a pressure
+   * of 0, would place them without end), and a call that would place more than 2^24
+   * dabs along its strokes is an error that paints nothing.
    */
   vtkSetClampMacro(Spacing, double, 0.01, 10.0);
   vtkGetMacro(Spacing, double);
@@ -92,8 +95,9 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /// The dabs of `strokes` (per-dab point arrays), or null with an error.
-  vtkSmartPointer<vtkPolyData> MakeDabs(vtkPolyData* strokes);
+  /// The dabs of `strokes` (per-dab point arrays) on an OFB of cells `cellSize` wide, or
+  /// null with an error.
+  vtkSmartPointer<vtkPolyData> MakeDabs(vtkPolyData* strokes, double cellSize);
 
   vtkSmartPointer<vtkOFBBrush> Brush;
   double Spacing;

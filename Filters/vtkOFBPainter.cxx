@@ -558,11 +558,22 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
     const glm::dvec3 b(p[0], p[1], p[2]);
     const double length = glm::length(b - a);
     vtkOFBBrush* brush = impl.Brush;
+    const double cellSize = impl.OFB ? impl.OFB->GetCellSize() : 0.0;
     auto stepAt = [&](double pr)
     {
       const double r = brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pr : 1.0);
-      return std::max(this->Spacing * r, 1e-12 * (1.0 + glm::length(b)));
+      return std::max(vtkOFBDabStep(this->Spacing, r, cellSize), 1e-12 * (1.0 + glm::length(b)));
     };
+    if (length / stepAt(std::min(pressure, impl.LastPressure)) > vtkOFBMaximumStrokeDabs)
+    {
+      vtkErrorMacro("StrokeTo: this segment ("
+        << length << " long) would place more than " << vtkOFBMaximumStrokeDabs << " dabs (radius "
+        << brush->GetRadius() << ", Spacing " << this->Spacing << "): nothing painted.");
+      std::copy(p, p + 3, impl.LastPoint);
+      impl.LastPressure = pressure;
+      impl.SinceLastDab = 0.0;
+      return 0;
+    }
     double lastPressure = impl.LastPressure;
     double s = stepAt(lastPressure) - impl.SinceLastDab;
     double lastS = -impl.SinceLastDab;

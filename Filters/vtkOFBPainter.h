@@ -149,6 +149,9 @@ public:
   /**
    * Distance between consecutive dabs of a stroke as a fraction of the radius
    * (0.01-10; default 0.25).
+   * Dabs are at least an eighth of an OFB cell apart (a radius of 0, from a pressure
+   * of 0, would place them without end), and a call that would place more than 2^24
+   * dabs along its strokes is an error that paints nothing.
    */
   vtkSetClampMacro(Spacing, double, 0.01, 10.0);
   vtkGetMacro(Spacing, double);

@@ -253,3 +253,58 @@ TEST(PaintFilter, MisshapenPointArraysAreBadInput)
   EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
   EXPECT_GT(filter->GetNumberOfChangedSamples(), 0);
 }
+
+//------------------------------------------------------------------------------
+TEST(PaintFilter, TinyRadiiAndEndlessStrokesStayBounded)
+{
+  // Dabs are at least an eighth of a cell apart: a radius of 1e-12, or of 0 from a
+  // pressure of 0, placed billions along a stroke (the call never came back). A stroke
+  // that would still place more than 2^24 dabs is an error.
+  vtkSmartPointer<vtkOFB> input = Build(MakeSphere(1.0, 32), 48);
+  const double eighth = 0.125 * input->GetCellSize();
+  vtkSmartPointer<vtkPolyData> strokes = Stroke(2); // (-0.6, 0, 0.8) to (0.6, 0, 0.8)
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName("Radius");
+  radius->InsertNextValue(1e-12);
+  radius->InsertNextValue(1e-12);
+  strokes->GetPointData()->AddArray(radius);
+  vtkNew<vtkOFBPaintFilter> filter;
+  vtkNew<MessageObserver> messages;
+  messages->Watch(filter);
+  filter->SetInputData(input);
+  filter->SetStrokesData(strokes);
+  filter->Update();
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfSamples(), input->GetNumberOfSamples());
+
+  vtkNew<vtkOFB> ofb;
+  ofb->DeepCopy(input);
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(ofb);
+  painter->GetBrush()->SetRadius(0.1);
+  painter->GetBrush()->PressureAffectsRadiusOn();
+  painter->BeginStroke();
+  painter->StrokeTo(-0.6, 0.0, 0.8, 0.0);
+  painter->StrokeTo(0.6, 0.0, 0.8, 0.0);
+  const double dabs = static_cast<double>(painter->GetStrokeDabs()->GetNumberOfPoints());
+  EXPECT_NEAR(dabs, 1.2 / eighth + 1.0, 1.5);
+  painter->EndStroke();
+
+  vtkNew<vtkPoints> far;
+  far->InsertNextPoint(0.0, 0.0, 1.0);
+  far->InsertNextPoint(1e9, 0.0, 1.0);
+  strokes->SetPoints(far);
+  strokes->GetPointData()->RemoveArray("Radius");
+  messages->Clear();
+  filter->Modified();
+  filter->Update();
+  EXPECT_NE(messages->Errors.find("dabs"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfSamples(), 0);
+  vtkNew<MessageObserver> painterMessages;
+  painterMessages->Watch(painter);
+  painter->BeginStroke();
+  EXPECT_EQ(painter->StrokeTo(0.0, 0.0, 1.0), 0);
+  EXPECT_EQ(painter->StrokeTo(1e9, 0.0, 1.0), 0);
+  painter->EndStroke();
+  EXPECT_NE(painterMessages->Errors.find("dabs"), std::string::npos) << painterMessages->Errors;
+}

@@ -187,16 +187,18 @@ public:
   ///@}
 
   /**
-   * Global index of the first cell of grid `axis` (0..3; 3 gives the total).
+   * Global index of the first cell of grid `axis` (0..3; 3 gives the total; 0 for an
+   * axis out of that range).
    */
   vtkIdType GetGridCellBase(int axis) const
   {
-    return this->CellBase[axis];
+    return axis >= 0 && axis <= 3 ? this->CellBase[axis] : 0;
   }
 
   ///@{
   /**
-   * Sample counts: over the three grids, per grid, and the first sample of a grid.
+   * Sample counts: over the three grids, per grid, and the first sample of a grid
+   * (0 for an axis out of 0..2, 0..3 for the first sample).
    */
   vtkIdType GetNumberOfSamples() const;
   vtkIdType GetNumberOfSamples(int axis) const;

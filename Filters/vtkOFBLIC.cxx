@@ -438,7 +438,8 @@ void vtkOFBLIC::WriteOutput(vtkOFB* input,
       bool changed = false;
       for (vtkIdType i = begin; i < end; ++i)
       {
-        changed |= maskOut[i] != mask[i];
+        // A new mask array holds no values yet: nothing to compare (it is new anyway).
+        changed |= !newMask && maskOut[i] != mask[i];
         maskOut[i] = mask[i];
         licOut[i] = mask[i] ? maskValue : std::min(1.0f, std::max(0.0f, values[i]));
       }

@@ -399,6 +399,28 @@ TEST(Queries, PointCloudOfAnEmptyOFBIsEmpty)
 }
 
 //------------------------------------------------------------------------------
+TEST(Queries, AxisAndSampleIndicesOutOfRangeAnswerNothing)
+{
+  // The per-grid accessors with an axis outside 0..3 (GetGridCellBase read past its
+  // array), and positions of samples that do not exist.
+  vtkSmartPointer<vtkOFB> ofb = Build(MakeSphere(1.0, 16), 32);
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  ASSERT_GT(n, 0);
+  EXPECT_EQ(ofb->GetGridCellBase(3), ofb->GetNumberOfCells());
+  for (int axis : { -1, 4, 9, 1000 })
+  {
+    EXPECT_EQ(ofb->GetGridCellBase(axis), 0) << axis;
+    EXPECT_EQ(ofb->GetGridFirstSample(axis), 0) << axis;
+    EXPECT_EQ(ofb->GetNumberOfSamples(axis), 0) << axis;
+  }
+  double x[3] = { 7.0, 7.0, 7.0 };
+  for (vtkIdType i : { vtkIdType(-1), n, n + 5 })
+  {
+    EXPECT_FALSE(ofb->GetSamplePosition(i, x)) << i;
+  }
+}
+
+//------------------------------------------------------------------------------
 TEST(Queries, PointCloudLeavesOutSampleArraysOfAnotherLength)
 {
   // A sample array of 3 tuples would be a point array shorter than the cloud's points.

@@ -235,7 +235,23 @@ void vtkOFBPainterRepresentation::ScaleRadius(int steps)
 {
   if (vtkOFBBrush* brush = this->GetBrush())
   {
-    brush->SetRadius(brush->GetRadius() * std::pow(this->RadiusFactor, steps));
+    // Kept between a quarter of a cell (a smaller dab paints one sample at most) and the
+    // OFB's diagonal (a larger one paints them all): pressed on, the keys reached 0 or
+    // infinity, which no key brought back.
+    double r = brush->GetRadius() * std::pow(this->RadiusFactor, steps);
+    vtkOFB* ofb = this->Painter->GetOFB();
+    if (ofb && ofb->GetCellSize() > 0.0)
+    {
+      const vtkIdType* d = ofb->GetDimensions();
+      const double cell = ofb->GetCellSize();
+      const double diagonal =
+        cell * std::sqrt(static_cast<double>(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+      r = std::min(std::max(r, 0.25 * cell), diagonal);
+    }
+    if (std::isfinite(r) && r > 0.0)
+    {
+      brush->SetRadius(r);
+    }
     this->BuildRepresentation();
     return;
   }

@@ -143,8 +143,9 @@ public:
   ///@{
   /**
    * Steps of the key actions: ScaleRadius(+1) multiplies the brush radius by
-   * RadiusFactor (default 1.25), ScaleRadius(-1) divides by it; AddStrength(+1) adds
-   * StrengthStep (default 0.1) to the strength, clamped to [0, 1].
+   * RadiusFactor (default 1.25), ScaleRadius(-1) divides by it, within a quarter of an
+   * OFB cell and the OFB's diagonal; AddStrength(+1) adds StrengthStep (default 0.1) to
+   * the strength, clamped to [0, 1].
    */
   vtkSetClampMacro(RadiusFactor, double, 1.001, 10.0);
   vtkGetMacro(RadiusFactor, double);

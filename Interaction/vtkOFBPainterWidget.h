@@ -17,7 +17,7 @@
  * Keys (with KeyboardShortcuts on, the default; these keys are taken from the interactor
  * style while the widget is enabled):
  * - `+` or `=`: brush radius times the representation's RadiusFactor (1.25);
- *   `-` or `_`: divided by it.
+ *   `-` or `_`: divided by it (between a quarter of a cell and the OFB's diagonal).
  * - `]`: strength up by the representation's StrengthStep (0.1); `[`: down.
  * - `f`: next falloff (constant, linear, smooth, sphere, root, sharp, Gaussian).
  * - `t`: next target (colour, normal, smear).

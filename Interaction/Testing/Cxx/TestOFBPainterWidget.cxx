@@ -303,6 +303,22 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   scene.Key('-', "minus");
   scene.Key('-', "minus");
   EXPECT_NEAR(brush->GetRadius(), r0 / 1.25, 1e-12 * r0);
+  // Pressed on, the radius stops at a quarter of a cell and at the OFB's diagonal (it
+  // reached 0 and infinity before, where no key brought it back).
+  vtkOFB* ofb = rep->GetPainter()->GetOFB();
+  for (int i = 0; i < 4000; ++i)
+  {
+    rep->ScaleRadius(-1);
+  }
+  EXPECT_DOUBLE_EQ(brush->GetRadius(), 0.25 * ofb->GetCellSize());
+  for (int i = 0; i < 4000; ++i)
+  {
+    rep->ScaleRadius(1);
+  }
+  const double largest = brush->GetRadius();
+  EXPECT_TRUE(std::isfinite(largest) && largest > ofb->GetCellSize() * ofb->GetDimensions()[0])
+    << largest;
+  brush->SetRadius(r0);
 
   brush->SetStrength(0.5);
   scene.Key(']', "bracketright");

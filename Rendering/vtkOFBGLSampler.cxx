@@ -106,7 +106,8 @@ public:
     glGenBuffers(1, &b);
     this->Buffers.push_back(b);
     glBindBuffer(target, b);
-    while (glGetError() != GL_NO_ERROR)
+    // Clear earlier errors, at most 16 (a lost context may report one on every call).
+    for (int k = 0; k < 16 && glGetError() != GL_NO_ERROR; ++k)
     {
     }
     glBufferData(

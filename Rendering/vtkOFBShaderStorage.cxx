@@ -450,7 +450,8 @@ bool vtkOFBShaderStorage::Allocate(int id, size_t bytes)
     glGenBuffers(1, &this->Handles[id]);
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handles[id]);
-  while (glGetError() != GL_NO_ERROR)
+  // Clear earlier errors, at most 16 (a lost context may report one on every call).
+  for (int k = 0; k < 16 && glGetError() != GL_NO_ERROR; ++k)
   {
   }
   glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_DRAW);

@@ -14,6 +14,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkStaticCellLocator.h"
 
@@ -432,7 +433,10 @@ bool vtkOFBPainterRepresentation::CanPaint()
 //------------------------------------------------------------------------------
 bool vtkOFBPainterRepresentation::PickSurface(double x, double y)
 {
-  if (!this->Renderer)
+  // Before the window's first render the renderer has no aspect yet (VTK leaves it
+  // uninitialised, and a pick would read it): nothing is under the mouse then.
+  vtkRenderWindow* window = this->Renderer ? this->Renderer->GetRenderWindow() : nullptr;
+  if (!window || window->GetNeverRendered())
   {
     return false;
   }

@@ -160,7 +160,7 @@ public:
    * purple, white, black, all opaque.
    */
   void SetPaletteColor(int index, double r, double g, double b, double a = 1.0);
-  int GetNumberOfPaletteColors() const { return static_cast<int>(this->Palette.size()); }
+  int GetNumberOfPaletteColors() const { return static_cast<int>(this->Palette.size() / 4); }
   void SetNumberOfPaletteColors(int n);
   bool GetPaletteColor(int index, double rgba[4]) const;
   ///@}

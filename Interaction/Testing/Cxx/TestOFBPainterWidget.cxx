@@ -368,6 +368,23 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   }
   scene.Key('c', "c");
   EXPECT_EQ(rep->GetPaletteIndex(), 6);
+  // Nine colours: 'c' comes back to the first after the ninth, index 9 is not one, and
+  // setting colour 11 makes twelve (the count was of doubles, four a colour: 'c' walked
+  // past the palette's end and SetPaletteColor wrote past it).
+  EXPECT_EQ(rep->GetNumberOfPaletteColors(), 9);
+  EXPECT_FALSE(rep->GetPaletteColor(9, rgba));
+  for (int i = 0; i < 3; ++i)
+  {
+    scene.Key('c', "c");
+  }
+  EXPECT_EQ(rep->GetPaletteIndex(), 0);
+  rep->SetPaletteColor(11, 0.2, 0.4, 0.6);
+  EXPECT_EQ(rep->GetNumberOfPaletteColors(), 12);
+  ASSERT_TRUE(rep->GetPaletteColor(11, rgba));
+  EXPECT_DOUBLE_EQ(rgba[2], 0.6);
+  ASSERT_TRUE(rep->GetPaletteColor(10, rgba));
+  EXPECT_DOUBLE_EQ(rgba[0], 1.0); // new entries opaque white
+  rep->SetNumberOfPaletteColors(9);
 
   const int modifiedBefore = scene.Log.Modified;
   scene.Key('r', "r"); // not a painting key: left to the interactor style

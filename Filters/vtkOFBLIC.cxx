@@ -481,6 +481,22 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     output->Initialize();
     return 1;
   }
+  const int mode = this->EnhanceContrast;
+  const double factors[4] = { this->LowLICContrastEnhancementFactor,
+    this->HighLICContrastEnhancementFactor,
+    this->LowColorContrastEnhancementFactor,
+    this->HighColorContrastEnhancementFactor };
+  if ((mode != ENHANCE_CONTRAST_OFF && mode != ENHANCE_CONTRAST_LIC &&
+        mode != ENHANCE_CONTRAST_COLOR && mode != ENHANCE_CONTRAST_BOTH) ||
+    !std::all_of(factors, factors + 4, [](double f) { return f >= 0.0 && f <= 1.0; }))
+  {
+    vtkErrorMacro("EnhanceContrast must be OFF (0), LIC (1), COLOR (3) or BOTH (4), and the "
+                  "contrast enhancement factors in [0, 1] (they are "
+      << mode << "; " << factors[0] << ", " << factors[1] << ", " << factors[2] << ", "
+      << factors[3] << ").");
+    output->Initialize();
+    return 1;
+  }
   const vtkIdType n = input->GetNumberOfSamples();
   if (n == 0)
   {

@@ -279,7 +279,8 @@ public:
    * LIC is stretched, L = (L - m) / (M - m), where m = min + Low * (max - min) and
    * M = max - High * (max - min) over the samples not masked, with Low and High the
    * LIC factors (default 0); with _COLOR or _BOTH the display stretches the lightness of
-   * the final colour with the colour factors (stored here for the mapper).
+   * the final colour with the colour factors (stored here for the mapper). Another mode,
+   * or a factor outside [0, 1] (NaN included), is an error at update time.
    */
   vtkSetMacro(EnhanceContrast, int);
   vtkGetMacro(EnhanceContrast, int);

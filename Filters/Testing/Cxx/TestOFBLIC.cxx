@@ -727,6 +727,20 @@ TEST(LIC, BadInput)
   EXPECT_EQ(lic->GetNumberOfMaskedSamples(), ofb->GetNumberOfSamples());
   EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), ofb->GetNumberOfSamples());
 
+  // Contrast enhancement: a mode that is not VTK's, a factor outside [0, 1] or NaN.
+  for (int k = 0; k < 3; ++k)
+  {
+    messages->Clear();
+    lic->SetEnhanceContrast(k == 0 ? 2 : vtkOFBLIC::ENHANCE_CONTRAST_LIC);
+    lic->SetLowLICContrastEnhancementFactor(k == 1 ? std::nan("") : 0.0);
+    lic->SetHighLICContrastEnhancementFactor(k == 2 ? 1.5 : 0.0);
+    lic->Update();
+    EXPECT_NE(messages->Errors.find("EnhanceContrast"), std::string::npos) << k;
+    EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0) << k;
+  }
+  lic->SetEnhanceContrast(vtkOFBLIC::ENHANCE_CONTRAST_OFF);
+  lic->SetHighLICContrastEnhancementFactor(0.0);
+
   // Zero and negative step sizes.
   for (double step : { 0.0, -1.0, std::numeric_limits<double>::infinity() })
   {

@@ -59,6 +59,18 @@ bool vtkOFBParticleAdvector::CheckSettings()
     vtkErrorMacro("StepSize must be positive and finite (cells), not " << this->StepSize << ".");
     return false;
   }
+  // NaN passes the setters' clamps: a NaN radius painted nothing without a word.
+  const double values[4] = {
+    this->FootprintRadius, this->Color[0], this->Color[1], this->Color[2]
+  };
+  if (!std::all_of(values, values + 4, [](double v) { return std::isfinite(v); }) ||
+    !std::isfinite(this->Opacity) || !std::isfinite(this->SmearAmount))
+  {
+    vtkErrorMacro("FootprintRadius, Color, Opacity and SmearAmount must be finite (they are "
+      << this->FootprintRadius << "; " << this->Color[0] << ", " << this->Color[1] << ", "
+      << this->Color[2] << "; " << this->Opacity << "; " << this->SmearAmount << ").");
+    return false;
+  }
   return true;
 }
 

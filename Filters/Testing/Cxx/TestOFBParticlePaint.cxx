@@ -361,6 +361,17 @@ TEST(ParticlePaint, BadInput)
     advector->SetInputData(empty);
     expectEmpty(advector, "no polygons");
   }
+  // A NaN footprint radius, opacity or colour (NaN passes the setters' clamps).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkOFBParticleAdvector> advector;
+    advector->SetInputData(rotating);
+    advector->SetFootprintRadius(k == 0 ? nan : 2.5);
+    advector->SetOpacity(k == 1 ? nan : 1.0);
+    advector->SetColor(k == 2 ? nan : 1.0, 0.0, 0.0);
+    expectEmpty(advector, "must be finite");
+  }
   // Particles, chains or trails beyond MemoryLimit: an error before anything is
   // allocated (not an exhausted memory), and the advector recovers when they fit.
   {

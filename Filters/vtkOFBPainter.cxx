@@ -327,11 +327,21 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   }
   for (const vtkOFBDab& d : dabs)
   {
-    if (!(d.Radius > 0.0) || !std::isfinite(d.Radius))
+    if (!(d.Radius > 0.0) || !std::isfinite(d.Radius) || !std::isfinite(d.Strength))
     {
-      vtkErrorMacro("Dab radius " << d.Radius << " is not positive and finite: nothing painted.");
+      vtkErrorMacro("Dab radius " << d.Radius << " is not positive and finite, or its strength "
+                                  << d.Strength << " is not finite: nothing painted.");
       return 0;
     }
+  }
+  // NaN passes the brush's clamps (and would become a colour byte undefined by C++).
+  const double more[3] = {
+    brush->GetSmearAmount(), brush->GetBumpDepth(), brush->GetMaxNormalAngle()
+  };
+  if (!std::all_of(more, more + 3, [](double v) { return std::isfinite(v); }))
+  {
+    vtkErrorMacro("The brush's SmearAmount, BumpDepth or MaxNormalAngle is not finite.");
+    return 0;
   }
   const int target = brush->GetTarget();
   if (!this->Prepare(target != vtkOFBBrush::NormalTarget, target == vtkOFBBrush::NormalTarget))

@@ -308,3 +308,31 @@ TEST(PaintFilter, TinyRadiiAndEndlessStrokesStayBounded)
   painter->EndStroke();
   EXPECT_NE(painterMessages->Errors.find("dabs"), std::string::npos) << painterMessages->Errors;
 }
+
+//------------------------------------------------------------------------------
+TEST(PaintFilter, NaNBrushSettingsAreErrors)
+{
+  // NaN passes the brush's clamps: a NaN strength blended into undefined colour bytes.
+  vtkSmartPointer<vtkOFB> input = Build(MakeSphere(1.0, 32), 48);
+  const double nan = std::nan("");
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkNew<vtkOFB> ofb;
+    ofb->DeepCopy(input);
+    const std::vector<unsigned char> before(
+      Colors(ofb)->GetPointer(0), Colors(ofb)->GetPointer(0) + 4 * ofb->GetNumberOfSamples());
+    vtkNew<vtkOFBPainter> painter;
+    painter->SetOFB(ofb);
+    vtkOFBBrush* brush = painter->GetBrush();
+    brush->SetRadius(0.3);
+    brush->SetStrength(k == 0 ? nan : 1.0);
+    brush->SetSmearAmount(k == 1 ? nan : 1.0);
+    brush->SetBumpDepth(k == 2 ? nan : 0.5);
+    brush->SetMaxNormalAngle(k == 3 ? nan : 90.0);
+    vtkNew<MessageObserver> messages;
+    messages->Watch(painter);
+    EXPECT_EQ(painter->Dab(0.0, 0.0, 1.0), 0) << k;
+    EXPECT_NE(messages->Errors.find("not finite"), std::string::npos) << k << messages->Errors;
+    EXPECT_EQ(0, std::memcmp(before.data(), Colors(ofb)->GetPointer(0), before.size())) << k;
+  }
+}

@@ -165,7 +165,10 @@ void vtkOFBParticleSystem::ColorParticle(const Coloring& coloring,
       const int n = static_cast<int>(coloring.Table.size() / 3);
       const double width = coloring.Range[1] - coloring.Range[0];
       const double t = width > 0.0 ? (v - coloring.Range[0]) / width : 0.0;
-      const int k = std::min(n - 1, std::max(0, static_cast<int>(t * n)));
+      // Clamped before it becomes an integer: a NaN or a value far out of the range
+      // overflows the conversion (undefined; on x86 the first colour, not the last).
+      const double tc = std::isfinite(t) ? std::min(std::max(t, 0.0), 1.0) : 0.0;
+      const int k = std::min(n - 1, static_cast<int>(tc * n));
       std::copy_n(&coloring.Table[3 * k], 3, p.Color);
       break;
     }

@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
+#include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBPainter.h"
@@ -267,6 +268,20 @@ TEST(ParticlePaint, ColorFromSeedsAndByScalar)
     vtkUnsignedCharArray::SafeDownCast(advector->GetParticles()->GetPointData()->GetArray("Color"));
   EXPECT_GT(color->GetTypedComponent(1, 0), 200); // at the pole: red
   EXPECT_LT(color->GetTypedComponent(1, 2), 50);
+  // Far above the table's range: its last colour (red), not its first (the conversion of
+  // the position in the table to an integer overflowed).
+  vtkNew<vtkLookupTable> table;
+  table->SetHueRange(0.667, 0.0);
+  table->SetRange(0.0, 1.0);
+  table->Build();
+  advector->SetLookupTable(table);
+  height->Fill(1e300);
+  height->Modified();
+  advector->Step();
+  color =
+    vtkUnsignedCharArray::SafeDownCast(advector->GetParticles()->GetPointData()->GetArray("Color"));
+  EXPECT_GT(color->GetTypedComponent(0, 0), 200);
+  EXPECT_LT(color->GetTypedComponent(0, 2), 50);
 }
 
 // Smear: the footprints carry the previous positions.

@@ -356,7 +356,10 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
       if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
       {
         const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-        target = std::isfinite(t) && t > 0.0 ? static_cast<vtkIdType>(std::floor(t + 1e-9)) : 0;
+        // Clamped before the conversion, which overflows (undefined) beyond 2^63.
+        target = std::isfinite(t) && t > 0.0
+          ? static_cast<vtkIdType>(std::min(std::floor(t + 1e-9), 9.0e18))
+          : 0;
         break;
       }
     }

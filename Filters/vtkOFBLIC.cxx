@@ -105,6 +105,32 @@ int vtkOFBLIC::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+bool vtkOFBLIC::CheckSettings()
+{
+  if (!(this->StepSize > 0.0) || !std::isfinite(this->StepSize))
+  {
+    vtkErrorMacro("StepSize must be positive and finite (it is " << this->StepSize << ").");
+    return false;
+  }
+  const int mode = this->EnhanceContrast;
+  const double factors[4] = { this->LowLICContrastEnhancementFactor,
+    this->HighLICContrastEnhancementFactor,
+    this->LowColorContrastEnhancementFactor,
+    this->HighColorContrastEnhancementFactor };
+  if ((mode != ENHANCE_CONTRAST_OFF && mode != ENHANCE_CONTRAST_LIC &&
+        mode != ENHANCE_CONTRAST_COLOR && mode != ENHANCE_CONTRAST_BOTH) ||
+    !std::all_of(factors, factors + 4, [](double f) { return f >= 0.0 && f <= 1.0; }))
+  {
+    vtkErrorMacro("EnhanceContrast must be OFF (0), LIC (1), COLOR (3) or BOTH (4), and the "
+                  "contrast enhancement factors in [0, 1] (they are "
+      << mode << "; " << factors[0] << ", " << factors[1] << ", " << factors[2] << ", "
+      << factors[3] << ").");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 vtkDataArray* vtkOFBLIC::FindField(vtkOFB* input)
 {
   vtkPointData* sd = input->GetSampleData();
@@ -475,25 +501,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     return 0;
   }
   // Every error leaves an empty output.
-  if (!(this->StepSize > 0.0) || !std::isfinite(this->StepSize))
+  if (!this->CheckSettings())
   {
-    vtkErrorMacro("StepSize must be positive and finite (it is " << this->StepSize << ").");
-    output->Initialize();
-    return 1;
-  }
-  const int mode = this->EnhanceContrast;
-  const double factors[4] = { this->LowLICContrastEnhancementFactor,
-    this->HighLICContrastEnhancementFactor,
-    this->LowColorContrastEnhancementFactor,
-    this->HighColorContrastEnhancementFactor };
-  if ((mode != ENHANCE_CONTRAST_OFF && mode != ENHANCE_CONTRAST_LIC &&
-        mode != ENHANCE_CONTRAST_COLOR && mode != ENHANCE_CONTRAST_BOTH) ||
-    !std::all_of(factors, factors + 4, [](double f) { return f >= 0.0 && f <= 1.0; }))
-  {
-    vtkErrorMacro("EnhanceContrast must be OFF (0), LIC (1), COLOR (3) or BOTH (4), and the "
-                  "contrast enhancement factors in [0, 1] (they are "
-      << mode << "; " << factors[0] << ", " << factors[1] << ", " << factors[2] << ", "
-      << factors[3] << ").");
     output->Initialize();
     return 1;
   }

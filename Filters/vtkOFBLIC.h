@@ -368,6 +368,9 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  /// False, with an error, when StepSize or the contrast enhancement settings are bad.
+  bool CheckSettings();
+
   /// The field array chosen with SetInputArrayToProcess (error and null if bad).
   vtkDataArray* FindField(vtkOFB* input);
 

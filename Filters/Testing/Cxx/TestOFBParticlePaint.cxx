@@ -307,20 +307,29 @@ TEST(ParticlePaint, SmearCarriesPreviousPositions)
   }
 }
 
+namespace
+{
+// Updates `advector` and expects the error `what` and empty outputs.
+void ExpectEmptyWithError(MessageObserver* messages,
+  vtkOFBParticleAdvector* advector,
+  const char* what)
+{
+  messages->Clear();
+  messages->Watch(advector);
+  advector->Update();
+  EXPECT_NE(messages->Errors.find(what), std::string::npos) << messages->Errors;
+  EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(advector->GetTrails()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(advector->GetOutput()->GetNumberOfSamples(), 0);
+}
+}
+
 // Bad input: a clear error and empty outputs, never a crash.
 TEST(ParticlePaint, BadInput)
 {
   vtkNew<MessageObserver> messages;
   auto expectEmpty = [&](vtkOFBParticleAdvector* advector, const char* what)
-  {
-    messages->Clear();
-    messages->Watch(advector);
-    advector->Update();
-    EXPECT_NE(messages->Errors.find(what), std::string::npos) << messages->Errors;
-    EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 0);
-    EXPECT_EQ(advector->GetTrails()->GetNumberOfPoints(), 0);
-    EXPECT_EQ(advector->GetOutput()->GetNumberOfSamples(), 0);
-  };
+  { ExpectEmptyWithError(messages, advector, what); };
   vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 32);
   {
     vtkNew<vtkOFBParticleAdvector> advector; // no vectors
@@ -375,42 +384,6 @@ TEST(ParticlePaint, BadInput)
     vtkNew<vtkOFBParticleAdvector> advector;
     advector->SetInputData(empty);
     expectEmpty(advector, "no polygons");
-  }
-  // A NaN footprint radius, opacity or colour (NaN passes the setters' clamps).
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (int k = 0; k < 3; ++k)
-  {
-    vtkNew<vtkOFBParticleAdvector> advector;
-    advector->SetInputData(rotating);
-    advector->SetFootprintRadius(k == 0 ? nan : 2.5);
-    advector->SetOpacity(k == 1 ? nan : 1.0);
-    advector->SetColor(k == 2 ? nan : 1.0, 0.0, 0.0);
-    expectEmpty(advector, "must be finite");
-  }
-  // Particles, chains or trails beyond MemoryLimit: an error before anything is
-  // allocated (not an exhausted memory), and the advector recovers when they fit.
-  {
-    vtkNew<vtkOFBParticleAdvector> advector;
-    advector->SetInputData(rotating);
-    advector->SetNumberOfParticles(VTK_ID_MAX / 2);
-    expectEmpty(advector, "MemoryLimit");
-    advector->SetNumberOfParticles(10000);
-    advector->SetTrailLength(1000000);
-    expectEmpty(advector, "MemoryLimit");
-    advector->SetTrailLength(16);
-    advector->SetNumberOfParticles(20);
-    advector->SetChainLength(1000000);
-    expectEmpty(advector, "MemoryLimit");
-    advector->SetChainLength(1);
-    advector->SetNumberOfParticles(100000);
-    advector->SetMemoryLimit(1);
-    expectEmpty(advector, "MemoryLimit");
-    advector->SetMemoryLimit(4096);
-    advector->SetNumberOfParticles(100);
-    messages->Clear();
-    advector->Update();
-    EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
-    EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 100);
   }
   // NaN seeds and seeds far from the surface are rejected with a warning; seeds
   // near it are moved onto it.
@@ -487,6 +460,51 @@ TEST(ParticlePaint, BadInput)
     EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
     EXPECT_NE(messages->Warnings.find("given on cells"), std::string::npos);
     EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 5);
+  }
+}
+
+// Bad settings: NaN where the setters' clamps let it through, particles beyond MemoryLimit.
+TEST(ParticlePaint, NaNSettingsAndMemoryLimit)
+{
+  vtkNew<MessageObserver> messages;
+  auto expectEmpty = [&](vtkOFBParticleAdvector* advector, const char* what)
+  { ExpectEmptyWithError(messages, advector, what); };
+  vtkSmartPointer<vtkPolyData> rotating = RotatingSphere(32);
+  // A NaN footprint radius, opacity or colour (NaN passes the setters' clamps).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkOFBParticleAdvector> advector;
+    advector->SetInputData(rotating);
+    advector->SetFootprintRadius(k == 0 ? nan : 2.5);
+    advector->SetOpacity(k == 1 ? nan : 1.0);
+    advector->SetColor(k == 2 ? nan : 1.0, 0.0, 0.0);
+    expectEmpty(advector, "must be finite");
+  }
+  // Particles, chains or trails beyond MemoryLimit: an error before anything is
+  // allocated (not an exhausted memory), and the advector recovers when they fit.
+  {
+    vtkNew<vtkOFBParticleAdvector> advector;
+    advector->SetInputData(rotating);
+    advector->SetNumberOfParticles(VTK_ID_MAX / 2);
+    expectEmpty(advector, "MemoryLimit");
+    advector->SetNumberOfParticles(10000);
+    advector->SetTrailLength(1000000);
+    expectEmpty(advector, "MemoryLimit");
+    advector->SetTrailLength(16);
+    advector->SetNumberOfParticles(20);
+    advector->SetChainLength(1000000);
+    expectEmpty(advector, "MemoryLimit");
+    advector->SetChainLength(1);
+    advector->SetNumberOfParticles(100000);
+    advector->SetMemoryLimit(1);
+    expectEmpty(advector, "MemoryLimit");
+    advector->SetMemoryLimit(4096);
+    advector->SetNumberOfParticles(100);
+    messages->Clear();
+    advector->Update();
+    EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+    EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 100);
   }
 }
 

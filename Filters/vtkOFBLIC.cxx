@@ -6,6 +6,7 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBArrayLength.h"
 #include "vtkOFBLICCache.h"
 #include "vtkOFBLICEnhance.h"
 #include "vtkOFBLICNoise.h"
@@ -162,9 +163,8 @@ vtkDataArray* vtkOFBLIC::FindField(vtkOFB* input)
   }
   if (vectors->GetNumberOfTuples() != input->GetNumberOfSamples())
   {
-    vtkErrorMacro("The vector field '" << (vectors->GetName() ? vectors->GetName() : "") << "' has "
-                                       << vectors->GetNumberOfTuples() << " tuples for "
-                                       << input->GetNumberOfSamples() << " samples.");
+    vtkErrorMacro(
+      "The vector field " << vtkOFBArrayLength(vectors, input->GetNumberOfSamples(), "samples."));
     return nullptr;
   }
   return vectors;

@@ -572,7 +572,7 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
     auto stepAt = [&](double pr)
     {
       const double r = brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pr : 1.0);
-      return std::max(vtkOFBDabStep(this->Spacing, r, cellSize), 1e-12 * (1.0 + glm::length(b)));
+      return vtkOFBDabStep(this->Spacing, r, cellSize);
     };
     if (length / stepAt(std::min(pressure, impl.LastPressure)) > vtkOFBMaximumStrokeDabs)
     {

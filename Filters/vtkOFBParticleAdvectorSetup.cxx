@@ -9,6 +9,7 @@
 #include "vtkInformationVector.h"
 #include "vtkLookupTable.h"
 #include "vtkOFB.h"
+#include "vtkOFBArrayLength.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -111,10 +112,9 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
     : surface->GetNumberOfPoints();
   if (vectors->GetNumberOfTuples() < needed)
   {
-    vtkErrorMacro("The vector field '"
-      << (vectors->GetName() ? vectors->GetName() : "") << "' has " << vectors->GetNumberOfTuples()
-      << " tuples for " << needed
-      << (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? " cells." : " points."));
+    vtkErrorMacro("The vector field " << vtkOFBArrayLength(vectors,
+                    needed,
+                    association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? "cells." : "points."));
     return false;
   }
   if (surface == in.SurfaceObject && ContentTime(surface) == in.SurfaceTime &&
@@ -336,10 +336,9 @@ void vtkOFBParticleAdvector::LocateSeeds(vtkDataSet* seeds)
   {
     if (this->ColorMode == COLOR_FROM_SEEDS)
     {
-      vtkWarningMacro("The seed colour array '"
-        << (colors->GetName() ? colors->GetName() : "") << "' has " << colors->GetNumberOfTuples()
-        << " tuples for " << seeds->GetNumberOfPoints()
-        << " seeds: not used, the seeds take the constant colour.");
+      vtkWarningMacro("The seed colour array "
+        << vtkOFBArrayLength(colors, seeds->GetNumberOfPoints(), "seeds")
+        << ": not used, the seeds take the constant colour.");
     }
     colors = nullptr;
   }

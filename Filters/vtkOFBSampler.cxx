@@ -9,6 +9,7 @@
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkOFB.h"
+#include "vtkOFBArrayLength.h"
 #include "vtkOFBCPUSampler.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
@@ -51,12 +52,6 @@ bool IsColorArray(vtkDataArray* array)
 {
   return array && array->GetDataType() == VTK_UNSIGNED_CHAR &&
     (array->GetNumberOfComponents() == 3 || array->GetNumberOfComponents() == 4);
-}
-
-/// The name of `array` for messages.
-const char* NameOf(vtkDataArray* array)
-{
-  return array->GetName() ? array->GetName() : "(unnamed)";
 }
 
 /**
@@ -478,9 +473,8 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     vtkDataArray* array = pd->GetArray(i);
     if (array && array->GetNumberOfTuples() != input->GetNumberOfPoints())
     {
-      vtkWarningMacro("The point array '" << NameOf(array) << "' has " << array->GetNumberOfTuples()
-                                          << " tuples for " << input->GetNumberOfPoints()
-                                          << " points: left out.");
+      vtkWarningMacro("The point array "
+        << vtkOFBArrayLength(array, input->GetNumberOfPoints(), "points") << ": left out.");
     }
   }
   if (this->PassPointArrays)
@@ -656,9 +650,8 @@ bool vtkOFBSampler::SelectVectors(
   }
   if (vectors && vectors->GetNumberOfTuples() != input->GetNumberOfPoints())
   {
-    vtkErrorMacro("The vector field '" << NameOf(vectors) << "' has "
-                                       << vectors->GetNumberOfTuples() << " tuples for "
-                                       << input->GetNumberOfPoints() << " points.");
+    vtkErrorMacro(
+      "The vector field " << vtkOFBArrayLength(vectors, input->GetNumberOfPoints(), "points."));
     return false;
   }
   if (vectors)

@@ -6,6 +6,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkOFB.h"
+#include "vtkOFBArrayLength.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -95,9 +96,8 @@ int vtkOFBToPolyData::RequestData(
     vtkAbstractArray* array = pd->GetAbstractArray(k);
     if (array && array->GetNumberOfTuples() != n)
     {
-      vtkWarningMacro("The sample array '" << (array->GetName() ? array->GetName() : "") << "' has "
-                                           << array->GetNumberOfTuples() << " tuples for " << n
-                                           << " samples: left out.");
+      vtkWarningMacro(
+        "The sample array " << vtkOFBArrayLength(array, n, "samples") << ": left out.");
       pd->RemoveArray(k);
     }
   }

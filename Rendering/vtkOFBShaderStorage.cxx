@@ -93,19 +93,16 @@ bool vtkOFBShaderStorage::SetContext(vtkOpenGLRenderWindow* window, std::string&
   }
   if (window != this->Window)
   {
+    // The buffers are deleted in the old window's context; where that window is gone
+    // (this weak pointer is cleared before its destructor releases graphics resources),
+    // FreeBuffers only forgets their names, which mean nothing, or other objects, in the
+    // new context.
     if (this->Window)
     {
       this->Window->MakeCurrent();
-      this->FreeBuffers();
-      window->MakeCurrent();
     }
-    else
-    {
-      // The window that held the buffers is gone (this weak pointer is cleared before its
-      // destructor releases graphics resources), and its context with them: their names
-      // mean nothing, or other objects, in the new context. Forget them.
-      this->FreeBuffers();
-    }
+    this->FreeBuffers();
+    window->MakeCurrent();
     this->Window = window;
     this->ForgetUploads();
   }

@@ -1,5 +1,6 @@
-// Private header of vtkOFBPyramid: the distance-weighted transfer of sample arrays from
-// one OFB to another (vtkOFBPyramid::Resample and the filtering of the pyramid's levels).
+// Private header of vtkOFBPyramid and vtkOFBProbeFilter: the distance-weighted transfer
+// of sample arrays from an OFB to the samples of another (vtkOFBPyramid::Resample and the
+// filtering of the pyramid's levels) or to points (the probe).
 #ifndef vtkOFBPyramidResampler_h
 #define vtkOFBPyramidResampler_h
 
@@ -27,7 +28,8 @@ inline vtkDataArray* vtkOFBSampleNormals(vtkPointData* pd)
  * The distance-weighted transfer of vtkOFBPyramid::Resample: the arrays to
  * transfer and their target arrays (new ones, or the target's own for a transfer to
  * some target samples), and the filter of target samples (a functor for
- * vtkSMPTools::For over the target samples).
+ * vtkSMPTools::For over the target samples). The targets are the samples of an OFB
+ * or points (`points`, 3 doubles a point).
  */
 class vtkOFBPyramidResampler
 {
@@ -35,9 +37,23 @@ public:
   vtkOFBPyramidResampler(vtkOFB* source, vtkOFB* target, double radius)
     : Source(source)
     , Target(target)
+    , NumberOfTargets(target->GetNumberOfSamples())
     , Radius(radius)
   {
   }
+  vtkOFBPyramidResampler(vtkOFB* source, const double* points, vtkIdType n, double radius)
+    : Source(source)
+    , Points(points)
+    , NumberOfTargets(n)
+    , Radius(radius)
+  {
+  }
+
+  /// Take the closest source sample within the radius instead of the weighted mean.
+  bool Nearest = false;
+
+  /// The new target arrays.
+  const std::vector<vtkSmartPointer<vtkDataArray>>& GetTargetArrays() const { return this->To; }
 
   /**
    * The arrays of the source to transfer (named, one tuple per sample; only those in
@@ -47,7 +63,7 @@ public:
   void CollectArrays(const std::set<std::string>* names, bool fill = true)
   {
     vtkPointData* spd = this->Source->GetSampleData();
-    const vtkIdType nt = this->Target->GetNumberOfSamples();
+    const vtkIdType nt = this->NumberOfTargets;
     for (int a = 0; a < spd->GetNumberOfArrays(); ++a)
     {
       vtkDataArray* array = spd->GetArray(a);
@@ -91,7 +107,7 @@ public:
     {
       return;
     }
-    if (reference)
+    if (reference || !this->Target)
     {
       this->TargetNormalValues = reference;
       return;
@@ -158,6 +174,10 @@ public:
       {
         this->FellBack[i] = fellBack ? 1 : 0;
       }
+      if (this->Found)
+      {
+        this->Found[i] = weights > 0.0 ? 1 : 0;
+      }
     }
   }
 
@@ -165,12 +185,15 @@ public:
 
   /// Where to record which target samples fell back (one byte each), or null.
   unsigned char* FellBack = nullptr;
+  /// Where to record which targets found a source sample (one byte each), or null.
+  unsigned char* Found = nullptr;
 
-  /// Replace the target's arrays by the transferred ones, with the source's attribute roles.
-  void ReplaceTargetArrays() const
+  /// Replace the target's arrays (or `tpd`'s) by the transferred ones, with the source's
+  /// attribute roles.
+  void ReplaceTargetArrays(vtkPointData* tpd = nullptr) const
   {
     vtkPointData* spd = this->Source->GetSampleData();
-    vtkPointData* tpd = this->Target->GetSampleData();
+    tpd = tpd ? tpd : this->Target->GetSampleData();
     for (const auto& to : this->To)
     {
       tpd->RemoveArray(to->GetName());
@@ -197,9 +220,20 @@ private:
     fellBack = false;
     const double r = this->Radius;
     double x[3];
-    this->Target->GetSamplePosition(i, x);
+    if (this->Target)
+    {
+      this->Target->GetSamplePosition(i, x);
+    }
+    else
+    {
+      std::copy(this->Points + 3 * i, this->Points + 3 * i + 3, x);
+    }
     const float* tn = this->TargetNormalValues ? this->TargetNormalValues + 3 * i : nullptr;
     double weights = 0.0;
+    if (this->Nearest)
+    {
+      return this->GatherClosest(x, tn, r, sum, fellBack) ? 1.0 : 0.0;
+    }
     this->Source->ForEachSampleInSphere(x,
       r,
       [&](vtkIdType j, double d2)
@@ -218,24 +252,38 @@ private:
     // None within r (rare): the closest within 2 r, searched only then (a sphere of
     // 2 r holds four times the candidates).
     fellBack = true;
+    bool dummy;
+    return this->GatherClosest(x, tn, 2.0 * r, sum, dummy) ? 1.0 : 0.0;
+  }
+
+  /// Add the closest source sample within r of x that faces tn's way (the smallest id
+  /// among equally close ones) to `sum` with weight 1; false if there is none.
+  /// `farther`: it lies beyond Radius.
+  bool GatherClosest(const double x[3],
+    const float* tn,
+    double r,
+    std::vector<double>& sum,
+    bool& farther) const
+  {
     vtkIdType closest = -1;
-    double closestD2 = 4.0 * r * r;
+    double closestD2 = r * r;
     this->Source->ForEachSampleInSphere(x,
-      2.0 * r,
+      r,
       [&](vtkIdType j, double d2)
       {
-        if (d2 < closestD2 && this->Faces(j, tn))
+        if ((d2 < closestD2 || (d2 == closestD2 && j < closest)) && this->Faces(j, tn))
         {
           closestD2 = d2;
           closest = j;
         }
       });
-    if (closest >= 0)
+    if (closest < 0)
     {
-      this->Accumulate(closest, 1.0, sum);
-      weights = 1.0;
+      return false;
     }
-    return weights;
+    farther = closestD2 > this->Radius * this->Radius;
+    this->Accumulate(closest, 1.0, sum);
+    return true;
   }
 
   /// Whether source sample j does not face away from the target normal tn (if any).
@@ -322,7 +370,9 @@ private:
   }
 
   vtkOFB* Source;
-  vtkOFB* Target;
+  vtkOFB* Target = nullptr;
+  const double* Points = nullptr; // the targets when there is no target OFB
+  const vtkIdType NumberOfTargets;
   const double Radius;
   std::vector<vtkDataArray*> From;
   std::vector<const float*> FromFloats;        // From[k]'s values if float, else null

@@ -1,0 +1,252 @@
+// vtkOFBTextureBaker: OFB sample arrays baked into UV textures, against the OFB's own
+// lookups; padding; a real UV atlas (spot); bad input.
+#include "vtkOFBTestUtilities.h"
+
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkOFBBrush.h"
+#include "vtkOFBPainter.h"
+#include "vtkOFBTextureBaker.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace vtkofbtest;
+
+namespace
+{
+/// A 2 x 2 plane at z = 0 whose texture coordinates map [0, 1]^2 onto [-1, 1]^2.
+vtkSmartPointer<vtkPolyData> Plane()
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(8, 8);
+  plane->SetOrigin(-1, -1, 0);
+  plane->SetPoint1(1, -1, 0);
+  plane->SetPoint2(-1, 1, 0);
+  plane->Update();
+  vtkSmartPointer<vtkPolyData> out = plane->GetOutput();
+  return out;
+}
+
+/// Paint random dabs on `ofb`, and add a float array "X", the x of each sample.
+void PaintAndMarkX(vtkOFB* ofb, double radius, double bound)
+{
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(ofb);
+  painter->GetBrush()->SetRadius(radius);
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(3);
+  for (int k = 0; k < 10; ++k)
+  {
+    painter->GetBrush()->SetColor(random->GetNextRangeValue(0.0, 1.0),
+      random->GetNextRangeValue(0.0, 1.0),
+      random->GetNextRangeValue(0.0, 1.0));
+    const double p[3] = { random->GetNextRangeValue(-bound, bound),
+      random->GetNextRangeValue(-bound, bound),
+      random->GetNextRangeValue(-bound, bound) };
+    const vtkIdType id = ofb->FindClosestSample(p, HUGE_VAL);
+    double x[3];
+    ofb->GetSamplePosition(id, x);
+    painter->Dab(x);
+  }
+  vtkNew<vtkFloatArray> xs;
+  xs->SetName("X");
+  xs->SetNumberOfValues(ofb->GetNumberOfSamples());
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    ofb->GetSamplePosition(i, x);
+    xs->SetValue(i, static_cast<float>(x[0]));
+  }
+  ofb->GetSampleData()->AddArray(xs);
+}
+
+vtkImageData* Bake(vtkOFBTextureBaker* baker, vtkPolyData* mesh, vtkOFB* ofb, int w, int h)
+{
+  baker->SetInputData(mesh);
+  baker->SetSourceData(ofb);
+  baker->SetTextureSize(w, h);
+  baker->Update();
+  return baker->GetOutput();
+}
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureBaker, PlaneTexelsAreTheClosestSamples)
+{
+  vtkSmartPointer<vtkPolyData> plane = Plane();
+  vtkSmartPointer<vtkOFB> ofb = Build(plane, 128);
+  PaintAndMarkX(ofb, 0.4, 0.9);
+  vtkNew<vtkOFBTextureBaker> baker;
+  vtkImageData* image = Bake(baker, plane, ofb, 64, 48);
+  int dims[3];
+  image->GetDimensions(dims);
+  ASSERT_EQ(dims[0], 64);
+  ASSERT_EQ(dims[1], 48);
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  ASSERT_NE(colors, nullptr);
+  EXPECT_STREQ(colors->GetName(), "Colors");
+  EXPECT_EQ(baker->GetNumberOfBakedTexels(), 64 * 48);
+  auto* samples = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
+  int painted = 0;
+  for (int j = 0; j < 48; ++j)
+  {
+    for (int i = 0; i < 64; ++i)
+    {
+      // Texel (i, j) is texture coordinate ((i + 0.5) / w, (j + 0.5) / h).
+      const double x[3] = { -1.0 + 2.0 * (i + 0.5) / 64, -1.0 + 2.0 * (j + 0.5) / 48, 0.0 };
+      const vtkIdType id = ofb->FindClosestSample(x);
+      ASSERT_GE(id, 0);
+      const vtkIdType t = j * 64 + i;
+      for (int c = 0; c < 4; ++c)
+      {
+        ASSERT_EQ(colors->GetValue(4 * t + c), samples->GetValue(4 * id + c)) << i << " " << j;
+      }
+      painted += colors->GetValue(4 * t + 1) != 255;
+      EXPECT_EQ(image->GetPointData()->GetArray("vtkValidPointMask")->GetComponent(t, 0), 1.0);
+    }
+  }
+  EXPECT_GT(painted, 100);
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureBaker, PaddingFillsAroundUVIslands)
+{
+  // The texture coordinates cover [0.25, 0.75]^2 only.
+  vtkSmartPointer<vtkPolyData> plane = Plane();
+  vtkDataArray* tc = plane->GetPointData()->GetTCoords();
+  for (vtkIdType p = 0; p < tc->GetNumberOfTuples(); ++p)
+  {
+    tc->SetComponent(p, 0, 0.25 + 0.5 * tc->GetComponent(p, 0));
+    tc->SetComponent(p, 1, 0.25 + 0.5 * tc->GetComponent(p, 1));
+  }
+  vtkSmartPointer<vtkOFB> ofb = Build(plane, 64);
+  vtkNew<vtkOFBTextureBaker> baker;
+  baker->SetArrayName("Normals");
+  baker->SetPadding(3);
+  vtkImageData* image = Bake(baker, plane, ofb, 40, 40);
+  vtkDataArray* normals = image->GetPointData()->GetArray("Normals");
+  vtkDataArray* mask = image->GetPointData()->GetArray("vtkValidPointMask");
+  ASSERT_NE(normals, nullptr);
+  EXPECT_EQ(baker->GetNumberOfBakedTexels(), 20 * 20); // texels 10..29 in each direction
+  for (int j = 0; j < 40; ++j)
+  {
+    for (int i = 0; i < 40; ++i)
+    {
+      const vtkIdType t = j * 40 + i;
+      const int ring = std::max({ 10 - i, i - 29, 10 - j, j - 29, 0 });
+      EXPECT_EQ(mask->GetComponent(t, 0), ring == 0 ? 1.0 : 0.0) << i << " " << j;
+      // Covered and padded texels hold the plane's normal, the others zero.
+      EXPECT_NEAR(normals->GetComponent(t, 2), ring <= 3 ? 1.0 : 0.0, 1e-6) << i << " " << j;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureBaker, BakesSpotsUVAtlas)
+{
+  // A real atlas: islands, seams (points split in UV space). Every vertex's texel holds
+  // about the vertex's own x (a flipped or shifted mapping would not).
+  vtkSmartPointer<vtkPolyData> spot = ReadMesh("spot.obj");
+  vtkSmartPointer<vtkOFB> ofb = Build(spot, 256);
+  PaintAndMarkX(ofb, 0.1, 0.5);
+  vtkNew<vtkOFBTextureBaker> baker;
+  baker->SetArrayName("X");
+  baker->SetLookupModeToSmooth();
+  const int size = 512;
+  vtkImageData* image = Bake(baker, spot, ofb, size, size);
+  vtkDataArray* xs = image->GetPointData()->GetArray("X");
+  vtkDataArray* mask = image->GetPointData()->GetArray("vtkValidPointMask");
+  ASSERT_NE(xs, nullptr);
+  EXPECT_GT(baker->GetNumberOfBakedTexels(), size * size / 4);
+  vtkDataArray* tc = spot->GetPointData()->GetTCoords();
+  int checked = 0, close = 0;
+  for (vtkIdType p = 0; p < spot->GetNumberOfPoints(); ++p)
+  {
+    const int i = static_cast<int>(std::floor(tc->GetComponent(p, 0) * size));
+    const int j = static_cast<int>(std::floor(tc->GetComponent(p, 1) * size));
+    if (i < 0 || j < 0 || i >= size || j >= size || mask->GetComponent(j * size + i, 0) != 1.0)
+    {
+      continue; // a vertex on an island's border: its texel centre may lie outside
+    }
+    double x[3];
+    spot->GetPoint(p, x);
+    // A texel centre is up to 0.7 texel from the vertex: a few hundredths in the most
+    // stretched parts of the atlas.
+    const double error = std::abs(xs->GetComponent(j * size + i, 0) - x[0]);
+    EXPECT_LT(error, 0.08) << "point " << p;
+    close += error < 0.02;
+    ++checked;
+  }
+  EXPECT_GT(checked, spot->GetNumberOfPoints() / 2);
+  EXPECT_GT(close, 0.95 * checked);
+  // The paint too (the default array).
+  vtkNew<vtkOFBTextureBaker> colors;
+  vtkImageData* painted = Bake(colors, spot, ofb, 256, 256);
+  EXPECT_STREQ(painted->GetPointData()->GetScalars()->GetName(), "Colors");
+  EXPECT_EQ(painted->GetPointData()->GetScalars()->GetNumberOfComponents(), 4);
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureBaker, BadInput)
+{
+  vtkSmartPointer<vtkPolyData> plane = Plane();
+  vtkSmartPointer<vtkOFB> ofb = Build(plane, 64);
+  vtkNew<MessageObserver> o;
+  auto expectError =
+    [&](vtkOFBTextureBaker* baker, vtkPolyData* mesh, vtkOFB* source, const char* words)
+  {
+    o->Clear();
+    o->Watch(baker);
+    Bake(baker, mesh, source, baker->GetTextureSize()[0], baker->GetTextureSize()[1]);
+    EXPECT_NE(o->Errors.find(words), std::string::npos) << o->Errors;
+    EXPECT_EQ(baker->GetOutput()->GetNumberOfPoints(), 0);
+  };
+  {
+    vtkNew<vtkSphereSource> sphere; // no texture coordinates
+    sphere->Update();
+    vtkNew<vtkOFBTextureBaker> baker;
+    expectError(baker, sphere->GetOutput(), ofb, "texture coordinates");
+  }
+  {
+    vtkNew<vtkOFBTextureBaker> baker;
+    expectError(baker, plane, vtkNew<vtkOFB>(), "empty");
+  }
+  for (int size : { 0, -3, 20000 })
+  {
+    vtkNew<vtkOFBTextureBaker> baker;
+    baker->SetTextureSize(size, 16);
+    expectError(baker, plane, ofb, "TextureSize");
+  }
+  for (double radius : { 0.0, std::nan(""), HUGE_VAL })
+  {
+    vtkNew<vtkOFBTextureBaker> baker;
+    baker->SetTextureSize(16, 16);
+    baker->SetRadius(radius);
+    expectError(baker, plane, ofb, "Radius");
+  }
+  {
+    vtkNew<vtkOFBTextureBaker> baker;
+    baker->SetTextureSize(16, 16);
+    baker->SetArrayName("NoSuchArray");
+    expectError(baker, plane, ofb, "NoSuchArray");
+  }
+  // NaN and huge texture coordinates: those triangles are skipped, the others baked.
+  vtkDataArray* tc = plane->GetPointData()->GetTCoords();
+  tc->SetComponent(0, 0, std::nan(""));
+  tc->SetComponent(1, 1, 1e30);
+  o->Clear();
+  vtkNew<vtkOFBTextureBaker> baker;
+  o->Watch(baker);
+  Bake(baker, plane, ofb, 32, 32);
+  EXPECT_TRUE(o->Errors.empty()) << o->Errors;
+  EXPECT_GT(baker->GetNumberOfBakedTexels(), 32 * 32 / 2);
+  EXPECT_LT(baker->GetNumberOfBakedTexels(), 32 * 32);
+}

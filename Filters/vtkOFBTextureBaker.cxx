@@ -1,0 +1,357 @@
+#include "vtkOFBTextureBaker.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkOFB.h"
+#include "vtkOFBPyramidResampler.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <vector>
+
+vtkStandardNewMacro(vtkOFBTextureBaker);
+
+namespace
+{
+/// The covered texels: each one's surface point and the normal of its triangle.
+struct Coverage
+{
+  int Width = 0;
+  int Height = 0;
+  std::vector<vtkIdType> SlotOf; // per texel, -1 where no triangle covers it
+  std::vector<vtkIdType> TexelOf;
+  std::vector<double> Points;
+  std::vector<float> Normals;
+
+  void Reset(int w, int h)
+  {
+    this->Width = w;
+    this->Height = h;
+    this->SlotOf.assign(static_cast<size_t>(w) * h, -1);
+  }
+
+  /// Texels whose centres the triangle covers in UV space (uv in texture coordinates).
+  void AddTriangle(const glm::dvec2 uv[3], const glm::dvec3 x[3])
+  {
+    glm::dvec2 p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      // Texel centres at integer coordinates.
+      p[k] = glm::dvec2(uv[k].x * this->Width - 0.5, uv[k].y * this->Height - 0.5);
+      if (!std::isfinite(p[k].x) || !std::isfinite(p[k].y))
+      {
+        return;
+      }
+    }
+    const glm::dvec2 e1 = p[1] - p[0];
+    const glm::dvec2 e2 = p[2] - p[0];
+    const double area = e1.x * e2.y - e1.y * e2.x;
+    const glm::dvec3 n = glm::cross(x[1] - x[0], x[2] - x[0]);
+    const double length = glm::length(n);
+    if (!(std::abs(area) > 1e-12) || !(length > 0.0) || !std::isfinite(length))
+    {
+      return;
+    }
+    const glm::vec3 normal(n / length);
+    const double lowU = std::max(0.0, std::ceil(std::min({ p[0].x, p[1].x, p[2].x })));
+    const double highU =
+      std::min(this->Width - 1.0, std::floor(std::max({ p[0].x, p[1].x, p[2].x })));
+    const double lowV = std::max(0.0, std::ceil(std::min({ p[0].y, p[1].y, p[2].y })));
+    const double highV =
+      std::min(this->Height - 1.0, std::floor(std::max({ p[0].y, p[1].y, p[2].y })));
+    const double eps = -1e-9;
+    for (double j = lowV; j <= highV; ++j)
+    {
+      for (double i = lowU; i <= highU; ++i)
+      {
+        const glm::dvec2 q = glm::dvec2(i, j) - p[0];
+        const double w1 = (q.x * e2.y - q.y * e2.x) / area;
+        const double w2 = (e1.x * q.y - e1.y * q.x) / area;
+        const double w0 = 1.0 - w1 - w2;
+        if (w0 < eps || w1 < eps || w2 < eps)
+        {
+          continue;
+        }
+        const glm::dvec3 y = w0 * x[0] + w1 * x[1] + w2 * x[2];
+        const vtkIdType texel = static_cast<vtkIdType>(j) * this->Width + static_cast<vtkIdType>(i);
+        vtkIdType& slot = this->SlotOf[texel];
+        if (slot < 0)
+        {
+          slot = static_cast<vtkIdType>(this->TexelOf.size());
+          this->TexelOf.push_back(texel);
+          this->Points.resize(this->Points.size() + 3);
+          this->Normals.resize(this->Normals.size() + 3);
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          this->Points[3 * slot + c] = y[c];
+          this->Normals[3 * slot + c] = normal[c];
+        }
+      }
+    }
+  }
+};
+
+/// Fill `passes` rings of empty texels around the filled ones with the mean of their
+/// filled neighbours (8-neighbourhood; integer arrays rounded).
+void Pad(vtkDataArray* image, std::vector<unsigned char>& filled, int w, int h, int passes)
+{
+  const int nc = image->GetNumberOfComponents();
+  const bool integral = image->GetDataType() != VTK_FLOAT && image->GetDataType() != VTK_DOUBLE;
+  std::vector<double> sum(nc), value(nc);
+  for (int pass = 0; pass < passes; ++pass)
+  {
+    std::vector<vtkIdType> added;
+    for (int j = 0; j < h; ++j)
+    {
+      for (int i = 0; i < w; ++i)
+      {
+        const vtkIdType t = static_cast<vtkIdType>(j) * w + i;
+        if (filled[t])
+        {
+          continue;
+        }
+        std::fill(sum.begin(), sum.end(), 0.0);
+        int count = 0;
+        for (int dj = -1; dj <= 1; ++dj)
+        {
+          for (int di = -1; di <= 1; ++di)
+          {
+            const int ni = i + di, nj = j + dj;
+            const vtkIdType nt = static_cast<vtkIdType>(nj) * w + ni;
+            if (ni < 0 || nj < 0 || ni >= w || nj >= h || filled[nt] != 1)
+            {
+              continue;
+            }
+            for (int c = 0; c < nc; ++c)
+            {
+              sum[c] += image->GetComponent(nt, c);
+            }
+            ++count;
+          }
+        }
+        if (count == 0)
+        {
+          continue;
+        }
+        for (int c = 0; c < nc; ++c)
+        {
+          value[c] = integral ? std::floor(sum[c] / count + 0.5) : sum[c] / count;
+          image->SetComponent(t, c, value[c]);
+        }
+        added.push_back(t);
+      }
+    }
+    if (added.empty())
+    {
+      break;
+    }
+    for (vtkIdType t : added) // read from the next pass on
+    {
+      filled[t] = 1;
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkOFBTextureBaker::vtkOFBTextureBaker()
+  : Radius(std::sqrt(3.0))
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+vtkOFBTextureBaker::~vtkOFBTextureBaker() = default;
+
+//------------------------------------------------------------------------------
+void vtkOFBTextureBaker::SetSourceConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTextureBaker::SetSourceData(vtkOFB* ofb)
+{
+  this->SetInputDataInternal(1, ofb);
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBTextureBaker::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkOFB");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBTextureBaker::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  const int w = std::max(1, std::min(this->TextureSize[0], 16384));
+  const int h = std::max(1, std::min(this->TextureSize[1], 16384));
+  const int extent[6] = { 0, w - 1, 0, h - 1, 0, 0 };
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double spacing[3] = { 1.0, 1.0, 1.0 };
+  info->Set(vtkDataObject::ORIGIN(), origin, 3);
+  info->Set(vtkDataObject::SPACING(), spacing, 3);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBTextureBaker::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* mesh = vtkPolyData::GetData(inputVector[0]);
+  vtkOFB* ofb = vtkOFB::GetData(inputVector[1]);
+  vtkImageData* image = vtkImageData::GetData(outputVector);
+  image->Initialize();
+  this->NumberOfBakedTexels = 0;
+  const int w = this->TextureSize[0];
+  const int h = this->TextureSize[1];
+  vtkDataArray* tcoords = mesh ? mesh->GetPointData()->GetTCoords() : nullptr;
+  if (!mesh || !ofb || ofb->GetNumberOfSamples() == 0)
+  {
+    vtkErrorMacro("No mesh, or no OFB to bake or an empty one (SetSourceConnection).");
+    return 1;
+  }
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2 ||
+    tcoords->GetNumberOfTuples() != mesh->GetNumberOfPoints())
+  {
+    vtkErrorMacro("The mesh has no texture coordinates (2 components, one pair a point).");
+    return 1;
+  }
+  if (w < 1 || h < 1 || w > 16384 || h > 16384)
+  {
+    vtkErrorMacro("TextureSize " << w << " x " << h << " is outside [1, 16384].");
+    return 1;
+  }
+  if (!(this->Radius > 0.0) || !std::isfinite(this->Radius))
+  {
+    vtkErrorMacro("Radius " << this->Radius << " is not positive and finite.");
+    return 1;
+  }
+  vtkPointData* spd = ofb->GetSampleData();
+  vtkDataArray* source = this->ArrayName.empty()
+    ? (spd->GetScalars() ? spd->GetScalars() : spd->GetArray("Colors"))
+    : spd->GetArray(this->ArrayName.c_str());
+  if (!source || !source->GetName() || source->GetNumberOfTuples() != ofb->GetNumberOfSamples())
+  {
+    vtkErrorMacro("The OFB has no sample array '"
+      << (this->ArrayName.empty() ? "Colors" : this->ArrayName) << "' to bake.");
+    return 1;
+  }
+  if (mesh->GetNumberOfStrips() > 0 || mesh->GetNumberOfLines() > 0)
+  {
+    vtkWarningMacro("Strips and lines are not baked: apply vtkTriangleFilter first.");
+  }
+
+  // The texels covered by the triangles (fans of the polygons), in cell order.
+  Coverage cover;
+  cover.Reset(w, h);
+  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  vtkIdType done = 0;
+  const vtkIdType total = mesh->GetNumberOfPolys();
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++done)
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(npts, ids);
+    for (vtkIdType k = 1; k + 1 < npts; ++k)
+    {
+      const vtkIdType corner[3] = { ids[0], ids[k], ids[k + 1] };
+      glm::dvec2 uv[3];
+      glm::dvec3 x[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        double p[3];
+        mesh->GetPoint(corner[c], p);
+        x[c] = glm::dvec3(p[0], p[1], p[2]);
+        uv[c] =
+          glm::dvec2(tcoords->GetComponent(corner[c], 0), tcoords->GetComponent(corner[c], 1));
+      }
+      cover.AddTriangle(uv, x);
+    }
+    if ((done & 4095) == 0)
+    {
+      this->UpdateProgress(0.3 * done / std::max<vtkIdType>(total, 1));
+    }
+  }
+
+  // Their values, looked up in the OFB.
+  const vtkIdType n = static_cast<vtkIdType>(cover.TexelOf.size());
+  vtkOFBPyramidResampler transfer(ofb, cover.Points.data(), n, this->Radius * ofb->GetCellSize());
+  transfer.Nearest = this->LookupMode == 0;
+  const std::set<std::string> names = { source->GetName() };
+  transfer.CollectArrays(&names);
+  transfer.SetTargetNormals(this->NormalAware ? cover.Normals.data() : nullptr);
+  std::vector<unsigned char> found(static_cast<size_t>(n), 0);
+  transfer.Found = found.data();
+  vtkSMPTools::For(0, n, 4096, transfer);
+  this->UpdateProgress(0.8);
+
+  // The image.
+  image->SetExtent(0, w - 1, 0, h - 1, 0, 0);
+  const vtkIdType texels = static_cast<vtkIdType>(w) * h;
+  vtkSmartPointer<vtkDataArray> values = vtk::TakeSmartPointer(source->NewInstance());
+  values->SetName(source->GetName());
+  values->SetNumberOfComponents(source->GetNumberOfComponents());
+  values->SetNumberOfTuples(texels);
+  values->Fill(0.0);
+  auto mask = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  mask->SetName("vtkValidPointMask");
+  mask->SetNumberOfValues(texels);
+  mask->Fill(0);
+  std::vector<unsigned char> filled(static_cast<size_t>(texels), 0);
+  vtkDataArray* baked = transfer.GetTargetArrays().front();
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    if (found[k])
+    {
+      values->SetTuple(cover.TexelOf[k], k, baked);
+      mask->SetValue(cover.TexelOf[k], 1);
+      filled[cover.TexelOf[k]] = 1;
+      ++this->NumberOfBakedTexels;
+    }
+  }
+  if (this->NumberOfBakedTexels == 0)
+  {
+    vtkWarningMacro("No texel was baked: are the texture coordinates in [0, 1] and the mesh "
+                    "the OFB's surface?");
+  }
+  Pad(values, filled, w, h, this->Padding);
+  image->GetPointData()->SetScalars(values);
+  image->GetPointData()->AddArray(mask);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTextureBaker::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TextureSize: " << this->TextureSize[0] << " x " << this->TextureSize[1] << "\n";
+  os << indent << "ArrayName: " << (this->ArrayName.empty() ? "(active scalars)" : this->ArrayName)
+     << "\n";
+  os << indent << "LookupMode: " << (this->LookupMode == 0 ? "Nearest" : "Smooth") << "\n";
+  os << indent << "Radius: " << this->Radius << " cells\n";
+  os << indent << "NormalAware: " << (this->NormalAware ? "On" : "Off") << "\n";
+  os << indent << "Padding: " << this->Padding << " texels\n";
+  os << indent << "NumberOfBakedTexels: " << this->NumberOfBakedTexels << "\n";
+}

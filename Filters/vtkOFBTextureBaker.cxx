@@ -190,6 +190,18 @@ void vtkOFBTextureBaker::SetSourceData(vtkOFB* ofb)
 }
 
 //------------------------------------------------------------------------------
+vtkDataArray* vtkOFBTextureBaker::FindSourceArray(vtkOFB* ofb) const
+{
+  vtkPointData* spd = ofb->GetSampleData();
+  vtkDataArray* source = this->ArrayName.empty()
+    ? (spd->GetScalars() ? spd->GetScalars() : spd->GetArray("Colors"))
+    : spd->GetArray(this->ArrayName.c_str());
+  return source && source->GetName() && source->GetNumberOfTuples() == ofb->GetNumberOfSamples()
+    ? source
+    : nullptr;
+}
+
+//------------------------------------------------------------------------------
 int vtkOFBTextureBaker::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkOFB");
@@ -198,10 +210,28 @@ int vtkOFBTextureBaker::FillInputPortInformation(int port, vtkInformation* info)
 
 //------------------------------------------------------------------------------
 int vtkOFBTextureBaker::RequestInformation(vtkInformation*,
-  vtkInformationVector**,
+  vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
   vtkInformation* info = outputVector->GetInformationObject(0);
+  // The scalars' type and components, for downstream imaging filters: those of the
+  // array in the OFB where it is there already (SetSourceData, an updated pipeline),
+  // else what the default array, the paint, has (RGBA bytes), or one float.
+  vtkOFB* ofb = vtkOFB::GetData(inputVector[1]);
+  vtkDataArray* source = ofb ? this->FindSourceArray(ofb) : nullptr;
+  if (source)
+  {
+    vtkDataObject::SetPointDataActiveScalarInfo(
+      info, source->GetDataType(), source->GetNumberOfComponents());
+  }
+  else if (this->ArrayName.empty() || this->ArrayName == "Colors")
+  {
+    vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_UNSIGNED_CHAR, 4);
+  }
+  else
+  {
+    vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, 1);
+  }
   const int w = std::max(1, std::min(this->TextureSize[0], 16384));
   const int h = std::max(1, std::min(this->TextureSize[1], 16384));
   const int extent[6] = { 0, w - 1, 0, h - 1, 0, 0 };
@@ -247,11 +277,8 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
     vtkErrorMacro("Radius " << this->Radius << " is not positive and finite.");
     return 1;
   }
-  vtkPointData* spd = ofb->GetSampleData();
-  vtkDataArray* source = this->ArrayName.empty()
-    ? (spd->GetScalars() ? spd->GetScalars() : spd->GetArray("Colors"))
-    : spd->GetArray(this->ArrayName.c_str());
-  if (!source || !source->GetName() || source->GetNumberOfTuples() != ofb->GetNumberOfSamples())
+  vtkDataArray* source = this->FindSourceArray(ofb);
+  if (!source)
   {
     vtkErrorMacro("The OFB has no sample array '"
       << (this->ArrayName.empty() ? "Colors" : this->ArrayName) << "' to bake.");
@@ -338,6 +365,8 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
   Pad(values, filled, w, h, this->Padding);
   image->GetPointData()->SetScalars(values);
   image->GetPointData()->AddArray(mask);
+  vtkDataObject::SetPointDataActiveScalarInfo(
+    outputVector->GetInformationObject(0), values->GetDataType(), values->GetNumberOfComponents());
   this->UpdateProgress(1.0);
   return 1;
 }

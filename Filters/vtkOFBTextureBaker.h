@@ -40,6 +40,7 @@
 
 #include <string> // for ArrayName
 
+class vtkDataArray;
 class vtkOFB;
 
 class VTKOFBFILTERS_EXPORT vtkOFBTextureBaker : public vtkImageAlgorithm
@@ -115,6 +116,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// The sample array to bake (ArrayName, or the active scalars, or "Colors"), or null.
+  vtkDataArray* FindSourceArray(vtkOFB* ofb) const;
 
   int TextureSize[2] = { 1024, 1024 };
   std::string ArrayName;

@@ -4,10 +4,12 @@
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkImageExtractComponents.h"
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBPainter.h"
+#include "vtkOFBSampler.h"
 #include "vtkOFBTextureBaker.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
@@ -249,4 +251,44 @@ TEST(TextureBaker, BadInput)
   EXPECT_TRUE(o->Errors.empty()) << o->Errors;
   EXPECT_GT(baker->GetNumberOfBakedTexels(), 32 * 32 / 2);
   EXPECT_LT(baker->GetNumberOfBakedTexels(), 32 * 32);
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureBaker, FeedsImagingFilters)
+{
+  // Downstream imaging filters read the scalars' type and components from the
+  // pipeline information: an OFB from a connection (not yet built when the
+  // information is asked) as well as one set as data.
+  vtkSmartPointer<vtkPolyData> plane = Plane();
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetInputData(plane);
+  sampler->SetResolution(64);
+  for (int connected = 0; connected < 2; ++connected)
+  {
+    vtkNew<vtkOFBTextureBaker> baker;
+    baker->SetInputData(plane);
+    if (connected)
+    {
+      baker->SetSourceConnection(sampler->GetOutputPort());
+    }
+    else
+    {
+      sampler->Update();
+      baker->SetSourceData(sampler->GetOutput());
+    }
+    baker->SetTextureSize(32, 16);
+    vtkNew<vtkImageExtractComponents> rgb;
+    rgb->SetInputConnection(baker->GetOutputPort());
+    rgb->SetComponents(0, 1, 2);
+    vtkNew<MessageObserver> o;
+    o->Watch(rgb);
+    rgb->Update();
+    EXPECT_TRUE(o->Errors.empty()) << o->Errors;
+    vtkDataArray* scalars = rgb->GetOutput()->GetPointData()->GetScalars();
+    ASSERT_NE(scalars, nullptr);
+    EXPECT_EQ(scalars->GetNumberOfComponents(), 3);
+    EXPECT_EQ(scalars->GetDataType(), VTK_UNSIGNED_CHAR);
+    EXPECT_EQ(scalars->GetNumberOfTuples(), 32 * 16);
+    EXPECT_EQ(scalars->GetComponent(0, 0), 255.0); // the sampler's default white
+  }
 }

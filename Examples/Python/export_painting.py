@@ -1,0 +1,237 @@
+#!/usr/bin/env python3
+"""Exporting a painting: vtkOFB's paint saved in files any VTK, ParaView or 3-D tool reads.
+
+    reader -> vtkOFBSampler -> paint (vtkOFBPainter) -> vtkOFBProbeFilter -> vtkPLYWriter
+                                                    -> vtkOFBTextureBaker -> vtkOBJWriter
+
+The OFB holds paint finer than the mesh's triangles. Two ways out of it:
+  * vtkOFBProbeFilter gives every point of the mesh the colour of the OFB there (a PLY with
+    vertex colours): as fine as the mesh's points, no finer;
+  * vtkOFBTextureBaker writes the paint into the mesh's UV texture (an OBJ with its .mtl
+    and .png): as fine as the texture, whatever the triangles.
+The script paints polka dots and a thin spiral stripe on a mesh with texture coordinates
+(Spot the cow by default), writes both files into --output-dir, and renders three views
+side by side: the OFB itself (vtkOFBPolyDataMapper), the PLY's vertex colours and the
+OBJ's texture (both with plain VTK, as any viewer would show them).
+
+Run (from a build tree; Debian's python3 has VTK's modules):
+    PYTHONPATH=build/lib/python3.11/dist-packages /usr/bin/python3 \\
+        Examples/Python/export_painting.py Testing/Data/spot.obj export.png
+Options: --resolution (OFB cells on the longest side), --texture (texels a side),
+--output-dir (where spot_painted.ply, .obj, .mtl and .png go), --size (pixels a view),
+--up, --azimuth, --elevation, --check (exit with an error unless the files read back
+and the texture shows the stripe the vertex colours lose; the ctest uses it).
+Headless: prefix with  xvfb-run -a .
+"""
+
+import argparse
+import colorsys
+import math
+import os
+import sys
+
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkImagingCore import vtkImageExtractComponents
+from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkOBJWriter
+from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+from vtkmodules.vtkIOPLY import vtkPLYReader, vtkPLYWriter
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
+                                         vtkRenderWindow, vtkTexture, vtkWindowToImageFilter)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations)
+
+import vtkofb
+from ofb_example_view import add_view_options, vivid_share
+
+parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+parser.add_argument("mesh", help="surface with texture coordinates (.obj)")
+parser.add_argument("png", help="picture of the three views to write")
+parser.add_argument("--resolution", type=int, default=1024)
+parser.add_argument("--texture", type=int, default=1024)
+parser.add_argument("--output-dir", default=".")
+add_view_options(parser, azimuth=-50.0)
+parser.add_argument("--check", action="store_true")
+args = parser.parse_args()
+
+# 1. Read the mesh and sample it into an OFB.
+reader = vtkOBJReader()
+reader.SetFileName(args.mesh)
+reader.Update()
+mesh = reader.GetOutput()
+if mesh.GetNumberOfPolys() == 0 or mesh.GetPointData().GetTCoords() is None:
+    sys.exit(f"{args.mesh}: no triangles with texture coordinates")
+sampler = vtkofb.vtkOFBSampler()
+sampler.SetInputData(mesh)
+sampler.SetResolution(args.resolution)
+sampler.Update()
+ofb = sampler.GetOutput()
+cell = ofb.GetCellSize()
+
+
+def sample_position(i):
+    x = [0.0, 0.0, 0.0]
+    ofb.GetSamplePosition(i, x)
+    return x
+
+
+# 2. Paint: polka dots, then a spiral stripe of 1.5 cells, thinner than the triangles.
+painter = vtkofb.vtkOFBPainter()
+painter.SetOFB(ofb)
+brush = painter.GetBrush()
+bounds = mesh.GetBounds()
+centre = [(bounds[2 * k] + bounds[2 * k + 1]) / 2 for k in range(3)]
+size = max(bounds[2 * k + 1] - bounds[2 * k] for k in range(3))
+rng = np.random.default_rng(5)
+dots = vtkPoints()
+for i in rng.integers(0, ofb.GetNumberOfSamples(), 40):
+    dots.InsertNextPoint(sample_position(int(i)))
+brush.SetRadius(0.03 * size)
+brush.SetFalloffToSharp()
+for k in range(dots.GetNumberOfPoints()):
+    brush.SetColor(*colorsys.hsv_to_rgb(k / 40.0, 0.85, 0.95), 1.0)
+    painter.Dab(dots.GetPoint(k))
+up = "xyz".index(args.up)
+a, b = (up + 1) % 3, (up + 2) % 3
+brush.SetRadius(1.5 * cell)
+brush.SetFalloffToConstant()
+brush.SetColor(0.1, 0.1, 0.6, 1.0)
+previous = None
+turns, steps = 7, 2400
+for s in range(steps):
+    t = s / steps
+    p = list(centre)
+    p[up] = bounds[2 * up] + t * (bounds[2 * up + 1] - bounds[2 * up])
+    p[a] += size * math.cos(2 * math.pi * turns * t)
+    p[b] += size * math.sin(2 * math.pi * turns * t)
+    q = sample_position(ofb.FindClosestSample(p, float("inf")))
+    if previous is None or math.dist(q, previous) > 0.05 * size:  # lift over jumps
+        painter.EndStroke()
+        painter.BeginStroke()
+    painter.StrokeTo(q)
+    previous = q
+painter.EndStroke()
+
+# 3. Export: vertex colours (PLY) and the baked texture (OBJ + MTL + PNG).
+os.makedirs(args.output_dir, exist_ok=True)
+stem = os.path.join(args.output_dir,
+                    os.path.splitext(os.path.basename(args.mesh))[0] + "_painted")
+probe = vtkofb.vtkOFBProbeFilter()
+probe.SetInputData(mesh)
+probe.SetSourceData(ofb)
+ply = vtkPLYWriter()
+ply.SetInputConnection(probe.GetOutputPort())
+ply.SetFileName(stem + ".ply")
+ply.SetArrayName("Colors")
+ply.EnableAlphaOn()
+ply.Write()
+baker = vtkofb.vtkOFBTextureBaker()
+baker.SetInputData(mesh)
+baker.SetSourceData(ofb)
+baker.SetTextureSize(args.texture, args.texture)
+rgb = vtkImageExtractComponents()  # the paint is opaque: an RGB texture (an alpha channel
+rgb.SetInputConnection(baker.GetOutputPort())  # makes viewers draw the mesh as translucent)
+rgb.SetComponents(0, 1, 2)
+obj = vtkOBJWriter()
+obj.SetInputData(0, mesh)
+obj.SetInputConnection(1, rgb.GetOutputPort())
+obj.SetFileName(stem + ".obj")
+obj.Write()
+print(f"wrote {stem}.ply (vertex colours, {probe.GetOutput().GetNumberOfPoints()} points) and "
+      f"{stem}.obj/.mtl/.png ({baker.GetNumberOfBakedTexels()} texels baked)")
+
+# 4. Read both back, as another program would, and show them beside the OFB.
+ply_in = vtkPLYReader()
+ply_in.SetFileName(stem + ".ply")
+obj_in = vtkOBJReader()
+obj_in.SetFileName(stem + ".obj")
+png_in = vtkPNGReader()
+png_in.SetFileName(stem + ".png")
+texture = vtkTexture()
+texture.SetInputConnection(png_in.GetOutputPort())
+texture.InterpolateOn()
+
+views = []
+ofb_mapper = vtkofb.vtkOFBPolyDataMapper()
+ofb_mapper.SetInputData(mesh)
+ofb_mapper.SetOFB(ofb)
+views.append(ofb_mapper)
+vertex_mapper = vtkPolyDataMapper()
+vertex_mapper.SetInputConnection(ply_in.GetOutputPort())
+vertex_mapper.SetColorModeToDirectScalars()
+views.append(vertex_mapper)
+texture_mapper = vtkPolyDataMapper()
+texture_mapper.SetInputConnection(obj_in.GetOutputPort())
+texture_mapper.ScalarVisibilityOff()
+views.append(texture_mapper)
+
+window = vtkRenderWindow()
+window.SetOffScreenRendering(True)
+window.SetSize(3 * args.size, args.size)
+camera = None
+for k, mapper in enumerate(views):
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    if k == 2:
+        actor.SetTexture(texture)
+    renderer = vtkRenderer()
+    renderer.SetViewport(k / 3.0, 0.0, (k + 1) / 3.0, 1.0)
+    renderer.SetBackground(0.1, 0.1, 0.15)
+    renderer.AddActor(actor)
+    window.AddRenderer(renderer)
+    if camera is None:
+        camera = renderer.GetActiveCamera()
+        camera.SetFocalPoint(0.0, 0.0, 0.0)
+        camera.SetPosition(*[1.0 if i == (up + 1) % 3 else 0.0 for i in range(3)])
+        camera.SetViewUp(*[1.0 if i == up else 0.0 for i in range(3)])
+        camera.Azimuth(args.azimuth)
+        camera.Elevation(args.elevation)
+        renderer.ResetCamera()
+        camera.Dolly(1.3)
+    else:
+        renderer.SetActiveCamera(camera)
+    renderer.ResetCameraClippingRange()
+window.Render()
+grab = vtkWindowToImageFilter()
+grab.SetInput(window)
+grab.ReadFrontBufferOff()
+grab.Update()
+writer = vtkPNGWriter()
+writer.SetFileName(args.png)
+writer.SetInputConnection(grab.GetOutputPort())
+writer.Write()
+print(f"wrote {args.png} (left: the OFB, middle: the PLY's vertex colours, right: the OBJ's "
+      f"texture)")
+
+if args.check:
+    w = 3 * args.size
+    rgb = numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3]
+    rgb = rgb.reshape(args.size, w, 3).astype(float)
+    left, middle, right = (rgb[:, k * args.size:(k + 1) * args.size] for k in range(3))
+    foreground = np.abs(left - [0.1 * 255, 0.1 * 255, 0.15 * 255]).sum(axis=2) > 30
+    texture_error = np.abs(right - left)[foreground].mean()
+    vertex_error = np.abs(middle - left)[foreground].mean()
+    ply_in.Update()
+    obj_in.Update()
+    png_in.Update()
+    colours = ply_in.GetOutput().GetPointData().GetScalars()
+    problems = []
+    if colours is None or colours.GetNumberOfComponents() != 4:
+        problems.append("the PLY has no RGBA vertex colours")
+    if obj_in.GetOutput().GetPointData().GetTCoords() is None:
+        problems.append("the OBJ has no texture coordinates")
+    if png_in.GetOutput().GetDimensions()[:2] != (args.texture, args.texture):
+        problems.append("the texture PNG has the wrong size")
+    if foreground.mean() < 0.1:
+        problems.append("the mesh covers too little of the view")
+    if not texture_error < 0.6 * vertex_error:
+        problems.append(f"the texture ({texture_error:.1f} grey levels from the OFB's view) "
+                        f"is not much closer than the vertex colours ({vertex_error:.1f})")
+    if vivid_share(right.reshape(-1, 3).astype(np.uint8)) < 0.5 * vivid_share(
+            left.reshape(-1, 3).astype(np.uint8)):
+        problems.append("the texture lost the paint's colours")
+    print(f"check: mean difference from the OFB's view: texture {texture_error:.1f}, "
+          f"vertex colours {vertex_error:.1f} (grey levels)")
+    if problems:
+        sys.exit("check failed: " + "; ".join(problems))
+    print("check passed")

@@ -25,7 +25,7 @@ SOURCE_DIR = os.path.abspath(
 
 CLASSES = ("vtkOFB", "vtkOFBAlgorithm", "vtkOFBSampler", "vtkOFBBuilder",
            "vtkOFBToPolyData", "vtkOFBSamplePicker", "vtkOFBWriter", "vtkOFBReader",
-           "vtkOFBPyramid", "vtkOFBPolyDataMapper")
+           "vtkOFBPyramid", "vtkOFBPolyDataMapper", "vtkOFBProbeFilter", "vtkOFBTextureBaker")
 
 
 class Events:

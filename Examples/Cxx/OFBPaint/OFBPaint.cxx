@@ -1,8 +1,9 @@
 // OFBPaint: paint a surface with the mouse through its Orthogonal Fragment Buffer.
 //
 // Usage: OFBPaint [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb]
-//                 [--save paint.ofb] [--width W] [--height H]
-//                 [--strokes strokes.txt --image out.png] [--play events.log]
+//                 [--save paint.ofb] [--export painted.obj|.ply|.vtp] [--texture N]
+//                 [--width W] [--height H] [--strokes strokes.txt --image out.png]
+//                 [--play events.log]
 //
 // Without a mesh it opens Testing/Data/stanford-bunny.obj of the source tree. The surface
 // is drawn by vtkOFBPolyDataMapper from an OFB built at --resolution (default 1024) and
@@ -10,6 +11,7 @@
 // 'h' shows the keys. With --strokes and --image it runs without a window on screen:
 // it replays the stroke file (format in ofbPaintStrokes.h) and writes the picture.
 
+#include "ofbPaintExport.h"
 #include "ofbPaintStrokes.h"
 
 #include "vtkAbstractPolyDataReader.h"
@@ -92,12 +94,18 @@ void Usage(const char* argv0)
   std::cerr
     << "Usage: " << argv0
     << " [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb] [--save paint.ofb]\n"
-       "       [--width W] [--height H] [--strokes strokes.txt --image out.png]\n"
+       "       [--export FILE] [--texture N] [--width W] [--height H]\n"
+       "       [--strokes strokes.txt --image out.png]\n"
        "Paint the surface (default stanford-bunny.obj) with the mouse; 'h' lists the keys.\n"
        "  --resolution N   OFB cells along the longest side (default 1024)\n"
        "  --load FILE      start from a painted OFB saved before (key 's')\n"
        "  --save FILE      where 's' saves and 'l' loads (default <mesh name>.ofb); the\n"
        "                   headless mode saves the painted OFB there when given\n"
+       "  --export FILE    where 'x' exports the painting (default <mesh name>_painted.obj\n"
+       "                   for a mesh with texture coordinates: the paint baked into its\n"
+       "                   texture; else _painted.ply: vertex colours; or a .vtp); the\n"
+       "                   headless mode exports there when given\n"
+       "  --texture N      texels a side of the exported texture (default 2048)\n"
        "  --strokes FILE   replay a stroke file without a window on screen (format in\n"
        "                   Examples/Cxx/OFBPaint/ofbPaintStrokes.h), with --image OUT.png\n"
        "  --play FILE      play recorded mouse and key events (vtkInteractorEventRecorder's\n"
@@ -193,6 +201,8 @@ private:
 
   std::string MeshPath;
   std::string SavePath;
+  std::string ExportPath;
+  int TextureSize = 2048;
   vtkSmartPointer<vtkPolyData> Surface;
   vtkSmartPointer<vtkOFB> OFB;
   vtkNew<vtkOFBPolyDataMapper> Mapper;
@@ -206,7 +216,8 @@ private:
   vtkNew<vtkCallbackCommand> KeyCallback;
   vtkNew<vtkCallbackCommand> WidgetCallback;
   int Screenshots = 0;
-  bool SaveRequested = false; // --save given: the headless mode saves the painted OFB
+  bool SaveRequested = false;   // --save given: the headless mode saves the painted OFB
+  bool ExportRequested = false; // --export given: the headless mode exports the painting
 };
 
 bool PaintApp::BuildOFB(int resolution)
@@ -360,10 +371,10 @@ void PaintApp::UpdateTexts(const std::string& message)
   }
   help << "\nc  next colour    u or Ctrl+Z  undo    U or Ctrl+Y  redo\n"
           "s  save "
-       << SystemTools::GetFilenameName(this->SavePath)
-       << "    l  load it    p  "
-          "screenshot (PNG)\nd  display: Nearest / NearestMipmapped (the mean of detail finer "
-          "than a pixel)\nr  reset the view    h  hide this help    q  quit";
+       << SystemTools::GetFilenameName(this->SavePath) << "    l  load it    x  export "
+       << SystemTools::GetFilenameName(this->ExportPath)
+       << "\np  screenshot (PNG)    d  display: Nearest / NearestMipmapped (the mean of "
+          "detail finer than a pixel)\nr  reset the view    h  hide this help    q  quit";
   this->Help->SetInput(help.str().c_str());
   // The brush in two lines: size, strength and colour; falloff, target and blend mode.
   vtkOFBBrush* brush = rep->GetBrush();
@@ -431,6 +442,10 @@ void PaintApp::OnKey(vtkObject*, unsigned long, void* clientData, void*)
         self->Screenshot(name.str()) ? "wrote " + name.str() : "could not write " + name.str();
       break;
     }
+    case 'x':
+      ofbpaint::ExportPainting(
+        self->Surface, self->OFB, self->ExportPath, self->TextureSize, message);
+      break;
     case 'r':
       self->ResetView(0.0, 0.0, 1.0);
       break;
@@ -464,12 +479,16 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
   int resolution = 0, width = 0, height = 0;
   if (!ofbexample::ParseInt(options.at("--resolution"), 8, 8192, resolution) ||
     !ofbexample::ParseInt(options.at("--width"), 64, 8192, width) ||
-    !ofbexample::ParseInt(options.at("--height"), 64, 8192, height))
+    !ofbexample::ParseInt(options.at("--height"), 64, 8192, height) ||
+    !ofbexample::ParseInt(options.at("--texture"), 1, 16384, this->TextureSize))
   {
     std::cerr << "OFBPaint: --resolution must be in [8, 8192], --width and --height in "
-                 "[64, 8192]\n";
+                 "[64, 8192], --texture in [1, 16384]\n";
     return false;
   }
+  this->ExportRequested = !options.at("--export").empty();
+  this->ExportPath = this->ExportRequested ? options.at("--export")
+                                           : ofbpaint::DefaultExportPath(meshPath, this->Surface);
   this->SaveRequested = !options.at("--save").empty();
   this->SavePath = options.at("--save").empty()
     ? SystemTools::GetFilenameWithoutLastExtension(meshPath) + ".ofb"
@@ -587,6 +606,14 @@ int PaintApp::RunHeadless(const std::string& strokes, const std::string& image)
   {
     return EXIT_FAILURE;
   }
+  if (this->ExportRequested)
+  {
+    std::string message;
+    const bool exported = ofbpaint::ExportPainting(
+      this->Surface, this->OFB, this->ExportPath, this->TextureSize, message);
+    (exported ? std::cout : std::cerr) << (exported ? "" : "OFBPaint: ") << message << "\n";
+    return exported ? EXIT_SUCCESS : EXIT_FAILURE;
+  }
   return EXIT_SUCCESS;
 }
 }
@@ -596,6 +623,8 @@ int main(int argc, char* argv[])
   std::map<std::string, std::string> options = { { "--resolution", "1024" },
     { "--load", "" },
     { "--save", "" },
+    { "--export", "" },
+    { "--texture", "2048" },
     { "--width", "1200" },
     { "--height", "900" },
     { "--strokes", "" },

@@ -1,0 +1,130 @@
+#include "ofbPaintExport.h"
+
+#include "vtkCommand.h"
+#include "vtkImageExtractComponents.h"
+#include "vtkNew.h"
+#include "vtkOBJWriter.h"
+#include "vtkOFB.h"
+#include "vtkOFBProbeFilter.h"
+#include "vtkOFBTextureBaker.h"
+#include "vtkPLYWriter.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkXMLPolyDataWriter.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <sstream>
+
+namespace
+{
+using SystemTools = vtksys::SystemTools;
+
+// The first error event's text (VTK's message without its file and line).
+class FirstError : public vtkCommand
+{
+public:
+  static FirstError* New() { return new FirstError; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    std::string text = data ? static_cast<const char*>(data) : "";
+    const std::string::size_type start = text.find("): ");
+    text = start == std::string::npos ? text : text.substr(start + 3);
+    if (this->Text.empty())
+    {
+      this->Text = text.substr(0, text.find_last_not_of(" \n") + 1);
+    }
+  }
+  std::string Text;
+};
+}
+
+namespace ofbpaint
+{
+std::string DefaultExportPath(const std::string& meshPath, vtkPolyData* surface)
+{
+  const bool textured = surface && surface->GetPointData()->GetTCoords();
+  return SystemTools::GetFilenameWithoutLastExtension(meshPath) +
+    (textured ? "_painted.obj" : "_painted.ply");
+}
+
+bool ExportPainting(vtkPolyData* surface,
+  vtkOFB* ofb,
+  const std::string& path,
+  int textureSize,
+  std::string& message)
+{
+  const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
+  vtkNew<FirstError> errors;
+  std::ostringstream done;
+  if (ext == ".obj")
+  {
+    if (!surface->GetPointData()->GetTCoords())
+    {
+      message = "the surface has no texture coordinates to bake into: export a .ply or .vtp";
+      return false;
+    }
+    // The paint as an RGB texture (opaque: an alpha channel makes viewers sort the mesh as
+    // translucent), written by the OBJ writer beside the .obj with its .mtl.
+    vtkNew<vtkOFBTextureBaker> baker;
+    baker->AddObserver(vtkCommand::ErrorEvent, errors);
+    baker->SetInputData(surface);
+    baker->SetSourceData(ofb);
+    baker->SetTextureSize(textureSize, textureSize);
+    vtkNew<vtkImageExtractComponents> rgb;
+    rgb->SetInputConnection(baker->GetOutputPort());
+    rgb->SetComponents(0, 1, 2);
+    vtkNew<vtkOBJWriter> writer;
+    writer->AddObserver(vtkCommand::ErrorEvent, errors);
+    writer->SetInputData(0, surface);
+    writer->SetInputConnection(1, rgb->GetOutputPort());
+    writer->SetFileName(path.c_str());
+    if (!writer->Write() || !errors->Text.empty())
+    {
+      message = "cannot export '" + path + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
+      return false;
+    }
+    done << "wrote " << path << " with a " << textureSize << " x " << textureSize << " texture ("
+         << baker->GetNumberOfBakedTexels() << " texels baked)";
+    message = done.str();
+    return true;
+  }
+  if (ext != ".ply" && ext != ".vtp")
+  {
+    message = "cannot export to '" + ext + "' files (use .obj, .ply or .vtp)";
+    return false;
+  }
+  vtkNew<vtkOFBProbeFilter> probe;
+  probe->AddObserver(vtkCommand::ErrorEvent, errors);
+  probe->SetInputData(surface);
+  probe->SetSourceData(ofb);
+  probe->Update();
+  int ok = 0;
+  if (ext == ".ply")
+  {
+    vtkNew<vtkPLYWriter> writer;
+    writer->AddObserver(vtkCommand::ErrorEvent, errors);
+    writer->SetInputConnection(probe->GetOutputPort());
+    writer->SetFileName(path.c_str());
+    writer->SetArrayName("Colors");
+    writer->EnableAlphaOn();
+    ok = writer->Write();
+  }
+  else
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->AddObserver(vtkCommand::ErrorEvent, errors);
+    writer->SetInputConnection(probe->GetOutputPort());
+    writer->SetFileName(path.c_str());
+    ok = writer->Write();
+  }
+  if (!ok || !errors->Text.empty())
+  {
+    message = "cannot export '" + path + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
+    return false;
+  }
+  done << "wrote " << path << " (" << probe->GetOutput()->GetNumberOfPoints() << " points with "
+       << (ext == ".ply" ? "vertex colours" : "the sample arrays") << ")";
+  message = done.str();
+  return true;
+}
+}

@@ -1,0 +1,33 @@
+// OFBPaint's export of a painting to files other programs read (key 'x', --export):
+// a textured OBJ (the paint baked into the mesh's UV texture by vtkOFBTextureBaker),
+// a PLY with vertex colours or a VTP with every sample array as point arrays (both
+// through vtkOFBProbeFilter).
+#ifndef ofbPaintExport_h
+#define ofbPaintExport_h
+
+#include <string>
+
+class vtkOFB;
+class vtkPolyData;
+
+namespace ofbpaint
+{
+/// The default export file of a mesh: <mesh name>_painted.obj where the surface has
+/// texture coordinates, <mesh name>_painted.ply otherwise.
+std::string DefaultExportPath(const std::string& meshPath, vtkPolyData* surface);
+
+/**
+ * Write the paint of `ofb` on `surface` to `path` by its extension: .obj (the surface with
+ * its texture coordinates, a .mtl and the paint baked into a `textureSize` x `textureSize`
+ * .png beside it; the surface needs texture coordinates), .ply (vertex colours) or .vtp
+ * (every sample array). Returns false with `message` the reason; true with `message`
+ * saying what was written.
+ */
+bool ExportPainting(vtkPolyData* surface,
+  vtkOFB* ofb,
+  const std::string& path,
+  int textureSize,
+  std::string& message);
+}
+
+#endif

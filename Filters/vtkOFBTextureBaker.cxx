@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <set>
 #include <vector>
 
@@ -31,7 +32,7 @@ struct Coverage
 {
   int Width = 0;
   int Height = 0;
-  std::vector<vtkIdType> SlotOf; // per texel, -1 where no triangle covers it
+  std::vector<vtkTypeInt32> SlotOf; // per texel, -1 where no triangle covers it
   std::vector<vtkIdType> TexelOf;
   std::vector<double> Points;
   std::vector<float> Normals;
@@ -87,10 +88,10 @@ struct Coverage
         }
         const glm::dvec3 y = w0 * x[0] + w1 * x[1] + w2 * x[2];
         const vtkIdType texel = static_cast<vtkIdType>(j) * this->Width + static_cast<vtkIdType>(i);
-        vtkIdType& slot = this->SlotOf[texel];
+        vtkTypeInt32& slot = this->SlotOf[texel];
         if (slot < 0)
         {
-          slot = static_cast<vtkIdType>(this->TexelOf.size());
+          slot = static_cast<vtkTypeInt32>(this->TexelOf.size()); // texels <= 2^28
           this->TexelOf.push_back(texel);
           this->Points.resize(this->Points.size() + 3);
           this->Normals.resize(this->Normals.size() + 3);
@@ -289,6 +290,29 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
     vtkWarningMacro("Strips and lines are not baked: apply vtkTriangleFilter first.");
   }
 
+  // A texture too large for the memory gives an error, not an exception out of VTK.
+  try
+  {
+    this->Bake(mesh, ofb, source, tcoords, image, outputVector->GetInformationObject(0));
+  }
+  catch (const std::bad_alloc&)
+  {
+    image->Initialize();
+    vtkErrorMacro("Not enough memory to bake a " << w << " x " << h << " texture.");
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTextureBaker::Bake(vtkPolyData* mesh,
+  vtkOFB* ofb,
+  vtkDataArray* source,
+  vtkDataArray* tcoords,
+  vtkImageData* image,
+  vtkInformation* outInfo)
+{
+  const int w = this->TextureSize[0];
+  const int h = this->TextureSize[1];
   // The texels covered by the triangles (fans of the polygons), in cell order.
   Coverage cover;
   cover.Reset(w, h);
@@ -366,9 +390,8 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
   image->GetPointData()->SetScalars(values);
   image->GetPointData()->AddArray(mask);
   vtkDataObject::SetPointDataActiveScalarInfo(
-    outputVector->GetInformationObject(0), values->GetDataType(), values->GetNumberOfComponents());
+    outInfo, values->GetDataType(), values->GetNumberOfComponents());
   this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------

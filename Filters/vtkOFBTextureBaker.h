@@ -41,6 +41,8 @@
 #include <string> // for ArrayName
 
 class vtkDataArray;
+class vtkImageData;
+class vtkPolyData;
 class vtkOFB;
 
 class VTKOFBFILTERS_EXPORT vtkOFBTextureBaker : public vtkImageAlgorithm
@@ -116,6 +118,13 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Bake `source` into `image` (RequestData's work once its input is checked).
+  void Bake(vtkPolyData* mesh,
+    vtkOFB* ofb,
+    vtkDataArray* source,
+    vtkDataArray* tcoords,
+    vtkImageData* image,
+    vtkInformation* outInfo);
   /// The sample array to bake (ArrayName, or the active scalars, or "Colors"), or null.
   vtkDataArray* FindSourceArray(vtkOFB* ofb) const;
 

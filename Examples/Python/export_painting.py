@@ -42,7 +42,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations)
 
 import vtkofb
-from ofb_example_view import add_view_options, vivid_share
+from ofb_example_view import add_view_options, frame_camera, vivid_share
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("mesh", help="surface with texture coordinates (.obj)")
@@ -180,17 +180,11 @@ for k, mapper in enumerate(views):
     renderer.AddActor(actor)
     window.AddRenderer(renderer)
     if camera is None:
+        frame_camera(renderer, args, 1.3)
         camera = renderer.GetActiveCamera()
-        camera.SetFocalPoint(0.0, 0.0, 0.0)
-        camera.SetPosition(*[1.0 if i == (up + 1) % 3 else 0.0 for i in range(3)])
-        camera.SetViewUp(*[1.0 if i == up else 0.0 for i in range(3)])
-        camera.Azimuth(args.azimuth)
-        camera.Elevation(args.elevation)
-        renderer.ResetCamera()
-        camera.Dolly(1.3)
     else:
         renderer.SetActiveCamera(camera)
-    renderer.ResetCameraClippingRange()
+        renderer.ResetCameraClippingRange()
 window.Render()
 grab = vtkWindowToImageFilter()
 grab.SetInput(window)

@@ -32,6 +32,14 @@ def render_offscreen(actor, args, background=(0.1, 0.1, 0.15)):
     window.SetOffScreenRendering(True)
     window.SetSize(args.size, args.size)
     window.AddRenderer(renderer)
+    frame_camera(renderer, args, 1.4)
+    window.Render()
+    return window
+
+
+def frame_camera(renderer, args, dolly):
+    """Point the renderer's camera at its props from the side (up axis `args.up`, turned
+    by `args.azimuth` and `args.elevation`), reset it and move it closer by `dolly`."""
     up = "xyz".index(args.up)
     camera = renderer.GetActiveCamera()
     camera.SetFocalPoint(0.0, 0.0, 0.0)
@@ -40,10 +48,8 @@ def render_offscreen(actor, args, background=(0.1, 0.1, 0.15)):
     camera.Azimuth(args.azimuth)
     camera.Elevation(args.elevation)
     renderer.ResetCamera()
-    camera.Dolly(1.4)
+    camera.Dolly(dolly)
     renderer.ResetCameraClippingRange()
-    window.Render()
-    return window
 
 
 def save_png(window, path):

@@ -4,6 +4,7 @@
 
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
+#include "vtkFloatArray.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
@@ -88,6 +89,21 @@ public:
   std::string Errors;
   std::string Warnings;
 };
+
+/// Add a float sample array `name` holding coordinate `axis` of each sample's position.
+inline void AddCoordinateArray(vtkOFB* ofb, const char* name, int axis)
+{
+  vtkNew<vtkFloatArray> values;
+  values->SetName(name);
+  values->SetNumberOfValues(ofb->GetNumberOfSamples());
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double x[3];
+    ofb->GetSamplePosition(i, x);
+    values->SetValue(i, static_cast<float>(x[axis]));
+  }
+  ofb->GetSampleData()->AddArray(values);
+}
 
 /// Build an OFB of `mesh` on the CPU at `resolution`.
 inline vtkSmartPointer<vtkOFB> Build(vtkPolyData* mesh, int resolution)

@@ -47,16 +47,7 @@ vtkSmartPointer<vtkOFB> PaintedSphere()
       p);
     painter->Dab(p);
   }
-  vtkNew<vtkFloatArray> height;
-  height->SetName("Height");
-  height->SetNumberOfValues(ofb->GetNumberOfSamples());
-  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
-  {
-    double x[3];
-    ofb->GetSamplePosition(i, x);
-    height->SetValue(i, static_cast<float>(x[2]));
-  }
-  ofb->GetSampleData()->AddArray(height);
+  AddCoordinateArray(ofb, "Height", 2);
   return ofb;
 }
 

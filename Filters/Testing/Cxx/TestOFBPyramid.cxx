@@ -389,16 +389,7 @@ TEST(OFBPyramid, ResampleTransfersFloatArrays)
   vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 32);
   vtkSmartPointer<vtkOFB> fine = vtkofbtest::Build(sphere, 128);
   vtkSmartPointer<vtkOFB> coarse = vtkofbtest::Build(sphere, 48);
-  vtkNew<vtkFloatArray> height;
-  height->SetName("Height");
-  height->SetNumberOfTuples(fine->GetNumberOfSamples());
-  for (vtkIdType i = 0; i < fine->GetNumberOfSamples(); ++i)
-  {
-    double x[3];
-    fine->GetSamplePosition(i, x);
-    height->SetValue(i, static_cast<float>(x[2]));
-  }
-  fine->GetSampleData()->AddArray(height);
+  vtkofbtest::AddCoordinateArray(fine, "Height", 2);
   ASSERT_TRUE(vtkOFBPyramid::Resample(fine, coarse, coarse->GetCellSize()));
   vtkDataArray* out = coarse->GetSampleData()->GetArray("Height");
   ASSERT_NE(out, nullptr);

@@ -58,16 +58,7 @@ void PaintAndMarkX(vtkOFB* ofb, double radius, double bound)
     ofb->GetSamplePosition(id, x);
     painter->Dab(x);
   }
-  vtkNew<vtkFloatArray> xs;
-  xs->SetName("X");
-  xs->SetNumberOfValues(ofb->GetNumberOfSamples());
-  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
-  {
-    double x[3];
-    ofb->GetSamplePosition(i, x);
-    xs->SetValue(i, static_cast<float>(x[0]));
-  }
-  ofb->GetSampleData()->AddArray(xs);
+  AddCoordinateArray(ofb, "X", 0);
 }
 
 vtkImageData* Bake(vtkOFBTextureBaker* baker, vtkPolyData* mesh, vtkOFB* ofb, int w, int h)

@@ -1,7 +1,8 @@
 // OFBPaint: paint a surface with the mouse through its Orthogonal Fragment Buffer.
 //
 // Usage: OFBPaint [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb]
-//                 [--save paint.ofb] [--export painted.obj|.ply|.vtp] [--texture N]
+//                 [--save paint.ofb] [--import-texture image.png]
+//                 [--export painted.obj|.ply|.vtp] [--texture N]
 //                 [--width W] [--height H] [--strokes strokes.txt --image out.png]
 //                 [--play events.log]
 //
@@ -94,13 +95,15 @@ void Usage(const char* argv0)
   std::cerr
     << "Usage: " << argv0
     << " [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb] [--save paint.ofb]\n"
-       "       [--export FILE] [--texture N] [--width W] [--height H]\n"
+       "       [--import-texture IMAGE] [--export FILE] [--texture N] [--width W] [--height H]\n"
        "       [--strokes strokes.txt --image out.png]\n"
        "Paint the surface (default stanford-bunny.obj) with the mouse; 'h' lists the keys.\n"
        "  --resolution N   OFB cells along the longest side (default 1024)\n"
        "  --load FILE      start from a painted OFB saved before (key 's')\n"
        "  --save FILE      where 's' saves and 'l' loads (default <mesh name>.ofb); the\n"
        "                   headless mode saves the painted OFB there when given\n"
+       "  --import-texture IMAGE  start from the mesh's texture (PNG, JPEG, ...) projected\n"
+       "                   into the OFB through its texture coordinates\n"
        "  --export FILE    where 'x' exports the painting (default <mesh name>_painted.obj\n"
        "                   for a mesh with texture coordinates: the paint baked into its\n"
        "                   texture; else _painted.ply: vertex colours; or a .vtp); the\n"
@@ -520,6 +523,19 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
   {
     return false;
   }
+  if (!options.at("--import-texture").empty())
+  {
+    std::string message;
+    vtkSmartPointer<vtkOFB> textured =
+      ofbpaint::ImportTexture(this->Surface, this->OFB, options.at("--import-texture"), message);
+    if (!textured)
+    {
+      std::cerr << "OFBPaint: " << message << "\n";
+      return false;
+    }
+    this->UseOFB(textured);
+    std::cout << message << "\n";
+  }
   // A brush of 1.5 % of the surface's diagonal, whatever the OFB's resolution.
   rep->GetBrush()->SetRadius(0.015 * this->Surface->GetLength());
   this->ResetView(0.0, 0.0, 1.0);
@@ -624,6 +640,7 @@ int main(int argc, char* argv[])
     { "--load", "" },
     { "--save", "" },
     { "--export", "" },
+    { "--import-texture", "" },
     { "--texture", "2048" },
     { "--width", "1200" },
     { "--height", "900" },

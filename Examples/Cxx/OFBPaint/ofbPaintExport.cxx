@@ -1,12 +1,16 @@
 #include "ofbPaintExport.h"
 
 #include "vtkCommand.h"
+#include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
+#include "vtkImageReader2.h"
+#include "vtkImageReader2Factory.h"
 #include "vtkNew.h"
 #include "vtkOBJWriter.h"
 #include "vtkOFB.h"
 #include "vtkOFBProbeFilter.h"
 #include "vtkOFBTextureBaker.h"
+#include "vtkOFBTextureProjector.h"
 #include "vtkPLYWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -126,5 +130,45 @@ bool ExportPainting(vtkPolyData* surface,
        << (ext == ".ply" ? "vertex colours" : "the sample arrays") << ")";
   message = done.str();
   return true;
+}
+
+vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,
+  vtkOFB* ofb,
+  const std::string& imagePath,
+  std::string& message)
+{
+  if (!surface->GetPointData()->GetTCoords())
+  {
+    message = "the surface has no texture coordinates to import '" + imagePath + "' through";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkImageReader2> reader =
+    vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(imagePath.c_str()));
+  if (!reader)
+  {
+    message = "cannot read '" + imagePath + "' as an image";
+    return nullptr;
+  }
+  vtkNew<FirstError> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(imagePath.c_str());
+  vtkNew<vtkOFBTextureProjector> projector;
+  projector->AddObserver(vtkCommand::ErrorEvent, errors);
+  projector->SetInputData(ofb);
+  projector->SetMeshData(surface);
+  projector->SetTextureConnection(reader->GetOutputPort());
+  projector->Update();
+  if (!errors->Text.empty() || projector->GetOutput()->GetNumberOfSamples() == 0)
+  {
+    message =
+      "cannot import '" + imagePath + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
+    return nullptr;
+  }
+  vtkSmartPointer<vtkOFB> out = projector->GetOutput();
+  std::ostringstream done;
+  done << "imported " << imagePath << " into " << projector->GetNumberOfProjectedSamples()
+       << " samples";
+  message = done.str();
+  return out;
 }
 }

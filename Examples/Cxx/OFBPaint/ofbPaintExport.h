@@ -5,6 +5,8 @@
 #ifndef ofbPaintExport_h
 #define ofbPaintExport_h
 
+#include "vtkSmartPointer.h"
+
 #include <string>
 
 class vtkOFB;
@@ -27,6 +29,16 @@ bool ExportPainting(vtkPolyData* surface,
   vtkOFB* ofb,
   const std::string& path,
   int textureSize,
+  std::string& message);
+
+/**
+ * The way in (--import-texture): `ofb` with the texture image at `imagePath` (PNG, JPEG,
+ * ... as vtkImageReader2Factory reads them) projected into its colours through the
+ * surface's texture coordinates (vtkOFBTextureProjector). Null with `message` the reason.
+ */
+vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,
+  vtkOFB* ofb,
+  const std::string& imagePath,
   std::string& message);
 }
 

@@ -9,8 +9,9 @@
  * `Width`, v across `Height`, both from 0 to 1) and point normals (the surface's
  * triangle normals): with vtkOFBTextureProjector it writes an image into an OFB's
  * colours on the patch only (set the projector's RepeatTexture off, so that the samples
- * along the decal's edges take its edge texels, and a small MaximumDistance, half a
- * cell, so that the patch's rim does not spread over the surface around it).
+ * along the decal's edges take its edge texels, and a MaximumDistance of about a cell:
+ * enough for the samples between the patch's flat triangles and the curved surface, not
+ * so much that an opaque rim spreads far around it).
  *
  * The centre is moved onto the surface (its closest point). The central row is traced
  * from it both ways along the direction (projected into the tangent plane), the

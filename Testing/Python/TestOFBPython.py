@@ -26,7 +26,7 @@ SOURCE_DIR = os.path.abspath(
 CLASSES = ("vtkOFB", "vtkOFBAlgorithm", "vtkOFBSampler", "vtkOFBBuilder",
            "vtkOFBToPolyData", "vtkOFBSamplePicker", "vtkOFBWriter", "vtkOFBReader",
            "vtkOFBPyramid", "vtkOFBPolyDataMapper", "vtkOFBProbeFilter", "vtkOFBTextureBaker",
-           "vtkOFBTextureProjector")
+           "vtkOFBTextureProjector", "vtkOFBDecalPatch")
 
 
 class Events:

@@ -4,9 +4,12 @@
 
 #include "vtkAppendPolyData.h"
 #include "vtkCubeSource.h"
+#include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkOFBBrush.h"
+#include "vtkOFBDecalPatch.h"
 #include "vtkOFBPainter.h"
+#include "vtkOFBTextureProjector.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkTriangleFilter.h"
@@ -137,5 +140,88 @@ TEST(Painter, NormalAwareCannotSeparateSheetsFacingTheSameWay)
               << " far-sheet samples inside the brush painted (" << 100.0 * farPainted / far
               << " %)\n";
     EXPECT_GT(double(farPainted) / far, 0.9);
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(Painter, SurfaceAlignedDecalDoesNotLeak)
+{
+  // The surface-aligned brush (vtkOFBDecalPatch + vtkOFBTextureProjector) on the two
+  // configurations above: a 0.2 x 0.2 decal (the volume brush's diameter) centred on the
+  // near sheet paints the near sheet under it and nothing of the far one, whichever way
+  // the far sheet faces.
+  vtkNew<vtkImageData> red;
+  red->SetDimensions(1, 1, 1);
+  red->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  const unsigned char opaqueRed[4] = { 255, 0, 0, 255 };
+  vtkUnsignedCharArray::SafeDownCast(red->GetPointData()->GetScalars())
+    ->SetTypedTuple(0, opaqueRed);
+  for (int sameWay = 0; sameWay < 2; ++sameWay)
+  {
+    vtkSmartPointer<vtkPolyData> surface;
+    double top = 0.0;
+    if (sameWay)
+    {
+      vtkNew<vtkAppendPolyData> sheets;
+      for (double z : { 0.0, -0.05 })
+      {
+        vtkNew<vtkPlaneSource> plane;
+        plane->SetOrigin(-1, -1, z);
+        plane->SetPoint1(1, -1, z);
+        plane->SetPoint2(-1, 1, z);
+        sheets->AddInputConnection(plane->GetOutputPort());
+      }
+      sheets->Update();
+      surface = sheets->GetOutput();
+    }
+    else
+    {
+      vtkNew<vtkCubeSource> cube;
+      cube->SetXLength(2.0);
+      cube->SetYLength(2.0);
+      cube->SetZLength(0.05);
+      vtkNew<vtkTriangleFilter> triangles;
+      triangles->SetInputConnection(cube->GetOutputPort());
+      triangles->Update();
+      surface = triangles->GetOutput();
+      top = 0.025;
+    }
+    vtkSmartPointer<vtkOFB> ofb = Build(surface, 256);
+    const double c[3] = { 0.1, 0.05, top };
+    vtkNew<vtkOFBDecalPatch> decal;
+    decal->SetInputData(surface);
+    decal->SetCenter(c[0], c[1], c[2] + 0.001);
+    decal->SetWidth(0.2);
+    decal->SetHeight(0.2);
+    vtkNew<vtkOFBTextureProjector> projector;
+    projector->SetInputData(ofb);
+    projector->SetMeshConnection(decal->GetOutputPort());
+    projector->SetTextureData(red);
+    projector->SetMaximumDistance(1.0);
+    projector->Update();
+    vtkOFB* out = projector->GetOutput();
+    vtkIdType far = 0, farPainted = 0, near = 0, nearPainted = 0;
+    for (vtkIdType i = 0; i < out->GetNumberOfSamples(); ++i)
+    {
+      double x[3];
+      out->GetSamplePosition(i, x);
+      if (std::abs(x[0] - c[0]) > 0.09 || std::abs(x[1] - c[1]) > 0.09)
+      {
+        continue; // outside the decal's square, or at its rim
+      }
+      const bool painted = Colors(out)->GetValue(4 * i + 1) < 255;
+      const bool isNear = std::abs(x[2] - top) < 1e-6;
+      near += isNear;
+      nearPainted += isNear && painted;
+      far += !isNear;
+      farPainted += !isNear && painted;
+    }
+    ASSERT_GT(far, 100);
+    std::cout << "[ leakage ] " << (sameWay ? "sheets facing the same way" : "a thin slab")
+              << ", decal 0.2 x 0.2: " << farPainted << " of " << far
+              << " far-sheet samples under it painted, near sheet " << nearPainted << " of " << near
+              << "\n";
+    EXPECT_EQ(nearPainted, near);
+    EXPECT_EQ(farPainted, 0);
   }
 }

@@ -179,6 +179,136 @@ glm::dvec3 SamplePosition(vtkOFB* ofb, vtkIdType i)
   ofb->GetSamplePosition(i, x);
   return glm::dvec3(x[0], x[1], x[2]);
 }
+
+/// None: no triangle within reach of the sample.
+constexpr vtkTypeUInt64 NoTriangle = std::numeric_limits<vtkTypeUInt64>::max();
+
+/**
+ * Each sample's closest triangle within `reach` that it does not face away from: the
+ * smallest (squared distance, triangle) pair, packed in 64 bits for an atomic minimum
+ * (NoTriangle where none), so the same with any number of threads.
+ */
+void FindClosestTriangles(vtkOFB* input,
+  const Triangles& triangles,
+  double reach,
+  std::vector<std::atomic<vtkTypeUInt64>>& best)
+{
+  const vtkIdType n = input->GetNumberOfSamples();
+  vtkDataArray* normals = vtkOFBSampleNormals(input->GetSampleData());
+  auto* floatNormals = vtkFloatArray::FastDownCast(normals);
+  const float* sn =
+    floatNormals && normals->GetNumberOfTuples() == n ? floatNormals->GetPointer(0) : nullptr;
+  vtkSMPTools::For(0,
+    n,
+    65536,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        best[i].store(NoTriangle, std::memory_order_relaxed);
+      }
+    });
+  vtkSMPTools::For(0,
+    triangles.Size(),
+    256,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType t = first; t < last; ++t)
+      {
+        const glm::dvec3* x = &triangles.Points[3 * t];
+        const glm::dvec3 centre = (x[0] + x[1] + x[2]) / 3.0;
+        const double radius = std::sqrt(std::max({ glm::dot(x[0] - centre, x[0] - centre),
+                                glm::dot(x[1] - centre, x[1] - centre),
+                                glm::dot(x[2] - centre, x[2] - centre) })) +
+          reach;
+        const double c[3] = { centre.x, centre.y, centre.z };
+        input->ForEachSampleInSphere(c,
+          radius,
+          [&](vtkIdType i, double)
+          {
+            if (sn &&
+              glm::dot(glm::dvec3(sn[3 * i], sn[3 * i + 1], sn[3 * i + 2]), triangles.Normals[t]) <
+                0.0)
+            {
+              return;
+            }
+            const glm::dvec3 p = SamplePosition(input, i);
+            const glm::dvec3 b = ClosestOnTriangle(p, x[0], x[1], x[2]);
+            const glm::dvec3 q = b.x * x[0] + b.y * x[1] + b.z * x[2];
+            const float d2 = static_cast<float>(glm::dot(p - q, p - q));
+            if (!(d2 <= reach * reach))
+            {
+              return;
+            }
+            vtkTypeUInt32 bits;
+            std::memcpy(&bits, &d2, 4); // non-negative floats order as their bits
+            const vtkTypeUInt64 key = (vtkTypeUInt64(bits) << 32) | vtkTypeUInt64(t);
+            vtkTypeUInt64 seen = best[i].load(std::memory_order_relaxed);
+            while (key < seen && !best[i].compare_exchange_weak(seen, key))
+            {
+            }
+          });
+      }
+    });
+}
+
+/**
+ * Lay the texture at each reached sample's closest point over its colour in `rgba`;
+ * the number of samples reached.
+ */
+vtkIdType ApplyTexture(vtkOFB* input,
+  const Triangles& triangles,
+  vtkDataArray* tcoords,
+  const Texture& texture,
+  double opacity,
+  const std::vector<std::atomic<vtkTypeUInt64>>& best,
+  unsigned char* rgba)
+{
+  const vtkIdType n = input->GetNumberOfSamples();
+  std::atomic<vtkIdType> projected(0);
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      vtkIdType count = 0;
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        const vtkTypeUInt64 key = best[i].load(std::memory_order_relaxed);
+        if (key == NoTriangle)
+        {
+          continue;
+        }
+        const vtkIdType t = static_cast<vtkIdType>(key & 0xffffffffu);
+        const glm::dvec3* x = &triangles.Points[3 * t];
+        const glm::dvec3 b = ClosestOnTriangle(SamplePosition(input, i), x[0], x[1], x[2]);
+        double uv[2] = { 0.0, 0.0 };
+        for (int c = 0; c < 3; ++c)
+        {
+          for (int k = 0; k < 2; ++k)
+          {
+            uv[k] += b[c] * tcoords->GetComponent(triangles.Corners[3 * t + c], k);
+          }
+        }
+        if (!std::isfinite(uv[0]) || !std::isfinite(uv[1]))
+        {
+          continue;
+        }
+        double texel[4];
+        texture.Lookup(uv[0], uv[1], texel);
+        unsigned char* s = rgba + 4 * i;
+        const double a = opacity * texel[3] / 255.0;
+        for (int c = 0; c < 3; ++c)
+        {
+          s[c] = static_cast<unsigned char>(std::lround(s[c] + a * (texel[c] - s[c])));
+        }
+        s[3] = static_cast<unsigned char>(std::lround(s[3] + a * (255.0 - s[3])));
+        ++count;
+      }
+      projected += count;
+    });
+  return projected;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -301,123 +431,20 @@ int vtkOFBTextureProjector::RequestData(vtkInformation*,
     pd->SetScalars(out);
   }
 
-  // Each sample's closest triangle within reach (facing its way): the smallest
-  // (squared distance, triangle) pair, packed in 64 bits for an atomic minimum.
+  // Each sample's closest triangle within reach, then the texture there.
   Triangles triangles;
   triangles.Build(mesh);
-  const double reach = this->MaximumDistance * input->GetCellSize();
-  vtkDataArray* normals = vtkOFBSampleNormals(input->GetSampleData());
-  auto* floatNormals = vtkFloatArray::FastDownCast(normals);
-  const float* sn =
-    floatNormals && normals->GetNumberOfTuples() == n ? floatNormals->GetPointer(0) : nullptr;
-  constexpr vtkTypeUInt64 None = std::numeric_limits<vtkTypeUInt64>::max();
   std::vector<std::atomic<vtkTypeUInt64>> best(static_cast<size_t>(n));
-  vtkSMPTools::For(0,
-    n,
-    65536,
-    [&](vtkIdType first, vtkIdType last)
-    {
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        best[i].store(None, std::memory_order_relaxed);
-      }
-    });
-  vtkSMPTools::For(0,
-    triangles.Size(),
-    256,
-    [&](vtkIdType first, vtkIdType last)
-    {
-      for (vtkIdType t = first; t < last; ++t)
-      {
-        const glm::dvec3* x = &triangles.Points[3 * t];
-        const glm::dvec3 centre = (x[0] + x[1] + x[2]) / 3.0;
-        const double radius = std::sqrt(std::max({ glm::dot(x[0] - centre, x[0] - centre),
-                                glm::dot(x[1] - centre, x[1] - centre),
-                                glm::dot(x[2] - centre, x[2] - centre) })) +
-          reach;
-        const double c[3] = { centre.x, centre.y, centre.z };
-        input->ForEachSampleInSphere(c,
-          radius,
-          [&](vtkIdType i, double)
-          {
-            if (sn &&
-              glm::dot(glm::dvec3(sn[3 * i], sn[3 * i + 1], sn[3 * i + 2]), triangles.Normals[t]) <
-                0.0)
-            {
-              return;
-            }
-            const glm::dvec3 p = SamplePosition(input, i);
-            const glm::dvec3 b = ClosestOnTriangle(p, x[0], x[1], x[2]);
-            const glm::dvec3 q = b.x * x[0] + b.y * x[1] + b.z * x[2];
-            const float d2 = static_cast<float>(glm::dot(p - q, p - q));
-            if (!(d2 <= reach * reach))
-            {
-              return;
-            }
-            vtkTypeUInt32 bits;
-            std::memcpy(&bits, &d2, 4); // non-negative floats order as their bits
-            const vtkTypeUInt64 key = (vtkTypeUInt64(bits) << 32) | vtkTypeUInt64(t);
-            vtkTypeUInt64 seen = best[i].load(std::memory_order_relaxed);
-            while (key < seen && !best[i].compare_exchange_weak(seen, key))
-            {
-            }
-          });
-      }
-    });
+  FindClosestTriangles(input, triangles, this->MaximumDistance * input->GetCellSize(), best);
   this->UpdateProgress(0.7);
-
-  // Each reached sample takes the texture at its closest point, laid over its colour.
-  Texture texture{ texels->GetPointer(0),
+  const Texture texture{ texels->GetPointer(0),
     texels->GetNumberOfComponents(),
     dims[0],
     dims[1],
     this->RepeatTexture,
     this->InterpolateTexture };
-  const double opacity = this->Opacity;
-  unsigned char* rgba = out->GetPointer(0);
-  std::atomic<vtkIdType> projected(0);
-  vtkSMPTools::For(0,
-    n,
-    4096,
-    [&](vtkIdType first, vtkIdType last)
-    {
-      vtkIdType count = 0;
-      for (vtkIdType i = first; i < last; ++i)
-      {
-        const vtkTypeUInt64 key = best[i].load(std::memory_order_relaxed);
-        if (key == None)
-        {
-          continue;
-        }
-        const vtkIdType t = static_cast<vtkIdType>(key & 0xffffffffu);
-        const glm::dvec3* x = &triangles.Points[3 * t];
-        const glm::dvec3 b = ClosestOnTriangle(SamplePosition(input, i), x[0], x[1], x[2]);
-        double uv[2] = { 0.0, 0.0 };
-        for (int c = 0; c < 3; ++c)
-        {
-          for (int k = 0; k < 2; ++k)
-          {
-            uv[k] += b[c] * tcoords->GetComponent(triangles.Corners[3 * t + c], k);
-          }
-        }
-        if (!std::isfinite(uv[0]) || !std::isfinite(uv[1]))
-        {
-          continue;
-        }
-        double texel[4];
-        texture.Lookup(uv[0], uv[1], texel);
-        unsigned char* s = rgba + 4 * i;
-        const double a = opacity * texel[3] / 255.0;
-        for (int c = 0; c < 3; ++c)
-        {
-          s[c] = static_cast<unsigned char>(std::lround(s[c] + a * (texel[c] - s[c])));
-        }
-        s[3] = static_cast<unsigned char>(std::lround(s[3] + a * (255.0 - s[3])));
-        ++count;
-      }
-      projected += count;
-    });
-  this->NumberOfProjectedSamples = projected;
+  this->NumberOfProjectedSamples =
+    ApplyTexture(input, triangles, tcoords, texture, this->Opacity, best, out->GetPointer(0));
   this->UpdateProgress(1.0);
   return 1;
 }

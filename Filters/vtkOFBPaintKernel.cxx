@@ -324,6 +324,39 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
 }
 
 //------------------------------------------------------------------------------
+vtkIdType vtkOFBPaintKernel::SetColors(const vtkIdType* ids,
+  const unsigned char* rgba,
+  vtkIdType count,
+  bool recordUndo,
+  std::vector<vtkOFBColorRecord>& colorUndo)
+{
+  unsigned char* colors = this->Colors->GetPointer(0);
+  DabWork work{ &this->Work->Records.Local(), nullptr };
+  vtkIdType changed = 0;
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    const vtkIdType i = ids[k];
+    unsigned char* c = colors + 4 * i;
+    if (std::memcmp(c, rgba + 4 * k, 4) == 0)
+    {
+      continue;
+    }
+    this->InitialColor(i, work); // keep the initial value before the first change
+    if (recordUndo && !(this->Flags[i] & ColorRecorded))
+    {
+      colorUndo.push_back({ static_cast<vtkTypeUInt32>(i), { c[0], c[1], c[2], c[3] } });
+      this->Flags[i] |= ColorRecorded;
+    }
+    this->MarkChangedInWork(i, work);
+    std::memcpy(c, rgba + 4 * k, 4);
+    ++changed;
+  }
+  this->FlushChanged(work);
+  this->ChangedChunks.fetch_or(work.ChangedChunks, std::memory_order_relaxed);
+  return changed;
+}
+
+//------------------------------------------------------------------------------
 bool vtkOFBPaintKernel::CentreNormal(const vtkOFBDab& dab, double n[3]) const
 {
   glm::dvec3 v;

@@ -118,6 +118,17 @@ public:
   vtkIdType CollectChanged(std::vector<std::pair<vtkIdType, vtkIdType>>& ranges,
     size_t maxRanges = 0);
 
+  /**
+   * Write `count` given colours (4 bytes each) into samples `ids` (each in range),
+   * appending the previous values of samples not yet recorded in the current undo step to
+   * `colorUndo` when `recordUndo`; marks the changed ones. Returns how many changed.
+   */
+  vtkIdType SetColors(const vtkIdType* ids,
+    const unsigned char* rgba,
+    vtkIdType count,
+    bool recordUndo,
+    std::vector<vtkOFBColorRecord>& colorUndo);
+
   /// Mark `ids` changed in this call (undo and redo).
   void MarkChanged(vtkTypeUInt32 id);
 

@@ -9,6 +9,7 @@
 #include "vtkOFBDabArrays.h"
 #include "vtkOFBHugePages.h"
 #include "vtkOFBPaintKernel.h"
+#include "vtkOFBPainterInternals.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -30,74 +31,11 @@ namespace
 // Samples of the Custom falloff's table.
 constexpr int CustomTableSize = 4097;
 
-/// One undo (or redo) step: the other value of every sample it changed.
-struct Step
-{
-  std::vector<vtkOFBColorRecord> Colors;
-  std::vector<vtkOFBNormalRecord> Normals;
-
-  bool Empty() const { return this->Colors.empty() && this->Normals.empty(); }
-  vtkIdType Bytes() const
-  {
-    return static_cast<vtkIdType>(this->Colors.size() * sizeof(vtkOFBColorRecord) +
-      this->Normals.size() * sizeof(vtkOFBNormalRecord));
-  }
-  void Clear()
-  {
-    this->Colors.clear();
-    this->Normals.clear();
-  }
-};
-
 bool Finite3(const double p[3])
 {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 }
-
-struct vtkOFBPainter::Internals
-{
-  vtkSmartPointer<vtkOFB> OFB;
-  vtkSmartPointer<vtkOFBBrush> Brush;
-  vtkSmartPointer<vtkPoints> StrokeDabs;
-  vtkOFBPaintKernel Kernel;
-
-  // What the OFB looked like after this painter's last change.
-  bool Ready = false;
-  vtkMTimeType LastMTime = 0;
-  vtkMTimeType LastStructureTime = 0;
-  vtkIdType LastNumberOfSamples = 0;
-  vtkUnsignedCharArray* LastColors = nullptr;
-  vtkFloatArray* LastNormals = nullptr;
-
-  std::deque<Step> UndoSteps;
-  std::deque<Step> RedoSteps;
-  Step Open;
-
-  // Stroke state: the last point given, the last dab and the path length since.
-  bool HasLastPoint = false;
-  double LastPoint[3] = { 0.0, 0.0, 0.0 };
-  double LastPressure = 1.0;
-  bool HasLastDab = false;
-  double LastDab[3] = { 0.0, 0.0, 0.0 };
-  double SinceLastDab = 0.0;
-
-  std::vector<std::pair<vtkIdType, vtkIdType>> Ranges;
-
-  vtkIdType HistoryBytes() const
-  {
-    vtkIdType b = this->Open.Bytes();
-    for (const auto& s : this->UndoSteps)
-    {
-      b += s.Bytes();
-    }
-    for (const auto& s : this->RedoSteps)
-    {
-      b += s.Bytes();
-    }
-    return b;
-  }
-};
 
 //------------------------------------------------------------------------------
 vtkOFBPainter::vtkOFBPainter()
@@ -645,7 +583,7 @@ void vtkOFBPainter::CloseStep()
   trim(impl.Open.Colors);
   trim(impl.Open.Normals);
   impl.UndoSteps.push_back(std::move(impl.Open));
-  impl.Open = Step();
+  impl.Open = vtkofbpainter::Step();
   impl.RedoSteps.clear();
   this->EnforceUndoLimit();
 }
@@ -675,8 +613,8 @@ vtkIdType vtkOFBPainter::Restore(bool undo)
     this->EndStroke();
   }
   Internals& impl = *this->Impl;
-  std::deque<Step>& from = undo ? impl.UndoSteps : impl.RedoSteps;
-  std::deque<Step>& to = undo ? impl.RedoSteps : impl.UndoSteps;
+  std::deque<vtkofbpainter::Step>& from = undo ? impl.UndoSteps : impl.RedoSteps;
+  std::deque<vtkofbpainter::Step>& to = undo ? impl.RedoSteps : impl.UndoSteps;
   if (from.empty() || !impl.OFB)
   {
     return 0;
@@ -686,7 +624,7 @@ vtkIdType vtkOFBPainter::Restore(bool undo)
   {
     return 0;
   }
-  Step step = std::move(from.back());
+  vtkofbpainter::Step step = std::move(from.back());
   from.pop_back();
   // Swap each recorded value with the current one: the step becomes its inverse.
   if (!step.Colors.empty())

@@ -72,8 +72,10 @@
 
 class vtkOFB;
 class vtkOFBBrush;
+class vtkIdTypeArray;
 class vtkPoints;
 class vtkPolyData;
+class vtkUnsignedCharArray;
 struct vtkOFBDab;
 
 class VTKOFBFILTERS_EXPORT vtkOFBPainter : public vtkObject
@@ -121,6 +123,16 @@ public:
    * the class description. Returns the number of samples changed.
    */
   vtkIdType Dabs(vtkPolyData* dabs);
+
+  /**
+   * Write colours computed elsewhere into the samples `ids` (RGBA bytes `colors`, one
+   * tuple per id: a decal stamped with vtkOFBTextureProjector, a script's own paint) as
+   * paint of this painter: one undo step (part of the stroke when one is open), only
+   * the samples that change recorded and marked modified. Returns the number of samples
+   * changed; an id outside the OFB or a tuple count unlike the ids' is an error (nothing
+   * written).
+   */
+  vtkIdType SetSampleColors(vtkIdTypeArray* ids, vtkUnsignedCharArray* colors);
 
   ///@{
   /**

@@ -170,3 +170,75 @@ TEST(PaintMarks, SmallCallsOnALargeOFBMarkExactly)
     }
   }
 }
+
+//------------------------------------------------------------------------------
+TEST(PaintMarks, SetSampleColorsIsUndoablePaint)
+{
+  // Colours computed elsewhere (every 37th of the first 3,700 samples, a colour from its
+  // id: 100 runs, fewer than the 128 ranges a call marks exactly) written
+  // through the painter: exactly those samples change and are marked, undo restores the
+  // colours bit for bit and redo writes them again; bad ids write nothing.
+  vtkSmartPointer<vtkOFB> ofb = vtkofbtest::Build(vtkofbtest::MakeSphere(1.0, 32), 64);
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(ofb);
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
+  ASSERT_NE(colors, nullptr);
+  const std::vector<unsigned char> before(
+    colors->GetPointer(0), colors->GetPointer(0) + 4 * ofb->GetNumberOfSamples());
+  vtkNew<vtkIdTypeArray> ids;
+  vtkNew<vtkUnsignedCharArray> rgba;
+  rgba->SetNumberOfComponents(4);
+  ASSERT_GT(ofb->GetNumberOfSamples(), 3700);
+  for (vtkIdType i = 0; i < 3700; i += 37)
+  {
+    ids->InsertNextValue(i);
+    const unsigned char c[4] = { static_cast<unsigned char>(i % 251), 0, 200, 255 };
+    rgba->InsertNextTypedTuple(c);
+  }
+  vtkTimeStamp t;
+  t.Modified();
+  const vtkIdType changed = painter->SetSampleColors(ids, rgba);
+  EXPECT_EQ(changed, ids->GetNumberOfTuples());
+  vtkNew<vtkIdTypeArray> ranges;
+  ofb->GetSampleRangesModifiedSince(t.GetMTime(), ranges);
+  vtkIdType marked = 0;
+  for (vtkIdType r = 0; r < ranges->GetNumberOfTuples(); ++r)
+  {
+    marked += ranges->GetValue(2 * r + 1) - ranges->GetValue(2 * r);
+  }
+  EXPECT_EQ(marked, changed); // no sample between them
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    const unsigned char* c = colors->GetPointer(4 * i);
+    if (i % 37 == 0 && i < 3700)
+    {
+      ASSERT_EQ(c[0], i % 251);
+      ASSERT_EQ(c[2], 200);
+    }
+    else
+    {
+      ASSERT_EQ(std::memcmp(c, before.data() + 4 * i, 4), 0) << i;
+    }
+  }
+  const std::vector<unsigned char> after(
+    colors->GetPointer(0), colors->GetPointer(0) + 4 * ofb->GetNumberOfSamples());
+  ASSERT_TRUE(painter->Undo());
+  EXPECT_EQ(std::memcmp(colors->GetPointer(0), before.data(), before.size()), 0);
+  ASSERT_TRUE(painter->Redo());
+  EXPECT_EQ(std::memcmp(colors->GetPointer(0), after.data(), after.size()), 0);
+  // The same colours again change nothing.
+  EXPECT_EQ(painter->SetSampleColors(ids, rgba), 0);
+
+  vtkNew<vtkofbtest::MessageObserver> o;
+  o->Watch(painter);
+  ids->SetValue(3, ofb->GetNumberOfSamples());
+  rgba->SetTypedComponent(0, 1, 77);
+  EXPECT_EQ(painter->SetSampleColors(ids, rgba), 0);
+  EXPECT_NE(o->Errors.find("outside"), std::string::npos) << o->Errors;
+  EXPECT_EQ(colors->GetTypedComponent(0, 1), 0); // nothing written
+  o->Clear();
+  rgba->SetNumberOfTuples(2);
+  EXPECT_EQ(painter->SetSampleColors(ids, rgba), 0);
+  EXPECT_NE(o->Errors.find("one RGBA tuple an id"), std::string::npos) << o->Errors;
+  EXPECT_EQ(painter->SetSampleColors(nullptr, rgba), 0);
+}

@@ -1,7 +1,7 @@
 // OFBPaint: paint a surface with the mouse through its Orthogonal Fragment Buffer.
 //
 // Usage: OFBPaint [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb]
-//                 [--save paint.ofb] [--import-texture image.png]
+//                 [--save paint.ofb] [--import-texture image.png] [--decal image.png]
 //                 [--export painted.obj|.ply|.vtp] [--texture N]
 //                 [--width W] [--height H] [--strokes strokes.txt --image out.png]
 //                 [--play events.log]
@@ -12,6 +12,7 @@
 // 'h' shows the keys. With --strokes and --image it runs without a window on screen:
 // it replays the stroke file (format in ofbPaintStrokes.h) and writes the picture.
 
+#include "ofbPaintDecal.h"
 #include "ofbPaintExport.h"
 #include "ofbPaintStrokes.h"
 
@@ -21,6 +22,7 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkInteractorEventRecorder.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkOFB.h"
@@ -95,7 +97,8 @@ void Usage(const char* argv0)
   std::cerr
     << "Usage: " << argv0
     << " [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb] [--save paint.ofb]\n"
-       "       [--import-texture IMAGE] [--export FILE] [--texture N] [--width W] [--height H]\n"
+       "       [--import-texture IMAGE] [--decal IMAGE] [--export FILE] [--texture N]\n"
+       "       [--width W] [--height H]\n"
        "       [--strokes strokes.txt --image out.png]\n"
        "Paint the surface (default stanford-bunny.obj) with the mouse; 'h' lists the keys.\n"
        "  --resolution N   OFB cells along the longest side (default 1024)\n"
@@ -104,6 +107,8 @@ void Usage(const char* argv0)
        "                   headless mode saves the painted OFB there when given\n"
        "  --import-texture IMAGE  start from the mesh's texture (PNG, JPEG, ...) projected\n"
        "                   into the OFB through its texture coordinates\n"
+       "  --decal IMAGE    what 'k' stamps at the cursor, 4 brush radii wide, upright on\n"
+       "                   screen (default: a badge with an arrow)\n"
        "  --export FILE    where 'x' exports the painting (default <mesh name>_painted.obj\n"
        "                   for a mesh with texture coordinates: the paint baked into its\n"
        "                   texture; else _painted.ply: vertex colours; or a .vtp); the\n"
@@ -221,6 +226,11 @@ private:
   int Screenshots = 0;
   bool SaveRequested = false;   // --save given: the headless mode saves the painted OFB
   bool ExportRequested = false; // --export given: the headless mode exports the painting
+  ofbpaint::DecalStamper Decals;
+
+public:
+  /// Stamp the decal centred at surface point p; the samples changed or -1.
+  long long StampDecal(const double p[3], std::string& message);
 };
 
 bool PaintApp::BuildOFB(int resolution)
@@ -445,6 +455,21 @@ void PaintApp::OnKey(vtkObject*, unsigned long, void* clientData, void*)
         self->Screenshot(name.str()) ? "wrote " + name.str() : "could not write " + name.str();
       break;
     }
+    case 'k':
+    {
+      vtkOFBPainterRepresentation* rep = self->Widget->GetPainterRepresentation();
+      const int* xy = self->Interactor->GetEventPosition();
+      double p[3];
+      if (rep->ComputeInteractionState(xy[0], xy[1]) != vtkOFBPainterRepresentation::OnSurface)
+      {
+        message = "move the mouse onto the surface to stamp the decal";
+        break;
+      }
+      rep->GetCursorPosition(p);
+      const long long changed = self->StampDecal(p, message);
+      message = changed < 0 ? message : "decal: " + std::to_string(changed) + " samples";
+      break;
+    }
     case 'x':
       ofbpaint::ExportPainting(
         self->Surface, self->OFB, self->ExportPath, self->TextureSize, message);
@@ -523,6 +548,15 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
   {
     return false;
   }
+  if (!options.at("--decal").empty())
+  {
+    std::string message;
+    if (!this->Decals.LoadImage(options.at("--decal"), message))
+    {
+      std::cerr << "OFBPaint: " << message << "\n";
+      return false;
+    }
+  }
   if (!options.at("--import-texture").empty())
   {
     std::string message;
@@ -591,6 +625,19 @@ int PaintApp::RunInteractive(const std::string& play)
   return EXIT_SUCCESS;
 }
 
+long long PaintApp::StampDecal(const double p[3], std::string& message)
+{
+  // Upright on screen: the decal's right along the camera's (direction x up).
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
+  double d[3], up[3], right[3];
+  camera->GetDirectionOfProjection(d);
+  camera->GetViewUp(up);
+  vtkMath::Cross(d, up, right);
+  vtkOFBPainterRepresentation* rep = this->Widget->GetPainterRepresentation();
+  const double size = 4.0 * rep->GetBrush()->GetRadius();
+  return this->Decals.Stamp(this->Surface, rep->GetPainter(), p, right, size, message);
+}
+
 int PaintApp::RunHeadless(const std::string& strokes, const std::string& image)
 {
   ofbpaint::StrokeStatistics statistics;
@@ -602,7 +649,8 @@ int PaintApp::RunHeadless(const std::string& strokes, const std::string& image)
     [this](double azimuth, double elevation, double zoom)
     { this->ResetView(azimuth, elevation, zoom); },
     statistics,
-    error);
+    error,
+    [this](const double p[3], std::string& message) { return this->StampDecal(p, message); });
   if (!ok)
   {
     std::cerr << "OFBPaint: " << error << "\n";
@@ -641,6 +689,7 @@ int main(int argc, char* argv[])
     { "--save", "" },
     { "--export", "" },
     { "--import-texture", "" },
+    { "--decal", "" },
     { "--texture", "2048" },
     { "--width", "1200" },
     { "--height", "900" },

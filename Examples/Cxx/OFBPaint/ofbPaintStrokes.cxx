@@ -70,11 +70,13 @@ public:
   Replay(vtkOFBPainter* painter,
     const PixelPicker& pick,
     const ViewSetter& view,
+    const DecalStamp& stamp,
     StrokeStatistics& statistics)
     : Painter(painter)
     , Brush(painter->GetBrush())
     , Pick(pick)
     , View(view)
+    , Stamp(stamp)
     , Statistics(statistics)
   {
   }
@@ -95,14 +97,39 @@ private:
   bool Setting(const std::string& command, const std::vector<double>& v, std::string& error);
   bool Named(const std::string& command, const std::string& name, std::string& error);
   bool Point(const double p[3], double pressure);
+  /// `decal PX PY` at surface point p (`wellFormed`: two values were given).
+  bool Decal(const double p[3], bool wellFormed, std::string& error);
 
   vtkOFBPainter* Painter;
   vtkOFBBrush* Brush;
   const PixelPicker& Pick;
   const ViewSetter& View;
+  const DecalStamp& Stamp;
   StrokeStatistics& Statistics;
   bool InStroke = false;
 };
+
+bool Replay::Decal(const double p[3], bool wellFormed, std::string& error)
+{
+  if (!wellFormed)
+  {
+    error = "a decal is 'decal PX PY'";
+    return false;
+  }
+  if (!this->Stamp)
+  {
+    error = "no decal to stamp here";
+    return false;
+  }
+  this->EndStroke();
+  const long long changed = this->Stamp(p, error);
+  if (changed < 0)
+  {
+    return false;
+  }
+  this->Statistics.SamplesChanged += changed;
+  return true;
+}
 
 bool Replay::Point(const double p[3], double pressure)
 {
@@ -245,7 +272,8 @@ bool Replay::Line(const std::string& text, std::string& error)
                            : (error = "'" + command + "' needs a name", false);
   }
   std::vector<double> v;
-  const bool pixel = command == "pixel";
+  const bool decal = command == "decal";
+  const bool pixel = command == "pixel" || decal;
   const bool point = !pixel &&
     (std::isdigit(static_cast<unsigned char>(command[0])) || command[0] == '-' ||
       command[0] == '+' || command[0] == '.');
@@ -274,6 +302,10 @@ bool Replay::Line(const std::string& text, std::string& error)
       ++this->Statistics.SkippedPoints;
       return true;
     }
+    if (decal)
+    {
+      return this->Decal(p, v.size() == 2, error);
+    }
     return this->Point(p, std::min(1.0, std::max(0.0, pressure)));
   }
   return this->Setting(command, v, error);
@@ -285,7 +317,8 @@ bool ReplayStrokes(const std::string& path,
   const PixelPicker& pick,
   const ViewSetter& view,
   StrokeStatistics& statistics,
-  std::string& error)
+  std::string& error,
+  const DecalStamp& stamp)
 {
   std::ifstream in(path);
   if (!in)
@@ -298,7 +331,7 @@ bool ReplayStrokes(const std::string& path,
     error = path + ": no painter, OFB or brush to replay on";
     return false;
   }
-  Replay replay(painter, pick, view, statistics);
+  Replay replay(painter, pick, view, stamp, statistics);
   std::string line;
   for (int number = 1; std::getline(in, line); ++number)
   {

@@ -21,6 +21,8 @@
 //                            from its top-left corner (skipped, with a note, off the surface)
 //   end                      end the stroke (also ended by 'stroke' or the end of the file)
 //   undo / redo              undo or redo the last stroke
+//   decal PX PY              stamp the decal centred on the surface at pixel (PX, PY) (OFBPaint:
+//                            --decal's image, or its badge, 4 brush radii wide; one undo step)
 //
 // A point outside a stroke paints a single dab there. Pressure (default 1) scales the
 // strength (see vtkOFBBrush::PressureAffectsStrength).
@@ -47,6 +49,8 @@ struct StrokeStatistics
 using PixelPicker = std::function<bool(double x, double y, double point[3])>;
 /// Turns the camera: azimuth and elevation in degrees from the default view, zoom factor.
 using ViewSetter = std::function<void(double azimuth, double elevation, double zoom)>;
+/// Stamps the decal centred at a surface point; the samples changed, or -1 (`message` set).
+using DecalStamp = std::function<long long(const double point[3], std::string& message)>;
 
 /// Replay the stroke file `path` on `painter` (which has an OFB and a brush). Returns
 /// false with `error` set to "FILE:LINE: message" on a bad line or an unreadable file;
@@ -56,7 +60,8 @@ bool ReplayStrokes(const std::string& path,
   const PixelPicker& pick,
   const ViewSetter& view,
   StrokeStatistics& statistics,
-  std::string& error);
+  std::string& error,
+  const DecalStamp& stamp = nullptr);
 }
 
 #endif

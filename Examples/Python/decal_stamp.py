@@ -26,15 +26,14 @@ import sys
 import numpy as np
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkIOGeometry import vtkOBJReader
-from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import vtkActor
 
 import vtkofb
-from ofb_example_view import add_view_options, render_offscreen, save_png, vivid_share
+from ofb_example_view import (add_view_options, read_surface, render_offscreen, save_png,
+                              vivid_share)
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("mesh", help="surface to decorate (.obj or .ply)")
+parser.add_argument("mesh", help="surface to decorate (.obj, .ply, .stl or .vtp)")
 parser.add_argument("png", help="image to write")
 parser.add_argument("--resolution", type=int, default=1024)
 parser.add_argument("--decals", type=int, default=7)
@@ -43,12 +42,7 @@ parser.add_argument("--check", action="store_true")
 args = parser.parse_args()
 
 # 1. The surface and its OFB.
-reader = vtkPLYReader() if args.mesh.endswith(".ply") else vtkOBJReader()
-reader.SetFileName(args.mesh)
-reader.Update()
-mesh = reader.GetOutput()
-if mesh.GetNumberOfPolys() == 0:
-    sys.exit(f"{args.mesh}: no polygons")
+mesh = read_surface(args.mesh)
 sampler = vtkofb.vtkOFBSampler()
 sampler.SetInputData(mesh)
 sampler.SetResolution(args.resolution)

@@ -1,15 +1,34 @@
-"""The plumbing the Python examples share, kept out of their pipelines: the view options,
+"""The plumbing the Python examples share, kept out of their pipelines: reading a surface, the view options,
 an off-screen window that frames the surface, its picture written as a PNG (and returned
 as an array, for the examples' --check), and how much of a picture is vivid colour.
 
 The examples import it from their own folder (Python puts a script's folder on sys.path).
 """
 
+import os
+import sys
+
 import numpy as np
 from vtkmodules.util import numpy_support
+from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
 from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkIOPLY import vtkPLYReader
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow, vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations)
+
+
+def read_surface(path):
+    """The surface of an .obj (the default), .ply, .stl or .vtp file; exits with a message
+    when it has no polygons."""
+    readers = {".ply": vtkPLYReader, ".stl": vtkSTLReader, ".vtp": vtkXMLPolyDataReader}
+    reader = readers.get(os.path.splitext(path)[1].lower(), vtkOBJReader)()
+    reader.SetFileName(path)
+    reader.Update()
+    mesh = reader.GetOutput()
+    if mesh.GetNumberOfPolys() == 0:
+        sys.exit(f"{path}: no polygons")
+    return mesh
 
 
 def add_view_options(parser, azimuth=0.0):

@@ -33,13 +33,11 @@ from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkFiltersGeneral import vtkOBBTree
-from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
-from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import vtkActor
 
 import vtkofb
-from ofb_example_view import add_view_options, render_offscreen, save_png, vivid_share
+from ofb_example_view import (add_view_options, read_surface, render_offscreen, save_png,
+                              vivid_share)
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("mesh", help="surface to paint (.obj, .ply, .stl or .vtp)")
@@ -52,13 +50,7 @@ parser.add_argument("--check", action="store_true")
 args = parser.parse_args()
 
 # 1. Read the surface.
-readers = {".ply": vtkPLYReader, ".stl": vtkSTLReader, ".vtp": vtkXMLPolyDataReader}
-reader = readers.get(args.mesh[args.mesh.rfind("."):].lower(), vtkOBJReader)()
-reader.SetFileName(args.mesh)
-reader.Update()
-mesh = reader.GetOutput()
-if mesh.GetNumberOfPolys() == 0:
-    sys.exit(f"{args.mesh}: no polygons")
+mesh = read_surface(args.mesh)
 
 # 2. The OFB (built on the GPU where VTK's OpenGL context allows it, else on the CPU).
 builder = vtkofb.vtkOFBBuilder()

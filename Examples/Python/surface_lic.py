@@ -26,15 +26,13 @@ import sys
 import numpy as np
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkLookupTable
-from vtkmodules.vtkIOGeometry import vtkOBJReader
-from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import vtkActor
 
 import vtkofb
-from ofb_example_view import add_view_options, render_offscreen, save_png
+from ofb_example_view import add_view_options, read_surface, render_offscreen, save_png
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("mesh", help="surface to show (.obj or .ply)")
+parser.add_argument("mesh", help="surface to show (.obj, .ply, .stl or .vtp)")
 parser.add_argument("png", help="image to write")
 parser.add_argument("--resolution", type=int, default=512)
 parser.add_argument("--steps", type=int, default=20)
@@ -52,12 +50,7 @@ parser.add_argument("--check", action="store_true")
 args = parser.parse_args()
 
 # 1. Read the surface.
-reader = vtkPLYReader() if args.mesh.endswith(".ply") else vtkOBJReader()
-reader.SetFileName(args.mesh)
-reader.Update()
-mesh = reader.GetOutput()
-if mesh.GetNumberOfPolys() == 0:
-    sys.exit(f"{args.mesh}: no polygons")
+mesh = read_surface(args.mesh)
 
 # 2. The vector field: a rotation about a tilted axis through the centre of the mesh,
 #    and a scalar to colour by (its speed).

@@ -10,6 +10,7 @@
 #include "vtkOFB.h"
 #include "vtkOFBReadMesh.h"
 #include "vtkOFBSampler.h"
+#include "vtkPlaneSource.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
@@ -89,6 +90,20 @@ public:
   std::string Errors;
   std::string Warnings;
 };
+
+/// A 2 x 2 plane at z = 0, normal +z, of `resolution` x `resolution` quads, whose texture
+/// coordinates map [0, 1]^2 onto [-1, 1]^2.
+inline vtkSmartPointer<vtkPolyData> MakeTexturedPlane(int resolution)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(resolution, resolution);
+  plane->SetOrigin(-1, -1, 0);
+  plane->SetPoint1(1, -1, 0);
+  plane->SetPoint2(-1, 1, 0);
+  plane->Update();
+  vtkSmartPointer<vtkPolyData> out = plane->GetOutput();
+  return out;
+}
 
 /// Add a float sample array `name` holding coordinate `axis` of each sample's position.
 inline void AddCoordinateArray(vtkOFB* ofb, const char* name, int axis)

@@ -28,13 +28,10 @@ vtkUnsignedCharArray* Colors(vtkOFB* ofb)
 {
   return vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
 }
-}
 
-//------------------------------------------------------------------------------
-TEST(Painter, NormalAwareLimitsLeakageThroughAThinWall)
+/// A thin slab: two 2 x 2 sheets 0.05 apart facing away from each other (top +z at 0.025).
+vtkSmartPointer<vtkPolyData> ThinSlab()
 {
-  // A thin slab: two parallel sheets (top +z, bottom -z) closer than the radius,
-  // the paper's colour leakage (Fig. 5).
   vtkNew<vtkCubeSource> cube;
   cube->SetXLength(2.0);
   cube->SetYLength(2.0);
@@ -42,7 +39,34 @@ TEST(Painter, NormalAwareLimitsLeakageThroughAThinWall)
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputConnection(cube->GetOutputPort());
   triangles->Update();
-  vtkSmartPointer<vtkOFB> base = Build(triangles->GetOutput(), 256);
+  vtkSmartPointer<vtkPolyData> out = triangles->GetOutput();
+  return out;
+}
+
+/// Two 2 x 2 sheets at z = 0 and z = -0.05, both facing +z.
+vtkSmartPointer<vtkPolyData> SheetsFacingTheSameWay()
+{
+  vtkNew<vtkAppendPolyData> sheets;
+  for (double z : { 0.0, -0.05 })
+  {
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(-1, -1, z);
+    plane->SetPoint1(1, -1, z);
+    plane->SetPoint2(-1, 1, z);
+    sheets->AddInputConnection(plane->GetOutputPort());
+  }
+  sheets->Update();
+  vtkSmartPointer<vtkPolyData> out = sheets->GetOutput();
+  return out;
+}
+}
+
+//------------------------------------------------------------------------------
+TEST(Painter, NormalAwareLimitsLeakageThroughAThinWall)
+{
+  // A thin slab: two parallel sheets (top +z, bottom -z) closer than the radius,
+  // the paper's colour leakage (Fig. 5).
+  vtkSmartPointer<vtkOFB> base = Build(ThinSlab(), 256);
   const double r = 0.1; // two sheet distances
   const double c[3] = { 0.1, 0.05, 0.025 };
   double share[2];
@@ -97,18 +121,8 @@ TEST(Painter, NormalAwareCannotSeparateSheetsFacingTheSameWay)
 {
   // Two parallel sheets 0.05 apart facing the same way (+z), brush radius 0.1:
   // the normals agree, so the normal-aware brush leaks as the plain one does; only
-  // a surface-aligned brush (a later issue) tells them apart.
-  vtkNew<vtkAppendPolyData> sheets;
-  for (double z : { 0.0, -0.05 })
-  {
-    vtkNew<vtkPlaneSource> plane;
-    plane->SetOrigin(-1, -1, z);
-    plane->SetPoint1(1, -1, z);
-    plane->SetPoint2(-1, 1, z);
-    sheets->AddInputConnection(plane->GetOutputPort());
-  }
-  sheets->Update();
-  vtkSmartPointer<vtkOFB> base = Build(sheets->GetOutput(), 256);
+  // a surface-aligned brush tells them apart (SurfaceAlignedDecalDoesNotLeak below).
+  vtkSmartPointer<vtkOFB> base = Build(SheetsFacingTheSameWay(), 256);
   const double r = 0.1;
   const double c[3] = { 0.1, 0.05, 0.0 };
   for (int aware = 0; aware < 2; ++aware)
@@ -158,34 +172,8 @@ TEST(Painter, SurfaceAlignedDecalDoesNotLeak)
     ->SetTypedTuple(0, opaqueRed);
   for (int sameWay = 0; sameWay < 2; ++sameWay)
   {
-    vtkSmartPointer<vtkPolyData> surface;
-    double top = 0.0;
-    if (sameWay)
-    {
-      vtkNew<vtkAppendPolyData> sheets;
-      for (double z : { 0.0, -0.05 })
-      {
-        vtkNew<vtkPlaneSource> plane;
-        plane->SetOrigin(-1, -1, z);
-        plane->SetPoint1(1, -1, z);
-        plane->SetPoint2(-1, 1, z);
-        sheets->AddInputConnection(plane->GetOutputPort());
-      }
-      sheets->Update();
-      surface = sheets->GetOutput();
-    }
-    else
-    {
-      vtkNew<vtkCubeSource> cube;
-      cube->SetXLength(2.0);
-      cube->SetYLength(2.0);
-      cube->SetZLength(0.05);
-      vtkNew<vtkTriangleFilter> triangles;
-      triangles->SetInputConnection(cube->GetOutputPort());
-      triangles->Update();
-      surface = triangles->GetOutput();
-      top = 0.025;
-    }
+    vtkSmartPointer<vtkPolyData> surface = sameWay ? SheetsFacingTheSameWay() : ThinSlab();
+    const double top = sameWay ? 0.0 : 0.025;
     vtkSmartPointer<vtkOFB> ofb = Build(surface, 256);
     const double c[3] = { 0.1, 0.05, top };
     vtkNew<vtkOFBDecalPatch> decal;

@@ -24,17 +24,10 @@ using namespace vtkofbtest;
 
 namespace
 {
-/// A 2 x 2 plane at z = 0 whose texture coordinates map [0, 1]^2 onto [-1, 1]^2.
+/// The textured plane of the tests.
 vtkSmartPointer<vtkPolyData> Plane()
 {
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetResolution(8, 8);
-  plane->SetOrigin(-1, -1, 0);
-  plane->SetPoint1(1, -1, 0);
-  plane->SetPoint2(-1, 1, 0);
-  plane->Update();
-  vtkSmartPointer<vtkPolyData> out = plane->GetOutput();
-  return out;
+  return MakeTexturedPlane(8);
 }
 
 /// Paint random dabs on `ofb`, and add a float array "X", the x of each sample.

@@ -1,10 +1,10 @@
 #include "ofbPaintDecal.h"
+#include "ofbPaintErrors.h"
+#include "ofbPaintExport.h"
 
 #include "vtkCommand.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
-#include "vtkImageReader2.h"
-#include "vtkImageReader2Factory.h"
 #include "vtkOFB.h"
 #include "vtkOFBDecalPatch.h"
 #include "vtkOFBPainter.h"
@@ -51,24 +51,6 @@ vtkSmartPointer<vtkImageData> Badge()
   }
   return image;
 }
-
-// The first error event's text.
-class FirstError : public vtkCommand
-{
-public:
-  static FirstError* New() { return new FirstError; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    if (this->Text.empty() && data)
-    {
-      this->Text = static_cast<const char*>(data);
-      const std::string::size_type start = this->Text.find("): ");
-      this->Text = start == std::string::npos ? this->Text : this->Text.substr(start + 3);
-      this->Text = this->Text.substr(0, this->Text.find_last_not_of(" \n") + 1);
-    }
-  }
-  std::string Text;
-};
 }
 
 namespace ofbpaint
@@ -84,25 +66,12 @@ DecalStamper::~DecalStamper() = default;
 
 bool DecalStamper::LoadImage(const std::string& path, std::string& message)
 {
-  vtkSmartPointer<vtkImageReader2> reader =
-    vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(path.c_str()));
-  if (!reader)
+  vtkSmartPointer<vtkImageData> image = ReadImage(path, message);
+  if (image)
   {
-    message = "cannot read '" + path + "' as an image";
-    return false;
+    this->Image = image;
   }
-  vtkNew<FirstError> errors;
-  reader->AddObserver(vtkCommand::ErrorEvent, errors);
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkImageData* image = reader->GetOutput();
-  if (!errors->Text.empty() || !image || image->GetNumberOfPoints() == 0)
-  {
-    message = "cannot read '" + path + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
-    return false;
-  }
-  this->Image = image;
-  return true;
+  return image != nullptr;
 }
 
 long long DecalStamper::Stamp(vtkPolyData* surface,

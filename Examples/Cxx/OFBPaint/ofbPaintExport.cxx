@@ -1,4 +1,5 @@
 #include "ofbPaintExport.h"
+#include "ofbPaintErrors.h"
 
 #include "vtkCommand.h"
 #include "vtkImageData.h"
@@ -22,24 +23,6 @@
 namespace
 {
 using SystemTools = vtksys::SystemTools;
-
-// The first error event's text (VTK's message without its file and line).
-class FirstError : public vtkCommand
-{
-public:
-  static FirstError* New() { return new FirstError; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    std::string text = data ? static_cast<const char*>(data) : "";
-    const std::string::size_type start = text.find("): ");
-    text = start == std::string::npos ? text : text.substr(start + 3);
-    if (this->Text.empty())
-    {
-      this->Text = text.substr(0, text.find_last_not_of(" \n") + 1);
-    }
-  }
-  std::string Text;
-};
 }
 
 namespace ofbpaint
@@ -142,21 +125,17 @@ vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,
     message = "the surface has no texture coordinates to import '" + imagePath + "' through";
     return nullptr;
   }
-  vtkSmartPointer<vtkImageReader2> reader =
-    vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(imagePath.c_str()));
-  if (!reader)
+  vtkSmartPointer<vtkImageData> image = ReadImage(imagePath, message);
+  if (!image)
   {
-    message = "cannot read '" + imagePath + "' as an image";
     return nullptr;
   }
   vtkNew<FirstError> errors;
-  reader->AddObserver(vtkCommand::ErrorEvent, errors);
-  reader->SetFileName(imagePath.c_str());
   vtkNew<vtkOFBTextureProjector> projector;
   projector->AddObserver(vtkCommand::ErrorEvent, errors);
   projector->SetInputData(ofb);
   projector->SetMeshData(surface);
-  projector->SetTextureConnection(reader->GetOutputPort());
+  projector->SetTextureData(image);
   projector->Update();
   if (!errors->Text.empty() || projector->GetOutput()->GetNumberOfSamples() == 0)
   {
@@ -170,5 +149,27 @@ vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,
        << " samples";
   message = done.str();
   return out;
+}
+
+vtkSmartPointer<vtkImageData> ReadImage(const std::string& path, std::string& message)
+{
+  vtkSmartPointer<vtkImageReader2> reader =
+    vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(path.c_str()));
+  if (!reader)
+  {
+    message = "cannot read '" + path + "' as an image";
+    return nullptr;
+  }
+  vtkNew<FirstError> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkSmartPointer<vtkImageData> image = reader->GetOutput();
+  if (!errors->Text.empty() || !image || image->GetNumberOfPoints() == 0)
+  {
+    message = "cannot read '" + path + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
+    return nullptr;
+  }
+  return image;
 }
 }

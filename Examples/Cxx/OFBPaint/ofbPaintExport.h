@@ -9,6 +9,7 @@
 
 #include <string>
 
+class vtkImageData;
 class vtkOFB;
 class vtkPolyData;
 
@@ -40,6 +41,10 @@ vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,
   vtkOFB* ofb,
   const std::string& imagePath,
   std::string& message);
+
+/// The image at `path` (PNG, JPEG, ... as vtkImageReader2Factory reads them), or null with
+/// `message` the reason.
+vtkSmartPointer<vtkImageData> ReadImage(const std::string& path, std::string& message);
 }
 
 #endif

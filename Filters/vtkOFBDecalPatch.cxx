@@ -10,6 +10,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
+#include "vtkStaticCleanPolyData.h"
 #include "vtkTriangleFilter.h"
 
 #include <glm/glm.hpp>
@@ -181,16 +182,19 @@ int vtkOFBDecalPatch::RequestData(vtkInformation*,
   if (cache.Input != input || cache.Time != input->GetMTime() || !cache.Locator)
   {
     cache.Input = nullptr;
-    vtkSmartPointer<vtkPolyData> triangles = input;
-    if (input->GetNumberOfStrips() > 0 || input->GetPolys()->IsHomogeneous() != 3)
-    {
-      vtkNew<vtkTriangleFilter> triangulate;
-      triangulate->PassVertsOff();
-      triangulate->PassLinesOff();
-      triangulate->SetInputData(input);
-      triangulate->Update();
-      triangles = triangulate->GetOutput();
-    }
+    // Triangles sharing their corners: a mesh whose points are repeated per face (an OBJ
+    // with texture coordinates) is merged, or every edge would be a boundary to the walk.
+    vtkNew<vtkTriangleFilter> triangulate;
+    triangulate->PassVertsOff();
+    triangulate->PassLinesOff();
+    triangulate->SetInputData(input);
+    vtkNew<vtkStaticCleanPolyData> merge;
+    merge->SetInputConnection(triangulate->GetOutputPort());
+    merge->SetTolerance(0.0);
+    merge->ConvertPolysToLinesOff();
+    merge->ConvertLinesToPointsOff();
+    merge->Update();
+    vtkSmartPointer<vtkPolyData> triangles = merge->GetOutput();
     std::string error;
     if (!cache.Walker.Build(triangles, nullptr, error))
     {

@@ -221,3 +221,29 @@ TEST(DecalPatch, BadInput)
   EXPECT_TRUE(o->Errors.empty()) << o->Errors;
   EXPECT_EQ(patch->GetNumberOfPoints(), 33 * 33);
 }
+
+//------------------------------------------------------------------------------
+TEST(DecalPatch, MeshWithPointsRepeatedPerFace)
+{
+  // An OBJ with texture coordinates repeats its points per face (vtkOBJReader): the
+  // patch merges them, or each walk would stop at the first edge it meets.
+  vtkSmartPointer<vtkPolyData> spot = ReadMesh("spot.obj");
+  ASSERT_EQ(spot->GetNumberOfPoints(), 3 * spot->GetNumberOfPolys());
+  vtkNew<vtkOFBDecalPatch> decal;
+  decal->SetCenter(0.45, 0.1, 0.1); // on the flank
+  decal->SetDirection(0.0, 0.0, 1.0);
+  decal->SetWidth(0.6);
+  decal->SetHeight(0.4);
+  decal->SetResolution(12, 8);
+  vtkPolyData* patch = Patch(decal, spot);
+  ASSERT_EQ(patch->GetNumberOfPoints(), 13 * 9);
+  // The central row and column span about the width and the height (chords of a curved
+  // flank, so a little less).
+  double a[3], b[3];
+  patch->GetPoint(4 * 13 + 0, a);
+  patch->GetPoint(4 * 13 + 12, b);
+  EXPECT_NEAR(std::sqrt(vtkMath::Distance2BetweenPoints(a, b)), 0.6, 0.06);
+  patch->GetPoint(0 * 13 + 6, a);
+  patch->GetPoint(8 * 13 + 6, b);
+  EXPECT_NEAR(std::sqrt(vtkMath::Distance2BetweenPoints(a, b)), 0.4, 0.04);
+}

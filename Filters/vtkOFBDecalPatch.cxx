@@ -156,10 +156,10 @@ bool vtkOFBDecalPatch::CheckSettings()
   }
   for (int r : this->Resolution)
   {
-    if (r < 1 || r > 4096)
+    if (r < 1 || r > 1024)
     {
       vtkErrorMacro("Resolution " << this->Resolution[0] << " x " << this->Resolution[1]
-                                  << " is outside [1, 4096].");
+                                  << " is outside [1, 1024].");
       return false;
     }
   }

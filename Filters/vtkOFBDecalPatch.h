@@ -73,7 +73,7 @@ public:
 
   ///@{
   /**
-   * Quads of the grid across the width and the height (default 32 x 32, each in [1, 4096]).
+   * Quads of the grid across the width and the height (default 32 x 32, each in [1, 1024]).
    */
   vtkSetVector2Macro(Resolution, int);
   vtkGetVector2Macro(Resolution, int);

@@ -210,6 +210,7 @@ TEST(DecalPatch, BadInput)
   plane->Update();
   expectError([](vtkOFBDecalPatch* d) { d->SetDirection(0, 0, 1); }, plane->GetOutput(), "normal");
   expectError([](vtkOFBDecalPatch* d) { d->SetResolution(0, 4); }, sphere, "Resolution");
+  expectError([](vtkOFBDecalPatch* d) { d->SetResolution(8, 100000); }, sphere, "Resolution");
   expectError([](vtkOFBDecalPatch*) {}, vtkNew<vtkPolyData>(), "cannot carry");
   // A decal larger than the sphere wraps around it without failing.
   o->Clear();

@@ -1,12 +1,11 @@
 #include "vtkOFBTextureBaker.h"
 
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkOFB.h"
+#include "vtkOFBFanTriangles.h"
 #include "vtkOFBPyramidResampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -316,34 +315,22 @@ void vtkOFBTextureBaker::Bake(vtkPolyData* mesh,
   // The texels covered by the triangles (fans of the polygons), in cell order.
   Coverage cover;
   cover.Reset(w, h);
-  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  vtkIdType done = 0;
   const vtkIdType total = mesh->GetNumberOfPolys();
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++done)
-  {
-    vtkIdType npts;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(npts, ids);
-    for (vtkIdType k = 1; k + 1 < npts; ++k)
+  vtkOFBForEachFanTriangle(mesh,
+    [&](vtkIdType cell, const vtkIdType corner[3], const glm::dvec3 x[3])
     {
-      const vtkIdType corner[3] = { ids[0], ids[k], ids[k + 1] };
       glm::dvec2 uv[3];
-      glm::dvec3 x[3];
       for (int c = 0; c < 3; ++c)
       {
-        double p[3];
-        mesh->GetPoint(corner[c], p);
-        x[c] = glm::dvec3(p[0], p[1], p[2]);
         uv[c] =
           glm::dvec2(tcoords->GetComponent(corner[c], 0), tcoords->GetComponent(corner[c], 1));
       }
       cover.AddTriangle(uv, x);
-    }
-    if ((done & 4095) == 0)
-    {
-      this->UpdateProgress(0.3 * done / std::max<vtkIdType>(total, 1));
-    }
-  }
+      if ((cell & 4095) == 0)
+      {
+        this->UpdateProgress(0.3 * cell / std::max<vtkIdType>(total, 1));
+      }
+    });
 
   // Their values, looked up in the OFB.
   const vtkIdType n = static_cast<vtkIdType>(cover.TexelOf.size());

@@ -1,11 +1,10 @@
 #include "vtkOFBTextureProjector.h"
 
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkOFB.h"
+#include "vtkOFBFanTriangles.h"
 #include "vtkOFBPyramidResampler.h" // vtkOFBSampleNormals
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -82,27 +81,14 @@ struct Triangles
 
   void Build(vtkPolyData* mesh)
   {
-    auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-    {
-      vtkIdType npts;
-      const vtkIdType* ids;
-      cells->GetCurrentCell(npts, ids);
-      for (vtkIdType k = 1; k + 1 < npts; ++k)
+    vtkOFBForEachFanTriangle(mesh,
+      [this](vtkIdType, const vtkIdType corner[3], const glm::dvec3 x[3])
       {
-        glm::dvec3 x[3];
-        const vtkIdType corner[3] = { ids[0], ids[k], ids[k + 1] };
-        for (int c = 0; c < 3; ++c)
-        {
-          double p[3];
-          mesh->GetPoint(corner[c], p);
-          x[c] = glm::dvec3(p[0], p[1], p[2]);
-        }
         const glm::dvec3 n = glm::cross(x[1] - x[0], x[2] - x[0]);
         const double length = glm::length(n);
         if (!(length > 0.0) || !std::isfinite(length))
         {
-          continue; // no area, or not finite: nothing to project
+          return; // no area, or not finite: nothing to project
         }
         for (int c = 0; c < 3; ++c)
         {
@@ -110,8 +96,7 @@ struct Triangles
           this->Points.push_back(x[c]);
         }
         this->Normals.push_back(n / length);
-      }
-    }
+      });
   }
   vtkIdType Size() const { return static_cast<vtkIdType>(this->Normals.size()); }
 };

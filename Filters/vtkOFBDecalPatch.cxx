@@ -10,7 +10,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
-#include "vtkStaticCleanPolyData.h"
 #include "vtkTriangleFilter.h"
 
 #include <glm/glm.hpp>
@@ -182,19 +181,18 @@ int vtkOFBDecalPatch::RequestData(vtkInformation*,
   if (cache.Input != input || cache.Time != input->GetMTime() || !cache.Locator)
   {
     cache.Input = nullptr;
-    // Triangles sharing their corners: a mesh whose points are repeated per face (an OBJ
-    // with texture coordinates) is merged, or every edge would be a boundary to the walk.
-    vtkNew<vtkTriangleFilter> triangulate;
-    triangulate->PassVertsOff();
-    triangulate->PassLinesOff();
-    triangulate->SetInputData(input);
-    vtkNew<vtkStaticCleanPolyData> merge;
-    merge->SetInputConnection(triangulate->GetOutputPort());
-    merge->SetTolerance(0.0);
-    merge->ConvertPolysToLinesOff();
-    merge->ConvertLinesToPointsOff();
-    merge->Update();
-    vtkSmartPointer<vtkPolyData> triangles = merge->GetOutput();
+    // (Points repeated per face, as an OBJ with texture coordinates has them, are joined
+    // by the walker.)
+    vtkSmartPointer<vtkPolyData> triangles = input;
+    if (input->GetNumberOfStrips() > 0 || input->GetPolys()->IsHomogeneous() != 3)
+    {
+      vtkNew<vtkTriangleFilter> triangulate;
+      triangulate->PassVertsOff();
+      triangulate->PassLinesOff();
+      triangulate->SetInputData(input);
+      triangulate->Update();
+      triangles = triangulate->GetOutput();
+    }
     std::string error;
     if (!cache.Walker.Build(triangles, nullptr, error))
     {

@@ -21,8 +21,8 @@
  * are along the surface: `Width` and `Height` in world units. A trace that reaches
  * the boundary of an open surface stops there (the rest of its points on the boundary).
  *
- * Input: a vtkPolyData of polygons (triangulated here, and points repeated per face, as an
- * OBJ with texture coordinates has them, merged). Errors (an empty
+ * Input: a vtkPolyData of polygons (triangulated here; points repeated per face, as an OBJ
+ * with texture coordinates has them, are joined by position). Errors (an empty
  * output): no polygon of non-zero area, a Center that is not finite, a Width or Height
  * that is not positive and finite, a Direction of zero length or along the surface
  * normal at the centre.

@@ -159,6 +159,28 @@ void vtkOFBTriangleWalker::BuildGeometry()
 void vtkOFBTriangleWalker::BuildAdjacency()
 {
   const vtkIdType numTriangles = this->GetNumberOfTriangles();
+  // Points at the same position are one point of the surface (a mesh may repeat its points
+  // per face, as an OBJ with texture coordinates does): each point's id for adjacency is
+  // the smallest id at its position.
+  const vtkIdType numPoints = static_cast<vtkIdType>(this->Points.size());
+  std::vector<vtkIdType> order(static_cast<size_t>(numPoints));
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    order[i] = i;
+  }
+  auto less = [this](vtkIdType a, vtkIdType b)
+  {
+    const glm::dvec3& p = this->Points[a];
+    const glm::dvec3& q = this->Points[b];
+    return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : (p.z != q.z ? p.z < q.z : a < b));
+  };
+  std::sort(order.begin(), order.end(), less);
+  this->Canonical.resize(static_cast<size_t>(numPoints));
+  for (vtkIdType k = 0; k < numPoints; ++k)
+  {
+    const bool same = k > 0 && this->Points[order[k]] == this->Points[order[k - 1]];
+    this->Canonical[order[k]] = same ? this->Canonical[order[k - 1]] : order[k];
+  }
   // Half-edges keyed by their sorted point ids; equal keys share an edge.
   struct HalfEdge
   {
@@ -170,8 +192,8 @@ void vtkOFBTriangleWalker::BuildAdjacency()
   {
     for (int i = 0; i < 3; ++i)
     {
-      const vtkIdType a = this->Corners[3 * t + (i + 1) % 3];
-      const vtkIdType b = this->Corners[3 * t + (i + 2) % 3];
+      const vtkIdType a = this->Canonical[this->Corners[3 * t + (i + 1) % 3]];
+      const vtkIdType b = this->Canonical[this->Corners[3 * t + (i + 2) % 3]];
       edges[3 * t + i] = { std::min(a, b), std::max(a, b), t, i };
     }
   }
@@ -201,8 +223,10 @@ void vtkOFBTriangleWalker::Link(vtkIdType t, int edge, vtkIdType next, int oppos
   vtkOFBWalkerTriangle& r = this->Records[t];
   const int a = (edge + 1) % 3;
   const vtkIdType* nc = &this->Corners[3 * next];
-  const int na =
-    nc[(opposite + 1) % 3] == this->Corners[3 * t + a] ? (opposite + 1) % 3 : (opposite + 2) % 3;
+  const vtkIdType* canonical = this->Canonical.data();
+  const int na = canonical[nc[(opposite + 1) % 3]] == canonical[this->Corners[3 * t + a]]
+    ? (opposite + 1) % 3
+    : (opposite + 2) % 3;
   r.Next[edge] = static_cast<int>(next);
 
   // The turn about the shared edge (the unfolding of the two triangles into one

@@ -19,7 +19,10 @@
  * walk reads, and each shared edge has its turn from one frame to the other
  * (vtkOFBWalkerTurn), all made once per input.
  *
- * Edges with one triangle (the boundary of an open surface), edges shared by more
+ * Points at the same position are one point (a mesh may repeat its points per face, as
+ * an OBJ with texture coordinates does): triangles that share an edge's positions are
+ * neighbours, whatever the point ids. Edges with one triangle (the boundary of an open
+ * surface), edges shared by more
  * than two triangles and edges of triangles of zero area are boundaries: a walk
  * that reaches one stops there.
  */
@@ -308,6 +311,7 @@ private:
   std::vector<glm::dvec3> Points;
   std::vector<glm::dvec3> Vectors;
   std::vector<vtkIdType> Corners;            // 3 point ids per triangle
+  std::vector<vtkIdType> Canonical; // per point, the smallest id at its position (adjacency)
   std::vector<vtkOFBWalkerTriangle> Records; // what a walk reads
   std::vector<vtkOFBWalkerTurn> Turns;       // the turns across the edges
   std::vector<glm::dvec2> Gradients;         // 3 per triangle, double, while building

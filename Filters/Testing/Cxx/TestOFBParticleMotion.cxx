@@ -4,12 +4,14 @@
 #include "vtkOFBTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkPlaneSource.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTriangleFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -275,6 +277,51 @@ TEST(Particles, OpenSurfaceBoundaryStops)
   }
   EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 50);
   EXPECT_GT(inside, 40);
+}
+
+// A mesh that repeats its points per face (an OBJ with texture coordinates, read by
+// vtkOBJReader) is one surface to the particles: they cross its edges as on shared points.
+TEST(Particles, CrossEdgesOfPointsRepeatedPerFace)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(20, 20);
+  plane->Update();
+  // Every triangle with points of its own.
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(plane->GetOutputPort());
+  triangles->Update();
+  vtkPolyData* shared = triangles->GetOutput();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  for (vtkIdType c = 0; c < shared->GetNumberOfCells(); ++c)
+  {
+    vtkIdType ids[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      ids[k] = points->InsertNextPoint(shared->GetPoint(shared->GetCell(c)->GetPointId(k)));
+    }
+    polys->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  SetField(mesh,
+    [](const double*, double* v)
+    {
+      v[0] = 1.0;
+      v[1] = 0.0;
+      v[2] = 0.0;
+    });
+  vtkNew<vtkOFBParticleAdvector> advector;
+  advector->SetInputData(mesh);
+  advector->SetSeeds(MakeSeeds({ { -0.45, 0.013, 0.0 } }));
+  advector->SetStepSize(20.0);
+  advector->SetStepsPerUpdate(200); // far beyond the plane: stops on its right edge
+  advector->Step();
+  double x[3];
+  advector->GetParticles()->GetPoint(0, x);
+  EXPECT_NEAR(x[0], 0.5, 1e-9); // across all 20 columns of triangles, not at the first edge
+  EXPECT_NEAR(x[1], 0.013, 1e-9);
 }
 
 // A zero region of the field stops the particles that reach it.

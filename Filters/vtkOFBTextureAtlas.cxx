@@ -13,6 +13,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
 
 #include <glm/glm.hpp>
 
@@ -223,6 +224,19 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
   }
   this->UpdateProgress(0.6);
 
+  // Smooth shading survives the repeated points: point normals, computed where missing.
+  vtkSmartPointer<vtkPolyData> source = input;
+  if (!input->GetPointData()->GetNormals())
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(input);
+    normals->SplittingOff();
+    normals->ConsistencyOff();
+    normals->ComputeCellNormalsOff();
+    normals->Update();
+    source = normals->GetOutput();
+  }
+
   // The triangles with their own corners, each corner at its tile's corner texel centre.
   vtkNew<vtkPoints> points;
   points->SetDataType(input->GetPoints()->GetDataType());
@@ -231,7 +245,7 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
   tcoords->SetName("AtlasTCoords");
   tcoords->SetNumberOfComponents(2);
   tcoords->SetNumberOfTuples(3 * n);
-  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* inPD = source->GetPointData();
   vtkPointData* outPD = output->GetPointData();
   outPD->CopyTCoordsOff();
   outPD->CopyAllocate(inPD, 3 * n);

@@ -16,9 +16,10 @@
  * first, into an atlas about as wide as high.
  *
  * Output: the triangles with their points repeated per triangle (point data copied, cell
- * data passed) and 2-component float texture coordinates "AtlasTCoords" (the active
- * TCoords), and a field-data array "AtlasSize" (width, height in texels): set it as
- * vtkOFBTextureBaker's TextureSize. GetAtlasSize() gives it too after an update.
+ * data passed; point normals computed from the triangles where the input has none, so
+ * that the repeated points still shade smoothly) and 2-component float texture coordinates
+ * "AtlasTCoords" (the active TCoords), and a field-data array "AtlasSize" (width, height in
+ * texels): set it as vtkOFBTextureBaker's TextureSize. GetAtlasSize() gives it too after an update.
  *
  * Errors (an empty output): no OFB or an empty one, a surface without polygons or with
  * polygons that are not triangles, or with triangle strips (apply vtkTriangleFilter

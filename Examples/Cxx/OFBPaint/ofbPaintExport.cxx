@@ -10,6 +10,7 @@
 #include "vtkOBJWriter.h"
 #include "vtkOFB.h"
 #include "vtkOFBProbeFilter.h"
+#include "vtkOFBTextureAtlas.h"
 #include "vtkOFBTextureBaker.h"
 #include "vtkOFBTextureProjector.h"
 #include "vtkPLYWriter.h"
@@ -18,6 +19,7 @@
 #include "vtkXMLPolyDataWriter.h"
 #include "vtksys/SystemTools.hxx"
 
+#include <algorithm>
 #include <sstream>
 
 namespace
@@ -27,11 +29,9 @@ using SystemTools = vtksys::SystemTools;
 
 namespace ofbpaint
 {
-std::string DefaultExportPath(const std::string& meshPath, vtkPolyData* surface)
+std::string DefaultExportPath(const std::string& meshPath, vtkPolyData*)
 {
-  const bool textured = surface && surface->GetPointData()->GetTCoords();
-  return SystemTools::GetFilenameWithoutLastExtension(meshPath) +
-    (textured ? "_painted.obj" : "_painted.ply");
+  return SystemTools::GetFilenameWithoutLastExtension(meshPath) + "_painted.obj";
 }
 
 bool ExportPainting(vtkPolyData* surface,
@@ -45,24 +45,40 @@ bool ExportPainting(vtkPolyData* surface,
   std::ostringstream done;
   if (ext == ".obj")
   {
-    if (!surface->GetPointData()->GetTCoords())
+    // A mesh without texture coordinates gets an atlas of one tile per triangle, a texel a
+    // cell where textureSize allows.
+    vtkSmartPointer<vtkPolyData> textured = surface;
+    int size[2] = { textureSize, textureSize };
+    vtkNew<vtkOFBTextureAtlas> atlas;
+    const bool generated = !surface->GetPointData()->GetTCoords();
+    if (generated)
     {
-      message = "the surface has no texture coordinates to bake into: export a .ply or .vtp";
-      return false;
+      atlas->AddObserver(vtkCommand::ErrorEvent, errors);
+      atlas->SetInputData(surface);
+      atlas->SetSourceData(ofb);
+      atlas->SetMaximumTextureSize(std::max(16, textureSize));
+      atlas->Update();
+      textured = atlas->GetOutput();
+      atlas->GetAtlasSize(size);
+      if (!errors->Text.empty() || size[0] == 0)
+      {
+        message = "cannot lay out a texture for '" + path + "': " + errors->Text;
+        return false;
+      }
     }
     // The paint as an RGB texture (opaque: an alpha channel makes viewers sort the mesh as
     // translucent), written by the OBJ writer beside the .obj with its .mtl.
     vtkNew<vtkOFBTextureBaker> baker;
     baker->AddObserver(vtkCommand::ErrorEvent, errors);
-    baker->SetInputData(surface);
+    baker->SetInputData(textured);
     baker->SetSourceData(ofb);
-    baker->SetTextureSize(textureSize, textureSize);
+    baker->SetTextureSize(size);
     vtkNew<vtkImageExtractComponents> rgb;
     rgb->SetInputConnection(baker->GetOutputPort());
     rgb->SetComponents(0, 1, 2);
     vtkNew<vtkOBJWriter> writer;
     writer->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->SetInputData(0, surface);
+    writer->SetInputData(0, textured);
     writer->SetInputConnection(1, rgb->GetOutputPort());
     writer->SetFileName(path.c_str());
     if (!writer->Write() || !errors->Text.empty())
@@ -70,8 +86,9 @@ bool ExportPainting(vtkPolyData* surface,
       message = "cannot export '" + path + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
       return false;
     }
-    done << "wrote " << path << " with a " << textureSize << " x " << textureSize << " texture ("
-         << baker->GetNumberOfBakedTexels() << " texels baked)";
+    done << "wrote " << path << " with a " << size[0] << " x " << size[1] << " texture ("
+         << baker->GetNumberOfBakedTexels() << " texels baked"
+         << (generated ? ", texture coordinates made: a tile per triangle" : "") << ")";
     message = done.str();
     return true;
   }

@@ -1,5 +1,7 @@
 // OFBPaint's export of a painting to files other programs read (key 'x', --export):
-// a textured OBJ (the paint baked into the mesh's UV texture by vtkOFBTextureBaker),
+// a textured OBJ (the paint baked into the mesh's UV texture by vtkOFBTextureBaker, or,
+// for a mesh without texture coordinates, into a texture atlas of one tile per triangle
+// laid out by vtkOFBTextureAtlas),
 // a PLY with vertex colours or a VTP with every sample array as point arrays (both
 // through vtkOFBProbeFilter).
 #ifndef ofbPaintExport_h
@@ -15,15 +17,17 @@ class vtkPolyData;
 
 namespace ofbpaint
 {
-/// The default export file of a mesh: <mesh name>_painted.obj where the surface has
-/// texture coordinates, <mesh name>_painted.ply otherwise.
+/// The default export file of a mesh: <mesh name>_painted.obj (the surface is not read:
+/// every mesh can have its paint baked into a texture).
 std::string DefaultExportPath(const std::string& meshPath, vtkPolyData* surface);
 
 /**
  * Write the paint of `ofb` on `surface` to `path` by its extension: .obj (the surface with
  * its texture coordinates, a .mtl and the paint baked into a `textureSize` x `textureSize`
- * .png beside it; the surface needs texture coordinates), .ply (vertex colours) or .vtp
- * (every sample array). Returns false with `message` the reason; true with `message`
+ * .png beside it; a surface without texture coordinates is written with those of a
+ * vtkOFBTextureAtlas, a texel a cell where the atlas fits `textureSize` texels a side,
+ * and the texture has the atlas's size), .ply (vertex colours) or .vtp (every sample
+ * array). Returns false with `message` the reason; true with `message`
  * saying what was written.
  */
 bool ExportPainting(vtkPolyData* surface,

@@ -72,6 +72,11 @@ TEST(TextureAtlas, TrianglesGetTilesApartWithTheirCornersOnCornerTexels)
   EXPECT_EQ(size->GetValue(1), h);
   vtkDataArray* tc = out->GetPointData()->GetTCoords();
   ASSERT_NE(tc, nullptr);
+  // The bunny has no normals: the atlas computes point normals, so that the repeated points
+  // shade smoothly (copies of one point share its normal).
+  vtkDataArray* normals = out->GetPointData()->GetNormals();
+  ASSERT_NE(normals, nullptr);
+  ASSERT_EQ(normals->GetNumberOfTuples(), 3 * n);
   std::vector<vtkIdType> owner(static_cast<size_t>(w) * h, -1);
   vtkIdType bad = 0;
   vtkIdType overlaps = 0;
@@ -115,6 +120,12 @@ TEST(TextureAtlas, TrianglesGetTilesApartWithTheirCornersOnCornerTexels)
     Normal(bunny->GetPoints(), in, n0);
     Normal(out->GetPoints(), ids, n1);
     bad += vtkMath::Dot(n0, n1) < 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      double pn[3];
+      normals->GetTuple(ids[k], pn);
+      bad += std::fabs(vtkMath::Norm(pn) - 1.0) > 1e-3;
+    }
     ASSERT_GE(x0, 0);
     ASSERT_GE(y0, 0);
     ASSERT_LE(x0 + side, w);

@@ -224,6 +224,20 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
   }
   this->UpdateProgress(0.6);
 
+  this->MakeOutput(input, ids.data(), corner.data(), side.data(), origin.data(), output);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTextureAtlas::MakeOutput(vtkPolyData* input,
+  const vtkIdType* ids,
+  const int* corner,
+  const int* side,
+  const int* origin,
+  vtkPolyData* output)
+{
+  const vtkIdType n = input->GetPolys()->GetNumberOfCells();
   // Smooth shading survives the repeated points: point normals, computed where missing.
   vtkSmartPointer<vtkPolyData> source = input;
   if (!input->GetPointData()->GetNormals())
@@ -286,8 +300,6 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
   size->InsertNextValue(this->AtlasSize[0]);
   size->InsertNextValue(this->AtlasSize[1]);
   output->GetFieldData()->AddArray(size);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------

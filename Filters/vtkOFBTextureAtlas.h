@@ -100,6 +100,15 @@ protected:
   /// Tile sides and places at `density` texels a cell; false when they do not fit.
   bool LayOut(const double* extents, vtkIdType n, double density, int* side, int* origin);
 
+  /// The triangles with repeated points and texture coordinates (`ids`: 3 input points a
+  /// triangle; `corner`: the one opposite its longest edge; tile sides and origins).
+  void MakeOutput(vtkPolyData* input,
+    const vtkIdType* ids,
+    const int* corner,
+    const int* side,
+    const int* origin,
+    vtkPolyData* output);
+
   double TexelsPerCell;
   int MinimumTileSize;
   int MaximumTextureSize;

@@ -103,11 +103,12 @@ bool vtkOFBTextureAtlas::LayOut(const double* extents,
     largest = std::max(largest, side[t]);
   }
   // Rows of tiles, largest first, in an atlas about as wide as high.
-  const int width = std::max(largest, static_cast<int>(std::ceil(std::sqrt(area * 1.02) / m)) * m);
-  if (width > this->MaximumTextureSize)
+  const double wide = std::max<double>(largest, std::ceil(std::sqrt(area * 1.02) / m) * m);
+  if (wide > this->MaximumTextureSize)
   {
     return false;
   }
+  const int width = static_cast<int>(wide);
   std::vector<vtkIdType> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(

@@ -274,4 +274,13 @@ TEST(TextureAtlas, BadInputGivesAnErrorAndAnEmptyOutput)
   EXPECT_EQ(Atlas(atlas, nothing, ofb)->GetNumberOfPoints(), 0);
   EXPECT_NE(messages->Errors.find("no polygons"), std::string::npos);
   EXPECT_EQ(Atlas(atlas, triangles->GetOutput(), ofb)->GetNumberOfPolys(), 32);
+  // A point that is not finite and a zero-area triangle: the smallest tiles, no crash.
+  vtkNew<vtkPolyData> odd;
+  odd->DeepCopy(triangles->GetOutput());
+  odd->GetPoints()->SetPoint(0, std::nan(""), 0.0, 0.0);
+  odd->GetPoints()->SetPoint(1, 0.0, 0.0, 0.0);
+  odd->GetPoints()->SetPoint(2, 0.0, 0.0, 0.0);
+  vtkSmartPointer<vtkPolyData> out = Atlas(atlas, odd, ofb);
+  EXPECT_EQ(out->GetNumberOfPolys(), 32);
+  EXPECT_GT(atlas->GetAtlasSize()[0], 0);
 }

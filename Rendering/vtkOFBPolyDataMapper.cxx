@@ -1,16 +1,17 @@
 #include "vtkOFBPolyDataMapper.h"
 
 #include "vtkActor.h"
-#include "vtkIdTypeArray.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
-#include "vtkObjectFactory.h"
 #include "vtkOFB.h"
 #include "vtkOFBLookupFS.h"
+#include "vtkOFBMapToColors.h"
 #include "vtkOFBShaderStorage.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
@@ -465,6 +466,30 @@ bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorage::Sel
   }
   this->LastUploadedSampleCount = count;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::CopyColoringTo(vtkOFBMapToColors* filter)
+{
+  if (!filter)
+  {
+    return;
+  }
+  filter->SetColorSource(
+    this->ColorSource == Scalars ? vtkOFBMapToColors::Scalars : vtkOFBMapToColors::Paint);
+  filter->SetScalarArrayName(this->ScalarArrayName ? this->ScalarArrayName : "");
+  filter->SetScalarComponent(this->ScalarComponent);
+  filter->SetLookupTable(this->GetLookupTable());
+  filter->SetScalarRange(this->ScalarRange);
+  filter->SetUseLookupTableScalarRange(this->UseLookupTableScalarRange);
+  filter->SetIntensityArrayName(this->IntensityArrayName ? this->IntensityArrayName : "");
+  filter->SetIntensityModulation(this->IntensityModulation);
+  filter->SetLICColorMode(this->LICColorMode == COLOR_MODE_MAP
+      ? vtkOFBMapToColors::COLOR_MODE_MAP
+      : vtkOFBMapToColors::COLOR_MODE_BLEND);
+  filter->SetLICIntensity(this->LICIntensity);
+  filter->SetMapModeBias(this->MapModeBias);
+  filter->SetIntensityWeight(this->IntensityWeight);
 }
 
 //------------------------------------------------------------------------------

@@ -116,6 +116,7 @@
 class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkOFB;
+class vtkOFBMapToColors;
 class vtkOFBShaderStorage;
 struct vtkOFBShaderStorageSelection;
 
@@ -288,6 +289,15 @@ public:
   vtkGetMacro(UsePaintedNormals, bool);
   vtkBooleanMacro(UsePaintedNormals, bool);
   ///@}
+
+  /**
+   * Give `filter` this mapper's colouring (ColorSource, ScalarArrayName, ScalarComponent,
+   * the lookup table and scalar range, the intensity array and modulation, LICColorMode,
+   * LICIntensity, MapModeBias, IntensityWeight), so that it writes as a sample array the
+   * colours this mapper shows before lighting: the LIC in colour for export. Nothing
+   * happens with a null filter.
+   */
+  void CopyColoringTo(vtkOFBMapToColors* filter);
 
   /**
    * Samples uploaded to the GPU by the last render of the piece (0 when nothing changed).

@@ -9,6 +9,7 @@
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBMapToColors.h"
 #include "vtkOFBMapperTestHelpers.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBTestUtilities.h"
@@ -307,6 +308,78 @@ TEST(OFBMapperLICDisplay, ReconvolutionUploadsOnlyTheLICArray)
   before = scene.Mapper->GetUploadedBytes();
   scene.Window->Render();
   EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, 100 * (8 + 4));
+}
+
+// vtkOFBMapToColors with the mapper's settings (CopyColoringTo) writes the colours the
+// mapper shows: the OFB drawn with those as paint looks the same, pixel for pixel, with a
+// LIC and scalars that vary from sample to sample.
+TEST(OFBMapperLICDisplay, MapToColorsWritesWhatTheMapperShows)
+{
+  for (bool scalars : { true, false })
+  {
+    FlatScene scene;
+    const vtkIdType n = scene.OFB->GetNumberOfSamples();
+    vtkFloatArray* height =
+      vtkFloatArray::SafeDownCast(scene.OFB->GetSampleData()->GetArray("Height"));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      scene.OFB->GetSamplePosition(i, x);
+      scene.LIC->SetValue(i, static_cast<float>(0.5 + 0.6 * std::sin(37.0 * x[0] + 23.0 * x[1])));
+      height->SetValue(i, static_cast<float>(x[1] + 0.3 * std::sin(11.0 * x[0])));
+    }
+    if (scalars)
+    {
+      scene.Mapper->SetColorSourceToScalars();
+      scene.Mapper->SetLICColorModeToMap();
+      scene.Mapper->SetMapModeBias(0.1);
+      scene.Mapper->SetIntensityWeight(0.7);
+    }
+    else
+    {
+      scene.Mapper->SetLICIntensity(0.4);
+    }
+    auto grab = [&scene]()
+    {
+      scene.Window->Render();
+      EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+      vtkNew<vtkWindowToImageFilter> grabber;
+      grabber->SetInput(scene.Window);
+      grabber->ReadFrontBufferOff();
+      grabber->SetInputBufferTypeToRGB();
+      grabber->Update();
+      vtkSmartPointer<vtkImageData> image = grabber->GetOutput();
+      return image;
+    };
+    vtkSmartPointer<vtkImageData> shown = grab();
+
+    vtkNew<vtkOFBMapToColors> colors;
+    scene.Mapper->CopyColoringTo(colors);
+    EXPECT_EQ(colors->GetIntensityModulation(), true);
+    colors->SetInputData(scene.OFB);
+    colors->SetOutputArrayName("Colors");
+    colors->Update();
+    ASSERT_EQ(colors->GetOutput()->GetNumberOfSamples(), n);
+    scene.Mapper->SetOFB(colors->GetOutput());
+    scene.Mapper->SetColorSourceToPaint();
+    scene.Mapper->IntensityModulationOff();
+    vtkSmartPointer<vtkImageData> exported = grab();
+
+    const auto* a = static_cast<unsigned char*>(shown->GetScalarPointer());
+    const auto* b = static_cast<unsigned char*>(exported->GetScalarPointer());
+    int worst = 0;
+    double sum = 0.0;
+    int lit = 0;
+    for (int k = 0; k < 3 * Size * Size; ++k)
+    {
+      worst = std::max(worst, std::abs(a[k] - b[k]));
+      sum += std::abs(a[k] - b[k]);
+      lit += a[k] > 20 ? 1 : 0;
+    }
+    EXPECT_GT(lit, Size * Size) << "the square is drawn";
+    EXPECT_LE(worst, 3) << (scalars ? "scalars, map" : "paint, blend");
+    EXPECT_LT(sum / (3 * Size * Size), 0.5);
+  }
 }
 
 TEST(OFBMapperLICDisplay, SettingsAreClampedAndNamedAsVTKs)

@@ -1,0 +1,327 @@
+#include "vtkOFBMapToColors.h"
+
+#include "vtkArrayDispatch.h"
+#include "vtkDataArrayRange.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLookupTable.h"
+#include "vtkMath.h"
+#include "vtkOFB.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkOFBMapToColors);
+vtkCxxSetObjectMacro(vtkOFBMapToColors, LookupTable, vtkScalarsToColors);
+
+namespace
+{
+// Entries of the sampled lookup table: vtkOFBPolyDataMapper's (vtkOFBShaderStorage), so
+// that a sample gets the colour the mapper's nearest entry gives it.
+constexpr int TableSize = 1024;
+
+/// One value a tuple of an array (a component, or the magnitude with component -1) as
+/// floats, for the per-sample loop.
+struct ToFloats
+{
+  template<typename ArrayT>
+  void operator()(ArrayT* array, int component, std::vector<float>& out) const
+  {
+    const auto tuples = vtk::DataArrayTupleRange(array);
+    const int nc = array->GetNumberOfComponents();
+    float* dst = out.data();
+    vtkSMPTools::For(0,
+      array->GetNumberOfTuples(),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const auto tuple = tuples[i];
+          if (component >= 0 || nc == 1)
+          {
+            dst[i] = static_cast<float>(tuple[std::max(component, 0)]);
+            continue;
+          }
+          double sum = 0.0;
+          for (int c = 0; c < nc; ++c)
+          {
+            const double v = tuple[c];
+            sum += v * v;
+          }
+          dst[i] = static_cast<float>(std::sqrt(sum));
+        }
+      });
+  }
+};
+
+std::vector<float> Floats(vtkDataArray* array, int component)
+{
+  std::vector<float> out(static_cast<size_t>(array->GetNumberOfTuples()));
+  ToFloats worker;
+  if (!vtkArrayDispatch::Dispatch::Execute(array, worker, component, out))
+  {
+    worker(array, component, out);
+  }
+  return out;
+}
+
+unsigned char ToByte(float v)
+{
+  return static_cast<unsigned char>(std::min(1.0f, std::max(0.0f, v)) * 255.0f + 0.5f);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkOFBMapToColors::vtkOFBMapToColors()
+  : ColorSource(Paint)
+  , ScalarComponent(0)
+  , LookupTable(nullptr)
+  , ScalarRange{ 0.0, 1.0 }
+  , UseLookupTableScalarRange(false)
+  , IntensityArrayName("LIC")
+  , IntensityModulation(false)
+  , LICColorMode(COLOR_MODE_BLEND)
+  , LICIntensity(0.8)
+  , MapModeBias(0.0)
+  , IntensityWeight(1.0)
+  , OutputArrayName("DisplayColors")
+{
+}
+
+//------------------------------------------------------------------------------
+vtkOFBMapToColors::~vtkOFBMapToColors()
+{
+  this->SetLookupTable(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkScalarsToColors* vtkOFBMapToColors::GetLookupTable()
+{
+  if (!this->LookupTable)
+  {
+    vtkNew<vtkLookupTable> table;
+    table->Build();
+    this->SetLookupTable(table);
+  }
+  return this->LookupTable;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkOFBMapToColors::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->LookupTable)
+  {
+    t = std::max(t, this->LookupTable->GetMTime());
+  }
+  return t;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBMapToColors::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkOFB");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBMapToColors::FindArrays(vtkOFB* input, vtkDataArray*& source, vtkDataArray*& intensity)
+{
+  vtkPointData* pd = input->GetSampleData();
+  const vtkIdType n = input->GetNumberOfSamples();
+  source = nullptr;
+  intensity = nullptr;
+  if (this->ColorSource == Paint)
+  {
+    source = vtkUnsignedCharArray::SafeDownCast(pd->GetAbstractArray("Colors"));
+    if (!source || source->GetNumberOfComponents() != 4 || source->GetNumberOfTuples() != n)
+    {
+      vtkErrorMacro("ColorSource Paint: the OFB has no \"Colors\" array of RGBA bytes, one a "
+                    "sample.");
+      return false;
+    }
+  }
+  else
+  {
+    source = vtkArrayDownCast<vtkDataArray>(pd->GetAbstractArray(this->ScalarArrayName.c_str()));
+    if (!source || source->GetNumberOfTuples() != n ||
+      this->ScalarComponent >= source->GetNumberOfComponents())
+    {
+      vtkErrorMacro("ColorSource Scalars: no numeric sample array \""
+        << this->ScalarArrayName << "\" with a component " << this->ScalarComponent
+        << ", one tuple a sample.");
+      return false;
+    }
+    const double* range = this->ScalarRange;
+    if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
+    {
+      vtkErrorMacro("ScalarRange " << range[0] << " " << range[1] << " is not finite.");
+      return false;
+    }
+  }
+  if (this->IntensityModulation)
+  {
+    intensity =
+      vtkArrayDownCast<vtkDataArray>(pd->GetAbstractArray(this->IntensityArrayName.c_str()));
+    if (!intensity || intensity->GetNumberOfComponents() != 1 ||
+      intensity->GetNumberOfTuples() != n)
+    {
+      vtkErrorMacro("IntensityModulation: no numeric 1-component sample array \""
+        << this->IntensityArrayName << "\", one value a sample.");
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBMapToColors::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkOFB* input = vtkOFB::GetData(inputVector[0]);
+  vtkOFB* output = vtkOFB::GetData(outputVector);
+  output->Initialize();
+  vtkDataArray* source;
+  vtkDataArray* intensityArray;
+  if (!input)
+  {
+    vtkErrorMacro("No input OFB.");
+    return 1;
+  }
+  if (this->OutputArrayName.empty())
+  {
+    vtkErrorMacro("OutputArrayName is empty.");
+    return 1;
+  }
+  if (!this->FindArrays(input, source, intensityArray))
+  {
+    return 1;
+  }
+  const vtkIdType n = input->GetNumberOfSamples();
+
+  // The lookup table sampled at equal steps over the range, as the mapper uploads it.
+  std::vector<glm::vec4> table;
+  glm::vec4 nanColor(0.0f);
+  double low = 0.0;
+  double scale = 0.0;
+  if (this->ColorSource == Scalars)
+  {
+    vtkScalarsToColors* lut = this->GetLookupTable();
+    double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
+    if (this->UseLookupTableScalarRange)
+    {
+      std::copy(lut->GetRange(), lut->GetRange() + 2, range);
+    }
+    else
+    {
+      lut->SetRange(range);
+    }
+    table.resize(TableSize);
+    for (int i = 0; i < TableSize; ++i)
+    {
+      const double v = range[0] + (range[1] - range[0]) * i / (TableSize - 1.0);
+      double rgb[3];
+      lut->GetColor(v, rgb);
+      table[i] = glm::vec4(rgb[0], rgb[1], rgb[2], lut->GetOpacity(v));
+    }
+    double rgb[3];
+    lut->GetColor(vtkMath::Nan(), rgb);
+    nanColor = glm::vec4(rgb[0], rgb[1], rgb[2], lut->GetOpacity(vtkMath::Nan()));
+    low = range[0];
+    scale = range[1] != range[0] ? 1.0 / (range[1] - range[0]) : 0.0;
+  }
+  this->UpdateProgress(0.2);
+  const std::vector<float> scalars =
+    this->ColorSource == Scalars ? Floats(source, this->ScalarComponent) : std::vector<float>();
+  const std::vector<float> intensity =
+    intensityArray ? Floats(intensityArray, 0) : std::vector<float>();
+  this->UpdateProgress(0.4);
+
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName(this->OutputArrayName.c_str());
+  colors->SetNumberOfComponents(4);
+  colors->SetNumberOfTuples(n);
+  unsigned char* out = colors->GetPointer(0);
+  const unsigned char* paint = this->ColorSource == Paint
+    ? vtkUnsignedCharArray::SafeDownCast(source)->GetPointer(0)
+    : nullptr;
+  const int mode = this->LICColorMode;
+  const float share = static_cast<float>(this->LICIntensity);
+  const float bias = static_cast<float>(this->MapModeBias);
+  const float weight = static_cast<float>(this->IntensityWeight);
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        glm::vec4 c;
+        if (paint)
+        {
+          c =
+            glm::vec4(paint[4 * i], paint[4 * i + 1], paint[4 * i + 2], paint[4 * i + 3]) / 255.0f;
+          c = c.a > 0.0f ? c : glm::vec4(0.0f);
+        }
+        else if (std::isnan(scalars[i]))
+        {
+          c = nanColor;
+        }
+        else
+        {
+          const double s = std::min(1.0, std::max(0.0, (scalars[i] - low) * scale));
+          c = table[std::min(static_cast<int>(s * (TableSize - 1) + 0.5), TableSize - 1)];
+        }
+        if (!intensity.empty())
+        {
+          const float l = std::isnan(intensity[i]) ? 0.0f : intensity[i];
+          const glm::vec3 rgb(c);
+          const glm::vec3 combined = mode == COLOR_MODE_BLEND
+            ? glm::mix(rgb, glm::vec3(l), share)
+            : rgb * glm::mix(1.0f, glm::clamp(l + bias, 0.0f, 1.0f), weight);
+          c = glm::vec4(combined, c.a);
+        }
+        for (int k = 0; k < 4; ++k)
+        {
+          out[4 * i + k] = ToByte(c[k]);
+        }
+      }
+    });
+  this->UpdateProgress(0.9);
+
+  output->ShallowCopy(input);
+  vtkPointData* pd = output->GetSampleData();
+  // AddArray replaces an array of the same name; SetScalars would replace the active one.
+  pd->AddArray(colors);
+  pd->SetActiveScalars(this->OutputArrayName.c_str());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBMapToColors::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ColorSource: " << (this->ColorSource == Paint ? "Paint" : "Scalars") << "\n";
+  os << indent << "ScalarArrayName: " << this->ScalarArrayName << "\n";
+  os << indent << "ScalarComponent: " << this->ScalarComponent << "\n";
+  os << indent << "LookupTable: " << this->LookupTable << "\n";
+  os << indent << "ScalarRange: " << this->ScalarRange[0] << " " << this->ScalarRange[1] << "\n";
+  os << indent << "UseLookupTableScalarRange: " << this->UseLookupTableScalarRange << "\n";
+  os << indent << "IntensityArrayName: " << this->IntensityArrayName << "\n";
+  os << indent << "IntensityModulation: " << this->IntensityModulation << "\n";
+  os << indent << "LICColorMode: " << (this->LICColorMode == COLOR_MODE_BLEND ? "Blend" : "Map")
+     << "\n";
+  os << indent << "LICIntensity: " << this->LICIntensity << "\n";
+  os << indent << "MapModeBias: " << this->MapModeBias << "\n";
+  os << indent << "IntensityWeight: " << this->IntensityWeight << "\n";
+  os << indent << "OutputArrayName: " << this->OutputArrayName << "\n";
+}

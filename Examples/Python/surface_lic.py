@@ -15,18 +15,27 @@ Run (from a build tree; Debian's python3 has VTK's modules):
 Options: --resolution (OFB cells on the longest side), --steps, --grain, --noise
 (uniform, gaussian, perlin), --color (speed or grey), --lookup (idw, nearest,
 nearestmipmapped: how the mapper reads the OFB), --size (pixels), --up (the mesh's
-up axis), --azimuth and --elevation (degrees), --check (exit
-with an error unless the LIC and the image look right; the ctest uses it).
+up axis), --azimuth and --elevation (degrees), --export FILE.obj (the LIC in colour as
+an OBJ with its .mtl and a PNG texture that any viewer reads: vtkOFBMapToColors writes
+the colours the mapper shows, vtkOFBTextureAtlas gives the mesh texture coordinates,
+vtkOFBTextureBaker bakes them; the OBJ read back by plain VTK is drawn into
+PNG-stem_exported.png), --check (exit with an error unless the LIC and the images look
+right; the ctest uses it).
 Headless: prefix with  xvfb-run -a .
 """
 
 import argparse
+import os
 import sys
 
 import numpy as np
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkLookupTable
-from vtkmodules.vtkRenderingCore import vtkActor
+from vtkmodules.vtkFiltersCore import vtkTriangleFilter
+from vtkmodules.vtkImagingCore import vtkImageExtractComponents
+from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkOBJWriter
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkTexture
 
 import vtkofb
 from ofb_example_view import add_view_options, read_surface, render_offscreen, save_png
@@ -46,6 +55,8 @@ parser.add_argument("--lookup", choices=["idw", "nearest", "nearestmipmapped"], 
                          "nearest sample, or the nearest in the mipmap level as fine as a "
                          "pixel (for large OFBs seen whole)")
 add_view_options(parser)
+parser.add_argument("--export", metavar="FILE.obj",
+                    help="write the LIC in colour as a textured OBJ (with .mtl and .png)")
 parser.add_argument("--check", action="store_true")
 args = parser.parse_args()
 
@@ -125,8 +136,69 @@ actor.SetMapper(mapper)
 window = render_offscreen(actor, args)
 image = save_png(window, args.png)
 
-# 7. With --check: the LIC is in [0, 1] and not flat; the surface fills the image, drawn
-# from the OFB.
+# 7. With --export: what the mapper shows, as a textured OBJ. vtkOFBMapToColors takes the
+#    mapper's colouring (CopyColoringTo) and writes it per sample ("DisplayColors");
+#    vtkOFBTextureAtlas gives the triangles texture coordinates (a tile each, a texel an
+#    OFB cell); the baker writes the colours into the atlas; the OBJ writer writes the
+#    .obj, the .mtl and the texture as a PNG (RGB: opaque).
+exported = None
+if args.export:
+    colors = vtkofb.vtkOFBMapToColors()
+    colors.SetInputConnection(lic.GetOutputPort())
+    mapper.CopyColoringTo(colors)
+    triangles = vtkTriangleFilter()
+    triangles.SetInputData(mesh)
+    atlas = vtkofb.vtkOFBTextureAtlas()
+    atlas.SetInputConnection(triangles.GetOutputPort())
+    atlas.SetSourceConnection(lic.GetOutputPort())
+    atlas.Update()
+    baker = vtkofb.vtkOFBTextureBaker()
+    baker.SetInputConnection(atlas.GetOutputPort())
+    baker.SetSourceConnection(colors.GetOutputPort())
+    # (no SetArrayName: the baker bakes the active scalars, vtkOFBMapToColors's output)
+    baker.SetTextureSize(atlas.GetAtlasSize())
+    rgb = vtkImageExtractComponents()
+    rgb.SetInputConnection(baker.GetOutputPort())
+    rgb.SetComponents(0, 1, 2)
+    obj = vtkOBJWriter()
+    obj.SetInputConnection(0, atlas.GetOutputPort())
+    obj.SetInputConnection(1, rgb.GetOutputPort())
+    obj.SetFileName(args.export)
+    if not obj.Write():
+        sys.exit(f"cannot write {args.export}")
+    width, height = atlas.GetAtlasSize()
+    print(f"wrote {args.export} with a {width} x {height} texture "
+          f"({baker.GetNumberOfBakedTexels()} texels baked)")
+
+    # Read back as any program would, drawn by a plain vtkPolyDataMapper with the texture.
+    stem = os.path.splitext(args.export)[0]
+    obj_in = vtkOBJReader()
+    obj_in.SetFileName(args.export)
+    png_in = vtkPNGReader()
+    png_in.SetFileName(stem + ".png")
+    texture = vtkTexture()
+    texture.SetInputConnection(png_in.GetOutputPort())
+    texture.InterpolateOn()
+    plain = vtkPolyDataMapper()
+    plain.SetInputConnection(obj_in.GetOutputPort())
+    plain.ScalarVisibilityOff()
+    textured = vtkActor()
+    textured.SetMapper(plain)
+    textured.SetTexture(texture)
+    exported = save_png(render_offscreen(textured, args),
+                        os.path.splitext(args.png)[0] + "_exported.png")
+
+# 8. With --check: the LIC is in [0, 1] and not flat; the surface fills the image, drawn
+# from the OFB; the exported OBJ looks like it (mean difference over the pixels where
+# either shows the surface).
+if args.check and exported is not None:
+    surface = np.any(np.abs(image.astype(int) - [25, 25, 38]) > 8, axis=1)
+    surface |= np.any(np.abs(exported.astype(int) - [25, 25, 38]) > 8, axis=1)
+    difference = np.abs(image.astype(int) - exported.astype(int))[surface].mean()
+    print(f"the exported OBJ's picture differs from the OFB's by {difference:.1f} levels "
+          f"on average")
+    if not difference < 12.0:
+        sys.exit("check failed: the export does not look like the display")
 if args.check:
     values = numpy_support.vtk_to_numpy(lic.GetOutput().GetSampleData().GetArray("LIC"))
     covered = np.mean(np.any(np.abs(image.astype(int) - [25, 25, 38]) > 8, axis=1))

@@ -4,18 +4,22 @@
 // tilted axis through the centre of the mesh.
 //
 // Usage: OFBLIC [mesh.obj|mesh.ply] [--resolution N] [--steps N] [--grain G]
-//               [--image file.png [--keys K1,K2,...]] [--size S]
+//               [--image file.png [--keys K1,K2,...]] [--size S] [--export file.obj]
 // Without a mesh it reads Testing/Data/stanford-bunny.obj of the source tree. With
 // --image it renders once off screen, writes the PNG and exits (no window); --keys
-// K1,K2,... applies keys first, then one animation frame (a test of the keys).
+// K1,K2,... applies keys first, then one animation frame (a test of the keys); with
+// --export as well it then exports what it drew. --export sets the file of key x
+// (default <mesh name>_lic.obj): the LIC in the colours shown (vtkOFBMapToColors) as an
+// OBJ with a texture (.obj; a mesh without texture coordinates gets a vtkOFBTextureAtlas),
+// a PLY with vertex colours (.ply) or a VTP (.vtp), as OFBPaint exports its paint.
 //
 // Keys: Up/Down steps +-5; Right/Left noise grain x2 / /2; m colour mode (the speed
 // through a lookup table combined with the LIC in VTK surface LIC's map mode, then its
 // blend mode with LICIntensity 0.8, then the grey LIC alone); n noise type; o oriented LIC;
 // l enhanced LIC; d display lookup (InverseDistance, NearestMipmapped: antialiased where
 // a pixel covers many cells, Nearest); space animation (the streaks flow: the LIC is
-// recomputed with a new AnimationPhase on a repeating timer). Mouse: VTK's trackball
-// camera.
+// recomputed with a new AnimationPhase on a repeating timer); x export. Mouse: VTK's
+// trackball camera.
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
@@ -26,9 +30,10 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
-#include "vtkOFBReadMesh.h" // Testing/Cxx: OBJ or PLY, shared with the tests
 #include "vtkOFBLIC.h"
+#include "vtkOFBMapToColors.h"
 #include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBReadMesh.h" // Testing/Cxx: OBJ or PLY, shared with the tests
 #include "vtkOFBSampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPNGWriter.h"
@@ -42,6 +47,9 @@
 #include "vtkWindowToImageFilter.h"
 
 #include "ofbExampleOptions.h"
+#include "ofbPaintExport.h" // OFBPaint's export, shared
+
+#include "vtksys/SystemTools.hxx"
 
 #include <cmath>
 #include <cstdlib>
@@ -62,6 +70,10 @@ struct App
   vtkNew<vtkTextActor> Text;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkOFBMapToColors> Colors;  // the colours shown, for export
+  vtkSmartPointer<vtkPolyData> Mesh; // the surface drawn
+  std::string ExportPath;            // key x
+  std::string ExportMessage;         // what the last export said
   int ColorMode = 0; // 0 map, 1 blend, 2 LIC alone
   bool Animating = false;
   bool Deferred = false; // --keys: apply the settings, compute and draw once at the end
@@ -94,12 +106,17 @@ struct App
          << ", l enhanced: " << (this->LIC->GetEnhancedLIC() ? "on" : "off")
          << ", space animation: " << (this->Animating ? "on" : "off") << "\n"
          << "d display: "
-         << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode());
+         << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode())
+         << ", x export to " << this->ExportPath;
     if (this->Animating &&
       this->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::NearestMipmapped)
     {
       // Every frame filters the new LIC down the pyramid (0.3-2 s).
       text << " (slow to animate: d for Nearest)";
+    }
+    if (!this->ExportMessage.empty())
+    {
+      text << "\n" << this->ExportMessage;
     }
     this->Text->SetInput(text.str().c_str());
     this->Window->Render();
@@ -149,12 +166,31 @@ struct App
       this->Animating = !this->Animating;
       lic->SetAnimate(this->Animating);
     }
+    else if (key == "x")
+    {
+      this->Export();
+    }
     else
     {
       return false;
     }
     this->Refresh();
     return true;
+  }
+
+  /// Write the LIC in the colours shown to ExportPath; false (and the reason in
+  /// ExportMessage, printed) where it could not.
+  bool Export()
+  {
+    this->LIC->Update();
+    this->Colors->SetInputConnection(this->LIC->GetOutputPort());
+    this->Mapper->CopyColoringTo(this->Colors);
+    this->Colors->SetOutputArrayName("Colors"); // what the export takes as the paint
+    this->Colors->Update();
+    const bool ok = ofbpaint::ExportPainting(
+      this->Mesh, this->Colors->GetOutput(), this->ExportPath, 4096, this->ExportMessage);
+    (ok ? std::cout : std::cerr) << "OFBLIC: " << this->ExportMessage << "\n";
+    return ok;
   }
 
   /// One animation frame: move the streaks a tenth of a period along the flow.
@@ -186,7 +222,7 @@ public:
   }
   void OnChar() override
   {
-    const std::string keys = "mnold ";
+    const std::string keys = "mnoldx ";
     if (keys.find(this->Interactor->GetKeyCode()) == std::string::npos)
     {
       this->Superclass::OnChar();
@@ -248,6 +284,7 @@ int main(int argc, char* argv[])
   std::string meshPath = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
   std::string image;
   std::string keys;
+  std::string exportPath;
   int resolution = 512, steps = 20, size = 800;
   double grain = 1.0;
   bool ok = true; // false once a value is not a number in its range
@@ -279,6 +316,10 @@ int main(int argc, char* argv[])
     {
       ok = ofbexample::ParseInt(argv[++i], 64, 8192, size);
     }
+    else if (arg == "--export" && value)
+    {
+      exportPath = argv[++i];
+    }
     else if (!arg.empty() && arg[0] != '-')
     {
       meshPath = arg;
@@ -291,7 +332,7 @@ int main(int argc, char* argv[])
     {
       std::cerr << "Usage: " << argv[0]
                 << " [mesh.obj|mesh.ply] [--resolution N] [--steps N] [--grain G]"
-                   " [--image file.png [--keys K1,K2,...]] [--size S]\n"
+                   " [--image file.png [--keys K1,K2,...]] [--size S] [--export file.obj]\n"
                    "  resolution 8-16384, steps 0-1000, grain 0.01-100 cells, size 64-8192\n";
       return arg == "--help" ? 0 : 1;
     }
@@ -305,6 +346,10 @@ int main(int argc, char* argv[])
   AddField(mesh);
 
   App app;
+  app.Mesh = mesh;
+  app.ExportPath = !exportPath.empty()
+    ? exportPath
+    : vtksys::SystemTools::GetFilenameWithoutLastExtension(meshPath) + "_lic.obj";
   app.Sampler->SetInputData(mesh);
   app.Sampler->SetResolution(resolution);
   app.LIC->SetInputConnection(app.Sampler->GetOutputPort());
@@ -356,7 +401,8 @@ int main(int argc, char* argv[])
     }
     app.Tick();
     app.Deferred = false;
-    return WriteImage(app, image);
+    const int written = WriteImage(app, image);
+    return written != 0 || exportPath.empty() || app.Export() ? written : 1;
   }
   vtkNew<vtkRenderWindowInteractor> interactor;
   vtkNew<KeyStyle> style;

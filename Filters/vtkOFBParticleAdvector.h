@@ -175,8 +175,9 @@ public:
 
   ///@{
   /**
-   * Length of a step in cells (default 1). Must be positive and finite: zero, a
-   * negative or non-finite value gives an error and empty outputs.
+   * Length of a step in cells (default 1). Must be positive and finite, and at most
+   * four times the surface's longest side in cells: another value gives an error and
+   * empty outputs.
    */
   vtkSetMacro(StepSize, double);
   vtkGetMacro(StepSize, double);

@@ -266,6 +266,19 @@ bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
   // What the particles will hold: per seed its point and colour; per particle (seeds x
   // ChainLength) its state, its trail (TrailLength positions, and as many output points
   // and ids), its footprint and output point. In doubles: the product can exceed 2^63.
+  vtkInternals& in = *this->Internals;
+  // A step longer than a few times the surface's extent walks the surface over and over
+  // (seconds a step for 1e6 cells, without end for 1e300): an error.
+  double bounds[6];
+  in.SurfaceObject->GetBounds(bounds);
+  const double extent =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] }) / in.CellSize;
+  if (this->StepSize > 4.0 * std::max(1.0, extent))
+  {
+    vtkErrorMacro("StepSize " << this->StepSize << " cells is more than four times the "
+                              << "surface's extent (" << extent << " cells): no particles.");
+    return false;
+  }
   const double numberOfSeeds =
     static_cast<double>(seeds ? seeds->GetNumberOfPoints() : this->NumberOfParticles);
   const double particles = numberOfSeeds * this->ChainLength;
@@ -281,7 +294,6 @@ bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
       << " positions), more than MemoryLimit (" << this->MemoryLimit << " MiB): no particles.");
     return false;
   }
-  vtkInternals& in = *this->Internals;
   vtkOFBParticleSystem& system = in.System;
   system.Walker = &in.Walker;
   vtkOFBParticleStepper& stepper = system.Stepper;

@@ -379,6 +379,23 @@ TEST(ParticlePaint, BadInput)
     advector->SetStepSize(step);
     expectEmpty(advector, "StepSize must be positive");
   }
+  // A step of more than four times the surface (1024 cells without an OFB): an error at
+  // once (1e300 cells walked the sphere for minutes a step); four times steps.
+  for (double step : { 1e300, 5000.0, 4000.0 })
+  {
+    vtkNew<vtkOFBParticleAdvector> advector;
+    advector->SetInputData(rotating);
+    advector->SetNumberOfParticles(50);
+    advector->SetStepSize(step);
+    if (step > 4096.0)
+    {
+      expectEmpty(advector, "more than four times the surface's extent");
+      continue;
+    }
+    advector->Update();
+    advector->Step();
+    EXPECT_EQ(vtkPolyData::SafeDownCast(advector->GetOutputDataObject(1))->GetNumberOfPoints(), 50);
+  }
   {
     vtkNew<vtkPolyData> empty;
     vtkNew<vtkOFBParticleAdvector> advector;

@@ -282,7 +282,8 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
         }
         if (!intensity.empty())
         {
-          const float l = std::isnan(intensity[i]) ? 0.0f : intensity[i];
+          // Clamped to [0, 1] (NaN to 0), as the mapper stores it.
+          const float l = intensity[i] > 0.0f ? std::min(intensity[i], 1.0f) : 0.0f;
           const glm::vec3 rgb(c);
           const glm::vec3 combined = mode == COLOR_MODE_BLEND
             ? glm::mix(rgb, glm::vec3(l), share)

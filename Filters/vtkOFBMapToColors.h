@@ -17,7 +17,8 @@
  *   Scalars (ScalarArrayName, component ScalarComponent or its magnitude with -1,
  *   mapped through LookupTable over ScalarRange, or over the table's own range with
  *   UseLookupTableScalarRange; values outside the range are clamped to it);
- * - with IntensityModulation, the intensity L (IntensityArrayName, default "LIC"):
+ * - with IntensityModulation, the intensity L (IntensityArrayName, default "LIC",
+ *   clamped to [0, 1]; the mapper keeps it as a byte, to 1/255):
  *   COLOR_MODE_BLEND: rgb' = rgb (1 - LICIntensity) + L LICIntensity;
  *   COLOR_MODE_MAP: rgb' = rgb mix(1, clamp(L + MapModeBias, 0, 1), IntensityWeight).
  * Alpha is the source's. Channels are rounded to bytes (value 255, rounded).

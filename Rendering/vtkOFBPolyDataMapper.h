@@ -230,7 +230,9 @@ public:
    * The LIC (or any intensity) display: a float sample array, values in [0, 1] (default
    * none; vtkOFBLIC writes "LIC"), combined with the colour of ColorSource when
    * IntensityModulation is on (default off), as vtkSurfaceLICInterface combines its LIC
-   * with the scalar colours. See the class documentation for the formulas.
+   * with the scalar colours. See the class documentation for the formulas. The GPU holds
+   * it as a byte a sample (clamped to [0, 1], NaN as 0, to 1/255: finer than the 8-bit
+   * colours it ends in), a quarter of a float's memory, upload and cache footprint.
    */
   vtkSetStringMacro(IntensityArrayName);
   vtkGetStringMacro(IntensityArrayName);

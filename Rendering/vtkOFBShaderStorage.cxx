@@ -33,6 +33,8 @@ size_t BytesPerSample(int id)
       return 2 * sizeof(vtkTypeUInt32); // depth, colour attribute
     case vtkOFBShaderStorage::Normals:
       return 3 * sizeof(float);
+    case vtkOFBShaderStorage::Intensity:
+      return 1; // [0, 1] in a byte, four to a word (a quarter of a float's cache footprint)
     default:
       return 4;
   }
@@ -480,6 +482,11 @@ void vtkOFBShaderStorage::UploadArray(
   {
     return;
   }
+  if (id == Intensity)
+  {
+    this->UploadIntensity(array, first, last, base);
+    return;
+  }
   const size_t n = static_cast<size_t>(last - first);
   const size_t bps = BytesPerSample(id);
   const size_t offset = static_cast<size_t>(base + first) * bps;
@@ -504,6 +511,30 @@ void vtkOFBShaderStorage::UploadArray(
     }
   }
   this->Upload(id, offset, n * bps, dst);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::UploadIntensity(vtkDataArray* array,
+  vtkIdType first,
+  vtkIdType last,
+  vtkIdType base)
+{
+  // Whole words: the samples from first rounded down to a multiple of 4 to last rounded up
+  // (a level's base is a multiple of 4; bytes past its last sample are 0).
+  const vtkIdType n = array->GetNumberOfTuples();
+  first &= ~vtkIdType(3);
+  last = (last + 3) & ~vtkIdType(3);
+  const size_t count = static_cast<size_t>(last - first);
+  this->Scratch.resize(count);
+  unsigned char* dst = this->Scratch.data();
+  for (size_t i = 0; i < count; ++i)
+  {
+    const vtkIdType t = first + static_cast<vtkIdType>(i);
+    const float v = t < n ? ScalarValue(array, t, 0) : 0.0f;
+    // Clamped to [0, 1] (NaN to 0), rounded to 1/255.
+    dst[i] = static_cast<unsigned char>(v > 0.0f ? std::min(v, 1.0f) * 255.0f + 0.5f : 0.0f);
+  }
+  this->Upload(Intensity, static_cast<size_t>(base + first), count, dst);
 }
 
 //------------------------------------------------------------------------------
@@ -560,7 +591,8 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
   this->LevelSampleBase.clear();
   this->LevelDims.clear();
   vtkIdType totalCells = 0;
-  vtkIdType totalSamples = 0;
+  vtkIdType totalSamples = 0; // with the levels' padding
+  vtkIdType uploaded = 0;
   for (vtkOFB* ofb : levels)
   {
     const vtkIdType* dims = ofb->GetDimensions();
@@ -571,7 +603,9 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
     }
     this->LevelSampleBase.push_back(static_cast<int>(totalSamples));
     totalCells += ofb->GetNumberOfCells() + 1;
-    totalSamples += ofb->GetNumberOfSamples();
+    // Levels start at multiples of 4 samples: the intensity's words hold one level each.
+    totalSamples += (ofb->GetNumberOfSamples() + 3) & ~vtkIdType(3);
+    uploaded += ofb->GetNumberOfSamples();
   }
   if (totalCells > VTK_INT_MAX || totalSamples > VTK_INT_MAX)
   {
@@ -631,7 +665,7 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
     }
   }
   vtkOpenGLCheckErrorMacro("failed after uploading the OFB");
-  return totalSamples;
+  return uploaded;
 }
 
 //------------------------------------------------------------------------------

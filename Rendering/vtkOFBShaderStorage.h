@@ -213,6 +213,7 @@ private:
   bool Allocate(int id, size_t bytes);
   void Upload(int id, size_t offset, size_t bytes, const void* data);
   void UploadArray(int id, vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base);
+  void UploadIntensity(vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base);
   void UploadSamples(vtkOFB* ofb, vtkDataArray* attribute, const Selection& selection,
     vtkIdType first, vtkIdType last, vtkIdType base);
 

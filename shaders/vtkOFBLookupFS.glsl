@@ -22,7 +22,8 @@
 //               within a cell), y the colour attribute next to it, so that one read gives
 //               both: RGBA8 packed in a uint (red in the low byte), or with
 //               OFB_SOURCE_SCALARS the scalar (float bits)
-//   ofbIntensity per sample (float); ofbNormals three floats per sample
+//   ofbIntensity per sample a byte (the value in [0, 1] times 255, four to a uint; each
+//               level starts at a multiple of 4 samples); ofbNormals three floats per sample
 //   ofbLUT      the lookup table sampled at equal steps over the scalar range
 //
 // Performance notes (Mesa llvmpipe, where these shaders run on the CPU): a fragment shader
@@ -43,7 +44,8 @@ uniform vec2 ofbScalarRange; // x: low end, y: 1 / (high - low)
 uniform int ofbLUTSize;
 #endif
 #ifdef OFB_USE_INTENSITY
-layout(std430) readonly buffer ofbIntensityBlock { float ofbIntensity[]; };
+// one byte a sample, four to a word: value / 255
+layout(std430) readonly buffer ofbIntensityBlock { uint ofbIntensity[]; };
 uniform float ofbIntensityWeight; // map mode: strength of the multiplication
 uniform float ofbLICIntensity;    // blend mode: the LIC's share
 uniform float ofbMapModeBias;     // map mode: added to the LIC
@@ -110,7 +112,7 @@ void ofbAccumulate(inout ofbAccum acc, int i, uint attr, float w)
   acc.color += w * vec4(c.rgb * c.a, c.a);
 #endif
 #ifdef OFB_USE_INTENSITY
-  acc.intensity += w * ofbIntensity[i];
+  acc.intensity += w * float((ofbIntensity[i >> 2] >> (8u * uint(i & 3))) & 0xFFu) * (1.0 / 255.0);
 #endif
 #ifdef OFB_USE_NORMALS
   acc.normal += w * vec3(ofbNormals[3 * i], ofbNormals[3 * i + 1], ofbNormals[3 * i + 2]);

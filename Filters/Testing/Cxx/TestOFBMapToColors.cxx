@@ -82,7 +82,7 @@ void TableColor(vtkScalarsToColors* lut, const double range[2], double s, double
 /// Combine with the LIC l as VTK's surface LIC: blend or map.
 void Combine(double rgba[4], double l, bool blend, double share, double bias, double weight)
 {
-  l = std::isnan(l) ? 0.0 : l;
+  l = l > 0.0 ? std::min(l, 1.0) : 0.0; // clamped, NaN to 0
   for (int c = 0; c < 3; ++c)
   {
     rgba[c] = blend ? rgba[c] * (1.0 - share) + l * share

@@ -284,7 +284,8 @@ TEST(OFBMapperLICDisplay, ReconvolutionUploadsOnlyTheLICArray)
   animate(scene.LIC, 1.0);
   vtkIdType before = scene.Mapper->GetUploadedBytes();
   scene.Window->Render();
-  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, n * 4) << "only the LIC floats";
+  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, (n + 3) / 4 * 4)
+    << "only the LIC, a byte a sample in whole words";
   EXPECT_EQ(scene.Mapper->GetLastUploadedSampleCount(), n);
 
   // A re-convolution into a new array of the same name.
@@ -295,19 +296,19 @@ TEST(OFBMapperLICDisplay, ReconvolutionUploadsOnlyTheLICArray)
   scene.OFB->GetSampleData()->AddArray(next);
   before = scene.Mapper->GetUploadedBytes();
   scene.Window->Render();
-  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, n * 4);
+  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, (n + 3) / 4 * 4);
 
   // Nothing changed: nothing sent.
   before = scene.Mapper->GetUploadedBytes();
   scene.Window->Render();
   EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, 0);
 
-  // A paint stroke over 100 samples sends their colour attribute and LIC words only.
+  // A paint stroke over 100 samples sends their colour attribute and LIC bytes only.
   scene.OFB->MarkSamplesModified(1000, 1100);
   scene.OFB->Modified();
   before = scene.Mapper->GetUploadedBytes();
   scene.Window->Render();
-  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, 100 * (8 + 4));
+  EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, 100 * (8 + 1));
 }
 
 // vtkOFBMapToColors with the mapper's settings (CopyColoringTo) writes the colours the

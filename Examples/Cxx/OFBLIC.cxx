@@ -49,8 +49,6 @@
 #include "ofbExampleOptions.h"
 #include "ofbPaintExport.h" // OFBPaint's export, shared
 
-#include "vtksys/SystemTools.hxx"
-
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -347,9 +345,7 @@ int main(int argc, char* argv[])
 
   App app;
   app.Mesh = mesh;
-  app.ExportPath = !exportPath.empty()
-    ? exportPath
-    : vtksys::SystemTools::GetFilenameWithoutLastExtension(meshPath) + "_lic.obj";
+  app.ExportPath = !exportPath.empty() ? exportPath : ofbpaint::DefaultExportPath(meshPath, "lic");
   app.Sampler->SetInputData(mesh);
   app.Sampler->SetResolution(resolution);
   app.LIC->SetInputConnection(app.Sampler->GetOutputPort());

@@ -518,7 +518,7 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
   }
   this->ExportRequested = !options.at("--export").empty();
   this->ExportPath = this->ExportRequested ? options.at("--export")
-                                           : ofbpaint::DefaultExportPath(meshPath, this->Surface);
+                                           : ofbpaint::DefaultExportPath(meshPath, "painted");
   this->SaveRequested = !options.at("--save").empty();
   this->SavePath = options.at("--save").empty()
     ? SystemTools::GetFilenameWithoutLastExtension(meshPath) + ".ofb"

@@ -29,9 +29,9 @@ using SystemTools = vtksys::SystemTools;
 
 namespace ofbpaint
 {
-std::string DefaultExportPath(const std::string& meshPath, vtkPolyData*)
+std::string DefaultExportPath(const std::string& meshPath, const std::string& what)
 {
-  return SystemTools::GetFilenameWithoutLastExtension(meshPath) + "_painted.obj";
+  return SystemTools::GetFilenameWithoutLastExtension(meshPath) + "_" + what + ".obj";
 }
 
 bool ExportPainting(vtkPolyData* surface,

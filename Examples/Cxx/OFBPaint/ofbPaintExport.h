@@ -17,9 +17,9 @@ class vtkPolyData;
 
 namespace ofbpaint
 {
-/// The default export file of a mesh: <mesh name>_painted.obj (the surface is not read:
-/// every mesh can have its paint baked into a texture).
-std::string DefaultExportPath(const std::string& meshPath, vtkPolyData* surface);
+/// The default export file of a mesh: <mesh name>_<what>.obj in the working directory
+/// (an OBJ: every mesh can have its colours baked into a texture).
+std::string DefaultExportPath(const std::string& meshPath, const std::string& what);
 
 /**
  * Write the paint of `ofb` on `surface` to `path` by its extension: .obj (the surface with

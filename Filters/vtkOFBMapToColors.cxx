@@ -72,6 +72,43 @@ std::vector<float> Floats(vtkDataArray* array, int component)
   return out;
 }
 
+/// The lookup table sampled at TableSize equal steps over the scalar range, as the mapper
+/// uploads it, and how a scalar finds its entry.
+struct SampledTable
+{
+  std::vector<glm::vec4> Entries;
+  glm::vec4 NaN{ 0.0f };
+  double Low = 0.0;
+  double Scale = 0.0; // 1 / (high - low), 0 for an empty range: the first entry
+
+  void Sample(vtkScalarsToColors* lut, const double range[2])
+  {
+    this->Entries.resize(TableSize);
+    this->Low = range[0];
+    this->Scale = range[1] != range[0] ? 1.0 / (range[1] - range[0]) : 0.0;
+    for (int i = 0; i < TableSize; ++i)
+    {
+      const double v = range[0] + (range[1] - range[0]) * i / (TableSize - 1.0);
+      double rgb[3];
+      lut->GetColor(v, rgb);
+      this->Entries[i] = glm::vec4(rgb[0], rgb[1], rgb[2], lut->GetOpacity(v));
+    }
+    double rgb[3];
+    lut->GetColor(vtkMath::Nan(), rgb);
+    this->NaN = glm::vec4(rgb[0], rgb[1], rgb[2], lut->GetOpacity(vtkMath::Nan()));
+  }
+
+  glm::vec4 Color(float scalar) const
+  {
+    if (std::isnan(scalar))
+    {
+      return this->NaN;
+    }
+    const double s = std::min(1.0, std::max(0.0, (scalar - this->Low) * this->Scale));
+    return this->Entries[std::min(static_cast<int>(s * (TableSize - 1) + 0.5), TableSize - 1)];
+  }
+};
+
 unsigned char ToByte(float v)
 {
   return static_cast<unsigned char>(std::min(1.0f, std::max(0.0f, v)) * 255.0f + 0.5f);
@@ -207,11 +244,8 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
   }
   const vtkIdType n = input->GetNumberOfSamples();
 
-  // The lookup table sampled at equal steps over the range, as the mapper uploads it.
-  std::vector<glm::vec4> table;
-  glm::vec4 nanColor(0.0f);
-  double low = 0.0;
-  double scale = 0.0;
+  // The scalar range: the table's own, or set on the table, as vtkMapper does.
+  SampledTable table;
   if (this->ColorSource == Scalars)
   {
     vtkScalarsToColors* lut = this->GetLookupTable();
@@ -224,19 +258,7 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
     {
       lut->SetRange(range);
     }
-    table.resize(TableSize);
-    for (int i = 0; i < TableSize; ++i)
-    {
-      const double v = range[0] + (range[1] - range[0]) * i / (TableSize - 1.0);
-      double rgb[3];
-      lut->GetColor(v, rgb);
-      table[i] = glm::vec4(rgb[0], rgb[1], rgb[2], lut->GetOpacity(v));
-    }
-    double rgb[3];
-    lut->GetColor(vtkMath::Nan(), rgb);
-    nanColor = glm::vec4(rgb[0], rgb[1], rgb[2], lut->GetOpacity(vtkMath::Nan()));
-    low = range[0];
-    scale = range[1] != range[0] ? 1.0 / (range[1] - range[0]) : 0.0;
+    table.Sample(lut, range);
   }
   this->UpdateProgress(0.2);
   const std::vector<float> scalars =
@@ -271,14 +293,9 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
             glm::vec4(paint[4 * i], paint[4 * i + 1], paint[4 * i + 2], paint[4 * i + 3]) / 255.0f;
           c = c.a > 0.0f ? c : glm::vec4(0.0f);
         }
-        else if (std::isnan(scalars[i]))
-        {
-          c = nanColor;
-        }
         else
         {
-          const double s = std::min(1.0, std::max(0.0, (scalars[i] - low) * scale));
-          c = table[std::min(static_cast<int>(s * (TableSize - 1) + 0.5), TableSize - 1)];
+          c = table.Color(scalars[i]);
         }
         if (!intensity.empty())
         {

@@ -7,8 +7,10 @@
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkOFB.h"
+#include "vtkOFBColorSpace.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -109,6 +111,78 @@ struct SampledTable
   }
 };
 
+/// The colour of sample i before lighting: the source's, combined with the intensity.
+struct SampleColor
+{
+  const unsigned char* Paint = nullptr; // RGBA bytes, or null: the scalars
+  const SampledTable* Table = nullptr;
+  const float* Scalars = nullptr;
+  const float* Intensity = nullptr; // null without modulation
+  bool Blend = true;
+  float Share = 0.8f;
+  float Bias = 0.0f;
+  float Weight = 1.0f;
+
+  glm::vec4 operator()(vtkIdType i) const
+  {
+    glm::vec4 c;
+    if (this->Paint)
+    {
+      const unsigned char* p = this->Paint + 4 * i;
+      c = glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
+      c = c.a > 0.0f ? c : glm::vec4(0.0f);
+    }
+    else
+    {
+      c = this->Table->Color(this->Scalars[i]);
+    }
+    if (this->Intensity)
+    {
+      // Clamped to [0, 1] (NaN to 0), as the mapper stores it.
+      const float v = this->Intensity[i];
+      const float l = v > 0.0f ? std::min(v, 1.0f) : 0.0f;
+      const glm::vec3 rgb(c);
+      c = glm::vec4(this->Blend
+          ? glm::mix(rgb, glm::vec3(l), this->Share)
+          : rgb * glm::mix(1.0f, glm::clamp(l + this->Bias, 0.0f, 1.0f), this->Weight),
+        c.a);
+    }
+    return c;
+  }
+};
+
+/// The smallest and largest HSL lightness of the samples' colours with alpha above 0
+/// (x > y where there are none).
+glm::vec2 FindLightnessRange(const SampleColor& color, vtkIdType n)
+{
+  vtkSMPThreadLocal<glm::vec2> ranges(glm::vec2(1.0f, 0.0f));
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      glm::vec2& r = ranges.Local();
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const glm::vec4 c = color(i);
+        if (c.a > 0.0f)
+        {
+          const float l = vtkOFBLightness(glm::vec3(c));
+          r = r.x > r.y ? glm::vec2(l) : glm::vec2(std::min(r.x, l), std::max(r.y, l));
+        }
+      }
+    });
+  glm::vec2 range(1.0f, 0.0f);
+  for (const glm::vec2& r : ranges)
+  {
+    if (r.x <= r.y)
+    {
+      range = range.x > range.y ? r : glm::vec2(std::min(range.x, r.x), std::max(range.y, r.y));
+    }
+  }
+  return range;
+}
+
 unsigned char ToByte(float v)
 {
   return static_cast<unsigned char>(std::min(1.0f, std::max(0.0f, v)) * 255.0f + 0.5f);
@@ -128,7 +202,11 @@ vtkOFBMapToColors::vtkOFBMapToColors()
   , LICIntensity(0.8)
   , MapModeBias(0.0)
   , IntensityWeight(1.0)
+  , EnhanceColorContrast(false)
+  , LowColorContrastEnhancementFactor(0.0)
+  , HighColorContrastEnhancementFactor(0.0)
   , OutputArrayName("DisplayColors")
+  , LightnessRange{ 0.0, 0.0 }
 {
 }
 
@@ -267,18 +345,39 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
     intensityArray ? Floats(intensityArray, 0) : std::vector<float>();
   this->UpdateProgress(0.4);
 
+  SampleColor color;
+  color.Paint = this->ColorSource == Paint
+    ? vtkUnsignedCharArray::SafeDownCast(source)->GetPointer(0)
+    : nullptr;
+  color.Table = &table;
+  color.Scalars = scalars.empty() ? nullptr : scalars.data();
+  color.Intensity = intensity.empty() ? nullptr : intensity.data();
+  color.Blend = this->LICColorMode == COLOR_MODE_BLEND;
+  color.Share = static_cast<float>(this->LICIntensity);
+  color.Bias = static_cast<float>(this->MapModeBias);
+  color.Weight = static_cast<float>(this->IntensityWeight);
+
+  // The lightness range of the colours shown (alpha above 0), then its stretch.
+  this->LightnessRange[0] = this->LightnessRange[1] = 0.0;
+  const glm::vec2 range = FindLightnessRange(color, n);
+  if (range[0] <= range[1])
+  {
+    this->LightnessRange[0] = range[0];
+    this->LightnessRange[1] = range[1];
+  }
+  const double span = this->LightnessRange[1] - this->LightnessRange[0];
+  const float low =
+    static_cast<float>(this->LightnessRange[0] + this->LowColorContrastEnhancementFactor * span);
+  const float high =
+    static_cast<float>(this->LightnessRange[1] - this->HighColorContrastEnhancementFactor * span);
+  const bool stretch = this->EnhanceColorContrast && high > low;
+  this->UpdateProgress(0.6);
+
   vtkNew<vtkUnsignedCharArray> colors;
   colors->SetName(this->OutputArrayName.c_str());
   colors->SetNumberOfComponents(4);
   colors->SetNumberOfTuples(n);
   unsigned char* out = colors->GetPointer(0);
-  const unsigned char* paint = this->ColorSource == Paint
-    ? vtkUnsignedCharArray::SafeDownCast(source)->GetPointer(0)
-    : nullptr;
-  const int mode = this->LICColorMode;
-  const float share = static_cast<float>(this->LICIntensity);
-  const float bias = static_cast<float>(this->MapModeBias);
-  const float weight = static_cast<float>(this->IntensityWeight);
   vtkSMPTools::For(0,
     n,
     4096,
@@ -286,26 +385,13 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        glm::vec4 c;
-        if (paint)
+        glm::vec4 c = color(i);
+        if (stretch)
         {
-          c =
-            glm::vec4(paint[4 * i], paint[4 * i + 1], paint[4 * i + 2], paint[4 * i + 3]) / 255.0f;
-          c = c.a > 0.0f ? c : glm::vec4(0.0f);
-        }
-        else
-        {
-          c = table.Color(scalars[i]);
-        }
-        if (!intensity.empty())
-        {
-          // Clamped to [0, 1] (NaN to 0), as the mapper stores it.
-          const float l = intensity[i] > 0.0f ? std::min(intensity[i], 1.0f) : 0.0f;
           const glm::vec3 rgb(c);
-          const glm::vec3 combined = mode == COLOR_MODE_BLEND
-            ? glm::mix(rgb, glm::vec3(l), share)
-            : rgb * glm::mix(1.0f, glm::clamp(l + bias, 0.0f, 1.0f), weight);
-          c = glm::vec4(combined, c.a);
+          c = glm::vec4(vtkOFBWithLightness(
+                          rgb, glm::clamp((vtkOFBLightness(rgb) - low) / (high - low), 0.0f, 1.0f)),
+            c.a);
         }
         for (int k = 0; k < 4; ++k)
         {
@@ -341,5 +427,12 @@ void vtkOFBMapToColors::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LICIntensity: " << this->LICIntensity << "\n";
   os << indent << "MapModeBias: " << this->MapModeBias << "\n";
   os << indent << "IntensityWeight: " << this->IntensityWeight << "\n";
+  os << indent << "EnhanceColorContrast: " << this->EnhanceColorContrast << "\n";
+  os << indent << "LowColorContrastEnhancementFactor: " << this->LowColorContrastEnhancementFactor
+     << "\n";
+  os << indent << "HighColorContrastEnhancementFactor: " << this->HighColorContrastEnhancementFactor
+     << "\n";
   os << indent << "OutputArrayName: " << this->OutputArrayName << "\n";
+  os << indent << "LightnessRange: " << this->LightnessRange[0] << " " << this->LightnessRange[1]
+     << "\n";
 }

@@ -21,7 +21,8 @@
  *   clamped to [0, 1]; the mapper keeps it as a byte, to 1/255):
  *   COLOR_MODE_BLEND: rgb' = rgb (1 - LICIntensity) + L LICIntensity;
  *   COLOR_MODE_MAP: rgb' = rgb mix(1, clamp(L + MapModeBias, 0, 1), IntensityWeight).
- * Alpha is the source's. Channels are rounded to bytes (value 255, rounded).
+ * Alpha is the source's. With EnhanceColorContrast the lightness is then stretched, as
+ * VTK's ENHANCE_CONTRAST_COLOR does. Channels are rounded to bytes (value 255, rounded).
  *
  * Output: a copy of the input OFB (its arrays shared, not copied) with the array
  * OutputArrayName (default "DisplayColors"; "Colors" replaces the paint in the copy) as
@@ -144,6 +145,30 @@ public:
 
   ///@{
   /**
+   * VTK surface LIC's contrast enhancement of the final colour (its EnhanceContrast
+   * modes ENHANCE_CONTRAST_COLOR and _BOTH; default off): the HSL lightness L of every
+   * colour (after the intensity) is stretched, L' = clamp((L - m) / (M - m), 0, 1), with
+   * m = min + Low (max - min) and M = max - High (max - min) over the samples' colours with
+   * alpha above 0; hue and saturation are kept. The factors are in [0, 1] (default 0);
+   * where M <= m nothing is stretched.
+   */
+  vtkSetMacro(EnhanceColorContrast, bool);
+  vtkGetMacro(EnhanceColorContrast, bool);
+  vtkBooleanMacro(EnhanceColorContrast, bool);
+  vtkSetClampMacro(LowColorContrastEnhancementFactor, double, 0.0, 1.0);
+  vtkGetMacro(LowColorContrastEnhancementFactor, double);
+  vtkSetClampMacro(HighColorContrastEnhancementFactor, double, 0.0, 1.0);
+  vtkGetMacro(HighColorContrastEnhancementFactor, double);
+  ///@}
+
+  /**
+   * After an update: the smallest and largest lightness of the colours before the stretch
+   * (0 0 without samples of alpha above 0), what the mapper stretches by.
+   */
+  vtkGetVector2Macro(LightnessRange, double);
+
+  ///@{
+  /**
    * Name of the RGBA byte array written (default "DisplayColors"); it becomes the
    * output's active scalars.
    */
@@ -181,7 +206,11 @@ protected:
   double LICIntensity;
   double MapModeBias;
   double IntensityWeight;
+  bool EnhanceColorContrast;
+  double LowColorContrastEnhancementFactor;
+  double HighColorContrastEnhancementFactor;
   std::string OutputArrayName;
+  double LightnessRange[2];
 
 private:
   vtkOFBMapToColors(const vtkOFBMapToColors&) = delete;

@@ -8,6 +8,7 @@
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkOFBBrush.h"
+#include "vtkOFBColorSpace.h" // private header of the module: the HSL helpers
 #include "vtkOFBMapToColors.h"
 #include "vtkOFBPainter.h"
 #include "vtkPointData.h"
@@ -233,6 +234,78 @@ TEST(MapToColors, ScalarsMappedAndMultipliedByTheLICEqualTheFormula)
     EXPECT_GT(reds.size(), 50u) << "the table's colours spread over the samples";
   }
   EXPECT_DOUBLE_EQ(lut->GetRange()[0], -1.0);
+}
+
+//------------------------------------------------------------------------------
+TEST(MapToColors, ColorContrastStretchesTheLightnessAndKeepsTheHue)
+{
+  // The HSL helpers: the same lightness gives the colour back; another keeps the hue's
+  // pattern (channel - min) / (max - min) and reaches that lightness.
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(9);
+  for (int k = 0; k < 1000; ++k)
+  {
+    glm::vec3 c;
+    for (int j = 0; j < 3; ++j)
+    {
+      c[j] = static_cast<float>(random->GetNextRangeValue(0.05, 0.95));
+    }
+    const glm::vec3 same = vtkOFBWithLightness(c, vtkOFBLightness(c));
+    ASSERT_LT(glm::length(same - c), 1e-5f);
+    const float l = static_cast<float>(random->GetNextRangeValue(0.1, 0.9));
+    const glm::vec3 d = vtkOFBWithLightness(c, l);
+    ASSERT_NEAR(vtkOFBLightness(d), l, 1e-5f);
+    const float cl = std::min({ c.r, c.g, c.b }), ch = std::max({ c.r, c.g, c.b });
+    const float dl = std::min({ d.r, d.g, d.b }), dh = std::max({ d.r, d.g, d.b });
+    for (int j = 0; j < 3; ++j)
+    {
+      ASSERT_NEAR((c[j] - cl) / (ch - cl), (d[j] - dl) / (dh - dl), 1e-3f);
+    }
+  }
+
+  vtkSmartPointer<vtkOFB> ofb = PaintedOFBWithLIC();
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  vtkNew<vtkOFBMapToColors> filter;
+  filter->IntensityModulationOn();
+  filter->SetLICIntensity(0.5);
+  filter->SetOutputArrayName("Plain");
+  vtkNew<vtkUnsignedCharArray> plain;
+  plain->DeepCopy(MapColors(filter, ofb)->GetSampleData()->GetArray("Plain"));
+  double range[2];
+  filter->GetLightnessRange(range);
+  filter->EnhanceColorContrastOn();
+  filter->SetLowColorContrastEnhancementFactor(0.1);
+  filter->SetHighColorContrastEnhancementFactor(0.2);
+  filter->SetOutputArrayName("Stretched");
+  auto* stretched = vtkUnsignedCharArray::SafeDownCast(
+    MapColors(filter, ofb)->GetSampleData()->GetArray("Stretched"));
+  ASSERT_NE(stretched, nullptr);
+  EXPECT_DOUBLE_EQ(filter->GetLightnessRange()[0], range[0]);
+  const double m = range[0] + 0.1 * (range[1] - range[0]);
+  const double M = range[1] - 0.2 * (range[1] - range[0]);
+  ASSERT_GT(M - m, 0.1);
+  double low = 1.0, high = 0.0, worst = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    glm::vec3 a, b;
+    for (int c = 0; c < 3; ++c)
+    {
+      a[c] = plain->GetTypedComponent(i, c) / 255.0f;
+      b[c] = stretched->GetTypedComponent(i, c) / 255.0f;
+    }
+    if (plain->GetTypedComponent(i, 3) == 0)
+    {
+      continue;
+    }
+    low = std::min(low, static_cast<double>(vtkOFBLightness(a)));
+    high = std::max(high, static_cast<double>(vtkOFBLightness(a)));
+    const double want = std::min(1.0, std::max(0.0, (vtkOFBLightness(a) - m) / (M - m)));
+    worst = std::max(worst, std::abs(vtkOFBLightness(b) - want));
+  }
+  // The range is that of the unrounded colours; the stretch of rounded ones is compared.
+  EXPECT_NEAR(low, range[0], 1.0 / 255.0);
+  EXPECT_NEAR(high, range[1], 1.0 / 255.0);
+  EXPECT_LE(worst, 2.0 / 255.0 / (M - m));
 }
 
 //------------------------------------------------------------------------------

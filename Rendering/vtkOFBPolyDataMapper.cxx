@@ -53,6 +53,10 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , IntensityWeight(1.0)
   , LICColorMode(COLOR_MODE_BLEND)
   , LICIntensity(0.8)
+  , EnhanceColorContrast(false)
+  , LowColorContrastEnhancementFactor(0.0)
+  , HighColorContrastEnhancementFactor(0.0)
+  , LightnessRange{ 0.0, 0.0 }
   , MapModeBias(0.0)
   , UsePaintedNormals(false)
   , LastUploadedSampleCount(0)
@@ -306,7 +310,28 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
   {
     this->UploadLookupTable();
   }
+  if (this->EnhanceColorContrast)
+  {
+    this->UpdateLightnessRange(ofb);
+  }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::UpdateLightnessRange(vtkOFB* ofb)
+{
+  // The colours change with the OFB (painting, a new LIC), the mapper's settings and the
+  // lookup table (in the mapper's MTime).
+  if (this->LightnessTime.GetMTime() > std::max(ofb->GetMTime(), this->GetMTime()))
+  {
+    return;
+  }
+  vtkNew<vtkOFBMapToColors> colors;
+  this->CopyColoringTo(colors);
+  colors->SetInputData(ofb);
+  colors->Update();
+  colors->GetLightnessRange(this->LightnessRange);
+  this->LightnessTime.Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -490,6 +515,9 @@ void vtkOFBPolyDataMapper::CopyColoringTo(vtkOFBMapToColors* filter)
   filter->SetLICIntensity(this->LICIntensity);
   filter->SetMapModeBias(this->MapModeBias);
   filter->SetIntensityWeight(this->IntensityWeight);
+  filter->SetEnhanceColorContrast(this->EnhanceColorContrast);
+  filter->SetLowColorContrastEnhancementFactor(this->LowColorContrastEnhancementFactor);
+  filter->SetHighColorContrastEnhancementFactor(this->HighColorContrastEnhancementFactor);
 }
 
 //------------------------------------------------------------------------------
@@ -519,7 +547,8 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
   {
     this->DeepCells = this->Storage->GetMaximumCellSamples() > DeepCellSamples;
     key << this->LookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity << "|"
-        << this->UseNormals << "|" << this->DeepCells << "|" << this->LICColorMode;
+        << this->UseNormals << "|" << this->DeepCells << "|" << this->LICColorMode << "|"
+        << this->EnhanceColorContrast;
   }
   if (key.str() != this->ShaderKey)
   {
@@ -594,8 +623,10 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(
             << "#define OFB_MAX_LEVELS " << vtkOFBShaderStorage::MaximumNumberOfLevels << "\n"
             << "#define OFB_LIC_MODE " << this->LICColorMode << "\n";
     const std::pair<bool, const char*> flags[] = { { this->SourceScalars, "OFB_SOURCE_SCALARS" },
-      { this->UseIntensity, "OFB_USE_INTENSITY" }, { this->UseNormals, "OFB_USE_NORMALS" },
-      { this->DeepCells, "OFB_DEEP_CELLS" } };
+      { this->UseIntensity, "OFB_USE_INTENSITY" },
+      { this->UseNormals, "OFB_USE_NORMALS" },
+      { this->DeepCells, "OFB_DEEP_CELLS" },
+      { this->EnhanceColorContrast, "OFB_ENHANCE_COLOR" } };
     for (const auto& flag : flags)
     {
       if (flag.first)
@@ -701,6 +732,16 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(
     program->SetUniformf("ofbLICIntensity", static_cast<float>(this->LICIntensity));
     program->SetUniformf("ofbMapModeBias", static_cast<float>(this->MapModeBias));
   }
+  if (this->EnhanceColorContrast)
+  {
+    // Lightness stretch: x the low end m, y 1 / (M - m) (0 where M <= m: no stretch).
+    const double span = this->LightnessRange[1] - this->LightnessRange[0];
+    const double m = this->LightnessRange[0] + this->LowColorContrastEnhancementFactor * span;
+    const double M = this->LightnessRange[1] - this->HighColorContrastEnhancementFactor * span;
+    const float stretch[2] = { static_cast<float>(m),
+      static_cast<float>(M > m ? 1.0 / (M - m) : 0.0) };
+    program->SetUniform2f("ofbLightnessStretch", stretch);
+  }
   if (this->UseNormals && program->IsUniformUsed("ofbNormalMatrix"))
   {
     this->SetNormalMatrix(program, ren, act);
@@ -753,6 +794,11 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LICColorMode: " << GetLICColorModeAsString(this->LICColorMode) << "\n";
   os << indent << "LICIntensity: " << this->LICIntensity << "\n";
   os << indent << "MapModeBias: " << this->MapModeBias << "\n";
+  os << indent << "EnhanceColorContrast: " << this->EnhanceColorContrast << "\n";
+  os << indent << "LowColorContrastEnhancementFactor: " << this->LowColorContrastEnhancementFactor
+     << "\n";
+  os << indent << "HighColorContrastEnhancementFactor: " << this->HighColorContrastEnhancementFactor
+     << "\n";
   os << indent << "UsePaintedNormals: " << (this->UsePaintedNormals ? "On" : "Off") << "\n";
   os << indent << "LastUploadedSampleCount: " << this->LastUploadedSampleCount << "\n";
   os << indent << "LastRenderUsedOFB: " << (this->LastRenderUsedOFB ? "true" : "false") << "\n";

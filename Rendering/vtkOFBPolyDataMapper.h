@@ -67,8 +67,8 @@
  * | MaskOnSurface, MaskThreshold,     | vtkOFBLIC (masking is computed with the LIC)       |
  * |   MaskColor, MaskIntensity        |                                                    |
  * | noise (GenerateNoiseTexture, ...) | vtkOFBLIC                                          |
- * | EnhanceContrast COLOR/BOTH,       | not offered: the combined colour is not stretched  |
- * |   Low/HighColorContrastEnh...     |                                                    |
+ * | EnhanceContrast COLOR/BOTH,       | EnhanceColorContrast (mapper), same names and     |
+ * |   Low/HighColorContrastEnh...     |   formula; the range over the OFB's samples       |
  * | AntiAlias                         | not needed: the LIC lives on the surface; the      |
  * |                                   |   InverseDistance and mipmapped lookups filter it  |
  * | CompositeStrategy                 | not applicable (no image-space compositing)        |
@@ -284,6 +284,26 @@ public:
 
   ///@{
   /**
+   * VTK surface LIC's contrast enhancement of the final colour (its EnhanceContrast modes
+   * ENHANCE_CONTRAST_COLOR and _BOTH; default off): the HSL lightness L of each
+   * fragment's colour (after the LIC) is stretched, L' = clamp((L - m) / (M - m), 0, 1),
+   * with m = min + Low (max - min) and M = max - High (max - min), min and max over the
+   * colours of the OFB's samples (alpha above 0; VTK takes them over the screen's
+   * fragments, which change with the view: here they stay put), hue and saturation kept.
+   * The range is computed on the CPU (vtkOFBMapToColors) when the OFB or a setting
+   * changes. Factors in [0, 1] (default 0).
+   */
+  vtkSetMacro(EnhanceColorContrast, bool);
+  vtkGetMacro(EnhanceColorContrast, bool);
+  vtkBooleanMacro(EnhanceColorContrast, bool);
+  vtkSetClampMacro(LowColorContrastEnhancementFactor, double, 0.0, 1.0);
+  vtkGetMacro(LowColorContrastEnhancementFactor, double);
+  vtkSetClampMacro(HighColorContrastEnhancementFactor, double, 0.0, 1.0);
+  vtkGetMacro(HighColorContrastEnhancementFactor, double);
+  ///@}
+
+  ///@{
+  /**
    * Shade with the OFB's "Normals" sample array instead of the surface normals (default
    * off). Needs lighting on the actor.
    */
@@ -382,6 +402,9 @@ protected:
   void CheckSurfaceInFrame(vtkOFB* ofb);
   bool UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorageSelection& selection);
   void UploadLookupTable();
+  /// The lightness range of the OFB's colours (EnhanceColorContrast), computed again when
+  /// they may have changed.
+  void UpdateLightnessRange(vtkOFB* ofb);
   void UpdateShaderKey();
   void UpdateOFBProducer();
   ///@}
@@ -415,6 +438,11 @@ protected:
   double IntensityWeight;
   int LICColorMode;
   double LICIntensity;
+  bool EnhanceColorContrast;
+  double LowColorContrastEnhancementFactor;
+  double HighColorContrastEnhancementFactor;
+  double LightnessRange[2];   // of the colours shown, before the stretch
+  vtkTimeStamp LightnessTime; // when it was computed
   double MapModeBias;
   bool UsePaintedNormals;
 

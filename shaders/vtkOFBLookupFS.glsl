@@ -9,6 +9,8 @@
 //   OFB_SOURCE_SCALARS  colour from a float sample attribute through a lookup table, else paint
 //   OFB_USE_INTENSITY   a float sample array (the LIC) combines with the colour
 //   OFB_LIC_MODE        how: 0 blend (by ofbLICIntensity), 1 map (multiply, ofbMapModeBias)
+//   OFB_ENHANCE_COLOR   the lightness of the final colour is stretched (VTK surface LIC's
+//                       colour contrast enhancement)
 //   OFB_USE_NORMALS     painted normals replace the interpolated normal for shading
 //   OFB_DEEP_CELLS      some cell holds many samples: binary searches before the linear scans
 // and enables GL_ARB_shader_bit_encoding and (where offered) GL_ARB_ES3_1_compatibility.
@@ -49,6 +51,30 @@ layout(std430) readonly buffer ofbIntensityBlock { uint ofbIntensity[]; };
 uniform float ofbIntensityWeight; // map mode: strength of the multiplication
 uniform float ofbLICIntensity;    // blend mode: the LIC's share
 uniform float ofbMapModeBias;     // map mode: added to the LIC
+#endif
+#ifdef OFB_ENHANCE_COLOR
+uniform vec2 ofbLightnessStretch; // x: low end m, y: 1 / (M - m), 0: none
+
+// HSL lightness, and the colour with another lightness, hue and saturation kept (as
+// Filters/vtkOFBColorSpace.h).
+float ofbLightness(vec3 c)
+{
+  return 0.5 * (max(c.r, max(c.g, c.b)) + min(c.r, min(c.g, c.b)));
+}
+
+vec3 ofbWithLightness(vec3 c, float l)
+{
+  float high = max(c.r, max(c.g, c.b));
+  float low = min(c.r, min(c.g, c.b));
+  float chroma = high - low;
+  float room = 1.0 - abs(high + low - 1.0);
+  if (!(chroma > 0.0) || !(room > 0.0))
+  {
+    return vec3(l);
+  }
+  float chroma2 = (1.0 - abs(2.0 * l - 1.0)) * min(1.0, chroma / room);
+  return clamp(vec3(l) + chroma2 * ((c - low) / chroma - 0.5), 0.0, 1.0);
+}
 #endif
 #ifdef OFB_USE_NORMALS
 layout(std430) readonly buffer ofbNormalsBlock { float ofbNormals[]; };
@@ -337,6 +363,13 @@ vec4 ofbResolve(ofbAccum acc)
 #else
   color.rgb *= mix(1.0, clamp(lic + ofbMapModeBias, 0.0, 1.0), ofbIntensityWeight);
 #endif
+#endif
+#ifdef OFB_ENHANCE_COLOR
+  if (ofbLightnessStretch.y > 0.0)
+  {
+    color.rgb = ofbWithLightness(color.rgb,
+      clamp((ofbLightness(color.rgb) - ofbLightnessStretch.x) * ofbLightnessStretch.y, 0.0, 1.0));
+  }
 #endif
   return color;
 }

@@ -313,11 +313,15 @@ TEST(OFBMapperLICDisplay, ReconvolutionUploadsOnlyTheLICArray)
 
 // vtkOFBMapToColors with the mapper's settings (CopyColoringTo) writes the colours the
 // mapper shows: the OFB drawn with those as paint looks the same, pixel for pixel, with a
-// LIC and scalars that vary from sample to sample.
+// LIC and scalars that vary from sample to sample; also with the colour contrast
+// enhancement, which changes the picture.
 TEST(OFBMapperLICDisplay, MapToColorsWritesWhatTheMapperShows)
 {
-  for (bool scalars : { true, false })
+  vtkSmartPointer<vtkImageData> plainScalars;
+  for (int config : { 0, 1, 2 })
   {
+    const bool scalars = config != 1;
+    const bool enhance = config == 2;
     FlatScene scene;
     const vtkIdType n = scene.OFB->GetNumberOfSamples();
     vtkFloatArray* height =
@@ -335,6 +339,9 @@ TEST(OFBMapperLICDisplay, MapToColorsWritesWhatTheMapperShows)
       scene.Mapper->SetLICColorModeToMap();
       scene.Mapper->SetMapModeBias(0.1);
       scene.Mapper->SetIntensityWeight(0.7);
+      scene.Mapper->SetEnhanceColorContrast(enhance);
+      scene.Mapper->SetLowColorContrastEnhancementFactor(0.1);
+      scene.Mapper->SetHighColorContrastEnhancementFactor(0.2);
     }
     else
     {
@@ -362,8 +369,10 @@ TEST(OFBMapperLICDisplay, MapToColorsWritesWhatTheMapperShows)
     colors->Update();
     ASSERT_EQ(colors->GetOutput()->GetNumberOfSamples(), n);
     scene.Mapper->SetOFB(colors->GetOutput());
+    EXPECT_EQ(colors->GetEnhanceColorContrast(), enhance);
     scene.Mapper->SetColorSourceToPaint();
     scene.Mapper->IntensityModulationOff();
+    scene.Mapper->EnhanceColorContrastOff();
     vtkSmartPointer<vtkImageData> exported = grab();
 
     const auto* a = static_cast<unsigned char*>(shown->GetScalarPointer());
@@ -378,8 +387,23 @@ TEST(OFBMapperLICDisplay, MapToColorsWritesWhatTheMapperShows)
       lit += a[k] > 20 ? 1 : 0;
     }
     EXPECT_GT(lit, Size * Size) << "the square is drawn";
-    EXPECT_LE(worst, 3) << (scalars ? "scalars, map" : "paint, blend");
-    EXPECT_LT(sum / (3 * Size * Size), 0.5);
+    EXPECT_LE(worst, 3) << "configuration " << config;
+    EXPECT_LT(sum / (3 * Size * Size), 0.5) << "configuration " << config;
+    if (config == 0)
+    {
+      plainScalars = shown;
+    }
+    else if (enhance)
+    {
+      // The stretch changed the picture.
+      const auto* p = static_cast<unsigned char*>(plainScalars->GetScalarPointer());
+      double changed = 0.0;
+      for (int k = 0; k < 3 * Size * Size; ++k)
+      {
+        changed += std::abs(a[k] - p[k]);
+      }
+      EXPECT_GT(changed / (3 * Size * Size), 5.0);
+    }
   }
 }
 

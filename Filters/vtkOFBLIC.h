@@ -33,7 +33,9 @@
  * VTK's surface LIC settings keep their names and meanings here (step size and grain
  * in OFB cells instead of pixels). Settings that only a display can apply (ColorMode,
  * LICIntensity, MapModeBias, the colour part of EnhanceContrast, MaskColor and
- * MaskIntensity in the final colour) are stored for the mapper.
+ * MaskIntensity in the final colour) are stored here as VTK has them; the display is
+ * vtkOFBPolyDataMapper's, which has its own (LICColorMode, LICIntensity, MapModeBias,
+ * EnhanceColorContrast with the colour factors), as has vtkOFBMapToColors for export.
  *
  * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (the
  * samples of all three grids in a cube of 64 x 64 x 64 cells); from each sample of the
@@ -278,8 +280,9 @@ public:
    * Contrast enhancement (default ENHANCE_CONTRAST_OFF), as VTK: with _LIC or _BOTH the
    * LIC is stretched, L = (L - m) / (M - m), where m = min + Low * (max - min) and
    * M = max - High * (max - min) over the samples not masked, with Low and High the
-   * LIC factors (default 0); with _COLOR or _BOTH the display stretches the lightness of
-   * the final colour with the colour factors (stored here for the mapper). Another mode,
+   * LIC factors (default 0); _COLOR and _BOTH stretch the lightness of the final colour,
+   * which the display does: set vtkOFBPolyDataMapper's EnhanceColorContrast and its colour
+   * factors (the factors here are only kept). Another mode,
    * or a factor outside [0, 1] (NaN included), is an error at update time.
    */
   vtkSetMacro(EnhanceContrast, int);

@@ -18,8 +18,9 @@
 // blend mode with LICIntensity 0.8, then the grey LIC alone); n noise type; o oriented LIC;
 // l enhanced LIC; d display lookup (InverseDistance, NearestMipmapped: antialiased where
 // a pixel covers many cells, Nearest); space animation (the streaks flow: the LIC is
-// recomputed with a new AnimationPhase on a repeating timer); x export. Mouse: VTK's
-// trackball camera.
+// recomputed with a new AnimationPhase on a repeating timer); c colour contrast (the
+// final colour's lightness stretched, VTK's ENHANCE_CONTRAST_COLOR); x export. Mouse:
+// VTK's trackball camera.
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
@@ -102,7 +103,9 @@ struct App
          << ", n noise: " << noise[this->LIC->GetNoiseType()] << "\n"
          << "o oriented: " << (this->LIC->GetOrientedLIC() ? "on" : "off")
          << ", l enhanced: " << (this->LIC->GetEnhancedLIC() ? "on" : "off")
-         << ", space animation: " << (this->Animating ? "on" : "off") << "\n"
+         << ", space animation: " << (this->Animating ? "on" : "off")
+         << ", c colour contrast: " << (this->Mapper->GetEnhanceColorContrast() ? "on" : "off")
+         << "\n"
          << "d display: "
          << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode())
          << ", x export to " << this->ExportPath;
@@ -164,6 +167,10 @@ struct App
       this->Animating = !this->Animating;
       lic->SetAnimate(this->Animating);
     }
+    else if (key == "c")
+    {
+      this->Mapper->SetEnhanceColorContrast(!this->Mapper->GetEnhanceColorContrast());
+    }
     else if (key == "x")
     {
       this->Export();
@@ -220,7 +227,7 @@ public:
   }
   void OnChar() override
   {
-    const std::string keys = "mnoldx ";
+    const std::string keys = "mnoldcx ";
     if (keys.find(this->Interactor->GetKeyCode()) == std::string::npos)
     {
       this->Superclass::OnChar();
@@ -363,6 +370,8 @@ int main(int argc, char* argv[])
   app.Mapper->SetLookupTable(app.Table);
   app.Mapper->SetScalarArrayName("Speed");
   app.Mapper->SetScalarRange(mesh->GetPointData()->GetArray("Speed")->GetRange());
+  app.Mapper->SetLowColorContrastEnhancementFactor(0.05);
+  app.Mapper->SetHighColorContrastEnhancementFactor(0.05);
   app.Actor->SetMapper(app.Mapper);
   app.Text->GetTextProperty()->SetFontSize(12);
   app.Text->SetPosition(10, 10);

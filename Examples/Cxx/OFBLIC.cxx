@@ -342,6 +342,15 @@ int main(int argc, char* argv[])
       return arg == "--help" ? 0 : 1;
     }
   }
+  // The OBJ writer names the texture after the OBJ: it would replace the image.
+  const std::string::size_type dot = exportPath.rfind('.');
+  if (!image.empty() && dot != std::string::npos && exportPath.substr(dot) == ".obj" &&
+    exportPath.substr(0, dot) + ".png" == image)
+  {
+    std::cerr << "OFBLIC: --export " << exportPath << " would write its texture over --image "
+              << image << ": give them different names.\n";
+    return 1;
+  }
   vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(meshPath);
   if (!mesh)
   {

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <set>
 #include <string>
 #include <vector>
@@ -209,6 +210,31 @@ void FilterLevels(vtkOFB* input,
   }
 }
 
+/// A 64-bit hash of an array's values, bytes and layout (null: 0).
+vtkTypeUInt64 HashValues(vtkDataArray* array)
+{
+  if (!array)
+  {
+    return 0;
+  }
+  const size_t bytes = static_cast<size_t>(array->GetDataSize()) * array->GetDataTypeSize();
+  const auto* data = static_cast<const unsigned char*>(array->GetVoidPointer(0));
+  vtkTypeUInt64 h = 0x9E3779B97F4A7C15ull ^ (bytes * 31 + array->GetDataType());
+  size_t i = 0;
+  for (; i + 8 <= bytes; i += 8)
+  {
+    vtkTypeUInt64 w;
+    std::memcpy(&w, data + i, 8);
+    h = (h ^ w) * 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 31;
+  }
+  for (; i < bytes; ++i)
+  {
+    h = (h ^ data[i]) * 0x94D049BB133111EBull;
+  }
+  return h ^ (h >> 29);
+}
+
 /// Mark the sorted samples `ids` of `ofb` modified, as at most 128 ranges (runs joined
 /// across their smallest gaps first), and the OFB Modified().
 void MarkRuns(vtkOFB* ofb, const std::vector<vtkIdType>& ids)
@@ -248,6 +274,8 @@ vtkOFBPyramid::vtkOFBPyramid()
   , MaximumNumberOfLevels(8)
   , MinimumResolution(8)
   , FilterRadius(1.5)
+  , FilterCacheSize(128)
+  , NumberOfFilterCacheHits(0)
 {
 }
 
@@ -359,6 +387,7 @@ bool vtkOFBPyramid::UpdateLevels()
 //------------------------------------------------------------------------------
 void vtkOFBPyramid::UpdateArrays()
 {
+  this->FilterCache.clear();
   this->FilterAllLevels(nullptr);
   this->AllArraysTime.Modified();
   this->ArraysTime.Modified();
@@ -404,8 +433,95 @@ void vtkOFBPyramid::UpdateModifiedArrays()
     }
     return;
   }
-  this->FilterAllLevels(&changed);
+  std::vector<std::pair<std::string, vtkTypeUInt64>> hashes;
+  this->TakeCachedLevels(changed, hashes);
+  if (!changed.empty())
+  {
+    this->FilterAllLevels(&changed);
+  }
+  this->CacheLevels(hashes);
   this->ArraysTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPyramid::TakeCachedLevels(std::set<std::string>& names,
+  std::vector<std::pair<std::string, vtkTypeUInt64>>& hashes)
+{
+  if (this->FilterCacheSize <= 0)
+  {
+    this->FilterCache.clear();
+    return;
+  }
+  vtkPointData* pd = this->InputOFB->GetSampleData();
+  for (auto it = names.begin(); it != names.end();)
+  {
+    const vtkTypeUInt64 hash = HashValues(pd->GetArray(it->c_str()));
+    hashes.emplace_back(*it, hash);
+    auto hit = std::find_if(this->FilterCache.begin(),
+      this->FilterCache.end(),
+      [&](const CachedFiltering& c)
+      {
+        return c.Hash == hash && c.Name == *it && c.Structure == this->StructureTime.GetMTime() &&
+          c.Levels.size() == this->Levels.size();
+      });
+    if (hit == this->FilterCache.end())
+    {
+      ++it;
+      continue;
+    }
+    // The kept arrays replace the levels' (new objects to a renderer: uploaded whole).
+    for (size_t k = 0; k < this->Levels.size(); ++k)
+    {
+      this->Levels[k]->GetSampleData()->AddArray(hit->Levels[k]);
+      this->Levels[k]->Modified();
+    }
+    std::rotate(hit, hit + 1, this->FilterCache.end()); // most recently used last
+    ++this->NumberOfFilterCacheHits;
+    it = names.erase(it);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPyramid::CacheLevels(const std::vector<std::pair<std::string, vtkTypeUInt64>>& hashes)
+{
+  const size_t budget = static_cast<size_t>(this->FilterCacheSize) * 1048576;
+  for (const auto& named : hashes)
+  {
+    const bool kept = std::any_of(this->FilterCache.begin(),
+      this->FilterCache.end(),
+      [&](const CachedFiltering& c) { return c.Hash == named.second && c.Name == named.first; });
+    if (kept || budget == 0)
+    {
+      continue;
+    }
+    CachedFiltering entry{ named.second, named.first, this->StructureTime.GetMTime(), {}, 0 };
+    for (const auto& level : this->Levels)
+    {
+      vtkDataArray* array = level->GetSampleData()->GetArray(named.first.c_str());
+      if (!array)
+      {
+        entry.Levels.clear();
+        break;
+      }
+      entry.Levels.emplace_back(array);
+      entry.Bytes += static_cast<size_t>(array->GetDataSize()) * array->GetDataTypeSize();
+    }
+    if (!entry.Levels.empty() && entry.Bytes <= budget)
+    {
+      this->FilterCache.push_back(std::move(entry));
+    }
+  }
+  // The least recently used go first.
+  size_t total = 0;
+  for (const CachedFiltering& c : this->FilterCache)
+  {
+    total += c.Bytes;
+  }
+  while (total > budget && !this->FilterCache.empty())
+  {
+    total -= this->FilterCache.front().Bytes;
+    this->FilterCache.erase(this->FilterCache.begin());
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -426,6 +542,8 @@ void vtkOFBPyramid::FilterAllLevels(const std::set<std::string>* names)
 //------------------------------------------------------------------------------
 bool vtkOFBPyramid::FilterChangedSamples()
 {
+  // The levels' arrays are written in place: kept ones could no longer match their hash.
+  this->FilterCache.clear();
   // Level 0's samples marked modified since the last computation (painting marks what
   // it changed); none, or more than a quarter of them, and everything is filtered.
   vtkNew<vtkIdTypeArray> ranges;
@@ -487,5 +605,7 @@ void vtkOFBPyramid::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfLevels: " << this->MaximumNumberOfLevels << "\n";
   os << indent << "MinimumResolution: " << this->MinimumResolution << "\n";
   os << indent << "FilterRadius: " << this->FilterRadius << " cells\n";
+  os << indent << "FilterCacheSize: " << this->FilterCacheSize << " MiB ("
+     << this->FilterCache.size() << " arrays kept, " << this->NumberOfFilterCacheHits << " hits)\n";
   os << indent << "NumberOfLevels: " << this->GetNumberOfLevels() << "\n";
 }

@@ -231,6 +231,67 @@ TEST(OFBPyramid, OnlyModifiedArraysAreFilteredAgain)
   }
 }
 
+// An array whose values come back (an animation looping over the same phases) takes its
+// levels from the filter cache: the values of a filtering, to the bit; painting in place,
+// a full filtering and FilterCacheSize 0 keep nothing.
+TEST(OFBPyramid, RepeatedValuesTakeTheirLevelsFromTheCache)
+{
+  SpherePyramid scene;
+  vtkOFB* ofb = scene.OFB;
+  vtkOFBPyramid* pyramid = scene.Pyramid;
+  vtkNew<vtkFloatArray> lic;
+  lic->SetName("LIC");
+  lic->SetNumberOfTuples(ofb->GetNumberOfSamples());
+  auto phase = [&](int p)
+  {
+    for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+    {
+      double x[3];
+      ofb->GetSamplePosition(i, x);
+      lic->SetValue(i, static_cast<float>(0.5 + 0.5 * std::sin(9.0 * x[2] + p)));
+    }
+    lic->Modified();
+    ofb->Modified();
+    EXPECT_TRUE(pyramid->UpdateLevels());
+  };
+  auto levels = [&]()
+  {
+    std::vector<std::vector<unsigned char>> all;
+    for (int k = 1; k < pyramid->GetNumberOfLevels(); ++k)
+    {
+      all.push_back(Snapshot(pyramid->GetLevel(k))["LIC"]);
+    }
+    return all;
+  };
+  ofb->GetSampleData()->AddArray(lic);
+  phase(0);
+  ASSERT_GE(pyramid->GetNumberOfLevels(), 3);
+  phase(1);
+  const auto one = levels();
+  phase(2);
+  const auto two = levels();
+  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 0);
+  EXPECT_NE(one, two);
+  phase(1);
+  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 1);
+  EXPECT_EQ(levels(), one);
+  phase(2);
+  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 2);
+  EXPECT_EQ(levels(), two);
+  // Painting in place drops the cache: the next phase is filtered again.
+  Fill(ofb, 200, 10, 10);
+  ASSERT_TRUE(pyramid->UpdateLevels());
+  phase(1);
+  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 2);
+  EXPECT_EQ(levels(), one);
+  // Without a cache nothing is kept.
+  pyramid->SetFilterCacheSize(0);
+  phase(2);
+  phase(1);
+  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 2);
+  EXPECT_EQ(levels(), one);
+}
+
 // Painting in place (the samples marked modified, the OFB Modified()) filters again only
 // the samples of each level that read painted ones, marks them modified on their level,
 // and gives the values of a full recomputation (every array, to the bit).
@@ -443,8 +504,13 @@ TEST(OFBPyramid, PrintSelfShowsEverySetting)
   EXPECT_EQ(pyramid->GetMaximumNumberOfLevels(), 16);
   std::ostringstream os;
   pyramid->Print(os);
-  for (const char* name : { "InputOFB", "Surface", "MaximumNumberOfLevels: 16",
-         "MinimumResolution", "FilterRadius", "NumberOfLevels" })
+  for (const char* name : { "InputOFB",
+         "Surface",
+         "MaximumNumberOfLevels: 16",
+         "MinimumResolution",
+         "FilterRadius",
+         "NumberOfLevels",
+         "FilterCacheSize" })
   {
     EXPECT_NE(os.str().find(name), std::string::npos) << name;
   }

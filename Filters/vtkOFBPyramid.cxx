@@ -389,6 +389,22 @@ void vtkOFBPyramid::UpdateArrays()
 {
   this->FilterCache.clear();
   this->FilterAllLevels(nullptr);
+  // Kept as well: an animation's first phase comes back after the others.
+  if (this->FilterCacheSize > 0 && this->InputOFB)
+  {
+    std::vector<std::pair<std::string, vtkTypeUInt64>> hashes;
+    vtkPointData* pd = this->InputOFB->GetSampleData();
+    for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* array = pd->GetArray(a);
+      if (array && array->GetName() &&
+        array->GetNumberOfTuples() == this->InputOFB->GetNumberOfSamples())
+      {
+        hashes.emplace_back(array->GetName(), HashValues(array));
+      }
+    }
+    this->CacheLevels(hashes);
+  }
   this->AllArraysTime.Modified();
   this->ArraysTime.Modified();
 }

@@ -98,8 +98,8 @@ public:
    * instead of filtering again: an animation that loops over the same phases filters
    * each phase once (at the bunny's 1024 cells a LIC's levels take 2.6 MB, a filtering
    * about a second on 2 cores). The least recently used are dropped first; everything is
-   * dropped when the levels are rebuilt, when all arrays are filtered again and when
-   * samples are filtered again in place (painting).
+   * dropped when the levels are rebuilt, when all arrays are filtered again (which keeps
+   * its own results) and when samples are filtered again in place (painting).
    */
   vtkSetClampMacro(FilterCacheSize, int, 0, 1048576);
   vtkGetMacro(FilterCacheSize, int);

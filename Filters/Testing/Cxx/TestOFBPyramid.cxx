@@ -264,8 +264,9 @@ TEST(OFBPyramid, RepeatedValuesTakeTheirLevelsFromTheCache)
     return all;
   };
   ofb->GetSampleData()->AddArray(lic);
-  phase(0);
+  phase(0); // the first filtering, of every array: kept too
   ASSERT_GE(pyramid->GetNumberOfLevels(), 3);
+  const auto zero = levels();
   phase(1);
   const auto one = levels();
   phase(2);
@@ -278,17 +279,21 @@ TEST(OFBPyramid, RepeatedValuesTakeTheirLevelsFromTheCache)
   phase(2);
   EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 2);
   EXPECT_EQ(levels(), two);
-  // Painting in place drops the cache: the next phase is filtered again.
+  phase(0);
+  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 3);
+  EXPECT_EQ(levels(), zero);
+  // Painting the whole OFB filters every array again, which drops what was kept: the
+  // next phase is filtered again.
   Fill(ofb, 200, 10, 10);
   ASSERT_TRUE(pyramid->UpdateLevels());
   phase(1);
-  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 2);
+  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 3);
   EXPECT_EQ(levels(), one);
   // Without a cache nothing is kept.
   pyramid->SetFilterCacheSize(0);
   phase(2);
   phase(1);
-  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 2);
+  EXPECT_EQ(pyramid->GetNumberOfFilterCacheHits(), 3);
   EXPECT_EQ(levels(), one);
 }
 

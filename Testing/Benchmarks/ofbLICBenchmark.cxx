@@ -409,9 +409,11 @@ double TimeFrames(vtkRenderWindow* window,
   vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->DeepCopy(start);
+  // Warm-up frames with other indices than the timed ones: an animation's timed phases
+  // are new (the pyramid's filter cache would otherwise serve the mipmapped ones).
   for (int i = 0; i < 3; ++i)
   {
-    before(i);
+    before(frames + i);
     window->Render();
   }
   if (gl)

@@ -357,9 +357,11 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
   color.Bias = static_cast<float>(this->MapModeBias);
   color.Weight = static_cast<float>(this->IntensityWeight);
 
-  // The lightness range of the colours shown (alpha above 0), then its stretch.
+  // With the stretch: the lightness range of the colours shown (alpha above 0), a pass of
+  // its own before the one that writes them.
   this->LightnessRange[0] = this->LightnessRange[1] = 0.0;
-  const glm::vec2 range = FindLightnessRange(color, n);
+  const glm::vec2 range =
+    this->EnhanceColorContrast ? FindLightnessRange(color, n) : glm::vec2(1.0f, 0.0f);
   if (range[0] <= range[1])
   {
     this->LightnessRange[0] = range[0];

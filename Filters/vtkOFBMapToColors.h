@@ -162,8 +162,9 @@ public:
   ///@}
 
   /**
-   * After an update: the smallest and largest lightness of the colours before the stretch
-   * (0 0 without samples of alpha above 0), what the mapper stretches by.
+   * After an update with EnhanceColorContrast: the smallest and largest lightness of the
+   * colours before the stretch, what the mapper stretches by (0 0 without the stretch or
+   * without samples of alpha above 0: not computed).
    */
   vtkGetVector2Macro(LightnessRange, double);
 

@@ -271,8 +271,7 @@ TEST(MapToColors, ColorContrastStretchesTheLightnessAndKeepsTheHue)
   filter->SetOutputArrayName("Plain");
   vtkNew<vtkUnsignedCharArray> plain;
   plain->DeepCopy(MapColors(filter, ofb)->GetSampleData()->GetArray("Plain"));
-  double range[2];
-  filter->GetLightnessRange(range);
+  EXPECT_EQ(filter->GetLightnessRange()[1], 0.0) << "not computed without the stretch";
   filter->EnhanceColorContrastOn();
   filter->SetLowColorContrastEnhancementFactor(0.1);
   filter->SetHighColorContrastEnhancementFactor(0.2);
@@ -280,7 +279,9 @@ TEST(MapToColors, ColorContrastStretchesTheLightnessAndKeepsTheHue)
   auto* stretched = vtkUnsignedCharArray::SafeDownCast(
     MapColors(filter, ofb)->GetSampleData()->GetArray("Stretched"));
   ASSERT_NE(stretched, nullptr);
-  EXPECT_DOUBLE_EQ(filter->GetLightnessRange()[0], range[0]);
+  double range[2];
+  filter->GetLightnessRange(range);
+  EXPECT_LT(range[0], range[1]);
   const double m = range[0] + 0.1 * (range[1] - range[0]);
   const double M = range[1] - 0.2 * (range[1] - range[0]);
   ASSERT_GT(M - m, 0.1);

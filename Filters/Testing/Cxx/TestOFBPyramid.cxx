@@ -53,6 +53,17 @@ struct SpherePyramid
     this->Pyramid->SetInputOFB(this->OFB);
     this->Pyramid->SetSurface(this->Sphere);
   }
+
+  /// A float sample array "LIC" of `value` everywhere, added to the OFB.
+  vtkSmartPointer<vtkFloatArray> AddLIC(float value)
+  {
+    vtkNew<vtkFloatArray> lic;
+    lic->SetName("LIC");
+    lic->SetNumberOfTuples(this->OFB->GetNumberOfSamples());
+    lic->Fill(value);
+    this->OFB->GetSampleData()->AddArray(lic);
+    return lic.Get();
+  }
 };
 
 /// The bytes of every named sample array of level k, by name.
@@ -172,11 +183,7 @@ TEST(OFBPyramid, OnlyModifiedArraysAreFilteredAgain)
   SpherePyramid scene;
   vtkOFB* ofb = scene.OFB;
   vtkOFBPyramid* pyramid = scene.Pyramid;
-  vtkNew<vtkFloatArray> lic;
-  lic->SetName("LIC");
-  lic->SetNumberOfTuples(ofb->GetNumberOfSamples());
-  lic->Fill(0.25);
-  ofb->GetSampleData()->AddArray(lic);
+  vtkSmartPointer<vtkFloatArray> lic = scene.AddLIC(0.25f);
   ASSERT_TRUE(pyramid->UpdateLevels());
   const int levels = pyramid->GetNumberOfLevels();
   ASSERT_GE(levels, 3);
@@ -239,9 +246,7 @@ TEST(OFBPyramid, RepeatedValuesTakeTheirLevelsFromTheCache)
   SpherePyramid scene;
   vtkOFB* ofb = scene.OFB;
   vtkOFBPyramid* pyramid = scene.Pyramid;
-  vtkNew<vtkFloatArray> lic;
-  lic->SetName("LIC");
-  lic->SetNumberOfTuples(ofb->GetNumberOfSamples());
+  vtkSmartPointer<vtkFloatArray> lic = scene.AddLIC(0.0f);
   auto phase = [&](int p)
   {
     for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
@@ -263,7 +268,6 @@ TEST(OFBPyramid, RepeatedValuesTakeTheirLevelsFromTheCache)
     }
     return all;
   };
-  ofb->GetSampleData()->AddArray(lic);
   phase(0); // the first filtering, of every array: kept too
   ASSERT_GE(pyramid->GetNumberOfLevels(), 3);
   const auto zero = levels();

@@ -351,6 +351,14 @@ TEST(MapToColors, BadInputGivesAnErrorAndAnEmptyOutput)
   double first[3];
   filter->GetLookupTable()->GetColor(0.5, first);
   EXPECT_EQ(colors->GetTypedComponent(7, 2), static_cast<int>(first[2] * 255.0 + 0.5));
+  // A NaN scalar (the LIC's sample n / 2) takes the table's NaN colour.
+  double nanColor[3];
+  filter->GetLookupTable()->GetColor(vtkMath::Nan(), nanColor);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_EQ(colors->GetTypedComponent(ofb->GetNumberOfSamples() / 2, c),
+      static_cast<int>(nanColor[c] * 255.0 + 0.5));
+  }
   // Paint without colours.
   ofb->GetSampleData()->RemoveArray("Colors");
   filter->SetColorSourceToPaint();

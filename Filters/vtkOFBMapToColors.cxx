@@ -297,6 +297,85 @@ bool vtkOFBMapToColors::FindArrays(vtkOFB* input, vtkDataArray*& source, vtkData
 }
 
 //------------------------------------------------------------------------------
+struct vtkOFBMapToColors::Coloring
+{
+  SampledTable Table;
+  std::vector<float> Scalars;
+  std::vector<float> Intensity;
+  SampleColor Color;
+};
+
+//------------------------------------------------------------------------------
+void vtkOFBMapToColors::Prepare(vtkDataArray* source, vtkDataArray* intensityArray, Coloring& c)
+{
+  // The scalar range: the table's own, or set on the table, as vtkMapper does.
+  if (this->ColorSource == Scalars)
+  {
+    vtkScalarsToColors* lut = this->GetLookupTable();
+    double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
+    if (this->UseLookupTableScalarRange)
+    {
+      std::copy(lut->GetRange(), lut->GetRange() + 2, range);
+    }
+    else
+    {
+      lut->SetRange(range);
+    }
+    c.Table.Sample(lut, range);
+  }
+  this->UpdateProgress(0.2);
+  if (this->ColorSource == Scalars)
+  {
+    c.Scalars = Floats(source, this->ScalarComponent);
+  }
+  if (intensityArray)
+  {
+    c.Intensity = Floats(intensityArray, 0);
+  }
+  this->UpdateProgress(0.4);
+
+  SampleColor& color = c.Color;
+  color.Paint = this->ColorSource == Paint
+    ? vtkUnsignedCharArray::SafeDownCast(source)->GetPointer(0)
+    : nullptr;
+  color.Table = &c.Table;
+  color.Scalars = c.Scalars.empty() ? nullptr : c.Scalars.data();
+  color.Intensity = c.Intensity.empty() ? nullptr : c.Intensity.data();
+  color.Blend = this->LICColorMode == COLOR_MODE_BLEND;
+  color.Share = static_cast<float>(this->LICIntensity);
+  color.Bias = static_cast<float>(this->MapModeBias);
+  color.Weight = static_cast<float>(this->IntensityWeight);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBMapToColors::ComputeLightnessRange(vtkOFB* input, double range[2])
+{
+  range[0] = range[1] = 0.0;
+  vtkDataArray* source;
+  vtkDataArray* intensityArray;
+  if (!input)
+  {
+    vtkErrorMacro("No input OFB.");
+    return false;
+  }
+  if (!this->FindArrays(input, source, intensityArray))
+  {
+    return false;
+  }
+  Coloring coloring;
+  this->Prepare(source, intensityArray, coloring);
+  const glm::vec2 found = FindLightnessRange(coloring.Color, input->GetNumberOfSamples());
+  this->UpdateProgress(1.0);
+  if (found[0] > found[1])
+  {
+    return false;
+  }
+  range[0] = found[0];
+  range[1] = found[1];
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkOFBMapToColors::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
@@ -321,41 +400,9 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
     return 1;
   }
   const vtkIdType n = input->GetNumberOfSamples();
-
-  // The scalar range: the table's own, or set on the table, as vtkMapper does.
-  SampledTable table;
-  if (this->ColorSource == Scalars)
-  {
-    vtkScalarsToColors* lut = this->GetLookupTable();
-    double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
-    if (this->UseLookupTableScalarRange)
-    {
-      std::copy(lut->GetRange(), lut->GetRange() + 2, range);
-    }
-    else
-    {
-      lut->SetRange(range);
-    }
-    table.Sample(lut, range);
-  }
-  this->UpdateProgress(0.2);
-  const std::vector<float> scalars =
-    this->ColorSource == Scalars ? Floats(source, this->ScalarComponent) : std::vector<float>();
-  const std::vector<float> intensity =
-    intensityArray ? Floats(intensityArray, 0) : std::vector<float>();
-  this->UpdateProgress(0.4);
-
-  SampleColor color;
-  color.Paint = this->ColorSource == Paint
-    ? vtkUnsignedCharArray::SafeDownCast(source)->GetPointer(0)
-    : nullptr;
-  color.Table = &table;
-  color.Scalars = scalars.empty() ? nullptr : scalars.data();
-  color.Intensity = intensity.empty() ? nullptr : intensity.data();
-  color.Blend = this->LICColorMode == COLOR_MODE_BLEND;
-  color.Share = static_cast<float>(this->LICIntensity);
-  color.Bias = static_cast<float>(this->MapModeBias);
-  color.Weight = static_cast<float>(this->IntensityWeight);
+  Coloring coloring;
+  this->Prepare(source, intensityArray, coloring);
+  const SampleColor& color = coloring.Color;
 
   // With the stretch: the lightness range of the colours shown (alpha above 0), a pass of
   // its own before the one that writes them.

@@ -46,6 +46,7 @@
 #include <string> // for the array names
 
 class vtkDataArray;
+class vtkOFB;
 class vtkScalarsToColors;
 
 class VTKOFBFILTERS_EXPORT vtkOFBMapToColors : public vtkOFBAlgorithm
@@ -168,6 +169,15 @@ public:
    */
   vtkGetVector2Macro(LightnessRange, double);
 
+  /**
+   * The lightness range that an update with EnhanceColorContrast would find for `input`
+   * (the smallest and largest HSL lightness of the colours with alpha above 0, before the
+   * stretch), computed without writing any output or colour array: what
+   * vtkOFBPolyDataMapper stretches by. False, with 0 0, where there is no such colour or
+   * the input lacks the arrays the settings name (an error then).
+   */
+  bool ComputeLightnessRange(vtkOFB* input, double range[2]);
+
   ///@{
   /**
    * Name of the RGBA byte array written (default "DisplayColors"); it becomes the
@@ -194,6 +204,10 @@ protected:
   /// The source colour array (Colors or the scalars) and the intensity (or null), checked;
   /// false with an error.
   bool FindArrays(vtkOFB* input, vtkDataArray*& source, vtkDataArray*& intensity);
+
+  /// The per-sample colouring of the settings (the sampled table, the values as floats).
+  struct Coloring;
+  void Prepare(vtkDataArray* source, vtkDataArray* intensity, Coloring& coloring);
 
   int ColorSource;
   std::string ScalarArrayName;

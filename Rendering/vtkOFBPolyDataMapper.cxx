@@ -328,9 +328,7 @@ void vtkOFBPolyDataMapper::UpdateLightnessRange(vtkOFB* ofb)
   }
   vtkNew<vtkOFBMapToColors> colors;
   this->CopyColoringTo(colors);
-  colors->SetInputData(ofb);
-  colors->Update();
-  colors->GetLightnessRange(this->LightnessRange);
+  colors->ComputeLightnessRange(ofb, this->LightnessRange);
   this->LightnessTime.Modified();
 }
 

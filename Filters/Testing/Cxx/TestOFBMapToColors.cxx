@@ -282,6 +282,16 @@ TEST(MapToColors, ColorContrastStretchesTheLightnessAndKeepsTheHue)
   double range[2];
   filter->GetLightnessRange(range);
   EXPECT_LT(range[0], range[1]);
+  // The range alone (what the mapper asks for): the same numbers, with the stretch off
+  // too, and no array written to the input.
+  const int arrays = ofb->GetSampleData()->GetNumberOfArrays();
+  filter->EnhanceColorContrastOff();
+  double alone[2] = { -1.0, -1.0 };
+  EXPECT_TRUE(filter->ComputeLightnessRange(ofb, alone));
+  EXPECT_EQ(alone[0], range[0]);
+  EXPECT_EQ(alone[1], range[1]);
+  EXPECT_EQ(ofb->GetSampleData()->GetNumberOfArrays(), arrays);
+  filter->EnhanceColorContrastOn();
   const double m = range[0] + 0.1 * (range[1] - range[0]);
   const double M = range[1] - 0.2 * (range[1] - range[0]);
   ASSERT_GT(M - m, 0.1);
@@ -363,6 +373,15 @@ TEST(MapToColors, BadInputGivesAnErrorAndAnEmptyOutput)
   ofb->GetSampleData()->RemoveArray("Colors");
   filter->SetColorSourceToPaint();
   expectError("no \"Colors\" array of RGBA bytes");
+  messages->Clear();
+  double range[2] = { -1.0, -1.0 };
+  EXPECT_FALSE(filter->ComputeLightnessRange(ofb, range));
+  EXPECT_EQ(range[0], 0.0);
+  EXPECT_EQ(range[1], 0.0);
+  EXPECT_NE(messages->Errors.find("no \"Colors\" array of RGBA bytes"), std::string::npos);
+  messages->Clear();
+  EXPECT_FALSE(filter->ComputeLightnessRange(nullptr, range));
+  EXPECT_NE(messages->Errors.find("No input OFB"), std::string::npos);
   // An empty OFB (no arrays either): an error and an empty output, no crash.
   vtkNew<vtkOFB> empty;
   filter->SetColorSourceToScalars();

@@ -500,7 +500,9 @@ public:
   {
     const vtkOFBLICSample& sj = this->Samples[j];
     const glm::dvec3 nj = Vec(sj.Normal);
-    glm::dvec3 q = p + (dir * this->Step) * this->FieldAt(p, j);
+    // The nearest field (the default) inline: the sample's own vector.
+    glm::dvec3 q =
+      p + (dir * this->Step) * (this->FieldRadius > 0.0 ? this->FieldAt(p, j) : Vec(sj.Field));
     // The grid of sample j first (the surface mostly goes on in the same grid), then the
     // other two in the order of the normal's components (where the surface goes on in
     // another grid, the cell under q mostly holds its sample), then all three within

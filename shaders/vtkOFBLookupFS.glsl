@@ -127,8 +127,9 @@ vec4 ofbUnpackColor(uint c)
            float(c >> 24u)) / 255.0;
 }
 
-// Add sample i, whose colour attribute (ofbSamples[i].y) is attr, with weight w.
-void ofbAccumulate(inout ofbAccum acc, int i, uint attr, float w)
+// Add sample i, whose colour attribute (ofbSamples[i].y) is attr and whose intensity
+// word (ofbIntensity[i >> 2], where there is one) is lic, with weight w.
+void ofbAccumulateRead(inout ofbAccum acc, int i, uint attr, uint lic, float w)
 {
 #ifdef OFB_SOURCE_SCALARS
   acc.scalar += w * uintBitsToFloat(attr);
@@ -138,12 +139,28 @@ void ofbAccumulate(inout ofbAccum acc, int i, uint attr, float w)
   acc.color += w * vec4(c.rgb * c.a, c.a);
 #endif
 #ifdef OFB_USE_INTENSITY
-  acc.intensity += w * float((ofbIntensity[i >> 2] >> (8u * uint(i & 3))) & 0xFFu) * (1.0 / 255.0);
+  acc.intensity += w * float((lic >> (8u * uint(i & 3))) & 0xFFu) * (1.0 / 255.0);
 #endif
 #ifdef OFB_USE_NORMALS
   acc.normal += w * vec3(ofbNormals[3 * i], ofbNormals[3 * i + 1], ofbNormals[3 * i + 2]);
 #endif
   acc.weight += w;
+}
+
+// The intensity word of sample i, 0 without intensity.
+uint ofbIntensityWord(int i)
+{
+#ifdef OFB_USE_INTENSITY
+  return ofbIntensity[i >> 2];
+#else
+  return 0u;
+#endif
+}
+
+// Add sample i, whose colour attribute (ofbSamples[i].y) is attr, with weight w.
+void ofbAccumulate(inout ofbAccum acc, int i, uint attr, float w)
+{
+  ofbAccumulateRead(acc, i, attr, ofbIntensityWord(i), w);
 }
 
 // Grid a of level L: g as (u, v, depth) in that grid, its cells along u and v, and the
@@ -211,6 +228,7 @@ ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
   int best = -1;
   float bestScore = 0.0;
   uint bestAttr = 0u;
+  uint bestLic = 0u;
   for (int k = 0; k < ofbNearestVisits; ++k)
   {
     // k < 3: the cell under g in grids a0, a1, a2, by depth within one cell;
@@ -234,6 +252,9 @@ ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
     for (int i = ofbScanStart(first, end, uvd.z - (near ? ofbRadius : 1.0)); i < end; ++i)
     {
       uvec2 s = ofbSamples[i];
+      // The intensity read with the sample, not after the search: the two memory
+      // accesses overlap instead of following each other.
+      uint lic = ofbIntensityWord(i);
       float dd = uintBitsToFloat(s.x) - uvd.z;
       float score = duv2 + dd * dd;
       if (score <= limit && (best < 0 || score < bestScore))
@@ -241,6 +262,7 @@ ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
         best = i;
         bestScore = score;
         bestAttr = s.y;
+        bestLic = lic;
       }
       if (dd >= 0.0)
       {
@@ -255,7 +277,7 @@ ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
   ofbAccum acc = ofbAccumInit();
   if (best >= 0)
   {
-    ofbAccumulate(acc, best, bestAttr, 1.0);
+    ofbAccumulateRead(acc, best, bestAttr, bestLic, 1.0);
   }
   return acc;
 }

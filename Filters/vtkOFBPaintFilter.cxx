@@ -118,11 +118,15 @@ struct DabArrays
 vtkOFBPaintFilter::vtkOFBPaintFilter()
   : Brush(vtkSmartPointer<vtkOFBBrush>::New())
   , Spacing(0.25)
+  , MirrorX(false)
+  , MirrorY(false)
+  , MirrorZ(false)
   , NumberOfChangedSamples(0)
 {
   this->SetNumberOfInputPorts(2);
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 1.0;
   this->DefaultColor[3] = 1.0;
+  this->MirrorOrigin[0] = this->MirrorOrigin[1] = this->MirrorOrigin[2] = 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -366,6 +370,10 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
   painter->SetOFB(output);
   painter->SetBrush(this->Brush);
   painter->SetDefaultColor(this->DefaultColor);
+  painter->SetMirrorX(this->MirrorX);
+  painter->SetMirrorY(this->MirrorY);
+  painter->SetMirrorZ(this->MirrorZ);
+  painter->SetMirrorOrigin(this->MirrorOrigin);
   painter->SetUndoLimit(0);
   vtkNew<vtkCallbackCommand> progress;
   progress->SetClientData(this);
@@ -394,5 +402,9 @@ void vtkOFBPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "DefaultColor: (" << this->DefaultColor[0] << ", " << this->DefaultColor[1]
      << ", " << this->DefaultColor[2] << ", " << this->DefaultColor[3] << ")\n";
+  os << indent << "MirrorX: " << this->MirrorX << ", MirrorY: " << this->MirrorY
+     << ", MirrorZ: " << this->MirrorZ << "\n";
+  os << indent << "MirrorOrigin: (" << this->MirrorOrigin[0] << ", " << this->MirrorOrigin[1]
+     << ", " << this->MirrorOrigin[2] << ")\n";
   os << indent << "NumberOfChangedSamples: " << this->NumberOfChangedSamples << "\n";
 }

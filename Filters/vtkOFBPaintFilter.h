@@ -78,6 +78,25 @@ public:
   vtkGetVector4Macro(DefaultColor, double);
   ///@}
 
+  ///@{
+  /**
+   * Symmetric painting: every dab also at its reflections in the planes through
+   * MirrorOrigin across the axes set (see vtkOFBPainter::SetMirrorX). Default off,
+   * origin (0, 0, 0).
+   */
+  vtkSetMacro(MirrorX, bool);
+  vtkGetMacro(MirrorX, bool);
+  vtkBooleanMacro(MirrorX, bool);
+  vtkSetMacro(MirrorY, bool);
+  vtkGetMacro(MirrorY, bool);
+  vtkBooleanMacro(MirrorY, bool);
+  vtkSetMacro(MirrorZ, bool);
+  vtkGetMacro(MirrorZ, bool);
+  vtkBooleanMacro(MirrorZ, bool);
+  vtkSetVector3Macro(MirrorOrigin, double);
+  vtkGetVector3Macro(MirrorOrigin, double);
+  ///@}
+
   /**
    * The number of samples the last execution changed.
    */
@@ -102,6 +121,10 @@ protected:
   vtkSmartPointer<vtkOFBBrush> Brush;
   double Spacing;
   double DefaultColor[4];
+  bool MirrorX;
+  bool MirrorY;
+  bool MirrorZ;
+  double MirrorOrigin[3];
   vtkIdType NumberOfChangedSamples;
 
 private:

@@ -42,8 +42,12 @@ vtkOFBPainter::vtkOFBPainter()
   : Impl(new Internals)
   , Spacing(0.25)
   , UndoLimit(vtkIdType(256) << 20)
+  , MirrorX(false)
+  , MirrorY(false)
+  , MirrorZ(false)
   , InStroke(false)
 {
+  this->MirrorOrigin[0] = this->MirrorOrigin[1] = this->MirrorOrigin[2] = 0.0;
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 1.0;
   this->DefaultColor[3] = 1.0;
   this->Impl->Brush = vtkSmartPointer<vtkOFBBrush>::New();
@@ -281,6 +285,12 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
     vtkErrorMacro("The brush's SmearAmount, BumpDepth or MaxNormalAngle is not finite.");
     return 0;
   }
+  if (!Finite3(this->MirrorOrigin) && (this->MirrorX || this->MirrorY || this->MirrorZ))
+  {
+    vtkErrorMacro("MirrorOrigin is not finite: nothing painted.");
+    return 0;
+  }
+  this->AddMirrorImages(dabs);
   const int target = brush->GetTarget();
   if (!this->Prepare(target != vtkOFBBrush::NormalTarget, target == vtkOFBBrush::NormalTarget))
   {
@@ -333,6 +343,48 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
     this->CloseStep();
   }
   return count;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::AddMirrorImages(std::vector<vtkOFBDab>& dabs) const
+{
+  const int axes = (this->MirrorX ? 1 : 0) | (this->MirrorY ? 2 : 0) | (this->MirrorZ ? 4 : 0);
+  if (axes == 0)
+  {
+    return;
+  }
+  std::vector<vtkOFBDab> all;
+  all.reserve(dabs.size() * 8);
+  for (const vtkOFBDab& dab : dabs)
+  {
+    const std::size_t first = all.size();
+    // Reflection m flips the axes of its bits: 0 is the dab itself, then x, y, xy, ...
+    for (int m = 0; m < 8; ++m)
+    {
+      if ((m & axes) != m)
+      {
+        continue;
+      }
+      vtkOFBDab image = dab;
+      for (int a = 0; a < 3; ++a)
+      {
+        if (m & (1 << a))
+        {
+          image.Center[a] = 2.0 * this->MirrorOrigin[a] - dab.Center[a];
+          image.Previous[a] = 2.0 * this->MirrorOrigin[a] - dab.Previous[a];
+          image.Normal[a] = -dab.Normal[a];
+        }
+      }
+      const bool painted = std::any_of(all.begin() + first,
+        all.end(),
+        [&](const vtkOFBDab& d) { return std::equal(d.Center, d.Center + 3, image.Center); });
+      if (!painted)
+      {
+        all.push_back(image);
+      }
+    }
+  }
+  dabs.swap(all);
 }
 
 //------------------------------------------------------------------------------
@@ -734,6 +786,10 @@ void vtkOFBPainter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DefaultColor: (" << this->DefaultColor[0] << ", " << this->DefaultColor[1]
      << ", " << this->DefaultColor[2] << ", " << this->DefaultColor[3] << ")\n";
   os << indent << "UndoLimit: " << this->UndoLimit << "\n";
+  os << indent << "MirrorX: " << this->MirrorX << ", MirrorY: " << this->MirrorY
+     << ", MirrorZ: " << this->MirrorZ << "\n";
+  os << indent << "MirrorOrigin: (" << this->MirrorOrigin[0] << ", " << this->MirrorOrigin[1]
+     << ", " << this->MirrorOrigin[2] << ")\n";
   os << indent << "InStroke: " << (this->InStroke ? "yes" : "no") << "\n";
   os << indent << "UndoSteps: " << this->GetNumberOfUndoSteps() << "\n";
   os << indent << "RedoSteps: " << this->GetNumberOfRedoSteps() << "\n";

@@ -171,6 +171,31 @@ public:
 
   ///@{
   /**
+   * Symmetric painting (a paint program's mirror options): with MirrorX every dab is
+   * also painted at its reflection in the plane x = MirrorOrigin[0], likewise MirrorY
+   * and MirrorZ, and with two or three of them at the reflections in their
+   * combinations (up to 8 dabs for one). The reflections are painted in the same call
+   * and undo step, right after their dab, with its radius, colour and strength, their
+   * smear source and centre normal reflected too; a reflection whose centre equals
+   * one already painted for that dab (a centre on a mirror plane) is not painted again.
+   * GetStrokeDabs() lists the dabs placed, not their reflections. Default off, origin
+   * (0, 0, 0) in world coordinates (OFBPaint puts it at the centre of the mesh's box).
+   */
+  vtkSetMacro(MirrorX, bool);
+  vtkGetMacro(MirrorX, bool);
+  vtkBooleanMacro(MirrorX, bool);
+  vtkSetMacro(MirrorY, bool);
+  vtkGetMacro(MirrorY, bool);
+  vtkBooleanMacro(MirrorY, bool);
+  vtkSetMacro(MirrorZ, bool);
+  vtkGetMacro(MirrorZ, bool);
+  vtkBooleanMacro(MirrorZ, bool);
+  vtkSetVector3Macro(MirrorOrigin, double);
+  vtkGetVector3Macro(MirrorOrigin, double);
+  ///@}
+
+  ///@{
+  /**
    * The colour of a "Colors" array the painter creates on an OFB that has none,
    * RGBA in [0, 1] (default opaque white, the sampler's default).
    */
@@ -229,6 +254,8 @@ protected:
   bool MakeDab(const double center[3], double pressure, vtkOFBDab& dab);
   /// Paint dabs, mark the changed ranges, call Modified(); the changed count.
   vtkIdType Paint(std::vector<vtkOFBDab>& dabs);
+  /// Each dab followed by its reflections (MirrorX, MirrorY, MirrorZ).
+  void AddMirrorImages(std::vector<vtkOFBDab>& dabs) const;
   /// Mark the samples changed since the last call modified on the OFB.
   vtkIdType Finish();
   /// Close the open undo step (sorted by sample id), dropping the redo steps.
@@ -243,6 +270,10 @@ protected:
   double Spacing;
   double DefaultColor[4];
   vtkIdType UndoLimit;
+  bool MirrorX;
+  bool MirrorY;
+  bool MirrorZ;
+  double MirrorOrigin[3];
   bool InStroke;
 
 private:

@@ -298,6 +298,23 @@ void vtkOFBPainterRepresentation::NextTarget()
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBPainterRepresentation::NextMirror()
+{
+  vtkOFBPainter* painter = this->GetPainter();
+  if (!painter)
+  {
+    vtkErrorMacro("NextMirror: no painter set.");
+    return;
+  }
+  // none -> x -> y -> z -> none; from a combination set elsewhere, back to none.
+  const bool x = painter->GetMirrorX(), y = painter->GetMirrorY(), z = painter->GetMirrorZ();
+  const int count = (x ? 1 : 0) + (y ? 1 : 0) + (z ? 1 : 0);
+  painter->SetMirrorX(count == 0);
+  painter->SetMirrorY(count == 1 && x);
+  painter->SetMirrorZ(count == 1 && y);
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBPainterRepresentation::NextBlendMode()
 {
   if (vtkOFBBrush* brush = this->GetBrush())

@@ -24,7 +24,7 @@
  *
  * The settings the widget's keys change are methods here, so that an application can bind
  * them to its own controls: ScaleRadius, AddStrength, NextFalloff, NextTarget,
- * NextBlendMode, SelectPaletteColor, NextPaletteColor, Undo and Redo.
+ * NextBlendMode, NextMirror, SelectPaletteColor, NextPaletteColor, Undo and Redo.
  *
  * The stroke lifts the pen where the mouse leaves the surface, or where the picked point
  * jumps by more than MaximumJump brush radii between two events (from an ear onto the body
@@ -174,14 +174,17 @@ public:
   /**
    * Key actions: change the brush (no effect, with an error, without a painter or
    * brush). The Next* methods cycle: falloffs Constant to Gaussian (Custom is skipped: it
-   * needs a curve), targets colour, normal, smear, blend modes Mix to EraseAlpha.
-   * SelectPaletteColor returns false for an index outside the palette.
+   * needs a curve), targets colour, normal, smear, blend modes Mix to EraseAlpha, the
+   * painter's mirror none, x, y, z (vtkOFBPainter::MirrorX, one axis at a time; the
+   * painter's MirrorOrigin is left as it is). SelectPaletteColor returns false for an
+   * index outside the palette.
    */
   void ScaleRadius(int steps);
   void AddStrength(int steps);
   void NextFalloff();
   void NextTarget();
   void NextBlendMode();
+  void NextMirror();
   bool SelectPaletteColor(int index);
   void NextPaletteColor();
   ///@}

@@ -220,6 +220,9 @@ bool vtkOFBPainterWidget::HandleKey(vtkOFBPainterRepresentation* rep)
     case 'b':
       rep->NextBlendMode();
       return true;
+    case 'm':
+      rep->NextMirror();
+      return true;
     case 'c':
       rep->NextPaletteColor();
       return true;

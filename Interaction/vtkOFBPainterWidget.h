@@ -23,6 +23,7 @@
  * - `t`: next target (colour, normal, smear).
  * - `b`: next blend mode (mix, add, subtract, multiply, lighten, darken, erase, erase
  *   alpha).
+ * - `m`: next mirror (none, x, y, z: the painter's MirrorX/Y/Z about its MirrorOrigin).
  * - `1` to `9`: palette colour 1 to 9; `c`: next palette colour.
  * - `u` or Ctrl+Z: undo the last stroke; `U` (Shift+U), Ctrl+Y or Ctrl+Shift+Z: redo.
  * Other keys go to the interactor style (`r` resets the camera, `q` quits, ...). The

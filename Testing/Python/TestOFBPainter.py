@@ -66,6 +66,24 @@ class PainterTest(unittest.TestCase):
         self.assertEqual(painter.Undo(), changed)
         self.assertTrue(np.array_equal(colors(ofb), before))
 
+    def test_mirror_paints_the_reflection(self):
+        ofb = sphere_ofb()
+        before = colors(ofb)
+        painter = vtkofb.vtkOFBPainter()
+        painter.SetOFB(ofb)
+        painter.GetBrush().SetRadius(0.15)
+        painter.GetBrush().SetFalloffToConstant()
+        painter.GetBrush().SetColor(1.0, 0.0, 0.0)
+        painter.MirrorXOn()
+        painter.SetMirrorOrigin(0.0, 0.0, 0.0)
+        self.assertGreater(painter.Dab(0.4, 0.0, 0.3), 0)
+        differs = np.any(colors(ofb) != before, axis=1)
+        x = positions(ofb)[differs, 0]
+        # Painted around (0.4, 0, 0.3) and around its reflection (-0.4, 0, 0.3) only.
+        self.assertGreater(int((x > 0.2).sum()), 10)
+        self.assertGreater(int((x < -0.2).sum()), 10)
+        self.assertEqual(int((np.abs(x) <= 0.2).sum()), 0)
+
     def test_stroke_and_bad_input(self):
         ofb = sphere_ofb()
         painter = vtkofb.vtkOFBPainter()

@@ -261,6 +261,12 @@ void PaintApp::UseOFB(vtkOFB* ofb)
   this->OFB = ofb;
   this->Mapper->SetOFB(ofb);
   this->Widget->GetPainterRepresentation()->SetOFB(ofb);
+  // Mirror painting (key m) reflects across the planes through the centre of the mesh's
+  // box: the plane of symmetry of a model built symmetric about its middle.
+  double bounds[6];
+  this->Surface->GetBounds(bounds);
+  this->Widget->GetPainterRepresentation()->GetPainter()->SetMirrorOrigin(
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
 }
 
 bool PaintApp::LoadOFB(const std::string& path)
@@ -372,13 +378,23 @@ bool PaintApp::PickPixel(double x, double y, double p[3])
 
 namespace
 {
+/// The painter's mirror axes as letters ("x", "xz"), or "none".
+std::string MirrorName(vtkOFBPainter* painter)
+{
+  std::string axes;
+  axes += painter->GetMirrorX() ? "x" : "";
+  axes += painter->GetMirrorY() ? "y" : "";
+  axes += painter->GetMirrorZ() ? "z" : "";
+  return axes.empty() ? "none" : axes;
+}
+
 void PaintApp::UpdateTexts(const std::string& message)
 {
   vtkOFBPainterRepresentation* rep = this->Widget->GetPainterRepresentation();
   std::ostringstream help;
   help << "Left-drag on the surface: paint    other buttons: camera\n"
           "+ / -  brush radius      ] / [  strength\n"
-          "f  falloff    t  target (colour, normal, smear)    b  blend mode\n"
+          "f  falloff    t  target (colour, normal, smear)    b  blend mode    m  mirror\n"
           "1-9  colour:";
   for (int i = 0; i < 9; ++i)
   {
@@ -410,7 +426,8 @@ void PaintApp::UpdateTexts(const std::string& message)
   }
   line << "\nfalloff " << vtkOFBBrush::GetFalloffAsString(brush->GetFalloff()) << "   target "
        << vtkOFBBrush::GetTargetAsString(brush->GetTarget()) << "   blend "
-       << vtkOFBBrush::GetBlendModeAsString(brush->GetBlendMode()) << "   display "
+       << vtkOFBBrush::GetBlendModeAsString(brush->GetBlendMode()) << "   mirror "
+       << MirrorName(rep->GetPainter()) << "   display "
        << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode());
   const std::string status = line.str() + (message.empty() ? "" : "\n" + message);
   this->Status->SetInput(status.c_str());

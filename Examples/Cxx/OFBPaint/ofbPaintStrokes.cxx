@@ -179,6 +179,17 @@ bool Replay::Named(const std::string& command, const std::string& name, std::str
       this->Brush->SetTarget(value);
     }
   }
+  else if (command == "mirror")
+  {
+    const std::string axes = Lower(name);
+    if (axes == "none" || axes.find_first_not_of("xyz") == std::string::npos)
+    {
+      value = 0;
+      this->Painter->SetMirrorX(axes.find('x') != std::string::npos);
+      this->Painter->SetMirrorY(axes.find('y') != std::string::npos);
+      this->Painter->SetMirrorZ(axes.find('z') != std::string::npos);
+    }
+  }
   if (value < 0)
   {
     error = "unknown " + command + " '" + name + "'";
@@ -265,7 +276,7 @@ bool Replay::Line(const std::string& text, std::string& error)
     }
     return true;
   }
-  if (command == "falloff" || command == "blend" || command == "target")
+  if (command == "falloff" || command == "blend" || command == "target" || command == "mirror")
   {
     std::string name;
     return (words >> name) ? this->Named(command, name, error)

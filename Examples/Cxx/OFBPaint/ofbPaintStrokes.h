@@ -10,6 +10,9 @@
 //   falloff NAME             constant, linear, smooth, sphere, root, sharp, gaussian
 //   blend NAME               mix, add, subtract, multiply, lighten, darken, erase, erasealpha
 //   target NAME              color, normal, smear
+//   mirror AXES              paint also at the reflections across the planes through the
+//                            painter's MirrorOrigin (OFBPaint: the centre of the mesh's box):
+//                            none, or letters of x, y and z (xz: across two planes)
 //   spacing F                dab spacing of strokes, a fraction of the radius
 //   smear-amount A           smear target: share of the carried colour, [0, 1]
 //   bump-depth D             normal target: bump depth (negative: dents)

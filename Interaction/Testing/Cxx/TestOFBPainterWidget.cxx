@@ -358,6 +358,18 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   EXPECT_EQ(brush->GetBlendMode(), vtkOFBBrush::Add);
   brush->SetBlendMode(vtkOFBBrush::Mix);
 
+  // Mirror: none, x, y, z, none (one axis at a time).
+  vtkOFBPainter* painter = rep->GetPainter();
+  ASSERT_NE(painter, nullptr);
+  std::vector<int> mirrors;
+  for (int i = 0; i < 4; ++i)
+  {
+    scene.Key('m', "m");
+    mirrors.push_back((painter->GetMirrorX() ? 1 : 0) | (painter->GetMirrorY() ? 2 : 0) |
+      (painter->GetMirrorZ() ? 4 : 0));
+  }
+  EXPECT_EQ(mirrors, (std::vector<int>{ 1, 2, 4, 0 }));
+
   double rgba[4];
   scene.Key('6', "6");
   ASSERT_TRUE(rep->GetPaletteColor(5, rgba));

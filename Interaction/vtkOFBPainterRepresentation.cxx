@@ -19,9 +19,11 @@
 #include "vtkStaticCellLocator.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 vtkStandardNewMacro(vtkOFBPainterRepresentation);
 
@@ -312,6 +314,7 @@ void vtkOFBPainterRepresentation::NextMirror()
   painter->SetMirrorX(count == 0);
   painter->SetMirrorY(count == 1 && x);
   painter->SetMirrorZ(count == 1 && y);
+  this->BuildRepresentation(); // the cursor's rings at the reflections
 }
 
 //------------------------------------------------------------------------------
@@ -625,18 +628,60 @@ void vtkOFBPainterRepresentation::BuildRepresentation()
 //------------------------------------------------------------------------------
 void vtkOFBPainterRepresentation::BuildCursorGeometry(double r)
 {
-  // A ring of radius r around the cursor in the tangent plane; with ConformCursor each
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  this->AddCursorRing(this->CursorPosition, this->CursorNormal, r, points, lines);
+  // The reflections the painter paints too, each with its ring (as the painter, a
+  // reflection that falls on one already drawn is left out).
+  vtkOFBPainter* painter = this->GetPainter();
+  const int axes = !painter ? 0
+                            : (painter->GetMirrorX() ? 1 : 0) | (painter->GetMirrorY() ? 2 : 0) |
+      (painter->GetMirrorZ() ? 4 : 0);
+  std::vector<std::array<double, 3>> centres{
+    { this->CursorPosition[0], this->CursorPosition[1], this->CursorPosition[2] }
+  };
+  for (int m = 1; m < 8; ++m)
+  {
+    if ((m & axes) != m)
+    {
+      continue;
+    }
+    std::array<double, 3> c;
+    double n[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const bool flip = (m & (1 << a)) != 0;
+      c[a] = flip ? 2.0 * painter->GetMirrorOrigin()[a] - this->CursorPosition[a]
+                  : this->CursorPosition[a];
+      n[a] = flip ? -this->CursorNormal[a] : this->CursorNormal[a];
+    }
+    if (std::find(centres.begin(), centres.end(), c) == centres.end())
+    {
+      centres.push_back(c);
+      this->AddCursorRing(c.data(), n, r, points, lines);
+    }
+  }
+  this->CursorPolyData->SetPoints(points);
+  this->CursorPolyData->SetLines(lines);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterRepresentation::AddCursorRing(const double centre[3],
+  const double normal[3],
+  double r,
+  vtkPoints* points,
+  vtkCellArray* lines)
+{
+  // A ring of radius r around the centre in the tangent plane; with ConformCursor each
   // point moves to the nearest OFB sample (the ring then lies on the surface, where the
   // volume brush's sphere cuts it). Lifted along the normal toward the viewer, so that the
   // surface hides less of it, and a tick along the normal.
   const int n = this->CursorResolution;
-  double u[3], v[3];
-  vtkMath::Perpendiculars(this->CursorNormal, u, v, 0.0);
+  double u[3], v[3], nn[3] = { normal[0], normal[1], normal[2] };
+  vtkMath::Perpendiculars(nn, u, v, 0.0);
   vtkOFB* ofb = this->ConformCursor ? this->GetOFB() : nullptr;
   const double lift = this->CursorLift * r + (ofb ? 0.5 * ofb->GetCellSize() : 0.0);
-  vtkPoints* points = this->CursorPolyData->GetPoints();
-  points->SetNumberOfPoints(n + 2);
-  vtkNew<vtkCellArray> lines;
+  const vtkIdType first = points->GetNumberOfPoints();
   lines->InsertNextCell(n + 1);
   for (int k = 0; k < n; ++k)
   {
@@ -644,7 +689,7 @@ void vtkOFBPainterRepresentation::BuildCursorGeometry(double r)
     double p[3], q[3];
     for (int i = 0; i < 3; ++i)
     {
-      p[i] = this->CursorPosition[i] + r * (std::cos(a) * u[i] + std::sin(a) * v[i]);
+      p[i] = centre[i] + r * (std::cos(a) * u[i] + std::sin(a) * v[i]);
     }
     const vtkIdType id = ofb ? ofb->FindClosestSample(p, 0.5 * r) : -1;
     if (id >= 0 && ofb->GetSamplePosition(id, q))
@@ -653,24 +698,18 @@ void vtkOFBPainterRepresentation::BuildCursorGeometry(double r)
     }
     for (int i = 0; i < 3; ++i)
     {
-      p[i] += lift * this->CursorNormal[i];
+      p[i] += lift * normal[i];
     }
-    points->SetPoint(k, p);
-    lines->InsertCellPoint(k);
+    lines->InsertCellPoint(points->InsertNextPoint(p));
   }
-  lines->InsertCellPoint(0);
+  lines->InsertCellPoint(first);
   double tip[3];
   for (int i = 0; i < 3; ++i)
   {
-    tip[i] = this->CursorPosition[i] + 0.5 * r * this->CursorNormal[i];
+    tip[i] = centre[i] + 0.5 * r * normal[i];
   }
-  points->SetPoint(n, this->CursorPosition);
-  points->SetPoint(n + 1, tip);
-  const vtkIdType tick[2] = { n, n + 1 };
+  const vtkIdType tick[2] = { points->InsertNextPoint(centre), points->InsertNextPoint(tip) };
   lines->InsertNextCell(2, tick);
-  this->CursorPolyData->SetLines(lines);
-  points->Modified();
-  this->CursorPolyData->Modified();
 }
 
 //------------------------------------------------------------------------------

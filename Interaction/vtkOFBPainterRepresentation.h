@@ -46,7 +46,9 @@ class vtkActor;
 class vtkCellPicker;
 class vtkOFB;
 class vtkOFBBrush;
+class vtkCellArray;
 class vtkOFBPainter;
+class vtkPoints;
 class vtkPolyDataMapper;
 class vtkPolyData;
 class vtkProp;
@@ -214,6 +216,13 @@ public:
   ///@}
 
   /**
+   * The cursor's lines (read only): a ring on the surface where the brush's sphere cuts
+   * it and a tick along the normal, and one more of each at every reflection the
+   * painter paints too (vtkOFBPainter::MirrorX/Y/Z).
+   */
+  vtkPolyData* GetCursorPolyData() { return this->CursorPolyData; }
+
+  /**
    * Samples changed by the current (or last) stroke so far.
    */
   vtkGetMacro(StrokeSamplesChanged, vtkIdType);
@@ -262,6 +271,12 @@ protected:
   void UpdatePickLocator();
   // The cursor's ring and tick for brush radius r.
   void BuildCursorGeometry(double r);
+  /// One ring of radius r about `centre` in the plane of `normal`, and its tick.
+  void AddCursorRing(const double centre[3],
+    const double normal[3],
+    double r,
+    vtkPoints* points,
+    vtkCellArray* lines);
   // The cursor colour for the brush's target.
   void UpdateCursorColor();
   // Undo (or redo) the painter steps of the last widget stroke.

@@ -3,6 +3,7 @@
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
 #include "vtkCellPicker.h"
 #include "vtkInteractorEventRecorder.h"
 #include "vtkMath.h"
@@ -12,6 +13,7 @@
 #include "vtkOFBPainterWidget.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
@@ -369,6 +371,29 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
       (painter->GetMirrorZ() ? 4 : 0));
   }
   EXPECT_EQ(mirrors, (std::vector<int>{ 1, 2, 4, 0 }));
+  // The cursor shows a ring and a tick for the dab and one of each for its reflection.
+  scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
+  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::OnSurface);
+  EXPECT_EQ(rep->GetCursorPolyData()->GetNumberOfLines(), 2);
+  painter->SetMirrorOrigin(0.01, 0.0, 0.0);
+  scene.Key('m', "m");
+  ASSERT_TRUE(painter->GetMirrorX());
+  vtkPolyData* cursor = rep->GetCursorPolyData();
+  ASSERT_EQ(cursor->GetNumberOfLines(), 4);
+  // The second tick starts at the reflection of the cursor's position across x = 0.01.
+  vtkIdType count;
+  const vtkIdType* ids;
+  cursor->GetLines()->GetCellAtId(3, count, ids);
+  double tick[3];
+  cursor->GetPoint(ids[0], tick);
+  const double* at = rep->GetCursorPosition();
+  EXPECT_NEAR(tick[0], 0.02 - at[0], 1e-6); // points stored as floats
+  EXPECT_NEAR(tick[1], at[1], 1e-6);
+  EXPECT_NEAR(tick[2], at[2], 1e-6);
+  scene.Key('m', "m");
+  scene.Key('m', "m");
+  scene.Key('m', "m");
+  ASSERT_FALSE(painter->GetMirrorX() || painter->GetMirrorY() || painter->GetMirrorZ());
 
   double rgba[4];
   scene.Key('6', "6");

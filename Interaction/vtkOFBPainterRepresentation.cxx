@@ -51,6 +51,7 @@ vtkOFBPainterRepresentation::vtkOFBPainterRepresentation()
   , Picker(vtkCellPicker::New())
   , PickTolerance(0.0005)
   , MaximumJump(4.0)
+  , StabilizerDistance(0.0)
   , CursorResolution(64)
   , CursorLift(0.05)
   , RadiusFactor(1.25)
@@ -76,7 +77,7 @@ vtkOFBPainterRepresentation::vtkOFBPainterRepresentation()
   }
   for (int i = 0; i < 3; ++i)
   {
-    this->CursorPosition[i] = this->LastStrokePoint[i] = 0.0;
+    this->CursorPosition[i] = this->LastStrokePoint[i] = this->LastPickedPoint[i] = 0.0;
     this->CursorNormal[i] = i == 2 ? 1.0 : 0.0;
   }
 
@@ -559,11 +560,31 @@ void vtkOFBPainterRepresentation::ContinueStroke(bool hit)
     return;
   }
   vtkOFBBrush* brush = this->Painter->GetBrush();
-  const double jump = this->MaximumJump * (brush ? brush->GetRadius() : 0.0);
+  const double radius = brush ? brush->GetRadius() : 0.0;
+  const double jump = this->MaximumJump * radius;
   if (this->HasLastPoint &&
-    vtkMath::Distance2BetweenPoints(this->LastStrokePoint, this->CursorPosition) > jump * jump)
+    vtkMath::Distance2BetweenPoints(this->LastPickedPoint, this->CursorPosition) > jump * jump)
   {
     this->HasLastPoint = false;
+  }
+  std::copy_n(this->CursorPosition, 3, this->LastPickedPoint);
+  // With the stabilizer the brush trails the cursor by a string of that length.
+  double target[3] = { this->CursorPosition[0], this->CursorPosition[1], this->CursorPosition[2] };
+  const double string = this->StabilizerDistance * radius;
+  if (this->HasLastPoint && string > 0.0)
+  {
+    const double d =
+      std::sqrt(vtkMath::Distance2BetweenPoints(this->LastStrokePoint, this->CursorPosition));
+    if (d <= string)
+    {
+      return; // the string is slack: nothing to paint
+    }
+    const double t = (d - string) / d;
+    for (int i = 0; i < 3; ++i)
+    {
+      target[i] =
+        this->LastStrokePoint[i] + t * (this->CursorPosition[i] - this->LastStrokePoint[i]);
+    }
   }
   if (!this->HasLastPoint && this->PiecePainted)
   {
@@ -575,9 +596,9 @@ void vtkOFBPainterRepresentation::ContinueStroke(bool hit)
   }
   // The first StrokeTo of a painter stroke places a dab at the point; the next ones dab
   // along the segment from the previous point.
-  this->StrokeSamplesChanged += this->Painter->StrokeTo(this->CursorPosition);
+  this->StrokeSamplesChanged += this->Painter->StrokeTo(target);
   this->PiecePainted = true;
-  std::copy_n(this->CursorPosition, 3, this->LastStrokePoint);
+  std::copy_n(target, 3, this->LastStrokePoint);
   this->HasLastPoint = true;
 }
 
@@ -767,6 +788,7 @@ void vtkOFBPainterRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PaintedProp: " << this->PaintedProp << "\n";
   os << indent << "PickTolerance: " << this->PickTolerance << "\n";
   os << indent << "MaximumJump: " << this->MaximumJump << "\n";
+  os << indent << "StabilizerDistance: " << this->StabilizerDistance << "\n";
   os << indent << "CursorResolution: " << this->CursorResolution << "\n";
   os << indent << "CursorLift: " << this->CursorLift << "\n";
   os << indent << "ConformCursor: " << (this->ConformCursor ? "On" : "Off") << "\n";

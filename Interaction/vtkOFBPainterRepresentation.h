@@ -121,6 +121,19 @@ public:
 
   ///@{
   /**
+   * Stroke stabilizer (a paint program's "lazy mouse"), in brush radii (0-100, default 0:
+   * off). The brush trails the cursor on a string this long: a move that leaves the
+   * cursor within that distance of the last painted point paints nothing, a longer one
+   * paints up to the point that far short of the cursor, on the segment toward it. Small
+   * jitters of the hand then leave no trace and the stroke runs smoother. MaximumJump
+   * is measured between the cursor's surface points, not from the trailing brush.
+   */
+  vtkSetClampMacro(StabilizerDistance, double, 0.0, 100.0);
+  vtkGetMacro(StabilizerDistance, double);
+  ///@}
+
+  ///@{
+  /**
    * The cursor: the ring's number of points (default 64); its lift along the normal, as
    * a fraction of the brush radius (default 0.05; plus half a cell with ConformCursor);
    * ConformCursor (default on) moves each ring point to the nearest OFB sample, so that
@@ -287,6 +300,7 @@ protected:
   vtkCellPicker* Picker;
   double PickTolerance;
   double MaximumJump;
+  double StabilizerDistance;
   int CursorResolution;
   double CursorLift;
   double RadiusFactor;
@@ -297,6 +311,7 @@ protected:
   double CursorPosition[3];
   double CursorNormal[3];
   double LastStrokePoint[3];
+  double LastPickedPoint[3];   // the cursor's last surface point in the stroke
   bool PenDown;                // a stroke is open
   bool HasLastPoint;           // LastStrokePoint is the stroke's last painted point
   bool PiecePainted;           // the current painter stroke has had a StrokeTo

@@ -395,6 +395,7 @@ void PaintApp::UpdateTexts(const std::string& message)
   help << "Left-drag on the surface: paint    other buttons: camera\n"
           "+ / -  brush radius      ] / [  strength\n"
           "f  falloff    t  target (colour, normal, smear)    b  blend mode    m  mirror\n"
+          "g  stroke stabilizer (the brush trails the cursor by 0, 1, 2 or 4 radii)\n"
           "1-9  colour:";
   for (int i = 0; i < 9; ++i)
   {
@@ -427,7 +428,8 @@ void PaintApp::UpdateTexts(const std::string& message)
   line << "\nfalloff " << vtkOFBBrush::GetFalloffAsString(brush->GetFalloff()) << "   target "
        << vtkOFBBrush::GetTargetAsString(brush->GetTarget()) << "   blend "
        << vtkOFBBrush::GetBlendModeAsString(brush->GetBlendMode()) << "   mirror "
-       << MirrorName(rep->GetPainter()) << "   display "
+       << MirrorName(rep->GetPainter()) << "   stabilizer " << rep->GetStabilizerDistance()
+       << " r   display "
        << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode());
   const std::string status = line.str() + (message.empty() ? "" : "\n" + message);
   this->Status->SetInput(status.c_str());
@@ -496,6 +498,15 @@ void PaintApp::OnKey(vtkObject*, unsigned long, void* clientData, void*)
     case 'r':
       self->ResetView(0.0, 0.0, 1.0);
       break;
+    case 'g':
+    {
+      // The stroke stabilizer ("lazy mouse"): the brush trails the cursor by 0, 1, 2 or 4
+      // brush radii.
+      vtkOFBPainterRepresentation* rep = self->Widget->GetPainterRepresentation();
+      const double d = rep->GetStabilizerDistance();
+      rep->SetStabilizerDistance(d < 1.0 ? 1.0 : (d < 2.0 ? 2.0 : (d < 4.0 ? 4.0 : 0.0)));
+      break;
+    }
     case 'd':
       // NearestMipmapped filters the OFB's pyramid; a stroke then filters again only the
       // samples of each level near the paint (vtkOFBPyramid), so painting stays fluid.

@@ -13,6 +13,7 @@
 #include "vtkOFBPainterWidget.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
@@ -495,6 +496,57 @@ TEST(PainterWidget, StrokeLeavingTheSurfaceIsOneUndoStep)
   EXPECT_EQ(CopyColors(scene.OFB), before);
   EXPECT_GT(scene.Widget->GetPainterRepresentation()->Redo(), 0);
   EXPECT_EQ(CopyColors(scene.OFB), painted);
+}
+
+TEST(PainterWidget, StabilizerTrailsTheCursor)
+{
+  PaintScene scene;
+  ASSERT_TRUE(scene.Setup());
+  vtkOFBPainterRepresentation* rep = scene.Widget->GetPainterRepresentation();
+  const double radius = rep->GetBrush()->GetRadius();
+  const double string = 3.0 * radius;
+  rep->SetStabilizerDistance(3.0);
+  const std::vector<unsigned char> before = CopyColors(scene.OFB);
+  scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
+  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::OnSurface);
+  scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
+  const vtkIdType first = rep->GetStrokeSamplesChanged();
+  EXPECT_GT(first, 0) << "the press paints its dab";
+  double start[3];
+  rep->GetCursorPosition(start);
+  // While the cursor stays within the string's length of that dab, nothing more.
+  int x = 151;
+  for (; x < 230; ++x)
+  {
+    scene.Event(vtkCommand::MouseMoveEvent, x, 150);
+    if (vtkMath::Distance2BetweenPoints(rep->GetCursorPosition(), start) > string * string)
+    {
+      break;
+    }
+    EXPECT_EQ(rep->GetStrokeSamplesChanged(), first) << "slack string, x = " << x;
+  }
+  ASSERT_LT(x, 230) << "the cursor never left the string's reach";
+  // Farther on, the brush follows a string's length behind the cursor: every dab of the
+  // stroke lies about that far or farther from the cursor, the last one about that far.
+  for (int k = 1; k <= 10; ++k)
+  {
+    scene.Event(vtkCommand::MouseMoveEvent, x + 2 * k, 150);
+  }
+  EXPECT_GT(rep->GetStrokeSamplesChanged(), first);
+  const double* cursor = rep->GetCursorPosition();
+  vtkPoints* dabs = rep->GetPainter()->GetStrokeDabs();
+  ASSERT_GT(dabs->GetNumberOfPoints(), 1);
+  double nearest = VTK_DOUBLE_MAX;
+  for (vtkIdType i = 0; i < dabs->GetNumberOfPoints(); ++i)
+  {
+    nearest =
+      std::min(nearest, std::sqrt(vtkMath::Distance2BetweenPoints(dabs->GetPoint(i), cursor)));
+  }
+  EXPECT_GT(nearest, 0.9 * string);
+  EXPECT_LT(nearest, string + 0.5 * radius);
+  scene.Event(vtkCommand::LeftButtonReleaseEvent, x + 20, 150);
+  EXPECT_GT(rep->Undo(), 0);
+  EXPECT_EQ(CopyColors(scene.OFB), before);
 }
 
 TEST(PainterWidget, PressOffTheSurfaceIsLeftToTheStyle)

@@ -127,9 +127,10 @@ vec4 ofbUnpackColor(uint c)
            float(c >> 24u)) / 255.0;
 }
 
-// Add sample i, whose colour attribute (ofbSamples[i].y) is attr and whose intensity
-// word (ofbIntensity[i >> 2], where there is one) is lic, with weight w.
-void ofbAccumulateRead(inout ofbAccum acc, int i, uint attr, uint lic, float w)
+// Add sample i, whose colour attribute (ofbSamples[i].y) is attr, whose intensity word
+// (ofbIntensity[i >> 2], where there is one) is lic and whose painted normal (where the
+// mapper uses them) is normal, with weight w.
+void ofbAccumulateRead(inout ofbAccum acc, int i, uint attr, uint lic, vec3 normal, float w)
 {
 #ifdef OFB_SOURCE_SCALARS
   acc.scalar += w * uintBitsToFloat(attr);
@@ -142,7 +143,7 @@ void ofbAccumulateRead(inout ofbAccum acc, int i, uint attr, uint lic, float w)
   acc.intensity += w * float((lic >> (8u * uint(i & 3))) & 0xFFu) * (1.0 / 255.0);
 #endif
 #ifdef OFB_USE_NORMALS
-  acc.normal += w * vec3(ofbNormals[3 * i], ofbNormals[3 * i + 1], ofbNormals[3 * i + 2]);
+  acc.normal += w * normal;
 #endif
   acc.weight += w;
 }
@@ -157,10 +158,20 @@ uint ofbIntensityWord(int i)
 #endif
 }
 
+// The painted normal of sample i, 0 without painted normals.
+vec3 ofbPaintedNormal(int i)
+{
+#ifdef OFB_USE_NORMALS
+  return vec3(ofbNormals[3 * i], ofbNormals[3 * i + 1], ofbNormals[3 * i + 2]);
+#else
+  return vec3(0.0);
+#endif
+}
+
 // Add sample i, whose colour attribute (ofbSamples[i].y) is attr, with weight w.
 void ofbAccumulate(inout ofbAccum acc, int i, uint attr, float w)
 {
-  ofbAccumulateRead(acc, i, attr, ofbIntensityWord(i), w);
+  ofbAccumulateRead(acc, i, attr, ofbIntensityWord(i), ofbPaintedNormal(i), w);
 }
 
 // Grid a of level L: g as (u, v, depth) in that grid, its cells along u and v, and the
@@ -229,6 +240,7 @@ ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
   float bestScore = 0.0;
   uint bestAttr = 0u;
   uint bestLic = 0u;
+  vec3 bestNormal = vec3(0.0);
   for (int k = 0; k < ofbNearestVisits; ++k)
   {
     // k < 3: the cell under g in grids a0, a1, a2, by depth within one cell;
@@ -252,9 +264,10 @@ ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
     for (int i = ofbScanStart(first, end, uvd.z - (near ? ofbRadius : 1.0)); i < end; ++i)
     {
       uvec2 s = ofbSamples[i];
-      // The intensity read with the sample, not after the search: the two memory
-      // accesses overlap instead of following each other.
+      // The intensity and painted normal read with the sample, not after the search:
+      // the memory accesses overlap instead of following each other.
       uint lic = ofbIntensityWord(i);
+      vec3 normal = ofbPaintedNormal(i);
       float dd = uintBitsToFloat(s.x) - uvd.z;
       float score = duv2 + dd * dd;
       if (score <= limit && (best < 0 || score < bestScore))
@@ -263,6 +276,7 @@ ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
         bestScore = score;
         bestAttr = s.y;
         bestLic = lic;
+        bestNormal = normal;
       }
       if (dd >= 0.0)
       {
@@ -277,7 +291,7 @@ ofbAccum ofbLookupNearest(int L, vec3 g, vec3 n)
   ofbAccum acc = ofbAccumInit();
   if (best >= 0)
   {
-    ofbAccumulateRead(acc, best, bestAttr, bestLic, 1.0);
+    ofbAccumulateRead(acc, best, bestAttr, bestLic, bestNormal, 1.0);
   }
   return acc;
 }

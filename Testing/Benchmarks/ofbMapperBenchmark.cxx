@@ -8,7 +8,8 @@
 // --warmup N (untimed frames before each timing, default 3), --modes LIST (comma-separated
 // subset of nearest,idw,mipmapped,nearestmipmapped; default all), --width W --height H
 // (1280x1024), --images PREFIX (write PREFIX<k>-<mapper>.ppm of the first view of every
-// mapper), --offscreen (render off screen: the frame is not copied to the X server).
+// mapper), --offscreen (render off screen: the frame is not copied to the X server),
+// --painted-normals (each mode also with UsePaintedNormals, the sample normals shading).
 // Fairness: one window, renderer, actor, property and headlight for every mapper; each
 // timing starts from the same camera and turns it once around the surface; the mappers
 // take turns within every round (so that a change of machine load hits all of them), and
@@ -160,6 +161,7 @@ struct Options
   int Height = 1024;
   std::string Images;
   bool OffScreen = false;
+  bool PaintedNormals = false; // each mode also with UsePaintedNormals
   std::vector<int> Modes = { vtkOFBPolyDataMapper::Nearest,
     vtkOFBPolyDataMapper::InverseDistance,
     vtkOFBPolyDataMapper::Mipmapped,
@@ -225,6 +227,11 @@ int ParseOptions(int argc, char* argv[], Options& o)
       o.OffScreen = true;
       continue;
     }
+    if (arg == "--painted-normals")
+    {
+      o.PaintedNormals = true;
+      continue;
+    }
     if (arg == "--modes" && hasValue)
     {
       if (!ParseModes(argv[++i], o.Modes))
@@ -268,10 +275,10 @@ int ParseOptions(int argc, char* argv[], Options& o)
       *integer = std::max(minimum, std::atoi(argv[++i]));
       continue;
     }
-    std::cout
-      << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
-         "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped,nearestmipmapped] [--width W] "
-         "[--height H] [--images PREFIX] [--offscreen]\n";
+    std::cout << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
+                 "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped,nearestmipmapped] "
+                 "[--painted-normals] [--width W] "
+                 "[--height H] [--images PREFIX] [--offscreen]\n";
     return arg == "--help" ? 0 : 1;
   }
   return -1;
@@ -356,13 +363,21 @@ bool SetUp(Bench& b, const Options& o, vtkPolyData* surface, vtkPolyData* colore
   b.Names.assign(1, "vtkPolyDataMapper, vertex colours");
   for (int mode : o.Modes)
   {
-    vtkNew<vtkOFBPolyDataMapper> mapper;
-    mapper->SetInputData(surface);
-    mapper->SetOFB(ofb);
-    mapper->SetLookupMode(mode);
-    b.Mappers.emplace_back(mapper.Get());
-    b.Names.push_back(
-      std::string("vtkOFBPolyDataMapper, ") + vtkOFBPolyDataMapper::GetLookupModeAsString(mode));
+    for (bool normals : { false, true })
+    {
+      if (normals && !o.PaintedNormals)
+      {
+        continue;
+      }
+      vtkNew<vtkOFBPolyDataMapper> mapper;
+      mapper->SetInputData(surface);
+      mapper->SetOFB(ofb);
+      mapper->SetLookupMode(mode);
+      mapper->SetUsePaintedNormals(normals);
+      b.Mappers.emplace_back(mapper.Get());
+      b.Names.push_back(std::string("vtkOFBPolyDataMapper, ") +
+        vtkOFBPolyDataMapper::GetLookupModeAsString(mode) + (normals ? ", painted normals" : ""));
+    }
   }
   b.Actor->SetMapper(peer);
   b.Renderer->ResetCamera();

@@ -8,6 +8,7 @@
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
+#include "vtkOFBBrushRing.h"
 #include "vtkOFBPainter.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
@@ -651,7 +652,16 @@ void vtkOFBPainterRepresentation::BuildCursorGeometry(double r)
 {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> lines;
-  this->AddCursorRing(this->CursorPosition, this->CursorNormal, r, points, lines);
+  vtkOFB* conform = this->ConformCursor ? this->GetOFB() : nullptr;
+  const double lift = this->CursorLift * r + (conform ? 0.5 * conform->GetCellSize() : 0.0);
+  vtkOFBAddBrushRing(conform,
+    this->CursorPosition,
+    this->CursorNormal,
+    r,
+    this->CursorResolution,
+    lift,
+    points,
+    lines);
   // The reflections the painter paints too, each with its ring (as the painter, a
   // reflection that falls on one already drawn is left out).
   vtkOFBPainter* painter = this->GetPainter();
@@ -679,58 +689,11 @@ void vtkOFBPainterRepresentation::BuildCursorGeometry(double r)
     if (std::find(centres.begin(), centres.end(), c) == centres.end())
     {
       centres.push_back(c);
-      this->AddCursorRing(c.data(), n, r, points, lines);
+      vtkOFBAddBrushRing(conform, c.data(), n, r, this->CursorResolution, lift, points, lines);
     }
   }
   this->CursorPolyData->SetPoints(points);
   this->CursorPolyData->SetLines(lines);
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBPainterRepresentation::AddCursorRing(const double centre[3],
-  const double normal[3],
-  double r,
-  vtkPoints* points,
-  vtkCellArray* lines)
-{
-  // A ring of radius r around the centre in the tangent plane; with ConformCursor each
-  // point moves to the nearest OFB sample (the ring then lies on the surface, where the
-  // volume brush's sphere cuts it). Lifted along the normal toward the viewer, so that the
-  // surface hides less of it, and a tick along the normal.
-  const int n = this->CursorResolution;
-  double u[3], v[3], nn[3] = { normal[0], normal[1], normal[2] };
-  vtkMath::Perpendiculars(nn, u, v, 0.0);
-  vtkOFB* ofb = this->ConformCursor ? this->GetOFB() : nullptr;
-  const double lift = this->CursorLift * r + (ofb ? 0.5 * ofb->GetCellSize() : 0.0);
-  const vtkIdType first = points->GetNumberOfPoints();
-  lines->InsertNextCell(n + 1);
-  for (int k = 0; k < n; ++k)
-  {
-    const double a = 2.0 * vtkMath::Pi() * k / n;
-    double p[3], q[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      p[i] = centre[i] + r * (std::cos(a) * u[i] + std::sin(a) * v[i]);
-    }
-    const vtkIdType id = ofb ? ofb->FindClosestSample(p, 0.5 * r) : -1;
-    if (id >= 0 && ofb->GetSamplePosition(id, q))
-    {
-      std::copy_n(q, 3, p);
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-      p[i] += lift * normal[i];
-    }
-    lines->InsertCellPoint(points->InsertNextPoint(p));
-  }
-  lines->InsertCellPoint(first);
-  double tip[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    tip[i] = centre[i] + 0.5 * r * normal[i];
-  }
-  const vtkIdType tick[2] = { points->InsertNextPoint(centre), points->InsertNextPoint(tip) };
-  lines->InsertNextCell(2, tick);
 }
 
 //------------------------------------------------------------------------------

@@ -46,9 +46,7 @@ class vtkActor;
 class vtkCellPicker;
 class vtkOFB;
 class vtkOFBBrush;
-class vtkCellArray;
 class vtkOFBPainter;
-class vtkPoints;
 class vtkPolyDataMapper;
 class vtkPolyData;
 class vtkProp;
@@ -284,12 +282,6 @@ protected:
   void UpdatePickLocator();
   // The cursor's ring and tick for brush radius r.
   void BuildCursorGeometry(double r);
-  /// One ring of radius r about `centre` in the plane of `normal`, and its tick.
-  void AddCursorRing(const double centre[3],
-    const double normal[3],
-    double r,
-    vtkPoints* points,
-    vtkCellArray* lines);
   // The cursor colour for the brush's target.
   void UpdateCursorColor();
   // Undo (or redo) the painter steps of the last widget stroke.

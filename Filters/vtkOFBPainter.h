@@ -194,6 +194,15 @@ public:
   vtkGetVector3Macro(MirrorOrigin, double);
   ///@}
 
+  /**
+   * The reflections of `point` that mirror painting paints besides it, in the order
+   * painted: up to 7 points (3 doubles each) in `reflections`, and for each in `axes` the
+   * axes it flips (bit 0 x, 1 y, 2 z: a vector at the point, a normal say, reflects by
+   * negating those components). A reflection equal to the point or to an earlier one is
+   * left out. Returns how many; 0 without a mirror.
+   */
+  int GetMirrorReflections(const double point[3], double reflections[21], int axes[7]) const;
+
   ///@{
   /**
    * The colour of a "Colors" array the painter creates on an OFB that has none,

@@ -20,7 +20,6 @@
 #include "vtkStaticCellLocator.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -662,34 +661,21 @@ void vtkOFBPainterRepresentation::BuildCursorGeometry(double r)
     lift,
     points,
     lines);
-  // The reflections the painter paints too, each with its ring (as the painter, a
-  // reflection that falls on one already drawn is left out).
-  vtkOFBPainter* painter = this->GetPainter();
-  const int axes = !painter ? 0
-                            : (painter->GetMirrorX() ? 1 : 0) | (painter->GetMirrorY() ? 2 : 0) |
-      (painter->GetMirrorZ() ? 4 : 0);
-  std::vector<std::array<double, 3>> centres{
-    { this->CursorPosition[0], this->CursorPosition[1], this->CursorPosition[2] }
-  };
-  for (int m = 1; m < 8; ++m)
+  // The reflections the painter paints too, each with its ring.
+  if (vtkOFBPainter* painter = this->GetPainter())
   {
-    if ((m & axes) != m)
+    double centres[21];
+    int axes[7];
+    const int count = painter->GetMirrorReflections(this->CursorPosition, centres, axes);
+    for (int k = 0; k < count; ++k)
     {
-      continue;
-    }
-    std::array<double, 3> c;
-    double n[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      const bool flip = (m & (1 << a)) != 0;
-      c[a] = flip ? 2.0 * painter->GetMirrorOrigin()[a] - this->CursorPosition[a]
-                  : this->CursorPosition[a];
-      n[a] = flip ? -this->CursorNormal[a] : this->CursorNormal[a];
-    }
-    if (std::find(centres.begin(), centres.end(), c) == centres.end())
-    {
-      centres.push_back(c);
-      vtkOFBAddBrushRing(conform, c.data(), n, r, this->CursorResolution, lift, points, lines);
+      double n[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        n[a] = (axes[k] & (1 << a)) ? -this->CursorNormal[a] : this->CursorNormal[a];
+      }
+      vtkOFBAddBrushRing(
+        conform, centres + 3 * k, n, r, this->CursorResolution, lift, points, lines);
     }
   }
   this->CursorPolyData->SetPoints(points);

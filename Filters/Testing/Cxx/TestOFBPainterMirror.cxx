@@ -117,6 +117,35 @@ TEST(PainterMirror, ADabIsPaintedWithItsReflections)
 }
 
 //------------------------------------------------------------------------------
+TEST(PainterMirror, ReflectionsAreListedInPaintingOrderWithoutRepeats)
+{
+  vtkNew<vtkOFBPainter> painter;
+  double q[21];
+  int axes[7];
+  const double p[3] = { 1.0, 2.0, 3.0 };
+  EXPECT_EQ(painter->GetMirrorReflections(p, q, axes), 0) << "no mirror";
+  painter->MirrorXOn();
+  painter->MirrorZOn();
+  painter->SetMirrorOrigin(0.5, 0.0, 1.0);
+  ASSERT_EQ(painter->GetMirrorReflections(p, q, axes), 3);
+  const double expected[9] = { 0.0, 2.0, 3.0, 1.0, 2.0, -1.0, 0.0, 2.0, -1.0 };
+  const int expectedAxes[3] = { 1, 4, 5 };
+  for (int k = 0; k < 3; ++k)
+  {
+    EXPECT_EQ(axes[k], expectedAxes[k]);
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_EQ(q[3 * k + a], expected[3 * k + a]);
+    }
+  }
+  // On the plane x = 0.5: the x reflection is the point itself, xz repeats z.
+  const double onPlane[3] = { 0.5, 2.0, 3.0 };
+  ASSERT_EQ(painter->GetMirrorReflections(onPlane, q, axes), 1);
+  EXPECT_EQ(axes[0], 4);
+  EXPECT_EQ(q[2], -1.0);
+}
+
+//------------------------------------------------------------------------------
 TEST(PainterMirror, ADabOnTheMirrorPlaneIsPaintedOnce)
 {
   const double o[3] = { 0.0, 0.0, 0.0 };

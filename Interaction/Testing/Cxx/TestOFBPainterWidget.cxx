@@ -589,6 +589,9 @@ TEST(PainterWidget, ClearErrorsWithoutOFBOrPainter)
   scene.Key('+', "plus");
   scene.Key('u', "u");
   EXPECT_NE(observer->Errors.find("no painter"), std::string::npos);
+  observer->Clear();
+  scene.Key('m', "m");
+  EXPECT_NE(observer->Errors.find("NextMirror: no painter"), std::string::npos);
   EXPECT_EQ(scene.Log.Start, 0);
 
   std::ostringstream os;

@@ -1,5 +1,7 @@
 #include "vtkOFBTextureAtlas.h"
 
+#include "vtkOFBAtlasCharts.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -20,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBTextureAtlas);
@@ -45,15 +48,28 @@ TriangleShape Shape(const glm::dvec3 p[3])
   const double e = std::max({ l[(k + 1) % 3], l[(k + 2) % 3], l[k] / std::sqrt(2.0) });
   return { k, std::isfinite(e) ? e : 0.0 };
 }
+
+/// The atlas's size as the field-data array "AtlasSize" of `output`.
+void AddAtlasSize(vtkPolyData* output, const int size[2])
+{
+  vtkNew<vtkIntArray> array;
+  array->SetName("AtlasSize");
+  array->InsertNextValue(size[0]);
+  array->InsertNextValue(size[1]);
+  output->GetFieldData()->AddArray(array);
+}
 }
 
 //------------------------------------------------------------------------------
 vtkOFBTextureAtlas::vtkOFBTextureAtlas()
-  : TexelsPerCell(1.0)
+  : Layout(CHARTS)
+  , TexelsPerCell(1.0)
+  , ChartPadding(2)
   , MinimumTileSize(4)
   , MaximumTextureSize(16384)
   , AtlasSize{ 0, 0 }
   , EffectiveTexelsPerCell(0.0)
+  , NumberOfCharts(0)
 {
   this->SetNumberOfInputPorts(2);
 }
@@ -148,6 +164,7 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->AtlasSize[0] = this->AtlasSize[1] = 0;
   this->EffectiveTexelsPerCell = 0.0;
+  this->NumberOfCharts = 0;
   if (!ofb || ofb->GetNumberOfSamples() == 0 || !(ofb->GetCellSize() > 0.0))
   {
     vtkErrorMacro("No OFB, or an empty one (SetSourceData or SetSourceConnection).");
@@ -198,6 +215,19 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
     }
   }
   this->UpdateProgress(0.3);
+  if (this->Layout == CHARTS)
+  {
+    if (!this->MakeCharts(input, ofb, ids.data(), output))
+    {
+      this->AtlasSize[0] = this->AtlasSize[1] = 0;
+      this->NumberOfCharts = 0;
+      vtkErrorMacro("The charts do not fit a texture of " << this->MaximumTextureSize
+                                                          << " texels a side even at 1/8 "
+                                                             "texel a cell.");
+    }
+    this->UpdateProgress(1.0);
+    return 1;
+  }
   // Halve the density until the atlas fits.
   std::vector<int> side(n);
   std::vector<int> origin(2 * n);
@@ -217,12 +247,8 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
                                                               "texel a cell.");
     return 1;
   }
-  if (this->EffectiveTexelsPerCell < this->TexelsPerCell)
-  {
-    vtkWarningMacro("The atlas holds " << this->EffectiveTexelsPerCell << " texels a cell, not "
-                                       << this->TexelsPerCell << ", to fit "
-                                       << this->MaximumTextureSize << " texels a side.");
-  }
+  this->WarnOfDensity();
+  this->NumberOfCharts = static_cast<int>(n);
   this->UpdateProgress(0.6);
 
   this->MakeOutput(input, ids.data(), corner.data(), side.data(), origin.data(), output);
@@ -239,18 +265,7 @@ void vtkOFBTextureAtlas::MakeOutput(vtkPolyData* input,
   vtkPolyData* output)
 {
   const vtkIdType n = input->GetPolys()->GetNumberOfCells();
-  // Smooth shading survives the repeated points: point normals, computed where missing.
-  vtkSmartPointer<vtkPolyData> source = input;
-  if (!input->GetPointData()->GetNormals())
-  {
-    vtkNew<vtkPolyDataNormals> normals;
-    normals->SetInputData(input);
-    normals->SplittingOff();
-    normals->ConsistencyOff();
-    normals->ComputeCellNormalsOff();
-    normals->Update();
-    source = normals->GetOutput();
-  }
+  vtkSmartPointer<vtkPolyData> source = vtkOFBTextureAtlas::WithNormals(input);
 
   // The triangles with their own corners, each corner at its tile's corner texel centre.
   vtkNew<vtkPoints> points;
@@ -296,20 +311,144 @@ void vtkOFBTextureAtlas::MakeOutput(vtkPolyData* input,
   output->SetPoints(points);
   output->SetPolys(triangles);
   outPD->SetTCoords(tcoords);
-  vtkNew<vtkIntArray> size;
-  size->SetName("AtlasSize");
-  size->InsertNextValue(this->AtlasSize[0]);
-  size->InsertNextValue(this->AtlasSize[1]);
-  output->GetFieldData()->AddArray(size);
+  AddAtlasSize(output, this->AtlasSize);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkOFBTextureAtlas::WithNormals(vtkPolyData* input)
+{
+  // Smooth shading survives the repeated points: point normals, computed where missing.
+  vtkSmartPointer<vtkPolyData> source = input;
+  if (!input->GetPointData()->GetNormals())
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(input);
+    normals->SplittingOff();
+    normals->ConsistencyOff();
+    normals->ComputeCellNormalsOff();
+    normals->Update();
+    source = normals->GetOutput();
+  }
+  return source;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTextureAtlas::WarnOfDensity()
+{
+  if (this->EffectiveTexelsPerCell < this->TexelsPerCell)
+  {
+    vtkWarningMacro("The atlas holds " << this->EffectiveTexelsPerCell << " texels a cell, not "
+                                       << this->TexelsPerCell << ", to fit "
+                                       << this->MaximumTextureSize << " texels a side.");
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBTextureAtlas::MakeCharts(vtkPolyData* input,
+  vtkOFB* ofb,
+  const vtkIdType* ids,
+  vtkPolyData* output)
+{
+  const vtkIdType n = input->GetPolys()->GetNumberOfCells();
+  const vtkIdType np = input->GetNumberOfPoints();
+  std::vector<double> x(static_cast<size_t>(3 * np));
+  for (vtkIdType p = 0; p < np; ++p)
+  {
+    input->GetPoint(p, &x[3 * p]);
+  }
+  // Halve the density until the atlas fits.
+  vtkOFBAtlasCharts charts;
+  for (double density = this->TexelsPerCell; density >= 0.125 - 1e-12; density /= 2.0)
+  {
+    if (charts.Build(x.data(),
+          ids,
+          n,
+          ofb->GetOrigin(),
+          ofb->GetCellSize(),
+          density,
+          this->ChartPadding,
+          this->MaximumTextureSize))
+    {
+      this->EffectiveTexelsPerCell = density;
+      break;
+    }
+  }
+  if (this->EffectiveTexelsPerCell == 0.0)
+  {
+    return false;
+  }
+  this->WarnOfDensity();
+  this->AtlasSize[0] = charts.Width;
+  this->AtlasSize[1] = charts.Height;
+  this->NumberOfCharts = charts.GetNumberOfCharts();
+  this->UpdateProgress(0.6);
+
+  // A point of each chart its triangles use: the corners sorted by (point, chart).
+  std::vector<vtkIdType> order(static_cast<size_t>(3 * n));
+  std::iota(order.begin(), order.end(), 0);
+  auto key = [&](vtkIdType c) { return std::make_pair(ids[c], charts.ChartOf[c / 3]); };
+  std::sort(order.begin(), order.end(), [&](vtkIdType a, vtkIdType b) { return key(a) < key(b); });
+  std::vector<vtkIdType> newId(static_cast<size_t>(3 * n));
+  std::vector<vtkIdType> firstCorner; // per output point
+  for (size_t k = 0; k < order.size(); ++k)
+  {
+    if (k == 0 || key(order[k]) != key(order[k - 1]))
+    {
+      firstCorner.push_back(order[k]);
+    }
+    newId[order[k]] = static_cast<vtkIdType>(firstCorner.size()) - 1;
+  }
+
+  vtkSmartPointer<vtkPolyData> source = vtkOFBTextureAtlas::WithNormals(input);
+  const vtkIdType m = static_cast<vtkIdType>(firstCorner.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(m);
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("AtlasTCoords");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(m);
+  vtkPointData* inPD = source->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyTCoordsOff();
+  outPD->CopyAllocate(inPD, m);
+  for (vtkIdType q = 0; q < m; ++q)
+  {
+    const vtkIdType src = ids[firstCorner[q]];
+    const glm::dvec2 uv = charts.TexelCoordinates(&x[3 * src], charts.ChartOf[firstCorner[q] / 3]);
+    points->SetPoint(q, &x[3 * src]);
+    outPD->CopyData(inPD, src, q);
+    tcoords->SetTypedComponent(q, 0, static_cast<float>(uv.x / charts.Width));
+    tcoords->SetTypedComponent(q, 1, static_cast<float>(uv.y / charts.Height));
+  }
+  vtkNew<vtkCellArray> triangles;
+  triangles->AllocateExact(n, 3 * n);
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(inCD, n);
+  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    triangles->InsertNextCell(3, &newId[3 * t]);
+    outCD->CopyData(inCD, firstPoly + t, t);
+  }
+  output->SetPoints(points);
+  output->SetPolys(triangles);
+  outPD->SetTCoords(tcoords);
+  AddAtlasSize(output, this->AtlasSize);
+  return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBTextureAtlas::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Layout: " << (this->Layout == CHARTS ? "Charts" : "Triangles") << "\n";
   os << indent << "TexelsPerCell: " << this->TexelsPerCell << "\n";
+  os << indent << "ChartPadding: " << this->ChartPadding << " texels\n";
   os << indent << "MinimumTileSize: " << this->MinimumTileSize << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "AtlasSize: " << this->AtlasSize[0] << " x " << this->AtlasSize[1] << "\n";
   os << indent << "EffectiveTexelsPerCell: " << this->EffectiveTexelsPerCell << "\n";
+  os << indent << "NumberOfCharts: " << this->NumberOfCharts << "\n";
 }

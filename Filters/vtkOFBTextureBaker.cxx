@@ -43,7 +43,8 @@ struct Coverage
     this->SlotOf.assign(static_cast<size_t>(w) * h, -1);
   }
 
-  /// Texels whose centres the triangle covers in UV space (uv in texture coordinates).
+  /// Texels whose centres the triangle covers in UV space (uv in texture coordinates), or
+  /// the texel under its centroid where it covers none.
   void AddTriangle(const glm::dvec2 uv[3], const glm::dvec3 x[3])
   {
     glm::dvec2 p[3];
@@ -73,6 +74,7 @@ struct Coverage
     const double highV =
       std::min(this->Height - 1.0, std::floor(std::max({ p[0].y, p[1].y, p[2].y })));
     const double eps = -1e-9;
+    bool any = false;
     for (double j = lowV; j <= highV; ++j)
     {
       for (double i = lowU; i <= highU; ++i)
@@ -85,22 +87,42 @@ struct Coverage
         {
           continue;
         }
-        const glm::dvec3 y = w0 * x[0] + w1 * x[1] + w2 * x[2];
-        const vtkIdType texel = static_cast<vtkIdType>(j) * this->Width + static_cast<vtkIdType>(i);
-        vtkTypeInt32& slot = this->SlotOf[texel];
-        if (slot < 0)
-        {
-          slot = static_cast<vtkTypeInt32>(this->TexelOf.size()); // texels <= 2^28
-          this->TexelOf.push_back(texel);
-          this->Points.resize(this->Points.size() + 3);
-          this->Normals.resize(this->Normals.size() + 3);
-        }
-        for (int c = 0; c < 3; ++c)
-        {
-          this->Points[3 * slot + c] = y[c];
-          this->Normals[3 * slot + c] = normal[c];
-        }
+        this->Set(static_cast<vtkIdType>(j) * this->Width + static_cast<vtkIdType>(i),
+          w0 * x[0] + w1 * x[1] + w2 * x[2],
+          normal);
+        any = true;
       }
+    }
+    // A triangle too small to cover a texel centre (a sliver, a tiny chart) still gets the
+    // texel under its centroid where no other triangle has it, so padding has a value to
+    // spread and bilinear filtering inside it does not read the background.
+    const glm::dvec2 c = glm::floor((p[0] + p[1] + p[2]) / 3.0 + 0.5);
+    if (!any && c.x >= 0.0 && c.y >= 0.0 && c.x < this->Width && c.y < this->Height)
+    {
+      const vtkIdType texel =
+        static_cast<vtkIdType>(c.y) * this->Width + static_cast<vtkIdType>(c.x);
+      if (this->SlotOf[texel] < 0)
+      {
+        this->Set(texel, (x[0] + x[1] + x[2]) / 3.0, normal);
+      }
+    }
+  }
+
+  /// The texel's surface point and normal (the texel added where it was not covered).
+  void Set(vtkIdType texel, const glm::dvec3& y, const glm::vec3& normal)
+  {
+    vtkTypeInt32& slot = this->SlotOf[texel];
+    if (slot < 0)
+    {
+      slot = static_cast<vtkTypeInt32>(this->TexelOf.size()); // texels <= 2^28
+      this->TexelOf.push_back(texel);
+      this->Points.resize(this->Points.size() + 3);
+      this->Normals.resize(this->Normals.size() + 3);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Points[3 * slot + c] = y[c];
+      this->Normals[3 * slot + c] = normal[c];
     }
   }
 };

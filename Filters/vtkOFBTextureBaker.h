@@ -15,7 +15,9 @@
  * (j + 0.5) / H), row 0 at v = 0, as vtkTexture and vtkPNGWriter take it) with the
  * baked array (same name, type and components as the OFB's, the active scalars) and
  * a `vtkValidPointMask` array (1 where a triangle covers the texel centre and a sample
- * was found, 0 elsewhere).
+ * was found, 0 elsewhere). A triangle too small in UV space to cover any texel centre
+ * covers the texel under its centroid instead (where no other triangle covers it), so
+ * that slivers and tiny UV islands get a value and padding around it.
  *
  * Each covered texel's surface point (barycentric in its triangle, the last triangle
  * in cell order where triangles overlap in UV space) is looked up in the OFB as

@@ -45,8 +45,8 @@ bool ExportPainting(vtkPolyData* surface,
   std::ostringstream done;
   if (ext == ".obj")
   {
-    // A mesh without texture coordinates gets an atlas of one tile per triangle, a texel a
-    // cell where textureSize allows.
+    // A mesh without texture coordinates gets an atlas of charts on the OFB's grids, a
+    // texel a cell where textureSize allows.
     vtkSmartPointer<vtkPolyData> textured = surface;
     int size[2] = { textureSize, textureSize };
     vtkNew<vtkOFBTextureAtlas> atlas;
@@ -87,8 +87,13 @@ bool ExportPainting(vtkPolyData* surface,
       return false;
     }
     done << "wrote " << path << " with a " << size[0] << " x " << size[1] << " texture ("
-         << baker->GetNumberOfBakedTexels() << " texels baked"
-         << (generated ? ", texture coordinates made: a tile per triangle" : "") << ")";
+         << baker->GetNumberOfBakedTexels() << " texels baked";
+    if (generated)
+    {
+      done << ", texture coordinates made: " << atlas->GetNumberOfCharts()
+           << " charts on the OFB's grids";
+    }
+    done << ")";
     message = done.str();
     return true;
   }

@@ -1,7 +1,8 @@
-// vtkOFBTextureAtlas: texture coordinates for a surface without any. Tiles apart, each
-// triangle's corners on its tile's corner texels (the longest edge on the diagonal, the
-// orientation kept, enough texels a cell), the paint baked through them, the density
-// halved to fit, bad input.
+// vtkOFBTextureAtlas: texture coordinates for a surface without any. Charts: texel centres
+// on the samples of the chart's grid, the bake exact there, no texel covered twice, cut
+// where the surface folds over itself. Triangles: tiles apart, each triangle's corners on
+// its tile's corner texels (the longest edge on the diagonal, the orientation kept, enough
+// texels a cell). Both: the paint baked through them, the density halved to fit, bad input.
 #include "vtkOFBTestUtilities.h"
 
 #include "vtkCellArray.h"
@@ -37,6 +38,185 @@ vtkSmartPointer<vtkPolyData> Atlas(vtkOFBTextureAtlas* atlas, vtkPolyData* mesh,
   return out;
 }
 
+/// Calls f(texel, point) for each texel whose centre lies strictly inside an output
+/// triangle in UV space, with the surface point there; returns the texels covered twice.
+template<typename Functor>
+vtkIdType ForEachCoveredTexel(vtkPolyData* out, const int size[2], Functor&& f)
+{
+  const int w = size[0];
+  const int h = size[1];
+  std::vector<unsigned char> covered(static_cast<size_t>(w) * h, 0);
+  vtkIdType twice = 0;
+  vtkDataArray* tc = out->GetPointData()->GetTCoords();
+  auto iter = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    iter->GetCurrentCell(npts, ids);
+    double q[3][2];
+    double x[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      q[k][0] = tc->GetComponent(ids[k], 0) * w - 0.5;
+      q[k][1] = tc->GetComponent(ids[k], 1) * h - 0.5;
+      out->GetPoint(ids[k], x[k]);
+    }
+    const double e1[2] = { q[1][0] - q[0][0], q[1][1] - q[0][1] };
+    const double e2[2] = { q[2][0] - q[0][0], q[2][1] - q[0][1] };
+    const double area = e1[0] * e2[1] - e1[1] * e2[0];
+    if (!(std::fabs(area) > 1e-12))
+    {
+      continue;
+    }
+    const int i0 =
+      std::max(0, static_cast<int>(std::ceil(std::min({ q[0][0], q[1][0], q[2][0] }))));
+    const int i1 = std::min(w - 1, static_cast<int>(std::max({ q[0][0], q[1][0], q[2][0] })));
+    const int j0 =
+      std::max(0, static_cast<int>(std::ceil(std::min({ q[0][1], q[1][1], q[2][1] }))));
+    const int j1 = std::min(h - 1, static_cast<int>(std::max({ q[0][1], q[1][1], q[2][1] })));
+    for (int j = j0; j <= j1; ++j)
+    {
+      for (int i = i0; i <= i1; ++i)
+      {
+        const double d[2] = { i - q[0][0], j - q[0][1] };
+        const double w1 = (d[0] * e2[1] - d[1] * e2[0]) / area;
+        const double w2 = (e1[0] * d[1] - e1[1] * d[0]) / area;
+        const double w0 = 1.0 - w1 - w2;
+        if (w0 <= 1e-9 || w1 <= 1e-9 || w2 <= 1e-9)
+        {
+          continue;
+        }
+        const vtkIdType texel = static_cast<vtkIdType>(j) * w + i;
+        twice += covered[texel];
+        covered[texel] = 1;
+        double p[3];
+        for (int c = 0; c < 3; ++c)
+        {
+          p[c] = w0 * x[0][c] + w1 * x[1][c] + w2 * x[2][c];
+        }
+        f(texel, p);
+      }
+    }
+  }
+  return twice;
+}
+
+/// A helicoid ramp of `turns` turns between radii 1 and 2, rising `pitch` a radian: its
+/// normal is mostly +z, and its turns lie over each other along z.
+vtkSmartPointer<vtkPolyData> MakeHelicoid(double turns, double pitch)
+{
+  const int nr = 8;
+  const int nt = static_cast<int>(96 * turns);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  for (int j = 0; j <= nt; ++j)
+  {
+    const double theta = 2.0 * vtkMath::Pi() * turns * j / nt;
+    for (int i = 0; i <= nr; ++i)
+    {
+      const double r = 1.0 + static_cast<double>(i) / nr;
+      points->InsertNextPoint(r * std::cos(theta), r * std::sin(theta), pitch * theta);
+    }
+  }
+  for (int j = 0; j < nt; ++j)
+  {
+    for (int i = 0; i < nr; ++i)
+    {
+      const vtkIdType a = j * (nr + 1) + i;
+      const vtkIdType b = a + nr + 1;
+      const vtkIdType t0[3] = { a, a + 1, b + 1 };
+      const vtkIdType t1[3] = { a, b + 1, b };
+      triangles->InsertNextCell(3, t0);
+      triangles->InsertNextCell(3, t1);
+    }
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(triangles);
+  return mesh;
+}
+
+/// Random dabs of 6 cells over the OFB, random colours.
+void PaintDabs(vtkOFB* ofb, int count)
+{
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(ofb);
+  painter->GetBrush()->SetRadius(6.0 * ofb->GetCellSize());
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(5);
+  for (int k = 0; k < count; ++k)
+  {
+    painter->GetBrush()->SetColor(random->GetNextRangeValue(0.0, 1.0),
+      random->GetNextRangeValue(0.0, 1.0),
+      random->GetNextRangeValue(0.0, 1.0));
+    double x[3];
+    ofb->GetSamplePosition(
+      static_cast<vtkIdType>(random->GetNextRangeValue(0, ofb->GetNumberOfSamples() - 1)), x);
+    painter->Dab(x);
+  }
+}
+
+/// The painted OFB baked through an atlas of `layout`: at each triangle's centroid, the
+/// texel has the colour of the closest sample.
+void ExpectTheBakeShowsThePaint(vtkPolyData* bunny, vtkOFB* ofb, int layout)
+{
+  vtkNew<vtkOFBTextureAtlas> atlas;
+  atlas->SetLayout(layout);
+  vtkSmartPointer<vtkPolyData> out = Atlas(atlas, bunny, ofb);
+  vtkNew<vtkOFBTextureBaker> baker;
+  baker->SetInputData(out);
+  baker->SetSourceData(ofb);
+  baker->SetTextureSize(atlas->GetAtlasSize());
+  baker->Update();
+  vtkImageData* image = baker->GetOutput();
+  auto* texels = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  ASSERT_NE(texels, nullptr);
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
+  // At each triangle's centroid, the texel equals the colour of the closest sample.
+  vtkDataArray* tc = out->GetPointData()->GetTCoords();
+  const int w = atlas->GetAtlasSize()[0];
+  const int h = atlas->GetAtlasSize()[1];
+  vtkIdType same = 0;
+  vtkIdType painted = 0;
+  const unsigned char* white = colors->GetPointer(0); // the sampler's default, unpainted
+  auto iter = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    iter->GetCurrentCell(npts, ids);
+    double c[3] = { 0, 0, 0 };
+    double uv[2] = { 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      double p[3];
+      out->GetPoint(ids[k], p);
+      for (int i = 0; i < 3; ++i)
+      {
+        c[i] += p[i] / 3.0;
+      }
+      uv[0] += tc->GetComponent(ids[k], 0) * w / 3.0;
+      uv[1] += tc->GetComponent(ids[k], 1) * h / 3.0;
+    }
+    const vtkIdType id = ofb->FindClosestSample(c);
+    const int i = std::min(static_cast<int>(uv[0]), w - 1);
+    const int j = std::min(static_cast<int>(uv[1]), h - 1);
+    const unsigned char* texel = texels->GetPointer(4 * (static_cast<vtkIdType>(j) * w + i));
+    const unsigned char* sample = colors->GetPointer(4 * id);
+    int diff = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      diff = std::max(diff, std::abs(texel[k] - sample[k]));
+    }
+    same += diff <= 2;
+    painted += id >= 0 && std::memcmp(sample, white, 3) != 0;
+  }
+  const vtkIdType n = out->GetNumberOfPolys();
+  EXPECT_GT(painted, n / 20); // the dabs reached a fair share of the triangles
+  EXPECT_GE(same, n * 97 / 100);
+}
+
 void Normal(vtkPoints* points, const vtkIdType* ids, double n[3])
 {
   double p[3][3];
@@ -59,8 +239,10 @@ TEST(TextureAtlas, TrianglesGetTilesApartWithTheirCornersOnCornerTexels)
   ASSERT_NE(bunny, nullptr);
   vtkSmartPointer<vtkOFB> ofb = Build(bunny, 256);
   vtkNew<vtkOFBTextureAtlas> atlas;
+  atlas->SetLayoutToTriangles();
   vtkSmartPointer<vtkPolyData> out = Atlas(atlas, bunny, ofb);
   const vtkIdType n = bunny->GetNumberOfPolys();
+  EXPECT_EQ(atlas->GetNumberOfCharts(), n);
   ASSERT_EQ(out->GetNumberOfPolys(), n);
   ASSERT_EQ(out->GetNumberOfPoints(), 3 * n);
   const int w = atlas->GetAtlasSize()[0];
@@ -156,74 +338,113 @@ TEST(TextureAtlas, TheBakedTextureShowsThePaint)
 {
   vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
   vtkSmartPointer<vtkOFB> ofb = Build(bunny, 128);
-  vtkNew<vtkOFBPainter> painter;
-  painter->SetOFB(ofb);
-  painter->GetBrush()->SetRadius(6.0 * ofb->GetCellSize());
-  vtkNew<vtkMinimalStandardRandomSequence> random;
-  random->SetSeed(5);
-  for (int k = 0; k < 30; ++k)
+  PaintDabs(ofb, 30);
+  for (int layout : { vtkOFBTextureAtlas::CHARTS, vtkOFBTextureAtlas::TRIANGLES })
   {
-    painter->GetBrush()->SetColor(random->GetNextRangeValue(0.0, 1.0),
-      random->GetNextRangeValue(0.0, 1.0),
-      random->GetNextRangeValue(0.0, 1.0));
-    double x[3];
-    ofb->GetSamplePosition(
-      static_cast<vtkIdType>(random->GetNextRangeValue(0, ofb->GetNumberOfSamples() - 1)), x);
-    painter->Dab(x);
+    SCOPED_TRACE(layout == vtkOFBTextureAtlas::CHARTS ? "charts" : "triangles");
+    ExpectTheBakeShowsThePaint(bunny, ofb, layout);
   }
-  vtkNew<vtkOFBTextureAtlas> atlas;
-  vtkSmartPointer<vtkPolyData> out = Atlas(atlas, bunny, ofb);
-  vtkNew<vtkOFBTextureBaker> baker;
-  baker->SetInputData(out);
-  baker->SetSourceData(ofb);
-  baker->SetTextureSize(atlas->GetAtlasSize());
-  baker->Update();
-  vtkImageData* image = baker->GetOutput();
-  auto* texels = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
-  ASSERT_NE(texels, nullptr);
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureAtlas, ChartsPutTexelCentresOnTheSamplesOfTheirGrid)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  vtkSmartPointer<vtkOFB> ofb = Build(bunny, 256);
+  PaintDabs(ofb, 60);
   auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
-  // At each triangle's centroid, the texel equals the colour of the closest sample.
-  vtkDataArray* tc = out->GetPointData()->GetTCoords();
-  const int w = atlas->GetAtlasSize()[0];
-  const int h = atlas->GetAtlasSize()[1];
-  vtkIdType same = 0;
-  vtkIdType painted = 0;
-  const unsigned char* white = colors->GetPointer(0); // the sampler's default, unpainted
-  auto iter = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+  const vtkIdType n = bunny->GetNumberOfPolys();
+  const double s = ofb->GetCellSize();
+  vtkIdType texels[2];
+  vtkIdType points[2];
+  for (int layout : { vtkOFBTextureAtlas::CHARTS, vtkOFBTextureAtlas::TRIANGLES })
   {
-    vtkIdType npts;
-    const vtkIdType* ids;
-    iter->GetCurrentCell(npts, ids);
-    double c[3] = { 0, 0, 0 };
-    double uv[2] = { 0, 0 };
-    for (int k = 0; k < 3; ++k)
-    {
-      double p[3];
-      out->GetPoint(ids[k], p);
-      for (int i = 0; i < 3; ++i)
+    SCOPED_TRACE(layout == vtkOFBTextureAtlas::CHARTS ? "charts" : "triangles");
+    vtkNew<vtkOFBTextureAtlas> atlas;
+    atlas->SetLayout(layout);
+    vtkSmartPointer<vtkPolyData> out = Atlas(atlas, bunny, ofb);
+    ASSERT_EQ(out->GetNumberOfPolys(), n);
+    const int* size = atlas->GetAtlasSize();
+    texels[layout] = static_cast<vtkIdType>(size[0]) * size[1];
+    points[layout] = out->GetNumberOfPoints();
+    vtkNew<vtkOFBTextureBaker> baker;
+    baker->SetInputData(out);
+    baker->SetSourceData(ofb);
+    baker->SetTextureSize(atlas->GetAtlasSize());
+    baker->Update();
+    auto* image =
+      vtkUnsignedCharArray::SafeDownCast(baker->GetOutput()->GetPointData()->GetScalars());
+    ASSERT_NE(image, nullptr);
+    // Each covered texel's surface point: on a sample (within 1/100 cell), and that
+    // sample's colour baked, byte for byte.
+    vtkIdType covered = 0;
+    vtkIdType onSample = 0;
+    vtkIdType sameColour = 0;
+    const vtkIdType twice = ForEachCoveredTexel(out,
+      size,
+      [&](vtkIdType texel, const double p[3])
       {
-        c[i] += p[i] / 3.0;
-      }
-      uv[0] += tc->GetComponent(ids[k], 0) * w / 3.0;
-      uv[1] += tc->GetComponent(ids[k], 1) * h / 3.0;
-    }
-    const vtkIdType id = ofb->FindClosestSample(c);
-    const int i = std::min(static_cast<int>(uv[0]), w - 1);
-    const int j = std::min(static_cast<int>(uv[1]), h - 1);
-    const unsigned char* texel = texels->GetPointer(4 * (static_cast<vtkIdType>(j) * w + i));
-    const unsigned char* sample = colors->GetPointer(4 * id);
-    int diff = 0;
-    for (int k = 0; k < 3; ++k)
+        ++covered;
+        const vtkIdType id = ofb->FindClosestSample(p);
+        double y[3];
+        ofb->GetSamplePosition(id, y);
+        if (std::sqrt(vtkMath::Distance2BetweenPoints(p, y)) < 0.01 * s)
+        {
+          ++onSample;
+          sameColour +=
+            std::memcmp(image->GetPointer(4 * texel), colors->GetPointer(4 * id), 4) == 0;
+        }
+      });
+    EXPECT_EQ(twice, 0);
+    ASSERT_GT(covered, 0);
+    if (layout == vtkOFBTextureAtlas::CHARTS)
     {
-      diff = std::max(diff, std::abs(texel[k] - sample[k]));
+      EXPECT_GE(onSample, covered * 99 / 100);
+      EXPECT_GE(sameColour, onSample * 999 / 1000);
+      EXPECT_GT(atlas->GetNumberOfCharts(), 6);
+      EXPECT_LT(atlas->GetNumberOfCharts(), n / 20);
     }
-    same += diff <= 2;
-    painted += id >= 0 && std::memcmp(sample, white, 3) != 0;
+    else
+    {
+      EXPECT_LT(onSample, covered / 5); // a tile's texels fall anywhere between samples
+    }
   }
-  const vtkIdType n = out->GetNumberOfPolys();
-  EXPECT_GT(painted, n / 20); // the dabs reached a fair share of the triangles
-  EXPECT_GE(same, n * 97 / 100);
+  // Fewer texels at the same density, points repeated only where charts meet.
+  EXPECT_LT(texels[vtkOFBTextureAtlas::CHARTS], texels[vtkOFBTextureAtlas::TRIANGLES] * 6 / 10);
+  EXPECT_LT(points[vtkOFBTextureAtlas::CHARTS], bunny->GetNumberOfPoints() * 13 / 10);
+  EXPECT_EQ(points[vtkOFBTextureAtlas::TRIANGLES], 3 * n);
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureAtlas, ChartsAreCutWhereTheSurfaceFoldsOverItself)
+{
+  for (double turns : { 0.9, 1.6 })
+  {
+    SCOPED_TRACE(turns);
+    vtkSmartPointer<vtkPolyData> ramp = MakeHelicoid(turns, 0.1);
+    vtkSmartPointer<vtkOFB> ofb = Build(ramp, 128);
+    vtkNew<vtkOFBTextureAtlas> atlas;
+    vtkSmartPointer<vtkPolyData> out = Atlas(atlas, ramp, ofb);
+    ASSERT_EQ(out->GetNumberOfPolys(), ramp->GetNumberOfPolys());
+    vtkIdType covered = 0;
+    const vtkIdType twice = ForEachCoveredTexel(
+      out, atlas->GetAtlasSize(), [&covered](vtkIdType, const double*) { ++covered; });
+    EXPECT_EQ(twice, 0);
+    // One chart while the ramp does not come over itself, then at least two.
+    if (turns < 1.0)
+    {
+      EXPECT_EQ(atlas->GetNumberOfCharts(), 1);
+    }
+    else
+    {
+      EXPECT_GE(atlas->GetNumberOfCharts(), 2);
+      EXPECT_LE(atlas->GetNumberOfCharts(), 4);
+    }
+    // Every turn has its texels: the ramp's area seen along z, in cells.
+    const double cells = turns * vtkMath::Pi() * 3.0 / std::pow(ofb->GetCellSize(), 2);
+    EXPECT_GT(covered, 0.97 * cells);
+    EXPECT_LT(covered, 1.03 * cells);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -231,56 +452,78 @@ TEST(TextureAtlas, HalvesTheDensityToFitAndFailsBeyond)
 {
   vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
   vtkSmartPointer<vtkOFB> ofb = Build(bunny, 256);
-  vtkNew<vtkOFBTextureAtlas> atlas;
-  atlas->SetTexelsPerCell(2.0);
-  Atlas(atlas, bunny, ofb);
-  const int full = atlas->GetAtlasSize()[0];
-  ASSERT_GT(full, 0);
-  vtkNew<MessageObserver> messages;
-  messages->Watch(atlas);
-  atlas->SetMaximumTextureSize(full * 2 / 3);
-  Atlas(atlas, bunny, ofb);
-  EXPECT_GT(atlas->GetAtlasSize()[0], 0);
-  EXPECT_LE(atlas->GetAtlasSize()[0], full * 2 / 3);
-  EXPECT_LE(atlas->GetAtlasSize()[1], full * 2 / 3);
-  EXPECT_LT(atlas->GetEffectiveTexelsPerCell(), 2.0);
-  EXPECT_NE(messages->Warnings.find("to fit"), std::string::npos);
-  atlas->SetMaximumTextureSize(64); // 69,451 tiles of 4 x 4 texels need about 1054 x 1054
-  vtkSmartPointer<vtkPolyData> none = Atlas(atlas, bunny, ofb);
-  EXPECT_EQ(none->GetNumberOfPoints(), 0);
-  EXPECT_EQ(atlas->GetAtlasSize()[0], 0);
-  EXPECT_NE(messages->Errors.find("do not fit"), std::string::npos);
+  for (int layout : { vtkOFBTextureAtlas::CHARTS, vtkOFBTextureAtlas::TRIANGLES })
+  {
+    SCOPED_TRACE(layout == vtkOFBTextureAtlas::CHARTS ? "charts" : "triangles");
+    vtkNew<vtkOFBTextureAtlas> atlas;
+    atlas->SetLayout(layout);
+    atlas->SetTexelsPerCell(2.0);
+    Atlas(atlas, bunny, ofb);
+    const int full = atlas->GetAtlasSize()[0];
+    ASSERT_GT(full, 0);
+    vtkNew<MessageObserver> messages;
+    messages->Watch(atlas);
+    atlas->SetMaximumTextureSize(full * 2 / 3);
+    Atlas(atlas, bunny, ofb);
+    EXPECT_GT(atlas->GetAtlasSize()[0], 0);
+    EXPECT_LE(atlas->GetAtlasSize()[0], full * 2 / 3);
+    EXPECT_LE(atlas->GetAtlasSize()[1], full * 2 / 3);
+    EXPECT_LT(atlas->GetEffectiveTexelsPerCell(), 2.0);
+    EXPECT_NE(messages->Warnings.find("to fit"), std::string::npos);
+    // 69,451 tiles of 4 x 4 texels need about 1054 x 1054; hundreds of charts of at least
+    // 5 x 5 texels (the padding) about 120 x 120.
+    atlas->SetMaximumTextureSize(64);
+    vtkSmartPointer<vtkPolyData> none = Atlas(atlas, bunny, ofb);
+    EXPECT_EQ(none->GetNumberOfPoints(), 0);
+    EXPECT_EQ(atlas->GetAtlasSize()[0], 0);
+    EXPECT_EQ(atlas->GetNumberOfCharts(), 0);
+    EXPECT_NE(messages->Errors.find("do not fit"), std::string::npos);
+  }
 }
 
 //------------------------------------------------------------------------------
 TEST(TextureAtlas, BadInputGivesAnErrorAndAnEmptyOutput)
 {
-  vtkNew<vtkOFBTextureAtlas> atlas;
-  vtkNew<MessageObserver> messages;
-  messages->Watch(atlas);
-  vtkSmartPointer<vtkPolyData> quads = MakeTexturedPlane(4);
-  vtkSmartPointer<vtkOFB> ofb = Build(quads, 32);
-  EXPECT_EQ(Atlas(atlas, quads, ofb)->GetNumberOfPoints(), 0);
-  EXPECT_NE(messages->Errors.find("not triangles"), std::string::npos);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(quads);
-  triangles->Update();
-  vtkNew<vtkOFB> empty;
-  messages->Clear();
-  EXPECT_EQ(Atlas(atlas, triangles->GetOutput(), empty)->GetNumberOfPoints(), 0);
-  EXPECT_NE(messages->Errors.find("empty"), std::string::npos);
-  vtkNew<vtkPolyData> nothing;
-  messages->Clear();
-  EXPECT_EQ(Atlas(atlas, nothing, ofb)->GetNumberOfPoints(), 0);
-  EXPECT_NE(messages->Errors.find("no polygons"), std::string::npos);
-  EXPECT_EQ(Atlas(atlas, triangles->GetOutput(), ofb)->GetNumberOfPolys(), 32);
-  // A point that is not finite and a zero-area triangle: the smallest tiles, no crash.
-  vtkNew<vtkPolyData> odd;
-  odd->DeepCopy(triangles->GetOutput());
-  odd->GetPoints()->SetPoint(0, std::nan(""), 0.0, 0.0);
-  odd->GetPoints()->SetPoint(1, 0.0, 0.0, 0.0);
-  odd->GetPoints()->SetPoint(2, 0.0, 0.0, 0.0);
-  vtkSmartPointer<vtkPolyData> out = Atlas(atlas, odd, ofb);
-  EXPECT_EQ(out->GetNumberOfPolys(), 32);
-  EXPECT_GT(atlas->GetAtlasSize()[0], 0);
+  for (int layout : { vtkOFBTextureAtlas::CHARTS, vtkOFBTextureAtlas::TRIANGLES })
+  {
+    SCOPED_TRACE(layout == vtkOFBTextureAtlas::CHARTS ? "charts" : "triangles");
+    vtkNew<vtkOFBTextureAtlas> atlas;
+    atlas->SetLayout(layout);
+    vtkNew<MessageObserver> messages;
+    messages->Watch(atlas);
+    vtkSmartPointer<vtkPolyData> quads = MakeTexturedPlane(4);
+    vtkSmartPointer<vtkOFB> ofb = Build(quads, 32);
+    EXPECT_EQ(Atlas(atlas, quads, ofb)->GetNumberOfPoints(), 0);
+    EXPECT_NE(messages->Errors.find("not triangles"), std::string::npos);
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(quads);
+    triangles->Update();
+    vtkNew<vtkOFB> empty;
+    messages->Clear();
+    EXPECT_EQ(Atlas(atlas, triangles->GetOutput(), empty)->GetNumberOfPoints(), 0);
+    EXPECT_NE(messages->Errors.find("empty"), std::string::npos);
+    vtkNew<vtkPolyData> nothing;
+    messages->Clear();
+    EXPECT_EQ(Atlas(atlas, nothing, ofb)->GetNumberOfPoints(), 0);
+    EXPECT_NE(messages->Errors.find("no polygons"), std::string::npos);
+    EXPECT_EQ(Atlas(atlas, triangles->GetOutput(), ofb)->GetNumberOfPolys(), 32);
+    // A point that is not finite and a zero-area triangle: no crash, every triangle out,
+    // texture coordinates finite.
+    vtkNew<vtkPolyData> odd;
+    odd->DeepCopy(triangles->GetOutput());
+    odd->GetPoints()->SetPoint(0, std::nan(""), 0.0, 0.0);
+    odd->GetPoints()->SetPoint(1, 0.0, 0.0, 0.0);
+    odd->GetPoints()->SetPoint(2, 0.0, 0.0, 0.0);
+    messages->Clear();
+    vtkSmartPointer<vtkPolyData> out = Atlas(atlas, odd, ofb);
+    EXPECT_EQ(out->GetNumberOfPolys(), 32);
+    EXPECT_GT(atlas->GetAtlasSize()[0], 0);
+    EXPECT_TRUE(messages->Errors.empty());
+    vtkDataArray* tc = out->GetPointData()->GetTCoords();
+    ASSERT_NE(tc, nullptr);
+    for (vtkIdType p = 0; p < tc->GetNumberOfTuples(); ++p)
+    {
+      EXPECT_TRUE(std::isfinite(tc->GetComponent(p, 0)) && std::isfinite(tc->GetComponent(p, 1)));
+    }
+  }
 }

@@ -2,6 +2,8 @@
 // lookups; padding; a real UV atlas (spot); bad input.
 #include "vtkOFBTestUtilities.h"
 
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
@@ -18,7 +20,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 using namespace vtkofbtest;
 
@@ -132,6 +136,89 @@ TEST(TextureBaker, PaddingFillsAroundUVIslands)
       // Covered and padded texels hold the plane's normal, the others zero.
       EXPECT_NEAR(normals->GetComponent(t, 2), ring <= 3 ? 1.0 : 0.0, 1e-6) << i << " " << j;
     }
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureBaker, TrianglesBetweenTexelCentresGetTheTexelUnderTheirCentroid)
+{
+  // A triangle on three corners of each quad of the plane, shrunk in UV space to a speck
+  // that holds no texel centre: it still bakes the texel under it (the sample at its
+  // centroid), and only that one.
+  vtkSmartPointer<vtkPolyData> plane = Plane();
+  vtkSmartPointer<vtkOFB> ofb = Build(plane, 128);
+  PaintAndMarkX(ofb, 0.4, 0.9);
+  const int size = 256;
+  vtkNew<vtkPolyData> specks;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetNumberOfComponents(2);
+  std::vector<std::array<int, 2>> expected;
+  auto iter = vtk::TakeSmartPointer(plane->GetPolys()->NewIterator());
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    iter->GetCurrentCell(npts, ids);
+    ASSERT_GE(npts, 3);
+    double centre[2] = { 0.0, 0.0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      double uv[2];
+      plane->GetPointData()->GetTCoords()->GetTuple(ids[k], uv);
+      centre[0] += uv[0] / 3.0;
+      centre[1] += uv[1] / 3.0;
+    }
+    // The speck's texel: the one whose centre is closest to the centroid; the speck is
+    // moved into the texel's quarter away from its centre so it covers no centre.
+    const int i = std::min(size - 1, static_cast<int>(centre[0] * size));
+    const int j = std::min(size - 1, static_cast<int>(centre[1] * size));
+    expected.push_back({ i, j });
+    const double u = (i + 0.7) / size;
+    const double v = (j + 0.7) / size;
+    vtkIdType corner[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      double x[3];
+      plane->GetPoint(ids[k], x);
+      corner[k] = points->InsertNextPoint(x);
+      const double d = 0.1 / size;
+      tcoords->InsertNextTuple2(u + (k == 1 ? d : 0.0), v + (k == 2 ? d : 0.0));
+    }
+    triangles->InsertNextCell(3, corner);
+  }
+  specks->SetPoints(points);
+  specks->SetPolys(triangles);
+  specks->GetPointData()->SetTCoords(tcoords);
+  vtkNew<vtkOFBTextureBaker> baker;
+  baker->SetPadding(0);
+  baker->SetArrayName("X");
+  vtkImageData* image = Bake(baker, specks, ofb, size, size);
+  vtkDataArray* x = image->GetPointData()->GetArray("X");
+  vtkDataArray* mask = image->GetPointData()->GetArray("vtkValidPointMask");
+  ASSERT_NE(x, nullptr);
+  EXPECT_EQ(baker->GetNumberOfBakedTexels(), static_cast<vtkIdType>(expected.size()));
+  vtkIdType t = 0;
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++t)
+  {
+    // The triangle's centroid in space: the value baked is the closest sample's x.
+    double centroid[3] = { 0.0, 0.0, 0.0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      double p[3];
+      points->GetPoint(3 * t + k, p);
+      for (int c = 0; c < 3; ++c)
+      {
+        centroid[c] += p[c] / 3.0;
+      }
+    }
+    const vtkIdType id = ofb->FindClosestSample(centroid);
+    double y[3];
+    ofb->GetSamplePosition(id, y);
+    const vtkIdType texel = static_cast<vtkIdType>(expected[t][1]) * size + expected[t][0];
+    EXPECT_EQ(mask->GetComponent(texel, 0), 1.0) << t;
+    EXPECT_NEAR(x->GetComponent(texel, 0), y[0], 1e-6) << t;
   }
 }
 

@@ -1,0 +1,380 @@
+#include "vtkOFBAtlasCharts.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace
+{
+glm::dvec3 Point(const double* x, vtkIdType id)
+{
+  return glm::dvec3(x[3 * id], x[3 * id + 1], x[3 * id + 2]);
+}
+
+bool Finite(const glm::dvec2& q)
+{
+  return std::isfinite(q.x) && std::isfinite(q.y);
+}
+
+/// Calls f(i, j) for each integer point strictly inside the triangle `q` (counter-clockwise,
+/// texel coordinates); points on an edge belong to neither triangle sharing it, so two
+/// triangles of a chart that only touch never claim the same texel centre.
+template<typename Functor>
+bool ForEachTexelInside(const glm::dvec2 q[3], Functor&& f)
+{
+  const glm::dvec2 e1 = q[1] - q[0];
+  const glm::dvec2 e2 = q[2] - q[0];
+  const double area = e1.x * e2.y - e1.y * e2.x;
+  if (!(area > 0.0))
+  {
+    return true;
+  }
+  const double eps = 1e-9;
+  const double i0 = std::ceil(std::min({ q[0].x, q[1].x, q[2].x }));
+  const double i1 = std::floor(std::max({ q[0].x, q[1].x, q[2].x }));
+  const double j0 = std::ceil(std::min({ q[0].y, q[1].y, q[2].y }));
+  const double j1 = std::floor(std::max({ q[0].y, q[1].y, q[2].y }));
+  for (double j = j0; j <= j1; ++j)
+  {
+    for (double i = i0; i <= i1; ++i)
+    {
+      const glm::dvec2 d = glm::dvec2(i, j) - q[0];
+      const double w1 = (d.x * e2.y - d.y * e2.x) / area;
+      const double w2 = (e1.x * d.y - e1.y * d.x) / area;
+      if (w1 > eps && w2 > eps && 1.0 - w1 - w2 > eps &&
+        !f(static_cast<long long>(i), static_cast<long long>(j)))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+glm::dvec2 vtkOFBAtlasCharts::Project(const glm::dvec3& p, int k) const
+{
+  const int a = k / 2;
+  const int u = (a + 1) % 3;
+  const int v = (a + 2) % 3;
+  // Texel centres on cell centres: cell i's centre is at (i + 0.5) cells from the origin.
+  const glm::dvec3 t = (p - this->Origin) * this->Scale;
+  const double tu = t[u] - this->HalfCell;
+  return glm::dvec2((k & 1) ? -tu : tu, t[v] - this->HalfCell);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBAtlasCharts::Classify(const double* x, const vtkIdType* ids, vtkIdType n)
+{
+  this->Direction.assign(static_cast<size_t>(n), -1);
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const glm::dvec3 p0 = Point(x, ids[3 * t]);
+    const glm::dvec3 normal =
+      glm::cross(Point(x, ids[3 * t + 1]) - p0, Point(x, ids[3 * t + 2]) - p0);
+    const glm::dvec3 m = glm::abs(normal);
+    if (!std::isfinite(m.x + m.y + m.z) || !(m.x + m.y + m.z > 0.0))
+    {
+      continue;
+    }
+    const int a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+    this->Direction[t] = static_cast<signed char>(2 * a + (normal[a] < 0.0 ? 1 : 0));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBAtlasCharts::FindNeighbours(const vtkIdType* ids, vtkIdType n)
+{
+  // Edges as (low point, high point, triangle), sorted: triangles of one edge are adjacent.
+  struct Edge
+  {
+    vtkIdType A, B, T;
+  };
+  std::vector<Edge> edges;
+  edges.reserve(static_cast<size_t>(3 * n));
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType a = ids[3 * t + k];
+      const vtkIdType b = ids[3 * t + (k + 1) % 3];
+      if (a != b)
+      {
+        edges.push_back({ std::min(a, b), std::max(a, b), t });
+      }
+    }
+  }
+  std::sort(edges.begin(),
+    edges.end(),
+    [](const Edge& e, const Edge& f)
+    { return e.A != f.A ? e.A < f.A : (e.B != f.B ? e.B < f.B : e.T < f.T); });
+  this->NeighbourStart.assign(static_cast<size_t>(n + 1), 0);
+  // Two passes over the groups of equal edges: count, then fill (every pair of a group).
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    std::vector<vtkIdType> next;
+    if (pass == 1)
+    {
+      std::partial_sum(
+        this->NeighbourStart.begin(), this->NeighbourStart.end(), this->NeighbourStart.begin());
+      this->Neighbours.resize(static_cast<size_t>(this->NeighbourStart[n]));
+      next.assign(this->NeighbourStart.begin(), this->NeighbourStart.end() - 1);
+    }
+    for (size_t g = 0; g < edges.size();)
+    {
+      size_t end = g + 1;
+      while (end < edges.size() && edges[end].A == edges[g].A && edges[end].B == edges[g].B)
+      {
+        ++end;
+      }
+      for (size_t i = g; i < end; ++i)
+      {
+        for (size_t j = g; j < end; ++j)
+        {
+          if (i != j && edges[i].T != edges[j].T)
+          {
+            if (pass == 0)
+            {
+              ++this->NeighbourStart[edges[i].T + 1];
+            }
+            else
+            {
+              this->Neighbours[next[edges[i].T]++] = edges[j].T;
+            }
+          }
+        }
+      }
+      g = end;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBAtlasCharts::Grow(const double* x, const vtkIdType* ids, vtkIdType n)
+{
+  this->ChartOf.assign(static_cast<size_t>(n), -1);
+  std::vector<int> tried(static_cast<size_t>(n), -1);
+  std::vector<vtkIdType> queue;
+  std::vector<int> stamp;
+  for (int k = 0; k < 6; ++k)
+  {
+    // The texels the direction's triangles can cover: one stamp (chart id) each.
+    glm::dvec2 lo(HUGE_VAL);
+    glm::dvec2 hi(-HUGE_VAL);
+    for (vtkIdType t = 0; t < n; ++t)
+    {
+      for (int c = 0; this->Direction[t] == k && c < 3; ++c)
+      {
+        const glm::dvec2 q = this->Project(Point(x, ids[3 * t + c]), k);
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
+      }
+    }
+    if (!(lo.x <= hi.x && lo.y <= hi.y))
+    {
+      continue;
+    }
+    const glm::dvec2 first = glm::floor(lo);
+    const double width = std::ceil(hi.x) - first.x + 1.0;
+    const double height = std::ceil(hi.y) - first.y + 1.0;
+    if (width * height > 67108864.0) // 2^26 texels of one direction's plane: too large
+    {
+      return false;
+    }
+    const long long w = static_cast<long long>(width);
+    stamp.assign(static_cast<size_t>(width * height), -1);
+    for (vtkIdType t0 = 0; t0 < n; ++t0)
+    {
+      if (this->Direction[t0] != k || this->ChartOf[t0] >= 0)
+      {
+        continue;
+      }
+      // A new chart, grown breadth first over shared edges from t0.
+      const int chart = static_cast<int>(this->Axis.size());
+      this->Axis.push_back(static_cast<signed char>(k));
+      queue.assign(1, t0);
+      tried[t0] = chart;
+      for (size_t head = 0; head < queue.size(); ++head)
+      {
+        const vtkIdType t = queue[head];
+        glm::dvec2 q[3];
+        for (int c = 0; c < 3; ++c)
+        {
+          q[c] = this->Project(Point(x, ids[3 * t + c]), k) - first;
+        }
+        auto texel = [&](long long i, long long j) -> int& { return stamp[j * w + i]; };
+        if (!ForEachTexelInside(q, [&](long long i, long long j) { return texel(i, j) != chart; }))
+        {
+          continue; // it would fold over the chart: left for a later chart
+        }
+        ForEachTexelInside(q,
+          [&](long long i, long long j)
+          {
+            texel(i, j) = chart;
+            return true;
+          });
+        this->ChartOf[t] = chart;
+        for (vtkIdType e = this->NeighbourStart[t]; e < this->NeighbourStart[t + 1]; ++e)
+        {
+          const vtkIdType nb = this->Neighbours[e];
+          if (this->Direction[nb] == k && this->ChartOf[nb] < 0 && tried[nb] != chart)
+          {
+            tried[nb] = chart;
+            queue.push_back(nb);
+          }
+        }
+      }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBAtlasCharts::AdoptDegenerate(vtkIdType n)
+{
+  // A triangle without a normal joins a neighbour's chart (it covers no texel), else one
+  // chart of its own for all such triangles.
+  bool changed = true;
+  for (int pass = 0; changed && pass < 64; ++pass)
+  {
+    changed = false;
+    for (vtkIdType t = 0; t < n; ++t)
+    {
+      for (vtkIdType e = this->NeighbourStart[t];
+           this->ChartOf[t] < 0 && e < this->NeighbourStart[t + 1];
+           ++e)
+      {
+        this->ChartOf[t] = this->ChartOf[this->Neighbours[e]];
+        changed = changed || this->ChartOf[t] >= 0;
+      }
+    }
+  }
+  int rest = -1;
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    if (this->ChartOf[t] < 0)
+    {
+      if (rest < 0)
+      {
+        rest = static_cast<int>(this->Axis.size());
+        this->Axis.push_back(0);
+      }
+      this->ChartOf[t] = rest;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBAtlasCharts::Pack(const double* x,
+  const vtkIdType* ids,
+  vtkIdType n,
+  int padding,
+  int maximumSize)
+{
+  // Each chart's rectangle: its texel centres' range, the padding around.
+  const int charts = this->GetNumberOfCharts();
+  std::vector<glm::dvec2> lo(charts, glm::dvec2(HUGE_VAL));
+  std::vector<glm::dvec2> hi(charts, glm::dvec2(-HUGE_VAL));
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const int c = this->ChartOf[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const glm::dvec2 q = this->Project(Point(x, ids[3 * t + k]), this->Axis[c]);
+      if (Finite(q))
+      {
+        lo[c] = glm::min(lo[c], q);
+        hi[c] = glm::max(hi[c], q);
+      }
+    }
+  }
+  std::vector<glm::dvec2> low(charts);
+  std::vector<glm::ivec2> size(charts);
+  double area = 0.0;
+  int widest = 1;
+  for (int c = 0; c < charts; ++c)
+  {
+    const bool any = lo[c].x <= hi[c].x && lo[c].y <= hi[c].y;
+    low[c] = any ? glm::floor(lo[c]) : glm::dvec2(0.0);
+    const glm::dvec2 span = any ? glm::ceil(hi[c]) - low[c] : glm::dvec2(0.0);
+    if (span.x + 2 * padding + 1 > maximumSize || span.y + 2 * padding + 1 > maximumSize)
+    {
+      return false;
+    }
+    size[c] = glm::ivec2(span) + 2 * padding + 1;
+    area += static_cast<double>(size[c].x) * size[c].y;
+    widest = std::max(widest, size[c].x);
+  }
+  // Rows of charts, tallest first, in an atlas about as wide as high.
+  const double wide = std::max<double>(widest, std::ceil(std::sqrt(area * 1.05)));
+  if (wide > maximumSize)
+  {
+    return false;
+  }
+  const int width = static_cast<int>(wide);
+  std::vector<int> order(charts);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(),
+    order.end(),
+    [&size](int a, int b)
+    { return size[a].y != size[b].y ? size[a].y > size[b].y : size[a].x > size[b].x; });
+  long long px = 0;
+  long long py = 0;
+  long long rowHeight = 0;
+  this->Shift.assign(charts, glm::dvec2(0.0));
+  for (int c : order)
+  {
+    if (px + size[c].x > width)
+    {
+      px = 0;
+      py += rowHeight;
+      rowHeight = 0;
+    }
+    if (py + size[c].y > maximumSize)
+    {
+      return false;
+    }
+    this->Shift[c] = glm::dvec2(px + padding, py + padding) - low[c];
+    rowHeight = std::max<long long>(rowHeight, size[c].y);
+    px += size[c].x;
+  }
+  this->Width = width;
+  this->Height = static_cast<int>(py + rowHeight);
+  this->Low.swap(low);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBAtlasCharts::Build(const double* x,
+  const vtkIdType* ids,
+  vtkIdType n,
+  const double origin[3],
+  double cellSize,
+  double density,
+  int padding,
+  int maximumSize)
+{
+  this->Origin = glm::dvec3(origin[0], origin[1], origin[2]);
+  this->Scale = density / cellSize;
+  this->HalfCell = 0.5 * density;
+  this->Axis.clear();
+  this->Width = this->Height = 0;
+  this->Classify(x, ids, n);
+  this->FindNeighbours(ids, n);
+  if (!this->Grow(x, ids, n))
+  {
+    return false;
+  }
+  this->AdoptDegenerate(n);
+  return this->Pack(x, ids, n, padding, maximumSize);
+}
+
+//------------------------------------------------------------------------------
+glm::dvec2 vtkOFBAtlasCharts::TexelCoordinates(const double p[3], int c) const
+{
+  const glm::dvec2 q = this->Project(glm::dvec3(p[0], p[1], p[2]), this->Axis[c]);
+  return (Finite(q) ? q : this->Low[c]) + this->Shift[c] + 0.5;
+}

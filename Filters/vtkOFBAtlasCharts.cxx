@@ -291,6 +291,7 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
       }
     }
   }
+  // (Packed whether or not it fits, so that a caller learns the size it would need.)
   std::vector<glm::dvec2> low(charts);
   std::vector<glm::ivec2> size(charts);
   double area = 0.0;
@@ -300,9 +301,9 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
     const bool any = lo[c].x <= hi[c].x && lo[c].y <= hi[c].y;
     low[c] = any ? glm::floor(lo[c]) : glm::dvec2(0.0);
     const glm::dvec2 span = any ? glm::ceil(hi[c]) - low[c] : glm::dvec2(0.0);
-    if (span.x + 2 * padding + 1 > maximumSize || span.y + 2 * padding + 1 > maximumSize)
+    if (!(span.x + 2 * padding + 1 <= 1 << 30 && span.y + 2 * padding + 1 <= 1 << 30))
     {
-      return false;
+      return false; // no packing to speak of
     }
     size[c] = glm::ivec2(span) + 2 * padding + 1;
     area += static_cast<double>(size[c].x) * size[c].y;
@@ -310,7 +311,7 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
   }
   // Rows of charts, tallest first, in an atlas about as wide as high.
   const double wide = std::max<double>(widest, std::ceil(std::sqrt(area * 1.05)));
-  if (wide > maximumSize)
+  if (wide > 1 << 30)
   {
     return false;
   }
@@ -333,7 +334,7 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
       py += rowHeight;
       rowHeight = 0;
     }
-    if (py + size[c].y > maximumSize)
+    if (py + size[c].y > 1 << 30)
     {
       return false;
     }
@@ -344,7 +345,7 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
   this->Width = width;
   this->Height = static_cast<int>(py + rowHeight);
   this->Low.swap(low);
-  return true;
+  return this->Width <= maximumSize && this->Height <= maximumSize;
 }
 
 //------------------------------------------------------------------------------
@@ -361,6 +362,8 @@ bool vtkOFBAtlasCharts::Build(const double* x,
   this->Scale = density / cellSize;
   this->HalfCell = 0.5 * density;
   this->Axis.clear();
+  this->Shift.clear();
+  this->Low.clear();
   this->Width = this->Height = 0;
   this->Classify(x, ids, n);
   this->FindNeighbours(ids, n);

@@ -41,8 +41,10 @@
  *
  * Errors (an empty output): no OFB or an empty one, a surface without polygons or with
  * polygons that are not triangles, or with triangle strips (apply vtkTriangleFilter
- * first), an atlas that does not fit MaximumTextureSize even at 1/8 texel a cell (the
- * density is halved until it fits, with a warning).
+ * first), an atlas that does not fit MaximumTextureSize even at 1/8 texel a cell. Below
+ * that, an atlas too large at TexelsPerCell gets a lower density, with a warning: for
+ * Charts about the largest that fits (EffectiveTexelsPerCell), for Triangles the density
+ * halved until it fits.
  *
  * @sa vtkOFBTextureBaker vtkOBJWriter
  */

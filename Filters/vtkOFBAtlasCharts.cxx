@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <tuple>
+#include <utility>
 
 namespace
 {
@@ -86,9 +88,47 @@ void vtkOFBAtlasCharts::Classify(const double* x, const vtkIdType* ids, vtkIdTyp
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBAtlasCharts::FindNeighbours(const vtkIdType* ids, vtkIdType n)
+std::vector<vtkIdType> vtkOFBAtlasCharts::WeldPoints(const double* x,
+  const vtkIdType* ids,
+  vtkIdType n)
+{
+  std::vector<vtkIdType> used(ids, ids + 3 * n);
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::vector<vtkIdType> weld(static_cast<size_t>(used.empty() ? 0 : used.back() + 1), -1);
+  for (vtkIdType p : used)
+  {
+    weld[p] = p; // a point not finite stays itself (and out of the sort)
+  }
+  // The finite ones sorted by position (then id): equal positions are neighbours, each
+  // welded to the first of its run.
+  used.erase(std::remove_if(used.begin(),
+               used.end(),
+               [x](vtkIdType p) { return !std::isfinite(x[3 * p] + x[3 * p + 1] + x[3 * p + 2]); }),
+    used.end());
+  auto position = [x](vtkIdType p)
+  { return std::make_tuple(x[3 * p], x[3 * p + 1], x[3 * p + 2]); };
+  std::sort(used.begin(),
+    used.end(),
+    [&position](vtkIdType a, vtkIdType b)
+    { return std::make_pair(position(a), a) < std::make_pair(position(b), b); });
+  for (size_t k = 1; k < used.size(); ++k)
+  {
+    if (position(used[k]) == position(used[k - 1]))
+    {
+      weld[used[k]] = weld[used[k - 1]];
+    }
+  }
+  return weld;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBAtlasCharts::FindNeighbours(const double* x, const vtkIdType* ids, vtkIdType n)
 {
   // Edges as (low point, high point, triangle), sorted: triangles of one edge are adjacent.
+  // Points are welded by position first: a mesh split at its seams (an OBJ's per-corner
+  // normals or texture coordinates, an STL) still has neighbours across them.
+  const std::vector<vtkIdType> weld = vtkOFBAtlasCharts::WeldPoints(x, ids, n);
   struct Edge
   {
     vtkIdType A, B, T;
@@ -99,8 +139,8 @@ void vtkOFBAtlasCharts::FindNeighbours(const vtkIdType* ids, vtkIdType n)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const vtkIdType a = ids[3 * t + k];
-      const vtkIdType b = ids[3 * t + (k + 1) % 3];
+      const vtkIdType a = weld[ids[3 * t + k]];
+      const vtkIdType b = weld[ids[3 * t + (k + 1) % 3]];
       if (a != b)
       {
         edges.push_back({ std::min(a, b), std::max(a, b), t });
@@ -366,7 +406,7 @@ bool vtkOFBAtlasCharts::Build(const double* x,
   this->Low.clear();
   this->Width = this->Height = 0;
   this->Classify(x, ids, n);
-  this->FindNeighbours(ids, n);
+  this->FindNeighbours(x, ids, n);
   if (!this->Grow(x, ids, n))
   {
     return false;

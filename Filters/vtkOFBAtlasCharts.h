@@ -4,8 +4,8 @@
 // that grid, its centre on the cell's centre (at one texel a cell), so a texel's surface
 // point is where the OFB took that cell's sample. Charts grow over shared edges and stop
 // where a triangle would cover a texel centre of the chart twice (the surface folding over
-// itself along the axis). Charts are packed in rows, tallest first, `Padding` texels
-// apart from each other and from the atlas's border.
+// itself along the axis); edges are matched by their points' positions, not ids. Charts are packed
+// in rows, tallest first, `Padding` texels apart from each other and from the atlas's border.
 #ifndef vtkOFBAtlasCharts_h
 #define vtkOFBAtlasCharts_h
 
@@ -52,7 +52,10 @@ private:
   /// that every chart is seen from outside and keeps the triangles' orientation.
   glm::dvec2 Project(const glm::dvec3& p, int k) const;
   void Classify(const double* x, const vtkIdType* ids, vtkIdType n);
-  void FindNeighbours(const vtkIdType* ids, vtkIdType n);
+  /// Per point id (up to the largest used) the id of the first used point, by id, at the
+  /// same position; -1 for a point no triangle uses.
+  static std::vector<vtkIdType> WeldPoints(const double* x, const vtkIdType* ids, vtkIdType n);
+  void FindNeighbours(const double* x, const vtkIdType* ids, vtkIdType n);
   bool Grow(const double* x, const vtkIdType* ids, vtkIdType n);
   void AdoptDegenerate(vtkIdType n);
   bool Pack(const double* x, const vtkIdType* ids, vtkIdType n, int padding, int maximumSize);

@@ -10,17 +10,17 @@
  *
  * Layout Charts (the default): the surface is cut into charts, pieces whose triangles all
  * face one of the six axis directions most (the largest component of the triangle's
- * normal), grown over shared edges; each chart is projected along its axis onto the OFB's
- * grid of that axis, the grid the OFB samples such a surface best on. At one texel a cell
- * (TexelsPerCell 1) a texel is a cell of that grid and its centre lies on the cell's
- * centre, so the surface point of a texel is where the OFB took that cell's sample: the
- * bake reads the samples themselves, not a resampling. A chart stops growing where a
- * triangle would cover a texel centre it already covers (the surface folding over itself
- * along the axis); that triangle starts or joins another chart. Charts are mirrored so
- * that each is seen from outside, `ChartPadding` texels lie between a chart and its
- * rectangle's edge (vtkOFBTextureBaker's Padding fills them), and the rectangles are
- * packed in rows, tallest first, into an atlas about as wide as high. Points are repeated
- * only where charts meet.
+ * normal), grown over shared edges (an edge is shared where its points lie at one place,
+ * whatever their ids: a mesh split at its seams is welded for this); each chart is projected along
+ * its axis onto the OFB's grid of that axis, the grid the OFB samples such a surface best on. At
+ * one texel a cell (TexelsPerCell 1) a texel is a cell of that grid and its centre lies on the
+ * cell's centre, so the surface point of a texel is where the OFB took that cell's sample: the bake
+ * reads the samples themselves, not a resampling. A chart stops growing where a triangle would
+ * cover a texel centre it already covers (the surface folding over itself along the axis); that
+ * triangle starts or joins another chart. Charts are mirrored so that each is seen from outside,
+ * `ChartPadding` texels lie between a chart and its rectangle's edge (vtkOFBTextureBaker's Padding
+ * fills them), and the rectangles are packed in rows, tallest first, into an atlas about as wide as
+ * high. Points are repeated only where charts meet.
  *
  * Layout Triangles: every triangle gets a square tile of its own, S x S texels, S a
  * multiple of MinimumTileSize chosen so that each edge has at least TexelsPerCell texels

@@ -16,6 +16,7 @@
 #include "vtkOFBTextureAtlas.h"
 #include "vtkOFBTextureBaker.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -413,6 +414,57 @@ TEST(TextureAtlas, ChartsPutTexelCentresOnTheSamplesOfTheirGrid)
   EXPECT_LT(texels[vtkOFBTextureAtlas::CHARTS], texels[vtkOFBTextureAtlas::TRIANGLES] * 6 / 10);
   EXPECT_LT(points[vtkOFBTextureAtlas::CHARTS], bunny->GetNumberOfPoints() * 13 / 10);
   EXPECT_EQ(points[vtkOFBTextureAtlas::TRIANGLES], 3 * n);
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureAtlas, ChartsGrowAcrossPointsRepeatedAtOnePlace)
+{
+  // The bunny with the points of every triangle its own (as an OBJ with per-corner
+  // normals or texture coordinates, or an STL, reads): charts still grow over the edges,
+  // about as many as on the shared points, and every texel is baked from a sample.
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  vtkSmartPointer<vtkOFB> ofb = Build(bunny, 256);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  auto iter = vtk::TakeSmartPointer(bunny->GetPolys()->NewIterator());
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    iter->GetCurrentCell(npts, ids);
+    vtkIdType own[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      own[k] = points->InsertNextPoint(bunny->GetPoint(ids[k]));
+    }
+    triangles->InsertNextCell(3, own);
+  }
+  vtkNew<vtkPolyData> split;
+  split->SetPoints(points);
+  split->SetPolys(triangles);
+  vtkNew<vtkOFBTextureAtlas> shared;
+  Atlas(shared, bunny, ofb);
+  vtkNew<vtkOFBTextureAtlas> separate;
+  vtkSmartPointer<vtkPolyData> out = Atlas(separate, split, ofb);
+  const vtkIdType n = bunny->GetNumberOfPolys();
+  ASSERT_EQ(out->GetNumberOfPolys(), n);
+  EXPECT_LT(separate->GetNumberOfCharts(), n / 20);
+  EXPECT_LE(separate->GetNumberOfCharts(), shared->GetNumberOfCharts() * 11 / 10);
+  EXPECT_GE(separate->GetNumberOfCharts(), shared->GetNumberOfCharts() * 9 / 10);
+  // The points stay as they were given: one per corner.
+  EXPECT_EQ(out->GetNumberOfPoints(), 3 * n);
+  vtkIdType covered = 0;
+  const vtkIdType twice = ForEachCoveredTexel(
+    out, separate->GetAtlasSize(), [&covered](vtkIdType, const double*) { ++covered; });
+  EXPECT_EQ(twice, 0);
+  EXPECT_GT(covered, ofb->GetNumberOfSamples() * 9 / 10);
+  // A point not finite welds to nothing and breaks nothing.
+  points->SetPoint(0, std::nan(""), 0.0, 0.0);
+  split->Modified();
+  vtkNew<vtkOFBTextureAtlas> withNaN;
+  vtkSmartPointer<vtkPolyData> out2 = Atlas(withNaN, split, ofb);
+  EXPECT_EQ(out2->GetNumberOfPolys(), n);
+  EXPECT_GT(withNaN->GetAtlasSize()[0], 0);
 }
 
 //------------------------------------------------------------------------------

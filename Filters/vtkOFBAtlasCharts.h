@@ -2,10 +2,11 @@
 // surface whose triangles all face one of the six axis directions most (the normal's
 // largest component), projected along that axis onto the OFB's grid: a texel is a cell of
 // that grid, its centre on the cell's centre (at one texel a cell), so a texel's surface
-// point is where the OFB took that cell's sample. Charts grow over shared edges and stop
+// point is where the OFB took that cell's sample. Charts grow over shared edges (points
+// welded by position, so that a mesh split at its seams still has neighbours) and stop
 // where a triangle would cover a texel centre of the chart twice (the surface folding over
-// itself along the axis); edges are matched by their points' positions, not ids. Charts are packed
-// in rows, tallest first, `Padding` texels apart from each other and from the atlas's border.
+// itself along the axis). Charts are packed in rows, tallest first, `Padding` texels
+// apart from each other and from the atlas's border.
 #ifndef vtkOFBAtlasCharts_h
 #define vtkOFBAtlasCharts_h
 

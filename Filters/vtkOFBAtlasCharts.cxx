@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <tuple>
 #include <utility>
@@ -334,8 +335,6 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
   // (Packed whether or not it fits, so that a caller learns the size it would need.)
   std::vector<glm::dvec2> low(charts);
   std::vector<glm::ivec2> size(charts);
-  double area = 0.0;
-  int widest = 1;
   for (int c = 0; c < charts; ++c)
   {
     const bool any = lo[c].x <= hi[c].x && lo[c].y <= hi[c].y;
@@ -346,46 +345,141 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
       return false; // no packing to speak of
     }
     size[c] = glm::ivec2(span) + 2 * padding + 1;
-    area += static_cast<double>(size[c].x) * size[c].y;
+  }
+  // Each chart's outline: per column of its rectangle the lowest and highest row its
+  // triangles touch, grown by the padding.
+  std::vector<int> first(charts + 1, 0); // into the column profiles
+  for (int c = 0; c < charts; ++c)
+  {
+    first[c + 1] = first[c] + size[c].x;
+  }
+  std::vector<int> bottom(first[charts], std::numeric_limits<int>::max());
+  std::vector<int> top(first[charts], std::numeric_limits<int>::min());
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const int c = this->ChartOf[t];
+    glm::dvec2 q[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      q[k] = this->Project(Point(x, ids[3 * t + k]), this->Axis[c]) - low[c] + double(padding);
+    }
+    // A column's extremes lie on the boundary: its edges, sampled every quarter texel.
+    for (int k = 0; k < 3; ++k)
+    {
+      const glm::dvec2 a = q[k];
+      const glm::dvec2 b = q[(k + 1) % 3];
+      if (!Finite(a) || !Finite(b))
+      {
+        continue;
+      }
+      const int m = 1 + static_cast<int>(std::min(4.0 * glm::length(b - a), 1e7));
+      for (int j = 0; j <= m; ++j)
+      {
+        const glm::dvec2 e = glm::floor(a + (b - a) * (double(j) / m) + 0.5);
+        const int i = std::min(std::max(static_cast<int>(e.x), 0), size[c].x - 1);
+        const int r = std::min(std::max(static_cast<int>(e.y), 0), size[c].y - 1);
+        bottom[first[c] + i] = std::min(bottom[first[c] + i], r);
+        top[first[c] + i] = std::max(top[first[c] + i], r + 1);
+      }
+    }
+  }
+  std::vector<int> grownBottom(bottom.size());
+  std::vector<int> grownTop(top.size());
+  for (int c = 0; c < charts; ++c)
+  {
+    for (int i = 0; i < size[c].x; ++i)
+    {
+      int b = std::numeric_limits<int>::max();
+      int e = std::numeric_limits<int>::min();
+      for (int k = std::max(0, i - padding); k <= std::min(size[c].x - 1, i + padding); ++k)
+      {
+        b = std::min(b, bottom[first[c] + k]);
+        e = std::max(e, top[first[c] + k]);
+      }
+      const bool used = b <= e;
+      grownBottom[first[c] + i] = used ? std::max(0, b - padding) : std::numeric_limits<int>::max();
+      grownTop[first[c] + i] = used ? std::min(size[c].y, e + padding) : 0;
+    }
+  }
+  // Charts dropped onto the skyline of the atlas's columns (tallest first, each where it
+  // comes to rest lowest, then leftmost): their outlines interlock where rectangles would
+  // leave gaps. Widths tried: about the square of the outlines' area, wider while the atlas
+  // comes out taller than wide; the squarest kept.
+  double area = 0.0;
+  int widest = 1;
+  for (int c = 0; c < charts; ++c)
+  {
+    for (int i = 0; i < size[c].x; ++i)
+    {
+      area += std::max(0, grownTop[first[c] + i] - grownBottom[first[c] + i]);
+    }
     widest = std::max(widest, size[c].x);
   }
-  // Rows of charts, tallest first, in an atlas about as wide as high.
-  const double wide = std::max<double>(widest, std::ceil(std::sqrt(area * 1.05)));
-  if (wide > 1 << 30)
-  {
-    return false;
-  }
-  const int width = static_cast<int>(wide);
   std::vector<int> order(charts);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(),
     order.end(),
     [&size](int a, int b)
     { return size[a].y != size[b].y ? size[a].y > size[b].y : size[a].x > size[b].x; });
-  long long px = 0;
-  long long py = 0;
-  long long rowHeight = 0;
-  this->Shift.assign(charts, glm::dvec2(0.0));
-  for (int c : order)
+  std::vector<glm::dvec2> shift(charts);
+  std::vector<int> sky;
+  double wide = std::max<double>(widest, std::ceil(std::sqrt(area * 1.25)));
+  this->Width = this->Height = 0;
+  for (int attempt = 0; attempt < 4 && wide <= 1 << 30; ++attempt)
   {
-    if (px + size[c].x > width)
+    const int width = static_cast<int>(wide);
+    sky.assign(static_cast<size_t>(width), 0);
+    long long height = 0;
+    for (int c : order)
     {
-      px = 0;
-      py += rowHeight;
-      rowHeight = 0;
+      const int* b = grownBottom.data() + first[c];
+      const int* e = grownTop.data() + first[c];
+      long long bestY = std::numeric_limits<long long>::max();
+      int bestX = 0;
+      for (int px = 0; px + size[c].x <= width; ++px)
+      {
+        long long y = 0;
+        for (int i = 0; i < size[c].x && y < bestY; ++i)
+        {
+          if (b[i] < e[i])
+          {
+            y = std::max<long long>(y, static_cast<long long>(sky[px + i]) - b[i]);
+          }
+        }
+        if (y < bestY)
+        {
+          bestY = y;
+          bestX = px;
+        }
+      }
+      for (int i = 0; i < size[c].x; ++i)
+      {
+        if (b[i] < e[i])
+        {
+          sky[bestX + i] = static_cast<int>(std::min<long long>(bestY + e[i], 1 << 30));
+        }
+      }
+      height = std::max(height, bestY + size[c].y);
+      shift[c] = glm::dvec2(bestX + padding, bestY + padding) - low[c];
     }
-    if (py + size[c].y > 1 << 30)
+    if (height > 1 << 30)
     {
       return false;
     }
-    this->Shift[c] = glm::dvec2(px + padding, py + padding) - low[c];
-    rowHeight = std::max<long long>(rowHeight, size[c].y);
-    px += size[c].x;
+    if (attempt == 0 || std::max<long long>(width, height) < std::max(this->Width, this->Height))
+    {
+      this->Width = width;
+      this->Height = static_cast<int>(height);
+      this->Shift = shift;
+    }
+    if (height <= 1.1 * width)
+    {
+      break;
+    }
+    wide = std::ceil(wide * std::sqrt(static_cast<double>(height) / width));
   }
-  this->Width = width;
-  this->Height = static_cast<int>(py + rowHeight);
   this->Low.swap(low);
-  return this->Width <= maximumSize && this->Height <= maximumSize;
+  return this->Width > 0 && this->Width <= maximumSize && this->Height <= maximumSize;
 }
 
 //------------------------------------------------------------------------------

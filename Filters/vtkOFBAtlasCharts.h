@@ -5,8 +5,8 @@
 // point is where the OFB took that cell's sample. Charts grow over shared edges (points
 // welded by position, so that a mesh split at its seams still has neighbours) and stop
 // where a triangle would cover a texel centre of the chart twice (the surface folding over
-// itself along the axis). Charts are packed in rows, tallest first, `Padding` texels
-// apart from each other and from the atlas's border.
+// itself along the axis). Charts are dropped, tallest first, onto the skyline of the
+// atlas's columns by their outlines grown by `padding` (see Pack).
 #ifndef vtkOFBAtlasCharts_h
 #define vtkOFBAtlasCharts_h
 

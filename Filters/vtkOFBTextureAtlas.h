@@ -18,16 +18,18 @@
  * reads the samples themselves, not a resampling. A chart stops growing where a triangle would
  * cover a texel centre it already covers (the surface folding over itself along the axis); that
  * triangle starts or joins another chart. Charts are mirrored so that each is seen from outside,
- * `ChartPadding` texels lie between a chart and its rectangle's edge (vtkOFBTextureBaker's Padding
- * fills them), and the rectangles are packed in rows, tallest first, into an atlas about as wide as
- * high. Points are repeated only where charts meet.
+ * and at least `ChartPadding` texels lie between a chart and the next (vtkOFBTextureBaker's
+ * Padding fills them): charts are dropped, tallest first, onto the skyline of the atlas's
+ * columns by their outlines (per column the rows their triangles touch, grown by the padding),
+ * each where it comes to rest lowest, so that outlines interlock where rectangles would leave
+ * gaps, in an atlas about as wide as high. Points are repeated only where charts meet.
  *
  * Layout Triangles: every triangle gets a square tile of its own, S x S texels, S a
  * multiple of MinimumTileSize chosen so that each edge has at least TexelsPerCell texels
  * per cell. The vertex opposite the longest edge goes to the centre of the tile's corner
  * texel, the other two to the centres of the two adjacent corner texels (the longest edge
  * on the diagonal), so that bilinear filtering inside a triangle never reads another tile.
- * Tiles are packed in rows, largest first. About 4 times the texels of the charts at the
+ * Tiles are packed in rows, largest first. About 4 to 5 times the texels of the charts at the
  * same density (half of each tile is empty, small triangles get the smallest tile), and a
  * texel's point is not a sample's.
  *

@@ -346,9 +346,26 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
     }
     size[c] = glm::ivec2(span) + 2 * padding + 1;
   }
+  const Outlines outlines = this->Outline(x, ids, n, padding, low, size);
+  this->Drop(outlines, low, size, padding);
+  this->Low.swap(low);
+  return this->Width > 0 && this->Width <= maximumSize && this->Height <= maximumSize;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBAtlasCharts::Outlines vtkOFBAtlasCharts::Outline(const double* x,
+  const vtkIdType* ids,
+  vtkIdType n,
+  int padding,
+  const std::vector<glm::dvec2>& low,
+  const std::vector<glm::ivec2>& size) const
+{
   // Each chart's outline: per column of its rectangle the lowest and highest row its
   // triangles touch, grown by the padding.
-  std::vector<int> first(charts + 1, 0); // into the column profiles
+  const int charts = this->GetNumberOfCharts();
+  Outlines out;
+  std::vector<int>& first = out.First;
+  first.assign(charts + 1, 0);
   for (int c = 0; c < charts; ++c)
   {
     first[c + 1] = first[c] + size[c].x;
@@ -383,8 +400,10 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
       }
     }
   }
-  std::vector<int> grownBottom(bottom.size());
-  std::vector<int> grownTop(top.size());
+  std::vector<int>& grownBottom = out.Bottom;
+  std::vector<int>& grownTop = out.Top;
+  grownBottom.resize(bottom.size());
+  grownTop.resize(top.size());
   for (int c = 0; c < charts; ++c)
   {
     for (int i = 0; i < size[c].x; ++i)
@@ -401,10 +420,23 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
       grownTop[first[c] + i] = used ? std::min(size[c].y, e + padding) : 0;
     }
   }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBAtlasCharts::Drop(const Outlines& outlines,
+  const std::vector<glm::dvec2>& low,
+  const std::vector<glm::ivec2>& size,
+  int padding)
+{
   // Charts dropped onto the skyline of the atlas's columns (tallest first, each where it
   // comes to rest lowest, then leftmost): their outlines interlock where rectangles would
   // leave gaps. Widths tried: about the square of the outlines' area, wider while the atlas
   // comes out taller than wide; the squarest kept.
+  const int charts = this->GetNumberOfCharts();
+  const std::vector<int>& first = outlines.First;
+  const std::vector<int>& grownBottom = outlines.Bottom;
+  const std::vector<int>& grownTop = outlines.Top;
   double area = 0.0;
   int widest = 1;
   for (int c = 0; c < charts; ++c)
@@ -464,7 +496,8 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
     }
     if (height > 1 << 30)
     {
-      return false;
+      this->Width = this->Height = 0;
+      return;
     }
     if (attempt == 0 || std::max<long long>(width, height) < std::max(this->Width, this->Height))
     {
@@ -478,8 +511,6 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
     }
     wide = std::ceil(wide * std::sqrt(static_cast<double>(height) / width));
   }
-  this->Low.swap(low);
-  return this->Width > 0 && this->Width <= maximumSize && this->Height <= maximumSize;
 }
 
 //------------------------------------------------------------------------------

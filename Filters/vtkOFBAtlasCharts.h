@@ -60,6 +60,25 @@ private:
   bool Grow(const double* x, const vtkIdType* ids, vtkIdType n);
   void AdoptDegenerate(vtkIdType n);
   bool Pack(const double* x, const vtkIdType* ids, vtkIdType n, int padding, int maximumSize);
+  /// Per column of each chart's rectangle (chart c's columns from First[c]), the rows its
+  /// triangles touch grown by `padding`: [Bottom, Top), Bottom >= Top for none.
+  struct Outlines
+  {
+    std::vector<int> First;
+    std::vector<int> Bottom;
+    std::vector<int> Top;
+  };
+  Outlines Outline(const double* x,
+    const vtkIdType* ids,
+    vtkIdType n,
+    int padding,
+    const std::vector<glm::dvec2>& low,
+    const std::vector<glm::ivec2>& size) const;
+  /// Width, Height and Shift from the outlines dropped onto a skyline (0 x 0 if too large).
+  void Drop(const Outlines& outlines,
+    const std::vector<glm::dvec2>& low,
+    const std::vector<glm::ivec2>& size,
+    int padding);
 
   glm::dvec3 Origin{ 0.0 };
   double Scale = 1.0;                    // texels a world unit

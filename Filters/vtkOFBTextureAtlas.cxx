@@ -361,8 +361,11 @@ bool vtkOFBTextureAtlas::MakeCharts(vtkPolyData* input,
   // there is (at least 10 % down; half where a try learns no size), 1/8 itself tried last;
   // then a few halvings of the gap between the fitting density and the one above it.
   vtkOFBAtlasCharts charts;
+  int tries = 0;
   auto build = [&](double d)
   {
+    // Progress from 0.3 towards 0.6 with each try (a few on most meshes).
+    this->UpdateProgress(0.6 - 0.3 / ++tries);
     return charts.Build(x.data(),
       ids,
       n,
@@ -374,7 +377,7 @@ bool vtkOFBTextureAtlas::MakeCharts(vtkPolyData* input,
   };
   double density = this->TexelsPerCell;
   double tooDense = 0.0;
-  for (int attempt = 0; attempt < 32 && density >= 0.125 - 1e-12; ++attempt)
+  for (int attempt = 0; attempt < 64 && density >= 0.125 - 1e-12; ++attempt)
   {
     if (build(density))
     {

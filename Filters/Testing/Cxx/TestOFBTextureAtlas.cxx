@@ -5,6 +5,7 @@
 // texels a cell). Both: the paint baked through them, the density lowered to fit, bad input.
 #include "vtkOFBTestUtilities.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkFieldData.h"
@@ -22,6 +23,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -519,7 +521,22 @@ TEST(TextureAtlas, LowersTheDensityToFitAndFailsBeyond)
     vtkNew<MessageObserver> messages;
     messages->Watch(atlas);
     atlas->SetMaximumTextureSize(full * 2 / 3);
+    // Progress rises with every try at a density, up to 1.
+    std::vector<double> progress;
+    vtkNew<vtkCallbackCommand> onProgress;
+    onProgress->SetClientData(&progress);
+    onProgress->SetCallback([](vtkObject*, unsigned long, void* client, void* call)
+      { static_cast<std::vector<double>*>(client)->push_back(*static_cast<double*>(call)); });
+    const unsigned long tag = atlas->AddObserver(vtkCommand::ProgressEvent, onProgress);
     Atlas(atlas, bunny, ofb);
+    atlas->RemoveObserver(tag);
+    EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+    ASSERT_FALSE(progress.empty());
+    EXPECT_EQ(progress.back(), 1.0);
+    if (layout == vtkOFBTextureAtlas::CHARTS)
+    {
+      EXPECT_GT(progress.size(), 5u) << "a progress event a try";
+    }
     EXPECT_GT(atlas->GetAtlasSize()[0], 0);
     EXPECT_LE(atlas->GetAtlasSize()[0], full * 2 / 3);
     EXPECT_LE(atlas->GetAtlasSize()[1], full * 2 / 3);

@@ -11,7 +11,8 @@
 // --export as well it then exports what it drew. --export sets the file of key x
 // (default <mesh name>_lic.obj): the LIC in the colours shown (vtkOFBMapToColors) as an
 // OBJ with a texture (.obj; a mesh without texture coordinates gets a vtkOFBTextureAtlas),
-// a PLY with vertex colours (.ply) or a VTP (.vtp), as OFBPaint exports its paint.
+// the same as glTF 2.0 (.gltf), a PLY with vertex colours (.ply) or a VTP (.vtp), as
+// OFBPaint exports its paint.
 //
 // Keys: Up/Down steps +-5; Right/Left noise grain x2 / /2; m colour mode (the speed
 // through a lookup table combined with the LIC in VTK surface LIC's map mode, then its

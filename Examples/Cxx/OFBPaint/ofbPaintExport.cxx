@@ -1,7 +1,9 @@
 #include "ofbPaintExport.h"
 #include "ofbPaintErrors.h"
 
+#include "vtkActor.h"
 #include "vtkCommand.h"
+#include "vtkGLTFExporter.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkImageReader2.h"
@@ -16,6 +18,10 @@
 #include "vtkPLYWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkTexture.h"
 #include "vtkXMLPolyDataWriter.h"
 #include "vtksys/SystemTools.hxx"
 
@@ -25,6 +31,56 @@
 namespace
 {
 using SystemTools = vtksys::SystemTools;
+
+bool WriteOBJ(vtkPolyData* surface,
+  vtkAlgorithm* image,
+  const std::string& path,
+  vtkCommand* errors)
+{
+  vtkNew<vtkOBJWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer->SetInputData(0, surface);
+  writer->SetInputConnection(1, image->GetOutputPort());
+  writer->SetFileName(path.c_str());
+  return writer->Write() != 0;
+}
+
+/// glTF 2.0 through vtkGLTFExporter, which writes a scene: the surface as the one actor of
+/// a renderer (never rendered), the image as its texture.
+bool WriteGLTF(vtkPolyData* surface,
+  vtkAlgorithm* image,
+  const std::string& path,
+  vtkCommand* errors)
+{
+  image->Update();
+  vtkNew<vtkImageData> texels;
+  texels->ShallowCopy(image->GetOutputDataObject(0));
+  if (texels->GetNumberOfPoints() == 0)
+  {
+    return false;
+  }
+  vtkNew<vtkTexture> texture;
+  texture->SetInputData(texels);
+  texture->InterpolateOn();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(surface);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->SetTexture(texture);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkRenderWindow> window;
+  window->AddRenderer(renderer);
+  vtkNew<vtkGLTFExporter> exporter;
+  exporter->AddObserver(vtkCommand::ErrorEvent, errors);
+  exporter->SetRenderWindow(window);
+  exporter->SetFileName(path.c_str());
+  exporter->InlineDataOn();
+  exporter->SaveNormalOn();
+  exporter->Write();
+  return SystemTools::FileExists(path, true);
+}
 }
 
 namespace ofbpaint
@@ -43,7 +99,7 @@ bool ExportPainting(vtkPolyData* surface,
   const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
   vtkNew<FirstError> errors;
   std::ostringstream done;
-  if (ext == ".obj")
+  if (ext == ".obj" || ext == ".gltf")
   {
     // A mesh without texture coordinates gets an atlas of charts on the OFB's grids, a
     // texel a cell where textureSize allows.
@@ -67,7 +123,8 @@ bool ExportPainting(vtkPolyData* surface,
       }
     }
     // The paint as an RGB texture (opaque: an alpha channel makes viewers sort the mesh as
-    // translucent), written by the OBJ writer beside the .obj with its .mtl.
+    // translucent), written by the OBJ writer beside the .obj with its .mtl, or into the
+    // .gltf (a textured mesh with its normals, the image embedded).
     vtkNew<vtkOFBTextureBaker> baker;
     baker->AddObserver(vtkCommand::ErrorEvent, errors);
     baker->SetInputData(textured);
@@ -76,12 +133,9 @@ bool ExportPainting(vtkPolyData* surface,
     vtkNew<vtkImageExtractComponents> rgb;
     rgb->SetInputConnection(baker->GetOutputPort());
     rgb->SetComponents(0, 1, 2);
-    vtkNew<vtkOBJWriter> writer;
-    writer->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->SetInputData(0, textured);
-    writer->SetInputConnection(1, rgb->GetOutputPort());
-    writer->SetFileName(path.c_str());
-    if (!writer->Write() || !errors->Text.empty())
+    const bool written = ext == ".obj" ? WriteOBJ(textured, rgb, path, errors)
+                                       : WriteGLTF(textured, rgb, path, errors);
+    if (!written || !errors->Text.empty())
     {
       message = "cannot export '" + path + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
       return false;
@@ -99,7 +153,7 @@ bool ExportPainting(vtkPolyData* surface,
   }
   if (ext != ".ply" && ext != ".vtp")
   {
-    message = "cannot export to '" + ext + "' files (use .obj, .ply or .vtp)";
+    message = "cannot export to '" + ext + "' files (use .obj, .gltf, .ply or .vtp)";
     return false;
   }
   vtkNew<vtkOFBProbeFilter> probe;

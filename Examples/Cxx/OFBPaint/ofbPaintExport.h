@@ -1,7 +1,7 @@
 // OFBPaint's export of a painting to files other programs read (key 'x', --export):
-// a textured OBJ (the paint baked into the mesh's UV texture by vtkOFBTextureBaker, or,
-// for a mesh without texture coordinates, into a texture atlas of one tile per triangle
-// laid out by vtkOFBTextureAtlas),
+// a textured OBJ or glTF (the paint baked into the mesh's UV texture by vtkOFBTextureBaker,
+// or, for a mesh without texture coordinates, into a texture atlas of charts laid out by
+// vtkOFBTextureAtlas),
 // a PLY with vertex colours or a VTP with every sample array as point arrays (both
 // through vtkOFBProbeFilter).
 #ifndef ofbPaintExport_h
@@ -26,8 +26,9 @@ std::string DefaultExportPath(const std::string& meshPath, const std::string& wh
  * its texture coordinates, a .mtl and the paint baked into a `textureSize` x `textureSize`
  * .png beside it; a surface without texture coordinates is written with those of a
  * vtkOFBTextureAtlas, a texel a cell where the atlas fits `textureSize` texels a side,
- * and the texture has the atlas's size), .ply (vertex colours) or .vtp (every sample
- * array). Returns false with `message` the reason; true with `message`
+ * and the texture has the atlas's size), .gltf (the same textured surface with its normals
+ * as glTF 2.0, the image embedded, by vtkGLTFExporter), .ply (vertex colours) or .vtp
+ * (every sample array). Returns false with `message` the reason; true with `message`
  * saying what was written.
  */
 bool ExportPainting(vtkPolyData* surface,

@@ -346,6 +346,21 @@ bool vtkOFBAtlasCharts::Pack(const double* x,
     }
     size[c] = glm::ivec2(span) + 2 * padding + 1;
   }
+  // A chart wider or taller than the atlas may be: its side is the size needed (no
+  // outlines of a size that cannot be used).
+  long long columns = 0;
+  glm::ivec2 largest(0);
+  for (int c = 0; c < charts; ++c)
+  {
+    columns += size[c].x;
+    largest = glm::max(largest, size[c]);
+  }
+  if (largest.x > maximumSize || largest.y > maximumSize || columns > (1 << 28))
+  {
+    this->Width = largest.x;
+    this->Height = largest.y;
+    return false;
+  }
   const Outlines outlines = this->Outline(x, ids, n, padding, low, size);
   this->Drop(outlines, low, size, padding);
   this->Low.swap(low);

@@ -3,12 +3,14 @@
 
     reader -> vtkOFBSampler -> paint (vtkOFBPainter) -> vtkOFBProbeFilter -> vtkPLYWriter
                              [vtkOFBTextureAtlas ->] -> vtkOFBTextureBaker -> vtkOBJWriter
+                                                                         -> vtkGLTFExporter
 
 The OFB holds paint finer than the mesh's triangles. Two ways out of it:
   * vtkOFBProbeFilter gives every point of the mesh the colour of the OFB there (a PLY with
     vertex colours): as fine as the mesh's points, no finer;
   * vtkOFBTextureBaker writes the paint into the mesh's UV texture (an OBJ with its .mtl
-    and .png): as fine as the texture, whatever the triangles. A mesh without texture
+    and .png, and the same as a glTF 2.0 file): as fine as the texture, whatever the
+    triangles. A mesh without texture
     coordinates (a scan, an isosurface) first gets some from vtkOFBTextureAtlas: charts
     projected on the OFB's own grids, a texel a cell, at most --texture texels a side.
 The script paints polka dots and a thin spiral stripe on a mesh (Spot the cow, which has
@@ -39,7 +41,9 @@ import numpy as np
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkImagingCore import vtkImageExtractComponents
+from vtkmodules.vtkIOExport import vtkGLTFExporter
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkOBJWriter
+from vtkmodules.vtkIOImport import vtkGLTFImporter
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 from vtkmodules.vtkIOPLY import vtkPLYReader, vtkPLYWriter
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
@@ -155,8 +159,28 @@ obj.SetInputData(0, textured)
 obj.SetInputConnection(1, rgb.GetOutputPort())
 obj.SetFileName(stem + ".obj")
 obj.Write()
-print(f"wrote {stem}.ply (vertex colours, {probe.GetOutput().GetNumberOfPoints()} points) and "
-      f"{stem}.obj/.mtl/.png ({baker.GetNumberOfBakedTexels()} texels baked)")
+# The same textured mesh as glTF 2.0 (one .gltf, the PNG embedded): vtkGLTFExporter writes
+# a scene, here one actor with the baked image as its texture (never rendered).
+rgb.Update()
+gltf_texture = vtkTexture()
+gltf_texture.SetInputData(rgb.GetOutput())
+gltf_mapper = vtkPolyDataMapper()
+gltf_mapper.SetInputData(textured)
+gltf_mapper.ScalarVisibilityOff()
+gltf_actor = vtkActor()
+gltf_actor.SetMapper(gltf_mapper)
+gltf_actor.SetTexture(gltf_texture)
+gltf_scene = vtkRenderer()
+gltf_scene.AddActor(gltf_actor)
+gltf_window = vtkRenderWindow()
+gltf_window.AddRenderer(gltf_scene)
+gltf = vtkGLTFExporter()
+gltf.SetRenderWindow(gltf_window)
+gltf.SetFileName(stem + ".gltf")
+gltf.InlineDataOn()
+gltf.Write()
+print(f"wrote {stem}.ply (vertex colours, {probe.GetOutput().GetNumberOfPoints()} points), "
+      f"{stem}.obj/.mtl/.png and {stem}.gltf ({baker.GetNumberOfBakedTexels()} texels baked)")
 
 # 4. Read both back, as another program would, and show them beside the OFB.
 ply_in = vtkPLYReader()
@@ -238,6 +262,15 @@ if args.check:
         problems.append("the OBJ has no texture coordinates")
     if png_in.GetOutput().GetDimensions()[:2] != texture_size:
         problems.append("the texture PNG has the wrong size")
+    # The glTF, read back by VTK's importer: one mesh, textured.
+    gltf_in = vtkGLTFImporter()
+    gltf_in.SetFileName(stem + ".gltf")
+    gltf_in.SetRenderWindow(vtkRenderWindow())
+    gltf_in.Update()
+    imported = gltf_in.GetRenderer().GetActors()
+    if imported.GetNumberOfItems() != 1 or \
+            imported.GetLastActor().GetProperty().GetNumberOfTextures() == 0:
+        problems.append("the glTF does not read back as one textured mesh")
     if foreground.mean() < 0.1:
         problems.append("the mesh covers too little of the view")
     if not texture_error < 12.0:

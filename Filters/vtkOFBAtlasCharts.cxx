@@ -529,6 +529,13 @@ void vtkOFBAtlasCharts::Drop(const Outlines& outlines,
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBAtlasCharts::Prepare(const double* x, const vtkIdType* ids, vtkIdType n)
+{
+  this->Classify(x, ids, n);
+  this->FindNeighbours(x, ids, n);
+}
+
+//------------------------------------------------------------------------------
 bool vtkOFBAtlasCharts::Build(const double* x,
   const vtkIdType* ids,
   vtkIdType n,
@@ -545,8 +552,6 @@ bool vtkOFBAtlasCharts::Build(const double* x,
   this->Shift.clear();
   this->Low.clear();
   this->Width = this->Height = 0;
-  this->Classify(x, ids, n);
-  this->FindNeighbours(x, ids, n);
   if (!this->Grow(x, ids, n))
   {
     return false;

@@ -21,11 +21,17 @@ class vtkOFBAtlasCharts
 {
 public:
   /**
-   * Lay out the `n` triangles `ids` (3 point ids a triangle) of the points `x` (3 doubles
-   * a point, world units) in the frame of an OFB (`origin`, `cellSize`), at `density`
-   * texels a cell, each chart `padding` texels from the next. False when the atlas would
-   * need a side over `maximumSize` texels: Width and Height are then the size it would
-   * need (0 where even that is out of reach), and the layout is not to be used.
+   * What does not depend on the density, once for the triangles that Build then lays out:
+   * each triangle's axis direction and its neighbours across edges.
+   */
+  void Prepare(const double* x, const vtkIdType* ids, vtkIdType n);
+
+  /**
+   * Lay out (after Prepare with the same arguments) the `n` triangles `ids` (3 point ids a
+   * triangle) of the points `x` (3 doubles a point, world units) in the frame of an OFB (`origin`,
+   * `cellSize`), at `density` texels a cell, each chart `padding` texels from the next. False when
+   * the atlas would need a side over `maximumSize` texels: Width and Height are then the size it
+   * would need (0 where even that is out of reach), and the layout is not to be used.
    */
   bool Build(const double* x,
     const vtkIdType* ids,

@@ -187,11 +187,12 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
   {
     vtkWarningMacro("Vertices and lines have no texture: left out.");
   }
-  // Each triangle's corners in cells, its shape.
+  // Each triangle's corners, and for Triangles its shape in cells.
   const vtkIdType n = polys->GetNumberOfCells();
   const double s = ofb->GetCellSize();
-  std::vector<double> extents(n);
-  std::vector<int> corner(n);
+  const bool tiles = this->Layout == TRIANGLES;
+  std::vector<double> extents(tiles ? n : 0);
+  std::vector<int> corner(tiles ? n : 0);
   std::vector<vtkIdType> ids(3 * n);
   {
     auto iter = vtk::TakeSmartPointer(polys->NewIterator());
@@ -209,9 +210,12 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
         p[k] = glm::dvec3(x[0], x[1], x[2]) / s;
         ids[3 * t + k] = pts[k];
       }
-      const TriangleShape shape = Shape(p);
-      corner[t] = shape.Corner;
-      extents[t] = shape.Extent;
+      if (tiles)
+      {
+        const TriangleShape shape = Shape(p);
+        corner[t] = shape.Corner;
+        extents[t] = shape.Extent;
+      }
     }
   }
   this->UpdateProgress(0.3);
@@ -361,6 +365,7 @@ bool vtkOFBTextureAtlas::MakeCharts(vtkPolyData* input,
   // there is (at least 10 % down; half where a try learns no size), 1/8 itself tried last;
   // then a few halvings of the gap between the fitting density and the one above it.
   vtkOFBAtlasCharts charts;
+  charts.Prepare(x.data(), ids, n);
   int tries = 0;
   auto build = [&](double d)
   {

@@ -44,8 +44,9 @@ vtkSmartPointer<vtkPolyData> Atlas(vtkOFBTextureAtlas* atlas, vtkPolyData* mesh,
   return out;
 }
 
-/// Calls f(texel, point) for each texel whose centre lies strictly inside an output
-/// triangle in UV space, with the surface point there; returns the texels covered twice.
+/// Calls f(texel, point, triangle) for each texel whose centre lies strictly inside an
+/// output triangle in UV space, with the surface point there and the triangle's index;
+/// returns the texels covered twice.
 template<typename Functor>
 vtkIdType ForEachCoveredTexel(vtkPolyData* out, const int size[2], Functor&& f)
 {
@@ -55,7 +56,8 @@ vtkIdType ForEachCoveredTexel(vtkPolyData* out, const int size[2], Functor&& f)
   vtkIdType twice = 0;
   vtkDataArray* tc = out->GetPointData()->GetTCoords();
   auto iter = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
+  vtkIdType t = 0;
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++t)
   {
     vtkIdType npts;
     const vtkIdType* ids;
@@ -101,7 +103,7 @@ vtkIdType ForEachCoveredTexel(vtkPolyData* out, const int size[2], Functor&& f)
         {
           p[c] = w0 * x[0][c] + w1 * x[1][c] + w2 * x[2][c];
         }
-        f(texel, p);
+        f(texel, p, t);
       }
     }
   }
@@ -146,33 +148,8 @@ int ClosestTexelsOfTwoCharts(vtkPolyData* out, const int size[2])
 {
   const std::vector<vtkIdType> chart = ChartOfTriangles(out);
   std::vector<vtkIdType> owner(static_cast<size_t>(size[0]) * size[1], -1);
-  // Each triangle alone, to know whose texels ForEachCoveredTexel gives.
-  vtkDataArray* tc = out->GetPointData()->GetTCoords();
-  auto iter = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
-  vtkIdType k = 0;
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++k)
-  {
-    vtkIdType npts;
-    const vtkIdType* ids;
-    iter->GetCurrentCell(npts, ids);
-    vtkNew<vtkPoints> points;
-    vtkNew<vtkFloatArray> uv;
-    uv->SetNumberOfComponents(2);
-    vtkNew<vtkCellArray> cells;
-    vtkIdType corner[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      corner[c] = points->InsertNextPoint(out->GetPoint(ids[c]));
-      uv->InsertNextTuple(tc->GetTuple(ids[c]));
-    }
-    cells->InsertNextCell(3, corner);
-    vtkNew<vtkPolyData> one;
-    one->SetPoints(points);
-    one->SetPolys(cells);
-    one->GetPointData()->SetTCoords(uv);
-    ForEachCoveredTexel(
-      one, size, [&](vtkIdType texel, const double*) { owner[texel] = chart[k]; });
-  }
+  ForEachCoveredTexel(
+    out, size, [&](vtkIdType texel, const double*, vtkIdType t) { owner[texel] = chart[t]; });
   int closest = std::numeric_limits<int>::max();
   const int reach = 8;
   for (int j = 0; j < size[1]; ++j)
@@ -486,7 +463,7 @@ TEST(TextureAtlas, ChartsPutTexelCentresOnTheSamplesOfTheirGrid)
     vtkIdType sameColour = 0;
     const vtkIdType twice = ForEachCoveredTexel(out,
       size,
-      [&](vtkIdType texel, const double p[3])
+      [&](vtkIdType texel, const double p[3], vtkIdType)
       {
         ++covered;
         const vtkIdType id = ofb->FindClosestSample(p);
@@ -563,7 +540,7 @@ TEST(TextureAtlas, ChartsGrowAcrossPointsRepeatedAtOnePlace)
   EXPECT_EQ(out->GetNumberOfPoints(), 3 * n);
   vtkIdType covered = 0;
   const vtkIdType twice = ForEachCoveredTexel(
-    out, separate->GetAtlasSize(), [&covered](vtkIdType, const double*) { ++covered; });
+    out, separate->GetAtlasSize(), [&covered](vtkIdType, const double*, vtkIdType) { ++covered; });
   EXPECT_EQ(twice, 0);
   EXPECT_GT(covered, ofb->GetNumberOfSamples() * 9 / 10);
   // A point not finite welds to nothing and breaks nothing.
@@ -588,7 +565,7 @@ TEST(TextureAtlas, ChartsAreCutWhereTheSurfaceFoldsOverItself)
     ASSERT_EQ(out->GetNumberOfPolys(), ramp->GetNumberOfPolys());
     vtkIdType covered = 0;
     const vtkIdType twice = ForEachCoveredTexel(
-      out, atlas->GetAtlasSize(), [&covered](vtkIdType, const double*) { ++covered; });
+      out, atlas->GetAtlasSize(), [&covered](vtkIdType, const double*, vtkIdType) { ++covered; });
     EXPECT_EQ(twice, 0);
     // One chart while the ramp does not come over itself, then at least two.
     if (turns < 1.0)

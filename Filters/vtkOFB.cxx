@@ -22,7 +22,7 @@ namespace
  * n values in a spare array of `ofb` of this name and type (see vtkOFB::Recycle),
  * else in a new one; null if it cannot be allocated.
  */
-template <typename ArrayT>
+template<typename ArrayT>
 vtkSmartPointer<ArrayT> SpareOrNew(vtkOFB* ofb, const char* name, int type, vtkIdType n)
 {
   vtkSmartPointer<ArrayT> array = ArrayT::SafeDownCast(ofb->TakeSpareArray(name, type, 1, n));
@@ -143,8 +143,10 @@ void vtkOFB::ReleaseSpareArrays()
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkDataArray> vtkOFB::TakeSpareArray(
-  const char* name, int dataType, int numberOfComponents, vtkIdType numberOfTuples)
+vtkSmartPointer<vtkDataArray> vtkOFB::TakeSpareArray(const char* name,
+  int dataType,
+  int numberOfComponents,
+  vtkIdType numberOfTuples)
 {
   for (auto it = this->Spares.begin(); name && it != this->Spares.end(); ++it)
   {
@@ -171,8 +173,10 @@ vtkSmartPointer<vtkDataArray> vtkOFB::TakeSpareArray(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFB::SetFrame(
-  const double origin[3], double cellSize, const vtkIdType dims[3], bool zeroOffsets)
+bool vtkOFB::SetFrame(const double origin[3],
+  double cellSize,
+  const vtkIdType dims[3],
+  bool zeroOffsets)
 {
   this->Reset();
   if (!(cellSize > 0.0) || !std::isfinite(cellSize) || !std::isfinite(origin[0]) ||
@@ -196,8 +200,8 @@ bool vtkOFB::SetFrame(
       static_cast<double>(dims[(a + 1) % 3]) * static_cast<double>(dims[(a + 2) % 3]);
     if (cells + base[a] >= static_cast<double>(std::numeric_limits<vtkTypeUInt32>::max()))
     {
-      vtkErrorMacro("SetFrame: " << cells + base[a]
-                                 << " cells exceed the 2^32 cell indices of an OFB.");
+      vtkErrorMacro(
+        "SetFrame: " << cells + base[a] << " cells exceed the 2^32 cell indices of an OFB.");
       return false;
     }
     base[a + 1] = base[a] + static_cast<vtkIdType>(cells);
@@ -274,7 +278,9 @@ bool vtkOFB::BuildCellIndex()
   vtkTypeUInt32* index = this->CellIndex->GetPointer(0);
   // Written by the SMP threads that meet a bad offset, read after they all finished.
   std::atomic<bool> valid(true);
-  vtkSMPTools::For(0, nCells, 65536,
+  vtkSMPTools::For(0,
+    nCells,
+    65536,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType c = begin; c < end; ++c)
@@ -509,7 +515,8 @@ vtkIdType vtkOFB::FindClosestSample(const double x[3], double radius) const
   }
   vtkIdType result = -1;
   double best = std::numeric_limits<double>::max();
-  this->ForEachSampleInSphere(x, radius,
+  this->ForEachSampleInSphere(x,
+    radius,
     [&](vtkIdType id, double d2)
     {
       if (d2 < best || (d2 == best && id < result))
@@ -533,7 +540,8 @@ void vtkOFB::FindSamplesInSphere(const double center[3], double radius, vtkIdLis
   {
     return;
   }
-  this->ForEachSampleInSphere(center, radius, [ids](vtkIdType id, double) { ids->InsertNextId(id); });
+  this->ForEachSampleInSphere(
+    center, radius, [ids](vtkIdType id, double) { ids->InsertNextId(id); });
 }
 
 //------------------------------------------------------------------------------
@@ -559,12 +567,14 @@ void vtkOFB::MarkSamplesModified(vtkIdType first, vtkIdType last)
   // most 32 ranges, each with the newest time of what it merged (still older than
   // the kept ones).
   auto& ranges = this->ModifiedRanges;
-  std::sort(ranges.begin(), ranges.end(),
+  std::sort(ranges.begin(),
+    ranges.end(),
     [](const ModifiedRange& x, const ModifiedRange& y) { return x.Time < y.Time; });
   const size_t older = ranges.size() - 192;
   std::vector<ModifiedRange> kept(ranges.begin() + older, ranges.end());
   ranges.resize(older);
-  std::sort(ranges.begin(), ranges.end(),
+  std::sort(ranges.begin(),
+    ranges.end(),
     [](const ModifiedRange& x, const ModifiedRange& y) { return x.First < y.First; });
   size_t out = 0;
   for (size_t i = 1; i < ranges.size(); ++i)

@@ -38,8 +38,9 @@ void vtkOFBAlgorithm::SetInputData(vtkDataObject* input)
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkOFBAlgorithm::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+vtkTypeBool vtkOFBAlgorithm::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
 {
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
   {
@@ -70,8 +71,9 @@ vtkTypeBool vtkOFBAlgorithm::ProcessRequest(
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBAlgorithm::RequestDataObject(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outInfo)
+int vtkOFBAlgorithm::RequestDataObject(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outInfo)
 {
   for (int i = 0; i < this->GetNumberOfOutputPorts(); ++i)
   {
@@ -87,13 +89,17 @@ int vtkOFBAlgorithm::RequestDataObject(
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBAlgorithm::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*)
+int vtkOFBAlgorithm::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector*)
 {
   return 1;
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBAlgorithm::RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*)
+int vtkOFBAlgorithm::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector*)
 {
   return 1;
 }

@@ -40,8 +40,9 @@ public:
   /**
    * Dispatch the pipeline passes.
    */
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo) override;
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inInfo,
+    vtkInformationVector* outInfo) override;
 
 protected:
   vtkOFBAlgorithm();

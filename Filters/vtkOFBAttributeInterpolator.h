@@ -37,12 +37,12 @@
 
 struct vtkOFBAttributeInterpolator
 {
-  const double* Points;          ///< xyz per point
+  const double* Points;              ///< xyz per point
   const vtkIdType* TrianglePointIds; ///< 3 per triangle
-  const float* PointNormals;     ///< unit, 3 per point
-  const float* PointVectors;     ///< 3 per point, or null
-  const unsigned char* PointColors; ///< ColorComponents per point, or null
-  int ColorComponents;           ///< 3 (RGB) or 4 (RGBA); 0 without colours
+  const float* PointNormals;         ///< unit, 3 per point
+  const float* PointVectors;         ///< 3 per point, or null
+  const unsigned char* PointColors;  ///< ColorComponents per point, or null
+  int ColorComponents;               ///< 3 (RGB) or 4 (RGBA); 0 without colours
   unsigned char DefaultColor[4];
   bool ProjectVectors;
 
@@ -72,8 +72,11 @@ struct vtkOFBAttributeInterpolator
   };
 
   /// Attributes of n samples of triangle tri at barycentrics (w1, w2) in the triangle.
-  void Interpolate(
-    vtkIdType tri, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  void Interpolate(vtkIdType tri,
+    vtkIdType n,
+    const float* w1,
+    const float* w2,
+    const Run& out) const
   {
     const vtkIdType* t = this->TrianglePointIds + 3 * tri;
     this->Interpolate(t, n, w1, w2, out, this->MayCancel(t));
@@ -106,9 +109,13 @@ struct vtkOFBAttributeInterpolator
    * for n rounded up to a multiple of 4, whose normals may then be computed from
    * whatever those extra w1, w2 hold (finite floats).
    */
-  void Interpolate(const vtkIdType* t, vtkIdType n, const float* w1, const float* w2,
+  void Interpolate(const vtkIdType* t,
+    vtkIdType n,
+    const float* w1,
+    const float* w2,
     const Run& out,
-    bool mayCancel, bool padded = false) const
+    bool mayCancel,
+    bool padded = false) const
   {
     // The point normals interpolated and their squared length, in one loop that
     // vectorizes (structure of arrays).
@@ -117,16 +124,29 @@ struct vtkOFBAttributeInterpolator
     float* nz = out.Normals[2];
     if (!mayCancel)
     {
-      InterpolateUnitNormals(padded ? (n + 3) & ~vtkIdType(3) : n, w1, w2,
+      InterpolateUnitNormals(padded ? (n + 3) & ~vtkIdType(3) : n,
+        w1,
+        w2,
         this->PointNormals + 3 * t[0],
-        this->PointNormals + 3 * t[1], this->PointNormals + 3 * t[2], nx, ny, nz);
+        this->PointNormals + 3 * t[1],
+        this->PointNormals + 3 * t[2],
+        nx,
+        ny,
+        nz);
       this->InterpolateVectorsAndColors(t, n, w1, w2, out);
       return;
     }
     float* len2 = out.Scratch;
-    InterpolateNormals(n, w1, w2, this->PointNormals + 3 * t[0], this->PointNormals + 3 * t[1],
-      this->PointNormals + 3 * t[2], nx,
-      ny, nz, len2);
+    InterpolateNormals(n,
+      w1,
+      w2,
+      this->PointNormals + 3 * t[0],
+      this->PointNormals + 3 * t[1],
+      this->PointNormals + 3 * t[2],
+      nx,
+      ny,
+      nz,
+      len2);
     for (vtkIdType i = 0; i < n; ++i)
     {
       if (!(len2[i] > 1e-12f))
@@ -152,8 +172,11 @@ struct vtkOFBAttributeInterpolator
   }
 
   /// The vectors and colours of n samples (Interpolate, once their normals are known).
-  void InterpolateVectorsAndColors(
-    const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  void InterpolateVectorsAndColors(const vtkIdType* t,
+    vtkIdType n,
+    const float* w1,
+    const float* w2,
+    const Run& out) const
   {
     if (this->PointVectors)
     {
@@ -169,9 +192,15 @@ struct vtkOFBAttributeInterpolator
    * Normals n0, n1, n2 interpolated at n barycentrics (w1, w2), by component, and
    * their squared length (restrict: the loop vectorizes).
    */
-  static void InterpolateNormals(vtkIdType n, const float* VTK_OFB_RESTRICT w1,
-    const float* VTK_OFB_RESTRICT w2, const float* n0, const float* n1, const float* n2,
-    float* VTK_OFB_RESTRICT nx, float* VTK_OFB_RESTRICT ny, float* VTK_OFB_RESTRICT nz,
+  static void InterpolateNormals(vtkIdType n,
+    const float* VTK_OFB_RESTRICT w1,
+    const float* VTK_OFB_RESTRICT w2,
+    const float* n0,
+    const float* n1,
+    const float* n2,
+    float* VTK_OFB_RESTRICT nx,
+    float* VTK_OFB_RESTRICT ny,
+    float* VTK_OFB_RESTRICT nz,
     float* VTK_OFB_RESTRICT len2)
   {
     const float x0 = n0[0], y0 = n0[1], z0 = n0[2];
@@ -196,9 +225,15 @@ struct vtkOFBAttributeInterpolator
    * length, at least 1e-3 where they cannot cancel, is kept from zero for the
    * padding of Interpolate.
    */
-  static void InterpolateUnitNormals(vtkIdType n, const float* VTK_OFB_RESTRICT w1,
-    const float* VTK_OFB_RESTRICT w2, const float* n0, const float* n1, const float* n2,
-    float* VTK_OFB_RESTRICT nx, float* VTK_OFB_RESTRICT ny, float* VTK_OFB_RESTRICT nz)
+  static void InterpolateUnitNormals(vtkIdType n,
+    const float* VTK_OFB_RESTRICT w1,
+    const float* VTK_OFB_RESTRICT w2,
+    const float* n0,
+    const float* n1,
+    const float* n2,
+    float* VTK_OFB_RESTRICT nx,
+    float* VTK_OFB_RESTRICT ny,
+    float* VTK_OFB_RESTRICT nz)
   {
     vtkIdType i = 0;
 #if defined(__SSE2__)
@@ -207,10 +242,7 @@ struct vtkOFBAttributeInterpolator
     const __m128 x2 = _mm_set1_ps(n2[0]), y2 = _mm_set1_ps(n2[1]), z2 = _mm_set1_ps(n2[2]);
     const __m128 one = _mm_set1_ps(1.0f), tiny = _mm_set1_ps(1e-30f);
     auto dot = [](__m128 b0, __m128 b1, __m128 b2, __m128 v0, __m128 v1, __m128 v2)
-    {
-      return _mm_add_ps(
-        _mm_add_ps(_mm_mul_ps(b0, v0), _mm_mul_ps(b1, v1)), _mm_mul_ps(b2, v2));
-    };
+    { return _mm_add_ps(_mm_add_ps(_mm_mul_ps(b0, v0), _mm_mul_ps(b1, v1)), _mm_mul_ps(b2, v2)); };
     for (; i + 4 <= n; i += 4)
     {
       const __m128 b1 = _mm_loadu_ps(w1 + i), b2 = _mm_loadu_ps(w2 + i);
@@ -218,8 +250,7 @@ struct vtkOFBAttributeInterpolator
       const __m128 x = dot(b0, b1, b2, x0, x1, x2);
       const __m128 y = dot(b0, b1, b2, y0, y1, y2);
       const __m128 z = dot(b0, b1, b2, z0, z1, z2);
-      const __m128 inv =
-        _mm_div_ps(one, _mm_sqrt_ps(_mm_max_ps(dot(x, y, z, x, y, z), tiny)));
+      const __m128 inv = _mm_div_ps(one, _mm_sqrt_ps(_mm_max_ps(dot(x, y, z, x, y, z), tiny)));
       _mm_storeu_ps(nx + i, _mm_mul_ps(x, inv));
       _mm_storeu_ps(ny + i, _mm_mul_ps(y, inv));
       _mm_storeu_ps(nz + i, _mm_mul_ps(z, inv));
@@ -252,8 +283,11 @@ struct vtkOFBAttributeInterpolator
   }
 
   /// The vector field interpolated, projected into the plane of the normals.
-  void InterpolateVectors(
-    const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, const Run& out) const
+  void InterpolateVectors(const vtkIdType* t,
+    vtkIdType n,
+    const float* w1,
+    const float* w2,
+    const Run& out) const
   {
     for (int k = 0; k < 3; ++k)
     {
@@ -281,8 +315,11 @@ struct vtkOFBAttributeInterpolator
   }
 
   /// The point colours interpolated, rounded (RGB gets an opaque alpha).
-  void InterpolateColors(
-    const vtkIdType* t, vtkIdType n, const float* w1, const float* w2, unsigned char* rgba) const
+  void InterpolateColors(const vtkIdType* t,
+    vtkIdType n,
+    const float* w1,
+    const float* w2,
+    unsigned char* rgba) const
   {
     const int nc = this->ColorComponents;
     for (int k = 0; k < nc; ++k)
@@ -307,10 +344,16 @@ struct vtkOFBAttributeInterpolator
    * sample i from fragment f = order[i] (i without order), of triangle tri[f] at
    * barycentrics (w1[f], w2[f]).
    */
-  template <typename T>
-  static void InterpolateTuples(const T* in, T* out, int nc, vtkIdType n,
+  template<typename T>
+  static void InterpolateTuples(const T* in,
+    T* out,
+    int nc,
+    vtkIdType n,
     const vtkIdType* trianglePointIds,
-    const vtkTypeUInt32* tri, const float* w1, const float* w2, const vtkTypeUInt32* order)
+    const vtkTypeUInt32* tri,
+    const float* w1,
+    const float* w2,
+    const vtkTypeUInt32* order)
   {
     for (vtkIdType i = 0; i < n; ++i)
     {
@@ -333,16 +376,28 @@ struct vtkOFBAttributeInterpolator
   }
 
   /// Interpolate samples [first, first + n) of one of the surface's other arrays.
-  static bool InterpolateArray(vtkDataArray* in, vtkDataArray* out, vtkIdType first, vtkIdType n,
-    const vtkIdType* trianglePointIds, const vtkTypeUInt32* tri, const float* w1, const float* w2,
+  static bool InterpolateArray(vtkDataArray* in,
+    vtkDataArray* out,
+    vtkIdType first,
+    vtkIdType n,
+    const vtkIdType* trianglePointIds,
+    const vtkTypeUInt32* tri,
+    const float* w1,
+    const float* w2,
     const vtkTypeUInt32* order)
   {
     const int nc = in->GetNumberOfComponents();
     switch (in->GetDataType())
     {
       vtkTemplateMacro(InterpolateTuples(static_cast<const VTK_TT*>(in->GetVoidPointer(0)),
-        static_cast<VTK_TT*>(out->GetVoidPointer(first * nc)), nc, n, trianglePointIds, tri, w1,
-        w2, order));
+        static_cast<VTK_TT*>(out->GetVoidPointer(first * nc)),
+        nc,
+        n,
+        trianglePointIds,
+        tri,
+        w1,
+        w2,
+        order));
       default:
         return false;
     }

@@ -156,7 +156,9 @@ bool vtkOFBCPUSampler::SetUpTriangles(BandBuilder& builder, Job& job) const
 void vtkOFBCPUSampler::SpanBands(BandBuilder& builder)
 {
   std::vector<Band>& bands = builder.Bands;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(bands.size()), 1,
+  vtkSMPTools::For(0,
+    static_cast<vtkIdType>(bands.size()),
+    1,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType b = begin; b < end; ++b)
@@ -218,7 +220,9 @@ void vtkOFBCPUSampler::FillBands(BandBuilder& builder, Job& job, vtkIdType sampl
   }
   std::vector<Band>& bands = builder.Bands;
   vtkSMPThreadLocal<BandScratch>& scratch = this->Buffers->Scratch;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(bands.size()), 1,
+  vtkSMPTools::For(0,
+    static_cast<vtkIdType>(bands.size()),
+    1,
     [&](vtkIdType begin, vtkIdType end)
     {
       BandScratch& local = scratch.Local();

@@ -23,14 +23,14 @@
 #ifndef vtkOFBPyramid_h
 #define vtkOFBPyramid_h
 
-#include "vtkObject.h"
 #include "vtkOFBFiltersModule.h" // for export macro
-#include "vtkSmartPointer.h"     // for members
-#include "vtkTimeStamp.h"        // for members
-#include "vtkWeakPointer.h"      // for LastInputOFB
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for members
+#include "vtkTimeStamp.h"    // for members
+#include "vtkWeakPointer.h"  // for LastInputOFB
 
-#include <set>    // for FilterAllLevels
-#include <string> // for FilterAllLevels
+#include <set>     // for FilterAllLevels
+#include <string>  // for FilterAllLevels
 #include <utility> // for TakeCachedLevels
 #include <vector>  // for Levels
 

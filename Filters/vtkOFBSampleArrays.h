@@ -30,8 +30,8 @@ struct vtkOFBSampleArrays
 
   vtkOFBSampleArrays(const vtkOFBSurface& surface, vtkIdType n, vtkOFB* ofb)
   {
-    this->Colors = vtkUnsignedCharArray::SafeDownCast(
-      NewArray(ofb, "Colors", VTK_UNSIGNED_CHAR, nullptr, 4, n));
+    this->Colors =
+      vtkUnsignedCharArray::SafeDownCast(NewArray(ofb, "Colors", VTK_UNSIGNED_CHAR, nullptr, 4, n));
     this->Normals = vtkFloatArray::SafeDownCast(NewArray(ofb, "Normals", VTK_FLOAT, nullptr, 3, n));
     if (surface.Vectors)
     {
@@ -49,16 +49,19 @@ struct vtkOFBSampleArrays
    * n tuples of a spare array of `ofb` of this name and type (and of the class of
    * `like` when given), else of a new one.
    */
-  static vtkSmartPointer<vtkDataArray> NewArray(vtkOFB* ofb, const char* name, int type,
-    vtkDataArray* like, int components, vtkIdType n)
+  static vtkSmartPointer<vtkDataArray> NewArray(vtkOFB* ofb,
+    const char* name,
+    int type,
+    vtkDataArray* like,
+    int components,
+    vtkIdType n)
   {
     vtkSmartPointer<vtkDataArray> array = ofb->TakeSpareArray(name, type, components, n);
     if (array && (!like || std::strcmp(array->GetClassName(), like->GetClassName()) == 0))
     {
       return array;
     }
-    array =
-      vtk::TakeSmartPointer(like ? like->NewInstance() : vtkDataArray::CreateDataArray(type));
+    array = vtk::TakeSmartPointer(like ? like->NewInstance() : vtkDataArray::CreateDataArray(type));
     array->SetName(name);
     array->SetNumberOfComponents(components);
     array->SetNumberOfTuples(n);
@@ -67,7 +70,8 @@ struct vtkOFBSampleArrays
   }
 
   /// Hand the arrays to the sample data (of the others, only those interpolated).
-  void Attach(const vtkOFBSurface& surface, vtkPointData* sampleData,
+  void Attach(const vtkOFBSurface& surface,
+    vtkPointData* sampleData,
     const std::vector<bool>& interpolated)
   {
     sampleData->SetScalars(this->Colors);

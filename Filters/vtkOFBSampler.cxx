@@ -61,12 +61,14 @@ bool IsColorArray(vtkDataArray* array)
 constexpr vtkIdType Chunk = 16384;
 
 /// Copy n values to doubles in parallel; the index of the first non-finite one, or -1.
-template <typename T>
+template<typename T>
 vtkIdType CopyValues(const T* in, vtkIdType nValues, double* out)
 {
   const vtkIdType nChunks = (nValues + Chunk - 1) / Chunk;
   std::vector<vtkIdType> firstBad(nChunks, -1);
-  vtkSMPTools::For(0, nChunks, 1,
+  vtkSMPTools::For(0,
+    nChunks,
+    1,
     [&](vtkIdType c0, vtkIdType c1)
     {
       for (vtkIdType c = c0; c < c1; ++c)
@@ -141,13 +143,13 @@ struct TriangleCollector
   {
     if (cells->IsHomogeneous() == 3 && cells->IsStorage64Bit())
     {
-      return this->Collect(cells->GetConnectivityArray64()->GetPointer(0),
-        cells->GetNumberOfCells(), surface);
+      return this->Collect(
+        cells->GetConnectivityArray64()->GetPointer(0), cells->GetNumberOfCells(), surface);
     }
     if (cells->IsHomogeneous() == 3)
     {
-      return this->Collect(cells->GetConnectivityArray32()->GetPointer(0),
-        cells->GetNumberOfCells(), surface);
+      return this->Collect(
+        cells->GetConnectivityArray32()->GetPointer(0), cells->GetNumberOfCells(), surface);
     }
     // Mixed cells (not left by the triangulation in practice): their triangles.
     std::vector<vtkIdType> ids;
@@ -165,20 +167,22 @@ struct TriangleCollector
     return this->Collect(ids.data(), static_cast<vtkIdType>(ids.size() / 3), surface);
   }
 
-  template <typename IdT>
+  template<typename IdT>
   bool Collect(const IdT* ids, vtkIdType n, vtkOFBSurface& surface)
   {
     const vtkIdType nChunks = (n + Chunk - 1) / Chunk;
     std::vector<vtkIdType> kept(nChunks + 1, 0);
     std::vector<double> bounds(6 * nChunks);
     std::vector<unsigned char> valid(n), badIds(nChunks, 0);
-    vtkSMPTools::For(0, nChunks, 1,
+    vtkSMPTools::For(0,
+      nChunks,
+      1,
       [&](vtkIdType c0, vtkIdType c1)
       {
         for (vtkIdType c = c0; c < c1; ++c)
         {
-          kept[c + 1] = this->Check(ids, c * Chunk, std::min(n, (c + 1) * Chunk), valid.data(),
-            &bounds[6 * c], badIds[c]);
+          kept[c + 1] = this->Check(
+            ids, c * Chunk, std::min(n, (c + 1) * Chunk), valid.data(), &bounds[6 * c], badIds[c]);
         }
       });
     if (std::find(badIds.begin(), badIds.end(), 1) != badIds.end())
@@ -192,7 +196,9 @@ struct TriangleCollector
     this->Skipped = n - kept[nChunks];
     surface.Triangles.resize(3 * kept[nChunks]);
     vtkIdType* out = surface.Triangles.data();
-    vtkSMPTools::For(0, nChunks, 1,
+    vtkSMPTools::For(0,
+      nChunks,
+      1,
       [&](vtkIdType c0, vtkIdType c1)
       {
         for (vtkIdType c = c0; c < c1; ++c)
@@ -226,9 +232,13 @@ struct TriangleCollector
    * Triangles [begin, end): flags of those with non-zero area, their count and
    * bounds; badId is set to 1 if one has a point id out of range.
    */
-  template <typename IdT>
-  vtkIdType Check(const IdT* ids, vtkIdType begin, vtkIdType end, unsigned char* valid,
-    double bounds[6], unsigned char& badId) const
+  template<typename IdT>
+  vtkIdType Check(const IdT* ids,
+    vtkIdType begin,
+    vtkIdType end,
+    unsigned char* valid,
+    double bounds[6],
+    unsigned char& badId) const
   {
     bounds[0] = bounds[2] = bounds[4] = VTK_DOUBLE_MAX;
     bounds[1] = bounds[3] = bounds[5] = -VTK_DOUBLE_MAX;
@@ -302,7 +312,9 @@ void AreaWeightedNormals(vtkOFBSurface& surface)
       }
     }
   }
-  vtkSMPTools::For(0, nPoints, Chunk,
+  vtkSMPTools::For(0,
+    nPoints,
+    Chunk,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
@@ -335,8 +347,10 @@ vtkIdType CountTriangles(vtkCellArray* cells)
  * every named, non-bit array but those already used (`used`: normals, vectors,
  * colours) or named as the samples' own arrays.
  */
-void CollectOtherArrays(vtkPointData* pd, vtkIdType nPoints,
-  std::initializer_list<vtkDataArray*> used, vtkOFBSurface& surface)
+void CollectOtherArrays(vtkPointData* pd,
+  vtkIdType nPoints,
+  std::initializer_list<vtkDataArray*> used,
+  vtkOFBSurface& surface)
 {
   for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
   {
@@ -389,8 +403,9 @@ vtkOFBSamplerBackend* vtkOFBSampler::SelectBackend()
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBSampler::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkOFBSampler::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkOFB* output = vtkOFB::GetData(outputVector);
@@ -427,8 +442,8 @@ int vtkOFBSampler::RequestData(
 }
 
 //------------------------------------------------------------------------------
-vtkOFBSamplerBackend::Result vtkOFBSampler::RunBackend(
-  vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job)
+vtkOFBSamplerBackend::Result vtkOFBSampler::RunBackend(vtkOFBSamplerBackend* backend,
+  vtkOFBSamplerBackend::Job& job)
 {
   vtkOFBSamplerBackend::Result result = backend->Sample(job);
   if (result == vtkOFBSamplerBackend::Unavailable && backend != this->CPUBackend)
@@ -507,8 +522,9 @@ bool vtkOFBSampler::CheckInputCells(vtkPolyData* input)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSampler::CheckInputMemory(
-  vtkPolyData* input, vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job)
+bool vtkOFBSampler::CheckInputMemory(vtkPolyData* input,
+  vtkOFBSamplerBackend* backend,
+  vtkOFBSamplerBackend::Job& job)
 {
   const vtkIdType points = input->GetNumberOfPoints();
   const vtkIdType triangles =
@@ -586,7 +602,9 @@ vtkDataArray* vtkOFBSampler::PrepareNormals(vtkPolyData* input, vtkOFBSurface& s
     inNormals->GetNumberOfTuples() == nPoints)
   {
     vtkFloatArray* floats = vtkFloatArray::FastDownCast(inNormals); // read directly
-    vtkSMPTools::For(0, nPoints, Chunk,
+    vtkSMPTools::For(0,
+      nPoints,
+      Chunk,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
@@ -621,8 +639,9 @@ vtkDataArray* vtkOFBSampler::PrepareNormals(vtkPolyData* input, vtkOFBSurface& s
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSampler::SelectVectors(
-  vtkPolyData* input, vtkOFBSurface& surface, vtkDataArray*& vectors)
+bool vtkOFBSampler::SelectVectors(vtkPolyData* input,
+  vtkOFBSurface& surface,
+  vtkDataArray*& vectors)
 {
   // The vector field: the array chosen with SetInputArrayToProcess, else the vectors.
   vtkInformation* arrayInfo = this->GetInputArrayInformation(0);

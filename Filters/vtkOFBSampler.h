@@ -43,10 +43,10 @@
 #define vtkOFBSampler_h
 
 #include "vtkOFBAlgorithm.h"
-#include "vtkOFBFiltersModule.h"   // for export macro
-#include "vtkOFBSamplerBackend.h"  // for Job, Result
-#include "vtkSmartPointer.h"       // for CPUBackend
-#include "vtkWeakPointer.h"        // for LastBuildBackend
+#include "vtkOFBFiltersModule.h"  // for export macro
+#include "vtkOFBSamplerBackend.h" // for Job, Result
+#include "vtkSmartPointer.h"      // for CPUBackend
+#include "vtkWeakPointer.h"       // for LastBuildBackend
 
 class vtkDataArray;
 class vtkPolyData;
@@ -189,8 +189,9 @@ private:
    * points and triangles alone, before anything is copied (a lower bound of the
    * checks that follow). Returns false after reporting an error.
    */
-  bool CheckInputMemory(
-    vtkPolyData* input, vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job);
+  bool CheckInputMemory(vtkPolyData* input,
+    vtkOFBSamplerBackend* backend,
+    vtkOFBSamplerBackend::Job& job);
 
   ///@{
   /**
@@ -216,8 +217,8 @@ private:
    * Run `backend` on `job`; the CPU backend instead, with a warning, when it is
    * unavailable. Errors are reported; the output is empty unless Built.
    */
-  vtkOFBSamplerBackend::Result RunBackend(
-    vtkOFBSamplerBackend* backend, vtkOFBSamplerBackend::Job& job);
+  vtkOFBSamplerBackend::Result RunBackend(vtkOFBSamplerBackend* backend,
+    vtkOFBSamplerBackend::Job& job);
 
   vtkSmartPointer<vtkOFBSamplerBackend> CPUBackend;
   vtkWeakPointer<vtkOFBSamplerBackend> LastBuildBackend;

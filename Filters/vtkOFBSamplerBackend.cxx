@@ -3,8 +3,8 @@
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkOFB.h"
-#include "vtkOFBSampleArrays.h"
 #include "vtkOFBAttributeInterpolator.h"
+#include "vtkOFBSampleArrays.h"
 #include "vtkOFBSurface.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
@@ -31,8 +31,9 @@ vtkOFBSamplerBackend::vtkOFBSamplerBackend() = default;
 vtkOFBSamplerBackend::~vtkOFBSamplerBackend() = default;
 
 //------------------------------------------------------------------------------
-double vtkOFBSamplerBackend::EstimateBytes(
-  const vtkOFBSurface& surface, const vtkIdType dims[3], double samples) const
+double vtkOFBSamplerBackend::EstimateBytes(const vtkOFBSurface& surface,
+  const vtkIdType dims[3],
+  double samples) const
 {
   const vtkIdType points = surface.GetNumberOfPoints();
   const vtkIdType triangles = surface.GetNumberOfTriangles();
@@ -50,8 +51,9 @@ double vtkOFBSamplerBackend::EstimateBytes(vtkIdType points, vtkIdType triangles
 }
 
 //------------------------------------------------------------------------------
-double vtkOFBSamplerBackend::EstimateSurfaceBytes(
-  vtkIdType points, vtkIdType triangles, int vectorComponents)
+double vtkOFBSamplerBackend::EstimateSurfaceBytes(vtkIdType points,
+  vtkIdType triangles,
+  int vectorComponents)
 {
   // Per point: coordinates (doubles), unit normals, the sums of area-weighted
   // normals (doubles) and the copied vector field (floats). Per triangle: point
@@ -62,8 +64,9 @@ double vtkOFBSamplerBackend::EstimateSurfaceBytes(
 }
 
 //------------------------------------------------------------------------------
-double vtkOFBSamplerBackend::EstimateOutputBytes(
-  const vtkOFBSurface& surface, const vtkIdType dims[3], double samples)
+double vtkOFBSamplerBackend::EstimateOutputBytes(const vtkOFBSurface& surface,
+  const vtkIdType dims[3],
+  double samples)
 {
   double cells = 0.0;
   for (int a = 0; a < 3; ++a)
@@ -95,7 +98,9 @@ double vtkOFBSamplerBackend::EstimateSamples(const vtkOFBSurface& surface, doubl
   const vtkIdType nTris = surface.GetNumberOfTriangles();
   const vtkIdType nChunks = (nTris + EstimateChunk - 1) / EstimateChunk;
   std::vector<double> sums(nChunks, 0.0);
-  vtkSMPTools::For(0, nChunks, 1,
+  vtkSMPTools::For(0,
+    nChunks,
+    1,
     [&](vtkIdType c0, vtkIdType c1)
     {
       for (vtkIdType c = c0; c < c1; ++c)
@@ -113,8 +118,7 @@ double vtkOFBSamplerBackend::EstimateSamples(const vtkOFBSurface& surface, doubl
             e3[k] = e2[k] - e1[k];
           }
           vtkMath::Cross(e1, e2, n);
-          const double area =
-            0.5 * std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
+          const double area = 0.5 * std::max({ std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) });
           const double perimeter = vtkMath::Norm(e1) + vtkMath::Norm(e2) + vtkMath::Norm(e3);
           sums[c] += area / (cellSize * cellSize) + 0.5 * perimeter / cellSize + 1.0;
         }
@@ -144,8 +148,11 @@ bool vtkOFBSamplerBackend::CheckMemoryLimit(double bytes, double limit, std::str
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBSamplerBackend::InterpolateAttributes(const vtkOFBSurface& surface, vtkOFB* output,
-  const vtkTypeUInt32* triangles, const float* w1, const float* w2)
+bool vtkOFBSamplerBackend::InterpolateAttributes(const vtkOFBSurface& surface,
+  vtkOFB* output,
+  const vtkTypeUInt32* triangles,
+  const float* w1,
+  const float* w2)
 {
   const vtkIdType n = output->GetNumberOfSamples();
   vtkOFBSampleArrays arrays(surface, n, output);
@@ -153,7 +160,9 @@ bool vtkOFBSamplerBackend::InterpolateAttributes(const vtkOFBSurface& surface, v
   float* outNormals = arrays.Normals->GetPointer(0);
   float* outVectors = arrays.Vectors ? arrays.Vectors->GetPointer(0) : nullptr;
   const vtkOFBAttributeInterpolator interpolator(surface);
-  vtkSMPTools::For(0, n, 4096,
+  vtkSMPTools::For(0,
+    n,
+    4096,
     [&](vtkIdType begin, vtkIdType end)
     {
       float normal[3], vector[3], scratch;
@@ -187,11 +196,20 @@ bool vtkOFBSamplerBackend::InterpolateAttributes(const vtkOFBSurface& surface, v
     interpolated.push_back(vtkOFBAttributeInterpolator::IsInterpolable(in));
     if (interpolated.back())
     {
-      vtkSMPTools::For(0, n, 4096,
+      vtkSMPTools::For(0,
+        n,
+        4096,
         [&](vtkIdType begin, vtkIdType end)
         {
-          vtkOFBAttributeInterpolator::InterpolateArray(in, out, begin, end - begin,
-            surface.Triangles.data(), triangles + begin, w1 + begin, w2 + begin, nullptr);
+          vtkOFBAttributeInterpolator::InterpolateArray(in,
+            out,
+            begin,
+            end - begin,
+            surface.Triangles.data(),
+            triangles + begin,
+            w1 + begin,
+            w2 + begin,
+            nullptr);
         });
     }
   }

@@ -114,8 +114,9 @@ public:
    * `surface`, with the per-sample temporaries of a build (triangle and
    * barycentrics) and the per-cell counters.
    */
-  static double EstimateOutputBytes(
-    const vtkOFBSurface& surface, const vtkIdType dims[3], double samples);
+  static double EstimateOutputBytes(const vtkOFBSurface& surface,
+    const vtkIdType dims[3],
+    double samples);
 
   /**
    * Estimated number of samples of `surface` for cells of `cellSize`: from the
@@ -139,8 +140,11 @@ protected:
    * colours, normals, the projected vector field and the other point arrays, as
    * the CPU backend computes them.
    */
-  static bool InterpolateAttributes(const vtkOFBSurface& surface, vtkOFB* output,
-    const vtkTypeUInt32* triangles, const float* w1, const float* w2);
+  static bool InterpolateAttributes(const vtkOFBSurface& surface,
+    vtkOFB* output,
+    const vtkTypeUInt32* triangles,
+    const float* w1,
+    const float* w2);
 
 private:
   vtkOFBSamplerBackend(const vtkOFBSamplerBackend&) = delete;

@@ -78,7 +78,9 @@ double BandBuilder::ComputeSetupKeys()
   // not depend on the number of threads): negative when they are wound inwards.
   const vtkIdType nChunks = (nTris + SetupChunk - 1) / SetupChunk;
   std::vector<double> volume(nChunks, 0.0);
-  vtkSMPTools::For(0, nChunks, 1,
+  vtkSMPTools::For(0,
+    nChunks,
+    1,
     [&](vtkIdType c0, vtkIdType c1)
     {
       for (vtkIdType c = c0; c < c1; ++c)
@@ -86,8 +88,7 @@ double BandBuilder::ComputeSetupKeys()
         double sum = 0.0;
         for (vtkIdType t = c * SetupChunk; t < std::min(nTris, (c + 1) * SetupChunk); ++t)
         {
-          const double* p[3] = { P + 3 * T3[3 * t], P + 3 * T3[3 * t + 1],
-            P + 3 * T3[3 * t + 2] };
+          const double* p[3] = { P + 3 * T3[3 * t], P + 3 * T3[3 * t + 1], P + 3 * T3[3 * t + 2] };
           bool front;
           double n[3];
           const int a = vtkOFBTriangleRaster::DominantAxis(p[0], p[1], p[2], front, n);
@@ -162,7 +163,9 @@ void BandBuilder::SetUpInOrder()
   const vtkTypeUInt32* key = this->Buffers.Key.Get();
   const vtkTypeUInt32* order = this->Buffers.Order.Get();
   vtkOFBTriangleRaster* setups = this->Setups;
-  vtkSMPTools::For(0, nTris, SetupChunk,
+  vtkSMPTools::For(0,
+    nTris,
+    SetupChunk,
     [&](vtkIdType begin, vtkIdType end)
     {
       // The triangles come in setup order, their points from anywhere: fetched
@@ -208,7 +211,6 @@ void BandBuilder::SetUpInOrder()
     });
 }
 
-
 //------------------------------------------------------------------------------
 bool BandBuilder::ListBandTriangles()
 {
@@ -219,7 +221,9 @@ bool BandBuilder::ListBandTriangles()
   std::vector<vtkIdType> start(nChunks * nBands, 0), rows(nChunks * nBands, 0);
   auto forChunks = [&](auto&& fn)
   {
-    vtkSMPTools::For(0, nChunks, 1,
+    vtkSMPTools::For(0,
+      nChunks,
+      1,
       [&](vtkIdType c0, vtkIdType c1)
       {
         for (vtkIdType c = c0; c < c1; ++c)
@@ -298,8 +302,9 @@ void BandBuilder::SpanBand(Band& band) const
       walker.Span(lo, hi);
       if (lo <= hi)
       {
-        spans[end++] = { t, static_cast<int32_t>(iv), static_cast<int32_t>(lo),
-          static_cast<int32_t>(hi) };
+        spans[end++] = {
+          t, static_cast<int32_t>(iv), static_cast<int32_t>(lo), static_cast<int32_t>(hi)
+        };
         total += hi - lo + 1;
       }
     }

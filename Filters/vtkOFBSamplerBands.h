@@ -26,8 +26,8 @@
 #ifndef vtkOFBSamplerBands_h
 #define vtkOFBSamplerBands_h
 
-#include "vtkOFBHugePages.h"
 #include "vtkOFBAttributeInterpolator.h"
+#include "vtkOFBHugePages.h"
 #include "vtkOFBTriangleRaster.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkType.h"
@@ -86,7 +86,6 @@ struct SpanRecord
   int32_t Row, Lo, Hi;
 };
 
-
 /**
  * Per-thread scratch of pass 2: the fragments of a band in the order they are
  * made (depth, attributes); the fragment of each of its slots (samples; their
@@ -125,9 +124,13 @@ struct BandScratch
     };
     grow(this->Slot, nCells + 1);
     grow(this->Touched, nCells / 8 + 1);
-    for (auto* v :
-      { &this->Depth, &this->W1, &this->W2, &this->Normals[0], &this->Normals[1],
-        &this->Normals[2], &this->Tmp })
+    for (auto* v : { &this->Depth,
+           &this->W1,
+           &this->W2,
+           &this->Normals[0],
+           &this->Normals[1],
+           &this->Normals[2],
+           &this->Tmp })
     {
       grow(*v, n + 8);
     }
@@ -185,7 +188,7 @@ struct Output
  * An uninitialized array kept from build to build (see vtkOFBSamplerBuffers): a
  * rebuild writes over memory it already has.
  */
-template <typename T>
+template<typename T>
 struct Buffer
 {
   std::unique_ptr<T[]> Data;
@@ -243,8 +246,9 @@ namespace vtkofb
 class BandBuilder
 {
 public:
-  BandBuilder(
-    const vtkOFBSurface& surface, const vtkOFBRasterFrame& frame, vtkOFBSamplerBuffers& buffers)
+  BandBuilder(const vtkOFBSurface& surface,
+    const vtkOFBRasterFrame& frame,
+    vtkOFBSamplerBuffers& buffers)
     : Surface(surface)
     , Frame(frame)
     , Interpolator(surface)
@@ -337,8 +341,11 @@ private:
    * that vectorizes; one of 8 samples for a shorter span, whose trip count the
    * branch predictor knows: the arrays have room for 8 more).
    */
-  static void SpanSamples(const vtkOFBTriangleRaster& ts, const SpanRecord& span,
-    float* VTK_OFB_RESTRICT depth, float* VTK_OFB_RESTRICT w1, float* VTK_OFB_RESTRICT w2);
+  static void SpanSamples(const vtkOFBTriangleRaster& ts,
+    const SpanRecord& span,
+    float* VTK_OFB_RESTRICT depth,
+    float* VTK_OFB_RESTRICT w1,
+    float* VTK_OFB_RESTRICT w2);
 
   /**
    * Sort the slots of each cell by (depth, triangle), the order of the OpenGL

@@ -108,16 +108,19 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
     vtkIdType ids[3];
     ts.GetPointIds(ids);
     const bool padded = true; // the scratch has room for 8 more fragments
-    this->Interpolator.Interpolate(ids, f - f0, s.W1.data() + f0 - w0, s.W2.data() + f0 - w0,
-      s.RunAt(f0), ts.MayCancel, padded);
+    this->Interpolator.Interpolate(
+      ids, f - f0, s.W1.data() + f0 - w0, s.W2.data() + f0 - w0, s.RunAt(f0), ts.MayCancel, padded);
   }
   SortCells(band.Count, cellOf, s);
   this->WriteSamples(band, out, s);
 }
 
 //------------------------------------------------------------------------------
-void BandBuilder::SpanSamples(const vtkOFBTriangleRaster& ts, const SpanRecord& span,
-  float* VTK_OFB_RESTRICT depth, float* VTK_OFB_RESTRICT w1, float* VTK_OFB_RESTRICT w2)
+void BandBuilder::SpanSamples(const vtkOFBTriangleRaster& ts,
+  const SpanRecord& span,
+  float* VTK_OFB_RESTRICT depth,
+  float* VTK_OFB_RESTRICT w1,
+  float* VTK_OFB_RESTRICT w2)
 {
   // w = A * iu + B * iv + C, evaluated in this order for every sample.
   const double a1 = ts.A1, a2 = ts.A2, c1 = ts.C1, c2 = ts.C2;
@@ -174,9 +177,8 @@ void BandBuilder::SortCells(vtkIdType n, const vtkTypeUInt32* cellOf, BandScratc
 {
   vtkTypeUInt32* order = s.Order.data();
   const float* depth = s.Depth.data();
-  auto before = [&](vtkTypeUInt32 f, vtkTypeUInt32 g) {
-    return depth[f] < depth[g] || (depth[f] == depth[g] && s.TriangleOf(f) < s.TriangleOf(g));
-  };
+  auto before = [&](vtkTypeUInt32 f, vtkTypeUInt32 g)
+  { return depth[f] < depth[g] || (depth[f] == depth[g] && s.TriangleOf(f) < s.TriangleOf(g)); };
   float last = n > 0 ? depth[order[0]] : 0.0f;
   for (vtkIdType k = 1; k < n; ++k)
   {
@@ -272,9 +274,15 @@ void BandBuilder::WriteSamples(const Band& band, const Output& out, const BandSc
   }
   for (size_t k = 0; k < out.Others.size(); ++k)
   {
-    vtkOFBAttributeInterpolator::InterpolateArray(out.OthersIn[k], out.Others[k], band.First,
+    vtkOFBAttributeInterpolator::InterpolateArray(out.OthersIn[k],
+      out.Others[k],
+      band.First,
       band.Count,
-      this->Surface.Triangles.data(), s.Tri.data(), s.W1.data(), s.W2.data(), order);
+      this->Surface.Triangles.data(),
+      s.Tri.data(),
+      s.W1.data(),
+      s.W2.data(),
+      order);
   }
 }
 

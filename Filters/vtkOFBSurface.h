@@ -16,9 +16,9 @@
 #ifndef vtkOFBSurface_h
 #define vtkOFBSurface_h
 
-#include "vtkDataArray.h"          // for Arrays
-#include "vtkSmartPointer.h"       // for members
-#include "vtkUnsignedCharArray.h"  // for Colors
+#include "vtkDataArray.h"         // for Arrays
+#include "vtkSmartPointer.h"      // for members
+#include "vtkUnsignedCharArray.h" // for Colors
 
 #include <vector> // for members
 

@@ -35,8 +35,9 @@ int vtkOFBToPolyData::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBToPolyData::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkOFBToPolyData::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   vtkOFB* ofb = vtkOFB::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
@@ -51,7 +52,9 @@ int vtkOFBToPolyData::RequestData(
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(n);
   double* x = static_cast<double*>(points->GetVoidPointer(0));
-  vtkSMPTools::For(0, n, 16384,
+  vtkSMPTools::For(0,
+    n,
+    16384,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
@@ -70,7 +73,9 @@ int vtkOFBToPolyData::RequestData(
     connectivity->SetNumberOfValues(n);
     vtkIdType* o = offsets->GetPointer(0);
     vtkIdType* c = connectivity->GetPointer(0);
-    vtkSMPTools::For(0, n + 1, 65536,
+    vtkSMPTools::For(0,
+      n + 1,
+      65536,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)

@@ -49,11 +49,11 @@ struct vtkOFBTriangleRaster
   // Read by the sample pass: barycentrics, depths and the triangle.
   // w1 = A1*iu + B1*iv + C1, w2 = A2*iu + B2*iv + C2
   double A1, B1, C1, A2, B2, C2;
-  double D0, D1, D2;      // depths of the vertices (world units from the grid plane)
-  vtkTypeUInt32 Ids[3];   // point ids of the vertices (beside the plane: no other lookup)
-  vtkTypeUInt32 Tri;      // index of the triangle in the surface
-  int8_t Axis;            // grid, or -1 when the triangle covers no cell centre
-  bool MayCancel;         // its point normals may cancel (set by the sampler, not by Setup)
+  double D0, D1, D2;    // depths of the vertices (world units from the grid plane)
+  vtkTypeUInt32 Ids[3]; // point ids of the vertices (beside the plane: no other lookup)
+  vtkTypeUInt32 Tri;    // index of the triangle in the surface
+  int8_t Axis;          // grid, or -1 when the triangle covers no cell centre
+  bool MayCancel;       // its point normals may cancel (set by the sampler, not by Setup)
 
   /// The point ids of the vertices, as the attribute interpolator takes them.
   void GetPointIds(vtkIdType ids[3]) const
@@ -69,10 +69,7 @@ struct vtkOFBTriangleRaster
   {
     return -static_cast<int64_t>(this->DY[i]) * (int64_t(1) << SubBits);
   }
-  int64_t StepV(int i) const
-  {
-    return static_cast<int64_t>(this->DX[i]) * (int64_t(1) << SubBits);
-  }
+  int64_t StepV(int i) const { return static_cast<int64_t>(this->DX[i]) * (int64_t(1) << SubBits); }
   ///@}
 
   /**
@@ -80,7 +77,10 @@ struct vtkOFBTriangleRaster
    * (twice its area, by its winding; copied to `normal` when given); `front`
    * tells whether n points against that axis (n[a] < 0).
    */
-  static int DominantAxis(const double* p0, const double* p1, const double* p2, bool& front,
+  static int DominantAxis(const double* p0,
+    const double* p1,
+    const double* p2,
+    bool& front,
     double* normal = nullptr)
   {
     double e1[3], e2[3];
@@ -89,8 +89,9 @@ struct vtkOFBTriangleRaster
       e1[k] = p1[k] - p0[k];
       e2[k] = p2[k] - p0[k];
     }
-    const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-      e1[0] * e2[1] - e1[1] * e2[0] };
+    const double n[3] = {
+      e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]
+    };
     int a = 0;
     if (std::fabs(n[1]) > std::fabs(n[a]))
     {

@@ -310,7 +310,7 @@ private:
   vtkSmartPointer<vtkPolyData> Triangles;
   std::vector<glm::dvec3> Points;
   std::vector<glm::dvec3> Vectors;
-  std::vector<vtkIdType> Corners;            // 3 point ids per triangle
+  std::vector<vtkIdType> Corners;   // 3 point ids per triangle
   std::vector<vtkIdType> Canonical; // per point, the smallest id at its position (adjacency)
   std::vector<vtkOFBWalkerTriangle> Records; // what a walk reads
   std::vector<vtkOFBWalkerTurn> Turns;       // the turns across the edges

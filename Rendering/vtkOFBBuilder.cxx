@@ -53,8 +53,9 @@ bool vtkOFBBuilder::IsSupported(vtkRenderWindow* renWin)
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBBuilder::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkOFBBuilder::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   this->LastBackend = Auto;
   vtkSmartPointer<vtkRenderWindow> ownWindow;
@@ -108,8 +109,8 @@ vtkOpenGLRenderWindow* vtkOFBBuilder::FindOpenGLWindow(vtkSmartPointer<vtkRender
   }
   if (!useGL && this->Backend == OpenGL)
   {
-    vtkWarningMacro("The OpenGL backend cannot be used (" << why
-                                                          << "); building on the CPU instead.");
+    vtkWarningMacro(
+      "The OpenGL backend cannot be used (" << why << "); building on the CPU instead.");
   }
   return useGL ? window : nullptr;
 }

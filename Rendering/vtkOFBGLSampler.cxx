@@ -22,8 +22,8 @@
 
 namespace
 {
-constexpr GLuint BlockSize = 2048;    // counts per scan block (256 invocations x 8)
-constexpr GLuint MaxGroups = 65535;   // work groups per dispatch (the GL minimum)
+constexpr GLuint BlockSize = 2048;  // counts per scan block (256 invocations x 8)
+constexpr GLuint MaxGroups = 65535; // work groups per dispatch (the GL minimum)
 
 /// The source with its //VTK::System::Dec marker replaced by a version and defines.
 std::string Source(const char* body, const std::string& defines)
@@ -211,7 +211,10 @@ private:
 class GLBuild
 {
 public:
-  GLBuild(const vtkOFBSurface& surface, vtkOFB* output, GLint side, vtkOpenGLState* state,
+  GLBuild(const vtkOFBSurface& surface,
+    vtkOFB* output,
+    GLint side,
+    vtkOpenGLState* state,
     std::string& error)
     : Surface(surface)
     , Output(output)
@@ -236,10 +239,11 @@ public:
     {
       return false;
     }
-    this->FillProgram = this->GL.Compile(
-      { { GL_VERTEX_SHADER, vertex }, { GL_GEOMETRY_SHADER, geometry },
-        { GL_FRAGMENT_SHADER, Source(vtkOFBBuildFS, "#define FILL 1\n") } },
-      this->Error);
+    this->FillProgram =
+      this->GL.Compile({ { GL_VERTEX_SHADER, vertex },
+                         { GL_GEOMETRY_SHADER, geometry },
+                         { GL_FRAGMENT_SHADER, Source(vtkOFBBuildFS, "#define FILL 1\n") } },
+        this->Error);
     if (!this->FillProgram)
     {
       return false;
@@ -398,8 +402,9 @@ public:
   }
 
   /// The offsets and depths into the output, triangles and barycentrics for interpolation.
-  bool ReadBack(
-    vtkIdType n, std::vector<vtkTypeUInt32>& triangles, std::vector<float>& barycentrics)
+  bool ReadBack(vtkIdType n,
+    std::vector<vtkTypeUInt32>& triangles,
+    std::vector<float>& barycentrics)
   {
     if (!this->Output->AllocateSamples(n))
     {
@@ -408,7 +413,8 @@ public:
     }
     triangles.resize(n);
     barycentrics.resize(2 * n);
-    Download(this->Offsets, (this->NumberOfCells + 1) * sizeof(GLuint),
+    Download(this->Offsets,
+      (this->NumberOfCells + 1) * sizeof(GLuint),
       this->Output->GetCellOffsets()->GetPointer(0));
     Download(this->Depths, n * sizeof(float), this->Output->GetDepths()->GetPointer(0));
     Download(this->Triangles, n * sizeof(GLuint), triangles.data());
@@ -486,7 +492,6 @@ GLint ViewportSide(const vtkIdType dims[3], std::string& error)
 }
 }
 
-
 vtkStandardNewMacro(vtkOFBGLSampler);
 
 //------------------------------------------------------------------------------
@@ -506,13 +511,13 @@ void vtkOFBGLSampler::SetRenderWindow(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-double vtkOFBGLSampler::EstimateWorkBytes(
-  vtkIdType points, vtkIdType triangles, double samples) const
+double vtkOFBGLSampler::EstimateWorkBytes(vtkIdType points,
+  vtkIdType triangles,
+  double samples) const
 {
   // On the host: the points in cell units (doubles), the 32-bit indices, and the
   // interleaved barycentrics read back beside the two arrays interpolation takes.
-  return 24.0 * static_cast<double>(points) + 12.0 * static_cast<double>(triangles) +
-    8.0 * samples;
+  return 24.0 * static_cast<double>(points) + 12.0 * static_cast<double>(triangles) + 8.0 * samples;
 }
 
 //------------------------------------------------------------------------------
@@ -627,8 +632,10 @@ bool vtkOFBGLSampler::IsSoftwareRenderer(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBGLSampler::Rasterize(vtkOpenGLRenderWindow* window, Job& job,
-  std::vector<vtkTypeUInt32>& triangles, std::vector<float>& barycentrics)
+bool vtkOFBGLSampler::Rasterize(vtkOpenGLRenderWindow* window,
+  Job& job,
+  std::vector<vtkTypeUInt32>& triangles,
+  std::vector<float>& barycentrics)
 {
   if (!vtkOFBGLSampler::IsSupported(window, job.Error))
   {

@@ -76,7 +76,9 @@ private:
    * allocation); the memory of the samples is checked against `job`'s limit once
    * their number is known.
    */
-  bool Rasterize(vtkOpenGLRenderWindow* window, Job& job, std::vector<vtkTypeUInt32>& triangles,
+  bool Rasterize(vtkOpenGLRenderWindow* window,
+    Job& job,
+    std::vector<vtkTypeUInt32>& triangles,
     std::vector<float>& barycentrics);
 
   vtkWeakPointer<vtkOpenGLRenderWindow> RenderWindow;

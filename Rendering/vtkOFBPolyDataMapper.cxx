@@ -208,7 +208,8 @@ bool vtkOFBPolyDataMapper::HasTranslucentColors(vtkOFB* ofb)
   const vtkIdType n = std::min(colors->GetNumberOfTuples(), ofb->GetNumberOfSamples());
   const unsigned char* rgba = colors->GetPointer(0);
   // First sample of [first, last) with alpha below 255, or -1.
-  auto findTranslucent = [rgba](vtkIdType first, vtkIdType last) -> vtkIdType {
+  auto findTranslucent = [rgba](vtkIdType first, vtkIdType last) -> vtkIdType
+  {
     for (vtkIdType i = first; i < last; ++i)
     {
       if (rgba[4 * i + 3] != 255)
@@ -379,8 +380,7 @@ bool vtkOFBPolyDataMapper::CheckOFB(vtkOFB* ofb)
 bool vtkOFBPolyDataMapper::PrepareContext(vtkRenderer* ren)
 {
   std::string why;
-  if (!this->Storage->SetContext(
-        vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), why))
+  if (!this->Storage->SetContext(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), why))
   {
     this->WarnOnce(
       "Shader storage buffers are unavailable (" + why + "): rendering without OFB colours.");
@@ -556,27 +556,31 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPolyDataMapper::GetNeedToRebuildShaders(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+bool vtkOFBPolyDataMapper::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO,
+  vtkRenderer* ren,
+  vtkActor* act)
 {
   const bool rebuild = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
   return rebuild || cellBO.ShaderSourceTime < this->ShaderKeyTime;
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::ReplaceShaderPositionVC(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+void vtkOFBPolyDataMapper::ReplaceShaderPositionVC(std::map<vtkShader::Type, vtkShader*> shaders,
+  vtkRenderer* ren,
+  vtkActor* act)
 {
   if (this->OFBActive)
   {
     // Vertex shader: the position in level-0 OFB cells, for the fragment shader's lookup.
     std::string vs = shaders[vtkShader::Vertex]->GetSource();
-    vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Dec",
+    vtkShaderProgram::Substitute(vs,
+      "//VTK::PositionVC::Dec",
       "//VTK::PositionVC::Dec\n"
       "uniform vec3 ofbPositionScale;\n"
       "uniform vec3 ofbPositionShift;\n"
       "out vec3 ofbGridVSOutput;\n");
-    vtkShaderProgram::Substitute(vs, "//VTK::PositionVC::Impl",
+    vtkShaderProgram::Substitute(vs,
+      "//VTK::PositionVC::Impl",
       "//VTK::PositionVC::Impl\n"
       "  ofbGridVSOutput = vertexMC.xyz * ofbPositionScale + ofbPositionShift;\n");
     shaders[vtkShader::Vertex]->SetSource(vs);
@@ -585,11 +589,13 @@ void vtkOFBPolyDataMapper::ReplaceShaderPositionVC(
     std::string gs = shaders[vtkShader::Geometry]->GetSource();
     if (!gs.empty())
     {
-      vtkShaderProgram::Substitute(gs, "//VTK::PositionVC::Dec",
+      vtkShaderProgram::Substitute(gs,
+        "//VTK::PositionVC::Dec",
         "//VTK::PositionVC::Dec\n"
         "in vec3 ofbGridVSOutput[];\n"
         "out vec3 ofbGridGSOutput;\n");
-      vtkShaderProgram::Substitute(gs, "//VTK::PositionVC::Impl",
+      vtkShaderProgram::Substitute(gs,
+        "//VTK::PositionVC::Impl",
         "//VTK::PositionVC::Impl\n"
         "    ofbGridGSOutput = ofbGridVSOutput[i];\n");
       shaders[vtkShader::Geometry]->SetSource(gs);
@@ -599,8 +605,9 @@ void vtkOFBPolyDataMapper::ReplaceShaderPositionVC(
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::ReplaceShaderColor(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+void vtkOFBPolyDataMapper::ReplaceShaderColor(std::map<vtkShader::Type, vtkShader*> shaders,
+  vtkRenderer* ren,
+  vtkActor* act)
 {
   if (this->OFBActive)
   {
@@ -610,7 +617,8 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(
     // gl_HelperInvocation (ARB_ES3_1_compatibility, used where the context offers it) keeps
     // helper lanes out of the lookup fallbacks.
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
-    vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
+    vtkShaderProgram::Substitute(fs,
+      "//VTK::System::Dec",
       "//VTK::System::Dec\n"
       "#extension GL_ARB_shader_storage_buffer_object : require\n"
       "#extension GL_ARB_shader_bit_encoding : enable\n"
@@ -633,13 +641,15 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(
       }
     }
     vtkShaderProgram::Substitute(fs, "//VTK::Color::Dec", defines.str() + vtkOFBLookupFS);
-    vtkShaderProgram::Substitute(fs, "//VTK::UniformFlow::Impl",
+    vtkShaderProgram::Substitute(fs,
+      "//VTK::UniformFlow::Impl",
       "//VTK::UniformFlow::Impl\n"
       "  vec3 ofbDx = dFdx(ofbGridVSOutput);\n"
       "  vec3 ofbDy = dFdy(ofbGridVSOutput);\n"
       "  vec3 ofbFaceNormal = cross(ofbDx, ofbDy);\n"
       "  float ofbLod = log2(max(max(length(ofbDx), length(ofbDy)), 1.0e-6));\n");
-    vtkShaderProgram::Substitute(fs, "//VTK::Color::Impl",
+    vtkShaderProgram::Substitute(fs,
+      "//VTK::Color::Impl",
       "//VTK::Color::Impl\n"
       "  ofbAccum ofbAcc = ofbLookup(ofbGridVSOutput, ofbFaceNormal, ofbLod);\n"
       "  if (ofbAcc.weight > 0.0)\n"
@@ -655,8 +665,9 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::ReplaceShaderNormal(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+void vtkOFBPolyDataMapper::ReplaceShaderNormal(std::map<vtkShader::Type, vtkShader*> shaders,
+  vtkRenderer* ren,
+  vtkActor* act)
 {
   this->Superclass::ReplaceShaderNormal(shaders, ren, act);
   if (!this->OFBActive || !this->UseNormals)
@@ -668,7 +679,8 @@ void vtkOFBPolyDataMapper::ReplaceShaderNormal(
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   if (fs.find("normalVCVSOutput") != std::string::npos)
   {
-    vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl",
+    vtkShaderProgram::Substitute(fs,
+      "//VTK::Light::Impl",
       "#ifdef OFB_USE_NORMALS\n"
       "  if (ofbAcc.weight > 0.0 && dot(ofbAcc.normal, ofbAcc.normal) > 0.0)\n"
       "  {\n"
@@ -682,8 +694,9 @@ void vtkOFBPolyDataMapper::ReplaceShaderNormal(
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::SetMapperShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+void vtkOFBPolyDataMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO,
+  vtkRenderer* ren,
+  vtkActor* act)
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   vtkShaderProgram* program = cellBO.Program;
@@ -747,8 +760,9 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::SetNormalMatrix(
-  vtkShaderProgram* program, vtkRenderer* ren, vtkActor* act)
+void vtkOFBPolyDataMapper::SetNormalMatrix(vtkShaderProgram* program,
+  vtkRenderer* ren,
+  vtkActor* act)
 {
   // Model to view normals, as vtkOpenGLPolyDataMapper computes "normalMatrix".
   vtkOpenGLCamera* cam = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());

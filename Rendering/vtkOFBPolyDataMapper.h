@@ -374,12 +374,15 @@ protected:
    * vtkOpenGLPolyDataMapper's per-aspect shader hooks: the position in OFB cells
    * (PositionVC), the lookup and the colour it gives (Color), the painted normals (Normal).
    */
-  void ReplaceShaderPositionVC(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderColor(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderNormal(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderPositionVC(std::map<vtkShader::Type, vtkShader*> shaders,
+    vtkRenderer* ren,
+    vtkActor* act) override;
+  void ReplaceShaderColor(std::map<vtkShader::Type, vtkShader*> shaders,
+    vtkRenderer* ren,
+    vtkActor* act) override;
+  void ReplaceShaderNormal(std::map<vtkShader::Type, vtkShader*> shaders,
+    vtkRenderer* ren,
+    vtkActor* act) override;
   ///@}
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;

@@ -112,8 +112,11 @@ bool vtkOFBShaderStorage::SetContext(vtkOpenGLRenderWindow* window, std::string&
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBShaderStorage::UpdateLevels(
-  vtkOFB* ofb, vtkPolyData* surface, bool mipmapped, int maximumLevels, int minimumResolution)
+bool vtkOFBShaderStorage::UpdateLevels(vtkOFB* ofb,
+  vtkPolyData* surface,
+  bool mipmapped,
+  int maximumLevels,
+  int minimumResolution)
 {
   this->Levels.assign(1, ofb);
   if (!mipmapped)
@@ -187,8 +190,7 @@ vtkIdType vtkOFBShaderStorage::UploadChanges(const Selection& selection, std::st
 }
 
 //------------------------------------------------------------------------------
-unsigned int vtkOFBShaderStorage::UploadChangedArrays(
-  const Selection& selection, vtkIdType& count)
+unsigned int vtkOFBShaderStorage::UploadChangedArrays(const Selection& selection, vtkIdType& count)
 {
   vtkOFB* ofb = this->Levels[0];
   const vtkIdType n = ofb->GetNumberOfSamples();
@@ -198,12 +200,12 @@ unsigned int vtkOFBShaderStorage::UploadChangedArrays(
   unsigned int whole = 0;
   for (int k = 0; k < 3; ++k)
   {
-    vtkDataArray* array = !wanted[k] ? nullptr
-      : GetArray(ofb, ids[k] == Samples ? (selection.Colors ? Colors : Scalars) : ids[k],
-          selection);
+    vtkDataArray* array = !wanted[k]
+      ? nullptr
+      : GetArray(
+          ofb, ids[k] == Samples ? (selection.Colors ? Colors : Scalars) : ids[k], selection);
     if (!array ||
-      (array == this->UploadedArrays[ids[k]] &&
-        array->GetMTime() <= this->UploadTime.GetMTime()))
+      (array == this->UploadedArrays[ids[k]] && array->GetMTime() <= this->UploadTime.GetMTime()))
     {
       continue;
     }
@@ -371,8 +373,9 @@ bool vtkOFBShaderStorage::IsSupported(vtkOpenGLRenderWindow* window, std::string
 //------------------------------------------------------------------------------
 const char* vtkOFBShaderStorage::GetBlockName(int id)
 {
-  static const char* names[NumberOfBuffers] = { "ofbOffsetsBlock", "ofbSamplesBlock",
-    "ofbIntensityBlock", "ofbNormalsBlock", "ofbLUTBlock" };
+  static const char* names[NumberOfBuffers] = {
+    "ofbOffsetsBlock", "ofbSamplesBlock", "ofbIntensityBlock", "ofbNormalsBlock", "ofbLUTBlock"
+  };
   return (id >= 0 && id < NumberOfBuffers) ? names[id] : "";
 }
 
@@ -468,15 +471,18 @@ void vtkOFBShaderStorage::Upload(int id, size_t offset, size_t bytes, const void
     return;
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handles[id]);
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
-    static_cast<GLsizeiptr>(bytes), data);
+  glBufferSubData(
+    GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
   this->UploadedBytes += bytes;
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBShaderStorage::UploadArray(
-  int id, vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base)
+void vtkOFBShaderStorage::UploadArray(int id,
+  vtkDataArray* array,
+  vtkIdType first,
+  vtkIdType last,
+  vtkIdType base)
 {
   if (!array || first >= last)
   {
@@ -538,8 +544,12 @@ void vtkOFBShaderStorage::UploadIntensity(vtkDataArray* array,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBShaderStorage::UploadSamples(vtkOFB* ofb, vtkDataArray* attribute,
-  const Selection& selection, vtkIdType first, vtkIdType last, vtkIdType base)
+void vtkOFBShaderStorage::UploadSamples(vtkOFB* ofb,
+  vtkDataArray* attribute,
+  const Selection& selection,
+  vtkIdType first,
+  vtkIdType last,
+  vtkIdType base)
 {
   if (first >= last)
   {
@@ -579,13 +589,16 @@ void vtkOFBShaderStorage::UploadSamples(vtkOFB* ofb, vtkDataArray* attribute,
       std::memcpy(&dst[2 * i + 1], &value, 4);
     }
   }
-  this->Upload(Samples, static_cast<size_t>(base + first) * BytesPerSample(Samples),
-    n * BytesPerSample(Samples), dst);
+  this->Upload(Samples,
+    static_cast<size_t>(base + first) * BytesPerSample(Samples),
+    n * BytesPerSample(Samples),
+    dst);
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBShaderStorage::UploadAll(
-  const std::vector<vtkOFB*>& levels, const Selection& selection, std::string& error)
+vtkIdType vtkOFBShaderStorage::UploadAll(const std::vector<vtkOFB*>& levels,
+  const Selection& selection,
+  std::string& error)
 {
   this->LevelCellBase.clear();
   this->LevelSampleBase.clear();
@@ -649,12 +662,16 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
       most = std::max(most, offsets[c + 1] - offsets[c]);
     }
     this->MaximumCellSamples = std::max(this->MaximumCellSamples, static_cast<int>(most));
-    this->Upload(Offsets, cellOffset * 4, static_cast<size_t>(nc) * 4,
-      ofb->GetCellOffsets()->GetPointer(0));
+    this->Upload(
+      Offsets, cellOffset * 4, static_cast<size_t>(nc) * 4, ofb->GetCellOffsets()->GetPointer(0));
     cellOffset += static_cast<size_t>(nc);
     const vtkIdType n = ofb->GetNumberOfSamples();
-    this->UploadSamples(ofb, GetArray(ofb, selection.Colors ? Colors : Scalars, selection),
-      selection, 0, n, this->LevelSampleBase[l]);
+    this->UploadSamples(ofb,
+      GetArray(ofb, selection.Colors ? Colors : Scalars, selection),
+      selection,
+      0,
+      n,
+      this->LevelSampleBase[l]);
     for (int k = 0; k < 2; ++k)
     {
       if (wanted[k])
@@ -669,8 +686,11 @@ vtkIdType vtkOFBShaderStorage::UploadAll(
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels, int level,
-  const Selection& selection, vtkIdTypeArray* ranges, unsigned int buffers)
+vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels,
+  int level,
+  const Selection& selection,
+  vtkIdTypeArray* ranges,
+  unsigned int buffers)
 {
   if (!(buffers & AllArrays))
   {

@@ -124,8 +124,11 @@ public:
    * UpdateLookupTable: sample `lut` over `range` into the LUT buffer when either changed.
    */
   bool SetContext(vtkOpenGLRenderWindow* window, std::string& why);
-  bool UpdateLevels(
-    vtkOFB* ofb, vtkPolyData* surface, bool mipmapped, int maximumLevels, int minimumResolution);
+  bool UpdateLevels(vtkOFB* ofb,
+    vtkPolyData* surface,
+    bool mipmapped,
+    int maximumLevels,
+    int minimumResolution);
   vtkIdType UploadChanges(const Selection& selection, std::string& error);
   void UpdateLookupTable(vtkScalarsToColors* lut, const double range[2]);
   ///@}
@@ -145,15 +148,19 @@ public:
    * selection.ScalarName.
    * Returns the number of samples uploaded, or -1 on failure (`error` says why).
    */
-  vtkIdType UploadAll(const std::vector<vtkOFB*>& levels, const Selection& selection,
+  vtkIdType UploadAll(const std::vector<vtkOFB*>& levels,
+    const Selection& selection,
     std::string& error);
 
   /**
    * Upload the selected arrays of level `level` over the sample ranges `ranges`
    * (2 components: first, last) only. Returns the number of samples uploaded.
    */
-  vtkIdType UploadRanges(const std::vector<vtkOFB*>& levels, int level,
-    const Selection& selection, vtkIdTypeArray* ranges, unsigned int buffers = AllArrays);
+  vtkIdType UploadRanges(const std::vector<vtkOFB*>& levels,
+    int level,
+    const Selection& selection,
+    vtkIdTypeArray* ranges,
+    unsigned int buffers = AllArrays);
 
   /**
    * Sample `lut` at LUTSize equal steps over [range[0], range[1]] into the LUT buffer.
@@ -214,8 +221,12 @@ private:
   void Upload(int id, size_t offset, size_t bytes, const void* data);
   void UploadArray(int id, vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base);
   void UploadIntensity(vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base);
-  void UploadSamples(vtkOFB* ofb, vtkDataArray* attribute, const Selection& selection,
-    vtkIdType first, vtkIdType last, vtkIdType base);
+  void UploadSamples(vtkOFB* ofb,
+    vtkDataArray* attribute,
+    const Selection& selection,
+    vtkIdType first,
+    vtkIdType last,
+    vtkIdType base);
 
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   vtkWeakPointer<vtkOpenGLRenderWindow> CheckedWindow;

@@ -74,8 +74,8 @@ struct App
   vtkSmartPointer<vtkPolyData> Mesh; // the surface drawn
   std::string ExportPath;            // key x
   std::string ExportMessage;         // what the last export said
-  int ColorMode = 0; // 0 map, 1 blend, 2 LIC alone
-  int Frame = 0;     // animation frame, 0-9
+  int ColorMode = 0;                 // 0 map, 1 blend, 2 LIC alone
+  int Frame = 0;                     // animation frame, 0-9
   bool Animating = false;
   bool Deferred = false; // --keys: apply the settings, compute and draw once at the end
 
@@ -111,8 +111,7 @@ struct App
          << "d display: "
          << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode())
          << ", x export to " << this->ExportPath;
-    if (this->Animating &&
-      this->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::NearestMipmapped)
+    if (this->Animating && this->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::NearestMipmapped)
     {
       // The first loop filters each phase's LIC down the pyramid (0.3-2 s a frame), the
       // next ones take the levels kept by the pyramid.
@@ -241,7 +240,6 @@ public:
   }
 };
 vtkStandardNewMacro(KeyStyle);
-
 
 /// The field (rotation about a tilted axis through the centre) and its speed.
 void AddField(vtkPolyData* mesh)

@@ -21,9 +21,9 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
-#include "vtkOFBReadMesh.h" // Testing/Cxx: OBJ or PLY, shared with the tests
 #include "vtkOFBParticleAdvector.h"
 #include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBReadMesh.h" // Testing/Cxx: OBJ or PLY, shared with the tests
 #include "vtkOFBSampler.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
@@ -136,7 +136,6 @@ bool Parse(int argc, char* argv[], Options& o)
   }
   return ok;
 }
-
 
 // A built-in field (the advector projects it into the tangent planes).
 bool MakeField(vtkPolyData* mesh, const std::string& kind, const double up[3])

@@ -16,9 +16,9 @@
 // samples): its millions of small allocations, once freed, would otherwise stay
 // in this process's heap in 4 KiB pages, where the next OFB's arrays would land.
 
-#include "vtkOFBReadMesh.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBReadMesh.h"
 #include "vtkOFBSampler.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -162,8 +162,10 @@ bool ParseOptions(int argc, char* argv[], Options& options)
 /// Path of a mesh given by short name, data file name or path.
 std::string MeshPath(const std::string& name)
 {
-  const char* known[][2] = { { "bunny", "stanford-bunny.obj" }, { "horse", "horse.ply" },
-    { "fandisk", "fandisk.obj" }, { "rocker-arm", "rocker-arm.obj" },
+  const char* known[][2] = { { "bunny", "stanford-bunny.obj" },
+    { "horse", "horse.ply" },
+    { "fandisk", "fandisk.obj" },
+    { "rocker-arm", "rocker-arm.obj" },
     { "teapot", "teapot.obj" } };
   for (const auto& k : known)
   {
@@ -190,7 +192,7 @@ struct Bandwidth
   double ArrayBytes = 0.0;
 };
 
-template <typename F>
+template<typename F>
 double RunOnThreads(int nThreads, size_t n, F&& f)
 {
   const double start = Now();
@@ -216,7 +218,8 @@ Bandwidth MeasureBandwidth(int nThreads, size_t n, int repetitions)
   double* A = a.get();
   double* B = b.get();
   double* C = c.get();
-  RunOnThreads(nThreads, n,
+  RunOnThreads(nThreads,
+    n,
     [=](size_t begin, size_t end)
     {
       for (size_t i = begin; i < end; ++i)
@@ -229,9 +232,11 @@ Bandwidth MeasureBandwidth(int nThreads, size_t n, int repetitions)
   std::vector<double> copy, triad;
   for (int r = 0; r < repetitions; ++r)
   {
-    copy.push_back(RunOnThreads(nThreads, n,
+    copy.push_back(RunOnThreads(nThreads,
+      n,
       [=](size_t begin, size_t end) { std::memcpy(C + begin, A + begin, (end - begin) * 8); }));
-    triad.push_back(RunOnThreads(nThreads, n,
+    triad.push_back(RunOnThreads(nThreads,
+      n,
       [=](size_t begin, size_t end)
       {
         for (size_t i = begin; i < end; ++i)
@@ -268,7 +273,8 @@ SamplePayload ExtractSamples(vtkOFB* ofb)
   p.Colors.resize(n);
   vtkDataArray* normals = ofb->GetSampleData()->GetNormals();
   auto colors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetScalars());
-  vtkSMPTools::For(0, n,
+  vtkSMPTools::For(0,
+    n,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
@@ -312,8 +318,7 @@ struct VDBGrids
   openvdb::Int32Grid::Ptr Colors;
 };
 
-VDBGrids FillVDB(const SamplePayload& p, openvdb::math::Transform::Ptr xform, int part,
-  int nParts)
+VDBGrids FillVDB(const SamplePayload& p, openvdb::math::Transform::Ptr xform, int part, int nParts)
 {
   VDBGrids g;
   g.Normals = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.0f));
@@ -406,8 +411,13 @@ int RunPeer(const std::string& mesh, int resolution, int repetitions, int nThrea
     }
   }
   const Timing one = Summarize(t1), many = Summarize(tn);
-  std::printf("peer %.9g %.9g %.9g %.9g %.17g %llu\n", one.Best, one.Median, many.Best,
-    many.Median, result.Bytes, static_cast<unsigned long long>(result.Voxels));
+  std::printf("peer %.9g %.9g %.9g %.9g %.17g %llu\n",
+    one.Best,
+    one.Median,
+    many.Best,
+    many.Median,
+    result.Bytes,
+    static_cast<unsigned long long>(result.Voxels));
   return 0;
 }
 #endif
@@ -456,8 +466,14 @@ bool RunPeerProcess(const std::string& self, int repetitions, int nThreads, Row&
   while (std::fgets(line, sizeof(line), pipe))
   {
     unsigned long long voxels = 0;
-    if (std::sscanf(line, "peer %lf %lf %lf %lf %lf %llu", &row.VDB1.Best, &row.VDB1.Median,
-          &row.VDBN.Best, &row.VDBN.Median, &row.VDBBytes, &voxels) == 6)
+    if (std::sscanf(line,
+          "peer %lf %lf %lf %lf %lf %llu",
+          &row.VDB1.Best,
+          &row.VDB1.Median,
+          &row.VDBN.Best,
+          &row.VDBN.Median,
+          &row.VDBBytes,
+          &voxels) == 6)
     {
       row.VDBVoxels = voxels;
       found = true;
@@ -505,8 +521,11 @@ int main(int argc, char* argv[])
 #endif
   std::printf("ofbBenchmark: VTK %s, SMP backend %s, %d threads (hardware: %u), %d "
               "repetitions after one warm-up\n",
-    vtkVersion::GetVTKVersion(), vtkSMPTools::GetBackend(), nThreads,
-    std::thread::hardware_concurrency(), options.Repetitions);
+    vtkVersion::GetVTKVersion(),
+    vtkSMPTools::GetBackend(),
+    nThreads,
+    std::thread::hardware_concurrency(),
+    options.Repetitions);
 #ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
   const bool useVDB = options.OpenVDB;
   if (useVDB)
@@ -526,7 +545,10 @@ int main(int argc, char* argv[])
   const Bandwidth bw = MeasureBandwidth(nThreads, size_t(16) << 20, 5);
   std::printf("Memory bandwidth (STREAM-like, %d threads, 3 x %.0f MB arrays, best of 5): "
               "copy %.2f GB/s, triad %.2f GB/s\n\n",
-    nThreads, bw.ArrayBytes / 1e6, bw.Copy / 1e9, bw.Triad / 1e9);
+    nThreads,
+    bw.ArrayBytes / 1e6,
+    bw.Copy / 1e9,
+    bw.Triad / 1e9);
   std::fflush(stdout);
 
   std::vector<Row> rows;
@@ -539,9 +561,11 @@ int main(int argc, char* argv[])
       std::fprintf(stderr, "cannot read a mesh with polygons from '%s'\n", path.c_str());
       return 1;
     }
-    std::printf("%s: %lld points, %lld polygons (%s)\n", name.c_str(),
+    std::printf("%s: %lld points, %lld polygons (%s)\n",
+      name.c_str(),
       static_cast<long long>(mesh->GetNumberOfPoints()),
-      static_cast<long long>(mesh->GetNumberOfPolys()), path.c_str());
+      static_cast<long long>(mesh->GetNumberOfPolys()),
+      path.c_str());
     std::fflush(stdout);
     for (const int resolution : options.Resolutions)
     {
@@ -593,29 +617,64 @@ int main(int argc, char* argv[])
       }
 #endif
       std::printf("  resolution %5d: %lld samples, OFB best %.1f ms, median %.1f ms%s\n",
-        resolution, static_cast<long long>(row.Samples), 1e3 * row.OFB.Best,
-        1e3 * row.OFB.Median, row.HasVDB ? ", OpenVDB done" : "");
+        resolution,
+        static_cast<long long>(row.Samples),
+        1e3 * row.OFB.Best,
+        1e3 * row.OFB.Median,
+        row.HasVDB ? ", OpenVDB done" : "");
       std::fflush(stdout);
       rows.push_back(row);
     }
   }
 
   // Table 1: the OFB build.
-  std::printf("\nOFB build (vtkOFBSampler::Update, CPU backend, %d threads); MB = 10^6 bytes\n",
-    nThreads);
-  std::printf("%-8s %5s %11s %9s %9s %10s %10s %9s %10s %7s %8s %9s %7s\n", "mesh", "res",
-    "samples", "best ms", "med ms", "Msmp/s", "Msmp/s", "first ms", "Msmp/s", "B/smp", "MB",
-    "out GB/s", "% bw");
-  std::printf("%-8s %5s %11s %9s %9s %10s %10s %9s %10s %7s %8s %9s %7s\n", "", "", "", "", "",
-    "(best)", "(median)", "", "(first)", "", "", "(best)", "triad");
+  std::printf(
+    "\nOFB build (vtkOFBSampler::Update, CPU backend, %d threads); MB = 10^6 bytes\n", nThreads);
+  std::printf("%-8s %5s %11s %9s %9s %10s %10s %9s %10s %7s %8s %9s %7s\n",
+    "mesh",
+    "res",
+    "samples",
+    "best ms",
+    "med ms",
+    "Msmp/s",
+    "Msmp/s",
+    "first ms",
+    "Msmp/s",
+    "B/smp",
+    "MB",
+    "out GB/s",
+    "% bw");
+  std::printf("%-8s %5s %11s %9s %9s %10s %10s %9s %10s %7s %8s %9s %7s\n",
+    "",
+    "",
+    "",
+    "",
+    "",
+    "(best)",
+    "(median)",
+    "",
+    "(first)",
+    "",
+    "",
+    "(best)",
+    "triad");
   for (const Row& r : rows)
   {
     const double rate = r.OFBBytes / r.OFB.Best;
     std::printf(
       "%-8s %5d %11lld %9.1f %9.1f %10.1f %10.1f %9.1f %10.1f %7.2f %8.1f %9.2f %6.1f%%\n",
-      r.Mesh.c_str(), r.Resolution, static_cast<long long>(r.Samples), 1e3 * r.OFB.Best,
-      1e3 * r.OFB.Median, r.Samples / r.OFB.Best / 1e6, r.Samples / r.OFB.Median / 1e6,
-      1e3 * r.First, r.Samples / r.First / 1e6, r.BytesPerSample, r.OFBBytes / 1e6, rate / 1e9,
+      r.Mesh.c_str(),
+      r.Resolution,
+      static_cast<long long>(r.Samples),
+      1e3 * r.OFB.Best,
+      1e3 * r.OFB.Median,
+      r.Samples / r.OFB.Best / 1e6,
+      r.Samples / r.OFB.Median / 1e6,
+      1e3 * r.First,
+      r.Samples / r.First / 1e6,
+      r.BytesPerSample,
+      r.OFBBytes / 1e6,
+      rate / 1e9,
       100.0 * rate / bw.Triad);
   }
   std::printf("best, median: rebuilds (Modified + Update), which write over the previous "
@@ -629,15 +688,31 @@ int main(int argc, char* argv[])
   {
     std::printf("\nOpenVDB storing the same samples (normals + RGBA); time = best, ratio = "
                 "OFB / OpenVDB\n");
-    std::printf("%-8s %5s %11s %11s %9s %9s %9s %8s %8s %8s %8s\n", "mesh", "res", "samples",
-      "vdb voxels", "OFB ms", "VDB1 ms", ("VDB" + std::to_string(nThreads) + " ms").c_str(), "OFB MB",
-      "VDB MB", "t/VDB1", "mem");
+    std::printf("%-8s %5s %11s %11s %9s %9s %9s %8s %8s %8s %8s\n",
+      "mesh",
+      "res",
+      "samples",
+      "vdb voxels",
+      "OFB ms",
+      "VDB1 ms",
+      ("VDB" + std::to_string(nThreads) + " ms").c_str(),
+      "OFB MB",
+      "VDB MB",
+      "t/VDB1",
+      "mem");
     for (const Row& r : rows)
     {
       std::printf("%-8s %5d %11lld %11llu %9.1f %9.1f %9.1f %8.1f %8.1f %8.2f %8.2f\n",
-        r.Mesh.c_str(), r.Resolution, static_cast<long long>(r.Samples),
-        static_cast<unsigned long long>(r.VDBVoxels), 1e3 * r.OFB.Best, 1e3 * r.VDB1.Best,
-        1e3 * r.VDBN.Best, r.OFBBytes / 1e6, r.VDBBytes / 1e6, r.OFB.Best / r.VDB1.Best,
+        r.Mesh.c_str(),
+        r.Resolution,
+        static_cast<long long>(r.Samples),
+        static_cast<unsigned long long>(r.VDBVoxels),
+        1e3 * r.OFB.Best,
+        1e3 * r.VDB1.Best,
+        1e3 * r.VDBN.Best,
+        r.OFBBytes / 1e6,
+        r.VDBBytes / 1e6,
+        r.OFB.Best / r.VDB1.Best,
         r.OFBBytes / r.VDBBytes);
     }
     std::printf("VDB1: one thread; VDB%d: %d threads filling their own grids (disjoint leaf "
@@ -645,7 +720,8 @@ int main(int argc, char* argv[])
                 "OpenVDB times cover only\nthe insertion of the already computed samples; the "
                 "OFB times cover the whole build from the mesh.\nvdb voxels < samples where "
                 "two samples fall in one voxel.\n",
-      nThreads, nThreads);
+      nThreads,
+      nThreads);
   }
 
   // Goals.
@@ -658,11 +734,15 @@ int main(int argc, char* argv[])
     }
     const double rate = r.Samples / r.OFB.Best / 1e6;
     std::printf("  %-8s 2048: %.1f M samples/s (best; median %.1f) -> >= 150 M samples/s %s",
-      r.Mesh.c_str(), rate, r.Samples / r.OFB.Median / 1e6, rate >= 150.0 ? "MET" : "NOT MET");
+      r.Mesh.c_str(),
+      rate,
+      r.Samples / r.OFB.Median / 1e6,
+      rate >= 150.0 ? "MET" : "NOT MET");
     if (r.HasVDB)
     {
       const double ratio = r.OFBBytes / r.VDBBytes;
-      std::printf("; memory OFB/OpenVDB %.2f -> <= 0.5 %s", ratio, ratio <= 0.5 ? "MET" : "NOT MET");
+      std::printf(
+        "; memory OFB/OpenVDB %.2f -> <= 0.5 %s", ratio, ratio <= 0.5 ? "MET" : "NOT MET");
     }
     std::printf("\n");
   }

@@ -5,10 +5,10 @@
 // Prints, per mesh and resolution, the median build time of each backend, the
 // samples per second and the ratio OpenGL / CPU. Run it under xvfb-run on a
 // machine without a GPU (Mesa llvmpipe), or on a GPU machine with a display.
-#include "vtkOFBReadMesh.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBuilder.h"
+#include "vtkOFBReadMesh.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
@@ -90,13 +90,22 @@ int main(int argc, char* argv[])
   }
   vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
   gl->MakeCurrent();
-  std::printf("OpenGL renderer: %s (%s)\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
+  std::printf("OpenGL renderer: %s (%s)\n",
+    reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
     reinterpret_cast<const char*>(glGetString(GL_VERSION)));
-  std::printf("CPU: vtkSMPTools %s backend, %d threads\n", vtkSMPTools::GetBackend(),
+  std::printf("CPU: vtkSMPTools %s backend, %d threads\n",
+    vtkSMPTools::GetBackend(),
     vtkSMPTools::GetEstimatedNumberOfThreads());
   std::printf("Median of %d builds after a warm-up.\n\n", reps);
-  std::printf("%-20s %6s %11s %10s %10s %10s %10s %9s\n", "mesh", "res", "samples", "CPU ms",
-    "CPU MS/s", "GL ms", "GL MS/s", "GL/CPU");
+  std::printf("%-20s %6s %11s %10s %10s %10s %10s %9s\n",
+    "mesh",
+    "res",
+    "samples",
+    "CPU ms",
+    "CPU MS/s",
+    "GL ms",
+    "GL MS/s",
+    "GL/CPU");
   for (const std::string& path : meshes)
   {
     vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(path);
@@ -117,12 +126,20 @@ int main(int argc, char* argv[])
       const double ogl = Time(builder, vtkOFBBuilder::OpenGL, reps, glSamples);
       if (ogl < 0.0)
       {
-        std::printf("%-20s %6d: the OpenGL backend fell back to the CPU\n", name.c_str(), resolution);
+        std::printf(
+          "%-20s %6d: the OpenGL backend fell back to the CPU\n", name.c_str(), resolution);
         continue;
       }
-      std::printf("%-20s %6d %11lld %10.1f %10.1f %10.1f %10.1f %9.2f%s\n", name.c_str(),
-        resolution, static_cast<long long>(cpuSamples), cpu, cpuSamples / cpu / 1000.0, ogl,
-        glSamples / ogl / 1000.0, ogl / cpu, cpuSamples == glSamples ? "" : "  (counts differ)");
+      std::printf("%-20s %6d %11lld %10.1f %10.1f %10.1f %10.1f %9.2f%s\n",
+        name.c_str(),
+        resolution,
+        static_cast<long long>(cpuSamples),
+        cpu,
+        cpuSamples / cpu / 1000.0,
+        ogl,
+        glSamples / ogl / 1000.0,
+        ogl / cpu,
+        cpuSamples == glSamples ? "" : "  (counts differ)");
     }
   }
   return 0;

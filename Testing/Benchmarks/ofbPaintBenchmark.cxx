@@ -91,7 +91,7 @@ struct Options
   int Repetitions = 3;
   bool OpenVDB = true;
   bool Render = true;
-  bool FootprintsOnly = false; // only the 10,000 footprints (for profiling)
+  bool FootprintsOnly = false;                // only the 10,000 footprints (for profiling)
   int Lookup = vtkOFBPolyDataMapper::Nearest; // the stroke's display
 };
 

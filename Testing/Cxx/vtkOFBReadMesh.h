@@ -6,8 +6,8 @@
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkSmartPointer.h"
 
 #include <string>

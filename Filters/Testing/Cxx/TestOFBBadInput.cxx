@@ -17,8 +17,11 @@ using namespace vtkofbtest;
 namespace
 {
 /// Build with `resolution` and return the errors; the output must be empty on error.
-std::string BuildErrors(vtkPolyData* input, int resolution, vtkIdType limitMiB = 8192,
-  vtkIdType* samples = nullptr, std::string* warnings = nullptr)
+std::string BuildErrors(vtkPolyData* input,
+  int resolution,
+  vtkIdType limitMiB = 8192,
+  vtkIdType* samples = nullptr,
+  std::string* warnings = nullptr)
 {
   vtkNew<vtkOFBSampler> sampler;
   MessageObserver* observer = MessageObserver::New();

@@ -148,8 +148,11 @@ TEST_P(ParticlesOnMesh, StayOnSurfaceFor1000Steps)
 
 INSTANTIATE_TEST_SUITE_P(BundledMeshes,
   ParticlesOnMesh,
-  ::testing::Values(
-    "stanford-bunny.obj", "horse.ply", "fandisk.obj", "rocker-arm.obj", "teapot.obj"));
+  ::testing::Values("stanford-bunny.obj",
+    "horse.ply",
+    "fandisk.obj",
+    "rocker-arm.obj",
+    "teapot.obj"));
 
 // A field along the meridians of a torus: particles go once round the tube,
 // over the inner and the outer side, and come back where they started.

@@ -144,8 +144,8 @@ TEST(OFBPyramid, ConstantColourIsKeptAndFinePatternsAverageOut)
   {
     double x[3];
     ofb->GetSamplePosition(i, x);
-    const long k = static_cast<long>(std::floor(x[0] / s) + std::floor(x[1] / s) +
-      std::floor(x[2] / s));
+    const long k =
+      static_cast<long>(std::floor(x[0] / s) + std::floor(x[1] / s) + std::floor(x[2] / s));
     const unsigned char v = (k % 2 == 0) ? 0 : 255;
     const unsigned char c[4] = { v, v, v, 255 };
     Colors(ofb)->SetTypedTuple(i, c);

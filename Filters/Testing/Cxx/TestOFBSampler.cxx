@@ -45,8 +45,8 @@ double ExpectedSphereSamples(double r)
   for (int i = 0; i < steps; ++i)
   {
     const double x = -xmax + (i + 0.5) * (2.0 * xmax / steps);
-    const double y = std::min(std::sqrt(std::max(0.0, 1.0 - 2.0 * x * x)),
-      std::sqrt(std::max(0.0, (1.0 - x * x) / 2.0)));
+    const double y = std::min(
+      std::sqrt(std::max(0.0, 1.0 - 2.0 * x * x)), std::sqrt(std::max(0.0, (1.0 - x * x) / 2.0)));
     area += 2.0 * y * (2.0 * xmax / steps);
   }
   return 6.0 * area * r * r;
@@ -81,8 +81,8 @@ struct SurfaceSampler
   void Next(double x[3])
   {
     const double r = this->Uniform() * this->Cumulative.back();
-    const vtkIdType c =
-      std::lower_bound(this->Cumulative.begin(), this->Cumulative.end(), r) - this->Cumulative.begin();
+    const vtkIdType c = std::lower_bound(this->Cumulative.begin(), this->Cumulative.end(), r) -
+      this->Cumulative.begin();
     vtkIdType npts;
     const vtkIdType* ids;
     this->Mesh->GetCellPoints(c, npts, ids);
@@ -128,10 +128,12 @@ void ExpectIdentical(vtkOFB* a, vtkOFB* b)
   ASSERT_EQ(a->GetNumberOfSamples(), b->GetNumberOfSamples());
   ASSERT_EQ(a->GetNumberOfCells(), b->GetNumberOfCells());
   EXPECT_EQ(0,
-    std::memcmp(a->GetCellOffsets()->GetPointer(0), b->GetCellOffsets()->GetPointer(0),
+    std::memcmp(a->GetCellOffsets()->GetPointer(0),
+      b->GetCellOffsets()->GetPointer(0),
       sizeof(vtkTypeUInt32) * (a->GetNumberOfCells() + 1)));
   EXPECT_EQ(0,
-    std::memcmp(a->GetDepths()->GetPointer(0), b->GetDepths()->GetPointer(0),
+    std::memcmp(a->GetDepths()->GetPointer(0),
+      b->GetDepths()->GetPointer(0),
       sizeof(float) * a->GetNumberOfSamples()));
   ASSERT_EQ(a->GetSampleData()->GetNumberOfArrays(), b->GetSampleData()->GetNumberOfArrays());
   for (int i = 0; i < a->GetSampleData()->GetNumberOfArrays(); ++i)
@@ -140,8 +142,8 @@ void ExpectIdentical(vtkOFB* a, vtkOFB* b)
     vtkDataArray* y = b->GetSampleData()->GetArray(x->GetName());
     ASSERT_NE(y, nullptr) << x->GetName();
     EXPECT_EQ(0,
-      std::memcmp(x->GetVoidPointer(0), y->GetVoidPointer(0),
-        x->GetDataSize() * x->GetDataTypeSize()))
+      std::memcmp(
+        x->GetVoidPointer(0), y->GetVoidPointer(0), x->GetDataSize() * x->GetDataTypeSize()))
       << x->GetName();
   }
 }
@@ -189,7 +191,7 @@ TEST(Sampler, FillRuleGivesNoHoleAndNoDuplicateOnSharedEdges)
 {
   // A plane whose diagonals pass exactly through cell centres: each of the
   // (R-2)^2 centres inside is covered exactly once.
-  const int m = 6;   // cells per quad
+  const int m = 6; // cells per quad
   const int quads = 10;
   const int resolution = m * quads + 2;
   vtkNew<vtkPlaneSource> plane;
@@ -258,8 +260,9 @@ TEST(Sampler, EqualDepthsComeInTriangleOrder)
     for (vtkIdType i = 0; i < nPoints; ++i)
     {
       points->InsertNextPoint(quads->GetPoint(i));
-      const unsigned char rgb[3] = { static_cast<unsigned char>(copy ? 0 : 255), 0,
-        static_cast<unsigned char>(copy ? 255 : 0) };
+      const unsigned char rgb[3] = {
+        static_cast<unsigned char>(copy ? 0 : 255), 0, static_cast<unsigned char>(copy ? 255 : 0)
+      };
       colors->InsertNextTypedTuple(rgb);
       label->InsertNextValue(static_cast<float>(copy + 1));
     }
@@ -344,7 +347,8 @@ TEST(Sampler, WindingDoesNotChangeTheSamples)
       outwards->GetCellOffsets()->GetPointer(0),
       sizeof(vtkTypeUInt32) * (inwards->GetNumberOfCells() + 1)));
   EXPECT_EQ(0,
-    std::memcmp(inwards->GetDepths()->GetPointer(0), outwards->GetDepths()->GetPointer(0),
+    std::memcmp(inwards->GetDepths()->GetPointer(0),
+      outwards->GetDepths()->GetPointer(0),
       sizeof(float) * static_cast<size_t>(n)));
   vtkDataArray* n1 = inwards->GetSampleData()->GetNormals();
   vtkDataArray* n2 = outwards->GetSampleData()->GetNormals();
@@ -483,8 +487,8 @@ TEST(Sampler, RebuildReusesTheMemoryOfArraysNobodyElseHolds)
   EXPECT_EQ(copy->TakeSpareArray(nullptr, VTK_FLOAT, 1, 1), nullptr);
   EXPECT_EQ(copy->TakeSpareArray("Depths", VTK_DOUBLE, 1, 1), nullptr);
   EXPECT_EQ(copy->TakeSpareArray("Depths", VTK_FLOAT, 3, 1), nullptr);
-  EXPECT_EQ(copy->TakeSpareArray("Depths", VTK_FLOAT, 1, reference->GetNumberOfSamples() + 1),
-    nullptr);
+  EXPECT_EQ(
+    copy->TakeSpareArray("Depths", VTK_FLOAT, 1, reference->GetNumberOfSamples() + 1), nullptr);
   vtkSmartPointer<vtkDataArray> depthsBack =
     copy->TakeSpareArray("Depths", VTK_FLOAT, 1, reference->GetNumberOfSamples() / 2);
   ASSERT_NE(depthsBack, nullptr);
@@ -518,8 +522,8 @@ TEST(Sampler, ClosestSampleWithinSqrt3CellsOfRandomSurfacePoints)
       }
       worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(x, y)));
     }
-    std::cout << name << ": farthest closest sample " << worst / ofb->GetCellSize()
-              << " cells, " << misses << " misses\n";
+    std::cout << name << ": farthest closest sample " << worst / ofb->GetCellSize() << " cells, "
+              << misses << " misses\n";
     EXPECT_EQ(misses, 0) << name;
     EXPECT_LE(worst, bound) << name;
   }
@@ -606,8 +610,8 @@ TEST(Sampler, RealMeshesBuild)
     sampler->Update();
     vtkOFB* ofb = sampler->GetOutput();
     std::cout << name << ": " << mesh->GetNumberOfPolys() << " polygons, "
-              << ofb->GetNumberOfSamples() << " samples (X " << ofb->GetNumberOfSamples(0)
-              << ", Y " << ofb->GetNumberOfSamples(1) << ", Z " << ofb->GetNumberOfSamples(2)
+              << ofb->GetNumberOfSamples() << " samples (X " << ofb->GetNumberOfSamples(0) << ", Y "
+              << ofb->GetNumberOfSamples(1) << ", Z " << ofb->GetNumberOfSamples(2)
               << "), depth complexity " << ofb->GetDepthComplexity(0) << " "
               << ofb->GetDepthComplexity(1) << " " << ofb->GetDepthComplexity(2) << ", "
               << ofb->GetBytesPerSample() << " bytes/sample, " << sampler->GetLastBuildTime()

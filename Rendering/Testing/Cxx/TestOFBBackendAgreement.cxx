@@ -20,8 +20,11 @@ using namespace vtkofbtest;
 
 namespace
 {
-vtkSmartPointer<vtkOFB> BuildWith(vtkPolyData* mesh, int resolution, int backend,
-  vtkRenderWindow* window, int* used = nullptr)
+vtkSmartPointer<vtkOFB> BuildWith(vtkPolyData* mesh,
+  int resolution,
+  int backend,
+  vtkRenderWindow* window,
+  int* used = nullptr)
 {
   vtkNew<vtkOFBBuilder> builder;
   builder->SetInputData(mesh);
@@ -33,8 +36,8 @@ vtkSmartPointer<vtkOFB> BuildWith(vtkPolyData* mesh, int resolution, int backend
   {
     *used = builder->GetLastBackend();
   }
-  std::cout << vtkOFBBuilder::GetBackendAsString(builder->GetLastBackend()) << " build: "
-            << builder->GetOutput()->GetNumberOfSamples() << " samples, "
+  std::cout << vtkOFBBuilder::GetBackendAsString(builder->GetLastBackend())
+            << " build: " << builder->GetOutput()->GetNumberOfSamples() << " samples, "
             << builder->GetLastBuildTime() << " ms\n";
   vtkSmartPointer<vtkOFB> ofb = builder->GetOutput();
   return ofb;
@@ -79,7 +82,8 @@ void ExpectAgreement(const char* name, vtkPolyData* mesh, int resolution, vtkRen
       }
       for (int a = 0; a < 3; ++a)
       {
-        normalError = std::max(normalError, std::fabs(nc->GetComponent(i, a) - ng->GetComponent(j, a)));
+        normalError =
+          std::max(normalError, std::fabs(nc->GetComponent(i, a) - ng->GetComponent(j, a)));
       }
       ++matched;
     }

@@ -1,9 +1,9 @@
 // vtkOFBBuilder: backends, fallback, settings.
 #include "vtkOFBTestUtilities.h"
 
-#include "vtkOFBBuilder.h"
 #include "vtkActor.h"
 #include "vtkImageData.h"
+#include "vtkOFBBuilder.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
@@ -125,9 +125,17 @@ TEST(Builder, PrintSelfShowsEverySetting)
   vtkNew<vtkOFBBuilder> builder;
   std::ostringstream os;
   builder->Print(os);
-  for (const char* setting : { "Resolution: 1024", "MemoryLimit: 8192", "DefaultColor:",
-         "UseInputColors: On", "PassPointArrays: On", "ProjectVectors: On", "Backend: Auto",
-         "LastBackend:", "RenderWindow:", "NumberOfSkippedTriangles:", "LastBuildTime:" })
+  for (const char* setting : { "Resolution: 1024",
+         "MemoryLimit: 8192",
+         "DefaultColor:",
+         "UseInputColors: On",
+         "PassPointArrays: On",
+         "ProjectVectors: On",
+         "Backend: Auto",
+         "LastBackend:",
+         "RenderWindow:",
+         "NumberOfSkippedTriangles:",
+         "LastBuildTime:" })
   {
     EXPECT_NE(os.str().find(setting), std::string::npos) << setting;
   }

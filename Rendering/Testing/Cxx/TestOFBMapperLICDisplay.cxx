@@ -30,8 +30,8 @@
 
 namespace
 {
-constexpr int Size = 128;   // window pixels
-constexpr int Blocks = 8;   // blocks of constant LIC (along x) and scalar (along y)
+constexpr int Size = 128; // window pixels
+constexpr int Blocks = 8; // blocks of constant LIC (along x) and scalar (along y)
 
 // Block of a coordinate in [-1, 1], and how far (world units) it is from a block edge.
 int BlockOf(double x, double& edgeDistance)
@@ -133,9 +133,9 @@ struct FlatScene
   /// Render, then compare every pixel away from the block edges with `expected(base
   /// colour, LIC)` (colours in [0, 1]); returns the number of pixels compared and sets
   /// `worst` to the largest difference in 0-255 units.
-  int Compare(const std::function<void(const double base[3], double lic, double out[3])>&
-                expected,
-    bool scalars, double& worst)
+  int Compare(const std::function<void(const double base[3], double lic, double out[3])>& expected,
+    bool scalars,
+    double& worst)
   {
     this->Window->Render();
     EXPECT_TRUE(this->Mapper->GetLastRenderUsedOFB());
@@ -212,10 +212,10 @@ TEST(OFBMapperLICDisplay, BlendModeFollowsVTKsFormula)
             out[c] = lic * intensity + base[c] * (1.0 - intensity);
           }
         },
-        scalars, worst);
+        scalars,
+        worst);
       EXPECT_GT(compared, Size * Size / 3);
-      EXPECT_LE(worst, 3.0) << (scalars ? "scalars" : "paint") << ", LICIntensity "
-                            << intensity;
+      EXPECT_LE(worst, 3.0) << (scalars ? "scalars" : "paint") << ", LICIntensity " << intensity;
     }
   }
 }
@@ -242,7 +242,8 @@ TEST(OFBMapperLICDisplay, MapModeFollowsVTKsFormula)
             out[c] = base[c] * std::min(1.0, std::max(0.0, lic + bias));
           }
         },
-        scalars, worst);
+        scalars,
+        worst);
       EXPECT_GT(compared, Size * Size / 3);
       EXPECT_LE(worst, 3.0) << (scalars ? "scalars" : "paint") << ", MapModeBias " << bias;
     }
@@ -255,8 +256,8 @@ TEST(OFBMapperLICDisplay, WithoutModulationTheColourIsUnchanged)
   scene.Mapper->SetColorSourceToScalars();
   scene.Mapper->IntensityModulationOff();
   double worst = 0.0;
-  scene.Compare(
-    [](const double base[3], double, double out[3]) { std::copy(base, base + 3, out); }, true,
+  scene.Compare([](const double base[3], double, double out[3]) { std::copy(base, base + 3, out); },
+    true,
     worst);
   EXPECT_LE(worst, 3.0);
 }

@@ -30,36 +30,38 @@ int TestOFBMapperResolution(int argc, char* argv[])
   const double midY = 0.5 * (bounds[2] + bounds[3]);
   // Upper half: stripes 3 cells wide (period 6 cells); lower half: dots of radius 2 cells
   // on an 8-cell lattice.
-  vtkofbtest::Paint(ofb, [&](const double x[3], unsigned char rgba[4]) {
-    rgba[0] = 245;
-    rgba[1] = 225;
-    rgba[2] = 160;
-    rgba[3] = 255;
-    if (x[1] > midY)
+  vtkofbtest::Paint(ofb,
+    [&](const double x[3], unsigned char rgba[4])
     {
-      if (std::fmod(std::fabs(x[0] + x[2]) / s, 6.0) < 3.0)
+      rgba[0] = 245;
+      rgba[1] = 225;
+      rgba[2] = 160;
+      rgba[3] = 255;
+      if (x[1] > midY)
       {
-        rgba[0] = 30;
-        rgba[1] = 60;
-        rgba[2] = 170;
+        if (std::fmod(std::fabs(x[0] + x[2]) / s, 6.0) < 3.0)
+        {
+          rgba[0] = 30;
+          rgba[1] = 60;
+          rgba[2] = 170;
+        }
       }
-    }
-    else
-    {
-      double d2 = 0.0;
-      for (int i = 0; i < 3; ++i)
+      else
       {
-        const double c = 8.0 * s * std::floor(x[i] / (8.0 * s)) + 4.0 * s;
-        d2 += (x[i] - c) * (x[i] - c);
+        double d2 = 0.0;
+        for (int i = 0; i < 3; ++i)
+        {
+          const double c = 8.0 * s * std::floor(x[i] / (8.0 * s)) + 4.0 * s;
+          d2 += (x[i] - c) * (x[i] - c);
+        }
+        if (d2 < 4.0 * s * s * 2.0)
+        {
+          rgba[0] = 200;
+          rgba[1] = 30;
+          rgba[2] = 40;
+        }
       }
-      if (d2 < 4.0 * s * s * 2.0)
-      {
-        rgba[0] = 200;
-        rgba[1] = 30;
-        rgba[2] = 40;
-      }
-    }
-  });
+    });
 
   vtkNew<vtkOFBPolyDataMapper> mapper;
   mapper->SetInputData(teapot);

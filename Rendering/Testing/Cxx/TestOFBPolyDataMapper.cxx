@@ -60,12 +60,14 @@ struct Scene
 
   void Fill(unsigned char r, unsigned char g, unsigned char b)
   {
-    vtkofbtest::Paint(this->OFB, [&](const double*, unsigned char rgba[4]) {
-      rgba[0] = r;
-      rgba[1] = g;
-      rgba[2] = b;
-      rgba[3] = 255;
-    });
+    vtkofbtest::Paint(this->OFB,
+      [&](const double*, unsigned char rgba[4])
+      {
+        rgba[0] = r;
+        rgba[1] = g;
+        rgba[2] = b;
+        rgba[3] = 255;
+      });
   }
 };
 
@@ -648,11 +650,24 @@ TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)
   EXPECT_EQ(mapper->GetOFB(), nullptr);
   std::ostringstream os;
   mapper->Print(os);
-  for (const char* name : { "OFB:", "LookupMode: NearestMipmapped", "InterpolationRadius",
-         "MipmapBias", "MaximumNumberOfMipmapLevels", "MinimumMipmapResolution", "ColorSource",
-         "ScalarArrayName", "ScalarComponent", "IntensityArrayName", "IntensityModulation",
-         "IntensityWeight", "LICColorMode: COLOR_MODE_BLEND", "LICIntensity: 0.8",
-         "MapModeBias", "UsePaintedNormals", "LastUploadedSampleCount", "GPUMemorySize",
+  for (const char* name : { "OFB:",
+         "LookupMode: NearestMipmapped",
+         "InterpolationRadius",
+         "MipmapBias",
+         "MaximumNumberOfMipmapLevels",
+         "MinimumMipmapResolution",
+         "ColorSource",
+         "ScalarArrayName",
+         "ScalarComponent",
+         "IntensityArrayName",
+         "IntensityModulation",
+         "IntensityWeight",
+         "LICColorMode: COLOR_MODE_BLEND",
+         "LICIntensity: 0.8",
+         "MapModeBias",
+         "UsePaintedNormals",
+         "LastUploadedSampleCount",
+         "GPUMemorySize",
          "UploadedBytes" })
   {
     EXPECT_NE(os.str().find(name), std::string::npos) << name;

@@ -52,8 +52,10 @@ inline void Paint(vtkOFB* ofb,
 /// Set the colour of every sample within `radius` of `center` to `rgba` (candidates from
 /// vtkOFB::ForEachSampleInSphere, as a brush finds them); marks them modified and calls
 /// Modified() once. Returns the number of samples set.
-inline vtkIdType PaintSphere(
-  vtkOFB* ofb, const double center[3], double radius, const unsigned char rgba[4])
+inline vtkIdType PaintSphere(vtkOFB* ofb,
+  const double center[3],
+  double radius,
+  const unsigned char rgba[4])
 {
   vtkUnsignedCharArray* colors = GetColors(ofb);
   if (!colors)
@@ -61,7 +63,8 @@ inline vtkIdType PaintSphere(
     return 0;
   }
   vtkIdType count = 0;
-  ofb->ForEachSampleInSphere(center, radius,
+  ofb->ForEachSampleInSphere(center,
+    radius,
     [&](vtkIdType id, double)
     {
       colors->SetTypedTuple(id, rgba);

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstring>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -227,15 +228,36 @@ void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
   const int m = LongSteps * n;
   const std::size_t start = store.size();
   *store.Extend(1) = -1;
-  // The tile's records and depths are fetched in row order first (streams the hardware
-  // follows), so that the streamlines' random order of visits finds them in the cache.
+  // The tile's records, depths and cell offsets are read in order first (streams the
+  // hardware follows), so that the streamlines' random order of visits finds them in
+  // the cache. Loads, not prefetch hints: with hints (thousands in a row, of which this
+  // VM seems to drop most) tracing was 10-15 % slower (docs/performance.md, 2026-11-27).
+  vtkTypeUInt32 touched = 0;
   tiles.ForEachSample(tile,
     [&](vtkIdType i)
     {
-      VTKOFB_PREFETCH(samples + i);
-      VTKOFB_PREFETCH(tracer.Depths + i);
+      vtkTypeUInt32 depthBits;
+      std::memcpy(&depthBits, tracer.Depths + i, sizeof(depthBits));
+      touched += static_cast<vtkTypeUInt32>(samples[i].Flags) ^ depthBits;
       covered[i] = 0;
     });
+  for (int a = 0; a < 3; ++a)
+  {
+    // A step reads the offsets of the cell under it and of the next one (one load a
+    // cache line of 16 offsets).
+    vtkIdType r[4];
+    tiles.GetCellRange(tile, a, tracer.Dimensions, r);
+    const vtkIdType rowLength = tracer.Dimensions[(a + 1) % 3];
+    for (vtkIdType v = r[2]; v < r[3]; ++v)
+    {
+      const vtkTypeUInt32* row = tracer.Offsets + tracer.CellBase[a] + v * rowLength;
+      for (vtkIdType u = r[0]; u <= r[1]; u += 16)
+      {
+        touched += row[u];
+      }
+    }
+  }
+  vtkOFBLICKeep(touched);
   tiles.ForEachSample(tile,
     [&](vtkIdType i)
     {

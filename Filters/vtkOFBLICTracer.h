@@ -91,6 +91,23 @@ struct vtkOFBLICTiles
 
   vtkIdType GetNumberOfTiles() const { return this->Counts[0] * this->Counts[1] * this->Counts[2]; }
 
+  /**
+   * The cells of grid a under tile t: u (along axis (a + 1) % 3) in [range[0], range[1])
+   * and v (along (a + 2) % 3) in [range[2], range[3]), within the grid's dims.
+   */
+  void GetCellRange(vtkIdType t, int a, const vtkIdType dims[3], vtkIdType range[4]) const
+  {
+    const vtkIdType c[3] = { t % this->Counts[0],
+      (t / this->Counts[0]) % this->Counts[1],
+      t / (this->Counts[0] * this->Counts[1]) };
+    for (int k = 0; k < 2; ++k)
+    {
+      const int axis = (a + 1 + k) % 3;
+      range[2 * k] = std::min(dims[axis], c[axis] * this->Size);
+      range[2 * k + 1] = std::min(dims[axis], (c[axis] + 1) * this->Size);
+    }
+  }
+
   /// The tile of position x (clamped to the box).
   vtkIdType TileOf(const double x[3]) const
   {
@@ -113,6 +130,20 @@ struct vtkOFBLICTiles
     }
   }
 };
+
+/**
+ * Keeps the compiler from dropping the loads whose values went into v: vtkOFBLIC reads
+ * a tile's data once in order before tracing it (see vtkOFBLIC::TraceTile).
+ */
+VTKOFB_LIC_INLINE void vtkOFBLICKeep(vtkTypeUInt32 v)
+{
+#if defined(__GNUC__)
+  __asm__ __volatile__("" : : "r"(v));
+#else
+  static volatile vtkTypeUInt32 sink;
+  sink = v;
+#endif
+}
 
 /**
  * Traces a streamline forward and backward from a sample over the surface the OFB

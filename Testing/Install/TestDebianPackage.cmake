@@ -26,7 +26,7 @@ endif ()
 run(contents QUIET "${DPKG_DEB}" --contents "${packages}")
 set(lib "\\./usr/lib/([a-z0-9_-]+/)?")
 string(REPLACE "." "\\." SOVERSION_REGEX "${SOVERSION}")
-foreach (module IN ITEMS Filters Rendering Interaction)
+foreach (module IN ITEMS Core Paint FlowPaths Export Rendering Interaction)
   expect("${contents_output}" " ${lib}libvtkOFB${module}\\.so\\.[0-9.]+\n" "the ${module} library")
   expect("${contents_output}" " ${lib}libvtkOFB${module}\\.so\\.${SOVERSION_REGEX} -> "
     "the ${module} library's soname link")
@@ -43,8 +43,10 @@ endforeach ()
 if (WRAP_PYTHON)
   string(REPLACE "." "\\." python_regex "./usr/${PYTHON_DESTINATION}/vtkofb/")
   expect("${contents_output}" " ${python_regex}__init__\\.py\n" "the package's __init__.py")
-  expect("${contents_output}" " ${python_regex}vtkOFBFilters[^/\n]*\\.so\n"
-    "the wrapped Filters module")
+  foreach (module IN ITEMS Core Paint FlowPaths Export Rendering Interaction)
+    expect("${contents_output}" " ${python_regex}vtkOFB${module}[^/\n]*\\.so\n"
+      "the wrapped ${module} module")
+  endforeach ()
 
   # The unpacked tree works where it lies: its libraries find each other and VTK
   # through their run paths.

@@ -1,0 +1,227 @@
+/**
+ * @class   vtkOFBSampler
+ * @brief   Build a vtkOFB from a surface on the CPU (vtkSMPTools)
+ *
+ * vtkOFBSampler scan-converts the triangles of a vtkPolyData into the three grids
+ * of a vtkOFB (paper "Sample-based Surface Coloring", sections 4 and 8). Each
+ * triangle goes to the grid of the axis closest to its face normal and is sampled
+ * at the cell centres it covers, with a top-left fill rule (in raster, y-down
+ * coordinates, as Mesa's OpenGL rasterizer) on a fixed-point lattice of 1/256
+ * cell (the subpixel precision of GPU rasterizers), so that a shared edge gives
+ * neither a hole nor a duplicate and the OpenGL backend of vtkOFBBuilder covers
+ * the same cell centres. Depth is the triangle's plane at the cell centre and
+ * attributes are interpolated from barycentric coordinates. Cells are sorted by
+ * depth (ties by triangle id), so the result does not depend on the number of
+ * threads.
+ *
+ * Sample arrays: "Colors" (RGBA unsigned char, the paint: the input's point
+ * colours if it has unsigned-char RGB(A) scalars, else DefaultColor), "Normals"
+ * (the input point normals, else area-weighted normals computed here), the vector
+ * field chosen with SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+ * name) (or the input's active point vectors) projected into the tangent plane,
+ * and, with PassPointArrays, every other point array, interpolated.
+ *
+ * Polygons and strips are triangulated; lines and vertices are ignored with a
+ * warning; zero-area triangles are skipped. Empty input, non-finite coordinates,
+ * a surface without triangles, a resolution below 3 or above 65536, a surface of
+ * 2^32 points or triangles or more, and a build whose memory would exceed
+ * MemoryLimit give an error and an empty output.
+ *
+ * Rebuilding (an update after a change of input or setting) writes over the
+ * memory of the previous output where nothing else holds its arrays (see
+ * vtkOFB::Recycle) and over the CPU backend's build buffers (a few hundred bytes
+ * per triangle of the last input), which it keeps between updates;
+ * ReleaseBuffers() frees them.
+ *
+ * The scan conversion itself is done by a backend (vtkOFBSamplerBackend): the
+ * CPU one here, the OpenGL one too in vtkOFBBuilder.
+ *
+ * @sa vtkOFB vtkOFBBuilder vtkOFBSamplerBackend
+ */
+
+#ifndef vtkOFBSampler_h
+#define vtkOFBSampler_h
+
+#include "vtkOFBAlgorithm.h"
+#include "vtkOFBCoreModule.h"  // for export macro
+#include "vtkOFBSamplerBackend.h" // for Job, Result
+#include "vtkSmartPointer.h"      // for CPUBackend
+#include "vtkWeakPointer.h"       // for LastBuildBackend
+
+class vtkDataArray;
+class vtkPolyData;
+class vtkOFBSurface;
+
+class VTKOFBCORE_EXPORT vtkOFBSampler : public vtkOFBAlgorithm
+{
+public:
+  static vtkOFBSampler* New();
+  vtkTypeMacro(vtkOFBSampler, vtkOFBAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Number of cells along the longest side of the frame (the input bounds padded
+   * by one cell on every side). Valid range 3..65536; default 1024. The paper uses
+   * 2048. Out-of-range values give an error at update time.
+   */
+  vtkSetMacro(Resolution, int);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Most memory a build may take, in MiB (default 8192). The sampler estimates the
+   * memory of the build (its copy of the surface, the backend's per-triangle
+   * buffers, the grids, the samples and their arrays) before it allocates any of
+   * it, and fails with an error when the estimate exceeds the limit: first from
+   * the input's numbers of points and triangles, before the surface is copied,
+   * then on the frame, and again as the backend counts its spans and samples.
+   */
+  vtkSetClampMacro(MemoryLimit, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MemoryLimit, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Paint colour of the samples when the input has no point colours (or
+   * UseInputColors is off), RGBA 0..255. Default opaque white.
+   */
+  vtkSetVector4Macro(DefaultColor, unsigned char);
+  vtkGetVector4Macro(DefaultColor, unsigned char);
+  ///@}
+
+  ///@{
+  /**
+   * Take the initial paint from the input's unsigned-char RGB(A) point scalars
+   * when present (default on).
+   */
+  vtkSetMacro(UseInputColors, bool);
+  vtkGetMacro(UseInputColors, bool);
+  vtkBooleanMacro(UseInputColors, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Interpolate every other point array of the input into the samples (default on).
+   */
+  vtkSetMacro(PassPointArrays, bool);
+  vtkGetMacro(PassPointArrays, bool);
+  vtkBooleanMacro(PassPointArrays, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Project the vector field into the tangent plane of each sample (default on).
+   */
+  vtkSetMacro(ProjectVectors, bool);
+  vtkGetMacro(ProjectVectors, bool);
+  vtkBooleanMacro(ProjectVectors, bool);
+  ///@}
+
+  /**
+   * Zero-area triangles skipped by the last build.
+   */
+  vtkGetMacro(NumberOfSkippedTriangles, vtkIdType);
+
+  /**
+   * Wall-clock time of the last build, in milliseconds.
+   */
+  vtkGetMacro(LastBuildTime, double);
+
+  /**
+   * Free the build buffers the CPU backend keeps between updates (triangle setups
+   * and spans, a few hundred bytes per triangle); the next update allocates them again.
+   */
+  void ReleaseBuffers();
+
+  /**
+   * Estimated bytes of a build of `input` at the current settings on the CPU (the
+   * copy of the surface, the per-triangle buffers, the grids and the estimated
+   * samples), or -1 if the input is not valid. Only the surface is prepared.
+   */
+  double EstimateMemory(vtkPolyData* input);
+
+protected:
+  vtkOFBSampler();
+  ~vtkOFBSampler() override;
+
+  /**
+   * The build: the input checked and prepared (vtkOFBSurface), the frame
+   * computed, then the backend given by SelectBackend() run; one that is
+   * unavailable for this build gives way to the CPU backend, with a warning.
+   */
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /**
+   * The backend that builds the next output: the CPU backend here (subclasses
+   * such as vtkOFBBuilder return another one).
+   */
+  virtual vtkOFBSamplerBackend* SelectBackend();
+
+  /// The CPU backend (multi-threaded scan conversion with vtkSMPTools).
+  vtkOFBSamplerBackend* GetCPUBackend() const { return this->CPUBackend; }
+
+  /// The backend that built, or failed to build, the current output; null before any build.
+  vtkOFBSamplerBackend* GetLastBuildBackend() const { return this->LastBuildBackend; }
+
+  int Resolution;
+  vtkIdType MemoryLimit;
+  unsigned char DefaultColor[4];
+  bool UseInputColors;
+  bool PassPointArrays;
+  bool ProjectVectors;
+  vtkIdType NumberOfSkippedTriangles;
+  double LastBuildTime;
+
+private:
+  vtkOFBSampler(const vtkOFBSampler&) = delete;
+  void operator=(const vtkOFBSampler&) = delete;
+
+  /**
+   * Whether the input has points and polygons or strips (warning about lines and
+   * vertices). Returns false after reporting an error.
+   */
+  bool CheckInputCells(vtkPolyData* input);
+
+  /**
+   * Check the memory of the build against MemoryLimit from the input's numbers of
+   * points and triangles alone, before anything is copied (a lower bound of the
+   * checks that follow). Returns false after reporting an error.
+   */
+  bool CheckInputMemory(vtkPolyData* input,
+    vtkOFBSamplerBackend* backend,
+    vtkOFBSamplerBackend::Job& job);
+
+  ///@{
+  /**
+   * Validate and triangulate the input, compute normals and collect the arrays
+   * (PrepareSurface), in these steps. Those returning bool return false after
+   * reporting an error.
+   */
+  bool PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface);
+  bool CopyPoints(vtkPolyData* input, vtkOFBSurface& surface);
+  bool CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface);
+  vtkDataArray* PrepareNormals(vtkPolyData* input, vtkOFBSurface& surface);
+  bool SelectVectors(vtkPolyData* input, vtkOFBSurface& surface, vtkDataArray*& vectors);
+  vtkDataArray* SelectColors(vtkPolyData* input, vtkOFBSurface& surface);
+  ///@}
+
+  /**
+   * Compute the frame of a prepared surface at the current resolution into `job`.
+   * Returns false after reporting an error.
+   */
+  bool ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBackend::Job& job);
+
+  /**
+   * Run `backend` on `job`; the CPU backend instead, with a warning, when it is
+   * unavailable. Errors are reported; the output is empty unless Built.
+   */
+  vtkOFBSamplerBackend::Result RunBackend(vtkOFBSamplerBackend* backend,
+    vtkOFBSamplerBackend::Job& job);
+
+  vtkSmartPointer<vtkOFBSamplerBackend> CPUBackend;
+  vtkWeakPointer<vtkOFBSamplerBackend> LastBuildBackend;
+};
+
+#endif

@@ -1,0 +1,146 @@
+/**
+ * @class   vtkOFBTextureBaker
+ * @brief   Bake a sample array of a vtkOFB into the UV texture of a mesh
+ *
+ * vtkOFBTextureBaker writes what an OFB holds (the paint, a LIC, any sample array)
+ * into a texture image of a mesh that has texture coordinates, so that a painting
+ * made with vtkOFB keeps its detail finer than the triangles in any renderer or file
+ * format that takes a textured mesh (OBJ with a PNG, glTF, vtkTexture).
+ *
+ * Input port 0: the mesh (vtkPolyData with 2-component texture coordinates, the active
+ * TCoords, one pair a point; polygons are split into fans, strips and lines are
+ * ignored with a warning: apply vtkTriangleFilter first). Input port 1: the OFB
+ * (`SetSourceConnection` / `SetSourceData`). Output: a vtkImageData of `TextureSize`
+ * texels (origin 0, spacing 1; texel (i, j) is texture coordinate ((i + 0.5) / W,
+ * (j + 0.5) / H), row 0 at v = 0, as vtkTexture and vtkPNGWriter take it) with the
+ * baked array (same name, type and components as the OFB's, the active scalars) and
+ * a `vtkValidPointMask` array (1 where a triangle covers the texel centre and a sample
+ * was found, 0 elsewhere). A triangle too small in UV space to cover any texel centre
+ * covers the texel under its centroid instead (where no other triangle covers it), so
+ * that slivers and tiny UV islands get a value and padding around it.
+ *
+ * Each covered texel's surface point (barycentric in its triangle, the last triangle
+ * in cell order where triangles overlap in UV space) is looked up in the OFB as
+ * vtkOFBProbeFilter does (`LookupMode` Nearest or Smooth, `Radius` in cells, with
+ * `NormalAware` the triangle's normal as the facing reference). `Padding` texels
+ * around the covered ones (default 4) are filled with the mean of their filled
+ * neighbours, so that bilinear filtering and mipmaps do not bleed the background
+ * into the edges of UV islands.
+ *
+ * Errors (an empty image): no OFB or an empty one, a mesh without texture
+ * coordinates, a TextureSize outside [1, 16384], a Radius that is not positive and
+ * finite, an array the OFB lacks.
+ *
+ * @sa vtkOFBProbeFilter vtkTexture vtkPNGWriter
+ */
+
+#ifndef vtkOFBTextureBaker_h
+#define vtkOFBTextureBaker_h
+
+#include "vtkImageAlgorithm.h"
+#include "vtkOFBExportModule.h" // for export macro
+
+#include <string> // for ArrayName
+
+class vtkDataArray;
+class vtkImageData;
+class vtkPolyData;
+class vtkOFB;
+
+class VTKOFBEXPORT_EXPORT vtkOFBTextureBaker : public vtkImageAlgorithm
+{
+public:
+  static vtkOFBTextureBaker* New();
+  vtkTypeMacro(vtkOFBTextureBaker, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The OFB to bake (input port 1).
+   */
+  void SetSourceConnection(vtkAlgorithmOutput* output);
+  void SetSourceData(vtkOFB* ofb);
+  ///@}
+
+  ///@{
+  /**
+   * Width and height of the texture in texels (default 1024 x 1024; each in [1, 16384]).
+   */
+  vtkSetVector2Macro(TextureSize, int);
+  vtkGetVector2Macro(TextureSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * The sample array to bake (default empty: the OFB's active scalars, the paint).
+   */
+  vtkSetStdStringFromCharMacro(ArrayName);
+  vtkGetCharFromStdStringMacro(ArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * The lookup (vtkOFBProbeFilter::Nearest, default, or vtkOFBProbeFilter::Smooth) and
+   * its radius in cells of the OFB (default sqrt(3)).
+   */
+  vtkSetClampMacro(LookupMode, int, 0, 1);
+  vtkGetMacro(LookupMode, int);
+  void SetLookupModeToNearest() { this->SetLookupMode(0); }
+  void SetLookupModeToSmooth() { this->SetLookupMode(1); }
+  vtkSetMacro(Radius, double);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Skip samples facing away from the triangle (default on).
+   */
+  vtkSetMacro(NormalAware, bool);
+  vtkGetMacro(NormalAware, bool);
+  vtkBooleanMacro(NormalAware, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Texels filled around the covered ones (default 4, at most 64).
+   */
+  vtkSetClampMacro(Padding, int, 0, 64);
+  vtkGetMacro(Padding, int);
+  ///@}
+
+  /**
+   * Number of texels the last update covered with a triangle and found a sample for.
+   */
+  vtkGetMacro(NumberOfBakedTexels, vtkIdType);
+
+protected:
+  vtkOFBTextureBaker();
+  ~vtkOFBTextureBaker() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Bake `source` into `image` (RequestData's work once its input is checked).
+  void Bake(vtkPolyData* mesh,
+    vtkOFB* ofb,
+    vtkDataArray* source,
+    vtkDataArray* tcoords,
+    vtkImageData* image,
+    vtkInformation* outInfo);
+  /// The sample array to bake (ArrayName, or the active scalars, or "Colors"), or null.
+  vtkDataArray* FindSourceArray(vtkOFB* ofb) const;
+
+  int TextureSize[2] = { 1024, 1024 };
+  std::string ArrayName;
+  int LookupMode = 0;
+  double Radius;
+  bool NormalAware = true;
+  int Padding = 4;
+  vtkIdType NumberOfBakedTexels = 0;
+
+private:
+  vtkOFBTextureBaker(const vtkOFBTextureBaker&) = delete;
+  void operator=(const vtkOFBTextureBaker&) = delete;
+};
+
+#endif

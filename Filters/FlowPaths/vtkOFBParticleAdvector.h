@@ -1,0 +1,482 @@
+/**
+ * @class   vtkOFBParticleAdvector
+ * @brief   Particles that move on a triangle surface along a vector field and paint an OFB
+ *
+ * The surface particles of the paper "Sample-based Surface Coloring" (section 6).
+ * The paper snaps its particles to OFB samples and says this is too inaccurate for
+ * scientific visualization; here a particle is a triangle and barycentric
+ * coordinates, so its position always lies exactly on the surface, and a step
+ * moves it in its triangle's plane, crosses edges into the neighbouring triangles
+ * and turns the rest of the displacement about each shared edge. The particles
+ * are therefore accurate surface streamlines (port 2 gives them as polylines).
+ *
+ * Inputs:
+ * - port 0: the surface, a vtkPolyData with a vector field. The field is the
+ *   point array chosen with SetInputArrayToProcess(0, 0, 0, association, name)
+ *   (default: the active point vectors); each use projects it into the tangent
+ *   plane of the triangle at hand. Cell vectors are averaged to the points, with
+ *   a warning. Polygons are triangulated; lines and vertices are ignored. A
+ *   missing field, one without 3 components, one that is zero everywhere or has
+ *   non-finite values gives an error and empty outputs.
+ * - port 1 (optional): the OFB to paint. The advector paints a copy that it keeps
+ *   from step to step (taken again when that input changes); port 0 of the output
+ *   is that copy. Alternatively SetOFB() gives an OFB that the application holds:
+ *   it is painted in place (and port 0 shares it) and wins over port 1.
+ * - port 2 (optional, SetSourceData / SetSourceConnection / SetSeeds): seed points.
+ *   Each seed is moved to the closest point of the surface (vtkStaticCellLocator);
+ *   seeds with non-finite coordinates, or farther than MaximumSeedDistance cells
+ *   from the surface, are rejected with a warning. Without seeds,
+ *   NumberOfParticles seeds are drawn area-uniformly over the surface from
+ *   RandomSeed.
+ *
+ * Units. A "cell" is the cell size of the OFB painted, or without one 1/1024 of the
+ * longest side of the surface's bounds. With NormalizeVectors (default) every
+ * particle travels StepSize cells of arc per step; without it the field is scaled
+ * by 1 / its largest length, so that the fastest point moves StepSize cells per
+ * step and particles keep their relative speeds (a common time step).
+ *
+ * Each step every moving particle advances with the integrator (Euler, midpoint
+ * RK2, classical RK4, or Cash-Karp RK45 in sub-steps whose error is kept under
+ * ErrorTolerance cells), then paints a footprint at its new position through a
+ * vtkOFBPainter: a volume brush of radius FootprintRadius cells, strength Opacity,
+ * in the particle's colour, with the advector's Falloff and BlendMode. With
+ * SmearAmount > 0 the footprint carries the colour found at the particle's
+ * previous position (paper Eq. 3). The footprints of a step are painted together,
+ * in particle order, which gives the same result with any number of threads.
+ *
+ * A particle stops where the field is zero or where it reaches a boundary edge of
+ * an open surface. Without a Lifetime a stopped particle stays (no particle is
+ * ever lost or duplicated); with one, a particle is reseeded when its age reaches
+ * Lifetime steps or at the step after it stopped: at its own seed point, or at a
+ * new random point drawn from its own random stream (seeded by RandomSeed, the
+ * particle id and its number of reseeds), so the result does not depend on the
+ * number of threads.
+ *
+ * Chains (paper 6.2.1): with ChainLength L > 1 each seed releases L particles, one
+ * every ChainSpacing steps: particle k of a chain (k = 0 the first) appears at its
+ * seed when the step count reaches k * ChainSpacing (painting a footprint there)
+ * and moves from the next step on. It paints with radius FootprintRadius * (1 - k / L) and strength
+ * Opacity * (1 - k / L): the later ones, which follow behind, leave smaller,
+ * fainter footprints, a tail.
+ *
+ * Colour modes: Constant (Color), FromSeeds (the seed point array
+ * SeedColorArrayName, or the seeds' active scalars: unsigned char 0-255 or
+ * floating point in [0, 1], 1 (grey), 3 or 4 (alpha times Opacity) components),
+ * ByScalar (the surface point array ScalarArrayName, component 0, interpolated at
+ * the particle through LookupTable; without one a blue-to-red table over the
+ * array's range), Periodic (the paper's Fig. 6: at step s the colour goes from
+ * red through blue to green and back to red over ColorPeriod steps, linearly:
+ * red at s = 0, blue at s = P/3, green at s = 2P/3, the same for every particle).
+ *
+ * Time. The advector counts steps from the seeds (GetCurrentStep()). A request
+ * for time t (UPDATE_TIME_STEP, as VTK's animation sends) moves the particles to
+ * step floor(t): forward by stepping, backward by restarting from the seeds (paint
+ * already in an OFB given with SetOFB stays). Step() advances StepsPerUpdate steps
+ * at once (for animation loops: Step(), then Render()). Changing a setting that
+ * moves particles (integrator, step size, seeds...) or an input restarts them
+ * from the seeds on the next update; appearance settings (colours, footprint,
+ * trail length) apply from the next step.
+ *
+ * Outputs: port 0 the painted OFB; port 1 the particles as vertices, with point
+ * arrays "Velocity" (the field at the particle in its tangent plane, world units,
+ * reversed for backward tracing), "Age" (steps since release or reseed), "Id",
+ * "ChainIndex" and "Color" (RGBA unsigned char, alpha the opacity); port 2 their
+ * trails, a polyline of each particle's last TrailLength positions (with "Id").
+ * Particles of a chain not yet released are not in the outputs.
+ *
+ * @sa vtkOFBPainter vtkOFBBrush vtkStreamTracer
+ */
+
+#ifndef vtkOFBParticleAdvector_h
+#define vtkOFBParticleAdvector_h
+
+#include "vtkAlgorithm.h"
+#include "vtkOFBFlowPathsModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkAlgorithmOutput;
+class vtkOFB;
+class vtkDataSet;
+class vtkPolyData;
+class vtkScalarsToColors;
+
+class VTKOFBFLOWPATHS_EXPORT vtkOFBParticleAdvector : public vtkAlgorithm
+{
+public:
+  static vtkOFBParticleAdvector* New();
+  vtkTypeMacro(vtkOFBParticleAdvector, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Integrators
+  {
+    EULER = 0,
+    RK2 = 1,
+    RK4 = 2,
+    RK45 = 3
+  };
+
+  enum Directions
+  {
+    FORWARD = 0,
+    BACKWARD = 1
+  };
+
+  enum ColorModes
+  {
+    COLOR_CONSTANT = 0,
+    COLOR_FROM_SEEDS = 1,
+    COLOR_BY_SCALAR = 2,
+    COLOR_PERIODIC = 3
+  };
+
+  ///@{
+  /**
+   * Inputs: the surface (port 0), the OFB to paint (port 1, optional), the seeds
+   * (port 2, optional).
+   */
+  void SetInputData(vtkDataObject* surface);
+  void SetOFBInputData(vtkOFB* ofb);
+  void SetOFBInputConnection(vtkAlgorithmOutput* output);
+  void SetSourceData(vtkPolyData* seeds);
+  void SetSourceConnection(vtkAlgorithmOutput* output);
+  void SetSeeds(vtkPolyData* seeds) { this->SetSourceData(seeds); }
+  ///@}
+
+  ///@{
+  /**
+   * An OFB held by the application, painted in place (default none). It wins over
+   * the OFB of port 1.
+   */
+  void SetOFB(vtkOFB* ofb);
+  vtkGetObjectMacro(OFB, vtkOFB);
+  ///@}
+
+  ///@{
+  /**
+   * Outputs: the painted OFB (port 0), the particles (port 1), the trails (port 2).
+   */
+  vtkOFB* GetOutput();
+  vtkPolyData* GetParticles();
+  vtkPolyData* GetTrails();
+  ///@}
+
+  ///@{
+  /**
+   * Integrator (default RK4).
+   */
+  vtkSetClampMacro(Integrator, int, EULER, RK45);
+  vtkGetMacro(Integrator, int);
+  void SetIntegratorToEuler() { this->SetIntegrator(EULER); }
+  void SetIntegratorToRK2() { this->SetIntegrator(RK2); }
+  void SetIntegratorToRK4() { this->SetIntegrator(RK4); }
+  void SetIntegratorToRK45() { this->SetIntegrator(RK45); }
+  ///@}
+
+  ///@{
+  /**
+   * Length of a step in cells (default 1). Must be positive and finite, and at most
+   * four times the surface's longest side in cells: another value gives an error and
+   * empty outputs.
+   */
+  vtkSetMacro(StepSize, double);
+  vtkGetMacro(StepSize, double);
+  ///@}
+
+  ///@{
+  /**
+   * RK45: the largest error of a sub-step, in cells (default 1e-3).
+   */
+  vtkSetClampMacro(ErrorTolerance, double, 1e-12, 1e6);
+  vtkGetMacro(ErrorTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Whether every particle moves StepSize cells of arc per step (default on), or
+   * the field keeps its relative speeds (see the class description).
+   */
+  vtkSetMacro(NormalizeVectors, bool);
+  vtkGetMacro(NormalizeVectors, bool);
+  vtkBooleanMacro(NormalizeVectors, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Direction of travel (default FORWARD).
+   */
+  vtkSetClampMacro(Direction, int, FORWARD, BACKWARD);
+  vtkGetMacro(Direction, int);
+  void SetDirectionToForward() { this->SetDirection(FORWARD); }
+  void SetDirectionToBackward() { this->SetDirection(BACKWARD); }
+  ///@}
+
+  ///@{
+  /**
+   * Steps made by Step() (default 1).
+   */
+  vtkSetClampMacro(StepsPerUpdate, int, 1, VTK_INT_MAX);
+  vtkGetMacro(StepsPerUpdate, int);
+  ///@}
+
+  ///@{
+  /**
+   * Lifetime of a particle in steps, after which it is reseeded; 0 (default) for
+   * an unlimited life.
+   */
+  vtkSetClampMacro(Lifetime, int, 0, VTK_INT_MAX);
+  vtkGetMacro(Lifetime, int);
+  ///@}
+
+  ///@{
+  /**
+   * Number of random seeds when no seed points are given (default 1000), and the
+   * seed of their random numbers (default 0).
+   */
+  vtkSetClampMacro(NumberOfParticles, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(NumberOfParticles, vtkIdType);
+  vtkSetMacro(RandomSeed, unsigned int);
+  vtkGetMacro(RandomSeed, unsigned int);
+  ///@}
+
+  ///@{
+  /**
+   * Seed points farther than this from the surface, in cells, are rejected with a
+   * warning (default 10); nearer ones are moved onto it.
+   */
+  vtkSetClampMacro(MaximumSeedDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumSeedDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Chains: particles per seed (default 1) and steps between their releases
+   * (default 1).
+   */
+  vtkSetClampMacro(ChainLength, int, 1, 1000000);
+  vtkGetMacro(ChainLength, int);
+  vtkSetClampMacro(ChainSpacing, int, 1, 1000000);
+  vtkGetMacro(ChainSpacing, int);
+  ///@}
+
+  ///@{
+  /**
+   * Colour mode (default COLOR_CONSTANT), see the class description.
+   */
+  vtkSetClampMacro(ColorMode, int, COLOR_CONSTANT, COLOR_PERIODIC);
+  vtkGetMacro(ColorMode, int);
+  void SetColorModeToConstant() { this->SetColorMode(COLOR_CONSTANT); }
+  void SetColorModeToFromSeeds() { this->SetColorMode(COLOR_FROM_SEEDS); }
+  void SetColorModeToByScalar() { this->SetColorMode(COLOR_BY_SCALAR); }
+  void SetColorModeToPeriodic() { this->SetColorMode(COLOR_PERIODIC); }
+  static const char* GetColorModeAsString(int mode);
+  ///@}
+
+  ///@{
+  /**
+   * Constant colour, RGB in [0, 1] (default red).
+   */
+  vtkSetVector3Macro(Color, double);
+  vtkGetVector3Macro(Color, double);
+  ///@}
+
+  ///@{
+  /**
+   * Footprint opacity in [0, 1], the brush strength (default 1).
+   */
+  vtkSetClampMacro(Opacity, double, 0.0, 1.0);
+  vtkGetMacro(Opacity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Footprint radius in cells (default 2.5).
+   */
+  vtkSetClampMacro(FootprintRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(FootprintRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Falloff and blend mode of the footprints (vtkOFBBrush's values; defaults
+   * Constant and Mix).
+   */
+  vtkSetMacro(Falloff, int);
+  vtkGetMacro(Falloff, int);
+  vtkSetMacro(BlendMode, int);
+  vtkGetMacro(BlendMode, int);
+  ///@}
+
+  ///@{
+  /**
+   * Smear (paper Eq. 3) in [0, 1]: how much of the colour at the particle's
+   * previous position replaces its own colour in its footprint (default 0).
+   */
+  vtkSetClampMacro(SmearAmount, double, 0.0, 1.0);
+  vtkGetMacro(SmearAmount, double);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the particles paint (default on).
+   */
+  vtkSetMacro(Paint, bool);
+  vtkGetMacro(Paint, bool);
+  vtkBooleanMacro(Paint, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Periodic colour mode: steps of one period (default 60).
+   */
+  vtkSetClampMacro(ColorPeriod, int, 1, VTK_INT_MAX);
+  vtkGetMacro(ColorPeriod, int);
+  ///@}
+
+  ///@{
+  /**
+   * FromSeeds colour mode: the seed point array (default none: the active scalars).
+   */
+  vtkSetStringMacro(SeedColorArrayName);
+  vtkGetStringMacro(SeedColorArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * ByScalar colour mode: the surface point array and the lookup table (default
+   * none: blue to red over the array's range).
+   */
+  vtkSetStringMacro(ScalarArrayName);
+  vtkGetStringMacro(ScalarArrayName);
+  void SetLookupTable(vtkScalarsToColors* lut);
+  vtkGetObjectMacro(LookupTable, vtkScalarsToColors);
+  ///@}
+
+  ///@{
+  /**
+   * Positions kept in each particle's trail (default 16; at least 2).
+   */
+  vtkSetClampMacro(TrailLength, int, 2, 1000000);
+  vtkGetMacro(TrailLength, int);
+  ///@}
+
+  ///@{
+  /**
+   * Most memory the particles may take, in MiB (default 4096): the seeds times
+   * ChainLength particles, each with its state and a trail of TrailLength positions,
+   * and their output. The advector estimates it before it allocates the particles and
+   * fails with an error (no particles, empty outputs) when the estimate exceeds the
+   * limit, rather than running out of memory.
+   */
+  vtkSetClampMacro(MemoryLimit, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MemoryLimit, vtkIdType);
+  ///@}
+
+  /**
+   * Advance StepsPerUpdate steps now (updating the inputs first) and update the
+   * outputs.
+   */
+  void Step();
+
+  /**
+   * Put the particles back at their seeds on the next update.
+   */
+  void Reset();
+
+  /**
+   * Steps made since the seeds.
+   */
+  vtkIdType GetCurrentStep() const;
+
+  /**
+   * The footprints of the last step as given to the painter: a point per
+   * footprint with "Radius" (world units), "Color" (RGBA float), "Strength" and,
+   * with smear, "PreviousPosition".
+   */
+  vtkPolyData* GetFootprints();
+
+  /**
+   * The size of a cell in world units used by the last update.
+   */
+  double GetCellSize() const;
+
+  ///@{
+  /**
+   * Wall-clock seconds the last update spent moving the particles, painting
+   * their footprints (filling the footprint arrays and the painter's Dabs call)
+   * and building the three outputs. For benchmarks and profiling.
+   */
+  double GetLastAdvectionTime() const;
+  double GetLastPaintingTime() const;
+  double GetLastOutputTime() const;
+  ///@}
+
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inInfo,
+    vtkInformationVector* outInfo) override;
+
+protected:
+  vtkOFBParticleAdvector();
+  ~vtkOFBParticleAdvector() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  virtual int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  ///@{
+  /**
+   * The steps of RequestData (see the .cxx).
+   */
+  bool CheckSettings();
+  bool PrepareSurface(vtkPolyData* surface, vtkInformationVector** inputVector, bool& rebuilt);
+  bool PrepareOFB(vtkOFB* inputOFB, vtkPolyData* surface);
+  bool NeedsRestart(vtkDataSet* seeds);
+  /// False, with an error, when the particles would exceed MemoryLimit.
+  bool StartParticles(vtkDataSet* seeds);
+  void LocateSeeds(vtkDataSet* seeds);
+  void PrepareColoring(vtkPolyData* surface);
+  void PaintFootprints();
+  void ClearFootprints();
+  void FillParticles(vtkPolyData* output);
+  void FillTrails(vtkPolyData* output);
+  ///@}
+
+  vtkOFB* OFB;
+  vtkScalarsToColors* LookupTable;
+  int Integrator;
+  double StepSize;
+  double ErrorTolerance;
+  bool NormalizeVectors;
+  int Direction;
+  int StepsPerUpdate;
+  int Lifetime;
+  vtkIdType NumberOfParticles;
+  unsigned int RandomSeed;
+  double MaximumSeedDistance;
+  int ChainLength;
+  int ChainSpacing;
+  int ColorMode;
+  double Color[3];
+  double Opacity;
+  double FootprintRadius;
+  int Falloff;
+  int BlendMode;
+  double SmearAmount;
+  bool Paint;
+  int ColorPeriod;
+  char* SeedColorArrayName;
+  char* ScalarArrayName;
+  int TrailLength;
+  vtkIdType MemoryLimit;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+
+private:
+  vtkOFBParticleAdvector(const vtkOFBParticleAdvector&) = delete;
+  void operator=(const vtkOFBParticleAdvector&) = delete;
+};
+
+#endif

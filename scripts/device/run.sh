@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
-# Runs the frame-time benchmarks on a lent NVIDIA machine (the `device` tool), from the
-# folder scripts/device/pack.sh filled (carried as .devcarry):
+# Runs the frame-time benchmarks on a Linux machine with an NVIDIA driver and no VTK, from
+# the folder scripts/device/pack.sh filled (DEST), copied to that machine:
 #
-#   bash .devcarry/run.sh [PART...]     PART: probe mapper lic paint mapper-offscreen
+#   bash DEST/run.sh [PART...]     PART: probe mapper lic paint mapper-offscreen
 #                                       lic-offscreen (default all)
 # Environment: ROUNDS (default 3), LIC_FRAMES (default 20), MAPPER_FRAMES (default 30):
 # the benchmarks' --rounds and --frames.
 #
-# Sets up: glvnd from gl/*.deb (unpacked into /, as the device tool's README says), the
+# Sets up: glvnd from gl/*.deb (unpacked into /), the
 # archive into /tmp/ofb, Xvfb on :99 with Mesa's swrast for its GLX extension, then
 # DISPLAY=:99 and __GLX_VENDOR_LIBRARY_NAME=nvidia so that VTK's GLX window renders on the
 # NVIDIA driver (libGLX_nvidia from the driver's folder). glprobe prints the renderer

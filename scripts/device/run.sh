@@ -32,11 +32,11 @@ NV="$(find /usr/local/nvidia /usr/lib /usr/lib64 -name 'libGLX_nvidia.so.0' 2>/d
 [ -z "$NV" ] && NV="$(ldconfig -p | awk '/libGLX_nvidia.so.0/ {print $NF; exit}')"
 [ -n "$NV" ] && NV="$(dirname "$NV")"
 LIBS="$O/lib:${NV:-/usr/local/nvidia/lib64}"
-# Our libstdc++/libgcc_s only where the device's lack the versions the build needs.
+# Our libstdc++/libgcc_s only where the machine's own lack the versions the build needs.
 need="$(grep -ao 'GLIBCXX_3\.4\.[0-9]*' "$O/compat/libstdc++.so.6" | sort -uV | tail -1)"
 sys="$(ldconfig -p | awk '/libstdc\+\+\.so\.6 .*x86-64/ {print $NF; exit}')"
 if [ -z "$sys" ] || ! grep -aq "$need" "$sys"; then LIBS="$LIBS:$O/compat"; fi
-# Only our programs see the carried (Debian bookworm) libraries, not the device's tools.
+# Only our programs see the carried (Debian bookworm) libraries, not the machine's own tools.
 with_libs() { env LD_LIBRARY_PATH="$LIBS" "$@"; }
 {
   uname -r; ldd --version | head -1; nvidia-smi -L

@@ -16,9 +16,9 @@
  *   normal (computed per fragment from screen-space derivatives of the position: the normal
  *   vtkOFBSampler routes a triangle by, so the grid that holds its samples), else the next
  *   most aligned grid, else the last one, else the closest sample within
- *   InterpolationRadius in the 2x2 nearest cells of all three grids. The frame time
- *   against vtkPolyDataMapper with vertex colours is measured by
- *   Testing/Benchmarks/ofbMapperBenchmark (docs/performance.md, "Mapper history").
+ *   InterpolationRadius in the 2x2 nearest cells of all three grids. The cheapest mode;
+ *   Testing/Benchmarks/ofbMapperBenchmark compares every mode's frame time with
+ *   vtkPolyDataMapper's (docs/benchmarks.md).
  * - InverseDistance: Shepard-weighted samples within sqrt(3) cells in the 3x3 cells
  *   around the point in all three grids.
  * - Mipmapped: InverseDistance on a pyramid of coarser OFBs (vtkOFBPyramid, built on
@@ -28,8 +28,8 @@
  *   nearest to the fragment's footprint (round(log2(cells per pixel) + MipmapBias), as
  *   GL_NEAREST_MIPMAP_NEAREST for a texture): detail finer than a pixel (a LIC or paint of
  *   a high-resolution OFB seen whole) shows its filtered mean instead of aliasing, and the
- *   lookup reads a level about as fine as the screen, which keeps it in the cache (frame
- *   times: README, "Surface LIC"). Where the footprint is under 1.41 cells
+ *   lookup reads a level about as fine as the screen, which keeps it in the cache (the
+ *   lookup to use for a fine OFB seen whole). Where the footprint is under 1.41 cells
  *   (close-ups) it reads level 0 as Nearest does. The pyramid's arrays are filtered
  *   again whenever the OFB's arrays change: a modified array alone (an animated LIC costs
  *   its filtering down the pyramid), or, for values changed in place and marked with

@@ -113,7 +113,7 @@ struct App
          << ", x export to " << this->ExportPath;
     if (this->Animating && this->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::NearestMipmapped)
     {
-      // The first loop filters each phase's LIC down the pyramid (0.3-2 s a frame), the
+      // The first loop filters each phase's LIC down the pyramid (slow), the
       // next ones take the levels kept by the pyramid.
       text << " (slow on the first loop: d for Nearest)";
     }

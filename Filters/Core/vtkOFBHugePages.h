@@ -5,7 +5,7 @@
  * Writes over huge pages miss the TLB less, which speeds up rebuilds that write
  * over the memory of the previous output. Faulting a 2 MiB page in costs less than
  * 512 pages of 4 KiB on bare metal but can cost more under a hypervisor, so first
- * builds may be slower (measurements: docs/performance.md). Call before the array's
+ * builds may be slower. Call before the array's
  * first touch; a no-op where madvise has no MADV_HUGEPAGE.
  */
 

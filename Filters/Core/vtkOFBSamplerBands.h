@@ -46,8 +46,7 @@ namespace vtkofb
 /**
  * Cells of a band (rounded to whole rows): 32 rows of 2048 cells, small enough
  * for the band's scratch to stay in cache, large enough that a triangle of a
- * 100K-triangle mesh at resolution 2048 crosses few band borders (the sizes
- * tried: docs/performance.md, "CPU sampler history").
+ * 100K-triangle mesh at resolution 2048 crosses few band borders.
  */
 constexpr vtkIdType BandCells = 65536;
 

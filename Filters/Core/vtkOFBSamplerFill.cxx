@@ -230,8 +230,8 @@ void BandBuilder::WriteSamples(const Band& band, const Output& out, const BandSc
   // Four samples at a time from the first whose normal is 16-byte aligned: their
   // normals (12 bytes a sample, the largest stream) in three non-temporal stores
   // that bypass the cache, where the band's scratch stays; the depths and colours
-  // are stored normally (what streaming each stream gave: docs/performance.md,
-  // "CPU sampler history").
+  // are stored normally, since they are small enough to gain nothing from
+  // bypassing the cache.
   if (reinterpret_cast<uintptr_t>(out.Normals) % 16 == 0)
   {
     for (; k < n && ((band.First + k) & 3) != 0; ++k)

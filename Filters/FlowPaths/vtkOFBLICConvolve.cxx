@@ -117,8 +117,8 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   vtkSMPThreadLocal<vtkOFBLICRunStore*> localStore(nullptr);
   vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
   vtkSMPThreadLocal<std::vector<float>> localValues; // a tile's run values
-  // One parallel loop over all tiles (16 loops over blocks of tiles, each waiting for
-  // its slowest tile, took 8-10 % longer on the horse at 1024).
+  // One parallel loop over all tiles: loops over blocks of tiles would each wait for
+  // their slowest tile.
   TileProgress progress(this, numberOfTiles, progress0, progress1);
   vtkSMPTools::For(0,
     numberOfTiles,
@@ -230,8 +230,8 @@ void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
   *store.Extend(1) = -1;
   // The tile's records, depths and cell offsets are read in order first (streams the
   // hardware follows), so that the streamlines' random order of visits finds them in
-  // the cache. Loads, not prefetch hints: with hints (thousands in a row, of which this
-  // VM seems to drop most) tracing was 10-15 % slower (docs/performance.md, 2026-11-27).
+  // the cache. Loads, not prefetch hints: a processor may drop hints issued thousands in
+  // a row, and then the tracing misses the cache.
   vtkTypeUInt32 touched = 0;
   tiles.ForEachSample(tile,
     [&](vtkIdType i)

@@ -458,8 +458,7 @@ struct vtkOFBLICHighPassWork
  * same order, in one pass over the samples, instead of searching again (the same
  * values, bit for bit); the samples whose neighbours do not fit in offsets (about 1 %
  * on the horse) keep their neighbours' ids (vtkOFBLICCache::SearchedSamples and
- * SearchedIds; they were searched again at every update, 10 % of an enhanced
- * re-convolution).
+ * SearchedIds), so that no re-convolution searches again.
  */
 inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
 {

@@ -1,7 +1,7 @@
 // glprobe: opens a VTK render window (the same vtkXOpenGLRenderWindow the benchmarks
 // use), renders once and prints the OpenGL vendor, renderer and version that VTK got,
 // so that a benchmark run can show it did not fall back to Mesa llvmpipe.
-// Built by scripts/device/pack.sh; run by scripts/device/run.sh on the device.
+// Built by scripts/device/pack.sh; run by scripts/device/run.sh on the target machine.
 #include "vtkActor.h"
 #include "vtkAutoInit.h"
 #include "vtkNew.h"

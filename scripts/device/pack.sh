@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Packs what the frame-time benchmarks need on a lent GPU machine (the `device` tool of
-# this workplace: a bare x86-64 machine with an NVIDIA driver, no X server, no VTK).
+# Bundles the built frame-time benchmarks, the shared libraries they need and a GL probe,
+# for a Linux x86-64 machine with an NVIDIA driver and no VTK (no X server either).
 #
-#   scripts/device/pack.sh DEST     (DEST: a folder that git ignores in the checkout the
-#                                    device tool sends, e.g. /work/main/.devcarry)
+#   scripts/device/pack.sh DEST     (DEST: the folder to copy to that machine, e.g. a
+#                                    folder of the checkout that git ignores)
 #
 # Writes into DEST:
 #   ofbgpu.tar.xz  the benchmarks (build/bin; ofbPaintBenchmark compiled again without
@@ -15,13 +15,12 @@
 #                  go to compat/, used only where the device's own are older. libz3 and
 #                  libicudata (30 MB, loaded by Mesa's LLVM but never called when it
 #                  renders) are replaced by stubs that only satisfy the loader;
-#   gl/*.deb       glvnd (libglvnd0 libgl1 libglx0 libopengl0 libegl1), unpacked into / on
-#                  the device as the device tool's README says;
-#   run.sh         scripts/device/run.sh (the device's tree is the lead's checkout, which
-#                  may not hold this folder).
+#   gl/*.deb       glvnd (libglvnd0 libgl1 libglx0 libopengl0 libegl1), which run.sh
+#                  unpacks into / on the target machine;
+#   run.sh         scripts/device/run.sh, so that DEST runs on its own.
 # Needs a Release build in BUILD_DIR (default build) with the targets ofbLICBenchmark,
-# ofbMapperBenchmark and ofbPaintBenchmark. The archive must stay under the tool's 64 MiB
-# (with the tracked tree, about 9 MB): 46 MB on 2026-11-24 (xz took 4.5 min on 2 cores).
+# ofbMapperBenchmark and ofbPaintBenchmark. The archive is compressed with xz to keep it
+# small enough to copy (tens of MB).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -89,7 +88,7 @@ rm "$STAGE/z3stub.c" "$STAGE/icustub.c"
 cp "$ROOT/scripts/device/run.sh" "$DEST/run.sh"
 tar -C "$STAGE" -cf - . | xz -T2 -6 > "$DEST/ofbgpu.tar.xz"
 
-# glvnd, as the device tool's README says (its own apt lists, amd64).
+# glvnd's packages for run.sh (downloaded with apt lists of their own, amd64).
 mkdir -p "$DEST/gl" /tmp/amd64/partial
 o='-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=/tmp/amd64'
 if ! ls "$DEST"/gl/libglvnd0_*.deb >/dev/null 2>&1; then

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
-# Runs the frame-time benchmarks on a lent NVIDIA machine (the `device` tool), from the
-# folder scripts/device/pack.sh filled (carried as .devcarry):
+# Runs the frame-time benchmarks on a Linux machine with an NVIDIA driver and no VTK, from
+# the folder scripts/device/pack.sh filled (DEST), copied to that machine:
 #
-#   bash .devcarry/run.sh [PART...]     PART: probe mapper lic paint mapper-offscreen
+#   bash DEST/run.sh [PART...]     PART: probe mapper lic paint mapper-offscreen
 #                                       lic-offscreen (default all)
 # Environment: ROUNDS (default 3), LIC_FRAMES (default 20), MAPPER_FRAMES (default 30):
 # the benchmarks' --rounds and --frames.
 #
-# Sets up: glvnd from gl/*.deb (unpacked into /, as the device tool's README says), the
+# Sets up: glvnd from gl/*.deb (unpacked into /), the
 # archive into /tmp/ofb, Xvfb on :99 with Mesa's swrast for its GLX extension, then
 # DISPLAY=:99 and __GLX_VENDOR_LIBRARY_NAME=nvidia so that VTK's GLX window renders on the
 # NVIDIA driver (libGLX_nvidia from the driver's folder). glprobe prints the renderer
@@ -32,11 +32,11 @@ NV="$(find /usr/local/nvidia /usr/lib /usr/lib64 -name 'libGLX_nvidia.so.0' 2>/d
 [ -z "$NV" ] && NV="$(ldconfig -p | awk '/libGLX_nvidia.so.0/ {print $NF; exit}')"
 [ -n "$NV" ] && NV="$(dirname "$NV")"
 LIBS="$O/lib:${NV:-/usr/local/nvidia/lib64}"
-# Our libstdc++/libgcc_s only where the device's lack the versions the build needs.
+# Our libstdc++/libgcc_s only where the machine's own lack the versions the build needs.
 need="$(grep -ao 'GLIBCXX_3\.4\.[0-9]*' "$O/compat/libstdc++.so.6" | sort -uV | tail -1)"
 sys="$(ldconfig -p | awk '/libstdc\+\+\.so\.6 .*x86-64/ {print $NF; exit}')"
 if [ -z "$sys" ] || ! grep -aq "$need" "$sys"; then LIBS="$LIBS:$O/compat"; fi
-# Only our programs see the carried (Debian bookworm) libraries, not the device's tools.
+# Only our programs see the carried (Debian bookworm) libraries, not the machine's own tools.
 with_libs() { env LD_LIBRARY_PATH="$LIBS" "$@"; }
 {
   uname -r; ldd --version | head -1; nvidia-smi -L

@@ -3,13 +3,13 @@
 #
 #   scripts/demo.sh            install the packages it needs (when any is missing),
 #                              configure a Release build in build/, build it, then run
-#                              ofbDemo on the bundled Stanford bunny under Xvfb: it
+#                              OFBDemo on the bundled Stanford bunny under Xvfb: it
 #                              prints the OFB's statistics and the mapper's frame time
 #                              and writes ofb-demo.png (the samples coloured by grid
 #                              beside the surface drawn by vtkOFBPolyDataMapper) in the
 #                              project root.
 #
-# Extra arguments go to ofbDemo, e.g. `scripts/demo.sh --resolution 2048` or
+# Extra arguments go to OFBDemo, e.g. `scripts/demo.sh --resolution 2048` or
 # `scripts/demo.sh Testing/Data/horse.ply --output horse.png` (relative paths are
 # taken from the directory the script is run from). Environment: BUILD_DIR (default build), JOBS (default: the cores).
 set -euo pipefail
@@ -26,7 +26,7 @@ source "$ROOT/scripts/packages.sh"
 install_packages demo.sh
 
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
-cmake --build "$BUILD_DIR" --target ofbDemo -- -j"$JOBS"
+cmake --build "$BUILD_DIR" --target OFBDemo -- -j"$JOBS"
 
 # Defaults: the bundled bunny and ofb-demo.png in the project root; the arguments
 # may name another mesh or output (relative to the directory the script was run from).
@@ -51,8 +51,8 @@ if [ "$HAVE_OUTPUT" -eq 0 ]; then
 fi
 
 case "$BUILD_DIR" in
-  /*) DEMO="$BUILD_DIR/bin/ofbDemo" ;;
-  *) DEMO="$ROOT/$BUILD_DIR/bin/ofbDemo" ;;
+  /*) DEMO="$BUILD_DIR/bin/OFBDemo" ;;
+  *) DEMO="$ROOT/$BUILD_DIR/bin/OFBDemo" ;;
 esac
 cd "$CALLER_DIR"
 xvfb-run -a -s "-screen 0 1280x1024x24" "$DEMO" "${ARGS[@]}"

@@ -1,9 +1,9 @@
-// ofbDemo: build the Orthogonal Fragment Buffer of a mesh, print its statistics and render
+// OFBDemo: build the Orthogonal Fragment Buffer of a mesh, print its statistics and render
 // it into a PNG: left, the samples as a point cloud coloured by grid; right, the surface
 // drawn by vtkOFBPolyDataMapper from an OFB paint of grid colours and stripes a few cells
 // wide (finer than the triangles).
 //
-// Usage: ofbDemo [mesh.obj|mesh.ply] [--resolution N] [--backend auto|cpu|opengl]
+// Usage: OFBDemo [mesh.obj|mesh.ply] [--resolution N] [--backend auto|cpu|opengl]
 //                [--lookup nearest|idw|mipmap|nearestmipmap] [--output file.png] [--width W]
 //                [--height H]
 //
@@ -275,7 +275,7 @@ int ParseOptions(int argc, char* argv[], Options& options)
     }
     else
     {
-      std::cerr << "ofbDemo: unexpected argument '" << argv[i] << "'\n";
+      std::cerr << "OFBDemo: unexpected argument '" << argv[i] << "'\n";
       Usage(argv[0]);
       return EXIT_FAILURE;
     }
@@ -305,7 +305,7 @@ int ParseOptions(int argc, char* argv[], Options& options)
   {
     if (!check.first)
     {
-      std::cerr << "ofbDemo: " << check.second << "\n";
+      std::cerr << "OFBDemo: " << check.second << "\n";
       return EXIT_FAILURE;
     }
   }
@@ -313,7 +313,7 @@ int ParseOptions(int argc, char* argv[], Options& options)
     SystemTools::GetFilenamePath(SystemTools::CollapseFullPath(options.OutputPath));
   if (!SystemTools::FileIsDirectory(outputDir))
   {
-    std::cerr << "ofbDemo: cannot write '" << options.OutputPath << "': no directory '" << outputDir
+    std::cerr << "OFBDemo: cannot write '" << options.OutputPath << "': no directory '" << outputDir
               << "'\n";
     return EXIT_FAILURE;
   }
@@ -334,7 +334,7 @@ bool BuildOFB(vtkPolyData* mesh, const Options& options, vtkOFBBuilder* builder)
   vtkOFB* ofb = builder->GetOutput();
   if (buildErrors->Count > 0 || !ofb || ofb->GetNumberOfSamples() == 0)
   {
-    std::cerr << "ofbDemo: building the OFB at resolution " << options.Resolution << " failed"
+    std::cerr << "OFBDemo: building the OFB at resolution " << options.Resolution << " failed"
               << buildErrors->Suffix() << "\n";
     return false;
   }
@@ -392,7 +392,7 @@ vtkSmartPointer<vtkPolyData> PaintGridColors(vtkOFBBuilder* builder)
   auto* paint = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
   if (!paint || paint->GetNumberOfComponents() != 4 || cloud->GetNumberOfPoints() != n)
   {
-    std::cerr << "ofbDemo: the OFB has no RGBA Colors sample array or no point cloud\n";
+    std::cerr << "OFBDemo: the OFB has no RGBA Colors sample array or no point cloud\n";
     return nullptr;
   }
   vtkNew<vtkUnsignedCharArray> gridColors;
@@ -547,7 +547,7 @@ bool WritePicture(vtkRenderWindow* window, const Options& options)
   writer->Write();
   if (writeErrors->Count > 0 || !SystemTools::FileExists(path, true))
   {
-    std::cerr << "ofbDemo: cannot write '" << path << "'" << writeErrors->Suffix() << "\n";
+    std::cerr << "OFBDemo: cannot write '" << path << "'" << writeErrors->Suffix() << "\n";
     return false;
   }
   std::cout << "Wrote " << SystemTools::CollapseFullPath(path) << " (" << options.Width << " x "
@@ -570,7 +570,7 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkPolyData> mesh = ReadMesh(options.MeshPath, readError);
   if (!mesh)
   {
-    std::cerr << "ofbDemo: cannot read mesh '" << options.MeshPath << "': " << readError << "\n";
+    std::cerr << "OFBDemo: cannot read mesh '" << options.MeshPath << "': " << readError << "\n";
     return EXIT_FAILURE;
   }
   std::cout << "Mesh:              " << options.MeshPath << "\n"

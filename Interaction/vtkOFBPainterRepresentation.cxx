@@ -280,8 +280,13 @@ void vtkOFBPainterRepresentation::NextFalloff()
 {
   if (vtkOFBBrush* brush = this->GetBrush())
   {
-    const int next = brush->GetFalloff() + 1;
-    brush->SetFalloff(next >= vtkOFBBrush::Custom ? vtkOFBBrush::Constant : next);
+    // The falloffs in their order, Custom (a curve set in code) left out.
+    int next = (brush->GetFalloff() + 1) % vtkOFBBrush::NUMBER_OF_FALLOFFS;
+    if (next == vtkOFBBrush::FALLOFF_CUSTOM)
+    {
+      next = (next + 1) % vtkOFBBrush::NUMBER_OF_FALLOFFS;
+    }
+    brush->SetFalloff(next);
     return;
   }
   vtkErrorMacro("NextFalloff: no painter or no brush set.");
@@ -292,8 +297,7 @@ void vtkOFBPainterRepresentation::NextTarget()
 {
   if (vtkOFBBrush* brush = this->GetBrush())
   {
-    const int next = brush->GetTarget() + 1;
-    brush->SetTarget(next > vtkOFBBrush::SmearTarget ? vtkOFBBrush::ColorTarget : next);
+    brush->SetTarget((brush->GetTarget() + 1) % vtkOFBBrush::NUMBER_OF_TARGETS);
     this->BuildRepresentation();
     return;
   }
@@ -323,8 +327,7 @@ void vtkOFBPainterRepresentation::NextBlendMode()
 {
   if (vtkOFBBrush* brush = this->GetBrush())
   {
-    const int next = brush->GetBlendMode() + 1;
-    brush->SetBlendMode(next > vtkOFBBrush::EraseAlpha ? vtkOFBBrush::Mix : next);
+    brush->SetBlendMode((brush->GetBlendMode() + 1) % vtkOFBBrush::NUMBER_OF_BLEND_MODES);
     return;
   }
   vtkErrorMacro("NextBlendMode: no painter or no brush set.");
@@ -620,11 +623,11 @@ void vtkOFBPainterRepresentation::EndWidgetInteraction(double vtkNotUsed(eventPo
 void vtkOFBPainterRepresentation::UpdateCursorColor()
 {
   vtkOFBBrush* brush = this->GetBrush();
-  const int target = brush ? brush->GetTarget() : vtkOFBBrush::ColorTarget;
-  const double* color = target == vtkOFBBrush::NormalTarget
+  const int target = brush ? brush->GetTarget() : vtkOFBBrush::TARGET_COLOR;
+  const double* color = target == vtkOFBBrush::TARGET_NORMAL
     ? NormalCursorColor
-    : (target == vtkOFBBrush::SmearTarget ? SmearCursorColor
-                                          : (brush ? brush->GetColor() : nullptr));
+    : (target == vtkOFBBrush::TARGET_SMEAR ? SmearCursorColor
+                                           : (brush ? brush->GetColor() : nullptr));
   if (color)
   {
     this->CursorProperty->SetColor(color[0], color[1], color[2]);

@@ -9,6 +9,7 @@
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBLookupFS.h"
+#include "vtkOFBLookupModes.h"
 #include "vtkOFBMapToColors.h"
 #include "vtkOFBShaderStorage.h"
 #include "vtkObjectFactory.h"
@@ -40,7 +41,7 @@ constexpr int DeepCellSamples = 8;
 
 //------------------------------------------------------------------------------
 vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
-  : LookupMode(Nearest)
+  : LookupMode(LOOKUP_NEAREST)
   , InterpolationRadius(std::sqrt(3.0))
   , MipmapBias(0.0)
   , MaximumNumberOfMipmapLevels(8)
@@ -118,18 +119,23 @@ vtkOFB* vtkOFBPolyDataMapper::GetOFB()
 //------------------------------------------------------------------------------
 const char* vtkOFBPolyDataMapper::GetLookupModeAsString(int mode)
 {
-  switch (mode)
+  const vtkOFBLookupModeInfo* info = vtkOFBFindLookupMode(mode);
+  return info ? info->Name : "Unknown";
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::SetLookupMode(int mode)
+{
+  if (!vtkOFBFindLookupMode(mode))
   {
-    case Nearest:
-      return "Nearest";
-    case InverseDistance:
-      return "InverseDistance";
-    case Mipmapped:
-      return "Mipmapped";
-    case NearestMipmapped:
-      return "NearestMipmapped";
-    default:
-      return "Unknown";
+    vtkErrorMacro("SetLookupMode: " << mode << " is not a LookupModes value; the lookup mode stays "
+                                    << GetLookupModeAsString(this->LookupMode) << ".");
+    return;
+  }
+  if (this->LookupMode != mode)
+  {
+    this->LookupMode = mode;
+    this->Modified();
   }
 }
 
@@ -474,7 +480,7 @@ bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorage::Sel
 {
   if (!this->Storage->UpdateLevels(ofb,
         this->GetInput(),
-        this->LookupMode == Mipmapped || this->LookupMode == NearestMipmapped,
+        vtkOFBFindLookupMode(this->LookupMode)->Pyramid,
         this->MaximumNumberOfMipmapLevels,
         this->MinimumMipmapResolution))
   {
@@ -624,8 +630,12 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(std::map<vtkShader::Type, vtkShade
       "#extension GL_ARB_shader_bit_encoding : enable\n"
       "#extension GL_ARB_ES3_1_compatibility : enable\n");
     std::ostringstream defines;
-    defines << "//VTK::Color::Dec\n"
-            << "#define OFB_MODE " << this->LookupMode << "\n"
+    defines << "//VTK::Color::Dec\n";
+    for (const vtkOFBLookupModeInfo& info : vtkOFBLookupModeInfos)
+    {
+      defines << "#define " << info.Define << " " << info.Mode << "\n";
+    }
+    defines << "#define OFB_LOOKUP_MODE " << vtkOFBFindLookupMode(this->LookupMode)->Define << "\n"
             << "#define OFB_MAX_LEVELS " << vtkOFBShaderStorage::MaximumNumberOfLevels << "\n"
             << "#define OFB_LIC_MODE " << this->LICColorMode << "\n";
     const std::pair<bool, const char*> flags[] = { { this->SourceScalars, "OFB_SOURCE_SCALARS" },

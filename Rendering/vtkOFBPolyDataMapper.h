@@ -127,12 +127,14 @@ public:
   vtkTypeMacro(vtkOFBPolyDataMapper, vtkOpenGLPolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// Lookup modes (see the class description). NUMBER_OF_LOOKUP_MODES counts them.
   enum LookupModes
   {
-    Nearest = 0,
-    InverseDistance = 1,
-    Mipmapped = 2,
-    NearestMipmapped = 3
+    LOOKUP_NEAREST = 0,
+    LOOKUP_INVERSE_DISTANCE,
+    LOOKUP_MIPMAPPED,
+    LOOKUP_NEAREST_MIPMAPPED,
+    NUMBER_OF_LOOKUP_MODES
   };
 
   enum ColorSources
@@ -153,15 +155,18 @@ public:
 
   ///@{
   /**
-   * How a fragment's colour is read from the OFB: Nearest (default), InverseDistance,
-   * Mipmapped or NearestMipmapped.
+   * How a fragment's colour is read from the OFB, a LookupModes value: LOOKUP_NEAREST
+   * (default), LOOKUP_INVERSE_DISTANCE, LOOKUP_MIPMAPPED or LOOKUP_NEAREST_MIPMAPPED.
+   * Another value is an error and leaves the mode unchanged. The mode reaches the
+   * fragment shader as OFB_LOOKUP_MODE, one of the defines OFB_LOOKUP_NEAREST, ...
+   * (the enumerators' names with OFB_ for LOOKUP_), which the shader tells apart.
    */
-  vtkSetClampMacro(LookupMode, int, Nearest, NearestMipmapped);
+  void SetLookupMode(int mode);
   vtkGetMacro(LookupMode, int);
-  void SetLookupModeToNearest() { this->SetLookupMode(Nearest); }
-  void SetLookupModeToInverseDistance() { this->SetLookupMode(InverseDistance); }
-  void SetLookupModeToMipmapped() { this->SetLookupMode(Mipmapped); }
-  void SetLookupModeToNearestMipmapped() { this->SetLookupMode(NearestMipmapped); }
+  void SetLookupModeToNearest() { this->SetLookupMode(LOOKUP_NEAREST); }
+  void SetLookupModeToInverseDistance() { this->SetLookupMode(LOOKUP_INVERSE_DISTANCE); }
+  void SetLookupModeToMipmapped() { this->SetLookupMode(LOOKUP_MIPMAPPED); }
+  void SetLookupModeToNearestMipmapped() { this->SetLookupMode(LOOKUP_NEAREST_MIPMAPPED); }
   static const char* GetLookupModeAsString(int mode);
   ///@}
 

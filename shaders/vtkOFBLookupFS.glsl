@@ -3,8 +3,12 @@
 // fragment from the samples of a vtkOFB (paper "Sample-based Surface Coloring", 4.1-4.2).
 //
 // The mapper defines before this text:
-//   OFB_MODE            0 nearest sample, 1 inverse-distance weighting, 2 mipmapped IDW,
-//                       3 nearest sample in the level nearest to the fragment's footprint
+//   OFB_LOOKUP_NEAREST, OFB_LOOKUP_INVERSE_DISTANCE, OFB_LOOKUP_MIPMAPPED,
+//   OFB_LOOKUP_NEAREST_MIPMAPPED
+//                       the lookup modes (vtkOFBPolyDataMapper::LookupModes): nearest
+//                       sample, inverse-distance weighting, mipmapped IDW, nearest sample
+//                       in the level nearest to the fragment's footprint
+//   OFB_LOOKUP_MODE     the mode of this shader, one of those (another is an #error)
 //   OFB_MAX_LEVELS      size of the per-level uniform arrays
 //   OFB_SOURCE_SCALARS  colour from a float sample attribute through a lookup table, else paint
 //   OFB_USE_INTENSITY   a float sample array (the LIC) combines with the colour
@@ -348,15 +352,15 @@ vec3 ofbLevelPosition(int L, vec3 g0)
 // The lookup of the current mode. lod: log2 of the fragment footprint in level-0 cells.
 ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
 {
-#if OFB_MODE == 0
+#if OFB_LOOKUP_MODE == OFB_LOOKUP_NEAREST
   return ofbLookupNearest(0, g0, n);
-#elif OFB_MODE == 1
+#elif OFB_LOOKUP_MODE == OFB_LOOKUP_INVERSE_DISTANCE
   return ofbLookupIDW(0, g0);
-#elif OFB_MODE == 3
+#elif OFB_LOOKUP_MODE == OFB_LOOKUP_NEAREST_MIPMAPPED
   // The level whose cells are nearest to the footprint (level 0 below 1.41 cells).
   int L = clamp(int(floor(lod + ofbMipmapBias + 0.5)), 0, ofbNumberOfLevels - 1);
   return ofbLookupNearest(L, ofbLevelPosition(L, g0), n);
-#else
+#elif OFB_LOOKUP_MODE == OFB_LOOKUP_MIPMAPPED
   float level = clamp(lod + ofbMipmapBias, 0.0, float(ofbNumberOfLevels - 1));
   int l0 = int(floor(level));
   int l1 = min(l0 + 1, ofbNumberOfLevels - 1);
@@ -377,6 +381,8 @@ ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
   acc.normal = a0.normal * w0 + a1.normal * w1;
   acc.weight = (a0.weight > 0.0 ? 1.0 - t : 0.0) + (a1.weight > 0.0 ? t : 0.0);
   return acc;
+#else
+#error unknown lookup mode (OFB_LOOKUP_MODE)
 #endif
 }
 

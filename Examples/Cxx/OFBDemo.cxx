@@ -459,12 +459,13 @@ struct Scene
     this->CloudActor->GetProperty()->SetPointSize(1.5);
     this->SurfaceMapper->SetInputData(mesh);
     this->SurfaceMapper->SetOFB(ofb);
-    const std::map<std::string, int> modes = { { "idw", vtkOFBPolyDataMapper::InverseDistance },
-      { "mipmap", vtkOFBPolyDataMapper::Mipmapped },
-      { "nearestmipmap", vtkOFBPolyDataMapper::NearestMipmapped } };
+    const std::map<std::string, int> modes = { { "idw",
+                                                 vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE },
+      { "mipmap", vtkOFBPolyDataMapper::LOOKUP_MIPMAPPED },
+      { "nearestmipmap", vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED } };
     const auto mode = modes.find(options.Lookup);
     this->SurfaceMapper->SetLookupMode(
-      mode != modes.end() ? mode->second : vtkOFBPolyDataMapper::Nearest);
+      mode != modes.end() ? mode->second : vtkOFBPolyDataMapper::LOOKUP_NEAREST);
     this->SurfaceActor->SetMapper(this->SurfaceMapper);
     for (vtkActor* actor : { this->CloudActor.Get(), this->SurfaceActor.Get() })
     {

@@ -111,7 +111,8 @@ struct App
          << "d display: "
          << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode())
          << ", x export to " << this->ExportPath;
-    if (this->Animating && this->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::NearestMipmapped)
+    if (this->Animating &&
+      this->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED)
     {
       // The first loop filters each phase's LIC down the pyramid (slow), the
       // next ones take the levels kept by the pyramid.
@@ -158,10 +159,10 @@ struct App
     }
     else if (key == "d")
     {
-      static const int next[4] = { vtkOFBPolyDataMapper::InverseDistance,
-        vtkOFBPolyDataMapper::NearestMipmapped,
-        vtkOFBPolyDataMapper::InverseDistance,
-        vtkOFBPolyDataMapper::Nearest };
+      static const int next[4] = { vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
+        vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED,
+        vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
+        vtkOFBPolyDataMapper::LOOKUP_NEAREST };
       this->Mapper->SetLookupMode(next[this->Mapper->GetLookupMode()]);
     }
     else if (key == "space")

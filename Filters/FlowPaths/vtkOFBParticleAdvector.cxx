@@ -49,11 +49,8 @@ vtkOFBParticleAdvector::vtkOFBParticleAdvector()
   , ChainSpacing(1)
   , ColorMode(COLOR_CONSTANT)
   , Color{ 1.0, 0.0, 0.0 }
-  , Opacity(1.0)
   , FootprintRadius(2.5)
-  , Falloff(vtkOFBBrush::Constant)
-  , BlendMode(vtkOFBBrush::Mix)
-  , SmearAmount(0.0)
+  , Brush(vtkSmartPointer<vtkOFBBrush>::New())
   , Paint(true)
   , ColorPeriod(60)
   , SeedColorArrayName(nullptr)
@@ -66,9 +63,8 @@ vtkOFBParticleAdvector::vtkOFBParticleAdvector()
   this->SetNumberOfOutputPorts(3);
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+  this->Brush->SetFalloffToConstant();
   this->Internals->Painter = vtkSmartPointer<vtkOFBPainter>::New();
-  this->Internals->Brush = vtkSmartPointer<vtkOFBBrush>::New();
-  this->Internals->Painter->SetBrush(this->Internals->Brush);
   this->Internals->Painter->SetUndoLimit(0);
   this->Internals->Footprints = vtkSmartPointer<vtkPolyData>::New();
   this->Internals->Footprints->SetPoints(this->Internals->Arrays.DabPoints);
@@ -101,6 +97,29 @@ void vtkOFBParticleAdvector::SetOFB(vtkOFB* ofb)
     old->UnRegister(this);
   }
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::SetBrush(vtkOFBBrush* brush)
+{
+  if (this->Brush != brush)
+  {
+    this->Brush = brush;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFBBrush* vtkOFBParticleAdvector::GetBrush() const
+{
+  return this->Brush;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkOFBParticleAdvector::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  return this->Brush ? std::max(t, this->Brush->GetMTime()) : t;
 }
 
 //------------------------------------------------------------------------------
@@ -438,11 +457,12 @@ void vtkOFBParticleAdvector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ColorMode: " << GetColorModeAsString(this->ColorMode) << "\n";
   os << indent << "Color: " << this->Color[0] << " " << this->Color[1] << " " << this->Color[2]
      << "\n";
-  os << indent << "Opacity: " << this->Opacity << "\n";
   os << indent << "FootprintRadius: " << this->FootprintRadius << " cells\n";
-  os << indent << "Falloff: " << vtkOFBBrush::GetFalloffAsString(this->Falloff) << "\n";
-  os << indent << "BlendMode: " << vtkOFBBrush::GetBlendModeAsString(this->BlendMode) << "\n";
-  os << indent << "SmearAmount: " << this->SmearAmount << "\n";
+  os << indent << "Brush: " << this->Brush.GetPointer() << "\n";
+  if (this->Brush)
+  {
+    this->Brush->PrintSelf(os, indent.GetNextIndent());
+  }
   os << indent << "Paint: " << (this->Paint ? "On" : "Off") << "\n";
   os << indent << "ColorPeriod: " << this->ColorPeriod << " steps\n";
   os << indent

@@ -38,11 +38,13 @@
  * Each step every moving particle advances with the integrator (Euler, midpoint
  * RK2, classical RK4, or Cash-Karp RK45 in sub-steps whose error is kept under
  * ErrorTolerance cells), then paints a footprint at its new position through a
- * vtkOFBPainter: a volume brush of radius FootprintRadius cells, strength Opacity,
- * in the particle's colour, with the advector's Falloff and BlendMode. With
- * SmearAmount > 0 the footprint carries the colour found at the particle's
- * previous position (paper Eq. 3). The footprints of a step are painted together,
- * in particle order, which gives the same result with any number of threads.
+ * vtkOFBPainter with the advector's brush (GetBrush()): its falloff, blend mode,
+ * target, strength (the footprints' opacity) and the rest, except its radius and
+ * colour: a footprint has a radius of FootprintRadius cells and the particle's
+ * colour. With the brush's Smear target the footprint carries the colour found at the
+ * particle's previous position, by the brush's SmearAmount (paper Eq. 3). The
+ * footprints of a step are painted together, in particle order, which gives the same
+ * result with any number of threads.
  *
  * A particle stops where the field is zero or where it reaches a boundary edge of
  * an open surface. Without a Lifetime a stopped particle stays (no particle is
@@ -55,13 +57,13 @@
  * Chains (paper 6.2.1): with ChainLength L > 1 each seed releases L particles, one
  * every ChainSpacing steps: particle k of a chain (k = 0 the first) appears at its
  * seed when the step count reaches k * ChainSpacing (painting a footprint there)
- * and moves from the next step on. It paints with radius FootprintRadius * (1 - k / L) and strength
- * Opacity * (1 - k / L): the later ones, which follow behind, leave smaller,
- * fainter footprints, a tail.
+ * and moves from the next step on. It paints with radius FootprintRadius * (1 - k / L) and
+ * strength (the brush's Strength) * (1 - k / L): the later ones, which follow behind, leave
+ * smaller, fainter footprints, a tail.
  *
  * Colour modes: Constant (Color), FromSeeds (the seed point array
  * SeedColorArrayName, or the seeds' active scalars: unsigned char 0-255 or
- * floating point in [0, 1], 1 (grey), 3 or 4 (alpha times Opacity) components),
+ * floating point in [0, 1], 1 (grey), 3 or 4 (alpha times the brush's Strength) components),
  * ByScalar (the surface point array ScalarArrayName, component 0, interpolated at
  * the particle through LookupTable; without one a blue-to-red table over the
  * array's range), Periodic (the paper's Fig. 6: at step s the colour goes from
@@ -80,7 +82,7 @@
  * Outputs: port 0 the painted OFB; port 1 the particles as vertices, with point
  * arrays "Velocity" (the field at the particle in its tangent plane, world units,
  * reversed for backward tracing), "Age" (steps since release or reseed), "Id",
- * "ChainIndex" and "Color" (RGBA unsigned char, alpha the opacity); port 2 their
+ * "ChainIndex" and "Color" (RGBA unsigned char, alpha the footprint's strength); port 2 their
  * trails, a polyline of each particle's last TrailLength positions (with "Id").
  * Particles of a chain not yet released are not in the outputs.
  *
@@ -92,11 +94,13 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkOFBFlowPathsModule.h" // for export macro
+#include "vtkSmartPointer.h"       // for member
 
 #include <memory> // for std::unique_ptr
 
 class vtkAlgorithmOutput;
 class vtkOFB;
+class vtkOFBBrush;
 class vtkDataSet;
 class vtkPolyData;
 class vtkScalarsToColors;
@@ -282,15 +286,8 @@ public:
 
   ///@{
   /**
-   * Footprint opacity in [0, 1], the brush strength (default 1).
-   */
-  vtkSetClampMacro(Opacity, double, 0.0, 1.0);
-  vtkGetMacro(Opacity, double);
-  ///@}
-
-  ///@{
-  /**
-   * Footprint radius in cells (default 2.5).
+   * Footprint radius in cells (default 2.5). The brush's Radius, in world units, is
+   * not used.
    */
   vtkSetClampMacro(FootprintRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(FootprintRadius, double);
@@ -298,22 +295,14 @@ public:
 
   ///@{
   /**
-   * Falloff and blend mode of the footprints (vtkOFBBrush's values; defaults
-   * Constant and Mix).
+   * The brush of the footprints (a default vtkOFBBrush unless set, with the Constant
+   * falloff): falloff, blend mode, target (Color, or Smear for paper Eq. 3; Normal
+   * paints bumps into an OFB with normals), Strength (the footprints' opacity,
+   * default 1) and SmearAmount. Its Radius and Color are not used (see the class
+   * description). A change of the brush applies from the next step.
    */
-  vtkSetMacro(Falloff, int);
-  vtkGetMacro(Falloff, int);
-  vtkSetMacro(BlendMode, int);
-  vtkGetMacro(BlendMode, int);
-  ///@}
-
-  ///@{
-  /**
-   * Smear (paper Eq. 3) in [0, 1]: how much of the colour at the particle's
-   * previous position replaces its own colour in its footprint (default 0).
-   */
-  vtkSetClampMacro(SmearAmount, double, 0.0, 1.0);
-  vtkGetMacro(SmearAmount, double);
+  void SetBrush(vtkOFBBrush* brush);
+  vtkOFBBrush* GetBrush() const;
   ///@}
 
   ///@{
@@ -371,6 +360,11 @@ public:
   vtkSetClampMacro(MemoryLimit, vtkIdType, 1, VTK_ID_MAX);
   vtkGetMacro(MemoryLimit, vtkIdType);
   ///@}
+
+  /**
+   * Modification time including the brush's.
+   */
+  vtkMTimeType GetMTime() override;
 
   /**
    * Advance StepsPerUpdate steps now (updating the inputs first) and update the
@@ -459,11 +453,8 @@ protected:
   int ChainSpacing;
   int ColorMode;
   double Color[3];
-  double Opacity;
   double FootprintRadius;
-  int Falloff;
-  int BlendMode;
-  double SmearAmount;
+  vtkSmartPointer<vtkOFBBrush> Brush;
   bool Paint;
   int ColorPeriod;
   char* SeedColorArrayName;

@@ -15,7 +15,6 @@ class vtkDoubleArray;
 class vtkFloatArray;
 class vtkIdTypeArray;
 class vtkIntArray;
-class vtkOFBBrush;
 class vtkOFBPainter;
 class vtkPoints;
 class vtkStaticCellLocator;
@@ -85,9 +84,8 @@ public:
   vtkOFBTriangleWalker Walker;
   vtkOFBParticleSystem System;
   vtkSmartPointer<vtkStaticCellLocator> Locator;
-  vtkSmartPointer<vtkOFB> Copy; // the painted copy of the port-1 OFB
-  vtkSmartPointer<vtkOFBPainter> Painter;
-  vtkSmartPointer<vtkOFBBrush> Brush;
+  vtkSmartPointer<vtkOFB> Copy;           // the painted copy of the port-1 OFB
+  vtkSmartPointer<vtkOFBPainter> Painter; // paints with the advector's brush
   vtkSmartPointer<vtkPolyData> Footprints;
   vtkOFBParticleArrays Arrays;
   vtkSmartPointer<vtkPolyData> Surface; // the input's triangles

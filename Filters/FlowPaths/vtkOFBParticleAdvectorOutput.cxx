@@ -98,7 +98,9 @@ void vtkOFBParticleAdvector::PaintFootprints()
   vtkInternals& in = *this->Internals;
   vtkOFBParticleArrays& arrays = in.Arrays;
   const vtkOFBParticleSystem& system = in.System;
-  const bool smear = this->SmearAmount > 0.0;
+  vtkOFBBrush* brush = this->Brush;
+  const bool smear = brush->GetTarget() == vtkOFBBrush::TARGET_SMEAR;
+  const double opacity = brush->GetStrength();
   vtkIdType count = 0;
   for (const auto& p : system.Particles)
   {
@@ -121,7 +123,7 @@ void vtkOFBParticleAdvector::PaintFootprints()
     radius[k] = this->FootprintRadius * in.CellSize * w;
     std::copy_n(p.Color, 3, color + 4 * k);
     color[4 * k + 3] = 1.f;
-    strength[k] = this->Opacity * p.Color[3] * w;
+    strength[k] = opacity * p.Color[3] * w;
     if (previous)
     {
       std::copy_n(&p.Previous[0], 3, previous + 3 * k);
@@ -153,18 +155,7 @@ void vtkOFBParticleAdvector::PaintFootprints()
   {
     return;
   }
-  vtkOFBBrush* brush = in.Brush;
-  brush->SetFalloff(this->Falloff);
-  brush->SetBlendMode(this->BlendMode);
-  if (smear)
-  {
-    brush->SetTargetToSmear();
-    brush->SetSmearAmount(this->SmearAmount);
-  }
-  else
-  {
-    brush->SetTargetToColor();
-  }
+  in.Painter->SetBrush(brush);
   if (in.Painter->GetOFB() != in.Target)
   {
     in.Painter->SetOFB(in.Target);
@@ -209,7 +200,7 @@ void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
     slots[i] = k;
     k += system.Particles[i].Status != vtkOFBParticleSystem::Waiting ? 1 : 0;
   }
-  const double opacity = this->Opacity;
+  const double opacity = this->Brush->GetStrength();
   vtkSMPTools::For(0,
     n,
     [&](vtkIdType begin, vtkIdType end)

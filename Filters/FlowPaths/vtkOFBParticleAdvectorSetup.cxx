@@ -3,6 +3,8 @@
 #include "vtkOFBParticleAdvector.h"
 #include "vtkOFBParticleAdvectorInternals.h"
 
+#include "vtkOFBBrush.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellDataToPointData.h"
@@ -60,16 +62,23 @@ bool vtkOFBParticleAdvector::CheckSettings()
     vtkErrorMacro("StepSize must be positive and finite (cells), not " << this->StepSize << ".");
     return false;
   }
-  // NaN passes the setters' clamps: a NaN radius painted nothing without a word.
-  const double values[4] = {
-    this->FootprintRadius, this->Color[0], this->Color[1], this->Color[2]
-  };
-  if (!std::all_of(values, values + 4, [](double v) { return std::isfinite(v); }) ||
-    !std::isfinite(this->Opacity) || !std::isfinite(this->SmearAmount))
+  if (!this->Brush)
   {
-    vtkErrorMacro("FootprintRadius, Color, Opacity and SmearAmount must be finite (they are "
+    vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
+    return false;
+  }
+  // NaN passes the setters' clamps: a NaN radius painted nothing without a word.
+  const double strength = this->Brush->GetStrength();
+  const double smear = this->Brush->GetSmearAmount();
+  const double values[6] = {
+    this->FootprintRadius, this->Color[0], this->Color[1], this->Color[2], strength, smear
+  };
+  if (!std::all_of(values, values + 6, [](double v) { return std::isfinite(v); }))
+  {
+    vtkErrorMacro("FootprintRadius, Color and the brush's Strength and SmearAmount must be "
+                  "finite (they are "
       << this->FootprintRadius << "; " << this->Color[0] << ", " << this->Color[1] << ", "
-      << this->Color[2] << "; " << this->Opacity << "; " << this->SmearAmount << ").");
+      << this->Color[2] << "; " << strength << "; " << smear << ").");
     return false;
   }
   return true;

@@ -1,6 +1,7 @@
 #include "vtkOFBBrush.h"
 
 #include "vtkOFB.h"
+#include "vtkOFBBrushFunctions.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 
@@ -13,9 +14,9 @@ vtkStandardNewMacro(vtkOFBBrush);
 vtkOFBBrush::vtkOFBBrush()
   : Radius(1.0)
   , Strength(1.0)
-  , Falloff(Smooth)
-  , BlendMode(Mix)
-  , Target(ColorTarget)
+  , Falloff(FALLOFF_SMOOTH)
+  , BlendMode(BLEND_MIX)
+  , Target(TARGET_COLOR)
   , SmearAmount(1.0)
   , BumpDepth(0.5)
   , NormalAware(false)
@@ -77,58 +78,145 @@ double vtkOFBBrush::EvaluateFalloff(double normalizedDistance) const
 //------------------------------------------------------------------------------
 double vtkOFBBrush::EvaluateFalloff(int falloff, double x, vtkPiecewiseFunction* custom)
 {
-  if (!(x <= 1.0))
+  if (falloff < 0 || falloff >= NUMBER_OF_FALLOFFS)
   {
-    return 0.0; // outside the support, or NaN
+    return 0.0; // not a falloff (an int outside the enumeration is no FalloffType)
   }
-  x = std::max(x, 0.0);
-  const double t = 1.0 - x;
-  switch (falloff)
+  return vtkofbbrush::Falloff(static_cast<FalloffType>(falloff),
+    x,
+    [custom](double at)
+    { return custom ? std::min(1.0, std::max(0.0, custom->GetValue(at))) : 1.0; });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBBrush::SetFalloff(int falloff)
+{
+  if (falloff < 0 || falloff >= NUMBER_OF_FALLOFFS)
   {
-    case Constant:
-      return 1.0;
-    case Linear:
-      return t;
-    case Smooth:
-      return t * t * (3.0 - 2.0 * t);
-    case Sphere:
-      return std::sqrt(std::max(0.0, 1.0 - x * x));
-    case Root:
-      return std::sqrt(t);
-    case Sharp:
-      return t * t;
-    case Gaussian:
-      return std::exp(-4.5 * x * x);
-    case Custom:
-      return custom ? std::min(1.0, std::max(0.0, custom->GetValue(x))) : 1.0;
-    default:
-      return 0.0;
+    vtkErrorMacro("SetFalloff: " << falloff << " is not a FalloffType; the falloff stays "
+                                 << vtkOFBBrush::GetFalloffAsString(this->Falloff) << ".");
+    return;
+  }
+  if (this->Falloff != falloff)
+  {
+    this->Falloff = falloff;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBBrush::SetBlendMode(int mode)
+{
+  if (mode < 0 || mode >= NUMBER_OF_BLEND_MODES)
+  {
+    vtkErrorMacro("SetBlendMode: " << mode << " is not a BlendModeType; the blend mode stays "
+                                   << vtkOFBBrush::GetBlendModeAsString(this->BlendMode) << ".");
+    return;
+  }
+  if (this->BlendMode != mode)
+  {
+    this->BlendMode = mode;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBBrush::SetTarget(int target)
+{
+  if (target < 0 || target >= NUMBER_OF_TARGETS)
+  {
+    vtkErrorMacro("SetTarget: " << target << " is not a TargetType; the target stays "
+                                << vtkOFBBrush::GetTargetAsString(this->Target) << ".");
+    return;
+  }
+  if (this->Target != target)
+  {
+    this->Target = target;
+    this->Modified();
   }
 }
 
 //------------------------------------------------------------------------------
 const char* vtkOFBBrush::GetFalloffAsString(int falloff)
 {
-  static const char* names[] = {
-    "Constant", "Linear", "Smooth", "Sphere", "Root", "Sharp", "Gaussian", "Custom"
-  };
-  return falloff >= Constant && falloff <= Custom ? names[falloff] : "Unknown";
+  if (falloff < 0 || falloff >= NUMBER_OF_FALLOFFS)
+  {
+    return "Unknown";
+  }
+  switch (static_cast<FalloffType>(falloff))
+  {
+    case FALLOFF_CONSTANT:
+      return "Constant";
+    case FALLOFF_LINEAR:
+      return "Linear";
+    case FALLOFF_SMOOTH:
+      return "Smooth";
+    case FALLOFF_SPHERE:
+      return "Sphere";
+    case FALLOFF_ROOT:
+      return "Root";
+    case FALLOFF_SHARP:
+      return "Sharp";
+    case FALLOFF_GAUSSIAN:
+      return "Gaussian";
+    case FALLOFF_CUSTOM:
+      return "Custom";
+    case NUMBER_OF_FALLOFFS:
+      break;
+  }
+  return "Unknown";
 }
 
 //------------------------------------------------------------------------------
 const char* vtkOFBBrush::GetBlendModeAsString(int mode)
 {
-  static const char* names[] = {
-    "Mix", "Add", "Subtract", "Multiply", "Lighten", "Darken", "Erase", "EraseAlpha"
-  };
-  return mode >= Mix && mode <= EraseAlpha ? names[mode] : "Unknown";
+  if (mode < 0 || mode >= NUMBER_OF_BLEND_MODES)
+  {
+    return "Unknown";
+  }
+  switch (static_cast<BlendModeType>(mode))
+  {
+    case BLEND_MIX:
+      return "Mix";
+    case BLEND_ADD:
+      return "Add";
+    case BLEND_SUBTRACT:
+      return "Subtract";
+    case BLEND_MULTIPLY:
+      return "Multiply";
+    case BLEND_LIGHTEN:
+      return "Lighten";
+    case BLEND_DARKEN:
+      return "Darken";
+    case BLEND_ERASE:
+      return "Erase";
+    case BLEND_ERASE_ALPHA:
+      return "EraseAlpha";
+    case NUMBER_OF_BLEND_MODES:
+      break;
+  }
+  return "Unknown";
 }
 
 //------------------------------------------------------------------------------
 const char* vtkOFBBrush::GetTargetAsString(int target)
 {
-  static const char* names[] = { "Color", "Normal", "Smear" };
-  return target >= ColorTarget && target <= SmearTarget ? names[target] : "Unknown";
+  if (target < 0 || target >= NUMBER_OF_TARGETS)
+  {
+    return "Unknown";
+  }
+  switch (static_cast<TargetType>(target))
+  {
+    case TARGET_COLOR:
+      return "Color";
+    case TARGET_NORMAL:
+      return "Normal";
+    case TARGET_SMEAR:
+      return "Smear";
+    case NUMBER_OF_TARGETS:
+      break;
+  }
+  return "Unknown";
 }
 
 //------------------------------------------------------------------------------

@@ -35,12 +35,18 @@
  *              vtkOFBPainter); the brush colour is not used.
  *   EraseAlpha alpha = Ad * (1 - G); RGB unchanged.
  *
- * The target says what the dab paints: `ColorTarget` (the "Colors" sample array),
- * `NormalTarget` (bumps in the "Normals" sample array, paper section 9.2.1, rendered by
- * vtkOFBPolyDataMapper with UsePaintedNormals) or `SmearTarget` (the colour carried
+ * The target says what the dab paints: `TARGET_COLOR` (the "Colors" sample array),
+ * `TARGET_NORMAL` (bumps in the "Normals" sample array, paper section 9.2.1, rendered by
+ * vtkOFBPolyDataMapper with UsePaintedNormals) or `TARGET_SMEAR` (the colour carried
  * from the previous dab position of a stroke, paper Eq. 3 and section 6.2.2).
  *
- * A brush is a description only; vtkOFBPainter applies it.
+ * The falloff formulas and blend functions are written once, in the private header
+ * vtkOFBBrushFunctions.h, which EvaluateFalloff and vtkOFBPainter's kernel both use.
+ * The setters refuse a value that is not one of the enumerators, with an error, and
+ * keep the previous setting.
+ *
+ * A brush is a description only; vtkOFBPainter (and through it vtkOFBPaintFilter and
+ * vtkOFBParticleAdvector) applies it.
  *
  * @sa vtkOFBPainter vtkOFBPaintFilter
  */
@@ -63,37 +69,41 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Falloff curves F over the normalized distance (see the class description).
+  /// NUMBER_OF_FALLOFFS counts them (not a falloff).
   enum FalloffType
   {
-    Constant = 0,
-    Linear,
-    Smooth,
-    Sphere,
-    Root,
-    Sharp,
-    Gaussian,
-    Custom
+    FALLOFF_CONSTANT = 0,
+    FALLOFF_LINEAR,
+    FALLOFF_SMOOTH,
+    FALLOFF_SPHERE,
+    FALLOFF_ROOT,
+    FALLOFF_SHARP,
+    FALLOFF_GAUSSIAN,
+    FALLOFF_CUSTOM,
+    NUMBER_OF_FALLOFFS
   };
 
-  /// Blend modes (see the class description).
+  /// Blend modes (see the class description). NUMBER_OF_BLEND_MODES counts them.
   enum BlendModeType
   {
-    Mix = 0,
-    Add,
-    Subtract,
-    Multiply,
-    Lighten,
-    Darken,
-    Erase,
-    EraseAlpha
+    BLEND_MIX = 0,
+    BLEND_ADD,
+    BLEND_SUBTRACT,
+    BLEND_MULTIPLY,
+    BLEND_LIGHTEN,
+    BLEND_DARKEN,
+    BLEND_ERASE,
+    BLEND_ERASE_ALPHA,
+    NUMBER_OF_BLEND_MODES
   };
 
-  /// What a dab paints.
+  /// What a dab paints. NUMBER_OF_TARGETS counts them.
   enum TargetType
   {
-    ColorTarget = 0,
-    NormalTarget,
-    SmearTarget
+    TARGET_COLOR = 0,
+    TARGET_NORMAL,
+    TARGET_SMEAR,
+    NUMBER_OF_TARGETS
   };
 
   ///@{
@@ -133,18 +143,20 @@ public:
 
   ///@{
   /**
-   * Falloff curve (default Smooth).
+   * Falloff curve, a FalloffType (default FALLOFF_SMOOTH). Another value is an error
+   * and leaves the falloff unchanged. GetFalloffAsString gives "Unknown" for a value
+   * that is not a falloff.
    */
-  vtkSetClampMacro(Falloff, int, Constant, Custom);
+  void SetFalloff(int falloff);
   vtkGetMacro(Falloff, int);
-  void SetFalloffToConstant() { this->SetFalloff(Constant); }
-  void SetFalloffToLinear() { this->SetFalloff(Linear); }
-  void SetFalloffToSmooth() { this->SetFalloff(Smooth); }
-  void SetFalloffToSphere() { this->SetFalloff(Sphere); }
-  void SetFalloffToRoot() { this->SetFalloff(Root); }
-  void SetFalloffToSharp() { this->SetFalloff(Sharp); }
-  void SetFalloffToGaussian() { this->SetFalloff(Gaussian); }
-  void SetFalloffToCustom() { this->SetFalloff(Custom); }
+  void SetFalloffToConstant() { this->SetFalloff(FALLOFF_CONSTANT); }
+  void SetFalloffToLinear() { this->SetFalloff(FALLOFF_LINEAR); }
+  void SetFalloffToSmooth() { this->SetFalloff(FALLOFF_SMOOTH); }
+  void SetFalloffToSphere() { this->SetFalloff(FALLOFF_SPHERE); }
+  void SetFalloffToRoot() { this->SetFalloff(FALLOFF_ROOT); }
+  void SetFalloffToSharp() { this->SetFalloff(FALLOFF_SHARP); }
+  void SetFalloffToGaussian() { this->SetFalloff(FALLOFF_GAUSSIAN); }
+  void SetFalloffToCustom() { this->SetFalloff(FALLOFF_CUSTOM); }
   static const char* GetFalloffAsString(int falloff);
   ///@}
 
@@ -165,36 +177,39 @@ public:
   double EvaluateFalloff(double normalizedDistance) const;
 
   /**
-   * F(x) of falloff `falloff` (Custom uses `custom`, constant 1 when null).
+   * F(x) of falloff `falloff` (Custom uses `custom`, constant 1 when null); 0 for a
+   * value that is not a falloff.
    */
   static double EvaluateFalloff(int falloff, double x, vtkPiecewiseFunction* custom = nullptr);
 
   ///@{
   /**
-   * Blend mode (default Mix).
+   * Blend mode, a BlendModeType (default BLEND_MIX). Another value is an error and
+   * leaves the blend mode unchanged.
    */
-  vtkSetClampMacro(BlendMode, int, Mix, EraseAlpha);
+  void SetBlendMode(int mode);
   vtkGetMacro(BlendMode, int);
-  void SetBlendModeToMix() { this->SetBlendMode(Mix); }
-  void SetBlendModeToAdd() { this->SetBlendMode(Add); }
-  void SetBlendModeToSubtract() { this->SetBlendMode(Subtract); }
-  void SetBlendModeToMultiply() { this->SetBlendMode(Multiply); }
-  void SetBlendModeToLighten() { this->SetBlendMode(Lighten); }
-  void SetBlendModeToDarken() { this->SetBlendMode(Darken); }
-  void SetBlendModeToErase() { this->SetBlendMode(Erase); }
-  void SetBlendModeToEraseAlpha() { this->SetBlendMode(EraseAlpha); }
+  void SetBlendModeToMix() { this->SetBlendMode(BLEND_MIX); }
+  void SetBlendModeToAdd() { this->SetBlendMode(BLEND_ADD); }
+  void SetBlendModeToSubtract() { this->SetBlendMode(BLEND_SUBTRACT); }
+  void SetBlendModeToMultiply() { this->SetBlendMode(BLEND_MULTIPLY); }
+  void SetBlendModeToLighten() { this->SetBlendMode(BLEND_LIGHTEN); }
+  void SetBlendModeToDarken() { this->SetBlendMode(BLEND_DARKEN); }
+  void SetBlendModeToErase() { this->SetBlendMode(BLEND_ERASE); }
+  void SetBlendModeToEraseAlpha() { this->SetBlendMode(BLEND_ERASE_ALPHA); }
   static const char* GetBlendModeAsString(int mode);
   ///@}
 
   ///@{
   /**
-   * Target (default ColorTarget).
+   * Target, a TargetType (default TARGET_COLOR). Another value is an error and leaves
+   * the target unchanged.
    */
-  vtkSetClampMacro(Target, int, ColorTarget, SmearTarget);
+  void SetTarget(int target);
   vtkGetMacro(Target, int);
-  void SetTargetToColor() { this->SetTarget(ColorTarget); }
-  void SetTargetToNormal() { this->SetTarget(NormalTarget); }
-  void SetTargetToSmear() { this->SetTarget(SmearTarget); }
+  void SetTargetToColor() { this->SetTarget(TARGET_COLOR); }
+  void SetTargetToNormal() { this->SetTarget(TARGET_NORMAL); }
+  void SetTargetToSmear() { this->SetTarget(TARGET_SMEAR); }
   static const char* GetTargetAsString(int target);
   ///@}
 

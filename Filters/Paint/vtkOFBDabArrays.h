@@ -1,6 +1,5 @@
 // Private header of vtkOFBPainter and vtkOFBPaintFilter: the optional per-point arrays of
-// dabs and strokes ("Radius", "Color", ...), checked before they are read, and the
-// distance between the dabs of a stroke.
+// dabs and strokes ("Radius", "Color", ...), checked before they are read.
 #ifndef vtkOFBDabArrays_h
 #define vtkOFBDabArrays_h
 
@@ -11,19 +10,6 @@
 #include <algorithm>
 #include <sstream>
 #include <string>
-
-/**
- * The path length between two dabs of a stroke: `spacing` radii, but at least an eighth
- * of an OFB cell (dabs closer than that paint the same samples, and a radius of 0, from a
- * pressure of 0, or of 1e-12 would place billions of them).
- */
-inline double vtkOFBDabStep(double spacing, double radius, double cellSize)
-{
-  return std::max({ spacing * radius, 0.125 * cellSize, 1e-300 });
-}
-
-/// The most dabs one call may place along strokes (about 2 GB of them): more is an error.
-constexpr double vtkOFBMaximumStrokeDabs = 16777216.0;
 
 /**
  * Finds the per-point arrays of `Data`. An array that is absent is fine (the brush's

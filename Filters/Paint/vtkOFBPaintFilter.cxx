@@ -13,6 +13,7 @@
 #include "vtkOFBBrush.h"
 #include "vtkOFBDabArrays.h"
 #include "vtkOFBPainter.h"
+#include "vtkOFBStrokeSampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -117,16 +118,10 @@ struct DabArrays
 //------------------------------------------------------------------------------
 vtkOFBPaintFilter::vtkOFBPaintFilter()
   : Brush(vtkSmartPointer<vtkOFBBrush>::New())
-  , Spacing(0.25)
-  , MirrorX(false)
-  , MirrorY(false)
-  , MirrorZ(false)
+  , Painter(vtkSmartPointer<vtkOFBPainter>::New())
   , NumberOfChangedSamples(0)
 {
   this->SetNumberOfInputPorts(2);
-  this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 1.0;
-  this->DefaultColor[3] = 1.0;
-  this->MirrorOrigin[0] = this->MirrorOrigin[1] = this->MirrorOrigin[2] = 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -161,10 +156,27 @@ vtkOFBBrush* vtkOFBPaintFilter::GetBrush() const
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBPaintFilter::SetPainter(vtkOFBPainter* painter)
+{
+  if (this->Painter != painter)
+  {
+    this->Painter = painter;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPainter* vtkOFBPaintFilter::GetPainter() const
+{
+  return this->Painter;
+}
+
+//------------------------------------------------------------------------------
 vtkMTimeType vtkOFBPaintFilter::GetMTime()
 {
   vtkMTimeType t = this->Superclass::GetMTime();
-  return this->Brush ? std::max(t, this->Brush->GetMTime()) : t;
+  t = this->Brush ? std::max(t, this->Brush->GetMTime()) : t;
+  return this->Painter ? std::max(t, this->Painter->GetMTime()) : t;
 }
 
 //------------------------------------------------------------------------------
@@ -220,6 +232,7 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, d
   }
 
   // The dabs the strokes will place, at most (each segment at its smaller radius).
+  const double spacing = this->Painter->GetSpacing();
   const bool byPressure = this->Brush->GetPressureAffectsRadius();
   auto radiusAt = [&](vtkIdType i) { return v.RadiusAt(i) * (byPressure ? v.PressureAt(i) : 1.0); };
   double expected = 0.0;
@@ -233,8 +246,10 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, d
       double a[3], b[3];
       strokes->GetPoint(ids[k - 1], a);
       strokes->GetPoint(ids[k], b);
-      expected += std::sqrt(vtkMath::Distance2BetweenPoints(a, b)) /
-        vtkOFBDabStep(this->Spacing, std::min(radiusAt(ids[k - 1]), radiusAt(ids[k])), cellSize);
+      expected += vtkOFBStrokeSampler::MostDabs(std::sqrt(vtkMath::Distance2BetweenPoints(a, b)),
+        spacing,
+        std::min(radiusAt(ids[k - 1]), radiusAt(ids[k])),
+        cellSize);
     }
   }
   if (expected > vtkOFBMaximumStrokeDabs)
@@ -256,7 +271,7 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, d
       out.Add(v, ids[k], ids[k], 0.0, none);
     }
   }
-  // Strokes: dabs every Spacing * radius of path length, the radius at the last dab.
+  // Strokes: the first dab at the first point, then the painter's walk.
   for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
   {
     if (n == 0)
@@ -266,27 +281,23 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, d
     out.Add(v, ids[0], ids[0], 0.0, none);
     double last[3];
     strokes->GetPoint(ids[0], last);
-    double lastRadius = v.RadiusAt(ids[0]) * (byPressure ? v.PressureAt(ids[0]) : 1.0);
-    double since = 0.0;
+    vtkOFBStrokeSampler sampler;
+    sampler.Start(radiusAt(ids[0]));
     for (vtkIdType k = 1; k < n; ++k)
     {
       double a[3], b[3];
       strokes->GetPoint(ids[k - 1], a);
       strokes->GetPoint(ids[k], b);
-      const double length = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-      double s = vtkOFBDabStep(this->Spacing, lastRadius, cellSize) - since;
-      double lastS = -since;
-      while (s <= length && length > 0.0)
-      {
-        const double t = s / length;
-        out.Add(v, ids[k - 1], ids[k], t, last);
-        out.Points->GetPoint(out.Points->GetNumberOfPoints() - 1, last);
-        lastRadius = out.Radius->GetValue(out.Radius->GetNumberOfTuples() - 1) *
-          (byPressure ? out.Pressure->GetValue(out.Pressure->GetNumberOfTuples() - 1) : 1.0);
-        lastS = s;
-        s += vtkOFBDabStep(this->Spacing, lastRadius, cellSize);
-      }
-      since = length - lastS;
+      sampler.Walk(std::sqrt(vtkMath::Distance2BetweenPoints(a, b)),
+        spacing,
+        cellSize,
+        [&](double t)
+        {
+          out.Add(v, ids[k - 1], ids[k], t, last);
+          const vtkIdType added = out.Points->GetNumberOfPoints() - 1;
+          out.Points->GetPoint(added, last);
+          return out.Radius->GetValue(added) * (byPressure ? out.Pressure->GetValue(added) : 1.0);
+        });
     }
   }
 
@@ -326,9 +337,9 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
     vtkErrorMacro("The input OFB is missing or has no samples: empty output.");
     return 1;
   }
-  if (!this->Brush)
+  if (!this->Brush || !this->Painter)
   {
-    vtkErrorMacro("No brush: empty output.");
+    vtkErrorMacro("No brush or no painter: empty output.");
     return 1;
   }
   vtkSmartPointer<vtkPolyData> dabs;
@@ -344,7 +355,7 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
   // A painted copy: the painted array deep, the rest shared.
   output->ShallowCopy(input);
   const char* painted =
-    this->Brush->GetTarget() == vtkOFBBrush::NormalTarget ? "Normals" : "Colors";
+    this->Brush->GetTarget() == vtkOFBBrush::TARGET_NORMAL ? "Normals" : "Colors";
   vtkPointData* inPd = input->GetSampleData();
   if (vtkDataArray* array = inPd->GetArray(painted))
   {
@@ -367,13 +378,9 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
   }
 
   vtkNew<vtkOFBPainter> painter;
+  painter->CopySettings(this->Painter);
   painter->SetOFB(output);
   painter->SetBrush(this->Brush);
-  painter->SetDefaultColor(this->DefaultColor);
-  painter->SetMirrorX(this->MirrorX);
-  painter->SetMirrorY(this->MirrorY);
-  painter->SetMirrorZ(this->MirrorZ);
-  painter->SetMirrorOrigin(this->MirrorOrigin);
   painter->SetUndoLimit(0);
   vtkNew<vtkCallbackCommand> progress;
   progress->SetClientData(this);
@@ -399,12 +406,6 @@ void vtkOFBPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Brush: " << this->Brush.GetPointer() << "\n";
-  os << indent << "Spacing: " << this->Spacing << "\n";
-  os << indent << "DefaultColor: (" << this->DefaultColor[0] << ", " << this->DefaultColor[1]
-     << ", " << this->DefaultColor[2] << ", " << this->DefaultColor[3] << ")\n";
-  os << indent << "MirrorX: " << this->MirrorX << ", MirrorY: " << this->MirrorY
-     << ", MirrorZ: " << this->MirrorZ << "\n";
-  os << indent << "MirrorOrigin: (" << this->MirrorOrigin[0] << ", " << this->MirrorOrigin[1]
-     << ", " << this->MirrorOrigin[2] << ")\n";
+  os << indent << "Painter: " << this->Painter.GetPointer() << "\n";
   os << indent << "NumberOfChangedSamples: " << this->NumberOfChangedSamples << "\n";
 }

@@ -5,11 +5,12 @@
  * vtkOFBPaintFilter is vtkOFBPainter for pipelines and ParaView-style scripts.
  * Port 0 takes the OFB, port 1 (optional) the strokes as a vtkPolyData: each
  * polyline (or line) is a stroke whose dabs are placed every `Spacing` times the
- * radius along it, and each vertex cell is a single dab. Optional point arrays
+ * radius along it (the Spacing of GetPainter(), by the walk of vtkOFBPainter::StrokeTo),
+ * and each vertex cell is a single dab. Optional point arrays
  * give per-point values, interpolated along the strokes (see vtkOFBPainter's
  * per-dab arrays): "Radius" (world units), "Color" (3 or 4 components, floating
  * point in [0, 1] or unsigned char), "Strength" and "Pressure" (in [0, 1]);
- * points without them use the brush's settings. With the Smear target each dab
+ * points without them use the settings of the brush (GetBrush()). With the Smear target each dab
  * carries the colour from the previous dab of its stroke.
  *
  * The output is a painted copy: the arrays the brush changes ("Colors", or
@@ -29,9 +30,10 @@
 
 #include "vtkOFBAlgorithm.h"
 #include "vtkOFBPaintModule.h" // for export macro
-#include "vtkSmartPointer.h"     // for member
+#include "vtkSmartPointer.h"   // for member
 
 class vtkOFBBrush;
+class vtkOFBPainter;
 class vtkPolyData;
 
 class VTKOFBPAINT_EXPORT vtkOFBPaintFilter : public vtkOFBAlgorithm
@@ -59,42 +61,15 @@ public:
 
   ///@{
   /**
-   * Distance between the dabs of a stroke as a fraction of the radius
-   * (0.01-10; default 0.25).
-   * Dabs are at least an eighth of an OFB cell apart (a radius of 0, from a pressure
-   * of 0, would place them without end), and a call that would place more than 2^24
-   * dabs along its strokes is an error that paints nothing.
+   * The painter whose settings the filter paints with (a default vtkOFBPainter unless
+   * set): Spacing (the distance between the dabs of a stroke), DefaultColor (of a
+   * "Colors" array created for an OFB that has none) and the mirror settings (MirrorX,
+   * MirrorY, MirrorZ, MirrorOrigin). The filter paints its output with a painter of its
+   * own that takes these settings (vtkOFBPainter::CopySettings) and the filter's brush:
+   * this painter's OFB, brush, undo history and UndoLimit are not used or changed.
    */
-  vtkSetClampMacro(Spacing, double, 0.01, 10.0);
-  vtkGetMacro(Spacing, double);
-  ///@}
-
-  ///@{
-  /**
-   * Colour of the "Colors" array created for an OFB that has none, RGBA in
-   * [0, 1] (default opaque white).
-   */
-  vtkSetVector4Macro(DefaultColor, double);
-  vtkGetVector4Macro(DefaultColor, double);
-  ///@}
-
-  ///@{
-  /**
-   * Symmetric painting: every dab also at its reflections in the planes through
-   * MirrorOrigin across the axes set (see vtkOFBPainter::SetMirrorX). Default off,
-   * origin (0, 0, 0).
-   */
-  vtkSetMacro(MirrorX, bool);
-  vtkGetMacro(MirrorX, bool);
-  vtkBooleanMacro(MirrorX, bool);
-  vtkSetMacro(MirrorY, bool);
-  vtkGetMacro(MirrorY, bool);
-  vtkBooleanMacro(MirrorY, bool);
-  vtkSetMacro(MirrorZ, bool);
-  vtkGetMacro(MirrorZ, bool);
-  vtkBooleanMacro(MirrorZ, bool);
-  vtkSetVector3Macro(MirrorOrigin, double);
-  vtkGetVector3Macro(MirrorOrigin, double);
+  void SetPainter(vtkOFBPainter* painter);
+  vtkOFBPainter* GetPainter() const;
   ///@}
 
   /**
@@ -103,7 +78,7 @@ public:
   vtkGetMacro(NumberOfChangedSamples, vtkIdType);
 
   /**
-   * Modification time including the brush's.
+   * Modification time including the brush's and the painter's.
    */
   vtkMTimeType GetMTime() override;
 
@@ -119,12 +94,7 @@ protected:
   vtkSmartPointer<vtkPolyData> MakeDabs(vtkPolyData* strokes, double cellSize);
 
   vtkSmartPointer<vtkOFBBrush> Brush;
-  double Spacing;
-  double DefaultColor[4];
-  bool MirrorX;
-  bool MirrorY;
-  bool MirrorZ;
-  double MirrorOrigin[3];
+  vtkSmartPointer<vtkOFBPainter> Painter;
   vtkIdType NumberOfChangedSamples;
 
 private:

@@ -1,5 +1,5 @@
 #include "vtkOFBPaintKernel.h"
-#include "vtkOFBPaintBlend.h"
+#include "vtkOFBBrushFunctions.h"
 #include "vtkOFBPaintKernelWork.h"
 #include "vtkOFBPaintWaves.h"
 
@@ -19,12 +19,41 @@
 #include <limits>
 #include <thread>
 
-using vtkofbpaint::Blend;
-using vtkofbpaint::Facing;
-using vtkofbpaint::FalloffOf;
+using vtkofbbrush::Blend;
+using vtkofbbrush::Facing;
 
 namespace
 {
+/// The Custom falloff as the painter samples it: a table at x = i / (size - 1),
+/// interpolated linearly (constant 1 without one).
+struct CustomTableCurve
+{
+  const std::vector<double>& Table;
+  double operator()(double x) const
+  {
+    const size_t n = this->Table.size();
+    if (n < 2)
+    {
+      return 1.0;
+    }
+    const double f = x * static_cast<double>(n - 1);
+    const size_t i = std::min(static_cast<size_t>(f), n - 2);
+    const double w = f - static_cast<double>(i);
+    return this->Table[i] + w * (this->Table[i + 1] - this->Table[i]);
+  }
+};
+
+/// The brush's falloff at normalized distance x: Kind is the falloff when known when
+/// compiling (the brush's default Smooth and the particles' default Constant, inlined),
+/// -1 for the settings' falloff (chosen per sample).
+template<int Kind>
+inline double FalloffOf(const vtkOFBPaintSettings& s, double x)
+{
+  const vtkOFBBrush::FalloffType kind =
+    Kind >= 0 ? static_cast<vtkOFBBrush::FalloffType>(Kind) : s.Falloff;
+  return vtkofbbrush::Falloff(kind, x, CustomTableCurve{ s.CustomTable });
+}
+
 // Progress is reported every this many visited samples (serial dabs only).
 constexpr vtkIdType ProgressMask = (vtkIdType(1) << 20) - 1;
 
@@ -102,59 +131,6 @@ vtkIdType vtkOFBPaintKernel::GetMemory() const
   return this->NumberOfSamples + 8 * this->NumberOfChangedWords +
     2 * this->NumberOfInitialBlocks * static_cast<vtkIdType>(sizeof(void*) + 1) +
     this->InitialBlocksHeld.load() * block * 4;
-}
-
-//------------------------------------------------------------------------------
-double vtkOFBPaintKernel::Falloff(const vtkOFBPaintSettings& s, double x)
-{
-  // The formulas of vtkOFBBrush::EvaluateFalloff, without the virtual call of
-  // the custom curve (sampled into a table).
-  if (!(x <= 1.0))
-  {
-    return 0.0;
-  }
-  x = std::max(x, 0.0);
-  const double t = 1.0 - x;
-  switch (s.Falloff)
-  {
-    case 0:
-      return 1.0;
-    case 1:
-      return t;
-    case 2:
-      return t * t * (3.0 - 2.0 * t);
-    case 3:
-      return std::sqrt(std::max(0.0, 1.0 - x * x));
-    case 4:
-      return std::sqrt(t);
-    case 5:
-      return t * t;
-    case 6:
-      return std::exp(-4.5 * x * x);
-    default:
-    {
-      const size_t n = s.CustomTable.size();
-      if (n < 2)
-      {
-        return 1.0;
-      }
-      const double f = x * static_cast<double>(n - 1);
-      const size_t i = std::min(static_cast<size_t>(f), n - 2);
-      const double w = f - static_cast<double>(i);
-      return s.CustomTable[i] + w * (s.CustomTable[i + 1] - s.CustomTable[i]);
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBPaintKernel::BlendColor(const unsigned char dst[4],
-  const float src[4],
-  float g,
-  int mode,
-  const unsigned char initial[4],
-  unsigned char out[4])
-{
-  Blend<-1>(dst, src, g, mode, initial, out);
 }
 
 //------------------------------------------------------------------------------
@@ -281,7 +257,7 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
     return;
   }
   Scratch& s = *this->Work;
-  s.Waves.Compute(dabs, settings.Target == 2);
+  s.Waves.Compute(dabs, settings.Target == vtkOFBBrush::TARGET_SMEAR);
   const std::vector<int>& order = s.Waves.GetOrder();
   const std::vector<int>& waveStarts = s.Waves.GetWaveStarts();
   for (auto& local : s.Records)
@@ -404,7 +380,7 @@ bool vtkOFBPaintKernel::SmearSource(const vtkOFBDab& dab,
     dab.Radius,
     [&](vtkIdType i, double d2)
     {
-      const double g = Falloff(settings, std::sqrt(d2) * invR);
+      const double g = FalloffOf<-1>(settings, std::sqrt(d2) * invR);
       for (int k = 0; k < 4; ++k)
       {
         sum[k] += g * colors[4 * i + k];
@@ -429,7 +405,7 @@ void vtkOFBPaintKernel::PaintDabs(const std::vector<vtkOFBDab>& dabs,
   const vtkOFBPaintSettings& settings,
   DabWork& work)
 {
-  if (settings.Target == 1)
+  if (settings.Target == vtkOFBBrush::TARGET_NORMAL)
   {
     for (vtkIdType k = 0; k < count; ++k)
     {
@@ -443,9 +419,9 @@ void vtkOFBPaintKernel::PaintDabs(const std::vector<vtkOFBDab>& dabs,
     }
   }
   // The default falloffs and blend mode compiled in, the others chosen per sample.
-  else if (settings.BlendMode == vtkOFBBrush::Mix)
+  else if (settings.BlendMode == vtkOFBBrush::BLEND_MIX)
   {
-    this->PaintColorsWith<vtkOFBBrush::Mix>(dabs, order, count, settings, work);
+    this->PaintColorsWith<vtkOFBBrush::BLEND_MIX>(dabs, order, count, settings, work);
   }
   else
   {
@@ -473,7 +449,7 @@ bool vtkOFBPaintKernel::ResolveColorDab(const vtkOFBDab& dab,
   {
     out.Cone[k] = static_cast<float>(n[k]);
   }
-  if (settings.Target == 2)
+  if (settings.Target == vtkOFBBrush::TARGET_SMEAR)
   {
     float carried[4];
     if (!dab.HasPrevious || !this->SmearSource(dab, settings, carried))
@@ -499,11 +475,11 @@ void vtkOFBPaintKernel::PaintColorsWith(const std::vector<vtkOFBDab>& dabs,
 {
   switch (settings.Falloff)
   {
-    case vtkOFBBrush::Smooth:
-      this->PaintColors<Mode, vtkOFBBrush::Smooth>(dabs, order, count, settings, work);
+    case vtkOFBBrush::FALLOFF_SMOOTH:
+      this->PaintColors<Mode, vtkOFBBrush::FALLOFF_SMOOTH>(dabs, order, count, settings, work);
       break;
-    case vtkOFBBrush::Constant:
-      this->PaintColors<Mode, vtkOFBBrush::Constant>(dabs, order, count, settings, work);
+    case vtkOFBBrush::FALLOFF_CONSTANT:
+      this->PaintColors<Mode, vtkOFBBrush::FALLOFF_CONSTANT>(dabs, order, count, settings, work);
       break;
     default:
       this->PaintColors<Mode, -1>(dabs, order, count, settings, work);
@@ -524,7 +500,8 @@ void vtkOFBPaintKernel::PaintColors(const std::vector<vtkOFBDab>& dabs,
   const std::atomic<vtkTypeUInt64>* changed = this->ChangedWords.get();
   const float* normals = this->Normals ? this->Normals->GetPointer(0) : nullptr;
   const float cosMax = static_cast<float>(settings.CosMaxAngle);
-  const int mode = Mode >= 0 ? Mode : settings.BlendMode;
+  const vtkOFBBrush::BlendModeType mode =
+    Mode >= 0 ? static_cast<vtkOFBBrush::BlendModeType>(Mode) : settings.BlendMode;
   std::vector<vtkOFBColorRecord>& records = work.Records->Colors;
   std::vector<ColorDab>& state = work.Records->ColorDabs;
   state.resize(count);
@@ -568,7 +545,7 @@ void vtkOFBPaintKernel::PaintColors(const std::vector<vtkOFBDab>& dabs,
       }
       unsigned char* c = colors + 4 * i;
       const unsigned char* initial =
-        mode == vtkOFBBrush::Erase ? this->InitialColor(i, work) : nullptr;
+        mode == vtkOFBBrush::BLEND_ERASE ? this->InitialColor(i, work) : nullptr;
       unsigned char result[4];
       Blend<Mode>(c, dab.Source, g, mode, initial, result);
       if (std::memcmp(result, c, 4) == 0)
@@ -615,7 +592,7 @@ void vtkOFBPaintKernel::PaintNormals(const vtkOFBDab& dab,
   unsigned char* flags = this->Flags.get();
   const float cosMax = static_cast<float>(settings.CosMaxAngle);
   const double invR = 1.0 / dab.Radius;
-  const bool erase = settings.BlendMode == vtkOFBBrush::Erase;
+  const bool erase = settings.BlendMode == vtkOFBBrush::BLEND_ERASE;
   const glm::dvec3 c(dab.Center[0], dab.Center[1], dab.Center[2]);
   std::vector<vtkOFBNormalRecord>& records = work.Records->Normals;
   const unsigned char recordBit = settings.RecordUndo ? NormalRecorded : 0;
@@ -632,7 +609,8 @@ void vtkOFBPaintKernel::PaintNormals(const vtkOFBDab& dab,
       {
         return;
       }
-      const float g = static_cast<float>(dab.Strength * Falloff(settings, std::sqrt(d2) * invR));
+      const float g =
+        static_cast<float>(dab.Strength * FalloffOf<-1>(settings, std::sqrt(d2) * invR));
       if (g <= 0.0f)
       {
         return;

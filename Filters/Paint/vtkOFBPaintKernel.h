@@ -19,6 +19,7 @@
 #ifndef vtkOFBPaintKernel_h
 #define vtkOFBPaintKernel_h
 
+#include "vtkOFBBrush.h"
 #include "vtkType.h"
 
 #include <glm/vec3.hpp>
@@ -46,12 +47,12 @@ struct vtkOFBDab
   double Normal[3]; // normal at the centre (normal-aware painting)
 };
 
-/// Settings shared by all dabs of one call.
+/// Settings shared by all dabs of one call (the brush's, see vtkOFBBrush).
 struct vtkOFBPaintSettings
 {
-  int Falloff = 2;
-  int BlendMode = 0;
-  int Target = 0;
+  vtkOFBBrush::FalloffType Falloff = vtkOFBBrush::FALLOFF_SMOOTH;
+  vtkOFBBrush::BlendModeType BlendMode = vtkOFBBrush::BLEND_MIX;
+  vtkOFBBrush::TargetType Target = vtkOFBBrush::TARGET_COLOR;
   double SmearAmount = 1.0;
   double BumpDepth = 0.5;
   bool NormalAware = false;
@@ -140,17 +141,6 @@ public:
   vtkIdType GetMemory() const;
 
   vtkOFB* GetOFB() const { return this->OFB; }
-
-  /// Falloff value at normalized distance x in [0, 1] (the brush's formulas).
-  static double Falloff(const vtkOFBPaintSettings& s, double x);
-
-  /// Blend a colour (bytes) with source `src` (RGBA in [0, 1]) by weight g.
-  static void BlendColor(const unsigned char dst[4],
-    const float src[4],
-    float g,
-    int mode,
-    const unsigned char initial[4],
-    unsigned char out[4]);
 
 private:
   struct DabWork;

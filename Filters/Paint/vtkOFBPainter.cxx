@@ -10,6 +10,7 @@
 #include "vtkOFBHugePages.h"
 #include "vtkOFBPaintKernel.h"
 #include "vtkOFBPainterInternals.h"
+#include "vtkOFBStrokeSampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -285,21 +286,33 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
     vtkErrorMacro("The brush's SmearAmount, BumpDepth or MaxNormalAngle is not finite.");
     return 0;
   }
+  // The brush's setters refuse other values; a subclass of the brush could still hold one.
+  const int falloff = brush->GetFalloff();
+  const int blendMode = brush->GetBlendMode();
+  const int target = brush->GetTarget();
+  if (falloff < 0 || falloff >= vtkOFBBrush::NUMBER_OF_FALLOFFS || blendMode < 0 ||
+    blendMode >= vtkOFBBrush::NUMBER_OF_BLEND_MODES || target < 0 ||
+    target >= vtkOFBBrush::NUMBER_OF_TARGETS)
+  {
+    vtkErrorMacro("The brush's Falloff (" << falloff << "), BlendMode (" << blendMode
+                                          << ") or Target (" << target
+                                          << ") is not one of its enumerators: nothing painted.");
+    return 0;
+  }
   if (!Finite3(this->MirrorOrigin) && (this->MirrorX || this->MirrorY || this->MirrorZ))
   {
     vtkErrorMacro("MirrorOrigin is not finite: nothing painted.");
     return 0;
   }
   this->AddMirrorImages(dabs);
-  const int target = brush->GetTarget();
-  if (!this->Prepare(target != vtkOFBBrush::NormalTarget, target == vtkOFBBrush::NormalTarget))
+  if (!this->Prepare(target != vtkOFBBrush::TARGET_NORMAL, target == vtkOFBBrush::TARGET_NORMAL))
   {
     return 0;
   }
   vtkOFBPaintSettings settings;
-  settings.Falloff = brush->GetFalloff();
-  settings.BlendMode = brush->GetBlendMode();
-  settings.Target = target;
+  settings.Falloff = static_cast<vtkOFBBrush::FalloffType>(falloff);
+  settings.BlendMode = static_cast<vtkOFBBrush::BlendModeType>(blendMode);
+  settings.Target = static_cast<vtkOFBBrush::TargetType>(target);
   settings.SmearAmount = brush->GetSmearAmount();
   settings.BumpDepth = brush->GetBumpDepth();
   settings.NormalAware = brush->GetNormalAware();
@@ -311,7 +324,7 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   {
     this->ClearHistory();
   }
-  if (settings.Falloff == vtkOFBBrush::Custom && brush->GetCustomFalloff())
+  if (settings.Falloff == vtkOFBBrush::FALLOFF_CUSTOM && brush->GetCustomFalloff())
   {
     settings.CustomTable.resize(CustomTableSize);
     for (int i = 0; i < CustomTableSize; ++i)
@@ -346,68 +359,19 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBPainter::GetMirrorReflections(const double point[3],
-  double reflections[21],
-  int axes[7]) const
+void vtkOFBPainter::CopySettings(vtkOFBPainter* source)
 {
-  const int mirrors = (this->MirrorX ? 1 : 0) | (this->MirrorY ? 2 : 0) | (this->MirrorZ ? 4 : 0);
-  int count = 0;
-  // Reflection m flips the axes of its bits: x, y, xy, z, xz, yz, xyz.
-  for (int m = 1; m < 8; ++m)
-  {
-    if ((m & mirrors) != m)
-    {
-      continue;
-    }
-    double* q = reflections + 3 * count;
-    for (int a = 0; a < 3; ++a)
-    {
-      q[a] = (m & (1 << a)) ? 2.0 * this->MirrorOrigin[a] - point[a] : point[a];
-    }
-    bool repeated = std::equal(q, q + 3, point);
-    for (int k = 0; k < count && !repeated; ++k)
-    {
-      repeated = std::equal(q, q + 3, reflections + 3 * k);
-    }
-    if (!repeated)
-    {
-      axes[count++] = m;
-    }
-  }
-  return count;
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBPainter::AddMirrorImages(std::vector<vtkOFBDab>& dabs) const
-{
-  if (!this->MirrorX && !this->MirrorY && !this->MirrorZ)
+  if (!source || source == this)
   {
     return;
   }
-  std::vector<vtkOFBDab> all;
-  all.reserve(dabs.size() * 8);
-  double centres[21];
-  int axes[7];
-  for (const vtkOFBDab& dab : dabs)
-  {
-    all.push_back(dab);
-    const int count = this->GetMirrorReflections(dab.Center, centres, axes);
-    for (int k = 0; k < count; ++k)
-    {
-      vtkOFBDab image = dab;
-      for (int a = 0; a < 3; ++a)
-      {
-        image.Center[a] = centres[3 * k + a];
-        if (axes[k] & (1 << a))
-        {
-          image.Previous[a] = 2.0 * this->MirrorOrigin[a] - dab.Previous[a];
-          image.Normal[a] = -dab.Normal[a];
-        }
-      }
-      all.push_back(image);
-    }
-  }
-  dabs.swap(all);
+  this->SetSpacing(source->Spacing);
+  this->SetMirrorX(source->MirrorX);
+  this->SetMirrorY(source->MirrorY);
+  this->SetMirrorZ(source->MirrorZ);
+  this->SetMirrorOrigin(source->MirrorOrigin);
+  this->SetDefaultColor(source->DefaultColor);
+  this->SetUndoLimit(source->UndoLimit);
 }
 
 //------------------------------------------------------------------------------
@@ -534,7 +498,7 @@ void vtkOFBPainter::BeginStroke()
   this->InStroke = true;
   this->Impl->HasLastPoint = false;
   this->Impl->HasLastDab = false;
-  this->Impl->SinceLastDab = 0.0;
+  this->Impl->Sampler.Start(0.0);
   this->Impl->StrokeDabs->Initialize();
 }
 
@@ -569,49 +533,44 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
     impl.HasLastDab = true;
     impl.StrokeDabs->InsertNextPoint(c);
   };
+  vtkOFBBrush* brush = impl.Brush;
+  auto radiusAt = [brush](double pr)
+  { return brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pr : 1.0); };
   if (!impl.HasLastPoint)
   {
     place(p, pressure);
-    impl.SinceLastDab = 0.0;
+    impl.Sampler.Start(radiusAt(pressure));
   }
   else
   {
-    // Dabs every Spacing * radius of path length, the radius at the last dab.
     const glm::dvec3 a(impl.LastPoint[0], impl.LastPoint[1], impl.LastPoint[2]);
     const glm::dvec3 b(p[0], p[1], p[2]);
     const double length = glm::length(b - a);
-    vtkOFBBrush* brush = impl.Brush;
     const double cellSize = impl.OFB ? impl.OFB->GetCellSize() : 0.0;
-    auto stepAt = [&](double pr)
-    {
-      const double r = brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pr : 1.0);
-      return vtkOFBDabStep(this->Spacing, r, cellSize);
-    };
-    if (length / stepAt(std::min(pressure, impl.LastPressure)) > vtkOFBMaximumStrokeDabs)
+    const double smallest = radiusAt(std::min(pressure, impl.LastPressure));
+    if (vtkOFBStrokeSampler::MostDabs(length, this->Spacing, smallest, cellSize) >
+      vtkOFBMaximumStrokeDabs)
     {
       vtkErrorMacro("StrokeTo: this segment ("
         << length << " long) would place more than " << vtkOFBMaximumStrokeDabs << " dabs (radius "
         << brush->GetRadius() << ", Spacing " << this->Spacing << "): nothing painted.");
       std::copy(p, p + 3, impl.LastPoint);
       impl.LastPressure = pressure;
-      impl.SinceLastDab = 0.0;
+      impl.Sampler.Start(radiusAt(pressure));
       return 0;
     }
-    double lastPressure = impl.LastPressure;
-    double s = stepAt(lastPressure) - impl.SinceLastDab;
-    double lastS = -impl.SinceLastDab;
-    while (s <= length && length > 0.0)
-    {
-      const double t = s / length;
-      const glm::dvec3 c = a + t * (b - a);
-      const double pr = impl.LastPressure + t * (pressure - impl.LastPressure);
-      const double cc[3] = { c.x, c.y, c.z };
-      place(cc, pr);
-      lastS = s;
-      lastPressure = pr;
-      s += stepAt(pr);
-    }
-    impl.SinceLastDab = length - lastS;
+    const double startPressure = impl.LastPressure;
+    impl.Sampler.Walk(length,
+      this->Spacing,
+      cellSize,
+      [&](double t)
+      {
+        const glm::dvec3 c = a + t * (b - a);
+        const double pr = startPressure + t * (pressure - startPressure);
+        const double cc[3] = { c.x, c.y, c.z };
+        place(cc, pr);
+        return radiusAt(pr);
+      });
   }
   std::copy(p, p + 3, impl.LastPoint);
   impl.LastPressure = pressure;

@@ -195,6 +195,13 @@ public:
   ///@}
 
   /**
+   * Take the settings of `source`: Spacing, the mirror settings, DefaultColor and
+   * UndoLimit (not its OFB, brush, history or stroke). vtkOFBPaintFilter paints with
+   * the settings of the painter it holds so.
+   */
+  void CopySettings(vtkOFBPainter* source);
+
+  /**
    * The reflections of `point` that mirror painting paints besides it, in the order
    * painted: up to 7 points (3 doubles each) in `reflections`, and for each in `axes` the
    * axes it flips (bit 0 x, 1 y, 2 z: a vector at the point, a normal say, reflects by

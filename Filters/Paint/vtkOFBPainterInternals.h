@@ -8,6 +8,7 @@
 #include "vtkOFBBrush.h"
 #include "vtkOFBPaintKernel.h"
 #include "vtkOFBPainter.h"
+#include "vtkOFBStrokeSampler.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
@@ -57,13 +58,13 @@ struct vtkOFBPainter::Internals
   std::deque<vtkofbpainter::Step> RedoSteps;
   vtkofbpainter::Step Open;
 
-  // Stroke state: the last point given, the last dab and the path length since.
+  // Stroke state: the last point given, the last dab and the walk of the dabs.
   bool HasLastPoint = false;
   double LastPoint[3] = { 0.0, 0.0, 0.0 };
   double LastPressure = 1.0;
   bool HasLastDab = false;
   double LastDab[3] = { 0.0, 0.0, 0.0 };
-  double SinceLastDab = 0.0;
+  vtkOFBStrokeSampler Sampler;
 
   std::vector<std::pair<vtkIdType, vtkIdType>> Ranges;
 

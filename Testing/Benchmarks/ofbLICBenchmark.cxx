@@ -467,10 +467,10 @@ void RunFrames(const Options& o,
   // The OFB mapper showing the LIC (Nearest, InverseDistance, NearestMipmapped), then
   // without it (Nearest, the sampler's colours only): the cost of the LIC in the display
   // itself.
-  for (int mode : { vtkOFBPolyDataMapper::Nearest,
-         vtkOFBPolyDataMapper::InverseDistance,
-         vtkOFBPolyDataMapper::NearestMipmapped,
-         vtkOFBPolyDataMapper::Nearest })
+  for (int mode : { vtkOFBPolyDataMapper::LOOKUP_NEAREST,
+         vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
+         vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED,
+         vtkOFBPolyDataMapper::LOOKUP_NEAREST })
   {
     vtkNew<vtkOFBPolyDataMapper> m;
     m->SetInputData(mesh);

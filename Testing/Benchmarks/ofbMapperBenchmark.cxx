@@ -162,10 +162,10 @@ struct Options
   std::string Images;
   bool OffScreen = false;
   bool PaintedNormals = false; // each mode also with UsePaintedNormals
-  std::vector<int> Modes = { vtkOFBPolyDataMapper::Nearest,
-    vtkOFBPolyDataMapper::InverseDistance,
-    vtkOFBPolyDataMapper::Mipmapped,
-    vtkOFBPolyDataMapper::NearestMipmapped };
+  std::vector<int> Modes = { vtkOFBPolyDataMapper::LOOKUP_NEAREST,
+    vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
+    vtkOFBPolyDataMapper::LOOKUP_MIPMAPPED,
+    vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED };
 };
 
 // Lookup modes from a comma-separated list; false on an unknown name.
@@ -179,19 +179,19 @@ bool ParseModes(const std::string& list, std::vector<int>& modes)
     const std::string name = list.substr(begin, comma - begin);
     if (name == "nearest")
     {
-      modes.push_back(vtkOFBPolyDataMapper::Nearest);
+      modes.push_back(vtkOFBPolyDataMapper::LOOKUP_NEAREST);
     }
     else if (name == "idw")
     {
-      modes.push_back(vtkOFBPolyDataMapper::InverseDistance);
+      modes.push_back(vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE);
     }
     else if (name == "mipmapped")
     {
-      modes.push_back(vtkOFBPolyDataMapper::Mipmapped);
+      modes.push_back(vtkOFBPolyDataMapper::LOOKUP_MIPMAPPED);
     }
     else if (name == "nearestmipmapped")
     {
-      modes.push_back(vtkOFBPolyDataMapper::NearestMipmapped);
+      modes.push_back(vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED);
     }
     else if (!name.empty())
     {
@@ -453,7 +453,7 @@ double PrintMedians(const Bench& b, const Options& o)
   {
     const double ms = Median(b.Wall[m]);
     const double ratio = ms / peerMs;
-    if (o.Modes[m - 1] == vtkOFBPolyDataMapper::Nearest)
+    if (o.Modes[m - 1] == vtkOFBPolyDataMapper::LOOKUP_NEAREST)
     {
       nearestRatio = ratio;
     }

@@ -91,8 +91,8 @@ struct Options
   int Repetitions = 3;
   bool OpenVDB = true;
   bool Render = true;
-  bool FootprintsOnly = false;                // only the 10,000 footprints (for profiling)
-  int Lookup = vtkOFBPolyDataMapper::Nearest; // the stroke's display
+  bool FootprintsOnly = false;                       // only the 10,000 footprints (for profiling)
+  int Lookup = vtkOFBPolyDataMapper::LOOKUP_NEAREST; // the stroke's display
 };
 
 bool ParseOptions(int argc, char* argv[], Options& o)
@@ -143,10 +143,10 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       const std::string mode = argv[++i];
       const char* names[] = { "nearest", "idw", "mipmapped", "nearestmipmapped" };
-      const int modes[] = { vtkOFBPolyDataMapper::Nearest,
-        vtkOFBPolyDataMapper::InverseDistance,
-        vtkOFBPolyDataMapper::Mipmapped,
-        vtkOFBPolyDataMapper::NearestMipmapped };
+      const int modes[] = { vtkOFBPolyDataMapper::LOOKUP_NEAREST,
+        vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
+        vtkOFBPolyDataMapper::LOOKUP_MIPMAPPED,
+        vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED };
       o.Lookup = -1;
       for (int m = 0; m < 4; ++m)
       {

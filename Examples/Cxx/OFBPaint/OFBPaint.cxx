@@ -512,9 +512,10 @@ void PaintApp::OnKey(vtkObject*, unsigned long, void* clientData, void*)
     case 'd':
       // NearestMipmapped filters the OFB's pyramid; a stroke then filters again only the
       // samples of each level near the paint (vtkOFBPyramid), so painting stays fluid.
-      self->Mapper->SetLookupMode(self->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::Nearest
-          ? vtkOFBPolyDataMapper::NearestMipmapped
-          : vtkOFBPolyDataMapper::Nearest);
+      self->Mapper->SetLookupMode(
+        self->Mapper->GetLookupMode() == vtkOFBPolyDataMapper::LOOKUP_NEAREST
+          ? vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED
+          : vtkOFBPolyDataMapper::LOOKUP_NEAREST);
       break;
     default:
       return; // the widget's keys and the interactor style's

@@ -157,7 +157,7 @@ bool Replay::Named(const std::string& command, const std::string& name, std::str
   int value = -1;
   if (command == "falloff")
   {
-    value = FindName(name, vtkOFBBrush::Custom, vtkOFBBrush::GetFalloffAsString);
+    value = FindName(name, vtkOFBBrush::FALLOFF_CUSTOM, vtkOFBBrush::GetFalloffAsString);
     if (value >= 0)
     {
       this->Brush->SetFalloff(value);
@@ -165,7 +165,7 @@ bool Replay::Named(const std::string& command, const std::string& name, std::str
   }
   else if (command == "blend")
   {
-    value = FindName(name, vtkOFBBrush::EraseAlpha + 1, vtkOFBBrush::GetBlendModeAsString);
+    value = FindName(name, vtkOFBBrush::NUMBER_OF_BLEND_MODES, vtkOFBBrush::GetBlendModeAsString);
     if (value >= 0)
     {
       this->Brush->SetBlendMode(value);
@@ -173,7 +173,7 @@ bool Replay::Named(const std::string& command, const std::string& name, std::str
   }
   else if (command == "target")
   {
-    value = FindName(name, vtkOFBBrush::SmearTarget + 1, vtkOFBBrush::GetTargetAsString);
+    value = FindName(name, vtkOFBBrush::NUMBER_OF_TARGETS, vtkOFBBrush::GetTargetAsString);
     if (value >= 0)
     {
       this->Brush->SetTarget(value);

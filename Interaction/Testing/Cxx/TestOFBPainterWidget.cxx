@@ -334,7 +334,7 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   brush->SetStrength(1.0);
 
   // Falloffs cycle through the seven curves, skipping Custom.
-  brush->SetFalloff(vtkOFBBrush::Constant);
+  brush->SetFalloff(vtkOFBBrush::FALLOFF_CONSTANT);
   std::vector<int> falloffs;
   for (int i = 0; i < 7; ++i)
   {
@@ -342,24 +342,24 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
     falloffs.push_back(brush->GetFalloff());
   }
   EXPECT_EQ(falloffs,
-    (std::vector<int>{ vtkOFBBrush::Linear,
-      vtkOFBBrush::Smooth,
-      vtkOFBBrush::Sphere,
-      vtkOFBBrush::Root,
-      vtkOFBBrush::Sharp,
-      vtkOFBBrush::Gaussian,
-      vtkOFBBrush::Constant }));
+    (std::vector<int>{ vtkOFBBrush::FALLOFF_LINEAR,
+      vtkOFBBrush::FALLOFF_SMOOTH,
+      vtkOFBBrush::FALLOFF_SPHERE,
+      vtkOFBBrush::FALLOFF_ROOT,
+      vtkOFBBrush::FALLOFF_SHARP,
+      vtkOFBBrush::FALLOFF_GAUSSIAN,
+      vtkOFBBrush::FALLOFF_CONSTANT }));
 
   scene.Key('t', "t");
-  EXPECT_EQ(brush->GetTarget(), vtkOFBBrush::NormalTarget);
+  EXPECT_EQ(brush->GetTarget(), vtkOFBBrush::TARGET_NORMAL);
   scene.Key('t', "t");
-  EXPECT_EQ(brush->GetTarget(), vtkOFBBrush::SmearTarget);
+  EXPECT_EQ(brush->GetTarget(), vtkOFBBrush::TARGET_SMEAR);
   scene.Key('t', "t");
-  EXPECT_EQ(brush->GetTarget(), vtkOFBBrush::ColorTarget);
+  EXPECT_EQ(brush->GetTarget(), vtkOFBBrush::TARGET_COLOR);
 
   scene.Key('b', "b");
-  EXPECT_EQ(brush->GetBlendMode(), vtkOFBBrush::Add);
-  brush->SetBlendMode(vtkOFBBrush::Mix);
+  EXPECT_EQ(brush->GetBlendMode(), vtkOFBBrush::BLEND_ADD);
+  brush->SetBlendMode(vtkOFBBrush::BLEND_MIX);
 
   // Mirror: none, x, y, z, none (one axis at a time).
   vtkOFBPainter* painter = rep->GetPainter();

@@ -19,8 +19,8 @@ int TestOFBMapperMipmap(int argc, char* argv[])
     argv,
     sphere,
     ofb,
-    vtkOFBPolyDataMapper::InverseDistance,
-    vtkOFBPolyDataMapper::Mipmapped,
+    vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
+    vtkOFBPolyDataMapper::LOOKUP_MIPMAPPED,
     background,
     0.5);
 }

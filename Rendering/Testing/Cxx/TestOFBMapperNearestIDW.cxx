@@ -29,8 +29,8 @@ int TestOFBMapperNearestIDW(int argc, char* argv[])
     argv,
     sphere,
     ofb,
-    vtkOFBPolyDataMapper::Nearest,
-    vtkOFBPolyDataMapper::InverseDistance,
+    vtkOFBPolyDataMapper::LOOKUP_NEAREST,
+    vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
     background,
     1.8);
 }

@@ -107,7 +107,8 @@ TEST(OFBPolyDataMapper, AllRedOFBGivesARedCentrePixel)
 
 TEST(OFBPolyDataMapper, EveryLookupModeReadsTheOFB)
 {
-  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::NearestMipmapped;
+  for (int mode = vtkOFBPolyDataMapper::LOOKUP_NEAREST;
+       mode < vtkOFBPolyDataMapper::NUMBER_OF_LOOKUP_MODES;
        ++mode)
   {
     Scene scene;
@@ -178,8 +179,8 @@ TEST(OFBPolyDataMapper, NearestMipmappedAveragesFarDetailAndIsNearestUpClose)
   SpherePixels near[2];
   for (int m = 0; m < 2; ++m)
   {
-    scene.Mapper->SetLookupMode(
-      m == 0 ? vtkOFBPolyDataMapper::Nearest : vtkOFBPolyDataMapper::NearestMipmapped);
+    scene.Mapper->SetLookupMode(m == 0 ? vtkOFBPolyDataMapper::LOOKUP_NEAREST
+                                       : vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED);
     scene.Renderer->ResetCamera();
     scene.Window->Render();
     ASSERT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
@@ -220,7 +221,8 @@ TEST(OFBPolyDataMapper, NearestMipmappedAveragesFarDetailAndIsNearestUpClose)
 // cells. A fragment without a sample would keep the property colour (green).
 TEST(OFBPolyDataMapper, NoFragmentKeepsThePropertyColour)
 {
-  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::NearestMipmapped;
+  for (int mode = vtkOFBPolyDataMapper::LOOKUP_NEAREST;
+       mode < vtkOFBPolyDataMapper::NUMBER_OF_LOOKUP_MODES;
        ++mode)
   {
     Scene scene(128, 300);
@@ -363,7 +365,8 @@ TEST(OFBPolyDataMapper, OFBFromAPipelineConnection)
 TEST(OFBPolyDataMapper, ScalarsThroughTheLookupTableWithIntensity)
 {
   // Every lookup mode: each compiles its own shader variant.
-  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::NearestMipmapped;
+  for (int mode = vtkOFBPolyDataMapper::LOOKUP_NEAREST;
+       mode < vtkOFBPolyDataMapper::NUMBER_OF_LOOKUP_MODES;
        ++mode)
   {
     SCOPED_TRACE(vtkOFBPolyDataMapper::GetLookupModeAsString(mode));
@@ -420,7 +423,8 @@ TEST(OFBPolyDataMapper, ScalarsThroughTheLookupTableWithIntensity)
 TEST(OFBPolyDataMapper, PaintedNormalsShadeTheSurface)
 {
   // Every lookup mode: each compiles its own shader variant.
-  for (int mode = vtkOFBPolyDataMapper::Nearest; mode <= vtkOFBPolyDataMapper::NearestMipmapped;
+  for (int mode = vtkOFBPolyDataMapper::LOOKUP_NEAREST;
+       mode < vtkOFBPolyDataMapper::NUMBER_OF_LOOKUP_MODES;
        ++mode)
   {
     SCOPED_TRACE(vtkOFBPolyDataMapper::GetLookupModeAsString(mode));
@@ -500,6 +504,31 @@ TEST(OFBPolyDataMapper, NoOFBWarnsAndRendersThePropertyColour)
   EXPECT_TRUE(p[1] > 150 && p[0] < 40) << p[0] << " " << p[1] << " " << p[2];
 }
 
+// A lookup mode that is no LookupModes value is refused with an error (it once fell
+// through to Mipmapped in the shader); the mode stays and the scene still renders.
+TEST(OFBPolyDataMapper, UnknownLookupModeIsAnError)
+{
+  Scene scene;
+  scene.Fill(0, 0, 255);
+  scene.Mapper->SetLookupModeToInverseDistance();
+  vtkNew<vtkofbtest::MessageObserver> messages;
+  messages->Watch(scene.Mapper);
+  for (int bad : { -1, static_cast<int>(vtkOFBPolyDataMapper::NUMBER_OF_LOOKUP_MODES), 99 })
+  {
+    messages->Clear();
+    scene.Mapper->SetLookupMode(bad);
+    EXPECT_NE(messages->Errors.find("not a LookupModes value"), std::string::npos) << bad;
+    EXPECT_EQ(scene.Mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE);
+  }
+  EXPECT_STREQ(vtkOFBPolyDataMapper::GetLookupModeAsString(99), "Unknown");
+  messages->Clear();
+  scene.Window->Render();
+  EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  const Pixel p = Centre(scene.Window);
+  EXPECT_TRUE(p[2] > 150 && p[0] < 40 && p[1] < 40) << p[0] << " " << p[1] << " " << p[2];
+}
+
 TEST(OFBPolyDataMapper, EmptyOFBWarns)
 {
   Scene scene;
@@ -560,9 +589,9 @@ TEST(OFBPolyDataMapper, MovesToANewWindowAfterTheOldOneIsGone)
   mapper->SetOFB(ofb);
   vtkNew<vtkofbtest::MessageObserver> messages;
   messages->Watch(mapper);
-  for (int mode : { vtkOFBPolyDataMapper::Nearest,
-         vtkOFBPolyDataMapper::NearestMipmapped,
-         vtkOFBPolyDataMapper::InverseDistance })
+  for (int mode : { vtkOFBPolyDataMapper::LOOKUP_NEAREST,
+         vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED,
+         vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE })
   {
     mapper->SetLookupMode(mode);
     for (int k = 0; k < 3; ++k)
@@ -640,11 +669,11 @@ TEST(OFBPolyDataMapper, ArraysShorterThanTheSamplesAreMissing)
 TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)
 {
   vtkNew<vtkOFBPolyDataMapper> mapper;
-  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::Nearest);
+  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_NEAREST);
   EXPECT_EQ(mapper->GetColorSource(), vtkOFBPolyDataMapper::Paint);
   EXPECT_NEAR(mapper->GetInterpolationRadius(), 1.7320508, 1e-6);
-  mapper->SetLookupMode(99);
-  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::NearestMipmapped);
+  mapper->SetLookupMode(99); // not a lookup mode: an error, the mode stays
+  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_NEAREST);
   mapper->SetIntensityWeight(3.0);
   EXPECT_EQ(mapper->GetIntensityWeight(), 1.0);
   EXPECT_EQ(mapper->GetOFB(), nullptr);

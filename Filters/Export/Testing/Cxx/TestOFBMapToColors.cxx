@@ -40,7 +40,8 @@ vtkSmartPointer<vtkOFB> PaintedOFBWithLIC()
     unsigned char c[4];
     RandomColor(random, 255, c);
     painter->GetBrush()->SetColor(c[0] / 255.0, c[1] / 255.0, c[2] / 255.0);
-    painter->GetBrush()->SetBlendMode(k % 3 == 0 ? vtkOFBBrush::EraseAlpha : vtkOFBBrush::Mix);
+    painter->GetBrush()->SetBlendMode(
+      k % 3 == 0 ? vtkOFBBrush::BLEND_ERASE_ALPHA : vtkOFBBrush::BLEND_MIX);
     painter->GetBrush()->SetFalloffToConstant();
     double p[3];
     OnSphere(random->GetNextRangeValue(0, vtkMath::Pi()),

@@ -159,7 +159,7 @@ TEST(ParticlePaint, ChainsFadeAsSpecified)
   advector->SetChainLength(4);
   advector->SetChainSpacing(2);
   advector->SetFootprintRadius(3.0);
-  advector->SetOpacity(0.8);
+  advector->GetBrush()->SetStrength(0.8);
   advector->Update();
   EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 2); // the heads
   advector->SetStepsPerUpdate(3);
@@ -291,7 +291,8 @@ TEST(ParticlePaint, SmearCarriesPreviousPositions)
   vtkNew<vtkOFBParticleAdvector> advector;
   advector->SetInputData(sphere);
   advector->SetNumberOfParticles(4);
-  advector->SetSmearAmount(0.7);
+  advector->GetBrush()->SetTargetToSmear();
+  advector->GetBrush()->SetSmearAmount(0.7);
   advector->Step();
   vtkNew<vtkPoints> previous;
   previous->SetDataTypeToDouble();
@@ -487,14 +488,14 @@ TEST(ParticlePaint, NaNSettingsAndMemoryLimit)
   auto expectEmpty = [&](vtkOFBParticleAdvector* advector, const char* what)
   { ExpectEmptyWithError(messages, advector, what); };
   vtkSmartPointer<vtkPolyData> rotating = RotatingSphere(32);
-  // A NaN footprint radius, opacity or colour (NaN passes the setters' clamps).
+  // A NaN footprint radius, strength or colour (NaN passes the setters' clamps).
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (int k = 0; k < 3; ++k)
   {
     vtkNew<vtkOFBParticleAdvector> advector;
     advector->SetInputData(rotating);
     advector->SetFootprintRadius(k == 0 ? nan : 2.5);
-    advector->SetOpacity(k == 1 ? nan : 1.0);
+    advector->GetBrush()->SetStrength(k == 1 ? nan : 1.0);
     advector->SetColor(k == 2 ? nan : 1.0, 0.0, 0.0);
     expectEmpty(advector, "must be finite");
   }
@@ -525,6 +526,28 @@ TEST(ParticlePaint, NaNSettingsAndMemoryLimit)
   }
 }
 
+// The advector's brush refuses a value that is no enumerator (the advector's Falloff and
+// BlendMode once took any int), and a change of it re-executes the advector.
+TEST(ParticlePaint, BrushRefusesUnknownEnumeratorsAndReexecutes)
+{
+  vtkNew<vtkOFBParticleAdvector> advector;
+  vtkOFBBrush* brush = advector->GetBrush();
+  ASSERT_NE(brush, nullptr);
+  EXPECT_EQ(brush->GetFalloff(), vtkOFBBrush::FALLOFF_CONSTANT); // the advector's default
+  vtkNew<MessageObserver> messages;
+  messages->Watch(brush);
+  brush->SetFalloff(99);
+  EXPECT_NE(messages->Errors.find("not a FalloffType"), std::string::npos);
+  EXPECT_EQ(brush->GetFalloff(), vtkOFBBrush::FALLOFF_CONSTANT);
+  messages->Clear();
+  brush->SetBlendMode(99);
+  EXPECT_NE(messages->Errors.find("not a BlendModeType"), std::string::npos);
+  EXPECT_EQ(brush->GetBlendMode(), vtkOFBBrush::BLEND_MIX);
+  const vtkMTimeType t = advector->GetMTime();
+  brush->SetFalloffToSmooth();
+  EXPECT_GT(advector->GetMTime(), t);
+}
+
 // The painted OFB does not depend on the number of threads.
 TEST(ParticlePaint, OneAndTwoThreadsPaintTheSame)
 {
@@ -542,9 +565,10 @@ TEST(ParticlePaint, OneAndTwoThreadsPaintTheSame)
     advector->SetNumberOfParticles(500);
     advector->SetColorModeToPeriodic();
     advector->SetColorPeriod(7);
-    advector->SetOpacity(0.6);
-    advector->SetFalloff(vtkOFBBrush::Smooth);
-    advector->SetSmearAmount(0.3);
+    advector->GetBrush()->SetStrength(0.6);
+    advector->GetBrush()->SetFalloff(vtkOFBBrush::FALLOFF_SMOOTH);
+    advector->GetBrush()->SetTargetToSmear();
+    advector->GetBrush()->SetSmearAmount(0.3);
     advector->SetLifetime(9);
     advector->SetStepsPerUpdate(25);
     advector->Step();

@@ -168,6 +168,24 @@ TEST(PaintFilter, SameColoursAsThePainterAlongTheSamePath)
 }
 
 //------------------------------------------------------------------------------
+// The filter paints with its brush and its painter's settings: changing either
+// re-executes it.
+TEST(PaintFilter, BrushAndPainterChangesReexecute)
+{
+  vtkNew<vtkOFBPaintFilter> filter;
+  ASSERT_NE(filter->GetBrush(), nullptr);
+  ASSERT_NE(filter->GetPainter(), nullptr);
+  vtkMTimeType t = filter->GetMTime();
+  filter->GetBrush()->SetRadius(0.5);
+  EXPECT_GT(filter->GetMTime(), t);
+  t = filter->GetMTime();
+  filter->GetPainter()->SetSpacing(0.5);
+  EXPECT_GT(filter->GetMTime(), t);
+  t = filter->GetMTime();
+  filter->GetPainter()->MirrorYOn();
+  EXPECT_GT(filter->GetMTime(), t);
+}
+
 TEST(PaintFilter, BadInputGivesAnErrorAndAnEmptyOutput)
 {
   vtkNew<vtkOFBPaintFilter> filter;

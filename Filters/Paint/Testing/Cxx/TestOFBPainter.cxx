@@ -40,19 +40,19 @@ double ClosedForm(int falloff, double x)
   }
   switch (falloff)
   {
-    case vtkOFBBrush::Constant:
+    case vtkOFBBrush::FALLOFF_CONSTANT:
       return 1.0;
-    case vtkOFBBrush::Linear:
+    case vtkOFBBrush::FALLOFF_LINEAR:
       return 1.0 - x;
-    case vtkOFBBrush::Smooth:
+    case vtkOFBBrush::FALLOFF_SMOOTH:
       return 1.0 - 3.0 * x * x + 2.0 * x * x * x;
-    case vtkOFBBrush::Sphere:
+    case vtkOFBBrush::FALLOFF_SPHERE:
       return std::sqrt(1.0 - x * x);
-    case vtkOFBBrush::Root:
+    case vtkOFBBrush::FALLOFF_ROOT:
       return std::sqrt(1.0 - x);
-    case vtkOFBBrush::Sharp:
+    case vtkOFBBrush::FALLOFF_SHARP:
       return (1.0 - x) * (1.0 - x);
-    case vtkOFBBrush::Gaussian:
+    case vtkOFBBrush::FALLOFF_GAUSSIAN:
       return std::exp(-x * x / (2.0 / 9.0));
     default:
       return 0.0;
@@ -78,7 +78,7 @@ void ReferenceBlend(const unsigned char dst[4],
   auto lerp = [](double x, double y, double t) { return x + t * (y - x); };
   switch (mode)
   {
-    case vtkOFBBrush::Mix:
+    case vtkOFBBrush::BLEND_MIX:
     {
       const double ao = a + d[3] * (1.0 - a);
       for (int k = 0; k < 3 && ao > 0.0; ++k)
@@ -88,13 +88,13 @@ void ReferenceBlend(const unsigned char dst[4],
       out[3] = ao;
       return;
     }
-    case vtkOFBBrush::Erase:
+    case vtkOFBBrush::BLEND_ERASE:
       for (int k = 0; k < 4; ++k)
       {
         out[k] = lerp(d[k], i0[k], g);
       }
       return;
-    case vtkOFBBrush::EraseAlpha:
+    case vtkOFBBrush::BLEND_ERASE_ALPHA:
       out[3] = d[3] * (1.0 - g);
       return;
     default:
@@ -105,16 +105,16 @@ void ReferenceBlend(const unsigned char dst[4],
     double f = 0.0;
     switch (mode)
     {
-      case vtkOFBBrush::Add:
+      case vtkOFBBrush::BLEND_ADD:
         f = std::min(1.0, d[k] + src[k]);
         break;
-      case vtkOFBBrush::Subtract:
+      case vtkOFBBrush::BLEND_SUBTRACT:
         f = std::max(0.0, d[k] - src[k]);
         break;
-      case vtkOFBBrush::Multiply:
+      case vtkOFBBrush::BLEND_MULTIPLY:
         f = d[k] * src[k];
         break;
-      case vtkOFBBrush::Lighten:
+      case vtkOFBBrush::BLEND_LIGHTEN:
         f = std::max(d[k], src[k]);
         break;
       default:
@@ -210,7 +210,7 @@ void ExpectDabMatchesReference(vtkOFB* ofb,
 TEST(Brush, FalloffsMatchClosedForms)
 {
   vtkNew<vtkOFBBrush> brush;
-  for (int f = vtkOFBBrush::Constant; f <= vtkOFBBrush::Gaussian; ++f)
+  for (int f = vtkOFBBrush::FALLOFF_CONSTANT; f <= vtkOFBBrush::FALLOFF_GAUSSIAN; ++f)
   {
     brush->SetFalloff(f);
     for (int i = 0; i <= 1000; ++i)
@@ -235,7 +235,7 @@ TEST(Brush, FalloffsMatchClosedForms)
     const double expected = x <= 0.5 ? 1.0 - 1.6 * x : 0.2 - 0.4 * (x - 0.5);
     EXPECT_NEAR(brush->EvaluateFalloff(x), expected, 1e-6) << "custom at " << x;
   }
-  EXPECT_STREQ(vtkOFBBrush::GetFalloffAsString(vtkOFBBrush::Root), "Root");
+  EXPECT_STREQ(vtkOFBBrush::GetFalloffAsString(vtkOFBBrush::FALLOFF_ROOT), "Root");
 }
 
 //------------------------------------------------------------------------------
@@ -262,12 +262,13 @@ TEST(Brush, ColorAndRadiusSettings)
 //------------------------------------------------------------------------------
 TEST(Painter, EveryBlendModeAndFalloffMatchesBruteForce)
 {
-  for (int mode = vtkOFBBrush::Mix; mode <= vtkOFBBrush::EraseAlpha; ++mode)
+  for (int mode = vtkOFBBrush::BLEND_MIX; mode <= vtkOFBBrush::BLEND_ERASE_ALPHA; ++mode)
   {
-    for (int falloff = vtkOFBBrush::Constant; falloff <= vtkOFBBrush::Gaussian; ++falloff)
+    for (int falloff = vtkOFBBrush::FALLOFF_CONSTANT; falloff <= vtkOFBBrush::FALLOFF_GAUSSIAN;
+         ++falloff)
     {
-      if (mode != vtkOFBBrush::Mix && falloff != vtkOFBBrush::Smooth &&
-        falloff != vtkOFBBrush::Root)
+      if (mode != vtkOFBBrush::BLEND_MIX && falloff != vtkOFBBrush::FALLOFF_SMOOTH &&
+        falloff != vtkOFBBrush::FALLOFF_ROOT)
       {
         continue; // every falloff with Mix, two with the other modes
       }
@@ -281,7 +282,7 @@ TEST(Painter, EveryBlendModeAndFalloffMatchesBruteForce)
       brush->SetColor(0.9, 0.3, 0.6, 0.8);
       brush->SetStrength(0.75);
       brush->SetFalloff(falloff);
-      if (mode == vtkOFBBrush::Erase)
+      if (mode == vtkOFBBrush::BLEND_ERASE)
       {
         // Paint first, so that there is something to erase back to the initial colours.
         double c0[3];
@@ -344,7 +345,7 @@ TEST(Painter, CustomFalloffMatchesBruteForce)
     ReferenceBlend(before.data() + 4 * i,
       src,
       brush->EvaluateFalloff(d),
-      vtkOFBBrush::Mix,
+      vtkOFBBrush::BLEND_MIX,
       before.data() + 4 * i,
       ref);
     for (int k = 0; k < 4; ++k)
@@ -466,7 +467,7 @@ TEST(Painter, OneAndTwoThreadsGiveTheColoursOfDabsOneByOne)
   dabs->GetPointData()->AddArray(radius);
   dabs->GetPointData()->AddArray(color);
 
-  for (int mode : { vtkOFBBrush::Mix, vtkOFBBrush::Add, vtkOFBBrush::Multiply })
+  for (int mode : { vtkOFBBrush::BLEND_MIX, vtkOFBBrush::BLEND_ADD, vtkOFBBrush::BLEND_MULTIPLY })
   {
     std::vector<std::vector<unsigned char>> results;
     for (int threads : { 1, 2, 0 })

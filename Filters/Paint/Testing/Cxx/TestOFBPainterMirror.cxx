@@ -238,7 +238,7 @@ TEST(PainterMirror, ThePaintFilterMirrorsItsStrokes)
     filter->SetStrokesData(input);
     filter->GetBrush()->SetRadius(0.3);
     filter->GetBrush()->SetColor(0.0, 0.0, 1.0);
-    filter->SetMirrorX(mirror);
+    filter->GetPainter()->SetMirrorX(mirror);
     filter->Update();
     return ColorsOf(filter->GetOutput());
   };

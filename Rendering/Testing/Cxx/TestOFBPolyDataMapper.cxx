@@ -680,7 +680,7 @@ TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)
   std::ostringstream os;
   mapper->Print(os);
   for (const char* name : { "OFB:",
-         "LookupMode: NearestMipmapped",
+         "LookupMode: Nearest",
          "InterpolationRadius",
          "MipmapBias",
          "MaximumNumberOfMipmapLevels",

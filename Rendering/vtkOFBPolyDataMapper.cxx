@@ -8,6 +8,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBColoring.h"
 #include "vtkOFBLookupFS.h"
 #include "vtkOFBLookupModes.h"
 #include "vtkOFBMapToColors.h"
@@ -46,19 +47,8 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , MipmapBias(0.0)
   , MaximumNumberOfMipmapLevels(8)
   , MinimumMipmapResolution(8)
-  , ColorSource(Paint)
-  , ScalarArrayName(nullptr)
-  , ScalarComponent(0)
-  , IntensityArrayName(nullptr)
-  , IntensityModulation(false)
-  , IntensityWeight(1.0)
-  , LICColorMode(COLOR_MODE_BLEND)
-  , LICIntensity(0.8)
-  , EnhanceColorContrast(false)
-  , LowColorContrastEnhancementFactor(0.0)
-  , HighColorContrastEnhancementFactor(0.0)
+  , Coloring(vtkOFBColoring::New())
   , LightnessRange{ 0.0, 0.0 }
-  , MapModeBias(0.0)
   , UsePaintedNormals(false)
   , LastUploadedSampleCount(0)
   , LastRenderUsedOFB(false)
@@ -78,8 +68,31 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
 //------------------------------------------------------------------------------
 vtkOFBPolyDataMapper::~vtkOFBPolyDataMapper()
 {
-  this->SetScalarArrayName(nullptr);
-  this->SetIntensityArrayName(nullptr);
+  this->Coloring->Delete();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::SetColoring(vtkOFBColoring* coloring)
+{
+  if (!coloring)
+  {
+    vtkErrorMacro("SetColoring(nullptr) is refused: the mapper keeps its colouring.");
+    return;
+  }
+  if (coloring == this->Coloring)
+  {
+    return;
+  }
+  coloring->Register(this);
+  this->Coloring->UnRegister(this);
+  this->Coloring = coloring;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkOFBPolyDataMapper::GetMTime()
+{
+  return std::max(this->Superclass::GetMTime(), this->Coloring->GetMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -140,34 +153,6 @@ void vtkOFBPolyDataMapper::SetLookupMode(int mode)
 }
 
 //------------------------------------------------------------------------------
-const char* vtkOFBPolyDataMapper::GetColorSourceAsString(int source)
-{
-  switch (source)
-  {
-    case Paint:
-      return "Paint";
-    case Scalars:
-      return "Scalars";
-    default:
-      return "Unknown";
-  }
-}
-
-//------------------------------------------------------------------------------
-const char* vtkOFBPolyDataMapper::GetLICColorModeAsString(int mode)
-{
-  switch (mode)
-  {
-    case COLOR_MODE_BLEND:
-      return "COLOR_MODE_BLEND";
-    case COLOR_MODE_MAP:
-      return "COLOR_MODE_MAP";
-    default:
-      return "Unknown";
-  }
-}
-
-//------------------------------------------------------------------------------
 vtkIdType vtkOFBPolyDataMapper::GetGPUMemorySize()
 {
   return static_cast<vtkIdType>(this->Storage->GetMemorySize());
@@ -189,12 +174,12 @@ bool vtkOFBPolyDataMapper::HasTranslucentPolygonalGeometry()
     return this->Superclass::HasTranslucentPolygonalGeometry();
   }
   vtkOFBShaderStorage::Selection selection;
-  selection.ScalarName = this->ScalarArrayName ? this->ScalarArrayName : "";
-  selection.ScalarComponent = this->ScalarComponent;
-  if (this->ColorSource == Scalars &&
+  selection.ScalarName = this->Coloring->GetScalarArrayName();
+  selection.ScalarComponent = this->Coloring->GetScalarComponent();
+  if (this->Coloring->GetColorSource() == vtkOFBColoring::COLOR_SOURCE_SCALARS &&
     vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Scalars, selection))
   {
-    vtkScalarsToColors* lut = this->GetLookupTable();
+    vtkScalarsToColors* lut = this->Coloring->GetLookupTable();
     lut->Build();
     return lut->IsOpaque() == 0;
   }
@@ -317,7 +302,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
   {
     this->UploadLookupTable();
   }
-  if (this->EnhanceColorContrast)
+  if (this->Coloring->GetEnhanceColorContrast())
   {
     this->UpdateLightnessRange(ofb);
   }
@@ -328,13 +313,13 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
 void vtkOFBPolyDataMapper::UpdateLightnessRange(vtkOFB* ofb)
 {
   // The colours change with the OFB (painting, a new LIC), the mapper's settings and the
-  // lookup table (in the mapper's MTime).
+  // colouring with its lookup table (in the mapper's MTime).
   if (this->LightnessTime.GetMTime() > std::max(ofb->GetMTime(), this->GetMTime()))
   {
     return;
   }
   vtkNew<vtkOFBMapToColors> colors;
-  this->CopyColoringTo(colors);
+  colors->SetColoring(this->Coloring);
   colors->ComputeLightnessRange(ofb, this->LightnessRange);
   this->LightnessTime.Modified();
 }
@@ -398,11 +383,12 @@ bool vtkOFBPolyDataMapper::PrepareContext(vtkRenderer* ren)
 //------------------------------------------------------------------------------
 bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Selection& selection)
 {
+  vtkOFBColoring* coloring = this->Coloring;
   this->SourceScalars = false;
-  if (this->ColorSource == Scalars)
+  if (coloring->GetColorSource() == vtkOFBColoring::COLOR_SOURCE_SCALARS)
   {
-    selection.ScalarName = this->ScalarArrayName ? this->ScalarArrayName : "";
-    selection.ScalarComponent = this->ScalarComponent;
+    selection.ScalarName = coloring->GetScalarArrayName();
+    selection.ScalarComponent = coloring->GetScalarComponent();
     if (vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Scalars, selection))
     {
       this->SourceScalars = true;
@@ -411,8 +397,7 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
     else
     {
       selection.ScalarName.clear();
-      this->WarnOnce(std::string("Scalar array \"") +
-        (this->ScalarArrayName ? this->ScalarArrayName : "") +
+      this->WarnOnce(std::string("Scalar array \"") + coloring->GetScalarArrayName() +
         "\" (or its component) is not in the OFB sample data, or is shorter than the "
         "samples: colouring with the paint.");
     }
@@ -425,16 +410,15 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
     return false;
   }
   this->UseIntensity = false;
-  if (this->IntensityModulation)
+  if (coloring->GetIntensityModulation())
   {
-    selection.IntensityName = this->IntensityArrayName ? this->IntensityArrayName : "";
+    selection.IntensityName = coloring->GetIntensityArrayName();
     this->UseIntensity =
       vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Intensity, selection) != nullptr;
     if (!this->UseIntensity)
     {
       selection.IntensityName.clear();
-      this->WarnOnce(std::string("Intensity array \"") +
-        (this->IntensityArrayName ? this->IntensityArrayName : "") +
+      this->WarnOnce(std::string("Intensity array \"") + coloring->GetIntensityArrayName() +
         "\" is not in the OFB sample data, or is shorter than the samples: no intensity "
         "modulation.");
     }
@@ -498,48 +482,11 @@ bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorage::Sel
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::CopyColoringTo(vtkOFBMapToColors* filter)
-{
-  if (!filter)
-  {
-    return;
-  }
-  filter->SetColorSource(
-    this->ColorSource == Scalars ? vtkOFBMapToColors::Scalars : vtkOFBMapToColors::Paint);
-  filter->SetScalarArrayName(this->ScalarArrayName ? this->ScalarArrayName : "");
-  filter->SetScalarComponent(this->ScalarComponent);
-  filter->SetLookupTable(this->GetLookupTable());
-  filter->SetScalarRange(this->ScalarRange);
-  filter->SetUseLookupTableScalarRange(this->UseLookupTableScalarRange);
-  filter->SetIntensityArrayName(this->IntensityArrayName ? this->IntensityArrayName : "");
-  filter->SetIntensityModulation(this->IntensityModulation);
-  filter->SetLICColorMode(this->LICColorMode == COLOR_MODE_MAP
-      ? vtkOFBMapToColors::COLOR_MODE_MAP
-      : vtkOFBMapToColors::COLOR_MODE_BLEND);
-  filter->SetLICIntensity(this->LICIntensity);
-  filter->SetMapModeBias(this->MapModeBias);
-  filter->SetIntensityWeight(this->IntensityWeight);
-  filter->SetEnhanceColorContrast(this->EnhanceColorContrast);
-  filter->SetLowColorContrastEnhancementFactor(this->LowColorContrastEnhancementFactor);
-  filter->SetHighColorContrastEnhancementFactor(this->HighColorContrastEnhancementFactor);
-}
-
-//------------------------------------------------------------------------------
 void vtkOFBPolyDataMapper::UploadLookupTable()
 {
-  // The lookup table, sampled over the scalar range.
-  vtkScalarsToColors* lut = this->GetLookupTable();
-  double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
-  if (this->UseLookupTableScalarRange)
-  {
-    const double* lutRange = lut->GetRange();
-    range[0] = lutRange[0];
-    range[1] = lutRange[1];
-  }
-  else
-  {
-    lut->SetRange(range);
-  }
+  // The colouring's lookup table, sampled over the scalar range.
+  double range[2];
+  vtkScalarsToColors* lut = this->Coloring->PrepareLookupTable(range);
   this->Storage->UpdateLookupTable(lut, range);
 }
 
@@ -551,8 +498,8 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
   {
     this->DeepCells = this->Storage->GetMaximumCellSamples() > DeepCellSamples;
     key << this->LookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity << "|"
-        << this->UseNormals << "|" << this->DeepCells << "|" << this->LICColorMode << "|"
-        << this->EnhanceColorContrast;
+        << this->UseNormals << "|" << this->DeepCells << "|" << this->Coloring->GetLICColorMode()
+        << "|" << this->Coloring->GetEnhanceColorContrast();
   }
   if (key.str() != this->ShaderKey)
   {
@@ -637,12 +584,12 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(std::map<vtkShader::Type, vtkShade
     }
     defines << "#define OFB_LOOKUP_MODE " << vtkOFBFindLookupMode(this->LookupMode)->Define << "\n"
             << "#define OFB_MAX_LEVELS " << vtkOFBShaderStorage::MaximumNumberOfLevels << "\n"
-            << "#define OFB_LIC_MODE " << this->LICColorMode << "\n";
+            << "#define OFB_LIC_MODE " << this->Coloring->GetLICColorMode() << "\n";
     const std::pair<bool, const char*> flags[] = { { this->SourceScalars, "OFB_SOURCE_SCALARS" },
       { this->UseIntensity, "OFB_USE_INTENSITY" },
       { this->UseNormals, "OFB_USE_NORMALS" },
       { this->DeepCells, "OFB_DEEP_CELLS" },
-      { this->EnhanceColorContrast, "OFB_ENHANCE_COLOR" } };
+      { this->Coloring->GetEnhanceColorContrast(), "OFB_ENHANCE_COLOR" } };
     for (const auto& flag : flags)
     {
       if (flag.first)
@@ -747,18 +694,21 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO,
   program->SetUniformf("ofbRadius", static_cast<float>(this->InterpolationRadius));
   program->SetUniformi("ofbNearestVisits", 15); // 3 grids + 2x2 cells in each of the 3
 
+  vtkOFBColoring* coloring = this->Coloring;
   if (this->UseIntensity)
   {
-    program->SetUniformf("ofbIntensityWeight", static_cast<float>(this->IntensityWeight));
-    program->SetUniformf("ofbLICIntensity", static_cast<float>(this->LICIntensity));
-    program->SetUniformf("ofbMapModeBias", static_cast<float>(this->MapModeBias));
+    program->SetUniformf("ofbIntensityWeight", static_cast<float>(coloring->GetIntensityWeight()));
+    program->SetUniformf("ofbLICIntensity", static_cast<float>(coloring->GetLICIntensity()));
+    program->SetUniformf("ofbMapModeBias", static_cast<float>(coloring->GetMapModeBias()));
   }
-  if (this->EnhanceColorContrast)
+  if (coloring->GetEnhanceColorContrast())
   {
     // Lightness stretch: x the low end m, y 1 / (M - m) (0 where M <= m: no stretch).
     const double span = this->LightnessRange[1] - this->LightnessRange[0];
-    const double m = this->LightnessRange[0] + this->LowColorContrastEnhancementFactor * span;
-    const double M = this->LightnessRange[1] - this->HighColorContrastEnhancementFactor * span;
+    const double m =
+      this->LightnessRange[0] + coloring->GetLowColorContrastEnhancementFactor() * span;
+    const double M =
+      this->LightnessRange[1] - coloring->GetHighColorContrastEnhancementFactor() * span;
     const float stretch[2] = { static_cast<float>(m),
       static_cast<float>(M > m ? 1.0 / (M - m) : 0.0) };
     program->SetUniform2f("ofbLightnessStretch", stretch);
@@ -804,23 +754,8 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MipmapBias: " << this->MipmapBias << "\n";
   os << indent << "MaximumNumberOfMipmapLevels: " << this->MaximumNumberOfMipmapLevels << "\n";
   os << indent << "MinimumMipmapResolution: " << this->MinimumMipmapResolution << "\n";
-  os << indent << "ColorSource: " << GetColorSourceAsString(this->ColorSource) << "\n";
-  os << indent << "ScalarArrayName: " << (this->ScalarArrayName ? this->ScalarArrayName : "(none)")
-     << "\n";
-  os << indent << "ScalarComponent: " << this->ScalarComponent << "\n";
-  os << indent
-     << "IntensityArrayName: " << (this->IntensityArrayName ? this->IntensityArrayName : "(none)")
-     << "\n";
-  os << indent << "IntensityModulation: " << (this->IntensityModulation ? "On" : "Off") << "\n";
-  os << indent << "IntensityWeight: " << this->IntensityWeight << "\n";
-  os << indent << "LICColorMode: " << GetLICColorModeAsString(this->LICColorMode) << "\n";
-  os << indent << "LICIntensity: " << this->LICIntensity << "\n";
-  os << indent << "MapModeBias: " << this->MapModeBias << "\n";
-  os << indent << "EnhanceColorContrast: " << this->EnhanceColorContrast << "\n";
-  os << indent << "LowColorContrastEnhancementFactor: " << this->LowColorContrastEnhancementFactor
-     << "\n";
-  os << indent << "HighColorContrastEnhancementFactor: " << this->HighColorContrastEnhancementFactor
-     << "\n";
+  os << indent << "Coloring:\n";
+  this->Coloring->PrintSelf(os, indent.GetNextIndent());
   os << indent << "UsePaintedNormals: " << (this->UsePaintedNormals ? "On" : "Off") << "\n";
   os << indent << "LastUploadedSampleCount: " << this->LastUploadedSampleCount << "\n";
   os << indent << "LastRenderUsedOFB: " << (this->LastRenderUsedOFB ? "true" : "false") << "\n";

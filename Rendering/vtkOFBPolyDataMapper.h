@@ -36,11 +36,14 @@
  *   vtkOFB::MarkSamplesModified (painting), only the coarse samples that read them, and
  *   only those are uploaded (vtkOFBPyramid::UpdateModifiedArrays).
  *
- * Colour sources: Paint (the OFB's "Colors" array) or Scalars (a named float sample
- * array mapped through the mapper's lookup table over its ScalarRange, or the table's own
- * range with UseLookupTableScalarRange). A LIC array (IntensityArrayName, e.g. vtkOFBLIC's
- * "LIC", values L in [0, 1]) combines with either, per fragment, as in VTK's surface LIC
- * (c: the colour of the source, alpha kept):
+ * The colouring is a vtkOFBColoring (GetColoring(), one made by default), the object
+ * vtkOFBMapToColors reads too: share it, `mapToColors->SetColoring(mapper->GetColoring())`,
+ * and the export holds what is shown. Colour sources: paint (the OFB's "Colors" array) or
+ * scalars (a named float sample array mapped through the colouring's lookup table over
+ * its ScalarRange, or the table's own range with UseLookupTableScalarRange; vtkMapper's
+ * own LookupTable and ScalarRange play no part in the OFB colours). A LIC array
+ * (IntensityArrayName, e.g. vtkOFBLIC's "LIC", values L in [0, 1]) combines with either,
+ * per fragment, as in VTK's surface LIC (c: the colour of the source, alpha kept):
  * - COLOR_MODE_BLEND (default): c' = L * LICIntensity + c * (1 - LICIntensity); with
  *   LICIntensity 1 the LIC shows alone.
  * - COLOR_MODE_MAP: c' = c * mix(1, clamp(L + MapModeBias, 0, 1), IntensityWeight); with
@@ -51,10 +54,14 @@
  * AnimationPhase) is uploaded alone, whole; vtkOFB::MarkSamplesModified ranges upload
  * the selected arrays over those ranges.
  *
- * Settings of vtkSurfaceLICInterface and where they are here:
+ * A change of the colouring (shared or not) is a change of the mapper (GetMTime includes
+ * it): the next render uses it.
+ *
+ * Settings of vtkSurfaceLICInterface and where they are here (vtkOFBColoring: the
+ * mapper's GetColoring()):
  * | vtkSurfaceLICInterface            | vtkOFB                                             |
  * |-----------------------------------|----------------------------------------------------|
- * | Enable                            | IntensityModulation (mapper)                       |
+ * | Enable                            | IntensityModulation (vtkOFBColoring)               |
  * | ColorMode (COLOR_MODE_BLEND/MAP)  | LICColorMode (COLOR_MODE_BLEND/MAP), same formulas |
  * | LICIntensity (0.8)                | LICIntensity (0.8), same meaning                   |
  * | MapModeBias (0)                   | MapModeBias (0), same meaning                      |
@@ -67,8 +74,8 @@
  * | MaskOnSurface, MaskThreshold,     | vtkOFBLIC (masking is computed with the LIC)       |
  * |   MaskColor, MaskIntensity        |                                                    |
  * | noise (GenerateNoiseTexture, ...) | vtkOFBLIC                                          |
- * | EnhanceContrast COLOR/BOTH,       | EnhanceColorContrast (mapper), same names and     |
- * |   Low/HighColorContrastEnh...     |   formula; the range over the OFB's samples       |
+ * | EnhanceContrast COLOR/BOTH,       | EnhanceColorContrast (vtkOFBColoring), same names  |
+ * |   Low/HighColorContrastEnh...     |   and formula; the range over the OFB's samples    |
  * | AntiAlias                         | not needed: the LIC lives on the surface; the      |
  * |                                   |   InverseDistance and mipmapped lookups filter it  |
  * | CompositeStrategy                 | not applicable (no image-space compositing)        |
@@ -116,7 +123,7 @@
 class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkOFB;
-class vtkOFBMapToColors;
+class vtkOFBColoring;
 class vtkOFBShaderStorage;
 struct vtkOFBShaderStorageSelection;
 
@@ -135,12 +142,6 @@ public:
     LOOKUP_MIPMAPPED,
     LOOKUP_NEAREST_MIPMAPPED,
     NUMBER_OF_LOOKUP_MODES
-  };
-
-  enum ColorSources
-  {
-    Paint = 0,
-    Scalars = 1
   };
 
   ///@{
@@ -203,108 +204,16 @@ public:
 
   ///@{
   /**
-   * Where colours come from: Paint (default, the "Colors" sample array, RGBA bytes) or
-   * Scalars (ScalarArrayName through the lookup table).
+   * The colouring of the OFB's samples (default: a vtkOFBColoring of its own): colour
+   * source, lookup table and scalar range, intensity (LIC) and how it combines, colour
+   * contrast. Shareable with vtkOFBMapToColors and other mappers; a change to it is seen
+   * at the next render. The LIC is held on the GPU as a byte a sample (clamped to [0, 1],
+   * NaN as 0, to 1/255: finer than the 8-bit colours it ends in). The colour contrast's
+   * lightness range is computed on the CPU (vtkOFBMapToColors) when the OFB or the
+   * colouring changes. Null is refused with an error (the colouring stays as it was).
    */
-  vtkSetClampMacro(ColorSource, int, Paint, Scalars);
-  vtkGetMacro(ColorSource, int);
-  void SetColorSourceToPaint() { this->SetColorSource(Paint); }
-  void SetColorSourceToScalars() { this->SetColorSource(Scalars); }
-  static const char* GetColorSourceAsString(int source);
-  ///@}
-
-  ///@{
-  /**
-   * Sample array mapped through the lookup table when ColorSource is Scalars (default
-   * none), and its component (default 0; -1 uses the magnitude).
-   */
-  vtkSetStringMacro(ScalarArrayName);
-  vtkGetStringMacro(ScalarArrayName);
-  vtkSetClampMacro(ScalarComponent, int, -1, 63);
-  vtkGetMacro(ScalarComponent, int);
-  ///@}
-
-  enum LICColorModes
-  {
-    COLOR_MODE_BLEND = 0,
-    COLOR_MODE_MAP = 1
-  };
-
-  ///@{
-  /**
-   * The LIC (or any intensity) display: a float sample array, values in [0, 1] (default
-   * none; vtkOFBLIC writes "LIC"), combined with the colour of ColorSource when
-   * IntensityModulation is on (default off), as vtkSurfaceLICInterface combines its LIC
-   * with the scalar colours. See the class documentation for the formulas. The GPU holds
-   * it as a byte a sample (clamped to [0, 1], NaN as 0, to 1/255: finer than the 8-bit
-   * colours it ends in), a quarter of a float's memory, upload and cache footprint.
-   */
-  vtkSetStringMacro(IntensityArrayName);
-  vtkGetStringMacro(IntensityArrayName);
-  vtkSetMacro(IntensityModulation, bool);
-  vtkGetMacro(IntensityModulation, bool);
-  vtkBooleanMacro(IntensityModulation, bool);
-  ///@}
-
-  ///@{
-  /**
-   * How the LIC combines with the colour (vtkSurfaceLICInterface's ColorMode; vtkMapper
-   * has a ColorMode of its own): COLOR_MODE_BLEND (default) mixes the LIC grey with the
-   * colour by LICIntensity, COLOR_MODE_MAP multiplies the colour by the LIC plus
-   * MapModeBias.
-   */
-  vtkSetClampMacro(LICColorMode, int, COLOR_MODE_BLEND, COLOR_MODE_MAP);
-  vtkGetMacro(LICColorMode, int);
-  void SetLICColorModeToBlend() { this->SetLICColorMode(COLOR_MODE_BLEND); }
-  void SetLICColorModeToMap() { this->SetLICColorMode(COLOR_MODE_MAP); }
-  static const char* GetLICColorModeAsString(int mode);
-  ///@}
-
-  ///@{
-  /**
-   * COLOR_MODE_BLEND: the LIC's share of the result, in [0, 1] (default 0.8, as VTK's):
-   * 0 shows the colour alone, 1 the LIC alone.
-   */
-  vtkSetClampMacro(LICIntensity, double, 0.0, 1.0);
-  vtkGetMacro(LICIntensity, double);
-  ///@}
-
-  ///@{
-  /**
-   * COLOR_MODE_MAP: added to the LIC before it multiplies the colour, in [-1, 1] (default
-   * 0, as VTK's); positive values brighten, negative darken.
-   */
-  vtkSetClampMacro(MapModeBias, double, -1.0, 1.0);
-  vtkGetMacro(MapModeBias, double);
-  ///@}
-
-  ///@{
-  /**
-   * COLOR_MODE_MAP: strength of the multiplication, in [0, 1] (default 1, VTK's formula):
-   * the factor is mix(1, clamp(LIC + MapModeBias, 0, 1), IntensityWeight).
-   */
-  vtkSetClampMacro(IntensityWeight, double, 0.0, 1.0);
-  vtkGetMacro(IntensityWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * VTK surface LIC's contrast enhancement of the final colour (its EnhanceContrast modes
-   * ENHANCE_CONTRAST_COLOR and _BOTH; default off): the HSL lightness L of each
-   * fragment's colour (after the LIC) is stretched, L' = clamp((L - m) / (M - m), 0, 1),
-   * with m = min + Low (max - min) and M = max - High (max - min), min and max over the
-   * colours of the OFB's samples (alpha above 0; VTK takes them over the screen's
-   * fragments, which change with the view: here they stay put), hue and saturation kept.
-   * The range is computed on the CPU (vtkOFBMapToColors) when the OFB or a setting
-   * changes. Factors in [0, 1] (default 0).
-   */
-  vtkSetMacro(EnhanceColorContrast, bool);
-  vtkGetMacro(EnhanceColorContrast, bool);
-  vtkBooleanMacro(EnhanceColorContrast, bool);
-  vtkSetClampMacro(LowColorContrastEnhancementFactor, double, 0.0, 1.0);
-  vtkGetMacro(LowColorContrastEnhancementFactor, double);
-  vtkSetClampMacro(HighColorContrastEnhancementFactor, double, 0.0, 1.0);
-  vtkGetMacro(HighColorContrastEnhancementFactor, double);
+  void SetColoring(vtkOFBColoring* coloring);
+  vtkGetObjectMacro(Coloring, vtkOFBColoring);
   ///@}
 
   ///@{
@@ -318,13 +227,9 @@ public:
   ///@}
 
   /**
-   * Give `filter` this mapper's colouring (ColorSource, ScalarArrayName, ScalarComponent,
-   * the lookup table and scalar range, the intensity array and modulation, LICColorMode,
-   * LICIntensity, MapModeBias, IntensityWeight), so that it writes as a sample array the
-   * colours this mapper shows before lighting: the LIC in colour for export. Nothing
-   * happens with a null filter.
+   * Also the colouring's modification time (which includes its lookup table's).
    */
-  void CopyColoringTo(vtkOFBMapToColors* filter);
+  vtkMTimeType GetMTime() override;
 
   /**
    * Samples uploaded to the GPU by the last render of the piece (0 when nothing changed).
@@ -354,8 +259,8 @@ public:
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
 
   /**
-   * Whether the surface has translucent parts: an OFB colour (Paint) with alpha below
-   * 255, or a lookup table that is not opaque (Scalars). Without a usable OFB, the
+   * Whether the surface has translucent parts: an OFB colour (paint) with alpha below
+   * 255, or a colouring lookup table that is not opaque (scalars). Without a usable OFB, the
    * superclass's answer. Updates input port 1; the scan of the colours' alpha runs only
    * when they changed (modified sample ranges, a new array or structure) and stops at the
    * first translucent sample.
@@ -399,7 +304,7 @@ protected:
    * CheckOFB (present, not empty), PrepareContext (the window offers what the lookup
    * needs), SelectArrays (which sample arrays the shader reads, with fallbacks),
    * CheckSurfaceInFrame (warn when the surface leaves the OFB's frame), UploadOFB (the
-   * levels and what changed of them), UploadLookupTable (Scalars source only);
+   * levels and what changed of them), UploadLookupTable (scalars source only);
    * UpdateShaderKey notes a change of the shader's variant.
    */
   bool PrepareOFB(vtkRenderer* ren);
@@ -410,8 +315,8 @@ protected:
   void CheckSurfaceInFrame(vtkOFB* ofb);
   bool UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorageSelection& selection);
   void UploadLookupTable();
-  /// The lightness range of the OFB's colours (EnhanceColorContrast), computed again when
-  /// they may have changed.
+  /// The lightness range of the OFB's colours (the colouring's EnhanceColorContrast), computed
+  /// again when they may have changed.
   void UpdateLightnessRange(vtkOFB* ofb);
   void UpdateShaderKey();
   void UpdateOFBProducer();
@@ -438,20 +343,9 @@ protected:
   double MipmapBias;
   int MaximumNumberOfMipmapLevels;
   int MinimumMipmapResolution;
-  int ColorSource;
-  char* ScalarArrayName;
-  int ScalarComponent;
-  char* IntensityArrayName;
-  bool IntensityModulation;
-  double IntensityWeight;
-  int LICColorMode;
-  double LICIntensity;
-  bool EnhanceColorContrast;
-  double LowColorContrastEnhancementFactor;
-  double HighColorContrastEnhancementFactor;
+  vtkOFBColoring* Coloring;
   double LightnessRange[2];   // of the colours shown, before the stretch
   vtkTimeStamp LightnessTime; // when it was computed
-  double MapModeBias;
   bool UsePaintedNormals;
 
   vtkIdType LastUploadedSampleCount;

@@ -283,10 +283,11 @@ void vtkOFBShaderStorage::UpdateLookupTable(vtkScalarsToColors* lut, const doubl
   {
     return;
   }
-  if (lut->GetMTime() > this->UploadedLUTTime || range[0] != this->UploadedLUTRange[0] ||
-    range[1] != this->UploadedLUTRange[1])
+  if (lut != this->UploadedLUT || lut->GetMTime() > this->UploadedLUTTime ||
+    range[0] != this->UploadedLUTRange[0] || range[1] != this->UploadedLUTRange[1])
   {
     this->UploadLookupTable(lut, range);
+    this->UploadedLUT = lut;
     this->UploadedLUTTime = lut->GetMTime();
     this->UploadedLUTRange[0] = range[0];
     this->UploadedLUTRange[1] = range[1];
@@ -828,6 +829,7 @@ void vtkOFBShaderStorage::ReleaseGraphicsResources(vtkWindow* window)
 void vtkOFBShaderStorage::ForgetUploads()
 {
   this->UploadedOFB = nullptr;
+  this->UploadedLUT = nullptr;
   this->UploadedLUTTime = 0;
 }
 

@@ -241,6 +241,7 @@ private:
   std::string UploadKey;
   vtkWeakPointer<vtkOFB> UploadedOFB;
   vtkMTimeType UploadedPyramidTime = 0;
+  vtkWeakPointer<vtkScalarsToColors> UploadedLUT; // another table (a colouring swapped) uploads
   vtkMTimeType UploadedLUTTime = 0;
   double UploadedLUTRange[2] = { 0.0, 0.0 };
   size_t UploadedBytes = 0;

@@ -32,6 +32,7 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBColoring.h"
 #include "vtkOFBLIC.h"
 #include "vtkOFBMapToColors.h"
 #include "vtkOFBPolyDataMapper.h"
@@ -89,10 +90,10 @@ struct App
     this->LIC->Update();
     // VTK surface LIC's colour modes: map multiplies the colour by the LIC plus
     // MapModeBias, blend mixes the LIC grey in by LICIntensity (1: the LIC alone).
-    this->Mapper->SetLICColorMode(this->ColorMode == 0 ? vtkOFBPolyDataMapper::COLOR_MODE_MAP
-                                                       : vtkOFBPolyDataMapper::COLOR_MODE_BLEND);
-    this->Mapper->SetMapModeBias(0.1);
-    this->Mapper->SetLICIntensity(this->ColorMode == 1 ? 0.8 : 1.0);
+    this->Mapper->GetColoring()->SetLICColorMode(
+      this->ColorMode == 0 ? vtkOFBColoring::COLOR_MODE_MAP : vtkOFBColoring::COLOR_MODE_BLEND);
+    this->Mapper->GetColoring()->SetMapModeBias(0.1);
+    this->Mapper->GetColoring()->SetLICIntensity(this->ColorMode == 1 ? 0.8 : 1.0);
     static const char* noise[3] = { "uniform", "Gaussian", "Perlin" };
     std::ostringstream text;
     text << this->LIC->GetOutput()->GetNumberOfSamples() << " samples, LIC "
@@ -105,9 +106,8 @@ struct App
          << ", n noise: " << noise[this->LIC->GetNoiseType()] << "\n"
          << "o oriented: " << (this->LIC->GetOrientedLIC() ? "on" : "off")
          << ", l enhanced: " << (this->LIC->GetEnhancedLIC() ? "on" : "off")
-         << ", space animation: " << (this->Animating ? "on" : "off")
-         << ", c colour contrast: " << (this->Mapper->GetEnhanceColorContrast() ? "on" : "off")
-         << "\n"
+         << ", space animation: " << (this->Animating ? "on" : "off") << ", c colour contrast: "
+         << (this->Mapper->GetColoring()->GetEnhanceColorContrast() ? "on" : "off") << "\n"
          << "d display: "
          << vtkOFBPolyDataMapper::GetLookupModeAsString(this->Mapper->GetLookupMode())
          << ", x export to " << this->ExportPath;
@@ -172,7 +172,8 @@ struct App
     }
     else if (key == "c")
     {
-      this->Mapper->SetEnhanceColorContrast(!this->Mapper->GetEnhanceColorContrast());
+      this->Mapper->GetColoring()->SetEnhanceColorContrast(
+        !this->Mapper->GetColoring()->GetEnhanceColorContrast());
     }
     else if (key == "x")
     {
@@ -192,7 +193,7 @@ struct App
   {
     this->LIC->Update();
     this->Colors->SetInputConnection(this->LIC->GetOutputPort());
-    this->Mapper->CopyColoringTo(this->Colors);
+    this->Colors->SetColoring(this->Mapper->GetColoring());
     this->Colors->SetOutputArrayName("Colors"); // what the export takes as the paint
     this->Colors->Update();
     const bool ok = ofbpaint::ExportPainting(
@@ -378,14 +379,14 @@ int main(int argc, char* argv[])
   app.Mapper->SetInputData(mesh);
   app.Mapper->SetOFBConnection(app.LIC->GetOutputPort());
   app.Mapper->SetLookupModeToInverseDistance();
-  app.Mapper->SetIntensityArrayName("LIC");
-  app.Mapper->IntensityModulationOn();
-  app.Mapper->SetColorSourceToScalars();
-  app.Mapper->SetLookupTable(app.Table);
-  app.Mapper->SetScalarArrayName("Speed");
-  app.Mapper->SetScalarRange(mesh->GetPointData()->GetArray("Speed")->GetRange());
-  app.Mapper->SetLowColorContrastEnhancementFactor(0.05);
-  app.Mapper->SetHighColorContrastEnhancementFactor(0.05);
+  app.Mapper->GetColoring()->SetIntensityArrayName("LIC");
+  app.Mapper->GetColoring()->IntensityModulationOn();
+  app.Mapper->GetColoring()->SetColorSourceToScalars();
+  app.Mapper->GetColoring()->SetLookupTable(app.Table);
+  app.Mapper->GetColoring()->SetScalarArrayName("Speed");
+  app.Mapper->GetColoring()->SetScalarRange(mesh->GetPointData()->GetArray("Speed")->GetRange());
+  app.Mapper->GetColoring()->SetLowColorContrastEnhancementFactor(0.05);
+  app.Mapper->GetColoring()->SetHighColorContrastEnhancementFactor(0.05);
   app.Actor->SetMapper(app.Mapper);
   app.Text->GetTextProperty()->SetFontSize(12);
   app.Text->SetPosition(10, 10);

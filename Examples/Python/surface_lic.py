@@ -106,27 +106,28 @@ mapper.SetOFBConnection(lic.GetOutputPort())
 {"idw": mapper.SetLookupModeToInverseDistance,
  "nearest": mapper.SetLookupModeToNearest,
  "nearestmipmapped": mapper.SetLookupModeToNearestMipmapped}[args.lookup]()
-mapper.SetIntensityArrayName("LIC")
-mapper.IntensityModulationOn()
+coloring = mapper.GetColoring()     # vtkOFBColoring: shared with the export below
+coloring.SetIntensityArrayName("LIC")
+coloring.IntensityModulationOn()
 if args.color == "speed":
     lut = vtkLookupTable()
     lut.SetHueRange(0.667, 0.0)
     lut.Build()
-    mapper.SetLookupTable(lut)
-    mapper.SetScalarRange(speed_array.GetRange())
-    mapper.SetColorSourceToScalars()
-    mapper.SetScalarArrayName("Speed")
+    coloring.SetLookupTable(lut)
+    coloring.SetScalarRange(speed_array.GetRange())
+    coloring.SetColorSourceToScalars()
+    coloring.SetScalarArrayName("Speed")
     # VTK surface LIC's colour modes: "map" multiplies the colour by LIC + MapModeBias,
     # "blend" mixes the LIC grey in by LICIntensity (VTK's default 0.8).
     if args.mode == "map":
-        mapper.SetLICColorModeToMap()
-        mapper.SetMapModeBias(0.1)
+        coloring.SetLICColorModeToMap()
+        coloring.SetMapModeBias(0.1)
     else:
-        mapper.SetLICColorModeToBlend()
-        mapper.SetLICIntensity(0.8)
+        coloring.SetLICColorModeToBlend()
+        coloring.SetLICIntensity(0.8)
 else:
-    mapper.SetLICColorModeToBlend()
-    mapper.SetLICIntensity(1.0)          # the LIC alone
+    coloring.SetLICColorModeToBlend()
+    coloring.SetLICIntensity(1.0)          # the LIC alone
 
 actor = vtkActor()
 actor.SetMapper(mapper)
@@ -137,7 +138,7 @@ window = render_offscreen(actor, args)
 image = save_png(window, args.png)
 
 # 7. With --export: what the mapper shows, as a textured OBJ. vtkOFBMapToColors takes the
-#    mapper's colouring (CopyColoringTo) and writes it per sample ("DisplayColors");
+#    mapper's colouring (the same vtkOFBColoring) and writes it per sample ("DisplayColors");
 #    vtkOFBTextureAtlas gives the triangles texture coordinates (a tile each, a texel an
 #    OFB cell); the baker writes the colours into the atlas; the OBJ writer writes the
 #    .obj, the .mtl and the texture as a PNG (RGB: opaque).
@@ -145,7 +146,7 @@ exported = None
 if args.export:
     colors = vtkofb.vtkOFBMapToColors()
     colors.SetInputConnection(lic.GetOutputPort())
-    mapper.CopyColoringTo(colors)
+    colors.SetColoring(coloring)
     triangles = vtkTriangleFilter()
     triangles.SetInputData(mesh)
     atlas = vtkofb.vtkOFBTextureAtlas()

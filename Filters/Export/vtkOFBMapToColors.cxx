@@ -4,14 +4,15 @@
 #include "vtkDataArrayRange.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkOFB.h"
 #include "vtkOFBColorSpace.h"
+#include "vtkOFBColoring.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkScalarsToColors.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <glm/glm.hpp>
@@ -21,7 +22,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBMapToColors);
-vtkCxxSetObjectMacro(vtkOFBMapToColors, LookupTable, vtkScalarsToColors);
 
 namespace
 {
@@ -191,20 +191,7 @@ unsigned char ToByte(float v)
 
 //------------------------------------------------------------------------------
 vtkOFBMapToColors::vtkOFBMapToColors()
-  : ColorSource(Paint)
-  , ScalarComponent(0)
-  , LookupTable(nullptr)
-  , ScalarRange{ 0.0, 1.0 }
-  , UseLookupTableScalarRange(false)
-  , IntensityArrayName("LIC")
-  , IntensityModulation(false)
-  , LICColorMode(COLOR_MODE_BLEND)
-  , LICIntensity(0.8)
-  , MapModeBias(0.0)
-  , IntensityWeight(1.0)
-  , EnhanceColorContrast(false)
-  , LowColorContrastEnhancementFactor(0.0)
-  , HighColorContrastEnhancementFactor(0.0)
+  : Coloring(vtkOFBColoring::New())
   , OutputArrayName("DisplayColors")
   , LightnessRange{ 0.0, 0.0 }
 {
@@ -213,30 +200,31 @@ vtkOFBMapToColors::vtkOFBMapToColors()
 //------------------------------------------------------------------------------
 vtkOFBMapToColors::~vtkOFBMapToColors()
 {
-  this->SetLookupTable(nullptr);
+  this->Coloring->Delete();
 }
 
 //------------------------------------------------------------------------------
-vtkScalarsToColors* vtkOFBMapToColors::GetLookupTable()
+void vtkOFBMapToColors::SetColoring(vtkOFBColoring* coloring)
 {
-  if (!this->LookupTable)
+  if (!coloring)
   {
-    vtkNew<vtkLookupTable> table;
-    table->Build();
-    this->SetLookupTable(table);
+    vtkErrorMacro("SetColoring(nullptr) is refused: the filter keeps its colouring.");
+    return;
   }
-  return this->LookupTable;
+  if (coloring == this->Coloring)
+  {
+    return;
+  }
+  coloring->Register(this);
+  this->Coloring->UnRegister(this);
+  this->Coloring = coloring;
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
 vtkMTimeType vtkOFBMapToColors::GetMTime()
 {
-  vtkMTimeType t = this->Superclass::GetMTime();
-  if (this->LookupTable)
-  {
-    t = std::max(t, this->LookupTable->GetMTime());
-  }
-  return t;
+  return std::max(this->Superclass::GetMTime(), this->Coloring->GetMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -251,9 +239,10 @@ bool vtkOFBMapToColors::FindArrays(vtkOFB* input, vtkDataArray*& source, vtkData
 {
   vtkPointData* pd = input->GetSampleData();
   const vtkIdType n = input->GetNumberOfSamples();
+  vtkOFBColoring* settings = this->Coloring;
   source = nullptr;
   intensity = nullptr;
-  if (this->ColorSource == Paint)
+  if (settings->GetColorSource() == vtkOFBColoring::COLOR_SOURCE_PAINT)
   {
     source = vtkUnsignedCharArray::SafeDownCast(pd->GetAbstractArray("Colors"));
     if (!source || source->GetNumberOfComponents() != 4 || source->GetNumberOfTuples() != n)
@@ -265,31 +254,31 @@ bool vtkOFBMapToColors::FindArrays(vtkOFB* input, vtkDataArray*& source, vtkData
   }
   else
   {
-    source = vtkArrayDownCast<vtkDataArray>(pd->GetAbstractArray(this->ScalarArrayName.c_str()));
+    source = vtkArrayDownCast<vtkDataArray>(pd->GetAbstractArray(settings->GetScalarArrayName()));
     if (!source || source->GetNumberOfTuples() != n ||
-      this->ScalarComponent >= source->GetNumberOfComponents())
+      settings->GetScalarComponent() >= source->GetNumberOfComponents())
     {
       vtkErrorMacro("ColorSource Scalars: no numeric sample array \""
-        << this->ScalarArrayName << "\" with a component " << this->ScalarComponent
-        << ", one tuple a sample.");
+        << settings->GetScalarArrayName() << "\" with a component "
+        << settings->GetScalarComponent() << ", one tuple a sample.");
       return false;
     }
-    const double* range = this->ScalarRange;
+    const double* range = settings->GetScalarRange();
     if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
     {
       vtkErrorMacro("ScalarRange " << range[0] << " " << range[1] << " is not finite.");
       return false;
     }
   }
-  if (this->IntensityModulation)
+  if (settings->GetIntensityModulation())
   {
     intensity =
-      vtkArrayDownCast<vtkDataArray>(pd->GetAbstractArray(this->IntensityArrayName.c_str()));
+      vtkArrayDownCast<vtkDataArray>(pd->GetAbstractArray(settings->GetIntensityArrayName()));
     if (!intensity || intensity->GetNumberOfComponents() != 1 ||
       intensity->GetNumberOfTuples() != n)
     {
       vtkErrorMacro("IntensityModulation: no numeric 1-component sample array \""
-        << this->IntensityArrayName << "\", one value a sample.");
+        << settings->GetIntensityArrayName() << "\", one value a sample.");
       return false;
     }
   }
@@ -297,7 +286,7 @@ bool vtkOFBMapToColors::FindArrays(vtkOFB* input, vtkDataArray*& source, vtkData
 }
 
 //------------------------------------------------------------------------------
-struct vtkOFBMapToColors::Coloring
+struct vtkOFBMapToColors::SampleColoring
 {
   SampledTable Table;
   std::vector<float> Scalars;
@@ -306,27 +295,23 @@ struct vtkOFBMapToColors::Coloring
 };
 
 //------------------------------------------------------------------------------
-void vtkOFBMapToColors::Prepare(vtkDataArray* source, vtkDataArray* intensityArray, Coloring& c)
+void vtkOFBMapToColors::Prepare(vtkDataArray* source,
+  vtkDataArray* intensityArray,
+  SampleColoring& c)
 {
+  vtkOFBColoring* settings = this->Coloring;
+  const bool paint = settings->GetColorSource() == vtkOFBColoring::COLOR_SOURCE_PAINT;
   // The scalar range: the table's own, or set on the table, as vtkMapper does.
-  if (this->ColorSource == Scalars)
+  if (!paint)
   {
-    vtkScalarsToColors* lut = this->GetLookupTable();
-    double range[2] = { this->ScalarRange[0], this->ScalarRange[1] };
-    if (this->UseLookupTableScalarRange)
-    {
-      std::copy(lut->GetRange(), lut->GetRange() + 2, range);
-    }
-    else
-    {
-      lut->SetRange(range);
-    }
+    double range[2];
+    vtkScalarsToColors* lut = settings->PrepareLookupTable(range);
     c.Table.Sample(lut, range);
   }
   this->UpdateProgress(0.2);
-  if (this->ColorSource == Scalars)
+  if (!paint)
   {
-    c.Scalars = Floats(source, this->ScalarComponent);
+    c.Scalars = Floats(source, settings->GetScalarComponent());
   }
   if (intensityArray)
   {
@@ -335,16 +320,14 @@ void vtkOFBMapToColors::Prepare(vtkDataArray* source, vtkDataArray* intensityArr
   this->UpdateProgress(0.4);
 
   SampleColor& color = c.Color;
-  color.Paint = this->ColorSource == Paint
-    ? vtkUnsignedCharArray::SafeDownCast(source)->GetPointer(0)
-    : nullptr;
+  color.Paint = paint ? vtkUnsignedCharArray::SafeDownCast(source)->GetPointer(0) : nullptr;
   color.Table = &c.Table;
   color.Scalars = c.Scalars.empty() ? nullptr : c.Scalars.data();
   color.Intensity = c.Intensity.empty() ? nullptr : c.Intensity.data();
-  color.Blend = this->LICColorMode == COLOR_MODE_BLEND;
-  color.Share = static_cast<float>(this->LICIntensity);
-  color.Bias = static_cast<float>(this->MapModeBias);
-  color.Weight = static_cast<float>(this->IntensityWeight);
+  color.Blend = settings->GetLICColorMode() == vtkOFBColoring::COLOR_MODE_BLEND;
+  color.Share = static_cast<float>(settings->GetLICIntensity());
+  color.Bias = static_cast<float>(settings->GetMapModeBias());
+  color.Weight = static_cast<float>(settings->GetIntensityWeight());
 }
 
 //------------------------------------------------------------------------------
@@ -362,7 +345,7 @@ bool vtkOFBMapToColors::ComputeLightnessRange(vtkOFB* input, double range[2])
   {
     return false;
   }
-  Coloring coloring;
+  SampleColoring coloring;
   this->Prepare(source, intensityArray, coloring);
   const glm::vec2 found = FindLightnessRange(coloring.Color, input->GetNumberOfSamples());
   this->UpdateProgress(1.0);
@@ -400,26 +383,26 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
     return 1;
   }
   const vtkIdType n = input->GetNumberOfSamples();
-  Coloring coloring;
+  SampleColoring coloring;
   this->Prepare(source, intensityArray, coloring);
   const SampleColor& color = coloring.Color;
 
   // With the stretch: the lightness range of the colours shown (alpha above 0), a pass of
   // its own before the one that writes them.
   this->LightnessRange[0] = this->LightnessRange[1] = 0.0;
-  const glm::vec2 range =
-    this->EnhanceColorContrast ? FindLightnessRange(color, n) : glm::vec2(1.0f, 0.0f);
+  const bool enhance = this->Coloring->GetEnhanceColorContrast();
+  const glm::vec2 range = enhance ? FindLightnessRange(color, n) : glm::vec2(1.0f, 0.0f);
   if (range[0] <= range[1])
   {
     this->LightnessRange[0] = range[0];
     this->LightnessRange[1] = range[1];
   }
   const double span = this->LightnessRange[1] - this->LightnessRange[0];
-  const float low =
-    static_cast<float>(this->LightnessRange[0] + this->LowColorContrastEnhancementFactor * span);
-  const float high =
-    static_cast<float>(this->LightnessRange[1] - this->HighColorContrastEnhancementFactor * span);
-  const bool stretch = this->EnhanceColorContrast && high > low;
+  const float low = static_cast<float>(
+    this->LightnessRange[0] + this->Coloring->GetLowColorContrastEnhancementFactor() * span);
+  const float high = static_cast<float>(
+    this->LightnessRange[1] - this->Coloring->GetHighColorContrastEnhancementFactor() * span);
+  const bool stretch = enhance && high > low;
   this->UpdateProgress(0.6);
 
   vtkNew<vtkUnsignedCharArray> colors;
@@ -463,24 +446,8 @@ int vtkOFBMapToColors::RequestData(vtkInformation*,
 void vtkOFBMapToColors::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ColorSource: " << (this->ColorSource == Paint ? "Paint" : "Scalars") << "\n";
-  os << indent << "ScalarArrayName: " << this->ScalarArrayName << "\n";
-  os << indent << "ScalarComponent: " << this->ScalarComponent << "\n";
-  os << indent << "LookupTable: " << this->LookupTable << "\n";
-  os << indent << "ScalarRange: " << this->ScalarRange[0] << " " << this->ScalarRange[1] << "\n";
-  os << indent << "UseLookupTableScalarRange: " << this->UseLookupTableScalarRange << "\n";
-  os << indent << "IntensityArrayName: " << this->IntensityArrayName << "\n";
-  os << indent << "IntensityModulation: " << this->IntensityModulation << "\n";
-  os << indent << "LICColorMode: " << (this->LICColorMode == COLOR_MODE_BLEND ? "Blend" : "Map")
-     << "\n";
-  os << indent << "LICIntensity: " << this->LICIntensity << "\n";
-  os << indent << "MapModeBias: " << this->MapModeBias << "\n";
-  os << indent << "IntensityWeight: " << this->IntensityWeight << "\n";
-  os << indent << "EnhanceColorContrast: " << this->EnhanceColorContrast << "\n";
-  os << indent << "LowColorContrastEnhancementFactor: " << this->LowColorContrastEnhancementFactor
-     << "\n";
-  os << indent << "HighColorContrastEnhancementFactor: " << this->HighColorContrastEnhancementFactor
-     << "\n";
+  os << indent << "Coloring:\n";
+  this->Coloring->PrintSelf(os, indent.GetNextIndent());
   os << indent << "OutputArrayName: " << this->OutputArrayName << "\n";
   os << indent << "LightnessRange: " << this->LightnessRange[0] << " " << this->LightnessRange[1]
      << "\n";

@@ -10,31 +10,26 @@
  * colour exported as an OBJ with its texture), vtkOFBProbeFilter (vertex colours),
  * vtkOFBWriter, vtkOFBToPolyData, or the mapper itself with its Paint source.
  *
- * The settings have the names, defaults and formulas of the mapper's (there:
- * vtkOFBPolyDataMapper::CopyColoringTo() sets them from a mapper, so that what is
- * exported is what is seen):
- * - ColorSource Paint (the "Colors" RGBA bytes; a sample with alpha 0 has RGB 0) or
- *   Scalars (ScalarArrayName, component ScalarComponent or its magnitude with -1,
- *   mapped through LookupTable over ScalarRange, or over the table's own range with
- *   UseLookupTableScalarRange; values outside the range are clamped to it);
- * - with IntensityModulation, the intensity L (IntensityArrayName, default "LIC",
- *   clamped to [0, 1]; the mapper keeps it as a byte, to 1/255):
- *   COLOR_MODE_BLEND: rgb' = rgb (1 - LICIntensity) + L LICIntensity;
- *   COLOR_MODE_MAP: rgb' = rgb mix(1, clamp(L + MapModeBias, 0, 1), IntensityWeight).
- * Alpha is the source's. With EnhanceColorContrast the lightness is then stretched, as
- * VTK's ENHANCE_CONTRAST_COLOR does. Channels are rounded to bytes (value 255, rounded).
+ * The colouring is a vtkOFBColoring (GetColoring(), one made by default): the colour
+ * source (paint, or scalars through a lookup table), the intensity and how it combines
+ * (VTK surface LIC's blend and map), the colour contrast; the formulas are in its
+ * documentation. Give the filter a mapper's, `SetColoring(mapper->GetColoring())`, and
+ * what is exported is what is seen; a change to the shared object re-executes the filter
+ * (GetMTime includes the colouring's).
+ *
+ * Alpha is the source's. Channels are rounded to bytes (value 255, rounded).
  *
  * Output: a copy of the input OFB (its arrays shared, not copied) with the array
  * OutputArrayName (default "DisplayColors"; "Colors" replaces the paint in the copy) as
  * its active scalars. The input is untouched.
  *
- * Errors (an empty output): no input OFB, ColorSource Scalars without a numeric sample
- * array ScalarArrayName or with a ScalarComponent it lacks, Paint without RGBA byte
- * "Colors", IntensityModulation without a 1-component numeric IntensityArrayName, an
- * empty OutputArrayName, a ScalarRange that is not finite. A NaN scalar takes the
- * table's NaN colour, a NaN intensity counts as 0.
+ * Errors (an empty output): no input OFB, no colouring, COLOR_SOURCE_SCALARS without a
+ * numeric sample array ScalarArrayName or with a ScalarComponent it lacks,
+ * COLOR_SOURCE_PAINT without RGBA byte "Colors", IntensityModulation without a 1-component numeric
+ * IntensityArrayName, an empty OutputArrayName, a ScalarRange that is not finite. A NaN scalar
+ * takes the table's NaN colour, a NaN intensity counts as 0.
  *
- * @sa vtkOFBPolyDataMapper vtkOFBLIC vtkOFBTextureBaker vtkImageMapToColors
+ * @sa vtkOFBColoring vtkOFBPolyDataMapper vtkOFBLIC vtkOFBTextureBaker vtkImageMapToColors
  */
 
 #ifndef vtkOFBMapToColors_h
@@ -47,7 +42,7 @@
 
 class vtkDataArray;
 class vtkOFB;
-class vtkScalarsToColors;
+class vtkOFBColoring;
 
 class VTKOFBEXPORT_EXPORT vtkOFBMapToColors : public vtkOFBAlgorithm
 {
@@ -56,122 +51,26 @@ public:
   vtkTypeMacro(vtkOFBMapToColors, vtkOFBAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum ColorSources
-  {
-    Paint = 0,
-    Scalars = 1
-  };
-
-  enum LICColorModes
-  {
-    COLOR_MODE_BLEND = 0,
-    COLOR_MODE_MAP = 1
-  };
-
   ///@{
   /**
-   * Where colours come from: Paint (default, the "Colors" sample array, RGBA bytes) or
-   * Scalars (ScalarArrayName through the lookup table).
+   * The colouring settings (default: a vtkOFBColoring of its own). Set a mapper's to
+   * export what it shows; the object is shared, not copied. Null is refused with an
+   * error (the colouring stays as it was).
    */
-  vtkSetClampMacro(ColorSource, int, Paint, Scalars);
-  vtkGetMacro(ColorSource, int);
-  void SetColorSourceToPaint() { this->SetColorSource(Paint); }
-  void SetColorSourceToScalars() { this->SetColorSource(Scalars); }
-  ///@}
-
-  ///@{
-  /**
-   * The sample array mapped through the lookup table with ColorSource Scalars (default
-   * empty), and its component (default 0; -1 uses the magnitude).
-   */
-  vtkSetStdStringFromCharMacro(ScalarArrayName);
-  vtkGetCharFromStdStringMacro(ScalarArrayName);
-  vtkSetClampMacro(ScalarComponent, int, -1, 63);
-  vtkGetMacro(ScalarComponent, int);
-  ///@}
-
-  ///@{
-  /**
-   * The lookup table (default none: a vtkLookupTable with VTK's defaults, made at the
-   * first update), and the scalar range it maps (default 0 to 1, as vtkMapper's), or the
-   * table's own range with UseLookupTableScalarRange (default off; off sets the table's
-   * range, as vtkMapper does).
-   */
-  void SetLookupTable(vtkScalarsToColors* lut);
-  vtkScalarsToColors* GetLookupTable();
-  vtkSetVector2Macro(ScalarRange, double);
-  vtkGetVector2Macro(ScalarRange, double);
-  vtkSetMacro(UseLookupTableScalarRange, bool);
-  vtkGetMacro(UseLookupTableScalarRange, bool);
-  vtkBooleanMacro(UseLookupTableScalarRange, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The intensity (a LIC) combined with the colour when IntensityModulation is on
-   * (default off): a 1-component sample array, values in [0, 1] (default "LIC", what
-   * vtkOFBLIC writes).
-   */
-  vtkSetStdStringFromCharMacro(IntensityArrayName);
-  vtkGetCharFromStdStringMacro(IntensityArrayName);
-  vtkSetMacro(IntensityModulation, bool);
-  vtkGetMacro(IntensityModulation, bool);
-  vtkBooleanMacro(IntensityModulation, bool);
-  ///@}
-
-  ///@{
-  /**
-   * How the intensity combines with the colour (vtkSurfaceLICInterface's ColorMode):
-   * COLOR_MODE_BLEND (default) or COLOR_MODE_MAP; formulas in the class documentation.
-   */
-  vtkSetClampMacro(LICColorMode, int, COLOR_MODE_BLEND, COLOR_MODE_MAP);
-  vtkGetMacro(LICColorMode, int);
-  void SetLICColorModeToBlend() { this->SetLICColorMode(COLOR_MODE_BLEND); }
-  void SetLICColorModeToMap() { this->SetLICColorMode(COLOR_MODE_MAP); }
-  ///@}
-
-  ///@{
-  /**
-   * COLOR_MODE_BLEND: the intensity's share, in [0, 1] (default 0.8). COLOR_MODE_MAP:
-   * MapModeBias added to the intensity, in [-1, 1] (default 0), and IntensityWeight the
-   * strength of the multiplication, in [0, 1] (default 1).
-   */
-  vtkSetClampMacro(LICIntensity, double, 0.0, 1.0);
-  vtkGetMacro(LICIntensity, double);
-  vtkSetClampMacro(MapModeBias, double, -1.0, 1.0);
-  vtkGetMacro(MapModeBias, double);
-  vtkSetClampMacro(IntensityWeight, double, 0.0, 1.0);
-  vtkGetMacro(IntensityWeight, double);
-  ///@}
-
-  ///@{
-  /**
-   * VTK surface LIC's contrast enhancement of the final colour (its EnhanceContrast
-   * modes ENHANCE_CONTRAST_COLOR and _BOTH; default off): the HSL lightness L of every
-   * colour (after the intensity) is stretched, L' = clamp((L - m) / (M - m), 0, 1), with
-   * m = min + Low (max - min) and M = max - High (max - min) over the samples' colours with
-   * alpha above 0; hue and saturation are kept. The factors are in [0, 1] (default 0);
-   * where M <= m nothing is stretched.
-   */
-  vtkSetMacro(EnhanceColorContrast, bool);
-  vtkGetMacro(EnhanceColorContrast, bool);
-  vtkBooleanMacro(EnhanceColorContrast, bool);
-  vtkSetClampMacro(LowColorContrastEnhancementFactor, double, 0.0, 1.0);
-  vtkGetMacro(LowColorContrastEnhancementFactor, double);
-  vtkSetClampMacro(HighColorContrastEnhancementFactor, double, 0.0, 1.0);
-  vtkGetMacro(HighColorContrastEnhancementFactor, double);
+  void SetColoring(vtkOFBColoring* coloring);
+  vtkGetObjectMacro(Coloring, vtkOFBColoring);
   ///@}
 
   /**
-   * After an update with EnhanceColorContrast: the smallest and largest lightness of the
-   * colours before the stretch, what the mapper stretches by (0 0 without the stretch or
+   * After an update with the colouring's EnhanceColorContrast: the smallest and largest lightness
+   * of the colours before the stretch, what the mapper stretches by (0 0 without the stretch or
    * without samples of alpha above 0: not computed).
    */
   vtkGetVector2Macro(LightnessRange, double);
 
   /**
-   * The lightness range that an update with EnhanceColorContrast would find for `input`
-   * (the smallest and largest HSL lightness of the colours with alpha above 0, before the
+   * The lightness range that an update with the colouring's EnhanceColorContrast would find for
+   * `input` (the smallest and largest HSL lightness of the colours with alpha above 0, before the
    * stretch), computed without writing any output or colour array: what
    * vtkOFBPolyDataMapper stretches by. False, with 0 0, where there is no such colour or
    * the input lacks the arrays the settings name (an error then).
@@ -188,7 +87,7 @@ public:
   ///@}
 
   /**
-   * Also the lookup table's modification time.
+   * Also the colouring's modification time (which includes its lookup table's).
    */
   vtkMTimeType GetMTime() override;
 
@@ -206,24 +105,10 @@ protected:
   bool FindArrays(vtkOFB* input, vtkDataArray*& source, vtkDataArray*& intensity);
 
   /// The per-sample colouring of the settings (the sampled table, the values as floats).
-  struct Coloring;
-  void Prepare(vtkDataArray* source, vtkDataArray* intensity, Coloring& coloring);
+  struct SampleColoring;
+  void Prepare(vtkDataArray* source, vtkDataArray* intensity, SampleColoring& coloring);
 
-  int ColorSource;
-  std::string ScalarArrayName;
-  int ScalarComponent;
-  vtkScalarsToColors* LookupTable;
-  double ScalarRange[2];
-  bool UseLookupTableScalarRange;
-  std::string IntensityArrayName;
-  bool IntensityModulation;
-  int LICColorMode;
-  double LICIntensity;
-  double MapModeBias;
-  double IntensityWeight;
-  bool EnhanceColorContrast;
-  double LowColorContrastEnhancementFactor;
-  double HighColorContrastEnhancementFactor;
+  vtkOFBColoring* Coloring;
   std::string OutputArrayName;
   double LightnessRange[2];
 

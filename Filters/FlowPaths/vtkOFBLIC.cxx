@@ -52,11 +52,6 @@ vtkOFBLIC::vtkOFBLIC()
   , EnhanceContrast(ENHANCE_CONTRAST_OFF)
   , LowLICContrastEnhancementFactor(0.0)
   , HighLICContrastEnhancementFactor(0.0)
-  , LowColorContrastEnhancementFactor(0.0)
-  , HighColorContrastEnhancementFactor(0.0)
-  , ColorMode(COLOR_MODE_BLEND)
-  , LICIntensity(0.8)
-  , MapModeBias(0.0)
   , MaskThreshold(0.0)
   , MaskOnSurface(false)
   , MaskColor{ 0.5, 0.5, 0.5 }
@@ -114,18 +109,15 @@ bool vtkOFBLIC::CheckSettings()
     return false;
   }
   const int mode = this->EnhanceContrast;
-  const double factors[4] = { this->LowLICContrastEnhancementFactor,
-    this->HighLICContrastEnhancementFactor,
-    this->LowColorContrastEnhancementFactor,
-    this->HighColorContrastEnhancementFactor };
+  const double factors[2] = { this->LowLICContrastEnhancementFactor,
+    this->HighLICContrastEnhancementFactor };
   if ((mode != ENHANCE_CONTRAST_OFF && mode != ENHANCE_CONTRAST_LIC &&
         mode != ENHANCE_CONTRAST_COLOR && mode != ENHANCE_CONTRAST_BOTH) ||
-    !std::all_of(factors, factors + 4, [](double f) { return f >= 0.0 && f <= 1.0; }))
+    !std::all_of(factors, factors + 2, [](double f) { return f >= 0.0 && f <= 1.0; }))
   {
     vtkErrorMacro("EnhanceContrast must be OFF (0), LIC (1), COLOR (3) or BOTH (4), and the "
-                  "contrast enhancement factors in [0, 1] (they are "
-      << mode << "; " << factors[0] << ", " << factors[1] << ", " << factors[2] << ", "
-      << factors[3] << ").");
+                  "LIC contrast enhancement factors in [0, 1] (they are "
+      << mode << "; " << factors[0] << ", " << factors[1] << ").");
     return false;
   }
   return true;
@@ -648,13 +640,6 @@ void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "HighLICContrastEnhancementFactor: " << this->HighLICContrastEnhancementFactor
      << "\n";
-  os << indent << "LowColorContrastEnhancementFactor: " << this->LowColorContrastEnhancementFactor
-     << "\n";
-  os << indent << "HighColorContrastEnhancementFactor: " << this->HighColorContrastEnhancementFactor
-     << "\n";
-  os << indent << "ColorMode: " << this->ColorMode << "\n";
-  os << indent << "LICIntensity: " << this->LICIntensity << "\n";
-  os << indent << "MapModeBias: " << this->MapModeBias << "\n";
   os << indent << "MaskThreshold: " << this->MaskThreshold << "\n";
   os << indent << "MaskOnSurface: " << (this->MaskOnSurface ? "On" : "Off") << "\n";
   os << indent << "MaskColor: (" << this->MaskColor[0] << ", " << this->MaskColor[1] << ", "

@@ -30,12 +30,11 @@
  * noise is a function of the 3-D position (a lattice of NoiseGrainSize cells), so it
  * is the same wherever grids meet. Together: no seam where the samples change grid.
  *
- * VTK's surface LIC settings keep their names and meanings here (step size and grain
- * in OFB cells instead of pixels). Settings that only a display can apply (ColorMode,
- * LICIntensity, MapModeBias, the colour part of EnhanceContrast, MaskColor and
- * MaskIntensity in the final colour) are stored here as VTK has them; the display is
- * vtkOFBPolyDataMapper's, which has its own (LICColorMode, LICIntensity, MapModeBias,
- * EnhanceColorContrast with the colour factors), as has vtkOFBMapToColors for export.
+ * VTK's surface LIC settings that compute the LIC keep their names and meanings here
+ * (step size and grain in OFB cells instead of pixels). How the LIC is combined with a
+ * colour (VTK's ColorMode, LICIntensity, MapModeBias, the colour part of EnhanceContrast
+ * with its colour factors) is not computed here: it is a vtkOFBColoring's, which
+ * vtkOFBPolyDataMapper (display) and vtkOFBMapToColors (export) read.
  *
  * Tracing is fast LIC (Stalling and Hege): the samples are taken tile by tile (the
  * samples of all three grids in a cube of 64 x 64 x 64 cells); from each sample of the
@@ -130,13 +129,6 @@ public:
     ENHANCE_CONTRAST_LIC = 1,
     ENHANCE_CONTRAST_COLOR = 3,
     ENHANCE_CONTRAST_BOTH = 4
-  };
-
-  /// ColorMode values for the display, as vtkSurfaceLICInterface.
-  enum ColorModes
-  {
-    COLOR_MODE_BLEND = 0,
-    COLOR_MODE_MAP = 1
   };
 
   ///@{
@@ -280,10 +272,10 @@ public:
    * Contrast enhancement (default ENHANCE_CONTRAST_OFF), as VTK: with _LIC or _BOTH the
    * LIC is stretched, L = (L - m) / (M - m), where m = min + Low * (max - min) and
    * M = max - High * (max - min) over the samples not masked, with Low and High the
-   * LIC factors (default 0); _COLOR and _BOTH stretch the lightness of the final colour,
-   * which the display does: set vtkOFBPolyDataMapper's EnhanceColorContrast and its colour
-   * factors (the factors here are only kept). Another mode,
-   * or a factor outside [0, 1] (NaN included), is an error at update time.
+   * LIC factors (default 0); the colour part of _COLOR and _BOTH (the lightness of the
+   * final colour) is the display's: a vtkOFBColoring's EnhanceColorContrast with its
+   * colour factors. Another mode, or a factor outside [0, 1] (NaN included), is an error
+   * at update time.
    */
   vtkSetMacro(EnhanceContrast, int);
   vtkGetMacro(EnhanceContrast, int);
@@ -291,24 +283,6 @@ public:
   vtkGetMacro(LowLICContrastEnhancementFactor, double);
   vtkSetMacro(HighLICContrastEnhancementFactor, double);
   vtkGetMacro(HighLICContrastEnhancementFactor, double);
-  vtkSetMacro(LowColorContrastEnhancementFactor, double);
-  vtkGetMacro(LowColorContrastEnhancementFactor, double);
-  vtkSetMacro(HighColorContrastEnhancementFactor, double);
-  vtkGetMacro(HighColorContrastEnhancementFactor, double);
-  ///@}
-
-  ///@{
-  /**
-   * Display settings kept for the mapper, as vtkSurfaceLICInterface: ColorMode
-   * (COLOR_MODE_BLEND, default, or COLOR_MODE_MAP), LICIntensity (blend weight of the
-   * LIC, default 0.8) and MapModeBias (default 0).
-   */
-  vtkSetClampMacro(ColorMode, int, COLOR_MODE_BLEND, COLOR_MODE_MAP);
-  vtkGetMacro(ColorMode, int);
-  vtkSetClampMacro(LICIntensity, double, 0.0, 1.0);
-  vtkGetMacro(LICIntensity, double);
-  vtkSetClampMacro(MapModeBias, double, -1.0, 1.0);
-  vtkGetMacro(MapModeBias, double);
   ///@}
 
   ///@{
@@ -458,11 +432,6 @@ protected:
   int EnhanceContrast;
   double LowLICContrastEnhancementFactor;
   double HighLICContrastEnhancementFactor;
-  double LowColorContrastEnhancementFactor;
-  double HighColorContrastEnhancementFactor;
-  int ColorMode;
-  double LICIntensity;
-  double MapModeBias;
   double MaskThreshold;
   bool MaskOnSurface;
   double MaskColor[3];

@@ -42,6 +42,7 @@
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBColoring.h"
 #include "vtkOFBLIC.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBSampler.h"
@@ -478,8 +479,8 @@ void RunFrames(const Options& o,
     m->SetLookupMode(mode);
     if (mappers.size() < 4)
     {
-      m->SetIntensityArrayName("LIC");
-      m->IntensityModulationOn();
+      m->GetColoring()->SetIntensityArrayName("LIC");
+      m->GetColoring()->IntensityModulationOn();
     }
     mappers.emplace_back(m.Get());
   }

@@ -25,7 +25,8 @@ SOURCE_DIR = os.path.abspath(
 
 CLASSES = ("vtkOFB", "vtkOFBAlgorithm", "vtkOFBSampler", "vtkOFBBuilder",
            "vtkOFBToPolyData", "vtkOFBSamplePicker", "vtkOFBWriter", "vtkOFBReader",
-           "vtkOFBPyramid", "vtkOFBPolyDataMapper", "vtkOFBProbeFilter", "vtkOFBTextureBaker",
+           "vtkOFBPyramid", "vtkOFBPolyDataMapper", "vtkOFBColoring", "vtkOFBMapToColors",
+           "vtkOFBProbeFilter", "vtkOFBTextureBaker",
            "vtkOFBTextureProjector", "vtkOFBDecalPatch")
 
 

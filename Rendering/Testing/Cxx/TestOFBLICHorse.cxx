@@ -2,6 +2,7 @@
 // of a flow along its body (the tangential part of a uniform field), as VTK's surface
 // LIC blends the LIC with a scalar colouring (weight 0.8, VTK's LICIntensity default).
 #include "vtkLookupTable.h"
+#include "vtkOFBColoring.h"
 #include "vtkOFBLICRenderHelpers.h"
 #include "vtkOFBMapperTestHelpers.h"
 
@@ -34,12 +35,12 @@ int TestOFBLICHorse(int argc, char* argv[])
   vtkNew<vtkLookupTable> lut;
   lut->SetHueRange(0.667, 0.0);
   lut->Build();
-  scene.Mapper->SetLookupTable(lut);
-  scene.Mapper->SetScalarRange(height->GetRange());
-  scene.Mapper->SetColorSourceToScalars();
-  scene.Mapper->SetScalarArrayName("Height");
-  scene.Mapper->SetLICColorModeToMap();
-  scene.Mapper->SetIntensityWeight(0.8);
+  scene.Mapper->GetColoring()->SetLookupTable(lut);
+  scene.Mapper->GetColoring()->SetScalarRange(height->GetRange());
+  scene.Mapper->GetColoring()->SetColorSourceToScalars();
+  scene.Mapper->GetColoring()->SetScalarArrayName("Height");
+  scene.Mapper->GetColoring()->SetLICColorModeToMap();
+  scene.Mapper->GetColoring()->SetIntensityWeight(0.8);
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   camera->SetPosition(1.0, 0.0, 0.0);
   camera->SetFocalPoint(0.0, 0.0, 0.0);

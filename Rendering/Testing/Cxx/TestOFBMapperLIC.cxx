@@ -7,6 +7,7 @@
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBColoring.h"
 #include "vtkOFBMapperTestHelpers.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBTestUtilities.h"
@@ -50,12 +51,12 @@ int TestOFBMapperLIC(int argc, char* argv[])
   vtkNew<vtkOFBPolyDataMapper> mapper;
   mapper->SetInputData(sphere);
   mapper->SetOFB(ofb);
-  mapper->SetLookupTable(lut);
-  mapper->SetScalarRange(-1.0, 1.0);
-  mapper->SetColorSourceToScalars();
-  mapper->SetScalarArrayName("Height");
-  mapper->SetIntensityArrayName("LIC");
-  mapper->IntensityModulationOn();
+  mapper->GetColoring()->SetLookupTable(lut);
+  mapper->GetColoring()->SetScalarRange(-1.0, 1.0);
+  mapper->GetColoring()->SetColorSourceToScalars();
+  mapper->GetColoring()->SetScalarArrayName("Height");
+  mapper->GetColoring()->SetIntensityArrayName("LIC");
+  mapper->GetColoring()->IntensityModulationOn();
   mapper->SetLookupModeToInverseDistance();
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

@@ -9,6 +9,7 @@
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBColoring.h"
 #include "vtkOFBMapToColors.h"
 #include "vtkOFBMapperTestHelpers.h"
 #include "vtkOFBPolyDataMapper.h"
@@ -107,11 +108,11 @@ struct FlatScene
     this->LUT->Build();
     this->Mapper->SetInputData(this->Surface);
     this->Mapper->SetOFB(this->OFB);
-    this->Mapper->SetLookupTable(this->LUT);
-    this->Mapper->SetScalarRange(-1.0, 1.0);
-    this->Mapper->SetScalarArrayName("Height");
-    this->Mapper->SetIntensityArrayName("LIC");
-    this->Mapper->IntensityModulationOn();
+    this->Mapper->GetColoring()->SetLookupTable(this->LUT);
+    this->Mapper->GetColoring()->SetScalarRange(-1.0, 1.0);
+    this->Mapper->GetColoring()->SetScalarArrayName("Height");
+    this->Mapper->GetColoring()->SetIntensityArrayName("LIC");
+    this->Mapper->GetColoring()->IntensityModulationOn();
     this->Actor->SetMapper(this->Mapper);
     this->Actor->GetProperty()->LightingOff();
     this->Actor->GetProperty()->SetAmbient(1.0);
@@ -196,13 +197,13 @@ TEST(OFBMapperLICDisplay, BlendModeFollowsVTKsFormula)
     FlatScene scene;
     if (scalars)
     {
-      scene.Mapper->SetColorSourceToScalars();
+      scene.Mapper->GetColoring()->SetColorSourceToScalars();
     }
-    EXPECT_EQ(scene.Mapper->GetLICColorMode(), vtkOFBPolyDataMapper::COLOR_MODE_BLEND);
-    EXPECT_DOUBLE_EQ(scene.Mapper->GetLICIntensity(), 0.8);
+    EXPECT_EQ(scene.Mapper->GetColoring()->GetLICColorMode(), vtkOFBColoring::COLOR_MODE_BLEND);
+    EXPECT_DOUBLE_EQ(scene.Mapper->GetColoring()->GetLICIntensity(), 0.8);
     for (double intensity : { 0.8, 0.3, 1.0 })
     {
-      scene.Mapper->SetLICIntensity(intensity);
+      scene.Mapper->GetColoring()->SetLICIntensity(intensity);
       double worst = 0.0;
       const int compared = scene.Compare(
         [intensity](const double base[3], double lic, double out[3])
@@ -227,12 +228,12 @@ TEST(OFBMapperLICDisplay, MapModeFollowsVTKsFormula)
     FlatScene scene;
     if (scalars)
     {
-      scene.Mapper->SetColorSourceToScalars();
+      scene.Mapper->GetColoring()->SetColorSourceToScalars();
     }
-    scene.Mapper->SetLICColorModeToMap();
+    scene.Mapper->GetColoring()->SetLICColorModeToMap();
     for (double bias : { 0.0, 0.25, -0.3 })
     {
-      scene.Mapper->SetMapModeBias(bias);
+      scene.Mapper->GetColoring()->SetMapModeBias(bias);
       double worst = 0.0;
       const int compared = scene.Compare(
         [bias](const double base[3], double lic, double out[3])
@@ -253,8 +254,8 @@ TEST(OFBMapperLICDisplay, MapModeFollowsVTKsFormula)
 TEST(OFBMapperLICDisplay, WithoutModulationTheColourIsUnchanged)
 {
   FlatScene scene;
-  scene.Mapper->SetColorSourceToScalars();
-  scene.Mapper->IntensityModulationOff();
+  scene.Mapper->GetColoring()->SetColorSourceToScalars();
+  scene.Mapper->GetColoring()->IntensityModulationOff();
   double worst = 0.0;
   scene.Compare([](const double base[3], double, double out[3]) { std::copy(base, base + 3, out); },
     true,
@@ -265,7 +266,7 @@ TEST(OFBMapperLICDisplay, WithoutModulationTheColourIsUnchanged)
 TEST(OFBMapperLICDisplay, ReconvolutionUploadsOnlyTheLICArray)
 {
   FlatScene scene;
-  scene.Mapper->SetColorSourceToScalars();
+  scene.Mapper->GetColoring()->SetColorSourceToScalars();
   scene.Window->Render();
   const vtkIdType n = scene.OFB->GetNumberOfSamples();
   EXPECT_EQ(scene.Mapper->GetLastUploadedSampleCount(), n);
@@ -312,7 +313,7 @@ TEST(OFBMapperLICDisplay, ReconvolutionUploadsOnlyTheLICArray)
   EXPECT_EQ(scene.Mapper->GetUploadedBytes() - before, 100 * (8 + 1));
 }
 
-// vtkOFBMapToColors with the mapper's settings (CopyColoringTo) writes the colours the
+// vtkOFBMapToColors sharing the mapper's colouring (SetColoring) writes the colours the
 // mapper shows: the OFB drawn with those as paint looks the same, pixel for pixel, with a
 // LIC and scalars that vary from sample to sample; also with the colour contrast
 // enhancement, which changes the picture.
@@ -336,17 +337,17 @@ TEST(OFBMapperLICDisplay, MapToColorsWritesWhatTheMapperShows)
     }
     if (scalars)
     {
-      scene.Mapper->SetColorSourceToScalars();
-      scene.Mapper->SetLICColorModeToMap();
-      scene.Mapper->SetMapModeBias(0.1);
-      scene.Mapper->SetIntensityWeight(0.7);
-      scene.Mapper->SetEnhanceColorContrast(enhance);
-      scene.Mapper->SetLowColorContrastEnhancementFactor(0.1);
-      scene.Mapper->SetHighColorContrastEnhancementFactor(0.2);
+      scene.Mapper->GetColoring()->SetColorSourceToScalars();
+      scene.Mapper->GetColoring()->SetLICColorModeToMap();
+      scene.Mapper->GetColoring()->SetMapModeBias(0.1);
+      scene.Mapper->GetColoring()->SetIntensityWeight(0.7);
+      scene.Mapper->GetColoring()->SetEnhanceColorContrast(enhance);
+      scene.Mapper->GetColoring()->SetLowColorContrastEnhancementFactor(0.1);
+      scene.Mapper->GetColoring()->SetHighColorContrastEnhancementFactor(0.2);
     }
     else
     {
-      scene.Mapper->SetLICIntensity(0.4);
+      scene.Mapper->GetColoring()->SetLICIntensity(0.4);
     }
     auto grab = [&scene]()
     {
@@ -363,17 +364,21 @@ TEST(OFBMapperLICDisplay, MapToColorsWritesWhatTheMapperShows)
     vtkSmartPointer<vtkImageData> shown = grab();
 
     vtkNew<vtkOFBMapToColors> colors;
-    scene.Mapper->CopyColoringTo(colors);
-    EXPECT_EQ(colors->GetIntensityModulation(), true);
+    colors->SetColoring(scene.Mapper->GetColoring());
+    EXPECT_EQ(colors->GetColoring()->GetIntensityModulation(), true);
     colors->SetInputData(scene.OFB);
     colors->SetOutputArrayName("Colors");
     colors->Update();
     ASSERT_EQ(colors->GetOutput()->GetNumberOfSamples(), n);
     scene.Mapper->SetOFB(colors->GetOutput());
-    EXPECT_EQ(colors->GetEnhanceColorContrast(), enhance);
-    scene.Mapper->SetColorSourceToPaint();
-    scene.Mapper->IntensityModulationOff();
-    scene.Mapper->EnhanceColorContrastOff();
+    EXPECT_EQ(colors->GetColoring()->GetEnhanceColorContrast(), enhance);
+    // The exported colours shown as paint: the mapper gets a colouring of its own (the
+    // default: paint, no intensity, no contrast), the filter keeps the shared one.
+    vtkNew<vtkOFBColoring> paint;
+    scene.Mapper->SetColoring(paint);
+    EXPECT_EQ(scene.Mapper->GetColoring()->GetColorSource(), vtkOFBColoring::COLOR_SOURCE_PAINT);
+    EXPECT_FALSE(scene.Mapper->GetColoring()->GetIntensityModulation());
+    EXPECT_FALSE(scene.Mapper->GetColoring()->GetEnhanceColorContrast());
     vtkSmartPointer<vtkImageData> exported = grab();
 
     const auto* a = static_cast<unsigned char*>(shown->GetScalarPointer());
@@ -408,17 +413,82 @@ TEST(OFBMapperLICDisplay, MapToColorsWritesWhatTheMapperShows)
   }
 }
 
+// One vtkOFBColoring shared by the mapper and vtkOFBMapToColors: a setting changed once,
+// through the filter, changes the next render and the filter's next output, and the two
+// still agree pixel for pixel.
+TEST(OFBMapperLICDisplay, SharedColoringChangeReachesTheRenderAndTheExport)
+{
+  FlatScene scene;
+  scene.Mapper->GetColoring()->SetColorSourceToScalars();
+  vtkNew<vtkOFBMapToColors> colors;
+  colors->SetColoring(scene.Mapper->GetColoring());
+  colors->SetInputData(scene.OFB);
+  colors->SetOutputArrayName("Colors");
+  auto grab = [&scene]()
+  {
+    scene.Window->Render();
+    EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
+    vtkNew<vtkWindowToImageFilter> grabber;
+    grabber->SetInput(scene.Window);
+    grabber->ReadFrontBufferOff();
+    grabber->SetInputBufferTypeToRGB();
+    grabber->Update();
+    vtkSmartPointer<vtkImageData> image = grabber->GetOutput();
+    return image;
+  };
+  auto difference = [](vtkImageData* a, vtkImageData* b)
+  {
+    const auto* pa = static_cast<unsigned char*>(a->GetScalarPointer());
+    const auto* pb = static_cast<unsigned char*>(b->GetScalarPointer());
+    double sum = 0.0;
+    for (int k = 0; k < 3 * Size * Size; ++k)
+    {
+      sum += std::abs(pa[k] - pb[k]);
+    }
+    return sum / (3 * Size * Size);
+  };
+  auto exported = [&colors]()
+  {
+    colors->Update();
+    vtkNew<vtkUnsignedCharArray> copy;
+    copy->DeepCopy(colors->GetOutput()->GetSampleData()->GetArray("Colors"));
+    return vtkSmartPointer<vtkUnsignedCharArray>(copy.Get());
+  };
+  vtkSmartPointer<vtkImageData> before = grab();
+  vtkSmartPointer<vtkUnsignedCharArray> exportedBefore = exported();
+  ASSERT_EQ(exportedBefore->GetNumberOfTuples(), scene.OFB->GetNumberOfSamples());
+
+  const vtkMTimeType mapperTime = scene.Mapper->GetMTime();
+  colors->GetColoring()->SetLICIntensity(0.2);
+  EXPECT_GT(scene.Mapper->GetMTime(), mapperTime);
+  vtkSmartPointer<vtkImageData> after = grab();
+  EXPECT_GT(difference(before, after), 5.0) << "the render uses the new LICIntensity";
+  vtkSmartPointer<vtkUnsignedCharArray> exportedAfter = exported();
+  int changed = 0;
+  for (vtkIdType i = 0; i < 4 * exportedAfter->GetNumberOfTuples(); ++i)
+  {
+    changed += exportedAfter->GetValue(i) != exportedBefore->GetValue(i) ? 1 : 0;
+  }
+  EXPECT_GT(changed, 0) << "the filter re-executed with the new LICIntensity";
+
+  // The export of the changed colouring shown as paint: the same picture as the render.
+  vtkNew<vtkOFBColoring> paint;
+  scene.Mapper->SetColoring(paint);
+  scene.Mapper->SetOFB(colors->GetOutput());
+  EXPECT_LT(difference(after, grab()), 0.5);
+}
+
 TEST(OFBMapperLICDisplay, SettingsAreClampedAndNamedAsVTKs)
 {
   vtkNew<vtkOFBPolyDataMapper> mapper;
-  EXPECT_EQ(mapper->GetLICColorMode(), vtkOFBPolyDataMapper::COLOR_MODE_BLEND);
-  EXPECT_DOUBLE_EQ(mapper->GetLICIntensity(), 0.8);
-  EXPECT_DOUBLE_EQ(mapper->GetMapModeBias(), 0.0);
-  mapper->SetLICColorMode(7);
-  EXPECT_EQ(mapper->GetLICColorMode(), vtkOFBPolyDataMapper::COLOR_MODE_MAP);
-  mapper->SetLICIntensity(2.0);
-  EXPECT_DOUBLE_EQ(mapper->GetLICIntensity(), 1.0);
-  mapper->SetMapModeBias(-5.0);
-  EXPECT_DOUBLE_EQ(mapper->GetMapModeBias(), -1.0);
-  EXPECT_STREQ(vtkOFBPolyDataMapper::GetLICColorModeAsString(1), "COLOR_MODE_MAP");
+  EXPECT_EQ(mapper->GetColoring()->GetLICColorMode(), vtkOFBColoring::COLOR_MODE_BLEND);
+  EXPECT_DOUBLE_EQ(mapper->GetColoring()->GetLICIntensity(), 0.8);
+  EXPECT_DOUBLE_EQ(mapper->GetColoring()->GetMapModeBias(), 0.0);
+  mapper->GetColoring()->SetLICColorMode(7);
+  EXPECT_EQ(mapper->GetColoring()->GetLICColorMode(), vtkOFBColoring::COLOR_MODE_MAP);
+  mapper->GetColoring()->SetLICIntensity(2.0);
+  EXPECT_DOUBLE_EQ(mapper->GetColoring()->GetLICIntensity(), 1.0);
+  mapper->GetColoring()->SetMapModeBias(-5.0);
+  EXPECT_DOUBLE_EQ(mapper->GetColoring()->GetMapModeBias(), -1.0);
+  EXPECT_STREQ(vtkOFBColoring::GetLICColorModeAsString(1), "COLOR_MODE_MAP");
 }

@@ -8,6 +8,7 @@
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBColoring.h"
 #include "vtkOFBMapperTestHelpers.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBTestUtilities.h"
@@ -147,11 +148,11 @@ TEST(OFBMapperTranslucency, TranslucencyFollowsTheAlphaOfThePaint)
   height->SetNumberOfTuples(n);
   height->FillValue(0.5f);
   scene.OFB->GetSampleData()->AddArray(height);
-  scene.Mapper->SetColorSourceToScalars();
-  scene.Mapper->SetScalarArrayName("Height");
+  scene.Mapper->GetColoring()->SetColorSourceToScalars();
+  scene.Mapper->GetColoring()->SetScalarArrayName("Height");
   vtkNew<vtkLookupTable> lut;
   lut->Build();
-  scene.Mapper->SetLookupTable(lut);
+  scene.Mapper->GetColoring()->SetLookupTable(lut);
   EXPECT_FALSE(scene.Mapper->HasTranslucentPolygonalGeometry());
   lut->SetAlphaRange(0.2, 0.2);
   lut->ForceBuild();

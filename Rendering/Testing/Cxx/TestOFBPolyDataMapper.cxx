@@ -9,6 +9,7 @@
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
+#include "vtkOFBColoring.h"
 #include "vtkOFBMapperTestHelpers.h"
 #include "vtkOFBPainter.h"
 #include "vtkOFBPolyDataMapper.h"
@@ -393,28 +394,28 @@ TEST(OFBPolyDataMapper, ScalarsThroughTheLookupTableWithIntensity)
     vtkNew<vtkLookupTable> lut; // red at the low end, blue at the high end
     lut->SetHueRange(0.0, 0.6667);
     lut->Build();
-    scene.Mapper->SetLookupTable(lut);
-    scene.Mapper->SetScalarRange(-1.0, 1.0);
-    scene.Mapper->SetColorSourceToScalars();
-    scene.Mapper->SetScalarArrayName("Height");
+    scene.Mapper->GetColoring()->SetLookupTable(lut);
+    scene.Mapper->GetColoring()->SetScalarRange(-1.0, 1.0);
+    scene.Mapper->GetColoring()->SetColorSourceToScalars();
+    scene.Mapper->GetColoring()->SetScalarArrayName("Height");
     scene.Window->Render();
     EXPECT_TRUE(scene.Mapper->GetLastRenderUsedOFB());
     Pixel p = Centre(scene.Window); // z = 1: the high end
     EXPECT_TRUE(p[2] > 150 && p[0] < 40 && p[1] < 40) << p[0] << " " << p[1] << " " << p[2];
 
-    scene.Mapper->SetScalarRange(1.0, 3.0); // z = 1 is now the low end
+    scene.Mapper->GetColoring()->SetScalarRange(1.0, 3.0); // z = 1 is now the low end
     scene.Window->Render();
     p = Centre(scene.Window);
     EXPECT_TRUE(IsRed(p)) << p[0] << " " << p[1] << " " << p[2];
 
-    scene.Mapper->SetIntensityArrayName("LIC");
-    scene.Mapper->SetLICColorModeToMap(); // the colour times the intensity
-    scene.Mapper->IntensityModulationOn();
+    scene.Mapper->GetColoring()->SetIntensityArrayName("LIC");
+    scene.Mapper->GetColoring()->SetLICColorModeToMap(); // the colour times the intensity
+    scene.Mapper->GetColoring()->IntensityModulationOn();
     scene.Window->Render();
     const Pixel half = Centre(scene.Window);
     EXPECT_NEAR(half[0], p[0] / 2, 12);
 
-    scene.Mapper->SetIntensityWeight(0.0);
+    scene.Mapper->GetColoring()->SetIntensityWeight(0.0);
     scene.Window->Render();
     EXPECT_NEAR(Centre(scene.Window)[0], p[0], 6);
   }
@@ -619,10 +620,10 @@ TEST(OFBPolyDataMapper, MissingArraysFallBackWithWarnings)
 {
   Scene scene;
   scene.Fill(255, 0, 0);
-  scene.Mapper->SetColorSourceToScalars();
-  scene.Mapper->SetScalarArrayName("NoSuchArray");
-  scene.Mapper->SetIntensityArrayName("NoLIC");
-  scene.Mapper->IntensityModulationOn();
+  scene.Mapper->GetColoring()->SetColorSourceToScalars();
+  scene.Mapper->GetColoring()->SetScalarArrayName("NoSuchArray");
+  scene.Mapper->GetColoring()->SetIntensityArrayName("NoLIC");
+  scene.Mapper->GetColoring()->IntensityModulationOn();
   vtkNew<vtkofbtest::MessageObserver> messages;
   messages->Watch(scene.Mapper);
   scene.Window->Render();
@@ -643,8 +644,8 @@ TEST(OFBPolyDataMapper, ArraysShorterThanTheSamplesAreMissing)
   lic->SetNumberOfTuples(5);
   lic->FillValue(0.0f);
   scene.OFB->GetSampleData()->AddArray(lic);
-  scene.Mapper->SetIntensityArrayName("LIC");
-  scene.Mapper->IntensityModulationOn();
+  scene.Mapper->GetColoring()->SetIntensityArrayName("LIC");
+  scene.Mapper->GetColoring()->IntensityModulationOn();
   vtkNew<vtkofbtest::MessageObserver> messages;
   messages->Watch(scene.Mapper);
   scene.Window->Render();
@@ -670,12 +671,12 @@ TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)
 {
   vtkNew<vtkOFBPolyDataMapper> mapper;
   EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_NEAREST);
-  EXPECT_EQ(mapper->GetColorSource(), vtkOFBPolyDataMapper::Paint);
+  EXPECT_EQ(mapper->GetColoring()->GetColorSource(), vtkOFBColoring::COLOR_SOURCE_PAINT);
   EXPECT_NEAR(mapper->GetInterpolationRadius(), 1.7320508, 1e-6);
   mapper->SetLookupMode(99); // not a lookup mode: an error, the mode stays
   EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_NEAREST);
-  mapper->SetIntensityWeight(3.0);
-  EXPECT_EQ(mapper->GetIntensityWeight(), 1.0);
+  mapper->GetColoring()->SetIntensityWeight(3.0);
+  EXPECT_EQ(mapper->GetColoring()->GetIntensityWeight(), 1.0);
   EXPECT_EQ(mapper->GetOFB(), nullptr);
   std::ostringstream os;
   mapper->Print(os);

@@ -7,6 +7,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkOFBColoring.h"
 #include "vtkOFBLIC.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -53,8 +54,8 @@ struct LICScene
     this->Mapper->SetInputData(mesh);
     this->Mapper->SetOFB(ofb);
     this->Mapper->SetLookupModeToInverseDistance();
-    this->Mapper->SetIntensityArrayName("LIC");
-    this->Mapper->IntensityModulationOn();
+    this->Mapper->GetColoring()->SetIntensityArrayName("LIC");
+    this->Mapper->GetColoring()->IntensityModulationOn();
     this->Actor->SetMapper(this->Mapper);
     this->Renderer->AddActor(this->Actor);
     this->Renderer->SetBackground(0.1, 0.1, 0.15);

@@ -9,6 +9,7 @@
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBColorSpace.h" // private header of the module: the HSL helpers
+#include "vtkOFBColoring.h"
 #include "vtkOFBMapToColors.h"
 #include "vtkOFBPainter.h"
 #include "vtkPointData.h"
@@ -128,8 +129,8 @@ TEST(MapToColors, PaintBlendedWithTheLICEqualsTheFormula)
   vtkNew<vtkUnsignedCharArray> before;
   before->DeepCopy(paint);
   vtkNew<vtkOFBMapToColors> filter;
-  filter->IntensityModulationOn();
-  filter->SetLICIntensity(0.6);
+  filter->GetColoring()->IntensityModulationOn();
+  filter->GetColoring()->SetLICIntensity(0.6);
   vtkOFB* out = MapColors(filter, ofb);
   const vtkIdType n = ofb->GetNumberOfSamples();
   ASSERT_EQ(out->GetNumberOfSamples(), n);
@@ -166,7 +167,7 @@ TEST(MapToColors, PaintBlendedWithTheLICEqualsTheFormula)
   EXPECT_EQ(out->GetSampleData()->GetArray("LIC"), ofb->GetSampleData()->GetArray("LIC"));
 
   // Without modulation, the paint itself (transparent samples black).
-  filter->IntensityModulationOff();
+  filter->GetColoring()->IntensityModulationOff();
   filter->SetOutputArrayName("Colors");
   out = MapColors(filter, ofb);
   colors = vtkUnsignedCharArray::SafeDownCast(out->GetSampleData()->GetArray("Colors"));
@@ -191,27 +192,27 @@ TEST(MapToColors, ScalarsMappedAndMultipliedByTheLICEqualTheFormula)
   lut->SetAlphaRange(0.5, 1.0);
   lut->Build();
   vtkNew<vtkOFBMapToColors> filter;
-  filter->SetColorSourceToScalars();
-  filter->SetScalarArrayName("V");
-  filter->SetLookupTable(lut);
-  filter->IntensityModulationOn();
-  filter->SetLICColorModeToMap();
-  filter->SetMapModeBias(-0.2);
-  filter->SetIntensityWeight(0.7);
+  filter->GetColoring()->SetColorSourceToScalars();
+  filter->GetColoring()->SetScalarArrayName("V");
+  filter->GetColoring()->SetLookupTable(lut);
+  filter->GetColoring()->IntensityModulationOn();
+  filter->GetColoring()->SetLICColorModeToMap();
+  filter->GetColoring()->SetMapModeBias(-0.2);
+  filter->GetColoring()->SetIntensityWeight(0.7);
   auto* v = vtkFloatArray::SafeDownCast(ofb->GetSampleData()->GetArray("V"));
   const auto* lic = vtkFloatArray::SafeDownCast(ofb->GetSampleData()->GetArray("LIC"));
   // The magnitude over [0, 2], then component 1 over the table's own range [-1, 1.5].
   for (int component : { -1, 1 })
   {
-    filter->SetScalarComponent(component);
+    filter->GetColoring()->SetScalarComponent(component);
     if (component == 1)
     {
       lut->SetRange(-1.0, 1.5);
-      filter->UseLookupTableScalarRangeOn();
+      filter->GetColoring()->UseLookupTableScalarRangeOn();
     }
     else
     {
-      filter->SetScalarRange(0.0, 2.0);
+      filter->GetColoring()->SetScalarRange(0.0, 2.0);
     }
     auto* colors =
       vtkUnsignedCharArray::SafeDownCast(MapColors(filter, ofb)->GetSampleData()->GetScalars());
@@ -267,15 +268,15 @@ TEST(MapToColors, ColorContrastStretchesTheLightnessAndKeepsTheHue)
   vtkSmartPointer<vtkOFB> ofb = PaintedOFBWithLIC();
   const vtkIdType n = ofb->GetNumberOfSamples();
   vtkNew<vtkOFBMapToColors> filter;
-  filter->IntensityModulationOn();
-  filter->SetLICIntensity(0.5);
+  filter->GetColoring()->IntensityModulationOn();
+  filter->GetColoring()->SetLICIntensity(0.5);
   filter->SetOutputArrayName("Plain");
   vtkNew<vtkUnsignedCharArray> plain;
   plain->DeepCopy(MapColors(filter, ofb)->GetSampleData()->GetArray("Plain"));
   EXPECT_EQ(filter->GetLightnessRange()[1], 0.0) << "not computed without the stretch";
-  filter->EnhanceColorContrastOn();
-  filter->SetLowColorContrastEnhancementFactor(0.1);
-  filter->SetHighColorContrastEnhancementFactor(0.2);
+  filter->GetColoring()->EnhanceColorContrastOn();
+  filter->GetColoring()->SetLowColorContrastEnhancementFactor(0.1);
+  filter->GetColoring()->SetHighColorContrastEnhancementFactor(0.2);
   filter->SetOutputArrayName("Stretched");
   auto* stretched = vtkUnsignedCharArray::SafeDownCast(
     MapColors(filter, ofb)->GetSampleData()->GetArray("Stretched"));
@@ -286,13 +287,13 @@ TEST(MapToColors, ColorContrastStretchesTheLightnessAndKeepsTheHue)
   // The range alone (what the mapper asks for): the same numbers, with the stretch off
   // too, and no array written to the input.
   const int arrays = ofb->GetSampleData()->GetNumberOfArrays();
-  filter->EnhanceColorContrastOff();
+  filter->GetColoring()->EnhanceColorContrastOff();
   double alone[2] = { -1.0, -1.0 };
   EXPECT_TRUE(filter->ComputeLightnessRange(ofb, alone));
   EXPECT_EQ(alone[0], range[0]);
   EXPECT_EQ(alone[1], range[1]);
   EXPECT_EQ(ofb->GetSampleData()->GetNumberOfArrays(), arrays);
-  filter->EnhanceColorContrastOn();
+  filter->GetColoring()->EnhanceColorContrastOn();
   const double m = range[0] + 0.1 * (range[1] - range[0]);
   const double M = range[1] - 0.2 * (range[1] - range[0]);
   ASSERT_GT(M - m, 0.1);
@@ -333,26 +334,26 @@ TEST(MapToColors, BadInputGivesAnErrorAndAnEmptyOutput)
     EXPECT_EQ(MapColors(filter, ofb)->GetNumberOfSamples(), 0) << words;
     EXPECT_NE(messages->Errors.find(words), std::string::npos) << messages->Errors;
   };
-  filter->SetColorSourceToScalars();
-  filter->SetScalarArrayName("nothing");
+  filter->GetColoring()->SetColorSourceToScalars();
+  filter->GetColoring()->SetScalarArrayName("nothing");
   expectError("no numeric sample array \"nothing\"");
-  filter->SetScalarArrayName("LIC");
-  filter->SetScalarComponent(2);
+  filter->GetColoring()->SetScalarArrayName("LIC");
+  filter->GetColoring()->SetScalarComponent(2);
   expectError("with a component 2");
-  filter->SetScalarComponent(0);
-  filter->SetScalarRange(0.0, HUGE_VAL);
+  filter->GetColoring()->SetScalarComponent(0);
+  filter->GetColoring()->SetScalarRange(0.0, HUGE_VAL);
   expectError("is not finite");
-  filter->SetScalarRange(0.0, 1.0);
-  filter->IntensityModulationOn();
-  filter->SetIntensityArrayName("V");
+  filter->GetColoring()->SetScalarRange(0.0, 1.0);
+  filter->GetColoring()->IntensityModulationOn();
+  filter->GetColoring()->SetIntensityArrayName("V");
   expectError("1-component");
-  filter->SetIntensityArrayName("LIC");
+  filter->GetColoring()->SetIntensityArrayName("LIC");
   filter->SetOutputArrayName("");
   expectError("OutputArrayName is empty");
   filter->SetOutputArrayName("Out");
   // A scalar range of zero width: every sample takes the table's first colour.
-  filter->SetScalarRange(0.5, 0.5);
-  filter->IntensityModulationOff();
+  filter->GetColoring()->SetScalarRange(0.5, 0.5);
+  filter->GetColoring()->IntensityModulationOff();
   messages->Clear();
   vtkOFB* out = MapColors(filter, ofb);
   EXPECT_EQ(out->GetNumberOfSamples(), ofb->GetNumberOfSamples());
@@ -360,11 +361,11 @@ TEST(MapToColors, BadInputGivesAnErrorAndAnEmptyOutput)
   auto* colors = vtkUnsignedCharArray::SafeDownCast(out->GetSampleData()->GetArray("Out"));
   ASSERT_NE(colors, nullptr);
   double first[3];
-  filter->GetLookupTable()->GetColor(0.5, first);
+  filter->GetColoring()->GetLookupTable()->GetColor(0.5, first);
   EXPECT_EQ(colors->GetTypedComponent(7, 2), static_cast<int>(first[2] * 255.0 + 0.5));
   // A NaN scalar (the LIC's sample n / 2) takes the table's NaN colour.
   double nanColor[3];
-  filter->GetLookupTable()->GetColor(vtkMath::Nan(), nanColor);
+  filter->GetColoring()->GetLookupTable()->GetColor(vtkMath::Nan(), nanColor);
   for (int c = 0; c < 3; ++c)
   {
     EXPECT_EQ(colors->GetTypedComponent(ofb->GetNumberOfSamples() / 2, c),
@@ -372,7 +373,7 @@ TEST(MapToColors, BadInputGivesAnErrorAndAnEmptyOutput)
   }
   // Paint without colours.
   ofb->GetSampleData()->RemoveArray("Colors");
-  filter->SetColorSourceToPaint();
+  filter->GetColoring()->SetColorSourceToPaint();
   expectError("no \"Colors\" array of RGBA bytes");
   messages->Clear();
   double range[2] = { -1.0, -1.0 };
@@ -385,7 +386,7 @@ TEST(MapToColors, BadInputGivesAnErrorAndAnEmptyOutput)
   EXPECT_NE(messages->Errors.find("No input OFB"), std::string::npos);
   // An empty OFB (no arrays either): an error and an empty output, no crash.
   vtkNew<vtkOFB> empty;
-  filter->SetColorSourceToScalars();
+  filter->GetColoring()->SetColorSourceToScalars();
   messages->Clear();
   filter->SetInputData(empty);
   filter->Update();

@@ -255,7 +255,7 @@ bool vtkOFBMapToColors::FindArrays(vtkOFB* input, vtkDataArray*& source, vtkData
   intensity = nullptr;
   if (this->ColorSource == Paint)
   {
-    source = vtkUnsignedCharArray::SafeDownCast(pd->GetAbstractArray("Colors"));
+    source = vtkUnsignedCharArray::SafeDownCast(pd->GetAbstractArray(vtkOFB::ColorsArrayName()));
     if (!source || source->GetNumberOfComponents() != 4 || source->GetNumberOfTuples() != n)
     {
       vtkErrorMacro("ColorSource Paint: the OFB has no \"Colors\" array of RGBA bytes, one a "

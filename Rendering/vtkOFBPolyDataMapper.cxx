@@ -186,7 +186,7 @@ bool vtkOFBPolyDataMapper::HasTranslucentPolygonalGeometry()
   selection.ScalarName = this->ScalarArrayName ? this->ScalarArrayName : "";
   selection.ScalarComponent = this->ScalarComponent;
   if (this->ColorSource == Scalars &&
-    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Scalars, selection))
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_SCALARS, selection))
   {
     vtkScalarsToColors* lut = this->GetLookupTable();
     lut->Build();
@@ -200,7 +200,7 @@ bool vtkOFBPolyDataMapper::HasTranslucentColors(vtkOFB* ofb)
 {
   vtkOFBShaderStorage::Selection selection;
   auto* colors = vtkUnsignedCharArray::SafeDownCast(
-    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Colors, selection));
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_COLORS, selection));
   if (!colors || colors->GetNumberOfComponents() != 4)
   {
     return false;
@@ -397,7 +397,7 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
   {
     selection.ScalarName = this->ScalarArrayName ? this->ScalarArrayName : "";
     selection.ScalarComponent = this->ScalarComponent;
-    if (vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Scalars, selection))
+    if (vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_SCALARS, selection))
     {
       this->SourceScalars = true;
       selection.Colors = false;
@@ -412,7 +412,7 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
     }
   }
   if (!this->SourceScalars &&
-    !vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Colors, selection))
+    !vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_COLORS, selection))
   {
     this->WarnOnce("The OFB has no RGB(A) unsigned char \"Colors\" sample array of one tuple a "
                    "sample: rendering without OFB colours.");
@@ -422,8 +422,8 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
   if (this->IntensityModulation)
   {
     selection.IntensityName = this->IntensityArrayName ? this->IntensityArrayName : "";
-    this->UseIntensity =
-      vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Intensity, selection) != nullptr;
+    this->UseIntensity = vtkOFBShaderStorage::GetArray(
+                           ofb, vtkOFBShaderStorage::BUFFER_INTENSITY, selection) != nullptr;
     if (!this->UseIntensity)
     {
       selection.IntensityName.clear();
@@ -434,7 +434,7 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
     }
   }
   selection.Normals = this->UsePaintedNormals &&
-    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Normals, selection) != nullptr;
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::BUFFER_NORMALS, selection) != nullptr;
   if (this->UsePaintedNormals && !selection.Normals)
   {
     this->WarnOnce("The OFB has no 3-component \"Normals\" sample array of one tuple a sample: "

@@ -5,7 +5,7 @@ for each of its output ports. A subclass that declares SetInputData(data) or
 GetOutput() alone hides the overloads taking a port; this test calls them on each
 class.
 
-Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages;
+Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages;
 the optional argument is the source directory. ctest does both.
 """
 

@@ -70,7 +70,7 @@ vtkOFBPainterRepresentation::vtkOFBPainterRepresentation()
   , CursorActor(vtkActor::New())
   , CursorProperty(vtkProperty::New())
 {
-  this->InteractionState = Outside;
+  this->InteractionState = OUTSIDE;
   for (const auto& rgb : DefaultPalette)
   {
     this->Palette.insert(this->Palette.end(), { rgb[0], rgb[1], rgb[2], 1.0 });
@@ -513,12 +513,12 @@ void vtkOFBPainterRepresentation::UpdatePickLocator()
 int vtkOFBPainterRepresentation::ComputeInteractionState(int X, int Y, int vtkNotUsed(modify))
 {
   const bool hit = this->PickSurface(X, Y);
-  if (this->InteractionState != Painting)
+  if (this->InteractionState != PAINTING)
   {
-    this->InteractionState = hit ? OnSurface : Outside;
+    this->InteractionState = hit ? ON_SURFACE : OUTSIDE;
   }
   this->BuildRepresentation();
-  return hit ? OnSurface : Outside;
+  return hit ? ON_SURFACE : OUTSIDE;
 }
 
 //------------------------------------------------------------------------------
@@ -538,7 +538,7 @@ void vtkOFBPainterRepresentation::StartWidgetInteraction(double eventPos[2])
   this->HasLastPoint = false;
   this->PiecePainted = false;
   this->StrokePieces = 1;
-  this->InteractionState = Painting;
+  this->InteractionState = PAINTING;
   this->ContinueStroke(hit);
   this->BuildRepresentation();
 }
@@ -616,7 +616,7 @@ void vtkOFBPainterRepresentation::EndWidgetInteraction(double vtkNotUsed(eventPo
   }
   this->PenDown = false;
   this->HasLastPoint = false;
-  this->InteractionState = Outside;
+  this->InteractionState = OUTSIDE;
 }
 
 //------------------------------------------------------------------------------
@@ -638,7 +638,7 @@ void vtkOFBPainterRepresentation::UpdateCursorColor()
 void vtkOFBPainterRepresentation::BuildRepresentation()
 {
   vtkOFBBrush* brush = this->GetBrush();
-  const bool visible = brush && this->InteractionState != Outside;
+  const bool visible = brush && this->InteractionState != OUTSIDE;
   this->CursorActor->SetVisibility(visible);
   if (!visible)
   {

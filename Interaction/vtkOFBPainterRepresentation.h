@@ -63,9 +63,9 @@ public:
   /// Interaction states: the mouse off the surface, on it, or painting a stroke.
   enum InteractionStateType
   {
-    Outside = 0,
-    OnSurface,
-    Painting
+    OUTSIDE = 0,
+    ON_SURFACE,
+    PAINTING
   };
 
   ///@{

@@ -2,6 +2,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkEvent.h"
 #include "vtkOFBPainterRepresentation.h"
 #include "vtkObjectFactory.h"
 #include "vtkRenderWindow.h"
@@ -9,14 +10,11 @@
 #include "vtkWidgetCallbackMapper.h"
 #include "vtkWidgetEvent.h"
 
-#include <cctype>
-#include <cstring>
-
 vtkStandardNewMacro(vtkOFBPainterWidget);
 
 //------------------------------------------------------------------------------
 vtkOFBPainterWidget::vtkOFBPainterWidget()
-  : WidgetState(Start)
+  : WidgetState(START)
   , KeyboardShortcuts(true)
   , NumberOfStrokes(0)
 {
@@ -33,9 +31,56 @@ vtkOFBPainterWidget::vtkOFBPainterWidget()
     vtkWidgetEvent::EndSelect,
     this,
     vtkOFBPainterWidget::EndSelectAction);
-  // Every character goes to KeyAction, which takes the painting keys and leaves the rest.
+  this->MapKeys();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::MapKey(char key,
+  int modifier,
+  unsigned long widgetEvent,
+  KeyCallback action)
+{
   this->CallbackMapper->SetCallbackMethod(
-    vtkCommand::CharEvent, vtkWidgetEvent::ModifyEvent, this, vtkOFBPainterWidget::KeyAction);
+    vtkCommand::CharEvent, modifier, key, 0, nullptr, widgetEvent, this, action);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::MapKeys()
+{
+  // The plain keys match with any modifier: `+`, `_` and `U` are typed with Shift on
+  // many layouts.
+  const int any = vtkEvent::AnyModifier;
+  this->MapKey('+', any, GROW_BRUSH, vtkOFBPainterWidget::GrowBrushAction);
+  this->MapKey('=', any, GROW_BRUSH, vtkOFBPainterWidget::GrowBrushAction);
+  this->MapKey('-', any, SHRINK_BRUSH, vtkOFBPainterWidget::ShrinkBrushAction);
+  this->MapKey('_', any, SHRINK_BRUSH, vtkOFBPainterWidget::ShrinkBrushAction);
+  this->MapKey(']', any, INCREASE_STRENGTH, vtkOFBPainterWidget::IncreaseStrengthAction);
+  this->MapKey('[', any, DECREASE_STRENGTH, vtkOFBPainterWidget::DecreaseStrengthAction);
+  this->MapKey('f', any, NEXT_FALLOFF, vtkOFBPainterWidget::NextFalloffAction);
+  this->MapKey('t', any, NEXT_TARGET, vtkOFBPainterWidget::NextTargetAction);
+  this->MapKey('b', any, NEXT_BLEND_MODE, vtkOFBPainterWidget::NextBlendModeAction);
+  this->MapKey('m', any, NEXT_MIRROR, vtkOFBPainterWidget::NextMirrorAction);
+  this->MapKey('c', any, NEXT_PALETTE_COLOR, vtkOFBPainterWidget::NextPaletteColorAction);
+  for (char key = '1'; key <= '9'; ++key)
+  {
+    this->MapKey(key, any, SELECT_PALETTE_COLOR, vtkOFBPainterWidget::SelectPaletteColorAction);
+  }
+  this->MapKey('u', any, UNDO, vtkOFBPainterWidget::UndoAction);
+  this->MapKey('U', any, REDO, vtkOFBPainterWidget::RedoAction);
+  // Control keys: X11 and Windows give the control character (Ctrl+Z is 26, Ctrl+Y 25),
+  // other systems the letter.
+  const int ctrl = vtkEvent::ControlModifier;
+  const int ctrlShift = vtkEvent::ControlModifier | vtkEvent::ShiftModifier;
+  for (char z : { '\x1a', 'z', 'Z' })
+  {
+    this->MapKey(z, ctrl, UNDO, vtkOFBPainterWidget::UndoAction);
+    this->MapKey(z, ctrlShift, REDO, vtkOFBPainterWidget::RedoAction);
+  }
+  for (char y : { '\x19', 'y', 'Y' })
+  {
+    this->MapKey(y, ctrl, REDO, vtkOFBPainterWidget::RedoAction);
+    this->MapKey(y, ctrlShift, REDO, vtkOFBPainterWidget::RedoAction);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -67,13 +112,13 @@ void vtkOFBPainterWidget::SelectAction(vtkAbstractWidget* w)
 {
   vtkOFBPainterWidget* self = static_cast<vtkOFBPainterWidget*>(w);
   auto* rep = vtkOFBPainterRepresentation::SafeDownCast(self->WidgetRep);
-  if (!rep || self->WidgetState == Painting)
+  if (!rep || self->WidgetState == PAINTING)
   {
     return;
   }
   const int X = self->Interactor->GetEventPosition()[0];
   const int Y = self->Interactor->GetEventPosition()[1];
-  if (rep->ComputeInteractionState(X, Y) != vtkOFBPainterRepresentation::OnSurface)
+  if (rep->ComputeInteractionState(X, Y) != vtkOFBPainterRepresentation::ON_SURFACE)
   {
     return; // off the surface: the interactor style has the event
   }
@@ -81,7 +126,7 @@ void vtkOFBPainterWidget::SelectAction(vtkAbstractWidget* w)
   {
     return;
   }
-  self->WidgetState = Painting;
+  self->WidgetState = PAINTING;
   self->GrabFocus(self->EventCallbackCommand);
   self->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
   double eventPos[2] = { static_cast<double>(X), static_cast<double>(Y) };
@@ -102,15 +147,15 @@ void vtkOFBPainterWidget::MoveAction(vtkAbstractWidget* w)
   }
   const int X = self->Interactor->GetEventPosition()[0];
   const int Y = self->Interactor->GetEventPosition()[1];
-  if (self->WidgetState == Start)
+  if (self->WidgetState == START)
   {
     // Hovering: move the cursor; the interactor style still gets the event (a drag that
     // started off the surface rotates the camera).
     const int before = rep->GetInteractionState();
     const int state = rep->ComputeInteractionState(X, Y);
     self->SetCursor(state);
-    if (state == vtkOFBPainterRepresentation::OnSurface ||
-      before == vtkOFBPainterRepresentation::OnSurface)
+    if (state == vtkOFBPainterRepresentation::ON_SURFACE ||
+      before == vtkOFBPainterRepresentation::ON_SURFACE)
     {
       self->Render();
     }
@@ -128,14 +173,14 @@ void vtkOFBPainterWidget::EndSelectAction(vtkAbstractWidget* w)
 {
   vtkOFBPainterWidget* self = static_cast<vtkOFBPainterWidget*>(w);
   auto* rep = vtkOFBPainterRepresentation::SafeDownCast(self->WidgetRep);
-  if (!rep || self->WidgetState != Painting)
+  if (!rep || self->WidgetState != PAINTING)
   {
     return;
   }
   double eventPos[2] = { static_cast<double>(self->Interactor->GetEventPosition()[0]),
     static_cast<double>(self->Interactor->GetEventPosition()[1]) };
   rep->EndWidgetInteraction(eventPos);
-  self->WidgetState = Start;
+  self->WidgetState = START;
   ++self->NumberOfStrokes;
   self->ReleaseFocus();
   self->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
@@ -146,7 +191,7 @@ void vtkOFBPainterWidget::EndSelectAction(vtkAbstractWidget* w)
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPainterWidget::KeyAction(vtkAbstractWidget* w)
+void vtkOFBPainterWidget::ApplyKey(vtkAbstractWidget* w, KeyFunction apply)
 {
   vtkOFBPainterWidget* self = static_cast<vtkOFBPainterWidget*>(w);
   auto* rep = vtkOFBPainterRepresentation::SafeDownCast(self->WidgetRep);
@@ -154,7 +199,7 @@ void vtkOFBPainterWidget::KeyAction(vtkAbstractWidget* w)
   {
     return;
   }
-  if (self->HandleKey(rep))
+  if (apply(rep, self->Interactor->GetKeyCode()))
   {
     self->EventCallbackCommand->SetAbortFlag(1);
     self->InvokeEvent(vtkCommand::WidgetModifiedEvent, nullptr);
@@ -163,83 +208,133 @@ void vtkOFBPainterWidget::KeyAction(vtkAbstractWidget* w)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPainterWidget::HandleKey(vtkOFBPainterRepresentation* rep)
+void vtkOFBPainterWidget::GrowBrushAction(vtkAbstractWidget* w)
 {
-  vtkRenderWindowInteractor* iren = this->Interactor;
-  const char code = iren->GetKeyCode();
-  const char* sym = iren->GetKeySym();
-  const bool ctrl = iren->GetControlKey() != 0;
-  const bool shift = iren->GetShiftKey() != 0;
-  // With Control held, X11 gives the control character (Ctrl+Z is 26); the key symbol
-  // still names the letter.
-  char letter = code;
-  if (ctrl && code >= 1 && code <= 26)
-  {
-    letter = static_cast<char>('a' + code - 1);
-  }
-  else if (ctrl && sym && std::strlen(sym) == 1)
-  {
-    letter = static_cast<char>(std::tolower(static_cast<unsigned char>(sym[0])));
-  }
-  if (ctrl)
-  {
-    if ((letter == 'z' || letter == 'Z') && !shift)
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
     {
-      rep->Undo();
-      return true;
-    }
-    if (letter == 'y' || letter == 'Y' || letter == 'z' || letter == 'Z')
-    {
-      rep->Redo();
-      return true;
-    }
-    return false;
-  }
-  switch (code)
-  {
-    case '+':
-    case '=':
       rep->ScaleRadius(1);
       return true;
-    case '-':
-    case '_':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::ShrinkBrushAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->ScaleRadius(-1);
       return true;
-    case ']':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::IncreaseStrengthAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->AddStrength(1);
       return true;
-    case '[':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::DecreaseStrengthAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->AddStrength(-1);
       return true;
-    case 'f':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::NextFalloffAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->NextFalloff();
       return true;
-    case 't':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::NextTargetAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->NextTarget();
       return true;
-    case 'b':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::NextBlendModeAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->NextBlendMode();
       return true;
-    case 'm':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::NextMirrorAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->NextMirror();
       return true;
-    case 'c':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::NextPaletteColorAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->NextPaletteColor();
       return true;
-    case 'u':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::SelectPaletteColorAction(vtkAbstractWidget* w)
+{
+  // The digit typed picks the colour: '1' the first.
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char key)
+    { return key >= '1' && key <= '9' && rep->SelectPaletteColor(key - '1'); });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::UndoAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->Undo();
       return true;
-    case 'U':
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainterWidget::RedoAction(vtkAbstractWidget* w)
+{
+  ApplyKey(w,
+    [](vtkOFBPainterRepresentation* rep, char)
+    {
       rep->Redo();
       return true;
-    default:
-      break;
-  }
-  if (code >= '1' && code <= '9')
-  {
-    return rep->SelectPaletteColor(code - '1');
-  }
-  return false;
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -248,7 +343,7 @@ void vtkOFBPainterWidget::SetCursor(int state)
   if (this->ManagesCursor)
   {
     this->RequestCursorShape(
-      state == vtkOFBPainterRepresentation::OnSurface ? VTK_CURSOR_CROSSHAIR : VTK_CURSOR_DEFAULT);
+      state == vtkOFBPainterRepresentation::ON_SURFACE ? VTK_CURSOR_CROSSHAIR : VTK_CURSOR_DEFAULT);
   }
 }
 
@@ -257,6 +352,6 @@ void vtkOFBPainterWidget::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "KeyboardShortcuts: " << (this->KeyboardShortcuts ? "On" : "Off") << "\n";
-  os << indent << "WidgetState: " << (this->WidgetState == Painting ? "Painting" : "Start") << "\n";
+  os << indent << "WidgetState: " << (this->WidgetState == PAINTING ? "Painting" : "Start") << "\n";
   os << indent << "NumberOfStrokes: " << this->NumberOfStrokes << "\n";
 }

@@ -29,6 +29,23 @@
  * Other keys go to the interactor style (`r` resets the camera, `q` quits, ...). The
  * widget is switched with On() and Off(): KeyPressActivation is off, so `i` is not taken.
  *
+ * Each key is a translation in the widget's vtkWidgetEventTranslator from a CharEvent
+ * (key code and modifiers) to one of this class's widget events (GROW_BRUSH, UNDO, ...),
+ * which the vtkWidgetCallbackMapper maps to its action, as vtkSphereWidget2 maps its
+ * events. An application rebinds or drops one key through GetEventTranslator():
+ * @code
+ * vtkWidgetEventTranslator* keys = widget->GetEventTranslator();
+ * // Drop `u` (undo stays on Ctrl+Z); the key goes to the interactor style again.
+ * keys->RemoveTranslation(vtkCommand::CharEvent, vtkEvent::AnyModifier, 'u', 0, nullptr);
+ * // Undo on `z`.
+ * keys->SetTranslation(vtkCommand::CharEvent, vtkEvent::AnyModifier, 'z', 0, nullptr,
+ *   vtkOFBPainterWidget::UNDO);
+ * @endcode
+ * The plain keys are bound with vtkEvent::AnyModifier (a key typed with Shift matches);
+ * Ctrl+Z is bound with vtkEvent::ControlModifier to the control character 26 (X11,
+ * Windows) and to `z`/`Z` (other systems), Ctrl+Y likewise to 25 and `y`/`Y`.
+ * RemoveTranslation with a key code removes only that key's bindings.
+ *
  * Events: StartInteractionEvent when a stroke starts (before its first dab),
  * InteractionEvent after each move of a stroke, EndInteractionEvent when it ends: one
  * Start/End pair per stroke. A key that changes the brush or undoes/redoes a stroke
@@ -71,9 +88,29 @@ public:
   ///@}
 
   /**
+   * The widget events the keys translate to (see the class description), numbered
+   * after vtkWidgetEvent's own.
+   */
+  enum KeyEvents
+  {
+    GROW_BRUSH = 1000,
+    SHRINK_BRUSH,
+    INCREASE_STRENGTH,
+    DECREASE_STRENGTH,
+    NEXT_FALLOFF,
+    NEXT_TARGET,
+    NEXT_BLEND_MODE,
+    NEXT_MIRROR,
+    NEXT_PALETTE_COLOR,
+    SELECT_PALETTE_COLOR, ///< the palette colour of the digit typed (`1` the first)
+    UNDO,
+    REDO
+  };
+
+  /**
    * Whether a stroke is being painted.
    */
-  bool IsPainting() const { return this->WidgetState == Painting; }
+  bool IsPainting() const { return this->WidgetState == PAINTING; }
 
   /**
    * Number of strokes painted since the widget was created.
@@ -86,8 +123,8 @@ protected:
 
   enum WidgetStateType
   {
-    Start = 0,
-    Painting
+    START = 0,
+    PAINTING
   };
   int WidgetState;
   bool KeyboardShortcuts;
@@ -97,13 +134,34 @@ protected:
   static void SelectAction(vtkAbstractWidget* w);
   static void MoveAction(vtkAbstractWidget* w);
   static void EndSelectAction(vtkAbstractWidget* w);
-  static void KeyAction(vtkAbstractWidget* w);
+  static void GrowBrushAction(vtkAbstractWidget* w);
+  static void ShrinkBrushAction(vtkAbstractWidget* w);
+  static void IncreaseStrengthAction(vtkAbstractWidget* w);
+  static void DecreaseStrengthAction(vtkAbstractWidget* w);
+  static void NextFalloffAction(vtkAbstractWidget* w);
+  static void NextTargetAction(vtkAbstractWidget* w);
+  static void NextBlendModeAction(vtkAbstractWidget* w);
+  static void NextMirrorAction(vtkAbstractWidget* w);
+  static void NextPaletteColorAction(vtkAbstractWidget* w);
+  static void SelectPaletteColorAction(vtkAbstractWidget* w);
+  static void UndoAction(vtkAbstractWidget* w);
+  static void RedoAction(vtkAbstractWidget* w);
+
+  // A key's change of the representation, given the key code typed; false when the key
+  // was not taken (it then goes to the interactor style).
+  using KeyFunction = bool (*)(vtkOFBPainterRepresentation* rep, char key);
+
+  // Apply a key's change when KeyboardShortcuts is on; a taken key is not passed on and
+  // invokes WidgetModifiedEvent.
+  static void ApplyKey(vtkAbstractWidget* w, KeyFunction apply);
+
+  // Set up the key actions and the default keys (the class description lists them).
+  void MapKeys();
+  using KeyCallback = void (*)(vtkAbstractWidget*);
+  void MapKey(char key, int modifier, unsigned long widgetEvent, KeyCallback action);
 
   // Crosshair over the surface, the default cursor elsewhere.
   void SetCursor(int state) override;
-
-  // Apply the key of the current CharEvent; false when the key is not the widget's.
-  bool HandleKey(vtkOFBPainterRepresentation* rep);
 
 private:
   vtkOFBPainterWidget(const vtkOFBPainterWidget&) = delete;

@@ -18,8 +18,8 @@ vtkCxxSetObjectMacro(vtkOFBBuilder, RenderWindow, vtkRenderWindow);
 
 //------------------------------------------------------------------------------
 vtkOFBBuilder::vtkOFBBuilder()
-  : Backend(Auto)
-  , LastBackend(Auto)
+  : Backend(BACKEND_AUTO)
+  , LastBackend(BACKEND_AUTO)
   , RenderWindow(nullptr)
   , GLBackend(vtk::TakeSmartPointer(vtkOFBGLSampler::New()))
 {
@@ -36,9 +36,9 @@ const char* vtkOFBBuilder::GetBackendAsString(int backend)
 {
   switch (backend)
   {
-    case CPU:
+    case BACKEND_CPU:
       return "CPU";
-    case OpenGL:
+    case BACKEND_OPENGL:
       return "OpenGL";
     default:
       return "Auto";
@@ -57,12 +57,12 @@ int vtkOFBBuilder::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  this->LastBackend = Auto;
+  this->LastBackend = BACKEND_AUTO;
   vtkSmartPointer<vtkRenderWindow> ownWindow;
   this->GLBackend->SetRenderWindow(this->FindOpenGLWindow(ownWindow));
   const int result = this->Superclass::RequestData(request, inputVector, outputVector);
   this->GLBackend->SetRenderWindow(nullptr);
-  this->LastBackend = this->GetLastBuildBackend() == this->GLBackend ? OpenGL : CPU;
+  this->LastBackend = this->GetLastBuildBackend() == this->GLBackend ? BACKEND_OPENGL : BACKEND_CPU;
   return result;
 }
 
@@ -79,13 +79,13 @@ vtkOFBSamplerBackend* vtkOFBBuilder::SelectBackend()
 //------------------------------------------------------------------------------
 vtkOpenGLRenderWindow* vtkOFBBuilder::FindOpenGLWindow(vtkSmartPointer<vtkRenderWindow>& ownWindow)
 {
-  if (this->Backend == CPU)
+  if (this->Backend == BACKEND_CPU)
   {
     return nullptr;
   }
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(this->RenderWindow);
   std::string why;
-  if (!window && this->Backend == OpenGL)
+  if (!window && this->Backend == BACKEND_OPENGL)
   {
     // X11 builds need a display to make a context: without one, say so.
     const char* display = std::getenv("DISPLAY");
@@ -102,12 +102,12 @@ vtkOpenGLRenderWindow* vtkOFBBuilder::FindOpenGLWindow(vtkSmartPointer<vtkRender
   if (window)
   {
     useGL = vtkOFBGLSampler::IsSupported(window, why);
-    if (useGL && this->Backend == Auto && vtkOFBGLSampler::IsSoftwareRenderer(window))
+    if (useGL && this->Backend == BACKEND_AUTO && vtkOFBGLSampler::IsSoftwareRenderer(window))
     {
       useGL = false; // the multi-threaded CPU sampler beats a software rasterizer
     }
   }
-  if (!useGL && this->Backend == OpenGL)
+  if (!useGL && this->Backend == BACKEND_OPENGL)
   {
     vtkWarningMacro(
       "The OpenGL backend cannot be used (" << why << "); building on the CPU instead.");

@@ -6,8 +6,8 @@
  * of vtkOFBSampler (Resolution, MemoryLimit, colours, arrays) and adds the choice
  * of backend (a vtkOFBSamplerBackend that the sampler's build runs):
  *
- * - `CPU`: vtkOFBSampler's multi-threaded scan conversion (vtkSMPTools).
- * - `OpenGL`: rasterization in the context of a VTK render window (SetRenderWindow,
+ * - `BACKEND_CPU`: vtkOFBSampler's multi-threaded scan conversion (vtkSMPTools).
+ * - `BACKEND_OPENGL`: rasterization in the context of a VTK render window (SetRenderWindow,
  *   or an offscreen window the builder makes itself when none is set). A geometry
  *   shader routes each triangle to the viewport of its grid in a framebuffer
  *   without attachments; the fragment shader counts samples per cell with SSBO
@@ -16,7 +16,7 @@
  *   depth (no limit on depth complexity). The sample arrays are then interpolated
  *   from the barycentric coordinates by the same code as the CPU backend. Needs
  *   OpenGL 4.3 (IsSupported). GL state is restored afterwards.
- * - `Auto` (default): OpenGL when a render window is set whose context supports it
+ * - `BACKEND_AUTO` (default): OpenGL when a render window is set whose context supports it
  *   and is a hardware renderer; the CPU on software renderers (llvmpipe), where
  *   the multi-threaded CPU sampler is faster, and when no window is set.
  *
@@ -49,20 +49,20 @@ public:
 
   enum BackendType
   {
-    Auto = 0,
-    CPU = 1,
-    OpenGL = 2
+    BACKEND_AUTO = 0,
+    BACKEND_CPU = 1,
+    BACKEND_OPENGL = 2
   };
 
   ///@{
   /**
-   * Construction backend: Auto (default), CPU or OpenGL.
+   * Construction backend: BACKEND_AUTO (default), BACKEND_CPU or BACKEND_OPENGL.
    */
-  vtkSetClampMacro(Backend, int, Auto, OpenGL);
+  vtkSetClampMacro(Backend, int, BACKEND_AUTO, BACKEND_OPENGL);
   vtkGetMacro(Backend, int);
-  void SetBackendToAuto() { this->SetBackend(Auto); }
-  void SetBackendToCPU() { this->SetBackend(CPU); }
-  void SetBackendToOpenGL() { this->SetBackend(OpenGL); }
+  void SetBackendToAuto() { this->SetBackend(BACKEND_AUTO); }
+  void SetBackendToCPU() { this->SetBackend(BACKEND_CPU); }
+  void SetBackendToOpenGL() { this->SetBackend(BACKEND_OPENGL); }
   ///@}
 
   ///@{
@@ -74,7 +74,8 @@ public:
   ///@}
 
   /**
-   * Backend (CPU or OpenGL) that built the current output; Auto before any build.
+   * Backend (BACKEND_CPU or BACKEND_OPENGL) that built the current output; BACKEND_AUTO
+   * before any build.
    */
   vtkGetMacro(LastBackend, int);
 

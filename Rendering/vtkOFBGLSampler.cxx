@@ -529,7 +529,7 @@ vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
   if (!window)
   {
     job.Error = "no render window";
-    return Unavailable;
+    return RESULT_UNAVAILABLE;
   }
   const double samples = vtkOFBSamplerBackend::EstimateSamples(surface, job.CellSize);
   const bool zeroOffsets = true; // the scan writes them from zero counts
@@ -537,7 +537,7 @@ vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
         this->EstimateBytes(surface, job.Dimensions, samples), job.MemoryLimit, job.Error) ||
     !output->SetFrame(job.Origin, job.CellSize, job.Dimensions, zeroOffsets))
   {
-    return Failed;
+    return RESULT_FAILED;
   }
   if (job.Algorithm)
   {
@@ -550,7 +550,7 @@ vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
   window->PopContext();
   if (!rasterized)
   {
-    return Unavailable;
+    return RESULT_UNAVAILABLE;
   }
   if (job.Algorithm)
   {
@@ -568,9 +568,9 @@ vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
     !vtkOFBSamplerBackend::InterpolateAttributes(
       surface, output, triangles.data(), w1.data(), w2.data()))
   {
-    return Failed;
+    return RESULT_FAILED;
   }
-  return Built;
+  return RESULT_BUILT;
 }
 
 //------------------------------------------------------------------------------

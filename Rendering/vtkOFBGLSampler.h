@@ -14,7 +14,7 @@
  *
  * A context that cannot do it, a frame larger than its viewports, a GPU
  * allocation failure or more samples than the memory limit make the backend
- * Unavailable: vtkOFBSampler then builds on the CPU.
+ * RESULT_UNAVAILABLE: vtkOFBSampler then builds on the CPU.
  */
 
 #ifndef vtkOFBGLSampler_h

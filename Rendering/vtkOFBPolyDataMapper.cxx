@@ -177,7 +177,7 @@ bool vtkOFBPolyDataMapper::HasTranslucentPolygonalGeometry()
   selection.ScalarName = this->Coloring->GetScalarArrayName();
   selection.ScalarComponent = this->Coloring->GetScalarComponent();
   if (this->Coloring->GetColorSource() == vtkOFBColoring::COLOR_SOURCE_SCALARS &&
-    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Scalars, selection))
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_SCALARS, selection))
   {
     vtkScalarsToColors* lut = this->Coloring->GetLookupTable();
     lut->Build();
@@ -191,7 +191,7 @@ bool vtkOFBPolyDataMapper::HasTranslucentColors(vtkOFB* ofb)
 {
   vtkOFBShaderStorage::Selection selection;
   auto* colors = vtkUnsignedCharArray::SafeDownCast(
-    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Colors, selection));
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_COLORS, selection));
   if (!colors || colors->GetNumberOfComponents() != 4)
   {
     return false;
@@ -389,7 +389,7 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
   {
     selection.ScalarName = coloring->GetScalarArrayName();
     selection.ScalarComponent = coloring->GetScalarComponent();
-    if (vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Scalars, selection))
+    if (vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_SCALARS, selection))
     {
       this->SourceScalars = true;
       selection.Colors = false;
@@ -403,7 +403,7 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
     }
   }
   if (!this->SourceScalars &&
-    !vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Colors, selection))
+    !vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_COLORS, selection))
   {
     this->WarnOnce("The OFB has no RGB(A) unsigned char \"Colors\" sample array of one tuple a "
                    "sample: rendering without OFB colours.");
@@ -413,8 +413,8 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
   if (coloring->GetIntensityModulation())
   {
     selection.IntensityName = coloring->GetIntensityArrayName();
-    this->UseIntensity =
-      vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Intensity, selection) != nullptr;
+    this->UseIntensity = vtkOFBShaderStorage::GetArray(
+                           ofb, vtkOFBShaderStorage::BUFFER_INTENSITY, selection) != nullptr;
     if (!this->UseIntensity)
     {
       selection.IntensityName.clear();
@@ -424,7 +424,7 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Select
     }
   }
   selection.Normals = this->UsePaintedNormals &&
-    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::Normals, selection) != nullptr;
+    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::BUFFER_NORMALS, selection) != nullptr;
   if (this->UsePaintedNormals && !selection.Normals)
   {
     this->WarnOnce("The OFB has no 3-component \"Normals\" sample array of one tuple a sample: "

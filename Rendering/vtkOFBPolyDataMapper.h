@@ -146,10 +146,12 @@ public:
 
   ///@{
   /**
-   * The OFB that colours the surface: set directly (input port 1's data) or through a
-   * pipeline connection to input port 1. Default none.
+   * The OFB that colours the surface: set directly (input port 1's data; SetOFBData is
+   * the same as SetOFB, named as the filters that take an OFB on a second port) or
+   * through a pipeline connection to input port 1. Default none.
    */
   void SetOFB(vtkOFB* ofb);
+  void SetOFBData(vtkOFB* ofb) { this->SetOFB(ofb); }
   vtkOFB* GetOFB();
   void SetOFBConnection(vtkAlgorithmOutput* output);
   ///@}

@@ -29,11 +29,11 @@ size_t BytesPerSample(int id)
 {
   switch (id)
   {
-    case vtkOFBShaderStorage::Samples:
+    case vtkOFBShaderStorage::BUFFER_SAMPLES:
       return 2 * sizeof(vtkTypeUInt32); // depth, colour attribute
-    case vtkOFBShaderStorage::Normals:
+    case vtkOFBShaderStorage::BUFFER_NORMALS:
       return 3 * sizeof(float);
-    case vtkOFBShaderStorage::Intensity:
+    case vtkOFBShaderStorage::BUFFER_INTENSITY:
       return 1; // [0, 1] in a byte, four to a word (a quarter of a float's cache footprint)
     default:
       return 4;
@@ -62,7 +62,7 @@ float ScalarValue(vtkDataArray* array, vtkIdType t, int component)
 //------------------------------------------------------------------------------
 vtkOFBShaderStorage::vtkOFBShaderStorage()
 {
-  for (int i = 0; i < NumberOfBuffers; ++i)
+  for (int i = 0; i < NUMBER_OF_BUFFERS; ++i)
   {
     this->Handles[i] = 0;
     this->Sizes[i] = 0;
@@ -195,21 +195,23 @@ unsigned int vtkOFBShaderStorage::UploadChangedArrays(const Selection& selection
   vtkOFB* ofb = this->Levels[0];
   const vtkIdType n = ofb->GetNumberOfSamples();
   const int base = this->LevelSampleBase.empty() ? 0 : this->LevelSampleBase[0];
-  const int ids[3] = { Samples, Intensity, Normals };
+  const int ids[3] = { BUFFER_SAMPLES, BUFFER_INTENSITY, BUFFER_NORMALS };
   const bool wanted[3] = { true, !selection.IntensityName.empty(), selection.Normals };
   unsigned int whole = 0;
   for (int k = 0; k < 3; ++k)
   {
     vtkDataArray* array = !wanted[k]
       ? nullptr
-      : GetArray(
-          ofb, ids[k] == Samples ? (selection.Colors ? Colors : Scalars) : ids[k], selection);
+      : GetArray(ofb,
+          ids[k] == BUFFER_SAMPLES ? (selection.Colors ? ATTRIBUTE_COLORS : ATTRIBUTE_SCALARS)
+                                   : ids[k],
+          selection);
     if (!array ||
       (array == this->UploadedArrays[ids[k]] && array->GetMTime() <= this->UploadTime.GetMTime()))
     {
       continue;
     }
-    if (ids[k] == Samples)
+    if (ids[k] == BUFFER_SAMPLES)
     {
       this->UploadSamples(ofb, array, selection, 0, n, base);
     }
@@ -227,10 +229,12 @@ unsigned int vtkOFBShaderStorage::UploadChangedArrays(const Selection& selection
 void vtkOFBShaderStorage::RecordArrays(const Selection& selection)
 {
   vtkOFB* ofb = this->Levels[0];
-  this->UploadedArrays[Samples] = GetArray(ofb, selection.Colors ? Colors : Scalars, selection);
-  this->UploadedArrays[Intensity] =
-    selection.IntensityName.empty() ? nullptr : GetArray(ofb, Intensity, selection);
-  this->UploadedArrays[Normals] = selection.Normals ? GetArray(ofb, Normals, selection) : nullptr;
+  this->UploadedArrays[BUFFER_SAMPLES] =
+    GetArray(ofb, selection.Colors ? ATTRIBUTE_COLORS : ATTRIBUTE_SCALARS, selection);
+  this->UploadedArrays[BUFFER_INTENSITY] =
+    selection.IntensityName.empty() ? nullptr : GetArray(ofb, BUFFER_INTENSITY, selection);
+  this->UploadedArrays[BUFFER_NORMALS] =
+    selection.Normals ? GetArray(ofb, BUFFER_NORMALS, selection) : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -362,7 +366,7 @@ bool vtkOFBShaderStorage::IsSupported(vtkOpenGLRenderWindow* window, std::string
   glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &blocks);
   GLint bindings = 0;
   glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
-  if (blocks < NumberOfBuffers || bindings < static_cast<GLint>(BindingBase + NumberOfBuffers))
+  if (blocks < NUMBER_OF_BUFFERS || bindings < static_cast<GLint>(BindingBase + NUMBER_OF_BUFFERS))
   {
     why = "the OpenGL context offers too few fragment shader storage blocks (" +
       std::to_string(blocks) + ") or bindings (" + std::to_string(bindings) + ")";
@@ -374,10 +378,10 @@ bool vtkOFBShaderStorage::IsSupported(vtkOpenGLRenderWindow* window, std::string
 //------------------------------------------------------------------------------
 const char* vtkOFBShaderStorage::GetBlockName(int id)
 {
-  static const char* names[NumberOfBuffers] = {
+  static const char* names[NUMBER_OF_BUFFERS] = {
     "ofbOffsetsBlock", "ofbSamplesBlock", "ofbIntensityBlock", "ofbNormalsBlock", "ofbLUTBlock"
   };
-  return (id >= 0 && id < NumberOfBuffers) ? names[id] : "";
+  return (id >= 0 && id < NUMBER_OF_BUFFERS) ? names[id] : "";
 }
 
 //------------------------------------------------------------------------------
@@ -405,9 +409,9 @@ vtkDataArray* vtkOFBShaderStorage::FindArray(vtkPointData* pd, int id, const Sel
   vtkDataArray* array = nullptr;
   switch (id)
   {
-    case Colors:
+    case ATTRIBUTE_COLORS:
     {
-      array = pd->GetArray("Colors");
+      array = pd->GetArray(vtkOFB::ColorsArrayName());
       if (!array)
       {
         array = pd->GetScalars();
@@ -417,19 +421,19 @@ vtkDataArray* vtkOFBShaderStorage::FindArray(vtkPointData* pd, int id, const Sel
         ? uc
         : nullptr;
     }
-    case Scalars:
+    case ATTRIBUTE_SCALARS:
       array = selection.ScalarName.empty() ? nullptr : pd->GetArray(selection.ScalarName.c_str());
       if (array && selection.ScalarComponent >= array->GetNumberOfComponents())
       {
         return nullptr;
       }
       return array;
-    case Intensity:
+    case BUFFER_INTENSITY:
       array =
         selection.IntensityName.empty() ? nullptr : pd->GetArray(selection.IntensityName.c_str());
       return array;
-    case Normals:
-      array = pd->GetArray("Normals");
+    case BUFFER_NORMALS:
+      array = pd->GetArray(vtkOFB::NormalsArrayName());
       if (!array)
       {
         array = pd->GetNormals();
@@ -489,7 +493,7 @@ void vtkOFBShaderStorage::UploadArray(int id,
   {
     return;
   }
-  if (id == Intensity)
+  if (id == BUFFER_INTENSITY)
   {
     this->UploadIntensity(array, first, last, base);
     return;
@@ -499,7 +503,7 @@ void vtkOFBShaderStorage::UploadArray(int id,
   const size_t offset = static_cast<size_t>(base + first) * bps;
   this->Scratch.resize(n * bps);
   float* dst = reinterpret_cast<float*>(this->Scratch.data());
-  if (id == Normals)
+  if (id == BUFFER_NORMALS)
   {
     for (size_t i = 0; i < n; ++i)
     {
@@ -541,7 +545,7 @@ void vtkOFBShaderStorage::UploadIntensity(vtkDataArray* array,
     // Clamped to [0, 1] (NaN to 0), rounded to 1/255.
     dst[i] = static_cast<unsigned char>(v > 0.0f ? std::min(v, 1.0f) * 255.0f + 0.5f : 0.0f);
   }
-  this->Upload(Intensity, static_cast<size_t>(base + first), count, dst);
+  this->Upload(BUFFER_INTENSITY, static_cast<size_t>(base + first), count, dst);
 }
 
 //------------------------------------------------------------------------------
@@ -557,7 +561,7 @@ void vtkOFBShaderStorage::UploadSamples(vtkOFB* ofb,
     return;
   }
   const size_t n = static_cast<size_t>(last - first);
-  this->Scratch.resize(n * BytesPerSample(Samples));
+  this->Scratch.resize(n * BytesPerSample(BUFFER_SAMPLES));
   vtkTypeUInt32* dst = reinterpret_cast<vtkTypeUInt32*>(this->Scratch.data());
   // Depths in cells of the level.
   const float* depths = ofb->GetDepths()->GetPointer(first);
@@ -590,9 +594,9 @@ void vtkOFBShaderStorage::UploadSamples(vtkOFB* ofb,
       std::memcpy(&dst[2 * i + 1], &value, 4);
     }
   }
-  this->Upload(Samples,
-    static_cast<size_t>(base + first) * BytesPerSample(Samples),
-    n * BytesPerSample(Samples),
+  this->Upload(BUFFER_SAMPLES,
+    static_cast<size_t>(base + first) * BytesPerSample(BUFFER_SAMPLES),
+    n * BytesPerSample(BUFFER_SAMPLES),
     dst);
 }
 
@@ -627,9 +631,9 @@ vtkIdType vtkOFBShaderStorage::UploadAll(const std::vector<vtkOFB*>& levels,
     return -1;
   }
   const size_t ns = static_cast<size_t>(totalSamples);
-  bool ok = this->Allocate(Offsets, static_cast<size_t>(totalCells) * 4) &&
-    this->Allocate(Samples, ns * BytesPerSample(Samples));
-  const int arrays[2] = { Intensity, Normals };
+  bool ok = this->Allocate(BUFFER_OFFSETS, static_cast<size_t>(totalCells) * 4) &&
+    this->Allocate(BUFFER_SAMPLES, ns * BytesPerSample(BUFFER_SAMPLES));
+  const int arrays[2] = { BUFFER_INTENSITY, BUFFER_NORMALS };
   const bool wanted[2] = { !selection.IntensityName.empty(), selection.Normals };
   for (int k = 0; k < 2 && ok; ++k)
   {
@@ -663,12 +667,14 @@ vtkIdType vtkOFBShaderStorage::UploadAll(const std::vector<vtkOFB*>& levels,
       most = std::max(most, offsets[c + 1] - offsets[c]);
     }
     this->MaximumCellSamples = std::max(this->MaximumCellSamples, static_cast<int>(most));
-    this->Upload(
-      Offsets, cellOffset * 4, static_cast<size_t>(nc) * 4, ofb->GetCellOffsets()->GetPointer(0));
+    this->Upload(BUFFER_OFFSETS,
+      cellOffset * 4,
+      static_cast<size_t>(nc) * 4,
+      ofb->GetCellOffsets()->GetPointer(0));
     cellOffset += static_cast<size_t>(nc);
     const vtkIdType n = ofb->GetNumberOfSamples();
     this->UploadSamples(ofb,
-      GetArray(ofb, selection.Colors ? Colors : Scalars, selection),
+      GetArray(ofb, selection.Colors ? ATTRIBUTE_COLORS : ATTRIBUTE_SCALARS, selection),
       selection,
       0,
       n,
@@ -703,11 +709,12 @@ vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels,
     return 0;
   }
   vtkOFB* ofb = levels[level];
-  const bool samples = (buffers & (1u << Samples)) != 0;
-  vtkDataArray* attribute = GetArray(ofb, selection.Colors ? Colors : Scalars, selection);
-  const int arrays[2] = { Intensity, Normals };
-  const bool wanted[2] = { !selection.IntensityName.empty() && (buffers & (1u << Intensity)),
-    selection.Normals && (buffers & (1u << Normals)) };
+  const bool samples = (buffers & (1u << BUFFER_SAMPLES)) != 0;
+  vtkDataArray* attribute =
+    GetArray(ofb, selection.Colors ? ATTRIBUTE_COLORS : ATTRIBUTE_SCALARS, selection);
+  const int arrays[2] = { BUFFER_INTENSITY, BUFFER_NORMALS };
+  const bool wanted[2] = { !selection.IntensityName.empty() && (buffers & (1u << BUFFER_INTENSITY)),
+    selection.Normals && (buffers & (1u << BUFFER_NORMALS)) };
   vtkDataArray* sources[2];
   for (int k = 0; k < 2; ++k)
   {
@@ -739,7 +746,7 @@ vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels,
 //------------------------------------------------------------------------------
 void vtkOFBShaderStorage::UploadLookupTable(vtkScalarsToColors* lut, const double range[2])
 {
-  if (!lut || !this->Allocate(LUT, LUTSize * 4 * sizeof(float)))
+  if (!lut || !this->Allocate(BUFFER_LUT, LUTSize * 4 * sizeof(float)))
   {
     return;
   }
@@ -754,13 +761,13 @@ void vtkOFBShaderStorage::UploadLookupTable(vtkScalarsToColors* lut, const doubl
     table[4 * i + 2] = static_cast<float>(rgb[2]);
     table[4 * i + 3] = static_cast<float>(lut->GetOpacity(v));
   }
-  this->Upload(LUT, 0, table.size() * sizeof(float), table.data());
+  this->Upload(BUFFER_LUT, 0, table.size() * sizeof(float), table.data());
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBShaderStorage::Bind()
 {
-  for (int i = 0; i < NumberOfBuffers; ++i)
+  for (int i = 0; i < NUMBER_OF_BUFFERS; ++i)
   {
     if (this->Handles[i])
     {
@@ -772,7 +779,7 @@ void vtkOFBShaderStorage::Bind()
 //------------------------------------------------------------------------------
 void vtkOFBShaderStorage::Unbind()
 {
-  for (int i = 0; i < NumberOfBuffers; ++i)
+  for (int i = 0; i < NUMBER_OF_BUFFERS; ++i)
   {
     if (this->Handles[i])
     {
@@ -790,7 +797,7 @@ void vtkOFBShaderStorage::SetBlockBindings(vtkShaderProgram* program)
     return;
   }
   const GLuint handle = static_cast<GLuint>(program->GetHandle());
-  for (int i = 0; i < NumberOfBuffers; ++i)
+  for (int i = 0; i < NUMBER_OF_BUFFERS; ++i)
   {
     const GLuint index =
       glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, GetBlockName(i));
@@ -805,7 +812,7 @@ void vtkOFBShaderStorage::SetBlockBindings(vtkShaderProgram* program)
 size_t vtkOFBShaderStorage::GetMemorySize() const
 {
   size_t total = 0;
-  for (int i = 0; i < NumberOfBuffers; ++i)
+  for (int i = 0; i < NUMBER_OF_BUFFERS; ++i)
   {
     total += this->Sizes[i];
   }
@@ -836,7 +843,7 @@ void vtkOFBShaderStorage::ForgetUploads()
 //------------------------------------------------------------------------------
 void vtkOFBShaderStorage::FreeBuffers()
 {
-  for (int i = 0; i < NumberOfBuffers; ++i)
+  for (int i = 0; i < NUMBER_OF_BUFFERS; ++i)
   {
     if (this->Handles[i] && this->Window)
     {

@@ -59,24 +59,25 @@ class vtkOFBShaderStorage
 public:
   enum BufferId
   {
-    Offsets = 0,
-    Samples,
-    Intensity,
-    Normals,
-    LUT,
-    NumberOfBuffers
+    BUFFER_OFFSETS = 0,
+    BUFFER_SAMPLES,
+    BUFFER_INTENSITY,
+    BUFFER_NORMALS,
+    BUFFER_LUT,
+    NUMBER_OF_BUFFERS
   };
 
   /// The colour attributes that GetArray resolves besides Intensity and Normals: one of them
   /// is the second word of every sample in the Samples buffer.
   enum AttributeId
   {
-    Colors = NumberOfBuffers,
-    Scalars
+    ATTRIBUTE_COLORS = NUMBER_OF_BUFFERS,
+    ATTRIBUTE_SCALARS
   };
 
   /// Bit masks of the per-sample buffers that hold attributes (UploadRanges).
-  static constexpr unsigned int AllArrays = (1u << Samples) | (1u << Intensity) | (1u << Normals);
+  static constexpr unsigned int AllArrays =
+    (1u << BUFFER_SAMPLES) | (1u << BUFFER_INTENSITY) | (1u << BUFFER_NORMALS);
 
   /// Most levels a storage holds (size of the shader's per-level uniform arrays).
   static constexpr int MaximumNumberOfLevels = 16;
@@ -245,10 +246,10 @@ private:
   vtkMTimeType UploadedLUTTime = 0;
   double UploadedLUTRange[2] = { 0.0, 0.0 };
   size_t UploadedBytes = 0;
-  vtkWeakPointer<vtkDataArray> UploadedArrays[NumberOfBuffers]; // level 0's, per buffer
+  vtkWeakPointer<vtkDataArray> UploadedArrays[NUMBER_OF_BUFFERS]; // level 0's, per buffer
 
-  unsigned int Handles[NumberOfBuffers];
-  size_t Sizes[NumberOfBuffers];
+  unsigned int Handles[NUMBER_OF_BUFFERS];
+  size_t Sizes[NUMBER_OF_BUFFERS];
   std::vector<int> LevelCellBase;   // 3 per level: first offsets entry of grid a
   std::vector<int> LevelSampleBase; // 1 per level
   std::vector<int> LevelDims;       // 3 per level

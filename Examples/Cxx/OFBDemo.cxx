@@ -328,8 +328,9 @@ bool BuildOFB(vtkPolyData* mesh, const Options& options, vtkOFBBuilder* builder)
   builder->SetInputData(mesh);
   builder->SetResolution(options.Resolution);
   builder->SetBackend(options.Backend == "cpu"
-      ? vtkOFBBuilder::CPU
-      : (options.Backend == "opengl" ? vtkOFBBuilder::OpenGL : vtkOFBBuilder::Auto));
+      ? vtkOFBBuilder::BACKEND_CPU
+      : (options.Backend == "opengl" ? vtkOFBBuilder::BACKEND_OPENGL
+                                     : vtkOFBBuilder::BACKEND_AUTO));
   builder->Update();
   vtkOFB* ofb = builder->GetOutput();
   if (buildErrors->Count > 0 || !ofb || ofb->GetNumberOfSamples() == 0)

@@ -123,7 +123,7 @@ stem = os.path.join(args.output_dir,
                     os.path.splitext(os.path.basename(args.mesh))[0] + "_painted")
 probe = vtkofb.vtkOFBProbeFilter()
 probe.SetInputData(mesh)
-probe.SetSourceData(ofb)
+probe.SetOFBData(ofb)
 ply = vtkPLYWriter()
 ply.SetInputConnection(probe.GetOutputPort())
 ply.SetFileName(stem + ".ply")
@@ -137,7 +137,7 @@ if mesh.GetPointData().GetTCoords() is None:
     # No texture coordinates: an atlas of charts on the OFB's grids gives some.
     atlas = vtkofb.vtkOFBTextureAtlas()
     atlas.SetInputData(mesh)
-    atlas.SetSourceData(ofb)
+    atlas.SetOFBData(ofb)
     atlas.SetMaximumTextureSize(args.texture)
     atlas.Update()
     if atlas.GetAtlasSize()[0] == 0:
@@ -149,7 +149,7 @@ if mesh.GetPointData().GetTCoords() is None:
           f"{atlas.GetEffectiveTexelsPerCell():g} texel a cell")
 baker = vtkofb.vtkOFBTextureBaker()
 baker.SetInputData(textured)
-baker.SetSourceData(ofb)
+baker.SetOFBData(ofb)
 baker.SetTextureSize(*texture_size)
 rgb = vtkImageExtractComponents()  # the paint is opaque: an RGB texture (an alpha channel
 rgb.SetInputConnection(baker.GetOutputPort())  # makes viewers draw the mesh as translucent)

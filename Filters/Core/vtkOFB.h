@@ -31,12 +31,12 @@
 #define vtkOFB_h
 
 #include "vtkDataObject.h"
-#include "vtkFloatArray.h"       // for inline access
-#include "vtkOFBCoreModule.h" // for export macro
-#include "vtkPointData.h"        // for inline access
-#include "vtkSmartPointer.h"     // for members
-#include "vtkTypeUInt32Array.h"  // for inline access
-#include "vtkWrappingHints.h"    // for VTK_SIZEHINT
+#include "vtkFloatArray.h"      // for inline access
+#include "vtkOFBCoreModule.h"   // for export macro
+#include "vtkPointData.h"       // for inline access
+#include "vtkSmartPointer.h"    // for members
+#include "vtkTypeUInt32Array.h" // for inline access
+#include "vtkWrappingHints.h"   // for VTK_SIZEHINT
 
 #include "vtkTimeStamp.h"   // for StructureTime
 #include "vtkWeakPointer.h" // for the recycled structure
@@ -239,6 +239,22 @@ public:
   {
     return this->SampleData;
   }
+
+  ///@{
+  /**
+   * Names of the sample arrays that the filters share: "Colors", the paint (RGBA
+   * unsigned char), and "Normals", the sample normals (3 floats). The sampler writes
+   * them, the painter and the filters read and write them, the mapper draws them.
+   */
+  static const char* ColorsArrayName()
+  {
+    return "Colors";
+  }
+  static const char* NormalsArrayName()
+  {
+    return "Normals";
+  }
+  ///@}
 
   /**
    * Grid (0, 1, 2) of a sample, or -1 for an invalid id.

@@ -34,7 +34,13 @@ vtkOFB* vtkOFBAlgorithm::GetOutput(int port)
 //------------------------------------------------------------------------------
 void vtkOFBAlgorithm::SetInputData(vtkDataObject* input)
 {
-  this->SetInputDataInternal(0, input);
+  this->SetInputData(0, input);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBAlgorithm::SetInputData(int port, vtkDataObject* input)
+{
+  this->SetInputDataInternal(port, input);
 }
 
 //------------------------------------------------------------------------------

@@ -32,10 +32,15 @@ public:
   vtkOFB* GetOutput(int port);
   ///@}
 
+  ///@{
   /**
-   * Connect a data object directly as the input of port 0.
+   * Connect a data object directly as the input of port 0 (or of `port`), as
+   * vtkPolyDataAlgorithm::SetInputData. Both overloads are declared here so that a
+   * subclass (and Python) keeps the one taking a port.
    */
   void SetInputData(vtkDataObject* input);
+  void SetInputData(int port, vtkDataObject* input);
+  ///@}
 
   /**
    * Dispatch the pipeline passes.

@@ -49,7 +49,7 @@ vtkOFBSamplerBackend::Result vtkOFBCPUSampler::Sample(Job& job)
 {
   if (!vtkOFBCPUSampler::CheckIdRange(job) || !this->SetUpFrame(job))
   {
-    return Failed;
+    return RESULT_FAILED;
   }
   vtkOFBRasterFrame frame;
   for (int a = 0; a < 3; ++a)
@@ -66,7 +66,7 @@ vtkOFBSamplerBackend::Result vtkOFBCPUSampler::Sample(Job& job)
   BandBuilder builder(*job.Surface, frame, *this->Buffers);
   if (!this->SetUpTriangles(builder, job))
   {
-    return Failed;
+    return RESULT_FAILED;
   }
   vtkOFBCPUSampler::SpanBands(builder);
   if (job.Algorithm)
@@ -74,20 +74,20 @@ vtkOFBSamplerBackend::Result vtkOFBCPUSampler::Sample(Job& job)
     job.Algorithm->UpdateProgress(0.3);
     if (job.Algorithm->GetAbortExecute())
     {
-      return Failed;
+      return RESULT_FAILED;
     }
   }
   vtkIdType samples = 0;
   if (!this->AllocateSamples(builder, job, samples))
   {
-    return Failed;
+    return RESULT_FAILED;
   }
   this->FillBands(builder, job, samples);
   if (job.Algorithm)
   {
     job.Algorithm->UpdateProgress(0.85);
   }
-  return Built;
+  return RESULT_BUILT;
 }
 
 //------------------------------------------------------------------------------

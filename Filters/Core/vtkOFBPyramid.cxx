@@ -28,7 +28,7 @@ namespace
 /// ids[0 .. count) where ids is given, else all.
 void NormalizeSampleNormals(vtkOFB* ofb, const vtkIdType* ids = nullptr, vtkIdType count = 0)
 {
-  vtkDataArray* normals = ofb->GetSampleData()->GetArray("Normals");
+  vtkDataArray* normals = ofb->GetSampleData()->GetArray(vtkOFB::NormalsArrayName());
   if (!normals || normals->GetNumberOfComponents() != 3)
   {
     return;
@@ -81,7 +81,7 @@ bool ResampleArrays(vtkOFB* source,
   transfer.CollectArrays(names);
   vtkSMPTools::For(0, target->GetNumberOfSamples(), transfer);
   transfer.ReplaceTargetArrays();
-  if (!names || names->count("Normals"))
+  if (!names || names->count(vtkOFB::NormalsArrayName()))
   {
     NormalizeSampleNormals(target);
   }

@@ -20,7 +20,8 @@
 /// The 3-component sample normals of `pd` (the active ones, else "Normals"), or null.
 inline vtkDataArray* vtkOFBSampleNormals(vtkPointData* pd)
 {
-  vtkDataArray* normals = pd->GetNormals() ? pd->GetNormals() : pd->GetArray("Normals");
+  vtkDataArray* normals =
+    pd->GetNormals() ? pd->GetNormals() : pd->GetArray(vtkOFB::NormalsArrayName());
   return normals && normals->GetNumberOfComponents() == 3 ? normals : nullptr;
 }
 

@@ -30,9 +30,10 @@ struct vtkOFBSampleArrays
 
   vtkOFBSampleArrays(const vtkOFBSurface& surface, vtkIdType n, vtkOFB* ofb)
   {
-    this->Colors =
-      vtkUnsignedCharArray::SafeDownCast(NewArray(ofb, "Colors", VTK_UNSIGNED_CHAR, nullptr, 4, n));
-    this->Normals = vtkFloatArray::SafeDownCast(NewArray(ofb, "Normals", VTK_FLOAT, nullptr, 3, n));
+    this->Colors = vtkUnsignedCharArray::SafeDownCast(
+      NewArray(ofb, vtkOFB::ColorsArrayName(), VTK_UNSIGNED_CHAR, nullptr, 4, n));
+    this->Normals = vtkFloatArray::SafeDownCast(
+      NewArray(ofb, vtkOFB::NormalsArrayName(), VTK_FLOAT, nullptr, 3, n));
     if (surface.Vectors)
     {
       this->Vectors = vtkFloatArray::SafeDownCast(

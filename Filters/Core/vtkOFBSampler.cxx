@@ -357,8 +357,8 @@ void CollectOtherArrays(vtkPointData* pd,
     vtkDataArray* array = pd->GetArray(i);
     if (!array || std::find(used.begin(), used.end(), array) != used.end() ||
       array->GetDataType() == VTK_BIT || array->GetNumberOfTuples() != nPoints ||
-      !array->GetName() || !std::strcmp(array->GetName(), "Colors") ||
-      !std::strcmp(array->GetName(), "Normals") ||
+      !array->GetName() || !std::strcmp(array->GetName(), vtkOFB::ColorsArrayName()) ||
+      !std::strcmp(array->GetName(), vtkOFB::NormalsArrayName()) ||
       (surface.Vectors && !std::strcmp(array->GetName(), surface.Vectors->GetName())))
     {
       continue;
@@ -432,7 +432,7 @@ int vtkOFBSampler::RequestData(vtkInformation*,
     return 1;
   }
   this->UpdateProgress(0.05);
-  if (this->RunBackend(backend, job) != vtkOFBSamplerBackend::Built)
+  if (this->RunBackend(backend, job) != vtkOFBSamplerBackend::RESULT_BUILT)
   {
     return 1;
   }
@@ -446,7 +446,7 @@ vtkOFBSamplerBackend::Result vtkOFBSampler::RunBackend(vtkOFBSamplerBackend* bac
   vtkOFBSamplerBackend::Job& job)
 {
   vtkOFBSamplerBackend::Result result = backend->Sample(job);
-  if (result == vtkOFBSamplerBackend::Unavailable && backend != this->CPUBackend)
+  if (result == vtkOFBSamplerBackend::RESULT_UNAVAILABLE && backend != this->CPUBackend)
   {
     vtkWarningMacro("The " << backend->GetBackendName() << " build failed (" << job.Error
                            << "); building on the CPU instead.");
@@ -455,7 +455,7 @@ vtkOFBSamplerBackend::Result vtkOFBSampler::RunBackend(vtkOFBSamplerBackend* bac
     this->LastBuildBackend = this->CPUBackend;
     result = this->CPUBackend->Sample(job);
   }
-  if (result != vtkOFBSamplerBackend::Built)
+  if (result != vtkOFBSamplerBackend::RESULT_BUILT)
   {
     if (!job.Error.empty())
     {
@@ -697,9 +697,9 @@ vtkDataArray* vtkOFBSampler::SelectColors(vtkPolyData* input, vtkOFBSurface& sur
     {
       colors = pd->GetScalars();
     }
-    else if (IsColorArray(pd->GetArray("Colors")))
+    else if (IsColorArray(pd->GetArray(vtkOFB::ColorsArrayName())))
     {
-      colors = pd->GetArray("Colors");
+      colors = pd->GetArray(vtkOFB::ColorsArrayName());
     }
   }
   if (colors && colors->GetNumberOfTuples() != input->GetNumberOfPoints())

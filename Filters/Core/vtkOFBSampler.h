@@ -43,7 +43,7 @@
 #define vtkOFBSampler_h
 
 #include "vtkOFBAlgorithm.h"
-#include "vtkOFBCoreModule.h"  // for export macro
+#include "vtkOFBCoreModule.h"     // for export macro
 #include "vtkOFBSamplerBackend.h" // for Job, Result
 #include "vtkSmartPointer.h"      // for CPUBackend
 #include "vtkWeakPointer.h"       // for LastBuildBackend
@@ -125,7 +125,7 @@ public:
   vtkGetMacro(NumberOfSkippedTriangles, vtkIdType);
 
   /**
-   * Wall-clock time of the last build, in milliseconds.
+   * Wall-clock time of the last build (ms).
    */
   vtkGetMacro(LastBuildTime, double);
 
@@ -215,7 +215,7 @@ private:
 
   /**
    * Run `backend` on `job`; the CPU backend instead, with a warning, when it is
-   * unavailable. Errors are reported; the output is empty unless Built.
+   * unavailable. Errors are reported; the output is empty unless RESULT_BUILT.
    */
   vtkOFBSamplerBackend::Result RunBackend(vtkOFBSamplerBackend* backend,
     vtkOFBSamplerBackend::Job& job);

@@ -61,9 +61,9 @@ public:
 
   enum Result
   {
-    Built = 0,      ///< the output holds the OFB
-    Failed = 1,     ///< bad input or a limit: the output must stay empty
-    Unavailable = 2 ///< the backend cannot build this one: build it with another
+    RESULT_BUILT = 0,      ///< the output holds the OFB
+    RESULT_FAILED = 1,     ///< bad input or a limit: the output must stay empty
+    RESULT_UNAVAILABLE = 2 ///< the backend cannot build this one: build it with another
   };
 
   /**

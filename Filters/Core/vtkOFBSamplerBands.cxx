@@ -1,6 +1,6 @@
 // The CPU backend's band builder (vtkOFBSamplerBands.h): the bands cut, the
 // triangles set up and listed by band, and pass 1 (the spans of a band's rows);
-// vtkOFBSamplerFill.cxx has pass 2.
+// vtkOFBSamplerBandsFill.cxx has pass 2.
 
 #include "vtkOFBSamplerBands.h"
 

@@ -19,7 +19,7 @@
  * output does not depend on it.
  *
  * vtkOFBSamplerBands.cxx sets up the triangles, lists them by band, finds their
- * spans (pass 1); vtkOFBSamplerFill.cxx fills a band (pass 2); vtkOFBCPUSampler runs
+ * spans (pass 1); vtkOFBSamplerBandsFill.cxx fills a band (pass 2); vtkOFBCPUSampler runs
  * the build.
  */
 

@@ -244,7 +244,7 @@ bool vtkOFBMapToColors::FindArrays(vtkOFB* input, vtkDataArray*& source, vtkData
   intensity = nullptr;
   if (settings->GetColorSource() == vtkOFBColoring::COLOR_SOURCE_PAINT)
   {
-    source = vtkUnsignedCharArray::SafeDownCast(pd->GetAbstractArray("Colors"));
+    source = vtkUnsignedCharArray::SafeDownCast(pd->GetAbstractArray(vtkOFB::ColorsArrayName()));
     if (!source || source->GetNumberOfComponents() != 4 || source->GetNumberOfTuples() != n)
     {
       vtkErrorMacro("ColorSource Paint: the OFB has no \"Colors\" array of RGBA bytes, one a "

@@ -32,19 +32,19 @@ vtkOFBProbeFilter::vtkOFBProbeFilter()
 vtkOFBProbeFilter::~vtkOFBProbeFilter() = default;
 
 //------------------------------------------------------------------------------
-void vtkOFBProbeFilter::SetSourceConnection(vtkAlgorithmOutput* output)
+void vtkOFBProbeFilter::SetOFBConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBProbeFilter::SetSourceData(vtkOFB* ofb)
+void vtkOFBProbeFilter::SetOFBData(vtkOFB* ofb)
 {
   this->SetInputDataInternal(1, ofb);
 }
 
 //------------------------------------------------------------------------------
-vtkOFB* vtkOFBProbeFilter::GetSource()
+vtkOFB* vtkOFBProbeFilter::GetOFB()
 {
   return this->GetNumberOfInputConnections(1) > 0
     ? vtkOFB::SafeDownCast(this->GetExecutive()->GetInputData(1, 0))
@@ -101,7 +101,7 @@ int vtkOFBProbeFilter::RequestData(vtkInformation*,
   }
   if (!ofb || ofb->GetNumberOfSamples() == 0)
   {
-    vtkErrorMacro("No OFB to probe, or an empty one: connect one to port 1 (SetSourceConnection).");
+    vtkErrorMacro("No OFB to probe, or an empty one: connect one to port 1 (SetOFBConnection).");
     return 1;
   }
   if (!(this->Radius > 0.0) || !std::isfinite(this->Radius))
@@ -142,7 +142,7 @@ int vtkOFBProbeFilter::RequestData(vtkInformation*,
   }
 
   vtkOFBPyramidResampler transfer(ofb, x.data(), n, this->Radius * ofb->GetCellSize());
-  transfer.Nearest = this->LookupMode == Nearest;
+  transfer.Nearest = this->LookupMode == LOOKUP_NEAREST;
   transfer.CollectArrays(names.empty() ? nullptr : &names);
   transfer.SetTargetNormals(normals.empty() ? nullptr : normals.data());
   auto mask = vtkSmartPointer<vtkUnsignedCharArray>::New();
@@ -183,7 +183,8 @@ int vtkOFBProbeFilter::RequestData(vtkInformation*,
 void vtkOFBProbeFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "LookupMode: " << (this->LookupMode == Nearest ? "Nearest" : "Smooth") << "\n";
+  os << indent << "LookupMode: " << (this->LookupMode == LOOKUP_NEAREST ? "Nearest" : "Smooth")
+     << "\n";
   os << indent << "Radius: " << this->Radius << " cells\n";
   os << indent << "NormalAware: " << (this->NormalAware ? "On" : "Off") << "\n";
   os << indent << "PassPointArrays: " << (this->PassPointArrays ? "On" : "Off") << "\n";

@@ -3,7 +3,7 @@
  * @brief   Transfer the sample arrays of a vtkOFB to the points of a surface
  *
  * vtkOFBProbeFilter gives every point of its input vtkPolyData (port 0) the values of
- * the sample arrays of a vtkOFB (port 1, `SetSourceConnection` / `SetSourceData`, as
+ * the sample arrays of a vtkOFB (port 1, `SetOFBConnection` / `SetOFBData`, as
  * vtkProbeFilter's source): the paint ("Colors", RGBA bytes), the LIC, painted normals,
  * any array. The output is the input surface with these arrays as point data, so a
  * painting or a LIC can be saved in any format that keeps point arrays (PLY with
@@ -11,8 +11,8 @@
  * installed. Detail finer than the surface's edges is lost: the values are those at
  * the points (use vtkOFBTextureBaker to keep it in a texture).
  *
- * Two lookups: `Nearest` (default), the value of the closest sample within
- * `Radius`, as vtkOFBPolyDataMapper's Nearest mode; and `Smooth`, the mean of the
+ * Two lookups: `LOOKUP_NEAREST` (default), the value of the closest sample within
+ * `Radius`, as vtkOFBPolyDataMapper's Nearest mode; and `LOOKUP_SMOOTH`, the mean of the
  * samples within `Radius` weighted by (1 - d^2/r^2)^2, as vtkOFBPyramid filters its
  * levels (integer arrays rounded). A point with no sample within `Radius` takes the
  * closest within twice `Radius`; a point with none there gets zeros and a 0 in the
@@ -57,26 +57,26 @@ public:
   /**
    * The OFB to probe (input port 1).
    */
-  void SetSourceConnection(vtkAlgorithmOutput* output);
-  void SetSourceData(vtkOFB* ofb);
-  vtkOFB* GetSource();
+  void SetOFBConnection(vtkAlgorithmOutput* output);
+  void SetOFBData(vtkOFB* ofb);
+  vtkOFB* GetOFB();
   ///@}
 
   enum LookupModes
   {
-    Nearest = 0,
-    Smooth = 1
+    LOOKUP_NEAREST = 0,
+    LOOKUP_SMOOTH = 1
   };
 
   ///@{
   /**
-   * How a point's values are found: the closest sample (`Nearest`, default) or the
-   * weighted mean of the samples within Radius (`Smooth`).
+   * How a point's values are found: the closest sample (`LOOKUP_NEAREST`, default) or the
+   * weighted mean of the samples within Radius (`LOOKUP_SMOOTH`).
    */
-  vtkSetClampMacro(LookupMode, int, Nearest, Smooth);
+  vtkSetClampMacro(LookupMode, int, LOOKUP_NEAREST, LOOKUP_SMOOTH);
   vtkGetMacro(LookupMode, int);
-  void SetLookupModeToNearest() { this->SetLookupMode(Nearest); }
-  void SetLookupModeToSmooth() { this->SetLookupMode(Smooth); }
+  void SetLookupModeToNearest() { this->SetLookupMode(LOOKUP_NEAREST); }
+  void SetLookupModeToSmooth() { this->SetLookupMode(LOOKUP_SMOOTH); }
   ///@}
 
   ///@{
@@ -138,7 +138,7 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int LookupMode = Nearest;
+  int LookupMode = LOOKUP_NEAREST;
   double Radius;
   bool NormalAware = true;
   bool PassPointArrays = true;

@@ -78,13 +78,13 @@ vtkOFBTextureAtlas::vtkOFBTextureAtlas()
 vtkOFBTextureAtlas::~vtkOFBTextureAtlas() = default;
 
 //------------------------------------------------------------------------------
-void vtkOFBTextureAtlas::SetSourceConnection(vtkAlgorithmOutput* output)
+void vtkOFBTextureAtlas::SetOFBConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBTextureAtlas::SetSourceData(vtkOFB* ofb)
+void vtkOFBTextureAtlas::SetOFBData(vtkOFB* ofb)
 {
   this->SetInputData(1, ofb);
 }
@@ -167,7 +167,7 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
   this->NumberOfCharts = 0;
   if (!ofb || ofb->GetNumberOfSamples() == 0 || !(ofb->GetCellSize() > 0.0))
   {
-    vtkErrorMacro("No OFB, or an empty one (SetSourceData or SetSourceConnection).");
+    vtkErrorMacro("No OFB, or an empty one (SetOFBData or SetOFBConnection).");
     return 1;
   }
   vtkCellArray* polys = input ? input->GetPolys() : nullptr;

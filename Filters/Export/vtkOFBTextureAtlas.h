@@ -71,8 +71,8 @@ public:
   /**
    * The OFB whose cell size sets the density (input port 1).
    */
-  void SetSourceConnection(vtkAlgorithmOutput* output);
-  void SetSourceData(vtkOFB* ofb);
+  void SetOFBConnection(vtkAlgorithmOutput* output);
+  void SetOFBData(vtkOFB* ofb);
   ///@}
 
   enum LayoutType

@@ -200,13 +200,13 @@ vtkOFBTextureBaker::vtkOFBTextureBaker()
 vtkOFBTextureBaker::~vtkOFBTextureBaker() = default;
 
 //------------------------------------------------------------------------------
-void vtkOFBTextureBaker::SetSourceConnection(vtkAlgorithmOutput* output)
+void vtkOFBTextureBaker::SetOFBConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBTextureBaker::SetSourceData(vtkOFB* ofb)
+void vtkOFBTextureBaker::SetOFBData(vtkOFB* ofb)
 {
   this->SetInputDataInternal(1, ofb);
 }
@@ -216,7 +216,7 @@ vtkDataArray* vtkOFBTextureBaker::FindSourceArray(vtkOFB* ofb) const
 {
   vtkPointData* spd = ofb->GetSampleData();
   vtkDataArray* source = this->ArrayName.empty()
-    ? (spd->GetScalars() ? spd->GetScalars() : spd->GetArray("Colors"))
+    ? (spd->GetScalars() ? spd->GetScalars() : spd->GetArray(vtkOFB::ColorsArrayName()))
     : spd->GetArray(this->ArrayName.c_str());
   return source && source->GetName() && source->GetNumberOfTuples() == ofb->GetNumberOfSamples()
     ? source
@@ -237,7 +237,7 @@ int vtkOFBTextureBaker::RequestInformation(vtkInformation*,
 {
   vtkInformation* info = outputVector->GetInformationObject(0);
   // The scalars' type and components, for downstream imaging filters: those of the
-  // array in the OFB where it is there already (SetSourceData, an updated pipeline),
+  // array in the OFB where it is there already (SetOFBData, an updated pipeline),
   // else what the default array, the paint, has (RGBA bytes), or one float.
   vtkOFB* ofb = vtkOFB::GetData(inputVector[1]);
   vtkDataArray* source = ofb ? this->FindSourceArray(ofb) : nullptr;
@@ -246,7 +246,7 @@ int vtkOFBTextureBaker::RequestInformation(vtkInformation*,
     vtkDataObject::SetPointDataActiveScalarInfo(
       info, source->GetDataType(), source->GetNumberOfComponents());
   }
-  else if (this->ArrayName.empty() || this->ArrayName == "Colors")
+  else if (this->ArrayName.empty() || this->ArrayName == vtkOFB::ColorsArrayName())
   {
     vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_UNSIGNED_CHAR, 4);
   }
@@ -280,7 +280,7 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
   vtkDataArray* tcoords = mesh ? mesh->GetPointData()->GetTCoords() : nullptr;
   if (!mesh || !ofb || ofb->GetNumberOfSamples() == 0)
   {
-    vtkErrorMacro("No mesh, or no OFB to bake or an empty one (SetSourceConnection).");
+    vtkErrorMacro("No mesh, or no OFB to bake or an empty one (SetOFBConnection).");
     return 1;
   }
   if (!tcoords || tcoords->GetNumberOfComponents() < 2 ||
@@ -303,7 +303,8 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
   if (!source)
   {
     vtkErrorMacro("The OFB has no sample array '"
-      << (this->ArrayName.empty() ? "Colors" : this->ArrayName) << "' to bake.");
+      << (this->ArrayName.empty() ? vtkOFB::ColorsArrayName() : this->ArrayName.c_str())
+      << "' to bake.");
     return 1;
   }
   if (mesh->GetNumberOfStrips() > 0 || mesh->GetNumberOfLines() > 0)

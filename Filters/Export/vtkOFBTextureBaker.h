@@ -10,7 +10,7 @@
  * Input port 0: the mesh (vtkPolyData with 2-component texture coordinates, the active
  * TCoords, one pair a point; polygons are split into fans, strips and lines are
  * ignored with a warning: apply vtkTriangleFilter first). Input port 1: the OFB
- * (`SetSourceConnection` / `SetSourceData`). Output: a vtkImageData of `TextureSize`
+ * (`SetOFBConnection` / `SetOFBData`). Output: a vtkImageData of `TextureSize`
  * texels (origin 0, spacing 1; texel (i, j) is texture coordinate ((i + 0.5) / W,
  * (j + 0.5) / H), row 0 at v = 0, as vtkTexture and vtkPNGWriter take it) with the
  * baked array (same name, type and components as the OFB's, the active scalars) and
@@ -58,8 +58,8 @@ public:
   /**
    * The OFB to bake (input port 1).
    */
-  void SetSourceConnection(vtkAlgorithmOutput* output);
-  void SetSourceData(vtkOFB* ofb);
+  void SetOFBConnection(vtkAlgorithmOutput* output);
+  void SetOFBData(vtkOFB* ofb);
   ///@}
 
   ///@{
@@ -80,8 +80,8 @@ public:
 
   ///@{
   /**
-   * The lookup (vtkOFBProbeFilter::Nearest, default, or vtkOFBProbeFilter::Smooth) and
-   * its radius in cells of the OFB (default sqrt(3)).
+   * The lookup (vtkOFBProbeFilter::LOOKUP_NEAREST, default, or vtkOFBProbeFilter::LOOKUP_SMOOTH)
+   * and its radius in cells of the OFB (default sqrt(3)).
    */
   vtkSetClampMacro(LookupMode, int, 0, 1);
   vtkGetMacro(LookupMode, int);

@@ -508,7 +508,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   vtkDataArray* normalsIn = input->GetSampleData()->GetNormals();
   if (!normalsIn)
   {
-    normalsIn = input->GetSampleData()->GetArray("Normals");
+    normalsIn = input->GetSampleData()->GetArray(vtkOFB::NormalsArrayName());
   }
   if (!vectors)
   {

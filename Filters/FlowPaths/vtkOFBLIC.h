@@ -334,7 +334,7 @@ public:
   vtkGetMacro(NumberOfMaskedSamples, vtkIdType);
 
   /**
-   * Wall-clock time of the last update, in milliseconds.
+   * Wall-clock time of the last update (ms).
    */
   vtkGetMacro(LastExecutionTime, double);
 

@@ -23,9 +23,9 @@ vtkStandardNewMacro(vtkOFBParticleAdvector);
 namespace
 {
 using Clock = std::chrono::steady_clock;
-double Seconds(Clock::duration d)
+double Milliseconds(Clock::duration d)
 {
-  return std::chrono::duration<double>(d).count();
+  return std::chrono::duration<double, std::milli>(d).count();
 }
 }
 
@@ -128,12 +128,17 @@ void vtkOFBParticleAdvector::SetInputData(vtkDataObject* surface)
   this->SetInputDataInternal(0, surface);
 }
 
-void vtkOFBParticleAdvector::SetOFBInputData(vtkOFB* ofb)
+void vtkOFBParticleAdvector::SetInputData(int port, vtkDataObject* input)
+{
+  this->SetInputDataInternal(port, input);
+}
+
+void vtkOFBParticleAdvector::SetOFBData(vtkOFB* ofb)
 {
   this->SetInputDataInternal(1, ofb);
 }
 
-void vtkOFBParticleAdvector::SetOFBInputConnection(vtkAlgorithmOutput* output)
+void vtkOFBParticleAdvector::SetOFBConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);
 }
@@ -152,6 +157,11 @@ void vtkOFBParticleAdvector::SetSourceConnection(vtkAlgorithmOutput* output)
 vtkOFB* vtkOFBParticleAdvector::GetOutput()
 {
   return vtkOFB::SafeDownCast(this->GetOutputDataObject(0));
+}
+
+vtkDataObject* vtkOFBParticleAdvector::GetOutput(int port)
+{
+  return this->GetOutputDataObject(port);
 }
 
 vtkPolyData* vtkOFBParticleAdvector::GetParticles()
@@ -406,12 +416,12 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
     const auto start = Clock::now();
     system.Advance(in.Coloring, count);
     const auto moved = Clock::now();
-    in.AdvectionTime += Seconds(moved - start);
+    in.AdvectionTime += Milliseconds(moved - start);
     step += count;
     if (painting || step == target)
     {
       this->PaintFootprints();
-      in.PaintingTime += Seconds(Clock::now() - moved);
+      in.PaintingTime += Milliseconds(Clock::now() - moved);
     }
     if (target - first > 1)
     {
@@ -426,7 +436,7 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   }
   this->FillParticles(outParticles);
   this->FillTrails(outTrails);
-  in.OutputTime = Seconds(Clock::now() - outputStart);
+  in.OutputTime = Milliseconds(Clock::now() - outputStart);
   const double time = static_cast<double>(system.CurrentStep);
   for (int i = 0; i < 3; ++i)
   {
@@ -474,7 +484,7 @@ void vtkOFBParticleAdvector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TrailLength: " << this->TrailLength << "\n";
   os << indent << "MemoryLimit: " << this->MemoryLimit << " MiB\n";
   os << indent << "CurrentStep: " << this->GetCurrentStep() << "\n";
-  os << indent << "LastAdvectionTime: " << this->GetLastAdvectionTime() << " s\n";
-  os << indent << "LastPaintingTime: " << this->GetLastPaintingTime() << " s\n";
-  os << indent << "LastOutputTime: " << this->GetLastOutputTime() << " s\n";
+  os << indent << "LastAdvectionTime: " << this->GetLastAdvectionTime() << " ms\n";
+  os << indent << "LastPaintingTime: " << this->GetLastPaintingTime() << " ms\n";
+  os << indent << "LastOutputTime: " << this->GetLastOutputTime() << " ms\n";
 }

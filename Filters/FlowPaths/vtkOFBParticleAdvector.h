@@ -137,11 +137,13 @@ public:
   ///@{
   /**
    * Inputs: the surface (port 0), the OFB to paint (port 1, optional), the seeds
-   * (port 2, optional).
+   * (port 2, optional). SetInputData(port, data) sets any of them, as
+   * vtkPolyDataAlgorithm::SetInputData does.
    */
   void SetInputData(vtkDataObject* surface);
-  void SetOFBInputData(vtkOFB* ofb);
-  void SetOFBInputConnection(vtkAlgorithmOutput* output);
+  void SetInputData(int port, vtkDataObject* input);
+  void SetOFBData(vtkOFB* ofb);
+  void SetOFBConnection(vtkAlgorithmOutput* output);
   void SetSourceData(vtkPolyData* seeds);
   void SetSourceConnection(vtkAlgorithmOutput* output);
   void SetSeeds(vtkPolyData* seeds) { this->SetSourceData(seeds); }
@@ -159,8 +161,10 @@ public:
   ///@{
   /**
    * Outputs: the painted OFB (port 0), the particles (port 1), the trails (port 2).
+   * GetOutput(port) returns any of them, as vtkPolyDataAlgorithm::GetOutput does.
    */
   vtkOFB* GetOutput();
+  vtkDataObject* GetOutput(int port);
   vtkPolyData* GetParticles();
   vtkPolyData* GetTrails();
   ///@}
@@ -396,9 +400,10 @@ public:
 
   ///@{
   /**
-   * Wall-clock seconds the last update spent moving the particles, painting
+   * Wall-clock time (ms) the last update spent moving the particles, painting
    * their footprints (filling the footprint arrays and the painter's Dabs call)
-   * and building the three outputs. For benchmarks and profiling.
+   * and building the three outputs, as vtkOFBSampler::GetLastBuildTime and
+   * vtkOFBLIC::GetLastExecutionTime. For benchmarks and profiling.
    */
   double GetLastAdvectionTime() const;
   double GetLastPaintingTime() const;

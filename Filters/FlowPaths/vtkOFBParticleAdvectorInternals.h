@@ -108,7 +108,7 @@ public:
   double LastCellSize = 0.0;
   bool TargetChanged = false;
   vtkOFBParticleSystem::Coloring Coloring;
-  // Wall-clock seconds of the last update's parts.
+  // Wall-clock milliseconds of the last update's parts.
   double AdvectionTime = 0.0;
   double PaintingTime = 0.0;
   double OutputTime = 0.0;

@@ -181,7 +181,7 @@ void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
   vtkIdType count = 0;
   for (const auto& p : system.Particles)
   {
-    count += p.Status != vtkOFBParticleSystem::Waiting ? 1 : 0;
+    count += p.Status != vtkOFBParticleSystem::WAITING ? 1 : 0;
   }
   double* x = PointsOf(arrays.Points, count);
   double* velocity = ValuesOf(arrays.Velocity.Get(), count);
@@ -198,7 +198,7 @@ void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
   for (vtkIdType i = 0; i < n; ++i)
   {
     slots[i] = k;
-    k += system.Particles[i].Status != vtkOFBParticleSystem::Waiting ? 1 : 0;
+    k += system.Particles[i].Status != vtkOFBParticleSystem::WAITING ? 1 : 0;
   }
   const double opacity = this->Brush->GetStrength();
   vtkSMPTools::For(0,
@@ -208,7 +208,7 @@ void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
       for (vtkIdType i = begin; i < end; ++i)
       {
         const auto& p = system.Particles[i];
-        if (p.Status == vtkOFBParticleSystem::Waiting)
+        if (p.Status == vtkOFBParticleSystem::WAITING)
         {
           continue;
         }
@@ -259,7 +259,7 @@ void vtkOFBParticleAdvector::FillTrails(vtkPolyData* output)
     const int count = system.TrailCount[i];
     slots[2 * i] = numLines;
     slots[2 * i + 1] = numPoints;
-    if (system.Particles[i].Status != vtkOFBParticleSystem::Waiting && count >= 2)
+    if (system.Particles[i].Status != vtkOFBParticleSystem::WAITING && count >= 2)
     {
       ++numLines;
       numPoints += count;
@@ -275,7 +275,7 @@ void vtkOFBParticleAdvector::FillTrails(vtkPolyData* output)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        if (system.Particles[i].Status == vtkOFBParticleSystem::Waiting || system.TrailCount[i] < 2)
+        if (system.Particles[i].Status == vtkOFBParticleSystem::WAITING || system.TrailCount[i] < 2)
         {
           continue;
         }

@@ -9,10 +9,10 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::Final(vtkOFBSurfacePoint& p
 {
   if (this->Walker->WalkInside(p, d))
   {
-    return Moved;
+    return MOVED;
   }
   const auto walk = this->Walker->Walk(p, d, nullptr);
-  return walk == vtkOFBTriangleWalker::Boundary ? StoppedAtBoundary : Moved;
+  return walk == vtkOFBTriangleWalker::WALK_BOUNDARY ? STOPPED_AT_BOUNDARY : MOVED;
 }
 
 //------------------------------------------------------------------------------
@@ -22,12 +22,12 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::Advance(vtkOFBSurfacePoint&
   glm::dvec2 k1;
   if (!this->Slope(p, k1))
   {
-    return StoppedAtZero;
+    return STOPPED_AT_ZERO;
   }
   const double h = this->Length;
   switch (this->Integrator)
   {
-    case Euler:
+    case EULER:
       return this->Final(p, h * k1);
     case RK2:
     {
@@ -276,7 +276,7 @@ void vtkOFBParticleStepper::BatchFinal(Batch& b,
     walks.Set(walks.Count, p, b.D[0][j], b.D[1][j]);
     walks.Count += b.Leaves[j] != 0.0;
     p.Bary = glm::dvec3(moved[0][j], moved[1][j], moved[2][j]);
-    results[j] = b.Moving[j] != 0.0 ? Moved : StoppedAtZero;
+    results[j] = b.Moving[j] != 0.0 ? MOVED : STOPPED_AT_ZERO;
     // The caller reads the corners of where it ended next.
     this->Walker->PrefetchCorners(p.Triangle);
   }
@@ -286,7 +286,8 @@ void vtkOFBParticleStepper::BatchFinal(Batch& b,
   {
     const int j = lane[w];
     walks.Get(w, *points[j]);
-    results[j] = walks.Result[w] == vtkOFBTriangleWalker::Boundary ? StoppedAtBoundary : Moved;
+    results[j] =
+      walks.Result[w] == vtkOFBTriangleWalker::WALK_BOUNDARY ? STOPPED_AT_BOUNDARY : MOVED;
     this->Walker->PrefetchCorners(points[j]->Triangle);
   }
 }
@@ -375,7 +376,7 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::AdvanceRK45(vtkOFBSurfacePo
     glm::dvec2 k1;
     if (!this->Slope(p, k1))
     {
-      return StoppedAtZero;
+      return STOPPED_AT_ZERO;
     }
     double error = 0.0;
     const glm::dvec2 d = this->CashKarp(p, k1, length, error);
@@ -385,9 +386,9 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::AdvanceRK45(vtkOFBSurfacePo
       h = std::max(minimum, length * std::max(0.1, shrink));
       continue;
     }
-    if (this->Final(p, d) == StoppedAtBoundary)
+    if (this->Final(p, d) == STOPPED_AT_BOUNDARY)
     {
-      return StoppedAtBoundary;
+      return STOPPED_AT_BOUNDARY;
     }
     left = last ? 0.0 : left - length;
     const double grow = error > 0.0 ? 0.9 * std::pow(this->Tolerance / error, 0.2) : 5.0;
@@ -397,5 +398,5 @@ vtkOFBParticleStepper::Result vtkOFBParticleStepper::AdvanceRK45(vtkOFBSurfacePo
     }
     subStep = h;
   }
-  return Moved;
+  return MOVED;
 }

@@ -27,7 +27,7 @@ class vtkOFBParticleStepper
 public:
   enum Method
   {
-    Euler = 0,
+    EULER = 0,
     RK2 = 1,
     RK4 = 2,
     RK45 = 3
@@ -36,9 +36,9 @@ public:
   /// How a step ended.
   enum Result
   {
-    Moved = 0,
-    StoppedAtBoundary = 1,
-    StoppedAtZero = 2
+    MOVED = 0,
+    STOPPED_AT_BOUNDARY = 1,
+    STOPPED_AT_ZERO = 2
   };
 
   const vtkOFBTriangleWalker* Walker = nullptr;

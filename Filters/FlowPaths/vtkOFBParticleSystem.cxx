@@ -70,7 +70,7 @@ void vtkOFBParticleSystem::Start()
     Particle& p = this->Particles[i];
     p.Seed = i / chain;
     p.Chain = static_cast<int>(i % chain);
-    p.Status = Waiting;
+    p.Status = WAITING;
     std::copy_n(&this->SeedColors[4 * p.Seed], 4, p.Color);
     if (p.Chain == 0)
     {
@@ -111,7 +111,7 @@ void vtkOFBParticleSystem::Release(vtkIdType i, Particle& p)
   p.Previous = p.Position;
   p.Age = 0;
   p.SubStep = 0.0;
-  p.Status = Moving;
+  p.Status = MOVING;
   this->TrailCount[i] = 0;
   this->TrailHead[i] = 0;
   this->PushTrail(i, p.Position);
@@ -131,7 +131,7 @@ void vtkOFBParticleSystem::Reseed(vtkIdType i, Particle& p)
     p.Previous = p.Position;
     p.Age = 0;
     p.SubStep = 0.0;
-    p.Status = Moving;
+    p.Status = MOVING;
     this->TrailCount[i] = 0;
     this->TrailHead[i] = 0;
     this->PushTrail(i, p.Position);
@@ -228,7 +228,7 @@ void vtkOFBParticleSystem::AdvanceBatch(vtkIdType begin,
   for (vtkIdType i = begin; i < end; ++i)
   {
     // Where the stages of the step may go: fetched for all the batch at once.
-    if (this->Particles[i].Status == Moving)
+    if (this->Particles[i].Status == MOVING)
     {
       this->Walker->PrefetchNeighbors(this->Particles[i].Point.Triangle);
     }
@@ -237,7 +237,7 @@ void vtkOFBParticleSystem::AdvanceBatch(vtkIdType begin,
   {
     Particle& p = this->Particles[i];
     p.Painted = false;
-    if (p.Status == Waiting)
+    if (p.Status == WAITING)
     {
       // Released at its seed when the step count reaches its release step.
       if (step + 1 >= static_cast<vtkIdType>(p.Chain) * this->Setup.ChainSpacing)
@@ -247,12 +247,12 @@ void vtkOFBParticleSystem::AdvanceBatch(vtkIdType begin,
       }
       continue;
     }
-    if (lifetime > 0 && (p.Age >= lifetime || p.Status == Stopped))
+    if (lifetime > 0 && (p.Age >= lifetime || p.Status == STOPPED))
     {
       this->Reseed(i, p);
     }
     ++p.Age;
-    if (p.Status == Moving)
+    if (p.Status == MOVING)
     {
       p.Previous = p.Position;
       points[n] = &p.Point;
@@ -267,10 +267,10 @@ void vtkOFBParticleSystem::AdvanceBatch(vtkIdType begin,
     const vtkIdType i = moving[j];
     Particle& p = this->Particles[i];
     p.Position = this->Walker->Position(p.Point);
-    p.Painted = results[j] != vtkOFBParticleStepper::StoppedAtZero;
-    if (results[j] != vtkOFBParticleStepper::Moved)
+    p.Painted = results[j] != vtkOFBParticleStepper::STOPPED_AT_ZERO;
+    if (results[j] != vtkOFBParticleStepper::MOVED)
     {
-      p.Status = Stopped;
+      p.Status = STOPPED;
     }
     if (p.Painted)
     {
@@ -280,7 +280,7 @@ void vtkOFBParticleSystem::AdvanceBatch(vtkIdType begin,
   for (vtkIdType i = begin; i < end; ++i)
   {
     Particle& p = this->Particles[i];
-    if (p.Status != Waiting)
+    if (p.Status != WAITING)
     {
       this->ColorParticle(coloring, step + 1, p);
     }

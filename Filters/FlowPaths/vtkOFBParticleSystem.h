@@ -24,9 +24,9 @@ class vtkOFBParticleSystem
 public:
   enum State : unsigned char
   {
-    Waiting = 0, ///< a chain member not released yet
-    Moving = 1,
-    Stopped = 2
+    WAITING = 0, ///< a chain member not released yet
+    MOVING = 1,
+    STOPPED = 2
   };
 
   struct Particle
@@ -39,7 +39,7 @@ public:
     int Age = 0;
     int Generation = 0;
     int Chain = 0;
-    State Status = Waiting;
+    State Status = WAITING;
     bool Painted = false; ///< moved during the last step: paints a footprint
     float Color[4] = { 1.f, 1.f, 1.f, 1.f };
   };

@@ -21,7 +21,7 @@
 vtkStandardNewMacro(vtkOFBDecalPatch);
 
 /// The walker and the locator of the last input surface.
-struct vtkOFBDecalPatch::Surface
+struct vtkOFBDecalPatch::vtkInternals
 {
   vtkOFBTriangleWalker Walker;
   vtkSmartPointer<vtkStaticCellLocator> Locator;
@@ -70,7 +70,7 @@ void Trace(const vtkOFBTriangleWalker& walker,
       const glm::dvec2 carried = frame * node.Direction;
       node.Direction = carried / glm::length(carried);
       done = s;
-      stopped = result != vtkOFBTriangleWalker::Inside;
+      stopped = result != vtkOFBTriangleWalker::WALK_INSIDE;
     }
     out.push_back(node);
   }
@@ -113,7 +113,7 @@ std::vector<Node> Line(const vtkOFBTriangleWalker& walker,
 
 //------------------------------------------------------------------------------
 vtkOFBDecalPatch::vtkOFBDecalPatch()
-  : Cache(new Surface)
+  : Internals(new vtkInternals)
 {
 }
 
@@ -177,7 +177,7 @@ int vtkOFBDecalPatch::RequestData(vtkInformation*,
   {
     return 1;
   }
-  Surface& cache = *this->Cache;
+  vtkInternals& cache = *this->Internals;
   if (cache.Input != input || cache.Time != input->GetMTime() || !cache.Locator)
   {
     cache.Input = nullptr;

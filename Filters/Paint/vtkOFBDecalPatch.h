@@ -98,8 +98,8 @@ private:
   vtkOFBDecalPatch(const vtkOFBDecalPatch&) = delete;
   void operator=(const vtkOFBDecalPatch&) = delete;
 
-  struct Surface;
-  std::unique_ptr<Surface> Cache; // the walker and locator of the last surface
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals; // the walker and locator of the last surface
 };
 
 #endif

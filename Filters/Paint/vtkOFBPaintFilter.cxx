@@ -354,8 +354,9 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
 
   // A painted copy: the painted array deep, the rest shared.
   output->ShallowCopy(input);
-  const char* painted =
-    this->Brush->GetTarget() == vtkOFBBrush::TARGET_NORMAL ? "Normals" : "Colors";
+  const char* painted = this->Brush->GetTarget() == vtkOFBBrush::TARGET_NORMAL
+    ? vtkOFB::NormalsArrayName()
+    : vtkOFB::ColorsArrayName();
   vtkPointData* inPd = input->GetSampleData();
   if (vtkDataArray* array = inPd->GetArray(painted))
   {

@@ -40,7 +40,7 @@ bool Finite3(const double p[3])
 
 //------------------------------------------------------------------------------
 vtkOFBPainter::vtkOFBPainter()
-  : Impl(new Internals)
+  : Internals(new vtkInternals)
   , Spacing(0.25)
   , UndoLimit(vtkIdType(256) << 20)
   , MirrorX(false)
@@ -51,9 +51,9 @@ vtkOFBPainter::vtkOFBPainter()
   this->MirrorOrigin[0] = this->MirrorOrigin[1] = this->MirrorOrigin[2] = 0.0;
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 1.0;
   this->DefaultColor[3] = 1.0;
-  this->Impl->Brush = vtkSmartPointer<vtkOFBBrush>::New();
-  this->Impl->StrokeDabs = vtkSmartPointer<vtkPoints>::New();
-  this->Impl->StrokeDabs->SetDataTypeToDouble();
+  this->Internals->Brush = vtkSmartPointer<vtkOFBBrush>::New();
+  this->Internals->StrokeDabs = vtkSmartPointer<vtkPoints>::New();
+  this->Internals->StrokeDabs->SetDataTypeToDouble();
 }
 
 //------------------------------------------------------------------------------
@@ -62,7 +62,7 @@ vtkOFBPainter::~vtkOFBPainter() = default;
 //------------------------------------------------------------------------------
 void vtkOFBPainter::SetOFB(vtkOFB* ofb)
 {
-  if (this->Impl->OFB == ofb)
+  if (this->Internals->OFB == ofb)
   {
     return;
   }
@@ -70,27 +70,27 @@ void vtkOFBPainter::SetOFB(vtkOFB* ofb)
   {
     this->EndStroke();
   }
-  this->Impl->OFB = ofb;
-  this->Impl->Ready = false;
-  this->Impl->UndoSteps.clear();
-  this->Impl->RedoSteps.clear();
-  this->Impl->Open.Clear();
-  this->Impl->Kernel.Reset(nullptr, nullptr, nullptr);
+  this->Internals->OFB = ofb;
+  this->Internals->Ready = false;
+  this->Internals->UndoSteps.clear();
+  this->Internals->RedoSteps.clear();
+  this->Internals->Open.Clear();
+  this->Internals->Kernel.Reset(nullptr, nullptr, nullptr);
   this->Modified();
 }
 
 //------------------------------------------------------------------------------
 vtkOFB* vtkOFBPainter::GetOFB() const
 {
-  return this->Impl->OFB;
+  return this->Internals->OFB;
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBPainter::SetBrush(vtkOFBBrush* brush)
 {
-  if (this->Impl->Brush != brush)
+  if (this->Internals->Brush != brush)
   {
-    this->Impl->Brush = brush;
+    this->Internals->Brush = brush;
     this->Modified();
   }
 }
@@ -98,20 +98,20 @@ void vtkOFBPainter::SetBrush(vtkOFBBrush* brush)
 //------------------------------------------------------------------------------
 vtkOFBBrush* vtkOFBPainter::GetBrush() const
 {
-  return this->Impl->Brush;
+  return this->Internals->Brush;
 }
 
 //------------------------------------------------------------------------------
 vtkPoints* vtkOFBPainter::GetStrokeDabs() const
 {
-  return this->Impl->StrokeDabs;
+  return this->Internals->StrokeDabs;
 }
 
 //------------------------------------------------------------------------------
 bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
 {
-  Internals& impl = *this->Impl;
-  vtkOFB* ofb = impl.OFB;
+  vtkInternals& internals = *this->Internals;
+  vtkOFB* ofb = internals.OFB;
   if (!ofb)
   {
     vtkErrorMacro("No OFB to paint: call SetOFB first.");
@@ -124,7 +124,7 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
     return false;
   }
   vtkPointData* pd = ofb->GetSampleData();
-  vtkDataArray* colorArray = pd->GetArray("Colors");
+  vtkDataArray* colorArray = pd->GetArray(vtkOFB::ColorsArrayName());
   auto* colors = vtkUnsignedCharArray::SafeDownCast(colorArray);
   if (colorArray &&
     (!colors || colors->GetNumberOfComponents() != 4 || colors->GetNumberOfTuples() != n))
@@ -133,7 +133,7 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
                   "sample: cannot paint it.");
     return false;
   }
-  vtkDataArray* normalArray = pd->GetArray("Normals");
+  vtkDataArray* normalArray = pd->GetArray(vtkOFB::NormalsArrayName());
   auto* normals = vtkFloatArray::SafeDownCast(normalArray);
   if (normals && (normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != n))
   {
@@ -148,25 +148,26 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
 
   // Something else changed the OFB since this painter's last change: the
   // history no longer describes it.
-  if (impl.Ready)
+  if (internals.Ready)
   {
-    const bool rebuilt = ofb->GetStructureMTime() != impl.LastStructureTime ||
-      n != impl.LastNumberOfSamples || (impl.LastColors && colors != impl.LastColors) ||
-      (impl.LastNormals && normals != impl.LastNormals);
-    if (rebuilt || ofb->GetMTime() != impl.LastMTime)
+    const bool rebuilt = ofb->GetStructureMTime() != internals.LastStructureTime ||
+      n != internals.LastNumberOfSamples ||
+      (internals.LastColors && colors != internals.LastColors) ||
+      (internals.LastNormals && normals != internals.LastNormals);
+    if (rebuilt || ofb->GetMTime() != internals.LastMTime)
     {
-      if (!impl.UndoSteps.empty() || !impl.RedoSteps.empty() || !impl.Open.Empty())
+      if (!internals.UndoSteps.empty() || !internals.RedoSteps.empty() || !internals.Open.Empty())
       {
         vtkWarningMacro("The OFB was changed by something other than this painter since its "
                         "last change: its undo history is dropped.");
       }
-      impl.Kernel.ClearRecorded(impl.Open.Colors, impl.Open.Normals);
-      impl.UndoSteps.clear();
-      impl.RedoSteps.clear();
-      impl.Open.Clear();
+      internals.Kernel.ClearRecorded(internals.Open.Colors, internals.Open.Normals);
+      internals.UndoSteps.clear();
+      internals.RedoSteps.clear();
+      internals.Open.Clear();
       if (rebuilt)
       {
-        impl.Ready = false;
+        internals.Ready = false;
       }
     }
   }
@@ -175,7 +176,7 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
   {
     // Created on demand, filled with DefaultColor.
     auto created = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    created->SetName("Colors");
+    created->SetName(vtkOFB::ColorsArrayName());
     created->SetNumberOfComponents(4);
     created->SetNumberOfTuples(n);
     vtkofb::AdviseHugePages(created); // dabs land far apart: fewer TLB misses
@@ -194,47 +195,47 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
     colors = created;
   }
 
-  if (!impl.Ready)
+  if (!internals.Ready)
   {
-    impl.Kernel.Reset(ofb, colors, normals);
-    impl.Ready = true;
+    internals.Kernel.Reset(ofb, colors, normals);
+    internals.Ready = true;
   }
   else
   {
-    impl.Kernel.SetArrays(colors, normals);
+    internals.Kernel.SetArrays(colors, normals);
   }
-  impl.LastColors = colors;
-  impl.LastNormals = normals;
-  impl.LastStructureTime = ofb->GetStructureMTime();
-  impl.LastNumberOfSamples = n;
+  internals.LastColors = colors;
+  internals.LastNormals = normals;
+  internals.LastStructureTime = ofb->GetStructureMTime();
+  internals.LastNumberOfSamples = n;
   return true;
 }
 
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::Finish()
 {
-  Internals& impl = *this->Impl;
+  vtkInternals& internals = *this->Internals;
   // A large dab changes hundreds of short runs (rows of cells, interrupted by
   // samples at other depths). vtkOFB keeps its newest 192 marks exact: runs are
   // joined across the smallest gaps first until at most 128 remain, so that one
   // call's marks stay exact and the mapper re-sends few extra samples.
-  const vtkIdType count = impl.Kernel.CollectChanged(impl.Ranges, 128);
-  for (const auto& r : impl.Ranges)
+  const vtkIdType count = internals.Kernel.CollectChanged(internals.Ranges, 128);
+  for (const auto& r : internals.Ranges)
   {
-    impl.OFB->MarkSamplesModified(r.first, r.second);
+    internals.OFB->MarkSamplesModified(r.first, r.second);
   }
   if (count > 0)
   {
-    impl.OFB->Modified();
+    internals.OFB->Modified();
   }
-  impl.LastMTime = impl.OFB->GetMTime();
+  internals.LastMTime = internals.OFB->GetMTime();
   return count;
 }
 
 //------------------------------------------------------------------------------
 bool vtkOFBPainter::MakeDab(const double center[3], double pressure, vtkOFBDab& dab)
 {
-  vtkOFBBrush* brush = this->Impl->Brush;
+  vtkOFBBrush* brush = this->Internals->Brush;
   if (!Finite3(center))
   {
     vtkErrorMacro("A dab centre is not finite (NaN or infinite): nothing painted.");
@@ -262,7 +263,7 @@ bool vtkOFBPainter::MakeDab(const double center[3], double pressure, vtkOFBDab& 
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
 {
-  vtkOFBBrush* brush = this->Impl->Brush;
+  vtkOFBBrush* brush = this->Internals->Brush;
   if (!brush)
   {
     vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
@@ -332,7 +333,7 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
       settings.CustomTable[i] = brush->EvaluateFalloff(i / double(CustomTableSize - 1));
     }
   }
-  if (settings.NormalAware && !this->Impl->LastNormals)
+  if (settings.NormalAware && !this->Internals->LastNormals)
   {
     vtkWarningMacro("NormalAware needs a \"Normals\" sample array; painting without it.");
   }
@@ -343,8 +344,8 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
     reported = true;
     this->InvokeEvent(vtkCommand::ProgressEvent, &p);
   };
-  this->Impl->Kernel.Paint(
-    dabs, settings, this->Impl->Open.Colors, this->Impl->Open.Normals, progress);
+  this->Internals->Kernel.Paint(
+    dabs, settings, this->Internals->Open.Colors, this->Internals->Open.Normals, progress);
   if (reported)
   {
     double done = 1.0;
@@ -434,12 +435,12 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
     return 0;
   }
   const double colorScale = color && color->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
-  if (!this->Impl->Brush)
+  if (!this->Internals->Brush)
   {
     vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
     return 0;
   }
-  const bool strengthByPressure = this->Impl->Brush->GetPressureAffectsStrength();
+  const bool strengthByPressure = this->Internals->Brush->GetPressureAffectsStrength();
 
   const vtkIdType n = input->GetNumberOfPoints();
   std::vector<vtkOFBDab> dabs(n);
@@ -455,7 +456,7 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
     }
     if (radius)
     {
-      const bool byPressure = this->Impl->Brush->GetPressureAffectsRadius();
+      const bool byPressure = this->Internals->Brush->GetPressureAffectsRadius();
       const double prc = std::min(1.0, std::max(0.0, pr));
       d.Radius = radius->GetComponent(i, 0) * (byPressure ? prc : 1.0);
     }
@@ -496,10 +497,10 @@ void vtkOFBPainter::BeginStroke()
     this->EndStroke();
   }
   this->InStroke = true;
-  this->Impl->HasLastPoint = false;
-  this->Impl->HasLastDab = false;
-  this->Impl->Sampler.Start(0.0);
-  this->Impl->StrokeDabs->Initialize();
+  this->Internals->HasLastPoint = false;
+  this->Internals->HasLastDab = false;
+  this->Internals->Sampler.Start(0.0);
+  this->Internals->StrokeDabs->Initialize();
 }
 
 //------------------------------------------------------------------------------
@@ -510,7 +511,7 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
     vtkErrorMacro("A stroke point is not finite (NaN or infinite): ignored.");
     return 0;
   }
-  if (!this->Impl->Brush)
+  if (!this->Internals->Brush)
   {
     vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
     return 0;
@@ -519,48 +520,48 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
   {
     this->BeginStroke();
   }
-  Internals& impl = *this->Impl;
+  vtkInternals& internals = *this->Internals;
   pressure = std::min(1.0, std::max(0.0, std::isfinite(pressure) ? pressure : 1.0));
   std::vector<vtkOFBDab> dabs;
   auto place = [&](const double c[3], double pr)
   {
     vtkOFBDab d;
     this->MakeDab(c, pr, d);
-    d.HasPrevious = impl.HasLastDab;
-    std::copy(impl.LastDab, impl.LastDab + 3, d.Previous);
+    d.HasPrevious = internals.HasLastDab;
+    std::copy(internals.LastDab, internals.LastDab + 3, d.Previous);
     dabs.push_back(d);
-    std::copy(c, c + 3, impl.LastDab);
-    impl.HasLastDab = true;
-    impl.StrokeDabs->InsertNextPoint(c);
+    std::copy(c, c + 3, internals.LastDab);
+    internals.HasLastDab = true;
+    internals.StrokeDabs->InsertNextPoint(c);
   };
-  vtkOFBBrush* brush = impl.Brush;
+  vtkOFBBrush* brush = internals.Brush;
   auto radiusAt = [brush](double pr)
   { return brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pr : 1.0); };
-  if (!impl.HasLastPoint)
+  if (!internals.HasLastPoint)
   {
     place(p, pressure);
-    impl.Sampler.Start(radiusAt(pressure));
+    internals.Sampler.Start(radiusAt(pressure));
   }
   else
   {
-    const glm::dvec3 a(impl.LastPoint[0], impl.LastPoint[1], impl.LastPoint[2]);
+    const glm::dvec3 a(internals.LastPoint[0], internals.LastPoint[1], internals.LastPoint[2]);
     const glm::dvec3 b(p[0], p[1], p[2]);
     const double length = glm::length(b - a);
-    const double cellSize = impl.OFB ? impl.OFB->GetCellSize() : 0.0;
-    const double smallest = radiusAt(std::min(pressure, impl.LastPressure));
+    const double cellSize = internals.OFB ? internals.OFB->GetCellSize() : 0.0;
+    const double smallest = radiusAt(std::min(pressure, internals.LastPressure));
     if (vtkOFBStrokeSampler::MostDabs(length, this->Spacing, smallest, cellSize) >
       vtkOFBMaximumStrokeDabs)
     {
       vtkErrorMacro("StrokeTo: this segment ("
         << length << " long) would place more than " << vtkOFBMaximumStrokeDabs << " dabs (radius "
         << brush->GetRadius() << ", Spacing " << this->Spacing << "): nothing painted.");
-      std::copy(p, p + 3, impl.LastPoint);
-      impl.LastPressure = pressure;
-      impl.Sampler.Start(radiusAt(pressure));
+      std::copy(p, p + 3, internals.LastPoint);
+      internals.LastPressure = pressure;
+      internals.Sampler.Start(radiusAt(pressure));
       return 0;
     }
-    const double startPressure = impl.LastPressure;
-    impl.Sampler.Walk(length,
+    const double startPressure = internals.LastPressure;
+    internals.Sampler.Walk(length,
       this->Spacing,
       cellSize,
       [&](double t)
@@ -572,9 +573,9 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
         return radiusAt(pr);
       });
   }
-  std::copy(p, p + 3, impl.LastPoint);
-  impl.LastPressure = pressure;
-  impl.HasLastPoint = true;
+  std::copy(p, p + 3, internals.LastPoint);
+  internals.LastPressure = pressure;
+  internals.HasLastPoint = true;
   return dabs.empty() ? 0 : this->Paint(dabs);
 }
 
@@ -599,12 +600,12 @@ void vtkOFBPainter::EndStroke()
 //------------------------------------------------------------------------------
 void vtkOFBPainter::CloseStep()
 {
-  Internals& impl = *this->Impl;
-  if (impl.Open.Empty())
+  vtkInternals& internals = *this->Internals;
+  if (internals.Open.Empty())
   {
     return;
   }
-  impl.Kernel.ClearRecorded(impl.Open.Colors, impl.Open.Normals);
+  internals.Kernel.ClearRecorded(internals.Open.Colors, internals.Open.Normals);
   // A step records each sample once, so the order of its records does not matter to
   // Restore(). Spare capacity beyond a quarter is given back.
   auto trim = [](auto& v)
@@ -614,28 +615,28 @@ void vtkOFBPainter::CloseStep()
       v.shrink_to_fit();
     }
   };
-  trim(impl.Open.Colors);
-  trim(impl.Open.Normals);
-  impl.UndoSteps.push_back(std::move(impl.Open));
-  impl.Open = vtkofbpainter::Step();
-  impl.RedoSteps.clear();
+  trim(internals.Open.Colors);
+  trim(internals.Open.Normals);
+  internals.UndoSteps.push_back(std::move(internals.Open));
+  internals.Open = vtkofbpainter::Step();
+  internals.RedoSteps.clear();
   this->EnforceUndoLimit();
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBPainter::EnforceUndoLimit()
 {
-  Internals& impl = *this->Impl;
-  vtkIdType bytes = impl.HistoryBytes();
-  while (bytes > this->UndoLimit && !impl.RedoSteps.empty())
+  vtkInternals& internals = *this->Internals;
+  vtkIdType bytes = internals.HistoryBytes();
+  while (bytes > this->UndoLimit && !internals.RedoSteps.empty())
   {
-    bytes -= impl.RedoSteps.back().Bytes(); // the step furthest from now
-    impl.RedoSteps.pop_back();
+    bytes -= internals.RedoSteps.back().Bytes(); // the step furthest from now
+    internals.RedoSteps.pop_back();
   }
-  while (bytes > this->UndoLimit && !impl.UndoSteps.empty())
+  while (bytes > this->UndoLimit && !internals.UndoSteps.empty())
   {
-    bytes -= impl.UndoSteps.front().Bytes(); // the oldest step
-    impl.UndoSteps.pop_front();
+    bytes -= internals.UndoSteps.front().Bytes(); // the oldest step
+    internals.UndoSteps.pop_front();
   }
 }
 
@@ -646,10 +647,10 @@ vtkIdType vtkOFBPainter::Restore(bool undo)
   {
     this->EndStroke();
   }
-  Internals& impl = *this->Impl;
-  std::deque<vtkofbpainter::Step>& from = undo ? impl.UndoSteps : impl.RedoSteps;
-  std::deque<vtkofbpainter::Step>& to = undo ? impl.RedoSteps : impl.UndoSteps;
-  if (from.empty() || !impl.OFB)
+  vtkInternals& internals = *this->Internals;
+  std::deque<vtkofbpainter::Step>& from = undo ? internals.UndoSteps : internals.RedoSteps;
+  std::deque<vtkofbpainter::Step>& to = undo ? internals.RedoSteps : internals.UndoSteps;
+  if (from.empty() || !internals.OFB)
   {
     return 0;
   }
@@ -663,7 +664,7 @@ vtkIdType vtkOFBPainter::Restore(bool undo)
   // Swap each recorded value with the current one: the step becomes its inverse.
   if (!step.Colors.empty())
   {
-    unsigned char* colors = impl.LastColors->GetPointer(0);
+    unsigned char* colors = internals.LastColors->GetPointer(0);
     for (auto& r : step.Colors)
     {
       unsigned char* c = colors + 4 * static_cast<vtkIdType>(r.Id);
@@ -671,12 +672,12 @@ vtkIdType vtkOFBPainter::Restore(bool undo)
       {
         std::swap(c[k], r.Value[k]);
       }
-      impl.Kernel.MarkChanged(r.Id);
+      internals.Kernel.MarkChanged(r.Id);
     }
   }
-  if (!step.Normals.empty() && impl.LastNormals)
+  if (!step.Normals.empty() && internals.LastNormals)
   {
-    float* normals = impl.LastNormals->GetPointer(0);
+    float* normals = internals.LastNormals->GetPointer(0);
     for (auto& r : step.Normals)
     {
       float* n = normals + 3 * static_cast<vtkIdType>(r.Id);
@@ -684,7 +685,7 @@ vtkIdType vtkOFBPainter::Restore(bool undo)
       {
         std::swap(n[k], r.Value[k]);
       }
-      impl.Kernel.MarkChanged(r.Id);
+      internals.Kernel.MarkChanged(r.Id);
     }
   }
   to.push_back(std::move(step));
@@ -706,64 +707,65 @@ vtkIdType vtkOFBPainter::Redo()
 //------------------------------------------------------------------------------
 bool vtkOFBPainter::CanUndo() const
 {
-  return !this->Impl->UndoSteps.empty() || !this->Impl->Open.Empty();
+  return !this->Internals->UndoSteps.empty() || !this->Internals->Open.Empty();
 }
 
 //------------------------------------------------------------------------------
 bool vtkOFBPainter::CanRedo() const
 {
-  return !this->Impl->RedoSteps.empty();
+  return !this->Internals->RedoSteps.empty();
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBPainter::ClearHistory()
 {
-  Internals& impl = *this->Impl;
-  if (impl.Ready)
+  vtkInternals& internals = *this->Internals;
+  if (internals.Ready)
   {
-    impl.Kernel.ClearRecorded(impl.Open.Colors, impl.Open.Normals);
+    internals.Kernel.ClearRecorded(internals.Open.Colors, internals.Open.Normals);
   }
-  impl.Open.Clear();
-  impl.UndoSteps.clear();
-  impl.RedoSteps.clear();
+  internals.Open.Clear();
+  internals.UndoSteps.clear();
+  internals.RedoSteps.clear();
 }
 
 //------------------------------------------------------------------------------
 int vtkOFBPainter::GetNumberOfUndoSteps() const
 {
-  return static_cast<int>(this->Impl->UndoSteps.size()) + (this->Impl->Open.Empty() ? 0 : 1);
+  return static_cast<int>(this->Internals->UndoSteps.size()) +
+    (this->Internals->Open.Empty() ? 0 : 1);
 }
 
 //------------------------------------------------------------------------------
 int vtkOFBPainter::GetNumberOfRedoSteps() const
 {
-  return static_cast<int>(this->Impl->RedoSteps.size());
+  return static_cast<int>(this->Internals->RedoSteps.size());
 }
 
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::GetUndoMemory() const
 {
-  return this->Impl->HistoryBytes();
+  return this->Internals->HistoryBytes();
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBPainter::ResetInitialValues()
 {
-  this->Impl->Kernel.ResetInitialValues();
+  this->Internals->Kernel.ResetInitialValues();
 }
 
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::GetScratchMemory() const
 {
-  return this->Impl->Kernel.GetMemory();
+  return this->Internals->Kernel.GetMemory();
 }
 
 //------------------------------------------------------------------------------
 void vtkOFBPainter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "OFB: " << this->Impl->OFB.GetPointer() << "\n";
-  os << indent << "Brush: " << this->Impl->Brush.GetPointer() << "\n";
+  os << indent << "OFB: " << this->Internals->OFB.GetPointer() << "\n";
+  os << indent << "Brush: " << this->Internals->Brush.GetPointer() << "\n";
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "DefaultColor: (" << this->DefaultColor[0] << ", " << this->DefaultColor[1]
      << ", " << this->DefaultColor[2] << ", " << this->DefaultColor[3] << ")\n";

@@ -280,8 +280,8 @@ protected:
   /// Undo (true) or redo (false) one step.
   vtkIdType Restore(bool undo);
 
-  struct Internals;
-  std::unique_ptr<Internals> Impl;
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
 
   double Spacing;
   double DefaultColor[4];

@@ -18,8 +18,8 @@ vtkIdType vtkOFBPainter::SetSampleColors(vtkIdTypeArray* ids, vtkUnsignedCharArr
   {
     return 0;
   }
-  Internals& impl = *this->Impl;
-  const vtkIdType n = impl.OFB->GetNumberOfSamples();
+  vtkInternals& internals = *this->Internals;
+  const vtkIdType n = internals.OFB->GetNumberOfSamples();
   const vtkIdType count = ids->GetNumberOfTuples();
   const vtkIdType* id = ids->GetPointer(0);
   for (vtkIdType k = 0; k < count; ++k)
@@ -35,7 +35,8 @@ vtkIdType vtkOFBPainter::SetSampleColors(vtkIdTypeArray* ids, vtkUnsignedCharArr
   {
     this->ClearHistory(); // no previous values kept (as Paint does)
   }
-  impl.Kernel.SetColors(id, colors->GetPointer(0), count, this->UndoLimit > 0, impl.Open.Colors);
+  internals.Kernel.SetColors(
+    id, colors->GetPointer(0), count, this->UndoLimit > 0, internals.Open.Colors);
   const vtkIdType changed = this->Finish();
   if (!this->InStroke)
   {

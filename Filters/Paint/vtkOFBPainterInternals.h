@@ -39,7 +39,7 @@ struct Step
 };
 }
 
-struct vtkOFBPainter::Internals
+struct vtkOFBPainter::vtkInternals
 {
   vtkSmartPointer<vtkOFB> OFB;
   vtkSmartPointer<vtkOFBBrush> Brush;

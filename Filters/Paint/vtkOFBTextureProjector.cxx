@@ -355,7 +355,8 @@ int vtkOFBTextureProjector::RequestData(vtkInformation*,
   vtkDataArray* tcoords = mesh ? mesh->GetPointData()->GetTCoords() : nullptr;
   auto* texels =
     image ? vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars()) : nullptr;
-  vtkDataArray* colors = input ? input->GetSampleData()->GetArray("Colors") : nullptr;
+  vtkDataArray* colors =
+    input ? input->GetSampleData()->GetArray(vtkOFB::ColorsArrayName()) : nullptr;
   if (!input || input->GetNumberOfSamples() == 0)
   {
     vtkErrorMacro("The input OFB is missing or has no samples: empty output.");
@@ -397,7 +398,7 @@ int vtkOFBTextureProjector::RequestData(vtkInformation*,
   output->ShallowCopy(input);
   const vtkIdType n = input->GetNumberOfSamples();
   auto out = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  out->SetName("Colors");
+  out->SetName(vtkOFB::ColorsArrayName());
   out->SetNumberOfComponents(4);
   out->SetNumberOfTuples(n);
   if (colors)
@@ -409,7 +410,7 @@ int vtkOFBTextureProjector::RequestData(vtkInformation*,
     out->Fill(255);
   }
   vtkPointData* pd = output->GetSampleData();
-  pd->RemoveArray("Colors");
+  pd->RemoveArray(vtkOFB::ColorsArrayName());
   pd->AddArray(out);
   if (!colors || input->GetSampleData()->GetScalars() == colors)
   {

@@ -288,7 +288,7 @@ inline bool vtkOFBTriangleWalker::CrossLane(vtkOFBWalkLanes& w, int j, bool with
       const double x = b[i] + db[i];
       w.Bary[i][j] = x < 0.0 ? 0.0 : x;
     }
-    w.Result[j] = Inside;
+    w.Result[j] = WALK_INSIDE;
     return true;
   }
   // On the edge: the barycentric of its opposite corner is 0, the other two sum
@@ -305,7 +305,7 @@ inline bool vtkOFBTriangleWalker::CrossLane(vtkOFBWalkLanes& w, int j, bool with
     {
       w.Bary[i][j] = b[i];
     }
-    w.Result[j] = Boundary;
+    w.Result[j] = WALK_BOUNDARY;
     return true;
   }
   // Into the neighbour, with the rest of d and the frame turned about the edge.
@@ -355,7 +355,7 @@ void vtkOFBTriangleWalker::Walk(vtkOFBWalkLanes& w, bool withFrame) const
   }
   for (int k = 0; k < count; ++k)
   {
-    w.Result[active[k]] = Stuck;
+    w.Result[active[k]] = WALK_STUCK;
   }
 }
 

@@ -147,9 +147,9 @@ public:
   /// How a walk ended.
   enum WalkResult
   {
-    Inside = 0,   ///< the whole displacement was travelled
-    Boundary = 1, ///< stopped on a boundary edge
-    Stuck = 2     ///< too many edge crossings for one displacement (stopped where it was)
+    WALK_INSIDE = 0,   ///< the whole displacement was travelled
+    WALK_BOUNDARY = 1, ///< stopped on a boundary edge
+    WALK_STUCK = 2     ///< too many edge crossings for one displacement (stopped where it was)
   };
 
   /**

@@ -122,8 +122,8 @@ int main(int argc, char* argv[])
       builder->SetResolution(resolution);
       builder->SetRenderWindow(window);
       vtkIdType cpuSamples = 0, glSamples = 0;
-      const double cpu = Time(builder, vtkOFBBuilder::CPU, reps, cpuSamples);
-      const double ogl = Time(builder, vtkOFBBuilder::OpenGL, reps, glSamples);
+      const double cpu = Time(builder, vtkOFBBuilder::BACKEND_CPU, reps, cpuSamples);
+      const double ogl = Time(builder, vtkOFBBuilder::BACKEND_OPENGL, reps, glSamples);
       if (ogl < 0.0)
       {
         std::printf(

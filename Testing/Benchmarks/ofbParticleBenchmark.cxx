@@ -314,9 +314,9 @@ PaintResult Paint(vtkPolyData* horse, int threads, int rounds)
     advector->Step();
     timer->StopTimer();
     step.push_back(1e3 * timer->GetElapsedTime());
-    advection.push_back(1e3 * advector->GetLastAdvectionTime());
-    painting.push_back(1e3 * advector->GetLastPaintingTime());
-    outputs.push_back(1e3 * advector->GetLastOutputTime());
+    advection.push_back(advector->GetLastAdvectionTime());
+    painting.push_back(advector->GetLastPaintingTime());
+    outputs.push_back(advector->GetLastOutputTime());
     rest.push_back(step.back() - advection.back() - painting.back() - outputs.back());
   }
   // The floor: touching as many random cache lines as the footprints do.

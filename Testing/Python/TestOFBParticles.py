@@ -37,7 +37,7 @@ class ParticleAdvectorTest(unittest.TestCase):
         sampler.SetResolution(128)
         advector = vtkofb.vtkOFBParticleAdvector()
         advector.SetInputData(sphere)
-        advector.SetOFBInputConnection(sampler.GetOutputPort())
+        advector.SetOFBConnection(sampler.GetOutputPort())
         advector.SetNumberOfParticles(50)
         advector.SetStepsPerUpdate(10)
         advector.Step()

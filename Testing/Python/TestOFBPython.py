@@ -90,8 +90,8 @@ class SpherePipeline(unittest.TestCase):
     def test_build_succeeds_on_the_cpu(self):
         self.assertEqual(self.events.errors, 0)
         self.assertEqual(self.events.warnings, 0)
-        self.assertEqual(self.builder.GetLastBackend(), vtkofb.vtkOFBBuilder.CPU)
-        self.assertEqual(vtkofb.vtkOFBBuilder.GetBackendAsString(vtkofb.vtkOFBBuilder.CPU), "CPU")
+        self.assertEqual(self.builder.GetLastBackend(), vtkofb.vtkOFBBuilder.BACKEND_CPU)
+        self.assertEqual(vtkofb.vtkOFBBuilder.GetBackendAsString(vtkofb.vtkOFBBuilder.BACKEND_CPU), "CPU")
         self.assertIsInstance(self.ofb, vtkofb.vtkOFB)
         self.assertGreater(self.builder.GetLastBuildTime(), 0.0)
 
@@ -247,8 +247,8 @@ class Classes(unittest.TestCase):
     def test_defaults(self):
         builder = vtkofb.vtkOFBBuilder()
         self.assertEqual(builder.GetResolution(), 1024)
-        self.assertEqual(builder.GetBackend(), vtkofb.vtkOFBBuilder.Auto)
-        self.assertEqual(builder.GetLastBackend(), vtkofb.vtkOFBBuilder.Auto)
+        self.assertEqual(builder.GetBackend(), vtkofb.vtkOFBBuilder.BACKEND_AUTO)
+        self.assertEqual(builder.GetLastBackend(), vtkofb.vtkOFBBuilder.BACKEND_AUTO)
         empty = vtkofb.vtkOFB()
         self.assertEqual(empty.GetNumberOfSamples(), 0)
         self.assertEqual(empty.GetCellSize(), 0.0)
@@ -338,15 +338,15 @@ class BadInput(unittest.TestCase):
         display = os.environ.pop("DISPLAY", None)
         try:
             gl, gl_events, cloud = self.build(source, resolution=48,
-                                              backend=vtkofb.vtkOFBBuilder.OpenGL)
+                                              backend=vtkofb.vtkOFBBuilder.BACKEND_OPENGL)
         finally:
             if display is not None:
                 os.environ["DISPLAY"] = display
-        self.assertEqual(gl.GetBackend(), vtkofb.vtkOFBBuilder.OpenGL)
+        self.assertEqual(gl.GetBackend(), vtkofb.vtkOFBBuilder.BACKEND_OPENGL)
         self.assertGreater(gl_events.warnings, 0)
         self.assertEqual(gl_events.errors, 0)
         self.assertEqual(cpu_events.warnings, 0)
-        self.assertEqual(gl.GetLastBackend(), vtkofb.vtkOFBBuilder.CPU)
+        self.assertEqual(gl.GetLastBackend(), vtkofb.vtkOFBBuilder.BACKEND_CPU)
         self.assertGreater(gl.GetOutput().GetNumberOfSamples(), 0)
         self.assertEqual(gl.GetOutput().GetNumberOfSamples(), cpu.GetOutput().GetNumberOfSamples())
         self.assertEqual(cloud.GetNumberOfPoints(), gl.GetOutput().GetNumberOfSamples())
@@ -358,10 +358,10 @@ class BadInput(unittest.TestCase):
         source = sphere_source(resolution=16)
         cpu, _, _ = self.build(source, resolution=48)
         gl, gl_events, cloud = self.build(source, resolution=48,
-                                          backend=vtkofb.vtkOFBBuilder.OpenGL)
+                                          backend=vtkofb.vtkOFBBuilder.BACKEND_OPENGL)
         self.assertEqual(gl_events.errors, 0)
-        self.assertIn(gl.GetLastBackend(), (vtkofb.vtkOFBBuilder.CPU, vtkofb.vtkOFBBuilder.OpenGL))
-        if gl.GetLastBackend() == vtkofb.vtkOFBBuilder.CPU:
+        self.assertIn(gl.GetLastBackend(), (vtkofb.vtkOFBBuilder.BACKEND_CPU, vtkofb.vtkOFBBuilder.BACKEND_OPENGL))
+        if gl.GetLastBackend() == vtkofb.vtkOFBBuilder.BACKEND_CPU:
             self.assertGreater(gl_events.warnings, 0)
         n_cpu = cpu.GetOutput().GetNumberOfSamples()
         n_gl = gl.GetOutput().GetNumberOfSamples()

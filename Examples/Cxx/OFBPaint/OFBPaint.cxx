@@ -369,7 +369,7 @@ bool PaintApp::PickPixel(double x, double y, double p[3])
   const int height = this->Window->GetSize()[1];
   vtkOFBPainterRepresentation* rep = this->Widget->GetPainterRepresentation();
   if (rep->ComputeInteractionState(static_cast<int>(x), static_cast<int>(height - 1 - y)) !=
-    vtkOFBPainterRepresentation::OnSurface)
+    vtkOFBPainterRepresentation::ON_SURFACE)
   {
     return false;
   }
@@ -483,7 +483,7 @@ void PaintApp::OnKey(vtkObject*, unsigned long, void* clientData, void*)
       vtkOFBPainterRepresentation* rep = self->Widget->GetPainterRepresentation();
       const int* xy = self->Interactor->GetEventPosition();
       double p[3];
-      if (rep->ComputeInteractionState(xy[0], xy[1]) != vtkOFBPainterRepresentation::OnSurface)
+      if (rep->ComputeInteractionState(xy[0], xy[1]) != vtkOFBPainterRepresentation::ON_SURFACE)
       {
         message = "move the mouse onto the surface to stamp the decal";
         break;

@@ -111,7 +111,7 @@ bool ExportPainting(vtkPolyData* surface,
     {
       atlas->AddObserver(vtkCommand::ErrorEvent, errors);
       atlas->SetInputData(surface);
-      atlas->SetSourceData(ofb);
+      atlas->SetOFBData(ofb);
       atlas->SetMaximumTextureSize(std::max(16, textureSize));
       atlas->Update();
       textured = atlas->GetOutput();
@@ -128,7 +128,7 @@ bool ExportPainting(vtkPolyData* surface,
     vtkNew<vtkOFBTextureBaker> baker;
     baker->AddObserver(vtkCommand::ErrorEvent, errors);
     baker->SetInputData(textured);
-    baker->SetSourceData(ofb);
+    baker->SetOFBData(ofb);
     baker->SetTextureSize(size);
     vtkNew<vtkImageExtractComponents> rgb;
     rgb->SetInputConnection(baker->GetOutputPort());
@@ -159,7 +159,7 @@ bool ExportPainting(vtkPolyData* surface,
   vtkNew<vtkOFBProbeFilter> probe;
   probe->AddObserver(vtkCommand::ErrorEvent, errors);
   probe->SetInputData(surface);
-  probe->SetSourceData(ofb);
+  probe->SetOFBData(ofb);
   probe->Update();
   int ok = 0;
   if (ext == ".ply")

@@ -5,6 +5,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellPicker.h"
+#include "vtkEvent.h"
 #include "vtkInteractorEventRecorder.h"
 #include "vtkMath.h"
 #include "vtkOFBBrush.h"
@@ -19,6 +20,7 @@
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkWidgetEventTranslator.h"
 
 #include <gtest/gtest.h>
 
@@ -374,7 +376,7 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   EXPECT_EQ(mirrors, (std::vector<int>{ 1, 2, 4, 0 }));
   // The cursor shows a ring and a tick for the dab and one of each for its reflection.
   scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
-  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::OnSurface);
+  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::ON_SURFACE);
   EXPECT_EQ(rep->GetCursorPolyData()->GetNumberOfLines(), 2);
   painter->SetMirrorOrigin(0.01, 0.0, 0.0);
   scene.Key('m', "m");
@@ -431,7 +433,7 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   // Undo with Ctrl+Z (X11's control character 26), redo with Shift+U and Ctrl+Y.
   const std::vector<unsigned char> before = CopyColors(scene.OFB);
   scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
-  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::OnSurface);
+  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::ON_SURFACE);
   scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
   scene.Event(vtkCommand::MouseMoveEvent, 160, 152);
   scene.Event(vtkCommand::LeftButtonReleaseEvent, 160, 152);
@@ -451,6 +453,53 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   const double r1 = brush->GetRadius();
   scene.Key('+', "plus");
   EXPECT_EQ(brush->GetRadius(), r1);
+}
+
+TEST(PainterWidget, OneKeyReboundThroughTheEventTranslator)
+{
+  PaintScene scene;
+  ASSERT_TRUE(scene.Setup());
+  vtkOFBPainterRepresentation* rep = scene.Widget->GetPainterRepresentation();
+  vtkOFBBrush* brush = rep->GetBrush();
+
+  // Undo moves from `u` to `z`; `u` is dropped and goes to the interactor style.
+  vtkWidgetEventTranslator* keys = scene.Widget->GetEventTranslator();
+  EXPECT_EQ(
+    keys->RemoveTranslation(vtkCommand::CharEvent, vtkEvent::AnyModifier, 'u', 0, nullptr), 1);
+  keys->SetTranslation(
+    vtkCommand::CharEvent, vtkEvent::AnyModifier, 'z', 0, nullptr, vtkOFBPainterWidget::UNDO);
+
+  const std::vector<unsigned char> before = CopyColors(scene.OFB);
+  scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
+  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::ON_SURFACE);
+  scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
+  scene.Event(vtkCommand::MouseMoveEvent, 160, 152);
+  scene.Event(vtkCommand::LeftButtonReleaseEvent, 160, 152);
+  const std::vector<unsigned char> painted = CopyColors(scene.OFB);
+  ASSERT_NE(painted, before);
+
+  const int modifiedBefore = scene.Log.Modified;
+  scene.Key('u', "u");
+  EXPECT_EQ(CopyColors(scene.OFB), painted) << "the dropped key still undoes";
+  EXPECT_EQ(scene.Log.Modified, modifiedBefore);
+  scene.Key('z', "z");
+  EXPECT_EQ(CopyColors(scene.OFB), before) << "the new key does not undo";
+  EXPECT_EQ(scene.Log.Modified, modifiedBefore + 1);
+
+  // The other keys are as they were: redo with Shift+U and Ctrl+Y, undo with Ctrl+Z,
+  // the brush keys.
+  scene.Key('U', "U", false, true);
+  EXPECT_EQ(CopyColors(scene.OFB), painted);
+  scene.Key(26, "z", true);
+  EXPECT_EQ(CopyColors(scene.OFB), before);
+  scene.Key(25, "y", true);
+  EXPECT_EQ(CopyColors(scene.OFB), painted);
+  const double r0 = brush->GetRadius();
+  scene.Key('+', "plus");
+  EXPECT_NEAR(brush->GetRadius(), r0 * 1.25, 1e-12 * r0);
+  brush->SetStrength(0.5);
+  scene.Key('[', "bracketleft");
+  EXPECT_NEAR(brush->GetStrength(), 0.4, 1e-12);
 }
 
 TEST(PainterWidget, StrokeLeavingTheSurfaceIsOneUndoStep)
@@ -508,7 +557,7 @@ TEST(PainterWidget, StabilizerTrailsTheCursor)
   rep->SetStabilizerDistance(3.0);
   const std::vector<unsigned char> before = CopyColors(scene.OFB);
   scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
-  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::OnSurface);
+  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::ON_SURFACE);
   scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
   const vtkIdType first = rep->GetStrokeSamplesChanged();
   EXPECT_GT(first, 0) << "the press paints its dab";
@@ -556,7 +605,7 @@ TEST(PainterWidget, PressOffTheSurfaceIsLeftToTheStyle)
   const std::vector<unsigned char> before = CopyColors(scene.OFB);
   scene.Event(vtkCommand::MouseMoveEvent, 3, 3);
   EXPECT_EQ(scene.Widget->GetPainterRepresentation()->GetInteractionState(),
-    vtkOFBPainterRepresentation::Outside);
+    vtkOFBPainterRepresentation::OUTSIDE);
   scene.Event(vtkCommand::LeftButtonPressEvent, 3, 3);
   scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
   scene.Event(vtkCommand::LeftButtonReleaseEvent, 150, 150);

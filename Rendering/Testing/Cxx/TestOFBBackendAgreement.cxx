@@ -45,10 +45,11 @@ vtkSmartPointer<vtkOFB> BuildWith(vtkPolyData* mesh,
 
 void ExpectAgreement(const char* name, vtkPolyData* mesh, int resolution, vtkRenderWindow* window)
 {
-  int used = vtkOFBBuilder::Auto;
-  vtkSmartPointer<vtkOFB> gl = BuildWith(mesh, resolution, vtkOFBBuilder::OpenGL, window, &used);
-  ASSERT_EQ(used, vtkOFBBuilder::OpenGL) << name << ": the OpenGL backend did not run";
-  vtkSmartPointer<vtkOFB> cpu = BuildWith(mesh, resolution, vtkOFBBuilder::CPU, nullptr);
+  int used = vtkOFBBuilder::BACKEND_AUTO;
+  vtkSmartPointer<vtkOFB> gl =
+    BuildWith(mesh, resolution, vtkOFBBuilder::BACKEND_OPENGL, window, &used);
+  ASSERT_EQ(used, vtkOFBBuilder::BACKEND_OPENGL) << name << ": the OpenGL backend did not run";
+  vtkSmartPointer<vtkOFB> cpu = BuildWith(mesh, resolution, vtkOFBBuilder::BACKEND_CPU, nullptr);
   ASSERT_EQ(gl->GetNumberOfCells(), cpu->GetNumberOfCells());
   ASSERT_DOUBLE_EQ(gl->GetCellSize(), cpu->GetCellSize());
   const double n = static_cast<double>(cpu->GetNumberOfSamples());
@@ -115,7 +116,7 @@ TEST(BackendAgreement, SphereBunnyAndRockerArm)
 TEST(BackendAgreement, AutoPicksTheCPUOnSoftwareRenderersAndWithoutAWindow)
 {
   vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 32);
-  int used = vtkOFBBuilder::OpenGL;
-  BuildWith(sphere, 64, vtkOFBBuilder::Auto, nullptr, &used);
-  EXPECT_EQ(used, vtkOFBBuilder::CPU);
+  int used = vtkOFBBuilder::BACKEND_OPENGL;
+  BuildWith(sphere, 64, vtkOFBBuilder::BACKEND_AUTO, nullptr, &used);
+  EXPECT_EQ(used, vtkOFBBuilder::BACKEND_CPU);
 }

@@ -27,7 +27,7 @@ TEST(Builder, CPUBackendMatchesTheSampler)
   builder->SetBackendToCPU();
   builder->Update();
   vtkSmartPointer<vtkOFB> reference = Build(sphere, 128);
-  EXPECT_EQ(builder->GetLastBackend(), vtkOFBBuilder::CPU);
+  EXPECT_EQ(builder->GetLastBackend(), vtkOFBBuilder::BACKEND_CPU);
   EXPECT_GT(reference->GetNumberOfSamples(), 0);
   EXPECT_EQ(builder->GetOutput()->GetNumberOfSamples(), reference->GetNumberOfSamples());
   EXPECT_EQ(builder->GetOutput()->GetDepthComplexity(), reference->GetDepthComplexity());
@@ -53,7 +53,7 @@ TEST(Builder, OpenGLRequestFallsBackWithAWarning)
     setenv("DISPLAY", saved.c_str(), 1);
   }
   EXPECT_NE(observer->Warnings.find("building on the CPU"), std::string::npos);
-  EXPECT_EQ(builder->GetLastBackend(), vtkOFBBuilder::CPU);
+  EXPECT_EQ(builder->GetLastBackend(), vtkOFBBuilder::BACKEND_CPU);
   EXPECT_GT(builder->GetOutput()->GetNumberOfSamples(), 0);
   observer->Delete();
 }
@@ -94,7 +94,7 @@ TEST(Builder, OpenGLBuildLeavesTheWindowsRenderingUnchanged)
   builder->SetRenderWindow(window);
   builder->SetBackendToOpenGL();
   builder->Update();
-  EXPECT_EQ(builder->GetLastBackend(), vtkOFBBuilder::OpenGL);
+  EXPECT_EQ(builder->GetLastBackend(), vtkOFBBuilder::BACKEND_OPENGL);
   EXPECT_GT(builder->GetOutput()->GetNumberOfSamples(), 0);
   vtkSmartPointer<vtkImageData> after = grab();
   vtkDataArray* a = before->GetPointData()->GetScalars();
@@ -111,12 +111,12 @@ TEST(Builder, OpenGLBuildLeavesTheWindowsRenderingUnchanged)
 TEST(Builder, BackendIsClampedAndNamed)
 {
   vtkNew<vtkOFBBuilder> builder;
-  EXPECT_EQ(builder->GetBackend(), vtkOFBBuilder::Auto);
+  EXPECT_EQ(builder->GetBackend(), vtkOFBBuilder::BACKEND_AUTO);
   builder->SetBackend(17);
-  EXPECT_EQ(builder->GetBackend(), vtkOFBBuilder::OpenGL);
+  EXPECT_EQ(builder->GetBackend(), vtkOFBBuilder::BACKEND_OPENGL);
   builder->SetBackend(-3);
-  EXPECT_EQ(builder->GetBackend(), vtkOFBBuilder::Auto);
-  EXPECT_STREQ(vtkOFBBuilder::GetBackendAsString(vtkOFBBuilder::CPU), "CPU");
+  EXPECT_EQ(builder->GetBackend(), vtkOFBBuilder::BACKEND_AUTO);
+  EXPECT_STREQ(vtkOFBBuilder::GetBackendAsString(vtkOFBBuilder::BACKEND_CPU), "CPU");
   EXPECT_EQ(builder->GetResolution(), 1024);
 }
 

@@ -79,7 +79,7 @@ vtkSmartPointer<vtkPolyData> Probe(vtkPolyData* surface, vtkOFB* ofb, int mode, 
     o->Watch(probe);
   }
   probe->SetInputData(surface);
-  probe->SetSourceData(ofb);
+  probe->SetOFBData(ofb);
   probe->SetLookupMode(mode);
   probe->Update();
   vtkSmartPointer<vtkPolyData> out = probe->GetOutput();
@@ -92,7 +92,8 @@ TEST(ProbeFilter, NearestIsTheClosestFacingSample)
 {
   vtkSmartPointer<vtkOFB> ofb = PaintedSphere();
   vtkSmartPointer<vtkPolyData> surface = ProbeSphere();
-  vtkSmartPointer<vtkPolyData> out = Probe(surface, ofb, vtkOFBProbeFilter::Nearest, nullptr);
+  vtkSmartPointer<vtkPolyData> out =
+    Probe(surface, ofb, vtkOFBProbeFilter::LOOKUP_NEAREST, nullptr);
   ASSERT_EQ(out->GetNumberOfPoints(), surface->GetNumberOfPoints());
   auto* colors = vtkUnsignedCharArray::SafeDownCast(out->GetPointData()->GetArray("Colors"));
   ASSERT_NE(colors, nullptr);
@@ -136,7 +137,7 @@ TEST(ProbeFilter, SmoothIsTheWeightedMean)
 {
   vtkSmartPointer<vtkOFB> ofb = PaintedSphere();
   vtkSmartPointer<vtkPolyData> surface = ProbeSphere();
-  vtkSmartPointer<vtkPolyData> out = Probe(surface, ofb, vtkOFBProbeFilter::Smooth, nullptr);
+  vtkSmartPointer<vtkPolyData> out = Probe(surface, ofb, vtkOFBProbeFilter::LOOKUP_SMOOTH, nullptr);
   vtkDataArray* height = out->GetPointData()->GetArray("Height");
   ASSERT_NE(height, nullptr);
   ASSERT_EQ(height->GetDataType(), VTK_FLOAT);
@@ -205,7 +206,7 @@ TEST(ProbeFilter, ThinSheetsKeepTheirSides)
     {
       vtkNew<vtkOFBProbeFilter> probe;
       probe->SetInputData(sheet->GetOutput());
-      probe->SetSourceData(ofb);
+      probe->SetOFBData(ofb);
       probe->SetNormalAware(aware == 1);
       probe->SetLookupModeToSmooth(); // every sample within 2 cells, both sheets'
       probe->SetRadius(2.0);
@@ -241,7 +242,7 @@ TEST(ProbeFilter, SelectsAndPassesArrays)
   surface->GetPointData()->AddArray(mine);
   vtkNew<vtkOFBProbeFilter> probe;
   probe->SetInputData(surface);
-  probe->SetSourceData(ofb);
+  probe->SetOFBData(ofb);
   probe->AddArrayName("Height");
   probe->Update();
   vtkPointData* pd = probe->GetOutput()->GetPointData();
@@ -269,7 +270,7 @@ TEST(ProbeFilter, BadInput)
     vtkNew<vtkOFBProbeFilter> probe;
     o->Watch(probe);
     probe->SetInputData(surface);
-    probe->SetSourceData(vtkNew<vtkOFB>());
+    probe->SetOFBData(vtkNew<vtkOFB>());
     probe->Update();
     EXPECT_NE(o->Errors.find("empty"), std::string::npos) << o->Errors;
     EXPECT_EQ(probe->GetOutput()->GetNumberOfPoints(), 0);
@@ -281,7 +282,7 @@ TEST(ProbeFilter, BadInput)
     vtkNew<vtkOFBProbeFilter> probe;
     o->Watch(probe);
     probe->SetInputData(surface);
-    probe->SetSourceData(ofb);
+    probe->SetOFBData(ofb);
     probe->SetRadius(radius);
     probe->Update();
     EXPECT_NE(o->Errors.find("Radius"), std::string::npos) << radius;
@@ -292,7 +293,7 @@ TEST(ProbeFilter, BadInput)
     vtkNew<vtkOFBProbeFilter> probe;
     o->Watch(probe);
     probe->SetInputData(surface);
-    probe->SetSourceData(ofb);
+    probe->SetOFBData(ofb);
     probe->AddArrayName("NoSuchArray");
     probe->Update();
     EXPECT_NE(o->Errors.find("NoSuchArray"), std::string::npos);
@@ -310,7 +311,7 @@ TEST(ProbeFilter, BadInput)
   vtkNew<vtkOFBProbeFilter> probe;
   o->Watch(probe);
   probe->SetInputData(odd);
-  probe->SetSourceData(ofb);
+  probe->SetOFBData(ofb);
   probe->SetLookupModeToSmooth();
   probe->Update();
   EXPECT_TRUE(o->Errors.empty()) << o->Errors;

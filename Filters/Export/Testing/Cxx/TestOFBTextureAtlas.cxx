@@ -38,7 +38,7 @@ namespace
 vtkSmartPointer<vtkPolyData> Atlas(vtkOFBTextureAtlas* atlas, vtkPolyData* mesh, vtkOFB* ofb)
 {
   atlas->SetInputData(mesh);
-  atlas->SetSourceData(ofb);
+  atlas->SetOFBData(ofb);
   atlas->Update();
   vtkSmartPointer<vtkPolyData> out = atlas->GetOutput();
   return out;
@@ -247,7 +247,7 @@ void ExpectTheBakeShowsThePaint(vtkPolyData* bunny, vtkOFB* ofb, int layout)
   vtkSmartPointer<vtkPolyData> out = Atlas(atlas, bunny, ofb);
   vtkNew<vtkOFBTextureBaker> baker;
   baker->SetInputData(out);
-  baker->SetSourceData(ofb);
+  baker->SetOFBData(ofb);
   baker->SetTextureSize(atlas->GetAtlasSize());
   baker->Update();
   vtkImageData* image = baker->GetOutput();
@@ -450,7 +450,7 @@ TEST(TextureAtlas, ChartsPutTexelCentresOnTheSamplesOfTheirGrid)
     points[layout] = out->GetNumberOfPoints();
     vtkNew<vtkOFBTextureBaker> baker;
     baker->SetInputData(out);
-    baker->SetSourceData(ofb);
+    baker->SetOFBData(ofb);
     baker->SetTextureSize(atlas->GetAtlasSize());
     baker->Update();
     auto* image =

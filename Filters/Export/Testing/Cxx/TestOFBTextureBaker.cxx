@@ -61,7 +61,7 @@ void PaintAndMarkX(vtkOFB* ofb, double radius, double bound)
 vtkImageData* Bake(vtkOFBTextureBaker* baker, vtkPolyData* mesh, vtkOFB* ofb, int w, int h)
 {
   baker->SetInputData(mesh);
-  baker->SetSourceData(ofb);
+  baker->SetOFBData(ofb);
   baker->SetTextureSize(w, h);
   baker->Update();
   return baker->GetOutput();
@@ -340,12 +340,12 @@ TEST(TextureBaker, FeedsImagingFilters)
     baker->SetInputData(plane);
     if (connected)
     {
-      baker->SetSourceConnection(sampler->GetOutputPort());
+      baker->SetOFBConnection(sampler->GetOutputPort());
     }
     else
     {
       sampler->Update();
-      baker->SetSourceData(sampler->GetOutput());
+      baker->SetOFBData(sampler->GetOutput());
     }
     baker->SetTextureSize(32, 16);
     vtkNew<vtkImageExtractComponents> rgb;

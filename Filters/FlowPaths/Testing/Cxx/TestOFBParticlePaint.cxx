@@ -124,7 +124,7 @@ TEST(ParticlePaint, InputOFBCopiedHeldOFBInPlace)
   before->DeepCopy(input);
   vtkNew<vtkOFBParticleAdvector> advector;
   advector->SetInputData(sphere);
-  advector->SetOFBInputData(input);
+  advector->SetOFBData(input);
   advector->SetNumberOfParticles(20);
   advector->SetStepsPerUpdate(5);
   advector->Step();

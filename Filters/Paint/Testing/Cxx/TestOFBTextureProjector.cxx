@@ -185,7 +185,7 @@ TEST(TextureProjector, RoundTripThroughTheBaker)
   }
   vtkNew<vtkOFBTextureBaker> baker;
   baker->SetInputData(spot);
-  baker->SetSourceData(painted);
+  baker->SetOFBData(painted);
   baker->SetTextureSize(1024, 1024);
   baker->Update();
   vtkNew<vtkOFBTextureProjector> projector;

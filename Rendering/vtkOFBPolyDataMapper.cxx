@@ -31,6 +31,14 @@
 
 vtkStandardNewMacro(vtkOFBPolyDataMapper);
 
+// The header's names for the implementation's types, which it does not install.
+class vtkOFBPolyDataMapper::vtkStorage : public vtkOFBShaderStorage
+{
+};
+struct vtkOFBPolyDataMapper::vtkSelection : public vtkOFBShaderStorage::Selection
+{
+};
+
 namespace
 {
 // Above this many samples in a cell, the lookups binary-search a cell's depths before their
@@ -66,7 +74,7 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , UseIntensity(false)
   , UseNormals(false)
   , DeepCells(false)
-  , Storage(new vtkOFBShaderStorage)
+  , Storage(new vtkStorage)
   , AlphaTranslucent(false)
   , AlphaHint(0)
   , WarnedMTime(0)
@@ -297,7 +305,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
 {
   this->LastUploadedSampleCount = 0;
   vtkOFB* ofb = this->UpdateOFBInput();
-  vtkOFBShaderStorage::Selection selection;
+  vtkSelection selection;
   if (!this->CheckOFB(ofb) || !this->PrepareContext(ren) || !this->SelectArrays(ofb, selection))
   {
     return false;
@@ -390,7 +398,7 @@ bool vtkOFBPolyDataMapper::PrepareContext(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Selection& selection)
+bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkSelection& selection)
 {
   this->SourceScalars = false;
   if (this->ColorSource == Scalars)
@@ -470,7 +478,7 @@ void vtkOFBPolyDataMapper::CheckSurfaceInFrame(vtkOFB* ofb)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorage::Selection& selection)
+bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkSelection& selection)
 {
   if (!this->Storage->UpdateLevels(ofb,
         this->GetInput(),

@@ -231,12 +231,15 @@ vtkIdType vtkOFBPainter::Finish()
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPainter::MakeDab(const double center[3], double pressure, vtkOFBDab& dab)
+bool vtkOFBPainter::Internals::MakeDab(vtkOFBPainter* self,
+  const double center[3],
+  double pressure,
+  vtkOFBDab& dab) const
 {
-  vtkOFBBrush* brush = this->Impl->Brush;
+  vtkOFBBrush* brush = this->Brush;
   if (!Finite3(center))
   {
-    vtkErrorMacro("A dab centre is not finite (NaN or infinite): nothing painted.");
+    vtkErrorWithObjectMacro(self, "A dab centre is not finite (NaN or infinite): nothing painted.");
     return false;
   }
   pressure = std::min(1.0, std::max(0.0, std::isfinite(pressure) ? pressure : 1.0));
@@ -259,20 +262,21 @@ bool vtkOFBPainter::MakeDab(const double center[3], double pressure, vtkOFBDab& 
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
+vtkIdType vtkOFBPainter::Internals::Paint(vtkOFBPainter* self, std::vector<vtkOFBDab>& dabs)
 {
-  vtkOFBBrush* brush = this->Impl->Brush;
+  vtkOFBBrush* brush = this->Brush;
   if (!brush)
   {
-    vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
+    vtkErrorWithObjectMacro(self, "No brush: call SetBrush with a vtkOFBBrush.");
     return 0;
   }
   for (const vtkOFBDab& d : dabs)
   {
     if (!(d.Radius > 0.0) || !std::isfinite(d.Radius) || !std::isfinite(d.Strength))
     {
-      vtkErrorMacro("Dab radius " << d.Radius << " is not positive and finite, or its strength "
-                                  << d.Strength << " is not finite: nothing painted.");
+      vtkErrorWithObjectMacro(self,
+        "Dab radius " << d.Radius << " is not positive and finite, or its strength " << d.Strength
+                      << " is not finite: nothing painted.");
       return 0;
     }
   }
@@ -282,17 +286,18 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   };
   if (!std::all_of(more, more + 3, [](double v) { return std::isfinite(v); }))
   {
-    vtkErrorMacro("The brush's SmearAmount, BumpDepth or MaxNormalAngle is not finite.");
+    vtkErrorWithObjectMacro(
+      self, "The brush's SmearAmount, BumpDepth or MaxNormalAngle is not finite.");
     return 0;
   }
-  if (!Finite3(this->MirrorOrigin) && (this->MirrorX || this->MirrorY || this->MirrorZ))
+  if (!Finite3(self->MirrorOrigin) && (self->MirrorX || self->MirrorY || self->MirrorZ))
   {
-    vtkErrorMacro("MirrorOrigin is not finite: nothing painted.");
+    vtkErrorWithObjectMacro(self, "MirrorOrigin is not finite: nothing painted.");
     return 0;
   }
-  this->AddMirrorImages(dabs);
+  this->AddMirrorImages(self, dabs);
   const int target = brush->GetTarget();
-  if (!this->Prepare(target != vtkOFBBrush::NormalTarget, target == vtkOFBBrush::NormalTarget))
+  if (!self->Prepare(target != vtkOFBBrush::NormalTarget, target == vtkOFBBrush::NormalTarget))
   {
     return 0;
   }
@@ -306,10 +311,10 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   settings.CosMaxAngle = std::cos(vtkMath::RadiansFromDegrees(brush->GetMaxNormalAngle()));
   // Without an undo budget the previous values would be dropped at once: keep none,
   // and drop the older steps, which no longer lead back from what this call paints.
-  settings.RecordUndo = this->UndoLimit > 0;
+  settings.RecordUndo = self->UndoLimit > 0;
   if (!settings.RecordUndo)
   {
-    this->ClearHistory();
+    self->ClearHistory();
   }
   if (settings.Falloff == vtkOFBBrush::Custom && brush->GetCustomFalloff())
   {
@@ -319,28 +324,28 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
       settings.CustomTable[i] = brush->EvaluateFalloff(i / double(CustomTableSize - 1));
     }
   }
-  if (settings.NormalAware && !this->Impl->LastNormals)
+  if (settings.NormalAware && !this->LastNormals)
   {
-    vtkWarningMacro("NormalAware needs a \"Normals\" sample array; painting without it.");
+    vtkWarningWithObjectMacro(
+      self, "NormalAware needs a \"Normals\" sample array; painting without it.");
   }
 
   bool reported = false;
-  std::function<void(double)> progress = [this, &reported](double p)
+  std::function<void(double)> progress = [self, &reported](double p)
   {
     reported = true;
-    this->InvokeEvent(vtkCommand::ProgressEvent, &p);
+    self->InvokeEvent(vtkCommand::ProgressEvent, &p);
   };
-  this->Impl->Kernel.Paint(
-    dabs, settings, this->Impl->Open.Colors, this->Impl->Open.Normals, progress);
+  this->Kernel.Paint(dabs, settings, this->Open.Colors, this->Open.Normals, progress);
   if (reported)
   {
     double done = 1.0;
-    this->InvokeEvent(vtkCommand::ProgressEvent, &done);
+    self->InvokeEvent(vtkCommand::ProgressEvent, &done);
   }
-  const vtkIdType count = this->Finish();
-  if (!this->InStroke)
+  const vtkIdType count = self->Finish();
+  if (!self->InStroke)
   {
-    this->CloseStep();
+    self->CloseStep();
   }
   return count;
 }
@@ -378,9 +383,10 @@ int vtkOFBPainter::GetMirrorReflections(const double point[3],
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPainter::AddMirrorImages(std::vector<vtkOFBDab>& dabs) const
+void vtkOFBPainter::Internals::AddMirrorImages(const vtkOFBPainter* self,
+  std::vector<vtkOFBDab>& dabs)
 {
-  if (!this->MirrorX && !this->MirrorY && !this->MirrorZ)
+  if (!self->MirrorX && !self->MirrorY && !self->MirrorZ)
   {
     return;
   }
@@ -391,7 +397,7 @@ void vtkOFBPainter::AddMirrorImages(std::vector<vtkOFBDab>& dabs) const
   for (const vtkOFBDab& dab : dabs)
   {
     all.push_back(dab);
-    const int count = this->GetMirrorReflections(dab.Center, centres, axes);
+    const int count = self->GetMirrorReflections(dab.Center, centres, axes);
     for (int k = 0; k < count; ++k)
     {
       vtkOFBDab image = dab;
@@ -400,7 +406,7 @@ void vtkOFBPainter::AddMirrorImages(std::vector<vtkOFBDab>& dabs) const
         image.Center[a] = centres[3 * k + a];
         if (axes[k] & (1 << a))
         {
-          image.Previous[a] = 2.0 * this->MirrorOrigin[a] - dab.Previous[a];
+          image.Previous[a] = 2.0 * self->MirrorOrigin[a] - dab.Previous[a];
           image.Normal[a] = -dab.Normal[a];
         }
       }
@@ -414,11 +420,11 @@ void vtkOFBPainter::AddMirrorImages(std::vector<vtkOFBDab>& dabs) const
 vtkIdType vtkOFBPainter::Dab(const double center[3])
 {
   std::vector<vtkOFBDab> dabs(1);
-  if (!this->MakeDab(center, 1.0, dabs[0]))
+  if (!this->Impl->MakeDab(this, center, 1.0, dabs[0]))
   {
     return 0;
   }
-  return this->Paint(dabs);
+  return this->Impl->Paint(this, dabs);
 }
 
 //------------------------------------------------------------------------------
@@ -441,12 +447,12 @@ vtkIdType vtkOFBPainter::Dabs(vtkPoints* centers)
   {
     double p[3];
     centers->GetPoint(i, p);
-    if (!this->MakeDab(p, 1.0, dabs[i]))
+    if (!this->Impl->MakeDab(this, p, 1.0, dabs[i]))
     {
       return 0;
     }
   }
-  return this->Paint(dabs);
+  return this->Impl->Paint(this, dabs);
 }
 
 //------------------------------------------------------------------------------
@@ -485,7 +491,7 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
     input->GetPoint(i, p);
     const double pr = pressure ? pressure->GetComponent(i, 0) : 1.0;
     vtkOFBDab& d = dabs[i];
-    if (!this->MakeDab(p, pr, d))
+    if (!this->Impl->MakeDab(this, p, pr, d))
     {
       return 0;
     }
@@ -521,7 +527,7 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
       d.HasNormal = Finite3(d.Normal);
     }
   }
-  return this->Paint(dabs);
+  return this->Impl->Paint(this, dabs);
 }
 
 //------------------------------------------------------------------------------
@@ -561,7 +567,7 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
   auto place = [&](const double c[3], double pr)
   {
     vtkOFBDab d;
-    this->MakeDab(c, pr, d);
+    this->Impl->MakeDab(this, c, pr, d);
     d.HasPrevious = impl.HasLastDab;
     std::copy(impl.LastDab, impl.LastDab + 3, d.Previous);
     dabs.push_back(d);
@@ -616,7 +622,7 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
   std::copy(p, p + 3, impl.LastPoint);
   impl.LastPressure = pressure;
   impl.HasLastPoint = true;
-  return dabs.empty() ? 0 : this->Paint(dabs);
+  return dabs.empty() ? 0 : this->Impl->Paint(this, dabs);
 }
 
 //------------------------------------------------------------------------------

@@ -67,6 +67,15 @@ struct vtkOFBPainter::Internals
 
   std::vector<std::pair<vtkIdType, vtkIdType>> Ranges;
 
+  /// A dab at `center` with the brush's settings and `pressure`; false (with an error
+  /// of `self`) if not finite.
+  bool MakeDab(vtkOFBPainter* self, const double center[3], double pressure, vtkOFBDab& dab) const;
+  /// Paint dabs with the settings of `self`, mark the changed ranges, call Modified();
+  /// the changed count.
+  vtkIdType Paint(vtkOFBPainter* self, std::vector<vtkOFBDab>& dabs);
+  /// Each dab followed by its reflections (the mirrors of `self`).
+  static void AddMirrorImages(const vtkOFBPainter* self, std::vector<vtkOFBDab>& dabs);
+
   vtkIdType HistoryBytes() const
   {
     vtkIdType b = this->Open.Bytes();

@@ -2,6 +2,7 @@
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBGLSampler.h"
 #include "vtkObjectFactory.h"
@@ -17,11 +18,17 @@ vtkStandardNewMacro(vtkOFBBuilder);
 vtkCxxSetObjectMacro(vtkOFBBuilder, RenderWindow, vtkRenderWindow);
 
 //------------------------------------------------------------------------------
+struct vtkOFBBuilder::vtkInternals
+{
+  vtkNew<vtkOFBGLSampler> GLBackend;
+};
+
+//------------------------------------------------------------------------------
 vtkOFBBuilder::vtkOFBBuilder()
   : Backend(BACKEND_AUTO)
   , LastBackend(BACKEND_AUTO)
   , RenderWindow(nullptr)
-  , GLBackend(vtk::TakeSmartPointer(vtkOFBGLSampler::New()))
+  , Internals(new vtkInternals)
 {
 }
 
@@ -59,19 +66,20 @@ int vtkOFBBuilder::RequestData(vtkInformation* request,
 {
   this->LastBackend = BACKEND_AUTO;
   vtkSmartPointer<vtkRenderWindow> ownWindow;
-  this->GLBackend->SetRenderWindow(this->FindOpenGLWindow(ownWindow));
+  this->Internals->GLBackend->SetRenderWindow(this->FindOpenGLWindow(ownWindow));
   const int result = this->Superclass::RequestData(request, inputVector, outputVector);
-  this->GLBackend->SetRenderWindow(nullptr);
-  this->LastBackend = this->GetLastBuildBackend() == this->GLBackend ? BACKEND_OPENGL : BACKEND_CPU;
+  this->Internals->GLBackend->SetRenderWindow(nullptr);
+  this->LastBackend =
+    this->GetLastBuildBackend() == this->Internals->GLBackend ? BACKEND_OPENGL : BACKEND_CPU;
   return result;
 }
 
 //------------------------------------------------------------------------------
 vtkOFBSamplerBackend* vtkOFBBuilder::SelectBackend()
 {
-  if (this->GLBackend->GetRenderWindow())
+  if (this->Internals->GLBackend->GetRenderWindow())
   {
-    return this->GLBackend;
+    return this->Internals->GLBackend;
   }
   return this->Superclass::SelectBackend();
 }

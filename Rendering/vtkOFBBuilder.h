@@ -34,9 +34,10 @@
 #include "vtkOFBRenderingModule.h" // for export macro
 #include "vtkOFBSampler.h"
 
-#include "vtkSmartPointer.h" // for members
+#include "vtkSmartPointer.h" // for FindOpenGLWindow
 
-class vtkOFBGLSampler;
+#include <memory> // for std::unique_ptr
+
 class vtkOpenGLRenderWindow;
 class vtkRenderWindow;
 
@@ -121,7 +122,9 @@ private:
   vtkOFBBuilder(const vtkOFBBuilder&) = delete;
   void operator=(const vtkOFBBuilder&) = delete;
 
-  vtkSmartPointer<vtkOFBGLSampler> GLBackend;
+  // The OpenGL backend.
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
 };
 
 #endif

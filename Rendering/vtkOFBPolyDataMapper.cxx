@@ -33,6 +33,14 @@
 
 vtkStandardNewMacro(vtkOFBPolyDataMapper);
 
+// The header's names for the implementation's types, which it does not install.
+class vtkOFBPolyDataMapper::vtkStorage : public vtkOFBShaderStorage
+{
+};
+struct vtkOFBPolyDataMapper::vtkSelection : public vtkOFBShaderStorage::Selection
+{
+};
+
 namespace
 {
 // Above this many samples in a cell, the lookups binary-search a cell's depths before their
@@ -57,7 +65,7 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , UseIntensity(false)
   , UseNormals(false)
   , DeepCells(false)
-  , Storage(new vtkOFBShaderStorage)
+  , Storage(new vtkStorage)
   , AlphaTranslucent(false)
   , AlphaHint(0)
   , WarnedMTime(0)
@@ -288,7 +296,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
 {
   this->LastUploadedSampleCount = 0;
   vtkOFB* ofb = this->UpdateOFBInput();
-  vtkOFBShaderStorage::Selection selection;
+  vtkSelection selection;
   if (!this->CheckOFB(ofb) || !this->PrepareContext(ren) || !this->SelectArrays(ofb, selection))
   {
     return false;
@@ -381,7 +389,7 @@ bool vtkOFBPolyDataMapper::PrepareContext(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkOFBShaderStorage::Selection& selection)
+bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkSelection& selection)
 {
   vtkOFBColoring* coloring = this->Coloring;
   this->SourceScalars = false;
@@ -460,7 +468,7 @@ void vtkOFBPolyDataMapper::CheckSurfaceInFrame(vtkOFB* ofb)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorage::Selection& selection)
+bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkSelection& selection)
 {
   if (!this->Storage->UpdateLevels(ofb,
         this->GetInput(),

@@ -124,8 +124,6 @@ class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkOFB;
 class vtkOFBColoring;
-class vtkOFBShaderStorage;
-struct vtkOFBShaderStorageSelection;
 
 class VTKOFBRENDERING_EXPORT vtkOFBPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
@@ -276,6 +274,11 @@ public:
   vtkIdType GetUploadedBytes();
 
 protected:
+  // Types of the implementation (vtkOFBShaderStorage, private): the GPU state and what
+  // was uploaded, and which sample arrays a render uploads.
+  class vtkStorage;
+  struct vtkSelection;
+
   vtkOFBPolyDataMapper();
   ~vtkOFBPolyDataMapper() override;
 
@@ -313,9 +316,9 @@ protected:
   vtkOFB* UpdateOFBInput();
   bool CheckOFB(vtkOFB* ofb);
   bool PrepareContext(vtkRenderer* ren);
-  bool SelectArrays(vtkOFB* ofb, vtkOFBShaderStorageSelection& selection);
+  bool SelectArrays(vtkOFB* ofb, vtkSelection& selection);
   void CheckSurfaceInFrame(vtkOFB* ofb);
-  bool UploadOFB(vtkOFB* ofb, const vtkOFBShaderStorageSelection& selection);
+  bool UploadOFB(vtkOFB* ofb, const vtkSelection& selection);
   void UploadLookupTable();
   /// The lightness range of the OFB's colours (the colouring's EnhanceColorContrast), computed
   /// again when they may have changed.
@@ -363,7 +366,7 @@ protected:
   vtkTimeStamp ShaderKeyTime;
 
   // The GPU state and what was uploaded.
-  std::unique_ptr<vtkOFBShaderStorage> Storage;
+  std::unique_ptr<vtkStorage> Storage;
 
   // HasTranslucentColors's cache: the OFB and colour array scanned, when, the answer, and
   // where the last translucent sample was found.

@@ -1,5 +1,6 @@
 #include "vtkOFB.h"
 #include "vtkOFBHugePages.h"
+#include "vtkOFBModifiedRanges.h"
 
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -8,13 +9,42 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
+#include "vtkWeakPointer.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <vector>
 
 vtkStandardNewMacro(vtkOFB);
+
+//------------------------------------------------------------------------------
+struct vtkOFB::vtkInternals
+{
+  /// Arrays that Recycle() found free, for the next SetFrame, AllocateSamples and
+  /// TakeSpareArray.
+  std::vector<vtkSmartPointer<vtkDataArray>> Spares;
+
+  /// The structure that Recycle() let go: a shallow copy of the same arrays in the same
+  /// frame (a filter re-executing over an unchanged input) keeps its StructureTime, so
+  /// that consumers (the mapper's uploads) see only the arrays that changed.
+  struct RecycledStructure
+  {
+    vtkWeakPointer<vtkTypeUInt32Array> CellOffsets;
+    vtkWeakPointer<vtkFloatArray> Depths;
+    vtkWeakPointer<vtkTypeUInt32Array> CellIndex;
+    double Origin[3];
+    vtkIdType Dimensions[3];
+    double CellSize;
+    vtkTimeStamp Time;
+  };
+  RecycledStructure Recycled;
+
+  /// The sample ranges marked modified (see MarkSamplesModified).
+  vtkOFBModifiedRanges ModifiedRanges;
+};
 
 namespace
 {
@@ -44,6 +74,7 @@ vtkSmartPointer<ArrayT> SpareOrNew(vtkOFB* ofb, const char* name, int type, vtkI
 
 //------------------------------------------------------------------------------
 vtkOFB::vtkOFB()
+  : Internals(new vtkInternals)
 {
   this->CellOffsets = vtkSmartPointer<vtkTypeUInt32Array>::New();
   this->CellOffsets->SetName("CellOffsets");
@@ -66,7 +97,7 @@ vtkOFB::~vtkOFB() = default;
 //------------------------------------------------------------------------------
 void vtkOFB::Initialize()
 {
-  this->Spares.clear();
+  this->Internals->Spares.clear();
   this->Reset();
 }
 
@@ -88,7 +119,7 @@ void vtkOFB::Reset()
   this->CellIndex = vtkSmartPointer<vtkTypeUInt32Array>::New();
   this->CellIndex->SetName("CellIndex");
   this->SampleData = vtkSmartPointer<vtkPointData>::New();
-  this->ModifiedRanges.clear();
+  this->Internals->ModifiedRanges.Clear();
   this->StructureTime.Modified();
   this->Modified();
 }
@@ -98,7 +129,7 @@ void vtkOFB::Recycle()
 {
   // An array is free when this OFB (or its sample data, itself held by nobody
   // else) holds the only reference.
-  std::vector<vtkSmartPointer<vtkDataArray>> spares = std::move(this->Spares);
+  std::vector<vtkSmartPointer<vtkDataArray>> spares = std::move(this->Internals->Spares);
   auto keep = [&spares](vtkDataArray* array)
   {
     if (array && array->GetReferenceCount() == 1 && array->HasStandardMemoryLayout())
@@ -106,16 +137,16 @@ void vtkOFB::Recycle()
       spares.emplace_back(array);
     }
   };
-  this->Recycled.CellOffsets = this->CellOffsets;
-  this->Recycled.Depths = this->Depths;
-  this->Recycled.CellIndex = this->CellIndex;
+  this->Internals->Recycled.CellOffsets = this->CellOffsets;
+  this->Internals->Recycled.Depths = this->Depths;
+  this->Internals->Recycled.CellIndex = this->CellIndex;
   for (int a = 0; a < 3; ++a)
   {
-    this->Recycled.Origin[a] = this->Origin[a];
-    this->Recycled.Dimensions[a] = this->Dimensions[a];
+    this->Internals->Recycled.Origin[a] = this->Origin[a];
+    this->Internals->Recycled.Dimensions[a] = this->Dimensions[a];
   }
-  this->Recycled.CellSize = this->CellSize;
-  this->Recycled.Time = this->StructureTime;
+  this->Internals->Recycled.CellSize = this->CellSize;
+  this->Internals->Recycled.Time = this->StructureTime;
   keep(this->CellOffsets);
   keep(this->Depths);
   keep(this->CellIndex);
@@ -127,7 +158,7 @@ void vtkOFB::Recycle()
     }
   }
   this->Initialize();
-  this->Spares = std::move(spares);
+  this->Internals->Spares = std::move(spares);
 }
 
 //------------------------------------------------------------------------------
@@ -139,7 +170,13 @@ void vtkOFB::PrepareForNewData()
 //------------------------------------------------------------------------------
 void vtkOFB::ReleaseSpareArrays()
 {
-  this->Spares.clear();
+  this->Internals->Spares.clear();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::GetNumberOfSpareArrays() const
+{
+  return static_cast<vtkIdType>(this->Internals->Spares.size());
 }
 
 //------------------------------------------------------------------------------
@@ -148,7 +185,7 @@ vtkSmartPointer<vtkDataArray> vtkOFB::TakeSpareArray(const char* name,
   int numberOfComponents,
   vtkIdType numberOfTuples)
 {
-  for (auto it = this->Spares.begin(); name && it != this->Spares.end(); ++it)
+  for (auto it = this->Internals->Spares.begin(); name && it != this->Internals->Spares.end(); ++it)
   {
     vtkDataArray* array = *it;
     if (array->GetDataType() != dataType || array->GetNumberOfComponents() != numberOfComponents ||
@@ -158,7 +195,7 @@ vtkSmartPointer<vtkDataArray> vtkOFB::TakeSpareArray(const char* name,
       continue;
     }
     vtkSmartPointer<vtkDataArray> taken = *it;
-    this->Spares.erase(it);
+    this->Internals->Spares.erase(it);
     // As a new array: no lookup table, no cached ranges or other information.
     taken->SetNumberOfTuples(numberOfTuples);
     taken->SetLookupTable(nullptr);
@@ -249,10 +286,10 @@ bool vtkOFB::AllocateSamples(vtkIdType n)
     vtkErrorMacro("AllocateSamples: cannot allocate " << n << " samples.");
     return false;
   }
-  this->Recycled = RecycledStructure();
+  this->Internals->Recycled = vtkInternals::RecycledStructure();
   this->Depths = depths;
   this->CellIndex = index;
-  this->ModifiedRanges.clear();
+  this->Internals->ModifiedRanges.Clear();
   this->StructureTime.Modified();
   this->Modified();
   return true;
@@ -484,7 +521,8 @@ vtkIdType vtkOFB::FindSample(const double x[3], const double n[3]) const
   const double s = this->CellSize;
   const vtkIdType begin = offsets[cell];
   const vtkIdType end = offsets[cell + 1];
-  const vtkIdType i = this->LowerBound(begin, end, static_cast<float>(d));
+  const vtkIdType i = static_cast<vtkIdType>(
+    std::lower_bound(depths + begin, depths + end, static_cast<float>(d)) - depths);
   // The closest depth is at i or just before it.
   vtkIdType result = -1;
   double bestDist = s;
@@ -553,72 +591,7 @@ void vtkOFB::MarkSamplesModified(vtkIdType first, vtkIdType last)
   {
     return;
   }
-  vtkTimeStamp now;
-  now.Modified();
-  this->ModifiedRanges.push_back({ first, last, now.GetMTime() });
-  if (this->ModifiedRanges.size() <= 256)
-  {
-    return;
-  }
-  // Compact the oldest marks only: a consumer that uploads after every change
-  // (the mapper, once per frame) then still sees the newest marks exactly.
-  // Sort by time; the newest 192 stay as they are; the older ones are merged
-  // (overlapping or adjacent ones first, then across their smallest gaps) into at
-  // most 32 ranges, each with the newest time of what it merged (still older than
-  // the kept ones).
-  auto& ranges = this->ModifiedRanges;
-  std::sort(ranges.begin(),
-    ranges.end(),
-    [](const ModifiedRange& x, const ModifiedRange& y) { return x.Time < y.Time; });
-  const size_t older = ranges.size() - 192;
-  std::vector<ModifiedRange> kept(ranges.begin() + older, ranges.end());
-  ranges.resize(older);
-  std::sort(ranges.begin(),
-    ranges.end(),
-    [](const ModifiedRange& x, const ModifiedRange& y) { return x.First < y.First; });
-  size_t out = 0;
-  for (size_t i = 1; i < ranges.size(); ++i)
-  {
-    if (ranges[i].First <= ranges[out].Last)
-    {
-      ranges[out].Last = std::max(ranges[out].Last, ranges[i].Last);
-      ranges[out].Time = std::max(ranges[out].Time, ranges[i].Time);
-    }
-    else
-    {
-      ranges[++out] = ranges[i];
-    }
-  }
-  ranges.resize(out + 1);
-  if (ranges.size() > 32)
-  {
-    // Close the smallest gaps first, so that a consumer that missed these marks
-    // re-sends a few samples in between rather than everything.
-    std::vector<vtkIdType> gaps(ranges.size() - 1);
-    for (size_t i = 0; i + 1 < ranges.size(); ++i)
-    {
-      gaps[i] = ranges[i + 1].First - ranges[i].Last;
-    }
-    std::vector<vtkIdType> sorted = gaps;
-    const size_t close = ranges.size() - 32;
-    std::nth_element(sorted.begin(), sorted.begin() + (close - 1), sorted.end());
-    const vtkIdType threshold = sorted[close - 1];
-    size_t merged = 0;
-    for (size_t i = 1; i < ranges.size(); ++i)
-    {
-      if (gaps[i - 1] <= threshold)
-      {
-        ranges[merged].Last = ranges[i].Last;
-        ranges[merged].Time = std::max(ranges[merged].Time, ranges[i].Time);
-      }
-      else
-      {
-        ranges[++merged] = ranges[i];
-      }
-    }
-    ranges.resize(merged + 1);
-  }
-  ranges.insert(ranges.end(), kept.begin(), kept.end());
+  this->Internals->ModifiedRanges.Mark(first, last);
 }
 
 //------------------------------------------------------------------------------
@@ -647,25 +620,7 @@ void vtkOFB::GetSampleRangesModifiedSince(vtkMTimeType t, vtkIdTypeArray* ranges
     ranges->InsertNextTypedTuple(all);
     return;
   }
-  std::vector<std::pair<vtkIdType, vtkIdType>> newer;
-  for (const auto& r : this->ModifiedRanges)
-  {
-    if (r.Time > t)
-    {
-      newer.emplace_back(r.First, std::min(r.Last, n));
-    }
-  }
-  std::sort(newer.begin(), newer.end());
-  for (size_t i = 0; i < newer.size();)
-  {
-    vtkIdType first = newer[i].first, last = newer[i].second;
-    for (++i; i < newer.size() && newer[i].first <= last; ++i)
-    {
-      last = std::max(last, newer[i].second);
-    }
-    const vtkIdType tuple[2] = { first, last };
-    ranges->InsertNextTypedTuple(tuple);
-  }
+  this->Internals->ModifiedRanges.GetRangesSince(t, n, ranges);
 }
 
 //------------------------------------------------------------------------------
@@ -711,7 +666,7 @@ void vtkOFB::CopyFrom(vtkDataObject* src, bool deep)
   {
     return;
   }
-  this->Spares.clear();
+  this->Internals->Spares.clear();
   if (deep)
   {
     this->Superclass::DeepCopy(src);
@@ -748,21 +703,22 @@ void vtkOFB::CopyFrom(vtkDataObject* src, bool deep)
     this->CellIndex = ofb->CellIndex;
     this->SampleData->ShallowCopy(ofb->SampleData);
   }
-  this->ModifiedRanges.clear();
+  this->Internals->ModifiedRanges.Clear();
   this->StructureTime.Modified();
-  if (!deep && this->CellOffsets && this->CellOffsets.Get() == this->Recycled.CellOffsets.Get() &&
-    this->Depths.Get() == this->Recycled.Depths.Get() &&
-    this->CellIndex.Get() == this->Recycled.CellIndex.Get() &&
-    this->CellSize == this->Recycled.CellSize &&
-    std::equal(this->Origin, this->Origin + 3, this->Recycled.Origin) &&
-    std::equal(this->Dimensions, this->Dimensions + 3, this->Recycled.Dimensions))
+  if (!deep && this->CellOffsets &&
+    this->CellOffsets.Get() == this->Internals->Recycled.CellOffsets.Get() &&
+    this->Depths.Get() == this->Internals->Recycled.Depths.Get() &&
+    this->CellIndex.Get() == this->Internals->Recycled.CellIndex.Get() &&
+    this->CellSize == this->Internals->Recycled.CellSize &&
+    std::equal(this->Origin, this->Origin + 3, this->Internals->Recycled.Origin) &&
+    std::equal(this->Dimensions, this->Dimensions + 3, this->Internals->Recycled.Dimensions))
   {
     // The structure this OFB had before Recycle(): not a change; the source's modified
     // ranges carry over.
-    this->StructureTime = this->Recycled.Time;
-    this->ModifiedRanges = ofb->ModifiedRanges;
+    this->StructureTime = this->Internals->Recycled.Time;
+    this->Internals->ModifiedRanges = ofb->Internals->ModifiedRanges;
   }
-  this->Recycled = RecycledStructure();
+  this->Internals->Recycled = vtkInternals::RecycledStructure();
   this->Modified();
 }
 
@@ -793,7 +749,7 @@ void vtkOFB::PrintSelf(ostream& os, vtkIndent indent)
      << this->GetNumberOfSamples(2) << ")\n";
   os << indent << "DepthComplexity: (" << this->GetDepthComplexity(0) << ", "
      << this->GetDepthComplexity(1) << ", " << this->GetDepthComplexity(2) << ")\n";
-  os << indent << "NumberOfSpareArrays: " << this->Spares.size() << "\n";
+  os << indent << "NumberOfSpareArrays: " << this->Internals->Spares.size() << "\n";
   os << indent << "SampleData:\n";
   this->SampleData->PrintSelf(os, indent.GetNextIndent());
 }

@@ -38,34 +38,9 @@
 #include "vtkTypeUInt32Array.h" // for inline access
 #include "vtkWrappingHints.h"   // for VTK_SIZEHINT
 
-#include "vtkTimeStamp.h"   // for StructureTime
-#include "vtkWeakPointer.h" // for the recycled structure
+#include "vtkTimeStamp.h" // for StructureTime
 
-#include <algorithm> // for std::lower_bound
-#include <cmath>     // for std::floor
-#include <vector>    // for ModifiedRanges
-
-/// A hint to fetch the cache line at `p` ahead of use (`VTKOFB_PREFETCH_WRITE`: to be
-/// written); nothing where the compiler has no such builtin. On x86 the hint is a
-/// volatile instruction: GCC takes __builtin_prefetch for free of side effects, so a
-/// caller's prefetch functor that it does not inline is deleted as a call that does
-/// nothing, with its prefetches.
-#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__))
-#define VTKOFB_PREFETCH(p)                                                                         \
-  __asm__ __volatile__("prefetcht0 %0" : : "m"(*reinterpret_cast<const char*>(p)))
-#if defined(__PRFCHW__)
-#define VTKOFB_PREFETCH_WRITE(p)                                                                   \
-  __asm__ __volatile__("prefetchw %0" : : "m"(*reinterpret_cast<const char*>(p)))
-#else
-#define VTKOFB_PREFETCH_WRITE(p) VTKOFB_PREFETCH(p)
-#endif
-#elif defined(__GNUC__) || defined(__clang__)
-#define VTKOFB_PREFETCH(p) __builtin_prefetch(p)
-#define VTKOFB_PREFETCH_WRITE(p) __builtin_prefetch((p), 1)
-#else
-#define VTKOFB_PREFETCH(p) ((void)(p))
-#define VTKOFB_PREFETCH_WRITE(p) ((void)(p))
-#endif
+#include <memory> // for std::unique_ptr
 
 class vtkIdList;
 class vtkIdTypeArray;
@@ -121,7 +96,7 @@ public:
   void PrepareForNewData() override;
 
   /// The number of spare arrays (see Recycle()).
-  vtkIdType GetNumberOfSpareArrays() const { return static_cast<vtkIdType>(this->Spares.size()); }
+  vtkIdType GetNumberOfSpareArrays() const;
 
 #ifndef __VTK_WRAP__
   /**
@@ -298,7 +273,7 @@ public:
    * Call `f(vtkIdType id, double squaredDistance)` for every sample within `radius`
    * of `center`, grid by grid (axis 0, 1, 2), row by row, cell by cell in order of
    * depth. Candidates are the cells under the sphere's projection on each grid and
-   * the depth range [d - r, d + r] of each; no allocation.
+   * the depth range [d - r, d + r] of each; no allocation (vtkOFBSphereQuery.h).
    */
   template<typename Functor>
   void ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const;
@@ -391,9 +366,6 @@ protected:
   vtkOFB();
   ~vtkOFB() override;
 
-  /// Initialize() but for the spares (see Recycle()).
-  void Reset();
-
   /**
    * Set `cell` to the global index of the cell of grid `axis` under point x (the
    * cell whose square contains x projected on the grid); false, `cell` unchanged,
@@ -406,61 +378,6 @@ protected:
    */
   void CopyFrom(vtkDataObject* src, bool deep);
 
-  /**
-   * Index of the first sample of [begin, end) whose depth is >= d.
-   */
-  vtkIdType LowerBound(vtkIdType begin, vtkIdType end, float d) const
-  {
-    const float* depths = this->Depths->GetPointer(0);
-    return static_cast<vtkIdType>(std::lower_bound(depths + begin, depths + end, d) - depths);
-  }
-
-#ifndef __VTK_WRAP__
-  /// One row of cells [u0, u1] of a sphere query on grid `a` (vtkOFBSphereQuery.txx).
-  struct SphereRow
-  {
-    vtkIdType RowBase; // global id of cell u = 0 of the row
-    vtkIdType U0, U1;
-    vtkIdType First, Last; // the samples of cells [U0, U1] (set by FetchSphereRow)
-    double UCentre;        // the centre's u, world units relative to cell 0's centre
-    double D;              // the centre's depth relative to the origin
-    double DV2;            // squared distance of the row from the centre in v
-    double DHigh;
-    double R2;
-    float DLow;
-    int UAxis;
-    // The OFB's arrays, taken once per sphere and grid (not per row).
-    const vtkTypeUInt32* Offsets;
-    const float* Depths;
-    const vtkTypeUInt32* CellOf; // null without a cell index
-  };
-  /// The cells of grid `a` under a sphere's bounding box, and what its rows share.
-  struct SphereGrid
-  {
-    vtkIdType U0, U1, V0, V1, NU;
-    double CU; // the centre's u in cell units
-    double InverseCellSize;
-    double CV; // the centre's v, world units
-    int VAxis;
-    SphereRow Base;
-  };
-  /// False if the sphere's box misses grid `a`.
-  bool BeginSphereGrid(int a, const double center[3], double radius, SphereGrid& grid) const;
-  /// Row `iv` of the grid, only the cells under the circle's chord (its cell offsets
-  /// prefetched); false if it misses.
-  bool SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow& row) const;
-  /// Read the row's sample range, prefetch its depths and cell indices, and hand its
-  /// first samples (up to 512) to the caller's `prefetch(first, last)`.
-  template<typename Prefetch>
-  void FetchSphereRow(SphereRow& row, Prefetch& prefetch) const;
-  template<typename Functor>
-  void ForEachSampleInRow(const SphereRow& row, bool indexed, Functor& f) const;
-  template<typename Functor>
-  void ForEachSampleInRowScan(const SphereRow& row, Functor& f) const;
-  template<typename Functor>
-  void ForEachSampleInRowCells(const SphereRow& row, Functor& f) const;
-#endif
-
   double Origin[3];
   double CellSize;
   vtkIdType Dimensions[3];
@@ -470,39 +387,25 @@ protected:
   vtkSmartPointer<vtkFloatArray> Depths;
   vtkSmartPointer<vtkTypeUInt32Array> CellIndex;
   vtkSmartPointer<vtkPointData> SampleData;
-  std::vector<vtkSmartPointer<vtkDataArray>> Spares; // see Recycle()
-
-  struct ModifiedRange
-  {
-    vtkIdType First;
-    vtkIdType Last;
-    vtkMTimeType Time;
-  };
-  std::vector<ModifiedRange> ModifiedRanges;
   vtkTimeStamp StructureTime;
-
-  // The structure that Recycle() let go: a shallow copy of the same arrays in the same
-  // frame (a filter re-executing over an unchanged input) keeps its StructureTime, so
-  // that consumers (the mapper's uploads) see only the arrays that changed.
-  struct RecycledStructure
-  {
-    vtkWeakPointer<vtkTypeUInt32Array> CellOffsets;
-    vtkWeakPointer<vtkFloatArray> Depths;
-    vtkWeakPointer<vtkTypeUInt32Array> CellIndex;
-    double Origin[3];
-    vtkIdType Dimensions[3];
-    double CellSize;
-    vtkTimeStamp Time;
-  };
-  RecycledStructure Recycled;
 
 private:
   vtkOFB(const vtkOFB&) = delete;
   void operator=(const vtkOFB&) = delete;
+
+  // The sphere queries read the frame and the arrays directly.
+  friend class vtkOFBSphereQuery;
+
+  /// Initialize() but for the spares (see Recycle()).
+  void Reset();
+
+  // The spare arrays and the structure that Recycle() let go, and the modified ranges.
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
 };
 
 #ifndef __VTK_WRAP__
-#include "vtkOFBSphereQuery.txx" // IWYU pragma: export
+#include "vtkOFBSphereQuery.h" // IWYU pragma: export
 #endif
 
 #endif

@@ -5,6 +5,7 @@
 
 #include "vtkType.h"
 
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -15,8 +16,8 @@ inline void vtkOFBJoinRuns(std::vector<std::pair<vtkIdType, vtkIdType>>& runs, v
   {
     return;
   }
-  size_t out = 0;
-  for (size_t i = 1; i < runs.size(); ++i)
+  std::size_t out = 0;
+  for (std::size_t i = 1; i < runs.size(); ++i)
   {
     if (runs[i].first - runs[out].second <= gap)
     {

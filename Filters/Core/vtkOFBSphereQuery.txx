@@ -1,10 +1,8 @@
 /**
  * @file   vtkOFBSphereQuery.txx
- * @brief  vtkOFB's sphere queries: ForEachSampleInSphere and ForEachSampleInSpheres
+ * @brief  vtkOFBSphereQuery's inline and templated members, and vtkOFB's sphere queries
  *
- * Included by vtkOFB.h. A sphere's candidates are, on each grid, the rows of cells
- * under its projection (a disc), each row only over the circle's chord; a row's
- * samples are consecutive in memory, so a row is one range of sample ids.
+ * Included by vtkOFBSphereQuery.h.
  */
 
 #ifndef vtkOFBSphereQuery_txx
@@ -14,10 +12,59 @@
 #include <cmath>
 
 //------------------------------------------------------------------------------
-inline bool vtkOFB::BeginSphereGrid(int a,
+inline vtkOFBSphereQuery::vtkOFBSphereQuery(const vtkOFB& ofb)
+  : CellSize(ofb.CellSize)
+  , NumberOfSamples(ofb.Depths->GetNumberOfValues())
+  , Offsets(ofb.CellOffsets->GetPointer(0))
+  , Depths(ofb.Depths->GetPointer(0))
+  , CellOf(ofb.CellIndex->GetNumberOfValues() == ofb.Depths->GetNumberOfValues()
+        ? ofb.CellIndex->GetPointer(0)
+        : nullptr)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Origin[a] = ofb.Origin[a];
+    this->Dimensions[a] = ofb.Dimensions[a];
+  }
+  for (int a = 0; a < 4; ++a)
+  {
+    this->CellBase[a] = ofb.CellBase[a];
+  }
+}
+
+//------------------------------------------------------------------------------
+template<typename Functor>
+void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const
+{
+  auto none = [](vtkIdType, vtkIdType) {};
+  vtkOFBSphereQuery(*this).ForEachSampleInSphere(center, radius, f, none);
+}
+
+//------------------------------------------------------------------------------
+template<typename Functor, typename Prefetch>
+void vtkOFB::ForEachSampleInSphere(const double center[3],
+  double radius,
+  Functor&& f,
+  Prefetch&& prefetch) const
+{
+  vtkOFBSphereQuery(*this).ForEachSampleInSphere(center, radius, f, prefetch);
+}
+
+//------------------------------------------------------------------------------
+template<typename Sphere, typename Functor, typename Prefetch>
+void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
+  Sphere&& sphere,
+  Functor&& f,
+  Prefetch&& prefetch) const
+{
+  vtkOFBSphereQuery(*this).ForEachSampleInSpheres(n, sphere, f, prefetch);
+}
+
+//------------------------------------------------------------------------------
+inline bool vtkOFBSphereQuery::BeginGrid(int a,
   const double center[3],
   double radius,
-  SphereGrid& grid) const
+  Grid& grid) const
 {
   const int ua = (a + 1) % 3;
   const int va = (a + 2) % 3;
@@ -43,7 +90,7 @@ inline bool vtkOFB::BeginSphereGrid(int a,
   grid.CV = center[va];
   grid.VAxis = va;
   grid.NU = nu;
-  SphereRow& base = grid.Base;
+  Row& base = grid.Base;
   base.RowBase = this->CellBase[a];
   base.D = center[a] - this->Origin[a];
   base.R2 = radius * radius;
@@ -52,16 +99,14 @@ inline bool vtkOFB::BeginSphereGrid(int a,
   base.UCentre = center[ua];
   base.UAxis = ua;
   base.First = base.Last = 0;
-  base.Offsets = this->CellOffsets->GetPointer(0);
-  base.Depths = this->Depths->GetPointer(0);
-  base.CellOf = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples()
-    ? this->CellIndex->GetPointer(0)
-    : nullptr;
+  base.Offsets = this->Offsets;
+  base.Depths = this->Depths;
+  base.CellOf = this->CellOf;
   return true;
 }
 
 //------------------------------------------------------------------------------
-inline bool vtkOFB::SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow& row) const
+inline bool vtkOFBSphereQuery::Chord(const Grid& grid, vtkIdType iv, Row& row) const
 {
   // Only the cells under the circle's chord, one cell wider on each side than exact
   // arithmetic needs (the distance test decides), clamped before they become
@@ -84,14 +129,14 @@ inline bool vtkOFB::SphereChord(const SphereGrid& grid, vtkIdType iv, SphereRow&
   {
     return false;
   }
-  VTKOFB_PREFETCH(row.Offsets + row.RowBase + row.U0); // read by FetchSphereRow
+  VTKOFB_PREFETCH(row.Offsets + row.RowBase + row.U0); // read by FetchRow
   VTKOFB_PREFETCH(row.Offsets + row.RowBase + row.U1 + 1);
   return true;
 }
 
 //------------------------------------------------------------------------------
 template<typename Prefetch>
-inline void vtkOFB::FetchSphereRow(SphereRow& row, Prefetch& prefetch) const
+inline void vtkOFBSphereQuery::FetchRow(Row& row, Prefetch& prefetch) const
 {
   row.First = row.Offsets[row.RowBase + row.U0];
   row.Last = row.Offsets[row.RowBase + row.U1 + 1];
@@ -115,28 +160,20 @@ inline void vtkOFB::FetchSphereRow(SphereRow& row, Prefetch& prefetch) const
 }
 
 //------------------------------------------------------------------------------
-template<typename Functor>
-void vtkOFB::ForEachSampleInSphere(const double center[3], double radius, Functor&& f) const
-{
-  this->ForEachSampleInSphere(center, radius, f, [](vtkIdType, vtkIdType) {});
-}
-
-//------------------------------------------------------------------------------
 template<typename Functor, typename Prefetch>
-void vtkOFB::ForEachSampleInSphere(const double center[3],
+void vtkOFBSphereQuery::ForEachSampleInSphere(const double center[3],
   double radius,
-  Functor&& f,
-  Prefetch&& prefetch) const
+  Functor& f,
+  Prefetch& prefetch) const
 {
-  if (this->CellSize <= 0.0 || !(radius >= 0.0) || this->GetNumberOfSamples() == 0)
+  if (this->CellSize <= 0.0 || !(radius >= 0.0) || this->NumberOfSamples == 0)
   {
     return;
   }
-  const bool indexed = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples();
   for (int a = 0; a < 3; ++a)
   {
-    SphereGrid grid;
-    if (!this->BeginSphereGrid(a, center, radius, grid))
+    Grid grid;
+    if (!this->BeginGrid(a, center, radius, grid))
     {
       continue;
     }
@@ -145,15 +182,14 @@ void vtkOFB::ForEachSampleInSphere(const double center[3],
     constexpr vtkIdType PlanAhead = 3;
     constexpr vtkIdType FetchAhead = 2;
     constexpr vtkIdType Ring = 4;
-    SphereRow ring[Ring];
+    Row ring[Ring];
     bool valid[Ring] = { false, false, false, false };
-    auto plan = [&](vtkIdType iv)
-    { valid[iv % Ring] = this->SphereChord(grid, iv, ring[iv % Ring]); };
+    auto plan = [&](vtkIdType iv) { valid[iv % Ring] = this->Chord(grid, iv, ring[iv % Ring]); };
     auto fetch = [&](vtkIdType iv)
     {
       if (valid[iv % Ring])
       {
-        this->FetchSphereRow(ring[iv % Ring], prefetch);
+        this->FetchRow(ring[iv % Ring], prefetch);
       }
     };
     for (vtkIdType iv = grid.V0; iv <= std::min(grid.V1, grid.V0 + PlanAhead - 1); ++iv)
@@ -176,7 +212,7 @@ void vtkOFB::ForEachSampleInSphere(const double center[3],
       }
       if (valid[iv % Ring])
       {
-        this->ForEachSampleInRow(ring[iv % Ring], indexed, f);
+        this->ForEachSampleInRow(ring[iv % Ring], f);
       }
     }
   }
@@ -184,12 +220,12 @@ void vtkOFB::ForEachSampleInSphere(const double center[3],
 
 //------------------------------------------------------------------------------
 template<typename Sphere, typename Functor, typename Prefetch>
-void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
-  Sphere&& sphere,
-  Functor&& f,
-  Prefetch&& prefetch) const
+void vtkOFBSphereQuery::ForEachSampleInSpheres(vtkIdType n,
+  Sphere& sphere,
+  Functor& f,
+  Prefetch& prefetch) const
 {
-  if (n <= 0 || this->CellSize <= 0.0 || this->GetNumberOfSamples() == 0)
+  if (n <= 0 || this->CellSize <= 0.0 || this->NumberOfSamples == 0)
   {
     return;
   }
@@ -206,13 +242,12 @@ void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
     double Radius;
     int NumberOfRows;
     bool Alone;
-    SphereRow Rows[MaxRows];
+    Row Rows[MaxRows];
   };
   constexpr vtkIdType PlanAhead = 2;
   constexpr vtkIdType FetchAhead = 1;
   constexpr vtkIdType Ring = PlanAhead + 1;
   Plan plans[Ring];
-  const bool indexed = this->CellIndex->GetNumberOfValues() == this->GetNumberOfSamples();
   auto plan = [&](vtkIdType k, Plan& p)
   {
     sphere(k, p.Center, p.Radius);
@@ -224,8 +259,8 @@ void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
     }
     for (int a = 0; a < 3; ++a)
     {
-      SphereGrid grid;
-      if (!this->BeginSphereGrid(a, p.Center, p.Radius, grid))
+      Grid grid;
+      if (!this->BeginGrid(a, p.Center, p.Radius, grid))
       {
         continue;
       }
@@ -236,8 +271,8 @@ void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
       }
       for (vtkIdType iv = grid.V0; iv <= grid.V1; ++iv)
       {
-        SphereRow& row = p.Rows[p.NumberOfRows];
-        if (this->SphereChord(grid, iv, row))
+        Row& row = p.Rows[p.NumberOfRows];
+        if (this->Chord(grid, iv, row))
         {
           ++p.NumberOfRows;
         }
@@ -248,7 +283,7 @@ void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
   {
     for (int j = 0; j < p.NumberOfRows; ++j)
     {
-      this->FetchSphereRow(p.Rows[j], prefetch);
+      this->FetchRow(p.Rows[j], prefetch);
     }
   };
   for (vtkIdType k = 0; k < std::min<vtkIdType>(n, PlanAhead); ++k)
@@ -278,18 +313,18 @@ void vtkOFB::ForEachSampleInSpheres(vtkIdType n,
     }
     for (int j = 0; j < p.NumberOfRows; ++j)
     {
-      this->ForEachSampleInRow(p.Rows[j], indexed, fk);
+      this->ForEachSampleInRow(p.Rows[j], fk);
     }
   }
 }
 
 //------------------------------------------------------------------------------
 template<typename Functor>
-void vtkOFB::ForEachSampleInRow(const SphereRow& row, bool indexed, Functor& f) const
+void vtkOFBSphereQuery::ForEachSampleInRow(const Row& row, Functor& f) const
 {
   // A row's samples are consecutive: where its cells hold few samples each, one
   // linear pass over them all beats a search of each cell's depth range.
-  if (indexed && row.Last - row.First <= 6 * (row.U1 - row.U0 + 1))
+  if (row.CellOf && row.Last - row.First <= 6 * (row.U1 - row.U0 + 1))
   {
     this->ForEachSampleInRowScan(row, f);
   }
@@ -301,7 +336,7 @@ void vtkOFB::ForEachSampleInRow(const SphereRow& row, bool indexed, Functor& f) 
 
 //------------------------------------------------------------------------------
 template<typename Functor>
-void vtkOFB::ForEachSampleInRowScan(const SphereRow& row, Functor& f) const
+void vtkOFBSphereQuery::ForEachSampleInRowScan(const Row& row, Functor& f) const
 {
   // Every sample of the row's cells, tested without a branch into a small batch of
   // hits, then handed to `f` in order. The squared distance is computed as in
@@ -339,7 +374,7 @@ void vtkOFB::ForEachSampleInRowScan(const SphereRow& row, Functor& f) const
 
 //------------------------------------------------------------------------------
 template<typename Functor>
-void vtkOFB::ForEachSampleInRowCells(const SphereRow& row, Functor& f) const
+void vtkOFBSphereQuery::ForEachSampleInRowCells(const Row& row, Functor& f) const
 {
   // Cell by cell: a cell's first sample at depth >= d - r by a linear scan over the
   // few samples of a typical cell, a binary search over many.
@@ -383,6 +418,13 @@ void vtkOFB::ForEachSampleInRowCells(const SphereRow& row, Functor& f) const
       }
     }
   }
+}
+
+//------------------------------------------------------------------------------
+inline vtkIdType vtkOFBSphereQuery::LowerBound(vtkIdType begin, vtkIdType end, float d) const
+{
+  return static_cast<vtkIdType>(
+    std::lower_bound(this->Depths + begin, this->Depths + end, d) - this->Depths);
 }
 
 #endif

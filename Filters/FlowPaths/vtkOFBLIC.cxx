@@ -9,6 +9,7 @@
 #include "vtkOFBArrayLength.h"
 #include "vtkOFBLICCache.h"
 #include "vtkOFBLICEnhance.h"
+#include "vtkOFBLICInternals.h"
 #include "vtkOFBLICNoise.h"
 #include "vtkOFBLICPack.h"
 #include "vtkOFBLICTracer.h"
@@ -59,7 +60,7 @@ vtkOFBLIC::vtkOFBLIC()
   , CacheStreamlines(true)
   , NumberOfMaskedSamples(0)
   , LastExecutionTime(0.0)
-  , Cache(new vtkOFBLICCache)
+  , Internals(new vtkInternals)
 {
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
@@ -69,13 +70,13 @@ vtkOFBLIC::vtkOFBLIC()
 vtkOFBLIC::~vtkOFBLIC()
 {
   this->SetNoiseArrayName(nullptr);
-  delete this->Cache;
+  delete this->Internals;
 }
 
 //------------------------------------------------------------------------------
 unsigned long vtkOFBLIC::GetCacheMemorySize() const
 {
-  const vtkOFBLICCache& c = *this->Cache;
+  const vtkOFBLICCache& c = this->Internals->Cache;
   const std::size_t bytes = c.Samples.capacity() * sizeof(vtkOFBLICSample) + c.Mask.capacity() +
     c.TileFirst.capacity() * sizeof(vtkIdType) + c.TileIds.capacity() * sizeof(vtkTypeInt32) +
     c.Covered.capacity() + c.NeighbourCount.capacity() +
@@ -90,7 +91,7 @@ unsigned long vtkOFBLIC::GetCacheMemorySize() const
 //------------------------------------------------------------------------------
 void vtkOFBLIC::ReleaseCache()
 {
-  this->Cache->Clear();
+  this->Internals->Cache.Clear();
 }
 
 //------------------------------------------------------------------------------
@@ -165,7 +166,7 @@ vtkDataArray* vtkOFBLIC::FindField(vtkOFB* input)
 //------------------------------------------------------------------------------
 bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normals)
 {
-  vtkOFBLICCache& cache = *this->Cache;
+  vtkOFBLICCache& cache = this->Internals->Cache;
   const vtkIdType n = input->GetNumberOfSamples();
   const double structure = static_cast<double>(input->GetStructureMTime());
   vtkOFBLICCacheKey samplesKey;
@@ -229,7 +230,7 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
 vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normalsIn)
 {
   const vtkIdType n = input->GetNumberOfSamples();
-  vtkOFBLICCache& cache = *this->Cache;
+  vtkOFBLICCache& cache = this->Internals->Cache;
   vtkOFBLICBuffer<vtkOFBLICSample>& samples = cache.Samples;
   vtkOFBLICBuffer<unsigned char>& mask = cache.Mask;
   samples.resize(n);
@@ -336,8 +337,8 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
 bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
 {
   const vtkIdType n = input->GetNumberOfSamples();
-  vtkOFBLICBuffer<float>& noise = this->Cache->Noise;
-  const vtkOFBLICSample* samples = this->Cache->Samples.data();
+  vtkOFBLICBuffer<float>& noise = this->Internals->Cache.Noise;
+  const vtkOFBLICSample* samples = this->Internals->Cache.Samples.data();
   noise.resize(n);
   if (this->NoiseArrayName && *this->NoiseArrayName)
   {
@@ -530,7 +531,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   this->UpdateProgress(0.05);
 
   // Convolve (Eq. 4), then the enhanced pass and the contrast stretch.
-  vtkOFBLICCache& cache = *this->Cache;
+  vtkOFBLICCache& cache = this->Internals->Cache;
   vtkOFBLICTracer tracer;
   tracer.SetOFB(input);
   tracer.Samples = cache.Samples.data();
@@ -563,7 +564,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   vtkOFBLICBuffer<float>& values = cache.Values;
   values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
-  if (!this->Convolve(tracer,
+  if (!this->Internals->Convolve(this,
+        tracer,
         keep,
         trace,
         weights,
@@ -589,7 +591,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     vtkOFBLICTracer second = tracer;
     second.NumberOfSteps = std::max(1, this->NumberOfSteps / 2);
     const std::vector<double> weights2 = this->ComputeKernel(second.NumberOfSteps);
-    if (!this->Convolve(second, keep, false, weights2, pass1.data(), values.data(), 0.5, 0.95))
+    if (!this->Internals->Convolve(
+          this, second, keep, false, weights2, pass1.data(), values.data(), 0.5, 0.95))
     {
       output->Initialize();
       return 1;

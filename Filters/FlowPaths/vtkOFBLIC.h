@@ -87,10 +87,6 @@
 #include <vector> // for the prepared field
 
 class vtkDataArray;
-class vtkOFBLICCache;
-struct vtkOFBLICRunStore;
-class vtkOFBLICTracer;
-struct vtkOFBLICTiles;
 
 class VTKOFBFLOWPATHS_EXPORT vtkOFBLIC : public vtkOFBAlgorithm
 {
@@ -371,38 +367,6 @@ protected:
   /// The kernel's 2 n + 1 weights for n steps each way (index n is t = 0).
   std::vector<double> ComputeKernel(int n) const;
 
-  /**
-   * One convolution of `input` into `output` over all samples, tile by tile, with
-   * progress from `progress0` to `progress1`. With `keep`, each sample's streamline is
-   * read from the kept runs of fast LIC, traced first (TraceTile) when `trace` is true;
-   * else every sample traces its own. False when aborted.
-   */
-  bool Convolve(const vtkOFBLICTracer& tracer,
-    bool keep,
-    bool trace,
-    const std::vector<double>& weights,
-    const float* input,
-    float* output,
-    double progress0,
-    double progress1);
-
-  /**
-   * The streamlines of the samples of one tile (fast LIC): from each sample not yet
-   * given one, a seed streamline of up to LongSteps NumberOfSteps steps each way is
-   * traced (each way stopping early once its last NumberOfSteps samples are of other
-   * tiles or already given one) and appended to `store` as a run; every sample of the
-   * tile it meets gets the window of NumberOfSteps steps each way around that meeting:
-   * `where` receives the meeting's place in the runs of the tile, `covered` marks it.
-   * `sequence` is a buffer of 2 LongSteps NumberOfSteps + 1 ids.
-   */
-  void TraceTile(const vtkOFBLICTracer& tracer,
-    const vtkOFBLICTiles& tiles,
-    vtkIdType tile,
-    vtkOFBLICRunStore& store,
-    unsigned char* covered,
-    vtkTypeInt32* where,
-    vtkTypeInt32* sequence);
-
   /// The input's arrays shared, with "LIC" (values clamped, the mask value where masked)
   /// and "LICMask" added.
   void WriteOutput(vtkOFB* input,
@@ -439,11 +403,15 @@ protected:
   bool CacheStreamlines;
   vtkIdType NumberOfMaskedSamples;
   double LastExecutionTime;
-  vtkOFBLICCache* Cache;
 
 private:
   vtkOFBLIC(const vtkOFBLIC&) = delete;
   void operator=(const vtkOFBLIC&) = delete;
+
+  // What is kept between updates (packed samples, noise, streamlines, work buffers) and
+  // the convolution passes that use it (vtkOFBLICInternals.h).
+  struct vtkInternals;
+  vtkInternals* Internals;
 };
 
 #endif

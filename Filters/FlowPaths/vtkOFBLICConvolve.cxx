@@ -3,8 +3,9 @@
 #include "vtkOFBLIC.h"
 
 #include "vtkOFB.h"
-#include "vtkOFBLICCache.h"
+#include "vtkOFBLICInternals.h"
 #include "vtkOFBLICTracer.h"
+#include "vtkOFBPrefetch.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
@@ -73,7 +74,8 @@ private:
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
+bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
+  const vtkOFBLICTracer& tracer,
   bool keep,
   bool trace,
   const std::vector<double>& weights,
@@ -82,7 +84,7 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   double progress0,
   double progress1)
 {
-  vtkOFBLICCache& cache = *this->Cache;
+  vtkOFBLICCache& cache = this->Cache;
   const unsigned char* mask = cache.Mask.data();
   const int steps = tracer.NumberOfSteps;
   const double* w = weights.data();
@@ -119,7 +121,7 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
   vtkSMPThreadLocal<std::vector<float>> localValues; // a tile's run values
   // One parallel loop over all tiles: loops over blocks of tiles would each wait for
   // their slowest tile.
-  TileProgress progress(this, numberOfTiles, progress0, progress1);
+  TileProgress progress(self, numberOfTiles, progress0, progress1);
   vtkSMPTools::For(0,
     numberOfTiles,
     1,
@@ -195,11 +197,11 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
         progress.TileDone();
       }
     });
-  if (progress.Aborted() || this->GetAbortExecute())
+  if (progress.Aborted() || self->GetAbortExecute())
   {
     return false;
   }
-  this->UpdateProgress(progress1);
+  self->UpdateProgress(progress1);
   if (fast)
   {
     for (vtkIdType t = 0; t < numberOfTiles; ++t)
@@ -214,7 +216,7 @@ bool vtkOFBLIC::Convolve(const vtkOFBLICTracer& tracer,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
+void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
   const vtkOFBLICTiles& tiles,
   vtkIdType tile,
   vtkOFBLICRunStore& store,
@@ -222,7 +224,7 @@ void vtkOFBLIC::TraceTile(const vtkOFBLICTracer& tracer,
   vtkTypeInt32* where,
   vtkTypeInt32* sequence)
 {
-  const unsigned char* mask = this->Cache->Mask.data();
+  const unsigned char* mask = this->Cache.Mask.data();
   const vtkOFBLICSample* samples = tracer.Samples;
   const int n = tracer.NumberOfSteps;
   const int m = LongSteps * n;

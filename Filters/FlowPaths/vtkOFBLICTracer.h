@@ -4,6 +4,7 @@
 #define vtkOFBLICTracer_h
 
 #include "vtkOFB.h"
+#include "vtkOFBPrefetch.h"
 #include "vtkType.h"
 
 #include <glm/glm.hpp>
@@ -45,9 +46,9 @@ struct vtkOFBLICSample
  * in a neighbourhood that stays in a core's cache).
  * Where the surface turns from one grid to another a streamline stays in its tile, which
  * it left with square tiles of one grid's cells: cubic tiles give fewer and longer seed
- * streamlines, so fewer steps a sample. The tile of a sample is that of its position (TileOf); the samples of each
- * tile, in increasing order, are listed by vtkOFBLIC::PrepareSamples (First: where each
- * tile's list starts in Ids, one entry more than tiles).
+ * streamlines, so fewer steps a sample. The tile of a sample is that of its position (TileOf); the
+ * samples of each tile, in increasing order, are listed by vtkOFBLIC::PrepareSamples (First: where
+ * each tile's list starts in Ids, one entry more than tiles).
  */
 struct vtkOFBLICTiles
 {

@@ -7,6 +7,7 @@
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBHugePages.h"
+#include "vtkOFBPrefetch.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"

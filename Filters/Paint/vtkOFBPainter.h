@@ -266,12 +266,6 @@ protected:
   /// Check the OFB and its arrays (creating "Colors" when needed); drop the
   /// history if something else changed the OFB. False (with an error) if unusable.
   bool Prepare(bool needColors, bool needNormals);
-  /// A dab at `center` with the brush's settings and `pressure`; false if not finite.
-  bool MakeDab(const double center[3], double pressure, vtkOFBDab& dab);
-  /// Paint dabs, mark the changed ranges, call Modified(); the changed count.
-  vtkIdType Paint(std::vector<vtkOFBDab>& dabs);
-  /// Each dab followed by its reflections (MirrorX, MirrorY, MirrorZ).
-  void AddMirrorImages(std::vector<vtkOFBDab>& dabs) const;
   /// Mark the samples changed since the last call modified on the OFB.
   vtkIdType Finish();
   /// Close the open undo step (sorted by sample id), dropping the redo steps.
@@ -293,6 +287,15 @@ protected:
   bool InStroke;
 
 private:
+  // The dab steps name vtkOFBDab, a type of the implementation: private, so that a
+  // subclass needs only the installed headers.
+  /// A dab at `center` with the brush's settings and `pressure`; false if not finite.
+  bool MakeDab(const double center[3], double pressure, vtkOFBDab& dab);
+  /// Paint dabs, mark the changed ranges, call Modified(); the changed count.
+  vtkIdType Paint(std::vector<vtkOFBDab>& dabs);
+  /// Each dab followed by its reflections (MirrorX, MirrorY, MirrorZ).
+  void AddMirrorImages(std::vector<vtkOFBDab>& dabs) const;
+
   vtkOFBPainter(const vtkOFBPainter&) = delete;
   void operator=(const vtkOFBPainter&) = delete;
 };

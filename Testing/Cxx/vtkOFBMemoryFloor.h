@@ -16,6 +16,7 @@
 #define vtkOFBMemoryFloor_h
 
 #include "vtkOFB.h"
+#include "vtkOFBPrefetch.h"
 #include "vtkPoints.h"
 #include "vtkSMPTools.h"
 

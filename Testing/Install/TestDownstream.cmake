@@ -20,13 +20,28 @@ foreach (file IN ITEMS
     message(FATAL_ERROR "not installed: ${file}")
   endif ()
 endforeach ()
+# Private headers stay out of the prefix, so that the example's subclasses
+# (ofbSubclass) fail to compile if an installed header needs one.
+foreach (file IN ITEMS
+    vtkOFBLICCache.h
+    vtkOFBLICInternals.h
+    vtkOFBLICTracer.h
+    vtkOFBModifiedRanges.h
+    vtkOFBPainterInternals.h
+    vtkOFBShaderStorage.h)
+  if (EXISTS "${prefix}/include/vtkofb/${file}")
+    message(FATAL_ERROR "private header installed: ${file}")
+  endif ()
+endforeach ()
 
 # The example finds this prefix only: no package registry, no build tree.
 set(configure_args
   -S "${SOURCE_DIR}/Examples/Build" -B "${example}" -G "${GENERATOR}"
   -DCMAKE_BUILD_TYPE=Release
   "-DCMAKE_PREFIX_PATH=${prefix}"
-  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
+  -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+  -DOFB_EXAMPLE_HEADER_TEST=ON)
 foreach (setting IN ITEMS CXX_COMPILER C_COMPILER)
   if (${setting})
     list(APPEND configure_args "-DCMAKE_${setting}=${${setting}}")
@@ -42,6 +57,28 @@ file(STRINGS "${example}/CMakeCache.txt" found_dir REGEX "^vtkofb_DIR:")
 expect("${found_dir}" "=${prefix}/lib/cmake/vtkofb$" "vtkofb_DIR in the prefix")
 run(build "${CMAKE_COMMAND}" --build "${example}" --parallel 2)
 
+# The example compiled against the prefix's headers, never the source or build tree's
+# (the prefix and the example lie under the build tree: they are allowed).
+file(READ "${example}/compile_commands.json" compile_commands)
+string(REGEX MATCHALL "-(I|isystem) *[^ \"]+" includes "${compile_commands}")
+set(prefix_included OFF)
+foreach (include IN LISTS includes)
+  string(REGEX REPLACE "^-(I|isystem) *" "" dir "${include}")
+  string(FIND "${dir}" "${prefix}/" in_prefix)
+  string(FIND "${dir}" "${example}" in_example)
+  string(FIND "${dir}" "${SOURCE_DIR}" in_source)
+  string(FIND "${dir}" "${BUILD_DIR}" in_build)
+  if (dir STREQUAL "${prefix}/include/vtkofb")
+    set(prefix_included ON)
+  endif ()
+  if (NOT in_prefix EQUAL 0 AND NOT in_example EQUAL 0 AND (in_source EQUAL 0 OR in_build EQUAL 0))
+    message(FATAL_ERROR "the example includes from the source or build tree: ${dir}")
+  endif ()
+endforeach ()
+if (NOT prefix_included)
+  message(FATAL_ERROR "the example does not include ${prefix}/include/vtkofb")
+endif ()
+
 # No display and no library path: the program links the installed libraries.
 run(cxx_example env -i PATH=/usr/bin:/bin "${example}/ofbInstalled" "${WORK_DIR}/sphere.ofb")
 expect("${cxx_example_output}" "[1-9][0-9]* samples" "a sample count")
@@ -49,6 +86,11 @@ expect("${cxx_example_output}" "render window class vtk[A-Za-z]*OpenGLRenderWind
   "an OpenGL render window")
 expect("${cxx_example_output}" "interactor style vtkInteractorStyleSwitch\n"
   "the interactor style of InteractionStyle's factory")
+
+# Subclasses of the algorithms, compiled against the installed headers alone.
+run(cxx_subclass env -i PATH=/usr/bin:/bin "${example}/ofbSubclass")
+expect("${cxx_subclass_output}" "[1-9][0-9]* samples sampled and convolved by subclasses"
+  "the subclasses' run")
 
 # The installed libraries find each other through $ORIGIN.
 find_program(READELF readelf)

@@ -195,6 +195,27 @@ bool StagedFiles::Check(const std::string& name, std::string& message)
   return error == 0;
 }
 
+bool StagedFiles::Incomplete(const std::string& name, std::string& message)
+{
+  int error = 0;
+  const int fd = open(this->Staged(name).c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  struct stat info;
+  if (fd >= 0 && fstat(fd, &info) == 0)
+  {
+    const std::string probe(4096, '\0');
+    error = write(fd, probe.data(), probe.size()) < 0 ? errno : 0;
+    error = error == 0 && fsync(fd) != 0 ? errno : error;
+    (void)!ftruncate(fd, info.st_size);
+  }
+  if (fd >= 0)
+  {
+    close(fd);
+  }
+  message = "cannot write '" + this->Final(name) +
+    "': " + (error != 0 ? Cause(error) : std::string("the writer stopped early"));
+  return false;
+}
+
 bool StagedFiles::Commit(const std::vector<std::string>& names, std::string& message)
 {
   for (const std::string& name : names)

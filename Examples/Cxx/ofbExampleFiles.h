@@ -50,6 +50,10 @@ public:
   bool Write(const std::string& name, const std::string& bytes, std::string& message);
   /// A staged file written by someone else (a VTK writer): present, not empty, flushed.
   bool Check(const std::string& name, std::string& message);
+  /// For a staged file found incomplete (a VTK writer that does not check its writes):
+  /// sets `message` to its cause, found by trying to write more to it (the full disk's
+  /// ENOSPC, the size limit's EFBIG), or "the writer stopped early"; returns false.
+  bool Incomplete(const std::string& name, std::string& message);
   /// Rename the staged files over their targets in this order (put the file that refers to
   /// the others last); false with `message` the reason.
   bool Commit(const std::vector<std::string>& names, std::string& message);

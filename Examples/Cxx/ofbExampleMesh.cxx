@@ -499,6 +499,18 @@ vtkSmartPointer<vtkPolyData> ReadMeshChecked(const std::string& path, std::strin
   return mesh;
 }
 
+bool CheckPLYFile(const std::string& path, std::string& message)
+{
+  struct stat info;
+  std::string problem;
+  if (stat(path.c_str(), &info) != 0 || !CheckPLY(path, info.st_size, problem))
+  {
+    message = "'" + path + "' is not a complete PLY file" + (problem.empty() ? "" : ": " + problem);
+    return false;
+  }
+  return true;
+}
+
 vtkSmartPointer<vtkPolyData> ReadSurfaceChecked(const std::string& path, std::string& message)
 {
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshChecked(path, message);

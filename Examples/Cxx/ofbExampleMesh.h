@@ -38,6 +38,10 @@ constexpr long long MaximumPLYFileBytes = 1LL << 32;
 /// with `message` the reason ("cannot read 'PATH': ...").
 vtkSmartPointer<vtkPolyData> ReadMeshChecked(const std::string& path, std::string& message);
 
+/// Whether the PLY file at `path` is complete: its header, counts and body pass the
+/// checks above (used to check a PLY file just written); false with `message` the reason.
+bool CheckPLYFile(const std::string& path, std::string& message);
+
 /// As ReadMeshChecked, as triangles (lines and vertices dropped) with point normals (not
 /// split at sharp edges: the points stay those of the file).
 vtkSmartPointer<vtkPolyData> ReadSurfaceChecked(const std::string& path, std::string& message);

@@ -3,6 +3,7 @@
 
 #include "ofbExampleFiles.h"
 #include "ofbExampleImage.h"
+#include "ofbExampleMesh.h"
 
 #include "vtkActor.h"
 #include "vtkCellArray.h"
@@ -104,11 +105,13 @@ bool WriteOBJ(vtkPolyData* surface,
   {
     return false;
   }
-  if (said != "newmtl " + stem + "\nmap_Kd " + png + "\n" ||
-    CountFaces(files.Staged(name)) != ExpectedFaces(surface))
+  if (said != "newmtl " + stem + "\nmap_Kd " + png + "\n")
   {
-    message = "cannot write '" + path + "': the written files are incomplete (disk full?)";
-    return false;
+    return files.Incomplete(mtl, message);
+  }
+  if (CountFaces(files.Staged(name)) != ExpectedFaces(surface))
+  {
+    return files.Incomplete(name, message);
   }
   return files.Commit({ png, mtl, name }, message);
 }
@@ -120,6 +123,60 @@ bool WriteBytes(const std::string& bytes, const std::string& path, std::string& 
   ofbexample::StagedFiles files(path);
   return files.Begin({ name }, message) && files.Write(name, bytes, message) &&
     files.Commit({ name }, message);
+}
+
+/**
+ * The PLY with vertex colours: vtkPLYWriter writes the staged file (VTK 9.1's writer
+ * leaves its output string empty), which is then read back through the checks of
+ * ofbExampleMesh (complete header and body) before it is renamed into place.
+ */
+bool WritePLY(vtkPolyData* probed, const std::string& path, std::string& message)
+{
+  const std::string name = SystemTools::GetFilenameName(path);
+  ofbexample::StagedFiles files(path);
+  if (!files.Begin({ name }, message))
+  {
+    return false;
+  }
+  vtkNew<FirstError> errors;
+  vtkNew<vtkPLYWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer->SetInputData(probed);
+  writer->SetFileName(files.Staged(name).c_str());
+  writer->SetArrayName("Colors");
+  writer->EnableAlphaOn();
+  if (writer->Write() == 0 || errors->Count > 0 || writer->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    message = "cannot write '" + path + "'" + errors->Suffix();
+    return false;
+  }
+  std::string problem;
+  if (!files.Check(name, message))
+  {
+    return false;
+  }
+  if (!ofbexample::CheckPLYFile(files.Staged(name), problem))
+  {
+    return files.Incomplete(name, message);
+  }
+  return files.Commit({ name }, message);
+}
+
+/// The VTP with every sample array: written into a string, then as above.
+bool WriteVTP(vtkPolyData* probed, const std::string& path, std::string& message)
+{
+  vtkNew<FirstError> errors;
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer->SetInputData(probed);
+  writer->WriteToOutputStringOn();
+  const std::string bytes = writer->Write() != 0 ? writer->GetOutputString() : "";
+  if (errors->Count > 0 || bytes.empty())
+  {
+    message = "cannot write '" + path + "'" + errors->Suffix();
+    return false;
+  }
+  return WriteBytes(bytes, path, message);
 }
 
 /// glTF 2.0 through vtkGLTFExporter, which writes a scene: the surface as the one actor of
@@ -249,32 +306,13 @@ bool ExportPainting(vtkPolyData* surface,
   probe->SetInputData(surface);
   probe->SetSourceData(ofb);
   probe->Update();
-  // Both writers write into a string, written as a staged file and renamed into place.
-  std::string bytes;
-  if (errors->Count == 0 && ext == ".ply")
-  {
-    vtkNew<vtkPLYWriter> writer;
-    writer->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->SetInputConnection(probe->GetOutputPort());
-    writer->WriteToOutputStringOn();
-    writer->SetArrayName("Colors");
-    writer->EnableAlphaOn();
-    bytes = writer->Write() != 0 ? writer->GetOutputString() : "";
-  }
-  else if (errors->Count == 0)
-  {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->SetInputConnection(probe->GetOutputPort());
-    writer->WriteToOutputStringOn();
-    bytes = writer->Write() != 0 ? writer->GetOutputString() : "";
-  }
-  if (errors->Count > 0 || bytes.empty())
+  if (errors->Count > 0)
   {
     message = "cannot export '" + path + "'" + errors->Suffix();
     return false;
   }
-  if (!WriteBytes(bytes, path, message))
+  if (!(ext == ".ply" ? WritePLY(probe->GetOutput(), path, message)
+                      : WriteVTP(probe->GetOutput(), path, message)))
   {
     return false;
   }

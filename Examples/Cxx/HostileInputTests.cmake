@@ -111,6 +111,12 @@ add_test(NAME OFB.Examples.Hostile.Exit.DemoOutputIsDirectory
 add_test(NAME OFB.Examples.Hostile.Exit.PaintImageDiskFull
   COMMAND ${_expect} --file-size-limit 2000 "cannot write '[^']*full.png': File too large" 60
     $<TARGET_FILE:OFBPaint> ${_small} --strokes "${_strokes}" --image "${_hostile}/full.png")
+# OFBLIC's export is OFBPaint's: a full disk fails it with the cause.
+add_test(NAME OFB.Examples.Hostile.Exit.LICExportDiskFull
+  COMMAND ${_expect} --file-size-limit 200000 "cannot write '[^']*lic-full.obj': File too large"
+    120 $<TARGET_FILE:OFBLIC> --resolution 64 --size 64 --image "${_hostile}/lic-view.png"
+    --export "${_hostile}/lic-full.obj")
+list(APPEND _hostile_tests OFB.Examples.Hostile.Exit.LICExportDiskFull)
 list(APPEND _hostile_tests OFB.Examples.Hostile.Exit.ParticlesImageIsDirectory
   OFB.Examples.Hostile.Exit.ParticlesImageReadOnly OFB.Examples.Hostile.Exit.ParticlesTooMany
   OFB.Examples.Hostile.Exit.ParticlesUnknownColor OFB.Examples.Hostile.Exit.ParticlesUnknownField

@@ -33,6 +33,7 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
+#include "ofbExampleErrors.h"
 #include "ofbExampleFiles.h"
 #include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
@@ -58,25 +59,7 @@ const double StripePeriod = 8.0;
 const double StripeWidth = 2.0;
 const int TimedRenders = 5;
 
-// Counts the error events of the objects it observes and keeps the last message, so that
-// a failed read, build or write is reported even when the pipeline itself does not fail.
-class ErrorCounter : public vtkCommand
-{
-public:
-  static ErrorCounter* New() { return new ErrorCounter; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    ++this->Count;
-    // VTK's text is "ERROR: In <file>, line <n>\n<class> (<address>): <message>\n".
-    std::string text = data ? static_cast<const char*>(data) : "";
-    const std::string::size_type start = text.find("): ");
-    text = start == std::string::npos ? text : text.substr(start + 3);
-    this->Last = text.substr(0, text.find_last_not_of(" \n") + 1);
-  }
-  std::string Suffix() const { return this->Last.empty() ? std::string() : ": " + this->Last; }
-  int Count = 0;
-  std::string Last;
-};
+using ErrorCounter = ofbexample::FirstError; // counts error events, keeps the first
 
 void Usage(const char* argv0)
 {
@@ -198,6 +181,7 @@ int ParseOptions(int argc, char* argv[], Options& options)
     if (!check.first)
     {
       std::cerr << "OFBDemo: " << check.second << "\n";
+      Usage(argv[0]);
       return EXIT_FAILURE;
     }
   }

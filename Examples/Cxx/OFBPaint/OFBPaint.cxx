@@ -43,6 +43,7 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
+#include "ofbExampleErrors.h"
 #include "ofbExampleFiles.h"
 #include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
@@ -69,22 +70,7 @@ const char* const PaletteNames[9] = { "red",
   "white",
   "black" };
 
-// Counts error events and keeps the last message (VTK's text without its file and line).
-class ErrorCounter : public vtkCommand
-{
-public:
-  static ErrorCounter* New() { return new ErrorCounter; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    ++this->Count;
-    std::string text = data ? static_cast<const char*>(data) : "";
-    const std::string::size_type start = text.find("): ");
-    text = start == std::string::npos ? text : text.substr(start + 3);
-    this->Last = text.substr(0, text.find_last_not_of(" \n") + 1);
-  }
-  int Count = 0;
-  std::string Last;
-};
+using ErrorCounter = ofbexample::FirstError; // counts error events, keeps the first
 
 void Usage(const char* argv0)
 {
@@ -178,7 +164,7 @@ bool PaintApp::BuildOFB(int resolution)
   if (errors->Count > 0 || !ofb || ofb->GetNumberOfSamples() == 0)
   {
     std::cerr << "OFBPaint: building the OFB at resolution " << resolution << " failed"
-              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+              << (errors->Text.empty() ? "" : ": " + errors->Text) << "\n";
     return false;
   }
   this->UseOFB(ofb);
@@ -211,7 +197,7 @@ bool PaintApp::LoadOFB(const std::string& path)
   if (errors->Count > 0 || !ofb || ofb->GetNumberOfSamples() == 0)
   {
     std::cerr << "OFBPaint: cannot load '" << path << "'"
-              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+              << (errors->Text.empty() ? "" : ": " + errors->Text) << "\n";
     return false;
   }
   // An OFB of another surface would colour this one with unrelated paint: its frame is the
@@ -247,7 +233,7 @@ bool PaintApp::SaveOFB(const std::string& path)
   if (!ok)
   {
     std::cerr << "OFBPaint: cannot save '" << path << "'"
-              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+              << (errors->Text.empty() ? "" : ": " + errors->Text) << "\n";
   }
   return ok;
 }
@@ -571,7 +557,7 @@ int PaintApp::RunInteractive(const std::string& play)
     recorder->Play();
     if (errors->Count > 0)
     {
-      std::cerr << "OFBPaint: cannot play '" << play << "': " << errors->Last << "\n";
+      std::cerr << "OFBPaint: cannot play '" << play << "': " << errors->Text << "\n";
       return EXIT_FAILURE;
     }
     return EXIT_SUCCESS;

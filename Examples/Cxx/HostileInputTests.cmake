@@ -41,9 +41,12 @@ list(APPEND _hostile_tests OFB.Examples.Hostile.Decal.GoodImage)
 
 # Meshes: refused before VTK's readers (PLY, STL) or filters (every format) see them; the
 # PLY header claiming 10^9 vertices fails at once.
-set(_meshes bad-index.obj bad-index.ply truncated.ply billion.ply truncated.stl)
-set(_mesh_messages "uses point 99998, not one of the 3 points" "vertex index 99999"
-  "cut short" "1000000000 vertex elements, over the limit" "claiming 1000000 triangles")
+set(_meshes bad-index.obj bad-texture-index.obj bad-normal-index.obj bad-index.ply truncated.ply
+  billion.ply truncated.stl bad-index.vtp)
+set(_mesh_messages "vertex index 99999, not one of the 3 vertices"
+  "texture coordinate index 99, not one of the 1" "normal index 7, not one of the 1"
+  "vertex index 99999" "cut short" "1000000000 vertex elements, over the limit"
+  "claiming 1000000 triangles" "polygon 0 uses point 99999, not one of the 3 points")
 foreach (_mesh IN LISTS _meshes)
   list(FIND _meshes "${_mesh}" _index)
   list(GET _mesh_messages ${_index} _message)
@@ -58,7 +61,7 @@ add_test(NAME OFB.Examples.Hostile.Mesh.OFBLIC
   COMMAND ${_expect} "OFBLIC: cannot read .*vertex index 99999" 1
     $<TARGET_FILE:OFBLIC> "${_hostile}/bad-index.ply" --image "${_hostile}/out.png")
 add_test(NAME OFB.Examples.Hostile.Mesh.OFBParticles
-  COMMAND ${_expect} "OFBParticles: cannot read .*not one of the 3 points" 1
+  COMMAND ${_expect} "OFBParticles: cannot read .*not one of the 3 vertices" 1
     $<TARGET_FILE:OFBParticles> "${_hostile}/bad-index.obj" --image "${_hostile}/out.png")
 add_test(NAME OFB.Examples.Hostile.Mesh.OFBDemo
   COMMAND ${_expect} "OFBDemo: cannot read .*1000000000 vertex" 1

@@ -52,6 +52,18 @@ def images():
     }
 
 
+VTP = """<?xml version="1.0"?>
+<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian" header_type="UInt64">
+<PolyData><Piece NumberOfPoints="3" NumberOfVerts="0" NumberOfLines="0" NumberOfStrips="0"
+ NumberOfPolys="1">
+<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0
+</DataArray></Points>
+<Polys><DataArray type="Int64" Name="connectivity" format="ascii">0 1 99999</DataArray>
+<DataArray type="Int64" Name="offsets" format="ascii">3</DataArray></Polys>
+</Piece></PolyData></VTKFile>
+"""
+
+
 def meshes():
     tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
     ply_ascii = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
@@ -64,6 +76,9 @@ def meshes():
     body = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack("<B3i", 3, 0, 1, 2)
     return {
         "bad-index.obj": tri + "f 1 2 99999\n",
+        "bad-texture-index.obj": tri + "vt 0 0\nf 1/1 2/99 3/1\n",
+        "bad-normal-index.obj": tri + "vn 0 0 1\nf 1//1 2//1 3//7\n",
+        "bad-index.vtp": VTP,
         "bad-index.ply": ply_ascii + "3 0 1 99999\n",
         "truncated.ply": (binary_header.encode() + body)[:-7],
         "billion.ply": ("ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\n"

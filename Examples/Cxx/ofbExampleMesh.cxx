@@ -366,6 +366,106 @@ bool CheckPLY(const std::string& path, long long fileSize, std::string& problem)
       Fail(problem, "vtkPLYReader cannot read this PLY file"));
 }
 
+/**
+ * The OBJ's face, line and point elements refer to vertices, texture coordinates and
+ * normals the file has (vtkOBJReader indexes its arrays with them unchecked: a texture
+ * coordinate or normal index past the end crashes it). Negative indices count back from
+ * the last element read; 0 is invalid.
+ */
+class OBJIndexCheck
+{
+public:
+  bool Run(const std::string& path, std::string& problem)
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    for (long long number = 1; std::getline(in, line); ++number)
+    {
+      const size_t start = line.find_first_not_of(" \t");
+      if (start == std::string::npos || line.size() - start < 2)
+      {
+        continue;
+      }
+      const char c0 = line[start], c1 = line[start + 1];
+      const bool blank = c1 == ' ' || c1 == '\t';
+      if (c0 == 'v' && (blank || ((c1 == 't' || c1 == 'n') && line.size() > start + 2)))
+      {
+        ++this->Count[blank ? 0 : (c1 == 't' ? 1 : 2)];
+      }
+      else if ((c0 == 'f' || c0 == 'l' || c0 == 'p') && blank &&
+        !this->Element(line.c_str() + start + 2, number, problem))
+      {
+        return false;
+      }
+    }
+    for (int kind = 0; kind < 3; ++kind)
+    {
+      if (this->Largest[kind] > this->Count[kind])
+      {
+        return this->Bad(kind, this->Largest[kind], this->LargestLine[kind], problem);
+      }
+    }
+    return true;
+  }
+
+private:
+  /// The "v/vt/vn" groups of one element line.
+  bool Element(const char* text, long long number, std::string& problem)
+  {
+    while (*text)
+    {
+      while (*text == ' ' || *text == '\t' || *text == '\r')
+      {
+        ++text;
+      }
+      for (int kind = 0; kind < 3 && *text && *text != ' ' && *text != '\t' && *text != '\r';
+           ++kind)
+      {
+        char* end = nullptr;
+        const long long index = std::strtoll(text, &end, 10);
+        if (end != text && !this->Index(kind, index, number, problem))
+        {
+          return false;
+        }
+        text = *end == '/' ? end + 1 : end;
+        if (end == text && *end != '/' && *end && *end != ' ' && *end != '\t' && *end != '\r')
+        {
+          return Fail(problem, "OBJ line " + std::to_string(number) + ": a bad element");
+        }
+      }
+    }
+    return true;
+  }
+
+  bool Index(int kind, long long index, long long number, std::string& problem)
+  {
+    if (index == 0 || (index < 0 && -index > this->Count[kind]))
+    {
+      return this->Bad(kind, index, number, problem);
+    }
+    if (index > this->Largest[kind])
+    {
+      this->Largest[kind] = index;
+      this->LargestLine[kind] = number;
+    }
+    return true;
+  }
+
+  bool Bad(int kind, long long index, long long number, std::string& problem) const
+  {
+    const char* names[3] = { "vertex", "texture coordinate", "normal" };
+    const char* plural[3] = { "vertices", "texture coordinates", "normals" };
+    return Fail(problem,
+      "OBJ line " + std::to_string(number) + ": " + names[kind] + " index " +
+        std::to_string(index) + ", not one of the " + std::to_string(this->Count[kind]) + " " +
+        plural[kind]);
+  }
+
+  long long Count[3] = { 0, 0, 0 };
+  long long Largest[3] = { 0, 0, 0 };
+  long long LargestLine[3] = { 0, 0, 0 };
+};
+
 /// A binary STL has exactly 84 + 50 x (its triangle count) bytes; an ASCII one starts with
 /// "solid".
 bool CheckSTL(const std::string& path, long long fileSize, std::string& problem)
@@ -439,7 +539,8 @@ vtkSmartPointer<vtkAbstractPolyDataReader> MakeReader(const std::string& path,
   const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
   if (ext == ".obj")
   {
-    return vtkSmartPointer<vtkOBJReader>::New();
+    OBJIndexCheck check;
+    return check.Run(path, problem) ? vtkSmartPointer<vtkOBJReader>::New() : nullptr;
   }
   if (ext == ".ply")
   {

@@ -13,6 +13,9 @@
  *   least two bytes) before anything else is read; then the body is walked element by
  *   element (at most MaximumPLYFileBytes): every list fits in the file and every face's
  *   vertex index lies in [0, vertices);
+ * - OBJ: every face, line and point element's vertex, texture coordinate and normal index
+ *   refers to one the file has (vtkOBJReader crashes on a texture coordinate or normal
+ *   index past the end);
  * - binary STL: 84 + 50 x (its triangle count) bytes exactly (an ASCII STL starts with
  *   "solid");
  * - after reading: no error event from the reader, finite point coordinates, every cell's

@@ -238,12 +238,31 @@ bool InflatePNG(const std::vector<std::pair<const unsigned char*, uint32_t>>& id
   return false;
 }
 
+/// Both sides in [1, MaximumImageSide] and at most `maxPixels` pixels.
+bool CheckSize(const Header& header, long long maxPixels, std::string& problem)
+{
+  const long long side = ofbexample::MaximumImageSide;
+  if (header.Width < 1 || header.Height < 1)
+  {
+    problem = "a claimed size of " + std::to_string(header.Width) + " x " +
+      std::to_string(header.Height) + " (a side of 0)";
+    return false;
+  }
+  if (header.Width > side || header.Height > side || header.Width * header.Height > maxPixels)
+  {
+    problem = "a claimed size of " + std::to_string(header.Width) + " x " +
+      std::to_string(header.Height) + ", over the limit of " + std::to_string(side) +
+      " a side and " + std::to_string(maxPixels) + " pixels";
+    return false;
+  }
+  return true;
+}
+
 /// PNG: signature, chunks and their CRCs, IHDR, PLTE, IEND, then the image data.
 bool CheckPNG(const std::vector<unsigned char>& b,
   long long maxPixels,
   Header& header,
-  std::string& problem,
-  bool (*checkSize)(const Header&, long long, std::string&))
+  std::string& problem)
 {
   size_t at = 8;
   int bitsPerPixel = 0, colorType = -1;
@@ -294,7 +313,7 @@ bool CheckPNG(const std::vector<unsigned char>& b,
         problem = "an invalid bit depth, colour type, compression, filter or interlace method";
         return false;
       }
-      if (!checkSize(header, maxPixels, problem))
+      if (!CheckSize(header, maxPixels, problem))
       {
         return false;
       }
@@ -515,26 +534,6 @@ bool CheckPNM(const std::vector<unsigned char>& b, Header& header, std::string& 
   return true;
 }
 
-/// Both sides in [1, MaximumImageSide] and at most `maxPixels` pixels.
-bool CheckSize(const Header& header, long long maxPixels, std::string& problem)
-{
-  const long long side = ofbexample::MaximumImageSide;
-  if (header.Width < 1 || header.Height < 1)
-  {
-    problem = "a claimed size of " + std::to_string(header.Width) + " x " +
-      std::to_string(header.Height) + " (a side of 0)";
-    return false;
-  }
-  if (header.Width > side || header.Height > side || header.Width * header.Height > maxPixels)
-  {
-    problem = "a claimed size of " + std::to_string(header.Width) + " x " +
-      std::to_string(header.Height) + ", over the limit of " + std::to_string(side) +
-      " a side and " + std::to_string(maxPixels) + " pixels";
-    return false;
-  }
-  return true;
-}
-
 vtkSmartPointer<vtkImageReader2> MakeReader(Format format)
 {
   switch (format)
@@ -564,7 +563,7 @@ bool CheckHeader(const std::vector<unsigned char>& bytes,
   switch (format)
   {
     case Format::PNG:
-      return CheckPNG(bytes, maxPixels, header, problem, CheckSize);
+      return CheckPNG(bytes, maxPixels, header, problem);
     case Format::JPEG:
       return CheckJPEG(bytes, header, problem) && CheckSize(header, maxPixels, problem);
     case Format::BMP:

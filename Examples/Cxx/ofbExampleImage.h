@@ -18,8 +18,8 @@
  *   value of at most 255 whose pixels fit in the file;
  * - both sides at least 1 and at most MaximumImageSide, and at most `maxPixels` pixels;
  * - other formats (TIFF, ASCII PNM, ...) are refused;
- * - after decoding: no error event, the reader's ErrorCode 0, and an image of the size and
- *   component count the header gave.
+ * - after decoding: no error event, the reader's ErrorCode 0, and an image of the size the
+ *   header gave, with scalars.
  *
  * Every image the applications read goes through here (a later move to another image
  * library replaces this file alone).

@@ -309,11 +309,17 @@ private:
 
   static double Decode(const PLYType& type, const unsigned char* b)
   {
-    if (type.Float)
+    if (type.Float && type.Size == 4)
     {
       float f;
+      std::memcpy(&f, b, 4);
+      return f;
+    }
+    if (type.Float)
+    {
       double d;
-      return type.Size == 4 ? (std::memcpy(&f, b, 4), f) : (std::memcpy(&d, b, 8), d);
+      std::memcpy(&d, b, 8);
+      return d;
     }
     switch (type.Size)
     {
@@ -561,9 +567,10 @@ vtkSmartPointer<vtkPolyData> ReadMeshChecked(const std::string& path, std::strin
 {
   struct stat info;
   std::string problem;
-  if (stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode))
+  const bool found = stat(path.c_str(), &info) == 0;
+  if (!found || !S_ISREG(info.st_mode))
   {
-    problem = stat(path.c_str(), &info) != 0
+    problem = !found
       ? (errno == ENOENT ? "no such file" : std::strerror(errno))
       : (S_ISDIR(info.st_mode) ? "a directory, not a mesh file" : "not a regular file");
     message = "cannot read '" + path + "': " + problem;

@@ -9,7 +9,6 @@
 //
 // Without a mesh it reads Testing/Data/stanford-bunny.obj of the source tree.
 
-#include "vtkAbstractPolyDataReader.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -17,13 +16,10 @@
 #include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkOFB.h"
 #include "vtkOFBBuilder.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBToPolyData.h"
-#include "vtkPLYReader.h"
-#include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -37,12 +33,14 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
+#include "ofbExampleErrors.h"
+#include "ofbExampleFiles.h"
+#include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -61,25 +59,7 @@ const double StripePeriod = 8.0;
 const double StripeWidth = 2.0;
 const int TimedRenders = 5;
 
-// Counts the error events of the objects it observes and keeps the last message, so that
-// a failed read, build or write is reported even when the pipeline itself does not fail.
-class ErrorCounter : public vtkCommand
-{
-public:
-  static ErrorCounter* New() { return new ErrorCounter; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    ++this->Count;
-    // VTK's text is "ERROR: In <file>, line <n>\n<class> (<address>): <message>\n".
-    std::string text = data ? static_cast<const char*>(data) : "";
-    const std::string::size_type start = text.find("): ");
-    text = start == std::string::npos ? text : text.substr(start + 3);
-    this->Last = text.substr(0, text.find_last_not_of(" \n") + 1);
-  }
-  std::string Suffix() const { return this->Last.empty() ? std::string() : ": " + this->Last; }
-  int Count = 0;
-  std::string Last;
-};
+using ErrorCounter = ofbexample::FirstError; // counts error events, keeps the first
 
 void Usage(const char* argv0)
 {
@@ -92,76 +72,6 @@ void Usage(const char* argv0)
                "samples coloured by grid (X red, Y green, Z blue) and the surface drawn by\n"
                "vtkOFBPolyDataMapper (lookup nearest by default) from an OFB paint of the grid\n"
                "colours with fine stripes.\n";
-}
-
-// VTK 9.1's PLY reader crashes on a truncated file: check that the header is complete and
-// that the body is at least as long as its elements need (binary files; lists counted with
-// their smallest possible length) or has a line per element (ASCII files).
-bool CheckPLY(const std::string& path, std::string& error)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
-  {
-    error = "not a PLY file";
-    return false;
-  }
-  // clang-format off
-  static const std::map<std::string, int> sizes = { { "char", 1 }, { "uchar", 1 }, { "int8", 1 },
-    { "uint8", 1 }, { "short", 2 }, { "ushort", 2 }, { "int16", 2 }, { "uint16", 2 }, { "int", 4 },
-    { "uint", 4 }, { "int32", 4 }, { "uint32", 4 }, { "float", 4 }, { "float32", 4 },
-    { "double", 8 }, { "float64", 8 } };
-  // clang-format on
-  bool ascii = false, complete = false;
-  long long elements = 0, count = 0, minBytes = 0;
-  while (!complete && std::getline(in, line))
-  {
-    line.erase(line.find_last_not_of('\r') + 1);
-    std::istringstream words(line);
-    std::string key, a, b, c;
-    words >> key >> a;
-    bool bad = false;
-    if (key == "format")
-    {
-      ascii = a == "ascii";
-    }
-    else if (key == "element")
-    {
-      bad = !(words >> count) || count < 0;
-      elements += bad ? 0 : count;
-    }
-    else if (key == "property")
-    {
-      // A list is sized by its count type b, and needs a valid item type c.
-      const std::string type = a == "list" && (words >> b >> c) && sizes.count(c) ? b : a;
-      bad = !sizes.count(type);
-      minBytes += bad ? 0 : count * sizes.at(type);
-    }
-    if (bad)
-    {
-      error = "bad " + key + " line '" + line + "'";
-      return false;
-    }
-    complete = key == "end_header";
-  }
-  if (!complete)
-  {
-    error = "the PLY header has no end_header";
-    return false;
-  }
-  long long lines = 0;
-  while (ascii && lines < elements && std::getline(in, line))
-  {
-    lines += line.find_first_not_of(" \t\r") != std::string::npos;
-  }
-  const std::streamoff body = in.tellg();
-  in.seekg(0, std::ios::end);
-  if (ascii ? lines < elements : in.tellg() - body < minBytes)
-  {
-    error = "the file is truncated";
-    return false;
-  }
-  return true;
 }
 
 // Signed volume enclosed by the polygons (fan-triangulated): negative when the faces wind
@@ -184,41 +94,6 @@ double SignedVolume(vtkPolyData* mesh)
     }
   }
   return volume;
-}
-
-vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error)
-{
-  const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
-  vtkSmartPointer<vtkAbstractPolyDataReader> reader;
-  if (!SystemTools::FileExists(path, true))
-  {
-    error = "no such file";
-  }
-  else if (ext == ".ply")
-  {
-    reader = CheckPLY(path, error) ? vtkSmartPointer<vtkPLYReader>::New() : nullptr;
-  }
-  else if (ext == ".obj")
-  {
-    reader = vtkSmartPointer<vtkOBJReader>::New();
-  }
-  else
-  {
-    error = "unsupported extension '" + ext + "' (use .obj or .ply)";
-  }
-  if (!reader)
-  {
-    return nullptr;
-  }
-  vtkNew<ErrorCounter> errors;
-  reader->AddObserver(vtkCommand::ErrorEvent, errors);
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
-  error = errors->Count > 0
-    ? (errors->Last.empty() ? "the reader failed" : errors->Last)
-    : (!mesh || mesh->GetNumberOfPolys() == 0 ? "no polygons in the file" : "");
-  return error.empty() ? mesh : nullptr;
 }
 
 vtkSmartPointer<vtkTextActor> MakeCaption(const std::string& text)
@@ -306,6 +181,7 @@ int ParseOptions(int argc, char* argv[], Options& options)
     if (!check.first)
     {
       std::cerr << "OFBDemo: " << check.second << "\n";
+      Usage(argv[0]);
       return EXIT_FAILURE;
     }
   }
@@ -533,7 +409,8 @@ struct Scene
   }
 };
 
-// Write the window into the PNG `path`; false after a message.
+// Write the window into the PNG `path` (staged and renamed into place); false after a
+// message.
 bool WritePicture(vtkRenderWindow* window, const Options& options)
 {
   const std::string& path = options.OutputPath;
@@ -541,15 +418,10 @@ bool WritePicture(vtkRenderWindow* window, const Options& options)
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
-  vtkNew<ErrorCounter> writeErrors;
-  vtkNew<vtkPNGWriter> writer;
-  writer->AddObserver(vtkCommand::ErrorEvent, writeErrors);
-  writer->SetFileName(path.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  if (writeErrors->Count > 0 || !SystemTools::FileExists(path, true))
+  std::string message;
+  if (!ofbexample::WritePNG(grab, path, message))
   {
-    std::cerr << "OFBDemo: cannot write '" << path << "'" << writeErrors->Suffix() << "\n";
+    std::cerr << "OFBDemo: " << message << "\n";
     return false;
   }
   std::cout << "Wrote " << SystemTools::CollapseFullPath(path) << " (" << options.Width << " x "
@@ -569,10 +441,10 @@ int main(int argc, char* argv[])
 
   // 1. Read the mesh.
   std::string readError;
-  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(options.MeshPath, readError);
+  vtkSmartPointer<vtkPolyData> mesh = ofbexample::ReadMeshChecked(options.MeshPath, readError);
   if (!mesh)
   {
-    std::cerr << "OFBDemo: cannot read mesh '" << options.MeshPath << "': " << readError << "\n";
+    std::cerr << "OFBDemo: " << readError << "\n";
     return EXIT_FAILURE;
   }
   std::cout << "Mesh:              " << options.MeshPath << "\n"

@@ -36,10 +36,8 @@
 #include "vtkOFBLIC.h"
 #include "vtkOFBMapToColors.h"
 #include "vtkOFBPolyDataMapper.h"
-#include "vtkOFBReadMesh.h" // Testing/Cxx: OBJ or PLY, shared with the tests
 #include "vtkOFBSampler.h"
 #include "vtkObjectFactory.h"
-#include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
@@ -49,6 +47,9 @@
 #include "vtkTextProperty.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "ofbExampleErrors.h"
+#include "ofbExampleFiles.h"
+#include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
 #include "ofbPaintExport.h" // OFBPaint's export, shared
 
@@ -71,12 +72,13 @@ struct App
   vtkNew<vtkTextActor> Text;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkOFBMapToColors> Colors;  // the colours shown, for export
-  vtkSmartPointer<vtkPolyData> Mesh; // the surface drawn
-  std::string ExportPath;            // key x
-  std::string ExportMessage;         // what the last export said
-  int ColorMode = 0;                 // 0 map, 1 blend, 2 LIC alone
-  int Frame = 0;                     // animation frame, 0-9
+  vtkNew<vtkOFBMapToColors> Colors;      // the colours shown, for export
+  vtkNew<ofbexample::FirstError> Errors; // of the sampler, the LIC, the colours and the mapper
+  vtkSmartPointer<vtkPolyData> Mesh;     // the surface drawn
+  std::string ExportPath;                // key x
+  std::string ExportMessage;             // what the last export said
+  int ColorMode = 0;                     // 0 map, 1 blend, 2 LIC alone
+  int Frame = 0;                         // animation frame, 0-9
   bool Animating = false;
   bool Deferred = false; // --keys: apply the settings, compute and draw once at the end
 
@@ -196,6 +198,12 @@ struct App
     this->Colors->SetColoring(this->Mapper->GetColoring());
     this->Colors->SetOutputArrayName("Colors"); // what the export takes as the paint
     this->Colors->Update();
+    if (this->Errors->Count > 0)
+    {
+      this->ExportMessage = "cannot export '" + this->ExportPath + "'" + this->Errors->Suffix();
+      std::cerr << "OFBLIC: " << this->ExportMessage << "\n";
+      return false;
+    }
     const bool ok = ofbpaint::ExportPainting(
       this->Mesh, this->Colors->GetOutput(), this->ExportPath, 4096, this->ExportMessage);
     (ok ? std::cout : std::cerr) << "OFBLIC: " << this->ExportMessage << "\n";
@@ -272,19 +280,21 @@ void AddField(vtkPolyData* mesh)
 int WriteImage(App& app, const std::string& path)
 {
   app.Refresh();
-  if (!app.Mapper->GetLastRenderUsedOFB() ||
+  if (app.Errors->Count > 0 || !app.Mapper->GetLastRenderUsedOFB() ||
     !app.LIC->GetOutput()->GetSampleData()->GetArray("LIC"))
   {
-    std::cerr << "OFBLIC: the LIC was not drawn.\n";
+    std::cerr << "OFBLIC: the LIC was not drawn" << app.Errors->Suffix() << "\n";
     return 1;
   }
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(app.Window);
   grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
+  std::string message;
+  if (!ofbexample::WritePNG(grab, path, message))
+  {
+    std::cerr << "OFBLIC: " << message << "\n";
+    return 1;
+  }
   std::cout << "wrote " << path << "\n";
   return 0;
 }
@@ -357,10 +367,11 @@ int main(int argc, char* argv[])
               << image << ": give them different names.\n";
     return 1;
   }
-  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(meshPath);
+  std::string readError;
+  vtkSmartPointer<vtkPolyData> mesh = ofbexample::ReadMeshChecked(meshPath, readError);
   if (!mesh)
   {
-    std::cerr << "OFBLIC: cannot read a surface from " << meshPath << "\n";
+    std::cerr << "OFBLIC: " << readError << "\n";
     return 1;
   }
   AddField(mesh);
@@ -368,6 +379,10 @@ int main(int argc, char* argv[])
   App app;
   app.Mesh = mesh;
   app.ExportPath = !exportPath.empty() ? exportPath : ofbpaint::DefaultExportPath(meshPath, "lic");
+  app.Sampler->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  app.LIC->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  app.Colors->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  app.Mapper->AddObserver(vtkCommand::ErrorEvent, app.Errors);
   app.Sampler->SetInputData(mesh);
   app.Sampler->SetResolution(resolution);
   app.LIC->SetInputConnection(app.Sampler->GetOutputPort());
@@ -397,9 +412,10 @@ int main(int argc, char* argv[])
   app.Window->SetSize(size, size);
   app.Window->SetWindowName("OFBLIC: surface LIC on the OFB");
   app.LIC->Update();
-  if (app.LIC->GetOutput()->GetNumberOfSamples() == 0)
+  if (app.Errors->Count > 0 || app.LIC->GetOutput()->GetNumberOfSamples() == 0)
   {
-    std::cerr << "OFBLIC: no LIC of " << meshPath << " (its OFB could not be built)\n";
+    std::cerr << "OFBLIC: no LIC of " << meshPath << " (its OFB could not be built)"
+              << app.Errors->Suffix() << "\n";
     return 1;
   }
   app.Renderer->ResetCamera();

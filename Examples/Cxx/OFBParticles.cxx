@@ -23,9 +23,7 @@
 #include "vtkOFB.h"
 #include "vtkOFBParticleAdvector.h"
 #include "vtkOFBPolyDataMapper.h"
-#include "vtkOFBReadMesh.h" // Testing/Cxx: OBJ or PLY, shared with the tests
 #include "vtkOFBSampler.h"
-#include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -39,6 +37,9 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "ofbExampleErrors.h"
+#include "ofbExampleFiles.h"
+#include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
 
 #include <cmath>
@@ -66,6 +67,24 @@ struct Options
   bool Reveal = false;
 };
 
+// The colour mode named `name`, or -1 for an unknown name.
+int ColorMode(const std::string& name)
+{
+  if (name == "constant")
+  {
+    return vtkOFBParticleAdvector::COLOR_CONSTANT;
+  }
+  if (name == "seeds")
+  {
+    return vtkOFBParticleAdvector::COLOR_FROM_SEEDS;
+  }
+  if (name == "scalar")
+  {
+    return vtkOFBParticleAdvector::COLOR_BY_SCALAR;
+  }
+  return name == "periodic" ? vtkOFBParticleAdvector::COLOR_PERIODIC : -1;
+}
+
 bool Parse(int argc, char* argv[], Options& o)
 {
   bool ok = true; // false once a value is not a number in its range
@@ -76,10 +95,12 @@ bool Parse(int argc, char* argv[], Options& o)
     if (a == "--field" && more)
     {
       o.Field = argv[++i];
+      ok = (o.Field == "rotation" || o.Field == "height" || o.Field == "mesh") && ok;
     }
     else if (a == "--color" && more)
     {
       o.Color = argv[++i];
+      ok = ColorMode(o.Color) >= 0 && ok;
     }
     else if (a == "--image" && more)
     {
@@ -167,23 +188,6 @@ bool MakeField(vtkPolyData* mesh, const std::string& kind, const double up[3])
   }
   mesh->GetPointData()->SetVectors(field);
   return kind == "rotation" || kind == "height";
-}
-
-int ColorMode(const std::string& name)
-{
-  if (name == "constant")
-  {
-    return vtkOFBParticleAdvector::COLOR_CONSTANT;
-  }
-  if (name == "seeds")
-  {
-    return vtkOFBParticleAdvector::COLOR_FROM_SEEDS;
-  }
-  if (name == "scalar")
-  {
-    return vtkOFBParticleAdvector::COLOR_BY_SCALAR;
-  }
-  return vtkOFBParticleAdvector::COLOR_PERIODIC;
 }
 
 // The OFB's paint back to its start: white, or dark and transparent for reveal.
@@ -274,10 +278,11 @@ int main(int argc, char* argv[])
                  "  CELLS 0.01-1000; W and H 64-8192; the view-up not zero\n";
     return 1;
   }
-  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(o.Mesh);
+  std::string readError;
+  vtkSmartPointer<vtkPolyData> mesh = ofbexample::ReadMeshChecked(o.Mesh, readError);
   if (!mesh)
   {
-    std::cerr << "Cannot read a surface from " << o.Mesh << "\n";
+    std::cerr << "OFBParticles: " << readError << "\n";
     return 1;
   }
   if (!MakeField(mesh, o.Field, o.ViewUp))
@@ -294,13 +299,17 @@ int main(int argc, char* argv[])
   }
   mesh->GetPointData()->AddArray(height);
 
+  // The errors of every filter it runs: one makes the run fail.
+  vtkNew<ofbexample::FirstError> errors;
   vtkNew<vtkOFBSampler> sampler;
+  sampler->AddObserver(vtkCommand::ErrorEvent, errors);
   sampler->SetInputData(mesh);
   sampler->SetResolution(o.Resolution);
   sampler->Update();
-  if (sampler->GetOutput()->GetNumberOfSamples() == 0)
+  if (errors->Count > 0 || sampler->GetOutput()->GetNumberOfSamples() == 0)
   {
-    std::cerr << "OFBParticles: the OFB of " << o.Mesh << " could not be built\n";
+    std::cerr << "OFBParticles: the OFB of " << o.Mesh << " could not be built" << errors->Suffix()
+              << "\n";
     return 1;
   }
   vtkNew<vtkOFB> ofb; // held by the application, painted in place
@@ -308,6 +317,7 @@ int main(int argc, char* argv[])
   ResetPaint(ofb, o.Reveal);
 
   vtkNew<vtkOFBParticleAdvector> advector;
+  advector->AddObserver(vtkCommand::ErrorEvent, errors);
   advector->SetInputData(mesh);
   advector->SetOFB(ofb);
   advector->SetNumberOfParticles(o.Particles);
@@ -318,6 +328,7 @@ int main(int argc, char* argv[])
   advector->SetColorPeriod(90);
 
   vtkNew<vtkOFBPolyDataMapper> mapper;
+  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
   mapper->SetInputData(mesh);
   mapper->SetOFB(ofb);
   vtkNew<vtkActor> actor;
@@ -354,17 +365,24 @@ int main(int argc, char* argv[])
     advector->SetStepsPerUpdate(std::max(1, o.Steps));
     advector->Step();
     window->Render();
+    if (errors->Count > 0 || !mapper->GetLastRenderUsedOFB())
+    {
+      std::cerr << "OFBParticles: the particles were not drawn" << errors->Suffix() << "\n";
+      return 1;
+    }
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(window);
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(o.Image.c_str());
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->Write();
+    std::string message;
+    if (!ofbexample::WritePNG(grab, o.Image, message))
+    {
+      std::cerr << "OFBParticles: " << message << "\n";
+      return 1;
+    }
     std::cout << "Wrote " << o.Image << " after " << advector->GetCurrentStep() << " steps of "
               << advector->GetParticles()->GetNumberOfPoints() << " particles on "
               << mesh->GetNumberOfPolys() << " triangles (" << ofb->GetNumberOfSamples()
               << " samples)\n";
-    return mapper->GetLastRenderUsedOFB() ? 0 : 1;
+    return 0;
   }
 
   vtkNew<vtkTextActor> text;

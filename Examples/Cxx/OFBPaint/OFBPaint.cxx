@@ -16,7 +16,6 @@
 #include "ofbPaintExport.h"
 #include "ofbPaintStrokes.h"
 
-#include "vtkAbstractPolyDataReader.h"
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -24,7 +23,6 @@
 #include "vtkInteractorEventRecorder.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBPainter.h"
@@ -34,23 +32,20 @@
 #include "vtkOFBReader.h"
 #include "vtkOFBSampler.h"
 #include "vtkOFBWriter.h"
-#include "vtkPLYReader.h"
-#include "vtkPNGWriter.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
-#include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
-#include "vtkTriangleFilter.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtkXMLPolyDataReader.h"
 #include "vtksys/SystemTools.hxx"
 
+#include "ofbExampleErrors.h"
+#include "ofbExampleFiles.h"
+#include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
 
 #include <algorithm>
@@ -75,22 +70,7 @@ const char* const PaletteNames[9] = { "red",
   "white",
   "black" };
 
-// Counts error events and keeps the last message (VTK's text without its file and line).
-class ErrorCounter : public vtkCommand
-{
-public:
-  static ErrorCounter* New() { return new ErrorCounter; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    ++this->Count;
-    std::string text = data ? static_cast<const char*>(data) : "";
-    const std::string::size_type start = text.find("): ");
-    text = start == std::string::npos ? text : text.substr(start + 3);
-    this->Last = text.substr(0, text.find_last_not_of(" \n") + 1);
-  }
-  int Count = 0;
-  std::string Last;
-};
+using ErrorCounter = ofbexample::FirstError; // counts error events, keeps the first
 
 void Usage(const char* argv0)
 {
@@ -122,71 +102,6 @@ void Usage(const char* argv0)
        "                   Examples/Cxx/OFBPaint/ofbPaintStrokes.h), with --image OUT.png\n"
        "  --play FILE      play recorded mouse and key events (vtkInteractorEventRecorder's\n"
        "                   format) in the window, then exit: a scripted session\n";
-}
-
-// The surface of an OBJ, PLY, STL or VTP file as triangles with point normals, or null
-// with `error` set.
-vtkSmartPointer<vtkPolyData> ReadSurface(const std::string& path, std::string& error)
-{
-  const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (!SystemTools::FileExists(path, true))
-  {
-    error = "no such file";
-    return nullptr;
-  }
-  if (ext == ".obj")
-  {
-    auto obj = vtkSmartPointer<vtkOBJReader>::New();
-    obj->SetFileName(path.c_str());
-    reader = obj;
-  }
-  else if (ext == ".ply" && vtkPLYReader::CanReadFile(path.c_str()))
-  {
-    auto ply = vtkSmartPointer<vtkPLYReader>::New();
-    ply->SetFileName(path.c_str());
-    reader = ply;
-  }
-  else if (ext == ".stl")
-  {
-    auto stl = vtkSmartPointer<vtkSTLReader>::New();
-    stl->SetFileName(path.c_str());
-    reader = stl;
-  }
-  else if (ext == ".vtp")
-  {
-    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    vtp->SetFileName(path.c_str());
-    reader = vtp;
-  }
-  else
-  {
-    error = ext == ".ply" ? "not a readable PLY file"
-                          : "unsupported extension '" + ext + "' (use .obj, .ply, .stl or .vtp)";
-    return nullptr;
-  }
-  vtkNew<ErrorCounter> errors;
-  reader->AddObserver(vtkCommand::ErrorEvent, errors);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(reader->GetOutputPort());
-  triangles->PassLinesOff();
-  triangles->PassVertsOff();
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(triangles->GetOutputPort());
-  normals->SplittingOff(); // keep the points: the OFB interpolates point arrays
-  normals->Update();
-  vtkSmartPointer<vtkPolyData> surface = normals->GetOutput();
-  if (errors->Count > 0)
-  {
-    error = errors->Last.empty() ? "the reader failed" : errors->Last;
-    return nullptr;
-  }
-  if (surface->GetNumberOfPolys() == 0)
-  {
-    error = "no polygons in the file";
-    return nullptr;
-  }
-  return surface;
 }
 
 // The application: the surface, its OFB, the window and the painter widget.
@@ -249,7 +164,7 @@ bool PaintApp::BuildOFB(int resolution)
   if (errors->Count > 0 || !ofb || ofb->GetNumberOfSamples() == 0)
   {
     std::cerr << "OFBPaint: building the OFB at resolution " << resolution << " failed"
-              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+              << (errors->Text.empty() ? "" : ": " + errors->Text) << "\n";
     return false;
   }
   this->UseOFB(ofb);
@@ -282,7 +197,7 @@ bool PaintApp::LoadOFB(const std::string& path)
   if (errors->Count > 0 || !ofb || ofb->GetNumberOfSamples() == 0)
   {
     std::cerr << "OFBPaint: cannot load '" << path << "'"
-              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+              << (errors->Text.empty() ? "" : ": " + errors->Text) << "\n";
     return false;
   }
   // An OFB of another surface would colour this one with unrelated paint: its frame is the
@@ -318,7 +233,7 @@ bool PaintApp::SaveOFB(const std::string& path)
   if (!ok)
   {
     std::cerr << "OFBPaint: cannot save '" << path << "'"
-              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+              << (errors->Text.empty() ? "" : ": " + errors->Text) << "\n";
   }
   return ok;
 }
@@ -330,17 +245,11 @@ bool PaintApp::Screenshot(const std::string& path)
   grab->SetInput(this->Window);
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
-  vtkNew<ErrorCounter> errors;
-  vtkNew<vtkPNGWriter> writer;
-  writer->AddObserver(vtkCommand::ErrorEvent, errors);
-  writer->SetFileName(path.c_str());
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->Write();
-  const bool ok = errors->Count == 0 && SystemTools::FileExists(path, true);
+  std::string message;
+  const bool ok = ofbexample::WritePNG(grab, path, message);
   if (!ok)
   {
-    std::cerr << "OFBPaint: cannot write '" << path << "'"
-              << (errors->Last.empty() ? "" : ": " + errors->Last) << "\n";
+    std::cerr << "OFBPaint: " << message << "\n";
   }
   return ok;
 }
@@ -531,10 +440,10 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
 {
   this->MeshPath = meshPath;
   std::string error;
-  this->Surface = ReadSurface(meshPath, error);
+  this->Surface = ofbexample::ReadSurfaceChecked(meshPath, error);
   if (!this->Surface)
   {
-    std::cerr << "OFBPaint: cannot read '" << meshPath << "': " << error << "\n";
+    std::cerr << "OFBPaint: " << error << "\n";
     return false;
   }
   int resolution = 0, width = 0, height = 0;
@@ -649,7 +558,7 @@ int PaintApp::RunInteractive(const std::string& play)
     recorder->Play();
     if (errors->Count > 0)
     {
-      std::cerr << "OFBPaint: cannot play '" << play << "': " << errors->Last << "\n";
+      std::cerr << "OFBPaint: cannot play '" << play << "': " << errors->Text << "\n";
       return EXIT_FAILURE;
     }
     return EXIT_SUCCESS;

@@ -7,9 +7,9 @@
 // two (shaded paint of that colour; not the grey background, nor white or grey surface).
 // Exits 0 when the count is in [MIN, MAX] (MAX default unbounded, -1 for unbounded with
 // X0 X1), 1 otherwise. With X0 X1 only the pixel columns [X0, X1) count.
+#include "ofbExampleImage.h"
+
 #include "vtkImageData.h"
-#include "vtkNew.h"
-#include "vtkPNGReader.h"
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -31,26 +31,24 @@ int main(int argc, char* argv[])
   const long long high = argc >= 5 ? std::atoll(argv[4]) : -1;
   const long long x0 = argc == 7 ? std::atoll(argv[5]) : 0;
   const long long x1 = argc == 7 ? std::atoll(argv[6]) : -1;
-  vtkNew<vtkPNGReader> reader;
-  if (channel < 0 || !reader->CanReadFile(argv[1]))
+  std::string message;
+  vtkSmartPointer<vtkImageData> image = channel < 0
+    ? nullptr
+    : ofbexample::ReadImageChecked(argv[1], ofbexample::DefaultMaximumImagePixels, message);
+  if (!image)
   {
     std::cerr << "ofbPaintCheckImage: "
-              << (channel < 0 ? "bad channel '" + channelName + "'"
-                              : std::string("cannot read '") + argv[1] + "'")
-              << "\n";
+              << (channel < 0 ? "bad channel '" + channelName + "'" : message) << "\n";
     return EXIT_FAILURE;
   }
-  reader->SetFileName(argv[1]);
-  reader->Update();
-  auto* pixels =
-    vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetScalars());
+  auto* pixels = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
   if (!pixels || pixels->GetNumberOfComponents() < 3)
   {
     std::cerr << "ofbPaintCheckImage: '" << argv[1] << "' is not an RGB image\n";
     return EXIT_FAILURE;
   }
   long long count = 0;
-  const long long width = reader->GetOutput()->GetDimensions()[0];
+  const long long width = image->GetDimensions()[0];
   for (vtkIdType i = 0; i < pixels->GetNumberOfTuples(); ++i)
   {
     const long long x = i % width;

@@ -1,6 +1,7 @@
 #include "ofbPaintDecal.h"
 #include "ofbPaintErrors.h"
-#include "ofbPaintExport.h"
+
+#include "ofbExampleImage.h"
 
 #include "vtkCommand.h"
 #include "vtkIdTypeArray.h"
@@ -66,7 +67,8 @@ DecalStamper::~DecalStamper() = default;
 
 bool DecalStamper::LoadImage(const std::string& path, std::string& message)
 {
-  vtkSmartPointer<vtkImageData> image = ReadImage(path, message);
+  vtkSmartPointer<vtkImageData> image =
+    ofbexample::ReadImageChecked(path, ofbexample::DefaultMaximumImagePixels, message);
   if (image)
   {
     this->Image = image;

@@ -1,13 +1,17 @@
 #include "ofbPaintExport.h"
 #include "ofbPaintErrors.h"
 
+#include "ofbExampleFiles.h"
+#include "ofbExampleImage.h"
+#include "ofbExampleMesh.h"
+
 #include "vtkActor.h"
+#include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkErrorCode.h"
 #include "vtkGLTFExporter.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
-#include "vtkImageReader2.h"
-#include "vtkImageReader2Factory.h"
 #include "vtkNew.h"
 #include "vtkOBJWriter.h"
 #include "vtkOFB.h"
@@ -26,39 +30,163 @@
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace
 {
 using SystemTools = vtksys::SystemTools;
+using ofbexample::FirstError;
 
-bool WriteOBJ(vtkPolyData* surface,
-  vtkAlgorithm* image,
-  const std::string& path,
-  vtkCommand* errors)
+/// The lines of the OBJ at `path` that are faces, or -1 when its last line is cut short.
+long long CountFaces(const std::string& path)
 {
-  vtkNew<vtkOBJWriter> writer;
-  writer->AddObserver(vtkCommand::ErrorEvent, errors);
-  writer->SetInputData(0, surface);
-  writer->SetInputConnection(1, image->GetOutputPort());
-  writer->SetFileName(path.c_str());
-  return writer->Write() != 0;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  long long faces = 0;
+  bool complete = true;
+  while (std::getline(in, line))
+  {
+    faces += line.compare(0, 2, "f ") == 0;
+    complete = !in.eof(); // the last line ended with its newline
+  }
+  return complete ? faces : -1;
 }
 
-/// glTF 2.0 through vtkGLTFExporter, which writes a scene: the surface as the one actor of
-/// a renderer (never rendered), the image as its texture.
-bool WriteGLTF(vtkPolyData* surface,
-  vtkAlgorithm* image,
-  const std::string& path,
-  vtkCommand* errors)
+/// The faces vtkOBJWriter writes for `surface`: its polygons and its strips' triangles.
+long long ExpectedFaces(vtkPolyData* surface)
 {
-  image->Update();
-  vtkNew<vtkImageData> texels;
-  texels->ShallowCopy(image->GetOutputDataObject(0));
-  if (texels->GetNumberOfPoints() == 0)
+  long long faces = surface->GetNumberOfPolys();
+  vtkCellArray* strips = surface->GetStrips();
+  for (vtkIdType i = 0; i < strips->GetNumberOfCells(); ++i)
+  {
+    faces += std::max<vtkIdType>(0, strips->GetCellSize(i) - 2);
+  }
+  return faces;
+}
+
+/**
+ * The textured OBJ: its texture PNG, its .mtl and the .obj staged (the writer given the
+ * staged .obj and the texture's final file name, so that the .mtl and the .obj name the
+ * final files), checked (the .obj's faces counted back, the .mtl compared with what it
+ * must say), then renamed into place: the texture, the material, the .obj last.
+ */
+bool WriteOBJ(vtkPolyData* surface,
+  vtkImageData* texels,
+  const std::string& path,
+  std::string& message)
+{
+  const std::string name = SystemTools::GetFilenameName(path);
+  const std::string stem = SystemTools::GetFilenameWithoutLastExtension(name);
+  const std::string png = stem + ".png", mtl = stem + ".mtl";
+  ofbexample::StagedFiles files(path);
+  std::string bytes;
+  if (!files.Begin({ png, mtl, name }, message) || !ofbexample::EncodePNG(texels, bytes, message) ||
+    !files.Write(png, bytes, message))
   {
     return false;
   }
+  vtkNew<FirstError> errors;
+  vtkNew<vtkOBJWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer->SetInputData(0, surface);
+  writer->SetTextureFileName(png.c_str());
+  writer->SetFileName(files.Staged(name).c_str());
+  if (writer->Write() == 0 || errors->Count > 0 || writer->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    message = "cannot write '" + path + "'" + errors->Suffix();
+    return false;
+  }
+  std::ifstream material(files.Staged(mtl), std::ios::binary);
+  const std::string said(
+    (std::istreambuf_iterator<char>(material)), std::istreambuf_iterator<char>());
+  if (!files.Check(mtl, message) || !files.Check(name, message))
+  {
+    return false;
+  }
+  if (said != "newmtl " + stem + "\nmap_Kd " + png + "\n")
+  {
+    return files.Incomplete(mtl, message);
+  }
+  if (CountFaces(files.Staged(name)) != ExpectedFaces(surface))
+  {
+    return files.Incomplete(name, message);
+  }
+  return files.Commit({ png, mtl, name }, message);
+}
+
+/// `bytes` as the one file `path`, staged and renamed into place.
+bool WriteBytes(const std::string& bytes, const std::string& path, std::string& message)
+{
+  const std::string name = SystemTools::GetFilenameName(path);
+  ofbexample::StagedFiles files(path);
+  return files.Begin({ name }, message) && files.Write(name, bytes, message) &&
+    files.Commit({ name }, message);
+}
+
+/**
+ * The PLY with vertex colours: vtkPLYWriter writes the staged file (VTK 9.1's writer
+ * leaves its output string empty), which is then read back through the checks of
+ * ofbExampleMesh (complete header and body) before it is renamed into place.
+ */
+bool WritePLY(vtkPolyData* probed, const std::string& path, std::string& message)
+{
+  const std::string name = SystemTools::GetFilenameName(path);
+  ofbexample::StagedFiles files(path);
+  if (!files.Begin({ name }, message))
+  {
+    return false;
+  }
+  vtkNew<FirstError> errors;
+  vtkNew<vtkPLYWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer->SetInputData(probed);
+  writer->SetFileName(files.Staged(name).c_str());
+  writer->SetArrayName("Colors");
+  writer->EnableAlphaOn();
+  if (writer->Write() == 0 || errors->Count > 0 || writer->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    message = "cannot write '" + path + "'" + errors->Suffix();
+    return false;
+  }
+  std::string problem;
+  if (!files.Check(name, message))
+  {
+    return false;
+  }
+  if (!ofbexample::CheckPLYFile(files.Staged(name), problem))
+  {
+    return files.Incomplete(name, message);
+  }
+  return files.Commit({ name }, message);
+}
+
+/// The VTP with every sample array: written into a string, then as above.
+bool WriteVTP(vtkPolyData* probed, const std::string& path, std::string& message)
+{
+  vtkNew<FirstError> errors;
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer->SetInputData(probed);
+  writer->WriteToOutputStringOn();
+  const std::string bytes = writer->Write() != 0 ? writer->GetOutputString() : "";
+  if (errors->Count > 0 || bytes.empty())
+  {
+    message = "cannot write '" + path + "'" + errors->Suffix();
+    return false;
+  }
+  return WriteBytes(bytes, path, message);
+}
+
+/// glTF 2.0 through vtkGLTFExporter, which writes a scene: the surface as the one actor of
+/// a renderer (never rendered), the image as its texture; the text (the image embedded)
+/// written as above.
+bool WriteGLTF(vtkPolyData* surface,
+  vtkImageData* texels,
+  const std::string& path,
+  std::string& message)
+{
   vtkNew<vtkTexture> texture;
   texture->SetInputData(texels);
   texture->InterpolateOn();
@@ -72,14 +200,19 @@ bool WriteGLTF(vtkPolyData* surface,
   renderer->AddActor(actor);
   vtkNew<vtkRenderWindow> window;
   window->AddRenderer(renderer);
+  vtkNew<FirstError> errors;
   vtkNew<vtkGLTFExporter> exporter;
   exporter->AddObserver(vtkCommand::ErrorEvent, errors);
   exporter->SetRenderWindow(window);
-  exporter->SetFileName(path.c_str());
   exporter->InlineDataOn();
   exporter->SaveNormalOn();
-  exporter->Write();
-  return SystemTools::FileExists(path, true);
+  const std::string text = exporter->WriteToString();
+  if (errors->Count > 0 || text.empty())
+  {
+    message = "cannot write '" + path + "'" + errors->Suffix();
+    return false;
+  }
+  return WriteBytes(text, path, message);
 }
 }
 
@@ -97,6 +230,12 @@ bool ExportPainting(vtkPolyData* surface,
   std::string& message)
 {
   const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
+  const std::string why = ofbexample::WhyNotWritable(path);
+  if (!why.empty())
+  {
+    message = "cannot write '" + path + "': " + why; // before the work of baking
+    return false;
+  }
   vtkNew<FirstError> errors;
   std::ostringstream done;
   if (ext == ".obj" || ext == ".gltf")
@@ -131,13 +270,19 @@ bool ExportPainting(vtkPolyData* surface,
     baker->SetOFBData(ofb);
     baker->SetTextureSize(size);
     vtkNew<vtkImageExtractComponents> rgb;
+    rgb->AddObserver(vtkCommand::ErrorEvent, errors);
     rgb->SetInputConnection(baker->GetOutputPort());
     rgb->SetComponents(0, 1, 2);
-    const bool written = ext == ".obj" ? WriteOBJ(textured, rgb, path, errors)
-                                       : WriteGLTF(textured, rgb, path, errors);
-    if (!written || !errors->Text.empty())
+    rgb->Update();
+    vtkImageData* texels = rgb->GetOutput();
+    if (errors->Count > 0 || texels->GetNumberOfPoints() == 0)
     {
-      message = "cannot export '" + path + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
+      message = "cannot export '" + path + "': baking the texture failed" + errors->Suffix();
+      return false;
+    }
+    if (!(ext == ".obj" ? WriteOBJ(textured, texels, path, message)
+                        : WriteGLTF(textured, texels, path, message)))
+    {
       return false;
     }
     done << "wrote " << path << " with a " << size[0] << " x " << size[1] << " texture ("
@@ -161,28 +306,14 @@ bool ExportPainting(vtkPolyData* surface,
   probe->SetInputData(surface);
   probe->SetOFBData(ofb);
   probe->Update();
-  int ok = 0;
-  if (ext == ".ply")
+  if (errors->Count > 0)
   {
-    vtkNew<vtkPLYWriter> writer;
-    writer->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->SetInputConnection(probe->GetOutputPort());
-    writer->SetFileName(path.c_str());
-    writer->SetArrayName("Colors");
-    writer->EnableAlphaOn();
-    ok = writer->Write();
+    message = "cannot export '" + path + "'" + errors->Suffix();
+    return false;
   }
-  else
+  if (!(ext == ".ply" ? WritePLY(probe->GetOutput(), path, message)
+                      : WriteVTP(probe->GetOutput(), path, message)))
   {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->SetInputConnection(probe->GetOutputPort());
-    writer->SetFileName(path.c_str());
-    ok = writer->Write();
-  }
-  if (!ok || !errors->Text.empty())
-  {
-    message = "cannot export '" + path + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
     return false;
   }
   done << "wrote " << path << " (" << probe->GetOutput()->GetNumberOfPoints() << " points with "
@@ -201,7 +332,8 @@ vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,
     message = "the surface has no texture coordinates to import '" + imagePath + "' through";
     return nullptr;
   }
-  vtkSmartPointer<vtkImageData> image = ReadImage(imagePath, message);
+  vtkSmartPointer<vtkImageData> image =
+    ofbexample::ReadImageChecked(imagePath, ofbexample::DefaultMaximumImagePixels, message);
   if (!image)
   {
     return nullptr;
@@ -227,25 +359,4 @@ vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,
   return out;
 }
 
-vtkSmartPointer<vtkImageData> ReadImage(const std::string& path, std::string& message)
-{
-  vtkSmartPointer<vtkImageReader2> reader =
-    vtk::TakeSmartPointer(vtkImageReader2Factory::CreateImageReader2(path.c_str()));
-  if (!reader)
-  {
-    message = "cannot read '" + path + "' as an image";
-    return nullptr;
-  }
-  vtkNew<FirstError> errors;
-  reader->AddObserver(vtkCommand::ErrorEvent, errors);
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkSmartPointer<vtkImageData> image = reader->GetOutput();
-  if (!errors->Text.empty() || !image || image->GetNumberOfPoints() == 0)
-  {
-    message = "cannot read '" + path + "'" + (errors->Text.empty() ? "" : ": " + errors->Text);
-    return nullptr;
-  }
-  return image;
-}
 }

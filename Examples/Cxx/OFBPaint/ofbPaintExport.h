@@ -11,7 +11,6 @@
 
 #include <string>
 
-class vtkImageData;
 class vtkOFB;
 class vtkPolyData;
 
@@ -28,8 +27,11 @@ std::string DefaultExportPath(const std::string& meshPath, const std::string& wh
  * vtkOFBTextureAtlas, a texel a cell where the atlas fits `textureSize` texels a side,
  * and the texture has the atlas's size), .gltf (the same textured surface with its normals
  * as glTF 2.0, the image embedded, by vtkGLTFExporter), .ply (vertex colours) or .vtp
- * (every sample array). Returns false with `message` the reason; true with `message`
- * saying what was written.
+ * (every sample array). Every file is written as ofbExampleFiles.h says: staged beside its
+ * target, checked, then renamed over it, so a failure (a full disk, a directory in the
+ * way) or a kill leaves the previous export as it was and no temporary file behind. The
+ * .mtl names the texture by its file name alone. Returns false with `message` the reason;
+ * true with `message` saying what was written.
  */
 bool ExportPainting(vtkPolyData* surface,
   vtkOFB* ofb,
@@ -38,8 +40,8 @@ bool ExportPainting(vtkPolyData* surface,
   std::string& message);
 
 /**
- * The way in (--import-texture): `ofb` with the texture image at `imagePath` (PNG, JPEG,
- * ... as vtkImageReader2Factory reads them) projected into its colours through the
+ * The way in (--import-texture): `ofb` with the texture image at `imagePath` (read by
+ * ofbexample::ReadImageChecked) projected into its colours through the
  * surface's texture coordinates (vtkOFBTextureProjector). Null with `message` the reason.
  */
 vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,
@@ -47,9 +49,6 @@ vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,
   const std::string& imagePath,
   std::string& message);
 
-/// The image at `path` (PNG, JPEG, ... as vtkImageReader2Factory reads them), or null with
-/// `message` the reason.
-vtkSmartPointer<vtkImageData> ReadImage(const std::string& path, std::string& message);
 }
 
 #endif

@@ -1,6 +1,7 @@
 #include "ofbPaintStrokes.h"
 
 #include "vtkDoubleArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
@@ -9,9 +10,13 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -91,12 +96,16 @@ public:
       this->Painter->EndStroke();
       this->InStroke = false;
     }
+    this->StrokeDabs = 0.0;
+    this->HasLastPoint = false;
   }
 
 private:
   bool Setting(const std::string& command, const std::vector<double>& v, std::string& error);
   bool Named(const std::string& command, const std::string& name, std::string& error);
-  bool Point(const double p[3], double pressure);
+  bool Point(const double p[3], double pressure, std::string& error);
+  /// Count the dabs of the stroke's segment to p; false past MaximumStrokeDabs.
+  bool CountDabs(const double p[3], double pressure, std::string& error);
   /// `decal PX PY` at surface point p (`wellFormed`: two values were given).
   bool Decal(const double p[3], bool wellFormed, std::string& error);
 
@@ -107,7 +116,37 @@ private:
   const DecalStamp& Stamp;
   StrokeStatistics& Statistics;
   bool InStroke = false;
+  double StrokeDabs = 0.0; // the open stroke's dabs so far
+  bool HasLastPoint = false;
+  double LastPoint[3] = { 0.0, 0.0, 0.0 };
+  double LastPressure = 1.0;
 };
+
+bool Replay::CountDabs(const double p[3], double pressure, std::string& error)
+{
+  // The painter's dab step (vtkOFBPainter): Spacing x the radius at the lower pressure of
+  // the segment's ends, but at least an eighth of a cell.
+  const double cell = this->Painter->GetOFB()->GetCellSize();
+  const double radius = this->Brush->GetRadius() *
+    (this->Brush->GetPressureAffectsRadius() ? std::min(pressure, this->LastPressure) : 1.0);
+  const double step = std::max({ this->Painter->GetSpacing() * radius, 0.125 * cell, 1e-300 });
+  const double length =
+    this->HasLastPoint ? std::sqrt(vtkMath::Distance2BetweenPoints(p, this->LastPoint)) : 0.0;
+  this->StrokeDabs += 1.0 + length / step;
+  std::copy(p, p + 3, this->LastPoint);
+  this->LastPressure = pressure;
+  this->HasLastPoint = true;
+  if (this->StrokeDabs > MaximumStrokeDabs)
+  {
+    std::ostringstream text;
+    text << "the stroke would place more than " << MaximumStrokeDabs
+         << " dabs, the limit of a stroke (radius " << this->Brush->GetRadius() << ", spacing "
+         << this->Painter->GetSpacing() << ")";
+    error = text.str();
+    return false;
+  }
+  return true;
+}
 
 bool Replay::Decal(const double p[3], bool wellFormed, std::string& error)
 {
@@ -131,11 +170,15 @@ bool Replay::Decal(const double p[3], bool wellFormed, std::string& error)
   return true;
 }
 
-bool Replay::Point(const double p[3], double pressure)
+bool Replay::Point(const double p[3], double pressure, std::string& error)
 {
   ++this->Statistics.Points;
   if (this->InStroke)
   {
+    if (!this->CountDabs(p, pressure, error))
+    {
+      return false;
+    }
     this->Statistics.SamplesChanged += this->Painter->StrokeTo(p, pressure);
     return true;
   }
@@ -317,9 +360,37 @@ bool Replay::Line(const std::string& text, std::string& error)
     {
       return this->Decal(p, v.size() == 2, error);
     }
-    return this->Point(p, std::min(1.0, std::max(0.0, pressure)));
+    return this->Point(p, std::min(1.0, std::max(0.0, pressure)), error);
   }
   return this->Setting(command, v, error);
+}
+}
+
+namespace
+{
+/// A regular file (not a directory, device or FIFO: checked before opening it, which a
+/// FIFO would block) within MaximumStrokeFileBytes.
+bool CheckStrokeFile(const std::string& path, std::string& problem)
+{
+  struct stat info;
+  if (stat(path.c_str(), &info) != 0)
+  {
+    problem = "cannot open the stroke file: " + std::string(std::strerror(errno));
+    return false;
+  }
+  if (!S_ISREG(info.st_mode))
+  {
+    problem = S_ISDIR(info.st_mode) ? "a directory, not a stroke file"
+                                    : "not a regular file (a device or FIFO), not a stroke file";
+    return false;
+  }
+  if (info.st_size > MaximumStrokeFileBytes)
+  {
+    problem = "larger than the limit of " + std::to_string(MaximumStrokeFileBytes) +
+      " bytes of a stroke file";
+    return false;
+  }
+  return true;
 }
 }
 
@@ -331,6 +402,12 @@ bool ReplayStrokes(const std::string& path,
   std::string& error,
   const DecalStamp& stamp)
 {
+  std::string problem;
+  if (!CheckStrokeFile(path, problem))
+  {
+    error = path + ": " + problem;
+    return false;
+  }
   std::ifstream in(path);
   if (!in)
   {
@@ -344,9 +421,18 @@ bool ReplayStrokes(const std::string& path,
   }
   Replay replay(painter, pick, view, stamp, statistics);
   std::string line;
-  for (int number = 1; std::getline(in, line); ++number)
+  long long bytes = 0;
+  for (long long number = 1; std::getline(in, line); ++number)
   {
     std::string message;
+    bytes += static_cast<long long>(line.size()) + 1;
+    if (number > MaximumStrokeFileLines || bytes > MaximumStrokeFileBytes)
+    {
+      replay.EndStroke();
+      error = path + ": longer than the limit of " + std::to_string(MaximumStrokeFileLines) +
+        " lines and " + std::to_string(MaximumStrokeFileBytes) + " bytes of a stroke file";
+      return false;
+    }
     if (!replay.Line(line, message))
     {
       replay.EndStroke();

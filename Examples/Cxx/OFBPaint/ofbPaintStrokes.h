@@ -29,6 +29,11 @@
 //
 // A point outside a stroke paints a single dab there. Pressure (default 1) scales the
 // strength (see vtkOFBBrush::PressureAffectsStrength).
+//
+// Limits: the file must be a regular file (not a directory, device or FIFO) of at most
+// MaximumStrokeFileBytes bytes and MaximumStrokeFileLines lines, and a stroke may place at
+// most MaximumStrokeDabs dabs (its path length over the dab step, Spacing x radius but at
+// least an eighth of a cell); past a limit the replay stops with a message naming it.
 #ifndef ofbPaintStrokes_h
 #define ofbPaintStrokes_h
 
@@ -39,6 +44,14 @@ class vtkOFBPainter;
 
 namespace ofbpaint
 {
+/// The largest stroke file replayed: 16 MiB.
+constexpr long long MaximumStrokeFileBytes = 16LL << 20;
+/// The most lines of a stroke file: one million.
+constexpr long long MaximumStrokeFileLines = 1000000;
+/// The most dabs one stroke may place: 100,000 (a stroke across a whole model places a few
+/// hundred).
+constexpr double MaximumStrokeDabs = 100000.0;
+
 /// What a replay did.
 struct StrokeStatistics
 {
@@ -56,8 +69,8 @@ using ViewSetter = std::function<void(double azimuth, double elevation, double z
 using DecalStamp = std::function<long long(const double point[3], std::string& message)>;
 
 /// Replay the stroke file `path` on `painter` (which has an OFB and a brush). Returns
-/// false with `error` set to "FILE:LINE: message" on a bad line or an unreadable file;
-/// what was painted before stays painted.
+/// false with `error` set to "FILE:LINE: message" on a bad line, "FILE: message" on an
+/// unreadable file or one over the limits above; what was painted before stays painted.
 bool ReplayStrokes(const std::string& path,
   vtkOFBPainter* painter,
   const PixelPicker& pick,

@@ -1,0 +1,52 @@
+/**
+ * @file   ofbExampleImage.h
+ * @brief  The one way the example applications read an image (decals, imported textures)
+ *
+ * VTK 9.1's image readers trust the file: libpng's errors while decoding the pixels end in
+ * a crash (vtkPNGReader sets no error handler there), and a header claiming 2^31 pixels
+ * makes the reader allocate that much. ReadImageChecked therefore checks the file itself
+ * before any decoder allocates, then decodes it with the reader of the format it found and
+ * checks what came out:
+ *
+ * - the path is a regular file of at most MaximumImageFileBytes;
+ * - PNG: the signature, every chunk's length and CRC-32, an IHDR first with a valid bit
+ *   depth and colour type, a PLTE for a palette image, an IEND; the zlib stream of the IDAT
+ *   chunks inflates (into a small buffer, nothing kept) to exactly the bytes the image
+ *   needs, every row with a valid filter byte;
+ * - JPEG: the frame header (SOF) before the scan; BMP: an uncompressed 8- or 24-bit bitmap
+ *   whose pixel rows fit in the file; PNM: a binary P5 (grey) or P6 (RGB) with a maximum
+ *   value of at most 255 whose pixels fit in the file;
+ * - both sides at least 1 and at most MaximumImageSide, and at most `maxPixels` pixels;
+ * - other formats (TIFF, ASCII PNM, ...) are refused;
+ * - after decoding: no error event, the reader's ErrorCode 0, and an image of the size the
+ *   header gave, with scalars.
+ *
+ * Every image the applications read goes through here (a later move to another image
+ * library replaces this file alone).
+ */
+#ifndef ofbExampleImage_h
+#define ofbExampleImage_h
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkImageData;
+
+namespace ofbexample
+{
+/// The largest width or height accepted.
+constexpr long long MaximumImageSide = 32768;
+/// The default pixel limit: 64 Mpixels (256 MB as RGBA).
+constexpr long long DefaultMaximumImagePixels = 1LL << 26;
+/// The largest image file accepted: 1 GiB.
+constexpr long long MaximumImageFileBytes = 1LL << 30;
+
+/// The image at `path` (PNG, JPEG, BMP, binary PNM) checked as above, or null with
+/// `message` saying what is wrong ("cannot read 'PATH': ...").
+vtkSmartPointer<vtkImageData> ReadImageChecked(const std::string& path,
+  long long maxPixels,
+  std::string& message);
+}
+
+#endif

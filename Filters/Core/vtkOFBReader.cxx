@@ -259,24 +259,32 @@ std::string CheckFrame(const Header& header)
     }
     return msg.str();
   }
-  const double* o = header.Origin;
-  if (!(header.CellSize > 0.0) || !std::isfinite(header.CellSize) || !std::isfinite(o[0]) ||
-    !std::isfinite(o[1]) || !std::isfinite(o[2]))
-  {
-    msg << "an invalid frame (cell size " << header.CellSize << ", origin " << o[0] << " " << o[1]
-        << " " << o[2] << ")";
-    return msg.str();
-  }
   vtkTypeUInt64 cells = 0;
   bool valid = true;
   for (int a = 0; a < 3; ++a)
   {
     valid = valid && d[a] >= 1 && d[a] < limit;
-    cells += valid ? d[(a + 1) % 3] * d[(a + 2) % 3] : 0; // each dimension < 2^32: no overflow
+  }
+  for (int a = 0; a < 3 && valid; ++a)
+  {
+    // Each dimension < 2^32: a product < 2^64; each product < 2^32: no overflow in the sum.
+    const vtkTypeUInt64 grid = d[(a + 1) % 3] * d[(a + 2) % 3];
+    valid = grid < limit;
+    cells += valid ? grid : 0;
   }
   if (!valid)
   {
-    msg << "invalid dimensions " << d[0] << " " << d[1] << " " << d[2];
+    msg << "invalid dimensions " << d[0] << " " << d[1] << " " << d[2]
+        << " (each at least 1, fewer than 2^32 cells in all)";
+    return msg.str();
+  }
+  const double dims[3] = {
+    static_cast<double>(d[0]), static_cast<double>(d[1]), static_cast<double>(d[2])
+  };
+  const std::string frame = vtkofb::format::FrameProblem(header.Origin, header.CellSize, dims);
+  if (!frame.empty())
+  {
+    msg << "an impossible frame: " << frame;
   }
   else if (cells >= limit || cells != nCells)
   {
@@ -358,7 +366,17 @@ bool ReadDepths(Source& src, const Header& header, vtkOFB* output)
       valid = std::isfinite(depths[i]) && (i == offsets[c] || depths[i - 1] <= depths[i]);
     }
   }
-  return valid ? true : src.Fail("the depths are not finite or not sorted within their cells");
+  if (!valid)
+  {
+    return src.Fail("the depths are not finite or not sorted within their cells");
+  }
+  if (!header.Empty &&
+    !vtkofb::format::DepthsWithinBox(offsets, depths, header.CellSize, header.Dimensions))
+  {
+    return src.Fail("a depth lies outside the box of the frame (depths run from 0 to the "
+                    "cell size times the number of cells along their axis)");
+  }
+  return true;
 }
 
 /// The header of a stored sample array (see vtkOFBWriter).
@@ -435,6 +453,18 @@ bool ReadSampleArray(Source& src,
       std::to_string(a.Components) + " components and roles " + std::to_string(a.Roles) +
       " (expected one tuple per sample, " + std::to_string(header.NumberOfSamples) +
       ", and roles not taken by another array)");
+  }
+  for (int r = 0; r < Writer::NumberOfRoleBits; ++r)
+  {
+    const std::string needed = ((a.Roles >> r) & 1u)
+      ? vtkofb::format::RoleRequirement(r, localType, static_cast<int>(a.Components))
+      : std::string();
+    if (!needed.empty())
+    {
+      return src.Fail(named + " is " + vtkImageScalarTypeNameMacro(localType) + " with " +
+        std::to_string(a.Components) + " components, but as the active " +
+        vtkDataSetAttributes::GetAttributeTypeAsString(r) + " it must hold " + needed);
+    }
   }
   // Components * element size < 2^24 and tuples < 2^32: no overflow.
   const vtkTypeUInt64 bytes = a.Tuples * a.Components * a.ElementSize;

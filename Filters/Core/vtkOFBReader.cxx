@@ -22,6 +22,10 @@
 #include <limits>
 #include <sstream>
 
+#if !defined(_WIN32)
+#include <sys/stat.h>
+#endif
+
 vtkStandardNewMacro(vtkOFBReader);
 
 namespace
@@ -164,6 +168,18 @@ struct Header
 
 using Code = vtkErrorCode::ErrorIds;
 
+/// Whether `fileName` (its symbolic links followed) is a regular file.
+bool IsRegularFile(const char* fileName)
+{
+#if defined(_WIN32)
+  (void)fileName;
+  return true;
+#else
+  struct stat info;
+  return stat(fileName, &info) == 0 && S_ISREG(info.st_mode);
+#endif
+}
+
 /// Open `fileName` and measure it.
 bool OpenFile(const char* fileName, Source& src)
 {
@@ -178,6 +194,12 @@ bool OpenFile(const char* fileName, Source& src)
   if (vtksys::SystemTools::FileIsDirectory(fileName))
   {
     return src.Fail("it is a directory, not a file", Code::CannotOpenFileError);
+  }
+  if (!IsRegularFile(fileName))
+  {
+    // Opening a FIFO would wait for a writer; a device has no size to check counts with.
+    return src.Fail(
+      "it is not a regular file (a FIFO, a device or a socket)", Code::CannotOpenFileError);
   }
   src.File.open(fileName, std::ios::in | std::ios::binary);
   const std::streamoff size =
@@ -573,7 +595,7 @@ vtkOFBReader::~vtkOFBReader()
 //------------------------------------------------------------------------------
 int vtkOFBReader::CanReadFile(const char* fileName)
 {
-  if (!fileName || vtksys::SystemTools::FileIsDirectory(fileName))
+  if (!fileName || !IsRegularFile(fileName))
   {
     return 0;
   }

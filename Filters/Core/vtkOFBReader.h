@@ -27,9 +27,9 @@
  * whose checksums are valid.
  *
  * On any problem (no FileName, a missing, empty, truncated, corrupted or foreign
- * file, an unsupported version) it reports an error naming the file and the
- * problem, sets the error code (vtkErrorCode) and produces an EMPTY output; it
- * never crashes. Progress events are sent while the file is read.
+ * file, a FIFO or a device, an unsupported version) it reports an error naming the
+ * file and the problem, sets the error code (vtkErrorCode) and produces an EMPTY
+ * output; it never crashes nor waits. Progress events are sent while the file is read.
  *
  * @sa vtkOFBWriter vtkOFB
  */

@@ -249,6 +249,9 @@ TEST(WriterSafety, RefusesAFIFO)
   ASSERT_EQ(symlink("pipe.ofb", dir.File("link.ofb").c_str()), 0);
   ExpectRefusedTarget(dir, dir.File("link.ofb"), S_IFLNK, "is a FIFO", { "pipe.ofb", "link.ofb" });
   EXPECT_EQ(FileType(fifo), static_cast<mode_t>(S_IFIFO));
+  // Reading it is refused at once too (opening it would wait for a writer).
+  ExpectReadError(fifo, "not a regular file");
+  EXPECT_FALSE(vtkOFBReader::CanReadFile(fifo.c_str()));
 }
 
 TEST(WriterSafety, RefusesACharacterDevice)

@@ -688,7 +688,7 @@ vtkIdType vtkOFBShaderStorage::UploadAll(const std::vector<vtkOFB*>& levels,
       }
     }
   }
-  vtkOpenGLCheckErrorMacro("failed after uploading the OFB");
+  vtkOpenGLStaticCheckErrorMacro("failed after uploading the OFB");
   return uploaded;
 }
 

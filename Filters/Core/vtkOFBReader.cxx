@@ -22,6 +22,10 @@
 #include <limits>
 #include <sstream>
 
+#if !defined(_WIN32)
+#include <sys/stat.h>
+#endif
+
 vtkStandardNewMacro(vtkOFBReader);
 
 namespace
@@ -164,6 +168,18 @@ struct Header
 
 using Code = vtkErrorCode::ErrorIds;
 
+/// Whether `fileName` (its symbolic links followed) is a regular file.
+bool IsRegularFile(const char* fileName)
+{
+#if defined(_WIN32)
+  (void)fileName;
+  return true;
+#else
+  struct stat info;
+  return stat(fileName, &info) == 0 && S_ISREG(info.st_mode);
+#endif
+}
+
 /// Open `fileName` and measure it.
 bool OpenFile(const char* fileName, Source& src)
 {
@@ -178,6 +194,12 @@ bool OpenFile(const char* fileName, Source& src)
   if (vtksys::SystemTools::FileIsDirectory(fileName))
   {
     return src.Fail("it is a directory, not a file", Code::CannotOpenFileError);
+  }
+  if (!IsRegularFile(fileName))
+  {
+    // Opening a FIFO would wait for a writer; a device has no size to check counts with.
+    return src.Fail(
+      "it is not a regular file (a FIFO, a device or a socket)", Code::CannotOpenFileError);
   }
   src.File.open(fileName, std::ios::in | std::ios::binary);
   const std::streamoff size =
@@ -259,24 +281,32 @@ std::string CheckFrame(const Header& header)
     }
     return msg.str();
   }
-  const double* o = header.Origin;
-  if (!(header.CellSize > 0.0) || !std::isfinite(header.CellSize) || !std::isfinite(o[0]) ||
-    !std::isfinite(o[1]) || !std::isfinite(o[2]))
-  {
-    msg << "an invalid frame (cell size " << header.CellSize << ", origin " << o[0] << " " << o[1]
-        << " " << o[2] << ")";
-    return msg.str();
-  }
   vtkTypeUInt64 cells = 0;
   bool valid = true;
   for (int a = 0; a < 3; ++a)
   {
     valid = valid && d[a] >= 1 && d[a] < limit;
-    cells += valid ? d[(a + 1) % 3] * d[(a + 2) % 3] : 0; // each dimension < 2^32: no overflow
+  }
+  for (int a = 0; a < 3 && valid; ++a)
+  {
+    // Each dimension < 2^32: a product < 2^64; each product < 2^32: no overflow in the sum.
+    const vtkTypeUInt64 grid = d[(a + 1) % 3] * d[(a + 2) % 3];
+    valid = grid < limit;
+    cells += valid ? grid : 0;
   }
   if (!valid)
   {
-    msg << "invalid dimensions " << d[0] << " " << d[1] << " " << d[2];
+    msg << "invalid dimensions " << d[0] << " " << d[1] << " " << d[2]
+        << " (each at least 1, fewer than 2^32 cells in all)";
+    return msg.str();
+  }
+  const double dims[3] = {
+    static_cast<double>(d[0]), static_cast<double>(d[1]), static_cast<double>(d[2])
+  };
+  const std::string frame = vtkofb::format::FrameProblem(header.Origin, header.CellSize, dims);
+  if (!frame.empty())
+  {
+    msg << "an impossible frame: " << frame;
   }
   else if (cells >= limit || cells != nCells)
   {
@@ -358,7 +388,17 @@ bool ReadDepths(Source& src, const Header& header, vtkOFB* output)
       valid = std::isfinite(depths[i]) && (i == offsets[c] || depths[i - 1] <= depths[i]);
     }
   }
-  return valid ? true : src.Fail("the depths are not finite or not sorted within their cells");
+  if (!valid)
+  {
+    return src.Fail("the depths are not finite or not sorted within their cells");
+  }
+  if (!header.Empty &&
+    !vtkofb::format::DepthsWithinBox(offsets, depths, header.CellSize, header.Dimensions))
+  {
+    return src.Fail("a depth lies outside the box of the frame (depths run from 0 to the "
+                    "cell size times the number of cells along their axis)");
+  }
+  return true;
 }
 
 /// The header of a stored sample array (see vtkOFBWriter).
@@ -435,6 +475,18 @@ bool ReadSampleArray(Source& src,
       std::to_string(a.Components) + " components and roles " + std::to_string(a.Roles) +
       " (expected one tuple per sample, " + std::to_string(header.NumberOfSamples) +
       ", and roles not taken by another array)");
+  }
+  for (int r = 0; r < Writer::NumberOfRoleBits; ++r)
+  {
+    const std::string needed = ((a.Roles >> r) & 1u)
+      ? vtkofb::format::RoleRequirement(r, localType, static_cast<int>(a.Components))
+      : std::string();
+    if (!needed.empty())
+    {
+      return src.Fail(named + " is " + vtkImageScalarTypeNameMacro(localType) + " with " +
+        std::to_string(a.Components) + " components, but as the active " +
+        vtkDataSetAttributes::GetAttributeTypeAsString(r) + " it must hold " + needed);
+    }
   }
   // Components * element size < 2^24 and tuples < 2^32: no overflow.
   const vtkTypeUInt64 bytes = a.Tuples * a.Components * a.ElementSize;
@@ -543,7 +595,7 @@ vtkOFBReader::~vtkOFBReader()
 //------------------------------------------------------------------------------
 int vtkOFBReader::CanReadFile(const char* fileName)
 {
-  if (!fileName || vtksys::SystemTools::FileIsDirectory(fileName))
+  if (!fileName || !IsRegularFile(fileName))
   {
     return 0;
   }

@@ -82,6 +82,22 @@ std::string CollectStorage(vtkOFB* ofb, Contents& c)
       std::to_string(nCells) + " cells and " + std::to_string(c.NumberOfSamples) +
       " samples, decreasing offsets, or depths not finite or not sorted within a cell)";
   }
+  if (nCells > 0)
+  {
+    const vtkIdType* d = ofb->GetDimensions();
+    const double dims[3] = {
+      static_cast<double>(d[0]), static_cast<double>(d[1]), static_cast<double>(d[2])
+    };
+    const std::string frame = format::FrameProblem(ofb->GetOrigin(), ofb->GetCellSize(), dims);
+    if (!frame.empty())
+    {
+      return "the frame cannot be stored: " + frame;
+    }
+    if (!format::DepthsWithinBox(o, c.Depths, ofb->GetCellSize(), d))
+    {
+      return "a depth lies outside the box of the frame";
+    }
+  }
   c.FileSize = vtkOFBWriter::HeaderSize + 4 * (nCells + 1) + 4 + 4 * c.NumberOfSamples + 4 + 8;
   return std::string();
 }
@@ -120,6 +136,19 @@ std::string CollectArrays(vtkOFB* ofb, Contents& c)
     for (int k = 0; k < vtkOFBWriter::NumberOfRoleBits; ++k)
     {
       mask |= sd->GetAbstractAttribute(k) == abstract ? 1u << k : 0u;
+    }
+    for (int k = 0; k < vtkOFBWriter::NumberOfRoleBits; ++k)
+    {
+      const std::string needed = ((mask >> k) & 1u)
+        ? format::RoleRequirement(k, array->GetDataType(), array->GetNumberOfComponents())
+        : std::string();
+      if (!needed.empty())
+      {
+        return "sample array " + std::to_string(i) + " '" + name + "' is " +
+          array->GetDataTypeAsString() + " with " + std::to_string(array->GetNumberOfComponents()) +
+          " components, but as the active " + vtkDataSetAttributes::GetAttributeTypeAsString(k) +
+          " it must hold " + needed + " (vtkOFBReader would refuse it)";
+      }
     }
     c.Arrays.push_back(aos);
     c.Roles.push_back(mask);
@@ -285,6 +314,57 @@ std::string FollowLinks(const std::string& path)
   }
 #endif
   return file;
+}
+
+/**
+ * What `target` (its symbolic links followed) is when it exists and is not a regular
+ * file, or an empty string. Renaming the new file over a device, a FIFO or a socket would
+ * replace it with a regular file (as root, /dev/null itself), and a directory cannot be
+ * replaced: the writer refuses such targets.
+ */
+std::string NotARegularFile(const std::string& target)
+{
+#if !defined(_WIN32)
+  struct stat info;
+  if (lstat(target.c_str(), &info) != 0)
+  {
+    return errno == ENOENT ? std::string() : "a path that cannot be examined";
+  }
+  if (S_ISREG(info.st_mode))
+  {
+    return std::string();
+  }
+  if (S_ISDIR(info.st_mode))
+  {
+    return "a directory";
+  }
+  if (S_ISFIFO(info.st_mode))
+  {
+    return "a FIFO (named pipe)";
+  }
+  if (S_ISCHR(info.st_mode))
+  {
+    return "a character device";
+  }
+  if (S_ISBLK(info.st_mode))
+  {
+    return "a block device";
+  }
+  if (S_ISSOCK(info.st_mode))
+  {
+    return "a socket";
+  }
+  if (S_ISLNK(info.st_mode))
+  {
+    return "a chain of symbolic links that does not end (a loop)";
+  }
+  return "a special file";
+#else
+  const DWORD attributes = GetFileAttributesA(target.c_str());
+  return attributes != INVALID_FILE_ATTRIBUTES && (attributes & FILE_ATTRIBUTE_DIRECTORY)
+    ? "a directory"
+    : std::string();
+#endif
 }
 
 /**
@@ -619,6 +699,15 @@ void vtkOFBWriter::WriteData()
   }
   // Through a symbolic link, replace the file it points to and keep the link.
   const std::string target = FollowLinks(this->FileName);
+  const std::string special = NotARegularFile(target);
+  if (!special.empty())
+  {
+    vtkErrorMacro("Cannot write " << this->FileName << ": "
+                                  << (target == this->FileName ? "it" : target.c_str()) << " is "
+                                  << special << ", not a regular file; nothing was written.");
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+    return;
+  }
   RemoveStaleTemporaries(target);
   ReplacementFile file;
   int error = 0;

@@ -58,9 +58,14 @@
  * it points to is replaced and the link kept. On any failure the writer removes its
  * temporary file, leaves an existing FileName untouched, reports an error and sets
  * the error code (Write() then returns 0). An empty OFB can be written and reads
- * back empty. An inconsistent OFB (offsets that do not match the frame or the
- * samples, arrays whose tuple count is not the sample count) and non-numeric
- * sample arrays (strings, variants, bits) are refused before the file is touched. Not stored:
+ * back empty. What vtkOFBReader would refuse is refused before the file is touched:
+ * an inconsistent OFB (offsets that do not match the frame or the samples, depths
+ * outside the box, arrays whose tuple count is not the sample count), a frame beyond
+ * the range of float, non-numeric sample arrays (strings, variants, bits) and arrays
+ * that do not fit their attribute role (see vtkOFBReader). So is a FileName that is
+ * not a regular file, directly or through symbolic links (a directory, a FIFO, a
+ * device, a socket): renaming over it would replace it (as root, /dev/null itself);
+ * it is left as it is and nothing is written. Not stored:
  * component names, array information keys, lookup tables, field data.
  *
  * @sa vtkOFBReader vtkOFB

@@ -386,6 +386,170 @@ TEST(IO, ForgedCountsAreRejectedBeforeAllocating)
   }
 }
 
+TEST(IO, ArraysMustFitTheirAttributeRoles)
+{
+  TempDirectory dir;
+  const std::string good = dir.File("good.ofb");
+  const std::string bad = dir.File("bad.ofb");
+  ASSERT_EQ(WriteOFB(SmallOFB(), good), "");
+  const Bytes bytes = Load(good);
+  const std::vector<StoredArray> arrays = ListArrays(bytes);
+  // Each role's array retyped to another type of the same size, its header CRC
+  // recomputed: the values keep their bytes, only their meaning changes. Texture
+  // coordinates as uint32 crashed vtkPLYWriter on export.
+  struct Retyping
+  {
+    int Role;
+    int Type;
+  };
+  const Retyping retypings[] = {
+    { vtkDataSetAttributes::TCOORDS, VTK_UNSIGNED_INT },
+    { vtkDataSetAttributes::TCOORDS, VTK_INT },
+    { vtkDataSetAttributes::NORMALS, VTK_INT },
+    { vtkDataSetAttributes::VECTORS, VTK_UNSIGNED_INT },
+    { vtkDataSetAttributes::SCALARS, VTK_SIGNED_CHAR },
+    { vtkDataSetAttributes::SCALARS, VTK_CHAR },
+  };
+  for (const Retyping& r : retypings)
+  {
+    SCOPED_TRACE(std::string(vtkDataSetAttributes::GetAttributeTypeAsString(r.Role)) + " as " +
+      vtkImageScalarTypeNameMacro(r.Type));
+    const StoredArray* a = ArrayWithRole(arrays, r.Role);
+    ASSERT_TRUE(a);
+    Bytes forged = bytes;
+    Retype(forged, *a, r.Type);
+    Save(bad, forged, forged.size());
+    ExpectReadError(bad, "must hold");
+    ExpectReadError(bad, a->Name);
+  }
+
+  // An array without a role may have any numeric type: the double "Pressure" read as
+  // int64 loads.
+  for (const StoredArray& a : arrays)
+  {
+    if (a.Name == "Pressure")
+    {
+      ASSERT_EQ(a.Roles, 0u);
+      Bytes forged = bytes;
+      Retype(forged, a, VTK_LONG_LONG);
+      Save(bad, forged, forged.size());
+      std::string errors;
+      vtkSmartPointer<vtkOFB> back = ReadOFB(bad, errors);
+      EXPECT_EQ(errors, "");
+      ASSERT_TRUE(back->GetSampleData()->GetArray("Pressure"));
+      EXPECT_EQ(back->GetSampleData()->GetArray("Pressure")->GetDataType(), VTK_LONG_LONG);
+    }
+  }
+}
+
+TEST(IO, WriterRefusesArraysThatDoNotFitTheirRoles)
+{
+  TempDirectory dir;
+  const std::string path = dir.File("a.ofb");
+  vtkSmartPointer<vtkOFB> ofb = SmallOFB();
+  ASSERT_EQ(WriteOFB(ofb, path), "");
+  const Bytes original = Load(path);
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  vtkNew<vtkTypeUInt32Array> uv;
+  uv->SetName("UV");
+  uv->SetNumberOfComponents(2);
+  uv->SetNumberOfTuples(n);
+  uv->Fill(1);
+  ofb->GetSampleData()->SetTCoords(uv);
+  int result = 1;
+  const std::string errors = WriteOFB(ofb, path, &result);
+  EXPECT_NE(errors.find("texture coordinates"), std::string::npos) << errors;
+  EXPECT_EQ(result, 0);
+  EXPECT_EQ(Load(path), original);
+}
+
+TEST(IO, ImpossibleFramesAreRefused)
+{
+  TempDirectory dir;
+  const std::string good = dir.File("good.ofb");
+  const std::string bad = dir.File("bad.ofb");
+  ASSERT_EQ(WriteOFB(SmallOFB(), good), "");
+  const Bytes bytes = Load(good);
+  const size_t h = vtkOFBWriter::HeaderSize - 4;
+  auto bitsOf = [](double value)
+  {
+    vtkTypeUInt64 bits;
+    std::memcpy(&bits, &value, sizeof(bits));
+    return bits;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Forgery
+  {
+    size_t At;
+    int Size;
+    vtkTypeUInt64 Value;
+  };
+  const Forgery header[] = {
+    { 16, 8, bitsOf(1e308) },                  // origin x beyond float
+    { 24, 8, bitsOf(-1e308) },                 // origin y beyond float
+    { 32, 8, bitsOf(-inf) },                   // infinite origin z
+    { 40, 8, bitsOf(0.0) },                    // no cell size
+    { 40, 8, bitsOf(-0.1) },                   // a negative cell size
+    { 40, 8, bitsOf(inf) },                    // an infinite cell size
+    { 40, 8, bitsOf(1e38) },                   // a box beyond float
+    { 40, 8, bitsOf(4.9e-324) },               // a cell size whose inverse overflows
+    { 48, 8, 0xFFFFFFFFull },                  // 2^32 - 1 cells along x
+    { 48, 8, 0x80000000ull },                  // products over 2^32 cells
+    { 48, 8, static_cast<vtkTypeUInt64>(-1) }, // a negative dimension
+  };
+  for (const Forgery& f : header)
+  {
+    SCOPED_TRACE("header field at " + std::to_string(f.At) + " = " + std::to_string(f.Value));
+    Bytes forged = bytes;
+    PutLE(forged, f.At, f.Value, f.Size);
+    FixCRC(forged, 0, h);
+    Save(bad, forged, forged.size());
+    ExpectReadError(bad, "the header announces");
+  }
+  // A box that starts within float and ends beyond it.
+  {
+    Bytes forged = bytes;
+    PutLE(forged, 16, bitsOf(3e38), 8);
+    PutLE(forged, 40, bitsOf(1e37), 8);
+    FixCRC(forged, 0, h);
+    Save(bad, forged, forged.size());
+    ExpectReadError(bad, "beyond the range of float");
+  }
+  // Two dimensions of 2^32 - 1: their product fits in 64 bits, not in an OFB's cell indices.
+  {
+    Bytes forged = bytes;
+    PutLE(forged, 48, 0xFFFFFFFFull, 8);
+    PutLE(forged, 56, 0xFFFFFFFFull, 8);
+    FixCRC(forged, 0, h);
+    Save(bad, forged, forged.size());
+    ExpectReadError(bad, "dimensions");
+  }
+
+  // Depths outside the box (still finite and sorted within their cell), CRC recomputed:
+  // the last sample (the deepest of its cell) far beyond, the first far before.
+  const vtkTypeUInt64 cells = GetLE(bytes, 72, 8);
+  const vtkTypeUInt64 samples = GetLE(bytes, 80, 8);
+  const size_t depths = vtkOFBWriter::HeaderSize + 4 * (cells + 1) + 4;
+  const size_t arrays = FirstArrayOffset(bytes);
+  const std::pair<vtkTypeUInt64, float> outside[] = {
+    { samples - 1, 3e38f },
+    { 0, -3e38f },
+    { samples - 1, 1000.0f },
+    { 0, -1e-3f },
+  };
+  for (const auto& o : outside)
+  {
+    SCOPED_TRACE("depth " + std::to_string(o.first) + " = " + std::to_string(o.second));
+    Bytes forged = bytes;
+    vtkTypeUInt32 bits;
+    std::memcpy(&bits, &o.second, sizeof(bits));
+    PutLE(forged, depths + 4 * o.first, bits, 4);
+    FixCRC(forged, depths, arrays - 4);
+    Save(bad, forged, forged.size());
+    ExpectReadError(bad, "outside the box");
+  }
+}
+
 TEST(IO, ArrayNamesWithANulByteAreRejected)
 {
   TempDirectory dir;
@@ -447,10 +611,10 @@ TEST(IO, WriterErrorsAndAtomicReplace)
   EXPECT_EQ(result, 0);
   EXPECT_EQ(Load(path), original);
 
-  // A rename that fails (the target is a directory): temporary removed, error.
+  // A directory is refused before anything is written.
   vtksys::SystemTools::MakeDirectory(dir.File("adir"));
   errors = WriteOFB(first, dir.File("adir"), &result);
-  EXPECT_NE(errors.find("renam"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("is a directory, not a regular file"), std::string::npos) << errors;
   EXPECT_EQ(result, 0);
   EXPECT_TRUE(vtksys::SystemTools::FileIsDirectory(dir.File("adir")));
 

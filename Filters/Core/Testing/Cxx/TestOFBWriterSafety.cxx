@@ -1,6 +1,7 @@
 // vtkOFBWriter's replacement of a file: a writer killed mid-write leaves the old file and
 // no temporary, stale temporaries of dead writers are removed, the replaced file keeps its
-// permissions, and a symbolic link is written through.
+// permissions, a symbolic link is written through, and a target that is not a regular file
+// (a FIFO, a device, a directory) is refused and left as it is.
 #include "vtkOFBIOTestHelpers.h"
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <poll.h>
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
 #endif
 
@@ -207,5 +209,76 @@ TEST(WriterSafety, WritesThroughASymbolicLink)
   ExpectSameOFB(first, ReadOFB(dir.File("new.ofb"), errors));
   EXPECT_EQ(
     Sorted(dir.List()), Sorted({ "real.ofb", "link.ofb", "chain.ofb", "dangling.ofb", "new.ofb" }));
+}
+
+namespace
+{
+/// The type bits of `path` itself (not following a link), or 0 if it does not exist.
+mode_t FileType(const std::string& path)
+{
+  struct stat info;
+  return lstat(path.c_str(), &info) == 0 ? (info.st_mode & S_IFMT) : 0;
+}
+
+/// Writing to `target` must be refused with `expected` in the error, leaving `target`
+/// (of type `type`) as it was and nothing else in `dir` but `names`.
+void ExpectRefusedTarget(const TempDirectory& dir,
+  const std::string& target,
+  mode_t type,
+  const std::string& expected,
+  const std::vector<std::string>& names)
+{
+  int result = 1;
+  const std::string errors = WriteOFB(SmallOFB(), target, &result);
+  EXPECT_NE(errors.find(expected), std::string::npos) << errors;
+  EXPECT_NE(errors.find("not a regular file"), std::string::npos) << errors;
+  EXPECT_EQ(result, 0);
+  EXPECT_EQ(FileType(target), type);
+  EXPECT_EQ(Sorted(dir.List()), Sorted(names));
+}
+}
+
+TEST(WriterSafety, RefusesAFIFO)
+{
+  TempDirectory dir;
+  const std::string fifo = dir.File("pipe.ofb");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  // Opening the FIFO to write would block without a reader: the writer must not.
+  ExpectRefusedTarget(dir, fifo, S_IFIFO, "is a FIFO", { "pipe.ofb" });
+  // Nor through a symbolic link, which is kept.
+  ASSERT_EQ(symlink("pipe.ofb", dir.File("link.ofb").c_str()), 0);
+  ExpectRefusedTarget(dir, dir.File("link.ofb"), S_IFLNK, "is a FIFO", { "pipe.ofb", "link.ofb" });
+  EXPECT_EQ(FileType(fifo), static_cast<mode_t>(S_IFIFO));
+  // Reading it is refused at once too (opening it would wait for a writer).
+  ExpectReadError(fifo, "not a regular file");
+  EXPECT_FALSE(vtkOFBReader::CanReadFile(fifo.c_str()));
+}
+
+TEST(WriterSafety, RefusesACharacterDevice)
+{
+  if (geteuid() != 0)
+  {
+    GTEST_SKIP() << "making a device (mknod) needs root";
+  }
+  TempDirectory dir;
+  const std::string device = dir.File("null.ofb");
+  // The same device as /dev/null (major 1, minor 3).
+  if (mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0)
+  {
+    GTEST_SKIP() << "mknod refused (" << std::strerror(errno) << "): no CAP_MKNOD here";
+  }
+  ExpectRefusedTarget(dir, device, S_IFCHR, "is a character device", { "null.ofb" });
+  struct stat info;
+  ASSERT_EQ(stat(device.c_str(), &info), 0);
+  EXPECT_EQ(info.st_rdev, makedev(1, 3));
+}
+
+TEST(WriterSafety, RefusesADirectory)
+{
+  TempDirectory dir;
+  const std::string directory = dir.File("out.ofb");
+  ASSERT_TRUE(vtksys::SystemTools::MakeDirectory(directory));
+  ExpectRefusedTarget(dir, directory, S_IFDIR, "is a directory", { "out.ofb" });
+  EXPECT_EQ(vtksys::SystemTools::FileExists(directory + "/anything"), false);
 }
 #endif

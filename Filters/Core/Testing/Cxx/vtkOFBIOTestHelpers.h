@@ -292,6 +292,60 @@ inline size_t FirstArrayOffset(const Bytes& b)
   const vtkTypeUInt64 samples = GetLE(b, 80, 8);
   return static_cast<size_t>(vtkOFBWriter::HeaderSize + 4 * (cells + 1) + 4 + 4 * samples + 4);
 }
+
+/// Where a sample array lies in the bytes of a file (see vtkOFBWriter's layout).
+struct StoredArray
+{
+  std::string Name;
+  size_t Start = 0;  // the name length, which starts the array header
+  size_t Fields = 0; // type, element size, components, tuples, roles (24 bytes)
+  size_t Values = 0; // the values, after the CRC of the array header
+  size_t Size = 0;   // bytes of values, before their CRC
+  vtkTypeUInt32 Roles = 0;
+};
+
+/// The sample arrays of the valid file `b`.
+inline std::vector<StoredArray> ListArrays(const Bytes& b)
+{
+  std::vector<StoredArray> arrays;
+  const vtkTypeUInt64 count = GetLE(b, 88, 4);
+  const vtkTypeUInt64 samples = GetLE(b, 80, 8);
+  size_t at = FirstArrayOffset(b);
+  for (vtkTypeUInt64 k = 0; k < count; ++k)
+  {
+    StoredArray a;
+    a.Start = at;
+    const size_t length = static_cast<size_t>(GetLE(b, at, 4));
+    a.Name.assign(reinterpret_cast<const char*>(b.data()) + at + 4, length);
+    a.Fields = at + 4 + length;
+    a.Roles = static_cast<vtkTypeUInt32>(GetLE(b, a.Fields + 20, 4));
+    a.Values = a.Fields + 24 + 4;
+    a.Size = static_cast<size_t>(samples * GetLE(b, a.Fields + 8, 4) * GetLE(b, a.Fields + 4, 4));
+    at = a.Values + a.Size + 4;
+    arrays.push_back(a);
+  }
+  return arrays;
+}
+
+/// The stored array that plays attribute role `role`, or nullptr.
+inline const StoredArray* ArrayWithRole(const std::vector<StoredArray>& arrays, int role)
+{
+  for (const StoredArray& a : arrays)
+  {
+    if ((a.Roles >> role) & 1u)
+    {
+      return &a;
+    }
+  }
+  return nullptr;
+}
+
+/// Give stored array `a` the VTK type `type` (of the same element size) and reseal its header.
+inline void Retype(Bytes& b, const StoredArray& a, int type)
+{
+  PutLE(b, a.Fields, static_cast<vtkTypeUInt64>(type), 4);
+  FixCRC(b, a.Start, a.Fields + 24);
+}
 }
 
 #endif

@@ -69,7 +69,7 @@ xvfb() { xvfb-run -a -s "-screen 0 1280x1024x24" env ${dri:+LD_PRELOAD="$dri"} "
 if [ "$MODE" = --ci ]; then
   # The unit tests list their tests when built (gtest_discover_tests), under the sanitizers.
   cmake --build "$BUILD_DIR" -- -j"$JOBS" vtkOFBCoreGTests vtkOFBPaintGTests \
-    vtkOFBFlowPathsGTests vtkOFBExportGTests ofbFuzzReader ofbFuzzStrokes
+    vtkOFBFlowPathsGTests vtkOFBExportGTests ofbFuzzReader ofbFuzzStrokes ofbFuzzImageHeader
   echo "sanitize.sh: built in $((SECONDS - start)) s"
   (cd "$BUILD_DIR" && xvfb ctest -j"$JOBS" --output-on-failure \
     -R '^OFB\.(Core|Paint|FlowPaths|Export)\.')

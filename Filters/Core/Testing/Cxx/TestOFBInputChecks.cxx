@@ -55,7 +55,8 @@ vtkSmartPointer<vtkPolyData> EveryKind(bool storage64)
 std::string CheckIds(vtkPolyData* data)
 {
   std::string error;
-  EXPECT_EQ(vtkOFBCheckCellPointIds(data, error), error.empty());
+  const bool valid = vtkOFBCheckCellPointIds(data, error);
+  EXPECT_EQ(valid, error.empty());
   return error;
 }
 }

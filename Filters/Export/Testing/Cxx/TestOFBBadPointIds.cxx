@@ -31,11 +31,10 @@ vtkSmartPointer<vtkPolyData> TrianglePlane()
   return out;
 }
 
-/// The ids of a mesh of 25 points that the tests give: one past the end, far past it,
-/// and negative.
+/// Bad ids for the plane's 25 points: one past the end, far past it, and negative.
 const vtkIdType BadIds[] = { 25, 99999, -1 };
 
-/// Expect an error naming the point id, and no errors for the good mesh.
+/// Expect an error naming the bad point id.
 void ExpectBadIdError(const std::string& errors, vtkIdType badId)
 {
   EXPECT_NE(errors.find("point id " + std::to_string(badId)), std::string::npos) << errors;

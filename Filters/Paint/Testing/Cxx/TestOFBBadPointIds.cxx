@@ -42,8 +42,8 @@ void ExpectBadIdError(const std::string& errors, vtkIdType badId)
   EXPECT_NE(errors.find("point id " + std::to_string(badId)), std::string::npos) << errors;
 }
 
-/// Three stroke points over the plane; a polyline through `lineIds` and a vertex at
-/// `vertexId` (none when negative and `withVertex` is false).
+/// Three stroke points over the plane, a polyline through `lineIds` and, with
+/// `withVertex`, a vertex at `vertexId`.
 vtkSmartPointer<vtkPolyData> Strokes(const std::vector<vtkIdType>& lineIds,
   bool withVertex = false,
   vtkIdType vertexId = 0)

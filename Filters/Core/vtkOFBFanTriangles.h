@@ -1,4 +1,4 @@
-// Private header of vtkOFBTextureBaker and vtkOFBTextureProjector: the triangles of a
+// Installed helper of vtkOFBTextureBaker and vtkOFBTextureProjector: the triangles of a
 // mesh's polygons, each polygon split into a fan from its first point.
 #ifndef vtkOFBFanTriangles_h
 #define vtkOFBFanTriangles_h
@@ -13,7 +13,9 @@
 /**
  * Call `f(vtkIdType cell, const vtkIdType corner[3], const glm::dvec3 x[3])` for each
  * triangle of the fans of `mesh`'s polygons, in cell order: the polygon's id, the
- * triangle's point ids and their positions.
+ * triangle's point ids and their positions. The point ids are read unchecked: callers
+ * refuse a mesh whose cells name points that do not exist first (vtkOFBCheckCellPointIds,
+ * vtkOFBInputChecks.h).
  */
 template<typename Functor>
 void vtkOFBForEachFanTriangle(vtkPolyData* mesh, Functor&& f)

@@ -11,6 +11,7 @@
 #include "vtkOFB.h"
 #include "vtkOFBArrayLength.h"
 #include "vtkOFBCPUSampler.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -124,32 +125,31 @@ vtkIdType CopyPointCoordinates(vtkDataArray* points, double* out)
 
 /**
  * The triangles of a cell array with non-zero area, in order, and the bounds of
- * their points, found in parallel.
+ * their points, found in parallel. The point ids are valid (CheckInputCells).
  */
 struct TriangleCollector
 {
   const double* P;
-  vtkIdType NumberOfPoints;
   vtkIdType Skipped = 0;
 
-  TriangleCollector(const double* points, vtkIdType nPoints)
+  explicit TriangleCollector(const double* points)
     : P(points)
-    , NumberOfPoints(nPoints)
   {
   }
 
-  /// False if a triangle has a point id out of range.
-  bool Collect(vtkCellArray* cells, vtkOFBSurface& surface)
+  void Collect(vtkCellArray* cells, vtkOFBSurface& surface)
   {
     if (cells->IsHomogeneous() == 3 && cells->IsStorage64Bit())
     {
-      return this->Collect(
+      this->Collect(
         cells->GetConnectivityArray64()->GetPointer(0), cells->GetNumberOfCells(), surface);
+      return;
     }
     if (cells->IsHomogeneous() == 3)
     {
-      return this->Collect(
+      this->Collect(
         cells->GetConnectivityArray32()->GetPointer(0), cells->GetNumberOfCells(), surface);
+      return;
     }
     // Mixed cells (not left by the triangulation in practice): their triangles.
     std::vector<vtkIdType> ids;
@@ -164,16 +164,16 @@ struct TriangleCollector
         ids.insert(ids.end(), pts, pts + 3);
       }
     }
-    return this->Collect(ids.data(), static_cast<vtkIdType>(ids.size() / 3), surface);
+    this->Collect(ids.data(), static_cast<vtkIdType>(ids.size() / 3), surface);
   }
 
   template<typename IdT>
-  bool Collect(const IdT* ids, vtkIdType n, vtkOFBSurface& surface)
+  void Collect(const IdT* ids, vtkIdType n, vtkOFBSurface& surface)
   {
     const vtkIdType nChunks = (n + Chunk - 1) / Chunk;
     std::vector<vtkIdType> kept(nChunks + 1, 0);
     std::vector<double> bounds(6 * nChunks);
-    std::vector<unsigned char> valid(n), badIds(nChunks, 0);
+    std::vector<unsigned char> valid(n);
     vtkSMPTools::For(0,
       nChunks,
       1,
@@ -181,14 +181,10 @@ struct TriangleCollector
       {
         for (vtkIdType c = c0; c < c1; ++c)
         {
-          kept[c + 1] = this->Check(
-            ids, c * Chunk, std::min(n, (c + 1) * Chunk), valid.data(), &bounds[6 * c], badIds[c]);
+          kept[c + 1] =
+            this->Check(ids, c * Chunk, std::min(n, (c + 1) * Chunk), valid.data(), &bounds[6 * c]);
         }
       });
-    if (std::find(badIds.begin(), badIds.end(), 1) != badIds.end())
-    {
-      return false;
-    }
     for (vtkIdType c = 0; c < nChunks; ++c)
     {
       kept[c + 1] += kept[c];
@@ -225,20 +221,18 @@ struct TriangleCollector
         b[2 * k + 1] = std::max(b[2 * k + 1], bounds[6 * c + 2 * k + 1]);
       }
     }
-    return true;
   }
 
   /**
    * Triangles [begin, end): flags of those with non-zero area, their count and
-   * bounds; badId is set to 1 if one has a point id out of range.
+   * bounds.
    */
   template<typename IdT>
   vtkIdType Check(const IdT* ids,
     vtkIdType begin,
     vtkIdType end,
     unsigned char* valid,
-    double bounds[6],
-    unsigned char& badId) const
+    double bounds[6]) const
   {
     bounds[0] = bounds[2] = bounds[4] = VTK_DOUBLE_MAX;
     bounds[1] = bounds[3] = bounds[5] = -VTK_DOUBLE_MAX;
@@ -247,12 +241,6 @@ struct TriangleCollector
     {
       const IdT* tri = ids + 3 * t;
       valid[t] = 0;
-      if (tri[0] < 0 || tri[1] < 0 || tri[2] < 0 || tri[0] >= this->NumberOfPoints ||
-        tri[1] >= this->NumberOfPoints || tri[2] >= this->NumberOfPoints)
-      {
-        badId = 1;
-        continue;
-      }
       const double* p0 = this->P + 3 * tri[0];
       const double* p1 = this->P + 3 * tri[1];
       const double* p2 = this->P + 3 * tri[2];
@@ -507,6 +495,13 @@ bool vtkOFBSampler::CheckInputCells(vtkPolyData* input)
     vtkErrorMacro("The input surface is empty: no points.");
     return false;
   }
+  // Before anything (the triangulation included) reads a cell's points.
+  std::string error;
+  if (!vtkOFBCheckCellPointIds(input, error))
+  {
+    vtkErrorMacro("The input surface is invalid: " << error << ".");
+    return false;
+  }
   const vtkIdType nLinesVerts = input->GetNumberOfLines() + input->GetNumberOfVerts();
   if (nLinesVerts > 0)
   {
@@ -572,12 +567,8 @@ bool vtkOFBSampler::CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface)
     triangulate->Update();
     mesh = triangulate->GetOutput();
   }
-  TriangleCollector triangles(surface.Points.data(), input->GetNumberOfPoints());
-  if (!triangles.Collect(mesh->GetPolys(), surface))
-  {
-    vtkErrorMacro("The input has a polygon with an invalid point id.");
-    return false;
-  }
+  TriangleCollector triangles(surface.Points.data());
+  triangles.Collect(mesh->GetPolys(), surface);
   this->NumberOfSkippedTriangles = triangles.Skipped;
   if (this->NumberOfSkippedTriangles > 0)
   {

@@ -179,7 +179,8 @@ private:
   void operator=(const vtkOFBSampler&) = delete;
 
   /**
-   * Whether the input has points and polygons or strips (warning about lines and
+   * Whether the input has points, cells that name only existing points
+   * (vtkOFBCheckCellPointIds), and polygons or strips (warning about lines and
    * vertices). Returns false after reporting an error.
    */
   bool CheckInputCells(vtkPolyData* input);

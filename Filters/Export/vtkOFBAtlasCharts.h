@@ -22,7 +22,9 @@ class vtkOFBAtlasCharts
 public:
   /**
    * What does not depend on the density, once for the triangles that Build then lays out:
-   * each triangle's axis direction and its neighbours across edges.
+   * each triangle's axis direction and its neighbours across edges. The ids index `x`
+   * unchecked: vtkOFBTextureAtlas refuses a surface whose cells name points that do not
+   * exist (vtkOFBCheckCellPointIds) before it gets here.
    */
   void Prepare(const double* x, const vtkIdType* ids, vtkIdType n);
 

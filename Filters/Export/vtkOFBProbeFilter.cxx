@@ -7,6 +7,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkOFB.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkOFBPyramidResampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 vtkStandardNewMacro(vtkOFBProbeFilter);
 
@@ -97,6 +99,14 @@ int vtkOFBProbeFilter::RequestData(vtkInformation*,
   if (!input)
   {
     vtkErrorMacro("The input is not a vtkPolyData.");
+    return 1;
+  }
+  // The output shares the input's cells: cells naming points that do not exist would
+  // reach whatever reads it.
+  std::string error;
+  if (!vtkOFBCheckCellPointIds(input, error))
+  {
+    vtkErrorMacro("The surface (input port 0) is invalid: " << error << ".");
     return 1;
   }
   if (!ofb || ofb->GetNumberOfSamples() == 0)

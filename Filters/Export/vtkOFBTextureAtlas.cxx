@@ -11,6 +11,7 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkOFB.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -168,6 +170,15 @@ int vtkOFBTextureAtlas::RequestData(vtkInformation*,
   if (!ofb || ofb->GetNumberOfSamples() == 0 || !(ofb->GetCellSize() > 0.0))
   {
     vtkErrorMacro("No OFB, or an empty one (SetOFBData or SetOFBConnection).");
+    return 1;
+  }
+  // Cells naming points that do not exist, and short arrays (copied to the output),
+  // are refused before anything reads them.
+  std::string error;
+  if (input &&
+    (!vtkOFBCheckCellPointIds(input, error) || !vtkOFBCheckAttributeArrays(input, error)))
+  {
+    vtkErrorMacro("The surface (input port 0) is invalid: " << error << ".");
     return 1;
   }
   vtkCellArray* polys = input ? input->GetPolys() : nullptr;

@@ -6,6 +6,7 @@
 #include "vtkInformationVector.h"
 #include "vtkOFB.h"
 #include "vtkOFBFanTriangles.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkOFBPyramidResampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <new>
 #include <set>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBTextureBaker);
@@ -281,6 +283,12 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
   if (!mesh || !ofb || ofb->GetNumberOfSamples() == 0)
   {
     vtkErrorMacro("No mesh, or no OFB to bake or an empty one (SetOFBConnection).");
+    return 1;
+  }
+  std::string error;
+  if (!vtkOFBCheckCellPointIds(mesh, error))
+  {
+    vtkErrorMacro("The mesh (input port 0) is invalid: " << error << ".");
     return 1;
   }
   if (!tcoords || tcoords->GetNumberOfComponents() < 2 ||

@@ -12,6 +12,7 @@
 #include "vtkLookupTable.h"
 #include "vtkOFB.h"
 #include "vtkOFBArrayLength.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace
@@ -94,6 +96,14 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
     surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
   {
     vtkErrorMacro("The input surface has no polygons: no particles.");
+    return false;
+  }
+  // Before the cell vectors are averaged or the surface triangulated: both read the
+  // cells' points.
+  std::string error;
+  if (!vtkOFBCheckCellPointIds(surface, error))
+  {
+    vtkErrorMacro("The input surface (port 0) is invalid: " << error << ".");
     return false;
   }
   int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
@@ -179,7 +189,6 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
     triangulate->Update();
     triangles = triangulate->GetOutput();
   }
-  std::string error;
   if (!in.Walker.Build(triangles, pointVectors, error))
   {
     vtkErrorMacro("The input surface cannot carry particles: " << error << ".");

@@ -4,11 +4,10 @@
 #define vtkOFBDabArrays_h
 
 #include "vtkDataArray.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 
-#include <algorithm>
-#include <sstream>
 #include <string>
 
 /**
@@ -29,16 +28,12 @@ struct vtkOFBDabArrays
     {
       return nullptr;
     }
-    const vtkIdType points = this->Data->GetNumberOfPoints();
-    if (a->GetNumberOfComponents() < components || a->GetNumberOfTuples() < points)
+    std::string error;
+    if (!vtkOFBCheckArrayLength(a, this->Data->GetNumberOfPoints(), "points", error, components))
     {
       if (this->Error.empty())
       {
-        std::ostringstream os;
-        os << "The point array '" << name << "' has " << a->GetNumberOfTuples() << " tuples of "
-           << a->GetNumberOfComponents() << " components; " << points << " tuples of at least "
-           << components << " are needed.";
-        this->Error = os.str();
+        this->Error = "the point array " + error + ".";
       }
       return nullptr;
     }

@@ -4,6 +4,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkOFBTriangleWalker.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -177,6 +178,13 @@ int vtkOFBDecalPatch::RequestData(vtkInformation*,
   {
     return 1;
   }
+  // Before the triangulation, which reads the cells' points.
+  std::string error;
+  if (!vtkOFBCheckCellPointIds(input, error))
+  {
+    vtkErrorMacro("The surface (input port 0) is invalid: " << error << ".");
+    return 1;
+  }
   vtkInternals& cache = *this->Internals;
   if (cache.Input != input || cache.Time != input->GetMTime() || !cache.Locator)
   {
@@ -193,7 +201,6 @@ int vtkOFBDecalPatch::RequestData(vtkInformation*,
       triangulate->Update();
       triangles = triangulate->GetOutput();
     }
-    std::string error;
     if (!cache.Walker.Build(triangles, nullptr, error))
     {
       vtkErrorMacro("The surface cannot carry a decal: " << error << ".");

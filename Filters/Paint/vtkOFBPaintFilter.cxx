@@ -12,6 +12,7 @@
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBDabArrays.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkOFBPainter.h"
 #include "vtkOFBStrokeSampler.h"
 #include "vtkObjectFactory.h"
@@ -23,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 vtkStandardNewMacro(vtkOFBPaintFilter);
 
@@ -340,6 +342,14 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
   if (!this->Brush || !this->Painter)
   {
     vtkErrorMacro("No brush or no painter: empty output.");
+    return 1;
+  }
+  // The strokes' vertices and polylines index their points and per-point arrays (and
+  // cells without points to name are bad input too, not an empty stroke).
+  std::string error;
+  if (strokes && !vtkOFBCheckCellPointIds(strokes, error))
+  {
+    vtkErrorMacro("The strokes (input port 1) are invalid: " << error << ".");
     return 1;
   }
   vtkSmartPointer<vtkPolyData> dabs;

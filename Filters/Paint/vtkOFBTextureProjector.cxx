@@ -5,6 +5,7 @@
 #include "vtkInformationVector.h"
 #include "vtkOFB.h"
 #include "vtkOFBFanTriangles.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkOFBPyramidResampler.h" // vtkOFBSampleNormals
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBTextureProjector);
@@ -360,6 +362,12 @@ int vtkOFBTextureProjector::RequestData(vtkInformation*,
   if (!input || input->GetNumberOfSamples() == 0)
   {
     vtkErrorMacro("The input OFB is missing or has no samples: empty output.");
+    return 1;
+  }
+  std::string error;
+  if (mesh && !vtkOFBCheckCellPointIds(mesh, error))
+  {
+    vtkErrorMacro("The mesh (input port 1) is invalid: " << error << ".");
     return 1;
   }
   if (!tcoords || tcoords->GetNumberOfComponents() < 2 ||

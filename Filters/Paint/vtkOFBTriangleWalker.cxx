@@ -4,6 +4,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
+#include "vtkOFBInputChecks.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
@@ -32,6 +33,18 @@ inline void Normalize(glm::dvec3& b)
 bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, std::string& error)
 {
   const vtkIdType numPoints = surface ? surface->GetNumberOfPoints() : 0;
+  // The callers check their input first; the walker, shared between modules, does not
+  // rely on it before it indexes points and vectors.
+  if (surface && !vtkOFBCheckCellPointIds(surface, error))
+  {
+    error = "the surface is invalid: " + error;
+    return false;
+  }
+  if (!vtkOFBCheckArrayLength(vectors, numPoints, "points", error, 3))
+  {
+    error = "the vector field " + error;
+    return false;
+  }
   this->Points.resize(numPoints);
   this->Vectors.assign(numPoints, glm::dvec3(0.0));
   this->Records.clear();

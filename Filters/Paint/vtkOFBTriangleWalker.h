@@ -155,9 +155,10 @@ public:
   /**
    * Take the triangles of `surface` (every polygon must be a triangle: run
    * vtkTriangleFilter first) and its point `vectors` (3 components, or null for a
-   * zero field). Returns false with `error` set when there is no triangle of
-   * non-zero area. Triangles of zero area are left out; the others keep their
-   * order.
+   * zero field, else at least a tuple a point). Returns false with `error` set when a
+   * cell names a point that does not exist, the vectors are short, or there is no
+   * triangle of non-zero area. Triangles of zero area are left out; the others keep
+   * their order.
    */
   bool Build(vtkPolyData* surface, vtkDataArray* vectors, std::string& error);
 

@@ -2,6 +2,7 @@
 #ifndef vtkOFBTestUtilities_h
 #define vtkOFBTestUtilities_h
 
+#include "vtkCellArray.h"
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkFloatArray.h"
@@ -102,6 +103,23 @@ inline vtkSmartPointer<vtkPolyData> MakeTexturedPlane(int resolution)
   plane->SetPoint2(-1, 1, 0);
   plane->Update();
   vtkSmartPointer<vtkPolyData> out = plane->GetOutput();
+  return out;
+}
+
+/**
+ * A shallow copy of `mesh` with one more polygon, a triangle of points 0, 1 and `badId`
+ * (past the end or negative), as a hostile file (an OBJ with `f 1 2 99999`) or a
+ * hand-built vtkCellArray gives: vtkPolyData does not refuse it.
+ */
+inline vtkSmartPointer<vtkPolyData> WithBadPointId(vtkPolyData* mesh, vtkIdType badId)
+{
+  vtkNew<vtkCellArray> polys;
+  polys->DeepCopy(mesh->GetPolys());
+  const vtkIdType ids[3] = { 0, 1, badId };
+  polys->InsertNextCell(3, ids);
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(mesh);
+  out->SetPolys(polys);
   return out;
 }
 

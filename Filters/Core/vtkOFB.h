@@ -339,8 +339,10 @@ public:
    * `AllocateSamples()`, `ShallowCopy()` and `DeepCopy()` refuse with an error and
    * change nothing (they would free the arrays under the writer). Thread-safe.
    */
+#ifndef __VTK_WRAP__
   bool BeginExclusiveWrite(const void* owner);
   void EndExclusiveWrite(const void* owner);
+#endif
   bool IsBeingWritten() const;
   ///@}
 

@@ -239,8 +239,9 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
   {
     const bool rebuilt = ofb->GetStructureMTime() != internals.LastStructureTime ||
       n != internals.LastNumberOfSamples ||
-      (internals.HadColors && colors != internals.LastColors.GetPointer()) ||
-      (internals.HadNormals && normals != internals.LastNormals.GetPointer());
+      // An array freed since reads as null through its weak pointer: changed as well.
+      (internals.HadColors && (!internals.LastColors || colors != internals.LastColors)) ||
+      (internals.HadNormals && (!internals.LastNormals || normals != internals.LastNormals));
     if (rebuilt || ofb->GetMTime() != internals.LastMTime)
     {
       if (!internals.UndoSteps.empty() || !internals.RedoSteps.empty() || !internals.Open.Empty())

@@ -237,6 +237,7 @@ TEST(PainterRobust, ChangesBetweenCallsAreFollowed)
     painter->SetOFB(SphereOFB(96));
     vtkOFB* ofb = painter->GetOFB();
     painter->GetBrush()->SetRadius(0.3);
+    painter->GetBrush()->SetColor(0.2, 0.4, 0.6);
     EXPECT_GT(painter->Dab(0, 0, 1), 0);
     switch (variant)
     {
@@ -280,6 +281,7 @@ TEST(PainterRobust, TwoPaintersOnOneOFB)
   vtkNew<MessageObserver> own;
   own->Watch(first);
   ProgressAction reentry(first, [&]() { again = first->Dab(0, 0, 1); });
+  first->GetBrush()->SetColor(1, 0, 0);
   EXPECT_GT(first->Dab(0, 0, 0), 0);
   EXPECT_EQ(again, 0);
   EXPECT_NE(own->Errors.find("in progress"), std::string::npos);
@@ -441,6 +443,7 @@ TEST(PainterRobust, TooManyDabsAreRefusedFast)
   vtkNew<vtkOFBPainter> painter;
   painter->SetOFB(SphereOFB(48));
   painter->GetBrush()->SetRadius(0.05);
+  painter->GetBrush()->SetColor(0.2, 0.4, 0.6);
   EXPECT_EQ(painter->GetMaximumDabsPerCall(), vtkIdType(1) << 22);
   vtkNew<MessageObserver> messages;
   messages->Watch(painter);
@@ -494,6 +497,7 @@ TEST(PainterRobust, ManyDabsReportProgressAndAbort)
     vtkNew<vtkOFBPainter> painter;
     painter->SetOFB(SphereOFB(96));
     painter->GetBrush()->SetRadius(0.05);
+    painter->GetBrush()->SetColor(0.2, 0.4, 0.6);
     std::vector<double> progress;
     vtkNew<vtkCallbackCommand> cb;
     cb->SetClientData(&progress);
@@ -510,6 +514,7 @@ TEST(PainterRobust, ManyDabsReportProgressAndAbort)
   vtkSmartPointer<vtkOFB> ofb = SphereOFB(96);
   painter->SetOFB(ofb);
   painter->GetBrush()->SetRadius(0.05);
+  painter->GetBrush()->SetColor(0.2, 0.4, 0.6);
   ProgressAction abort(painter, [&]() { painter->AbortPaintOn(); });
   const vtkIdType aborted = painter->Dabs(points);
   EXPECT_TRUE(abort.Done);

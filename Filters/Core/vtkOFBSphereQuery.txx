@@ -98,8 +98,7 @@ inline bool vtkOFBSphereQuery::BeginGrid(int a,
   // becomes an infinity in double first, which float holds.
   const double low = base.D - radius;
   constexpr double floatMax = 3.4028234663852886e38;
-  base.DLow = static_cast<float>(
-    low < -floatMax ? -HUGE_VAL : (low > floatMax ? HUGE_VAL : low));
+  base.DLow = static_cast<float>(low < -floatMax ? -HUGE_VAL : (low > floatMax ? HUGE_VAL : low));
   base.DHigh = base.D + radius;
   base.UCentre = center[ua];
   base.UAxis = ua;

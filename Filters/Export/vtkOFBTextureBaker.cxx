@@ -313,9 +313,8 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
     w, h, source->GetNumberOfComponents() * source->GetDataTypeSize());
   if (bytes / (vtkIdType(1) << 20) >= this->MemoryLimit)
   {
-    vtkErrorMacro("Baking a " << w << " x " << h << " texture would take about "
-                              << (bytes >> 20) << " MiB, more than MemoryLimit ("
-                              << this->MemoryLimit
+    vtkErrorMacro("Baking a " << w << " x " << h << " texture would take about " << (bytes >> 20)
+                              << " MiB, more than MemoryLimit (" << this->MemoryLimit
                               << " MiB): refused. Raise MemoryLimit or bake a smaller texture.");
     return 1;
   }
@@ -422,7 +421,8 @@ vtkIdType vtkOFBTextureBaker::EstimateBakeBytes(int width, int height, int bytes
   // Per texel, at most: its slot (4), and when covered its texel id (8), surface
   // point (24), normal (12) and found flag (1); the image's mask (1) and fill flags
   // (1); the looked-up values and the image's values (a tuple each).
-  const vtkIdType perTexel = 4 + 8 + 24 + 12 + 1 + 1 + 1 + 2 * vtkIdType(std::max(0, bytesPerTuple));
+  const vtkIdType perTexel =
+    4 + 8 + 24 + 12 + 1 + 1 + 1 + 2 * vtkIdType(std::max(0, bytesPerTuple));
   return static_cast<vtkIdType>(std::max(0, width)) * std::max(0, height) * perTexel;
 }
 

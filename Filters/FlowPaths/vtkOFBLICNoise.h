@@ -143,10 +143,7 @@ private:
     {
       const glm::dvec3 o((c & 1) ? 1.0 : 0.0, (c & 2) ? 1.0 : 0.0, (c & 4) ? 1.0 : 0.0);
       const glm::dvec3 q = f + o;
-      const std::uint64_t h = Hash(Cell(q.x),
-        Cell(q.y),
-        Cell(q.z),
-        this->S.Seed * 16 + 8 + octave);
+      const std::uint64_t h = Hash(Cell(q.x), Cell(q.y), Cell(q.z), this->S.Seed * 16 + 8 + octave);
       // One of the 12 edge directions of a cube (improved Perlin noise).
       static const double g[12][3] = { { 1, 1, 0 },
         { -1, 1, 0 },

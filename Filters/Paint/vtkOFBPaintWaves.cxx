@@ -34,7 +34,8 @@ std::int64_t CellCoordinate(double v)
 {
   constexpr double limit = 1152921504606846976.0; // 2^60
   const double f = std::floor(v);
-  return static_cast<std::int64_t>(f > -limit ? (f < limit ? f : limit) : (f <= -limit ? -limit : 0.0));
+  return static_cast<std::int64_t>(
+    f > -limit ? (f < limit ? f : limit) : (f <= -limit ? -limit : 0.0));
 }
 }
 

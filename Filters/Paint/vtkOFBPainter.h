@@ -237,8 +237,8 @@ public:
 
   /**
    * Take the settings of `source`: Spacing, the mirror settings, DefaultColor,
-   * MaximumDabsPerCall and UndoLimit (not its OFB, brush, history or stroke). vtkOFBPaintFilter paints with
-   * the settings of the painter it holds so.
+   * MaximumDabsPerCall and UndoLimit (not its OFB, brush, history or stroke). vtkOFBPaintFilter
+   * paints with the settings of the painter it holds so.
    */
   void CopySettings(vtkOFBPainter* source);
 

@@ -4,9 +4,9 @@
 #include "vtkOFBTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
-#include "vtkExecutive.h"
 #include "vtkOFBBrush.h"
 #include "vtkOFBDecalPatch.h"
 #include "vtkOFBPaintFilter.h"
@@ -177,8 +177,7 @@ TEST(PainterRobust, RebuildingTheOFBDuringACallIsRefused)
     ProgressAction action(painter, [&]() { change.second(ofb); });
     EXPECT_EQ(painter->Dab(0, 0, 0), n) << change.first;
     EXPECT_TRUE(action.Done);
-    EXPECT_NE(messages->Errors.find(change.first + ": the OFB is being painted"),
-      std::string::npos)
+    EXPECT_NE(messages->Errors.find(change.first + ": the OFB is being painted"), std::string::npos)
       << messages->Errors;
     EXPECT_EQ(ofb->GetNumberOfSamples(), n);
     EXPECT_FALSE(ofb->IsBeingWritten());

@@ -44,6 +44,9 @@ struct vtkOFB::vtkInternals
 
   /// The sample ranges marked modified (see MarkSamplesModified).
   vtkOFBModifiedRanges ModifiedRanges;
+
+  /// The exclusive writer (see BeginExclusiveWrite), null when none.
+  std::atomic<const void*> Writer{ nullptr };
 };
 
 namespace
@@ -97,6 +100,10 @@ vtkOFB::~vtkOFB() = default;
 //------------------------------------------------------------------------------
 void vtkOFB::Initialize()
 {
+  if (!this->CheckNotBeingWritten("Initialize"))
+  {
+    return;
+  }
   this->Internals->Spares.clear();
   this->Reset();
 }
@@ -127,6 +134,10 @@ void vtkOFB::Reset()
 //------------------------------------------------------------------------------
 void vtkOFB::Recycle()
 {
+  if (!this->CheckNotBeingWritten("Recycle"))
+  {
+    return;
+  }
   // An array is free when this OFB (or its sample data, itself held by nobody
   // else) holds the only reference.
   std::vector<vtkSmartPointer<vtkDataArray>> spares = std::move(this->Internals->Spares);
@@ -215,6 +226,10 @@ bool vtkOFB::SetFrame(const double origin[3],
   const vtkIdType dims[3],
   bool zeroOffsets)
 {
+  if (!this->CheckNotBeingWritten("SetFrame"))
+  {
+    return false;
+  }
   this->Reset();
   if (!(cellSize > 0.0) || !std::isfinite(cellSize) || !std::isfinite(origin[0]) ||
     !std::isfinite(origin[1]) || !std::isfinite(origin[2]))
@@ -272,6 +287,10 @@ bool vtkOFB::SetFrame(const double origin[3],
 //------------------------------------------------------------------------------
 bool vtkOFB::AllocateSamples(vtkIdType n)
 {
+  if (!this->CheckNotBeingWritten("AllocateSamples"))
+  {
+    return false;
+  }
   if (n < 0 || n >= static_cast<vtkIdType>(std::numeric_limits<vtkTypeUInt32>::max()))
   {
     vtkErrorMacro("AllocateSamples: invalid number of samples " << n << ".");
@@ -662,7 +681,7 @@ void vtkOFB::CopyFrom(vtkDataObject* src, bool deep)
     vtkErrorMacro(<< (deep ? "DeepCopy" : "ShallowCopy") << ": the source is not a vtkOFB.");
     return;
   }
-  if (ofb == this)
+  if (ofb == this || !this->CheckNotBeingWritten(deep ? "DeepCopy" : "ShallowCopy"))
   {
     return;
   }
@@ -720,6 +739,39 @@ void vtkOFB::CopyFrom(vtkDataObject* src, bool deep)
   }
   this->Internals->Recycled = vtkInternals::RecycledStructure();
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFB::BeginExclusiveWrite(const void* owner)
+{
+  const void* none = nullptr;
+  return owner && this->Internals->Writer.compare_exchange_strong(none, owner);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFB::EndExclusiveWrite(const void* owner)
+{
+  const void* expected = owner;
+  this->Internals->Writer.compare_exchange_strong(expected, nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFB::IsBeingWritten() const
+{
+  return this->Internals->Writer.load() != nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFB::CheckNotBeingWritten(const char* what)
+{
+  if (this->Internals->Writer.load() != nullptr)
+  {
+    vtkErrorMacro(<< what
+                  << ": the OFB is being painted (called from an observer of the paint "
+                     "call?): refused, nothing changed.");
+    return false;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -331,6 +331,23 @@ public:
 
   ///@{
   /**
+   * Exclusive writers. A writer that holds raw pointers into the OFB's arrays for the
+   * length of a call (vtkOFBPainter during a paint call, whose progress observers run
+   * application code) takes the OFB with `BeginExclusiveWrite(owner)` and gives it back
+   * with `EndExclusiveWrite(owner)`. While it is held, a second writer's
+   * BeginExclusiveWrite returns false, and `Initialize()`, `Recycle()`, `SetFrame()`,
+   * `AllocateSamples()`, `ShallowCopy()` and `DeepCopy()` refuse with an error and
+   * change nothing (they would free the arrays under the writer). Thread-safe.
+   */
+#ifndef __VTK_WRAP__
+  bool BeginExclusiveWrite(const void* owner);
+  void EndExclusiveWrite(const void* owner);
+#endif
+  bool IsBeingWritten() const;
+  ///@}
+
+  ///@{
+  /**
    * Memory of the sample storage and attributes, in KiB (vtkDataObject convention),
    * and in bytes per sample.
    */
@@ -398,6 +415,8 @@ private:
 
   /// Initialize() but for the spares (see Recycle()).
   void Reset();
+  /// False, with an error naming `what`, while an exclusive writer holds the OFB.
+  bool CheckNotBeingWritten(const char* what);
 
   // The spare arrays and the structure that Recycle() let go, and the modified ranges.
   struct vtkInternals;

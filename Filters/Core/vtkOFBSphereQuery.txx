@@ -94,7 +94,11 @@ inline bool vtkOFBSphereQuery::BeginGrid(int a,
   base.RowBase = this->CellBase[a];
   base.D = center[a] - this->Origin[a];
   base.R2 = radius * radius;
-  base.DLow = static_cast<float>(base.D - radius);
+  // Compared with float depths: a bound beyond the float range (a far origin or centre)
+  // becomes an infinity in double first, which float holds.
+  const double low = base.D - radius;
+  constexpr double floatMax = 3.4028234663852886e38;
+  base.DLow = static_cast<float>(low < -floatMax ? -HUGE_VAL : (low > floatMax ? HUGE_VAL : low));
   base.DHigh = base.D + radius;
   base.UCentre = center[ua];
   base.UAxis = ua;

@@ -315,6 +315,17 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
       << "' to bake.");
     return 1;
   }
+  // Checked before anything is allocated: an allocation of many GiB may succeed and
+  // then exhaust the memory page by page instead of failing.
+  const vtkIdType bytes = vtkOFBTextureBaker::EstimateBakeBytes(
+    w, h, source->GetNumberOfComponents() * source->GetDataTypeSize());
+  if (bytes / (vtkIdType(1) << 20) >= this->MemoryLimit)
+  {
+    vtkErrorMacro("Baking a " << w << " x " << h << " texture would take about " << (bytes >> 20)
+                              << " MiB, more than MemoryLimit (" << this->MemoryLimit
+                              << " MiB): refused. Raise MemoryLimit or bake a smaller texture.");
+    return 1;
+  }
   if (mesh->GetNumberOfStrips() > 0 || mesh->GetNumberOfLines() > 0)
   {
     vtkWarningMacro("Strips and lines are not baked: apply vtkTriangleFilter first.");
@@ -413,6 +424,17 @@ void vtkOFBTextureBaker::Bake(vtkPolyData* mesh,
 }
 
 //------------------------------------------------------------------------------
+vtkIdType vtkOFBTextureBaker::EstimateBakeBytes(int width, int height, int bytesPerTuple)
+{
+  // Per texel, at most: its slot (4), and when covered its texel id (8), surface
+  // point (24), normal (12) and found flag (1); the image's mask (1) and fill flags
+  // (1); the looked-up values and the image's values (a tuple each).
+  const vtkIdType perTexel =
+    4 + 8 + 24 + 12 + 1 + 1 + 1 + 2 * vtkIdType(std::max(0, bytesPerTuple));
+  return static_cast<vtkIdType>(std::max(0, width)) * std::max(0, height) * perTexel;
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBTextureBaker::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -423,5 +445,6 @@ void vtkOFBTextureBaker::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Radius << " cells\n";
   os << indent << "NormalAware: " << (this->NormalAware ? "On" : "Off") << "\n";
   os << indent << "Padding: " << this->Padding << " texels\n";
+  os << indent << "MemoryLimit: " << this->MemoryLimit << " MiB\n";
   os << indent << "NumberOfBakedTexels: " << this->NumberOfBakedTexels << "\n";
 }

@@ -28,8 +28,8 @@
  * into the edges of UV islands.
  *
  * Errors (an empty image): no OFB or an empty one, a mesh without texture
- * coordinates, a TextureSize outside [1, 16384], a Radius that is not positive and
- * finite, an array the OFB lacks.
+ * coordinates, a TextureSize outside [1, 16384] or one whose bake would take more
+ * than MemoryLimit, a Radius that is not positive and finite, an array the OFB lacks.
  *
  * @sa vtkOFBProbeFilter vtkTexture vtkPNGWriter
  */
@@ -108,6 +108,24 @@ public:
   vtkGetMacro(Padding, int);
   ///@}
 
+  ///@{
+  /**
+   * Most memory a bake may take, in MiB (default 4096; at least 1). The baker
+   * estimates its working memory before allocating anything, at most 51 bytes a texel
+   * besides two tuples of the baked array (for RGBA bytes: 59 bytes a texel, so a
+   * 4096 x 4096 texture needs up to 0.9 GiB and 16384 x 16384 up to 15 GiB), and
+   * refuses a TextureSize whose estimate exceeds the limit with an error naming it.
+   */
+  vtkSetClampMacro(MemoryLimit, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MemoryLimit, vtkIdType);
+  ///@}
+
+  /**
+   * The working memory, in bytes, that baking a `width` x `height` texture of a sample
+   * array of `bytesPerTuple` bytes a tuple takes at most (see MemoryLimit).
+   */
+  static vtkIdType EstimateBakeBytes(int width, int height, int bytesPerTuple);
+
   /**
    * Number of texels the last update covered with a triangle and found a sample for.
    */
@@ -136,6 +154,7 @@ protected:
   double Radius;
   bool NormalAware = true;
   int Padding = 4;
+  vtkIdType MemoryLimit = 4096;
   vtkIdType NumberOfBakedTexels = 0;
 
 private:

@@ -59,9 +59,9 @@ public:
   {
     const glm::dvec3 g = (x - this->Origin) * this->InvGrain;
     const glm::dvec3 f = glm::floor(g);
-    const std::int64_t ix = static_cast<std::int64_t>(f.x);
-    const std::int64_t iy = static_cast<std::int64_t>(f.y);
-    const std::int64_t iz = static_cast<std::int64_t>(f.z);
+    const std::int64_t ix = Cell(f.x);
+    const std::int64_t iy = Cell(f.y);
+    const std::int64_t iz = Cell(f.z);
     double u;
     switch (this->S.Type)
     {
@@ -85,6 +85,15 @@ public:
       return static_cast<float>(this->FinishLevel(this->GaussianLevel(u)));
     }
     return static_cast<float>(this->Finish(u));
+  }
+
+  /// A lattice coordinate as an integer, clamped in double to +-2^62 (NaN to 0) first: a
+  /// far origin or position has no int64 cell.
+  static std::int64_t Cell(double v)
+  {
+    constexpr double limit = 4611686018427387904.0; // 2^62
+    return static_cast<std::int64_t>(
+      v > -limit ? (v < limit ? v : limit) : (v <= -limit ? -limit : 0.0));
   }
 
   /// A 64-bit hash of a lattice cell, the seed and a stream number (splitmix64 rounds).
@@ -134,10 +143,7 @@ private:
     {
       const glm::dvec3 o((c & 1) ? 1.0 : 0.0, (c & 2) ? 1.0 : 0.0, (c & 4) ? 1.0 : 0.0);
       const glm::dvec3 q = f + o;
-      const std::uint64_t h = Hash(static_cast<std::int64_t>(q.x),
-        static_cast<std::int64_t>(q.y),
-        static_cast<std::int64_t>(q.z),
-        this->S.Seed * 16 + 8 + octave);
+      const std::uint64_t h = Hash(Cell(q.x), Cell(q.y), Cell(q.z), this->S.Seed * 16 + 8 + octave);
       // One of the 12 edge directions of a cube (improved Perlin noise).
       static const double g[12][3] = { { 1, 1, 0 },
         { -1, 1, 0 },

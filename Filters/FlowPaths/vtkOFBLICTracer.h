@@ -115,7 +115,9 @@ struct vtkOFBLICTiles
     for (int a = 0; a < 3; ++a)
     {
       const double f = (x[a] - this->Origin[a]) * this->Scale;
-      t[a] = f > 0.0 ? std::min(this->Counts[a] - 1, static_cast<vtkIdType>(f)) : 0;
+      // Clamped in double before the conversion (NaN, from an infinite position, to 0).
+      t[a] =
+        f > 0.0 ? static_cast<vtkIdType>(std::min(f, static_cast<double>(this->Counts[a] - 1))) : 0;
     }
     return (t[2] * this->Counts[1] + t[1]) * this->Counts[0] + t[0];
   }

@@ -225,12 +225,14 @@ public:
 
   ///@{
   /**
-   * Normal target: bump depth, dimensionless (default 0.5). A sample's normal n
-   * becomes normalize(n + BumpDepth * G * t), t the component tangent to n of
-   * (P - C) / Radius: positive values raise a bump, negative ones press a dent.
-   * The Erase blend mode restores the initial normals instead.
+   * Normal target: bump depth, dimensionless, in [-1000, 1000] (default 0.5). A
+   * sample's normal n becomes normalize(n + BumpDepth * G * t), t the component
+   * tangent to n of (P - C) / Radius: positive values raise a bump, negative ones
+   * press a dent. The Erase blend mode restores the initial normals instead. Values
+   * beyond the range are clamped to it (at 1000 the normals lie almost in the tangent
+   * plane already; far larger ones overflow the float normals).
    */
-  vtkSetMacro(BumpDepth, double);
+  vtkSetClampMacro(BumpDepth, double, -1000.0, 1000.0);
   vtkGetMacro(BumpDepth, double);
   ///@}
 

@@ -60,6 +60,8 @@ constexpr vtkIdType ProgressMask = (vtkIdType(1) << 20) - 1;
 
 // Waves smaller than this run on the calling thread.
 constexpr size_t MinParallelWave = 8;
+// Calls of at least this many dabs report progress between dabs.
+constexpr size_t ManyDabs = 4096;
 // How many dabs ahead of the query's planning a dab's record is prefetched (the
 // dabs of a wave are visited in spatial order, not in memory order).
 constexpr vtkIdType DabLookAhead = 6;
@@ -242,7 +244,11 @@ void vtkOFBPaintKernel::ReportProgress(DabWork& work) const
   if ((++work.Visited & ProgressMask) == 0)
   {
     const double total = static_cast<double>(this->NumberOfSamples);
-    (*work.Progress)(work.ProgressBase + work.ProgressSpan * std::min(1.0, work.Visited / total));
+    if (!(*work.Progress)(
+          work.ProgressBase + work.ProgressSpan * std::min(1.0, work.Visited / total)))
+    {
+      work.Stop = true;
+    }
   }
 }
 
@@ -251,7 +257,7 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
   const vtkOFBPaintSettings& settings,
   std::vector<vtkOFBColorRecord>& colorUndo,
   std::vector<vtkOFBNormalRecord>& normalUndo,
-  const std::function<void(double)>& progress)
+  const std::function<bool(double)>& progress)
 {
   if (dabs.empty() || this->NumberOfSamples == 0)
   {
@@ -268,13 +274,27 @@ void vtkOFBPaintKernel::Paint(const std::vector<vtkOFBDab>& dabs,
   }
   const double total = static_cast<double>(dabs.size());
   DabWork serial{ &s.Records.Local(), progress ? &progress : nullptr };
-  for (size_t w = 0; w + 1 < waveStarts.size(); ++w)
+  // A call of many dabs also reports between dabs, about every hundredth of them (a
+  // check per dab or wave, outside the per-sample loops).
+  const size_t reportEvery =
+    progress && dabs.size() >= ManyDabs ? std::max<size_t>(1, dabs.size() / 100) : 0;
+  size_t nextReport = reportEvery;
+  auto carryOn = [&](int k)
+  {
+    if (reportEvery && static_cast<size_t>(k) >= nextReport)
+    {
+      nextReport = static_cast<size_t>(k) + reportEvery;
+      serial.Stop = serial.Stop || !progress(k / total);
+    }
+    return !serial.Stop;
+  };
+  for (size_t w = 0; w + 1 < waveStarts.size() && carryOn(waveStarts[w]); ++w)
   {
     const int begin = waveStarts[w];
     const int end = waveStarts[w + 1];
     if (static_cast<size_t>(end - begin) < MinParallelWave)
     {
-      for (int k = begin; k < end; ++k)
+      for (int k = begin; k < end && carryOn(k); ++k)
       {
         serial.Visited = 0;
         serial.ProgressBase = k / total;
@@ -356,7 +376,7 @@ bool vtkOFBPaintKernel::CentreNormal(const vtkOFBDab& dab, double n[3]) const
     v = glm::dvec3(m[0], m[1], m[2]);
   }
   const double len = glm::length(v);
-  if (!(len > 0.0))
+  if (!(len > 0.0) || !std::isfinite(len)) // no direction, or one too large to normalize
   {
     return false;
   }

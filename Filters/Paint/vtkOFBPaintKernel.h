@@ -101,13 +101,15 @@ public:
   /**
    * Paint `dabs` in order. The previous values of samples not yet recorded in
    * the current undo step are appended to `colorUndo` / `normalUndo`. `progress`
-   * (may be empty) is called with a fraction in [0, 1] now and then.
+   * (may be empty) is called with a fraction in [0, 1] now and then (within large
+   * dabs, and between dabs of calls of many dabs); when it returns false the call
+   * stops before its next dab (or wave of parallel dabs).
    */
   void Paint(const std::vector<vtkOFBDab>& dabs,
     const vtkOFBPaintSettings& settings,
     std::vector<vtkOFBColorRecord>& colorUndo,
     std::vector<vtkOFBNormalRecord>& normalUndo,
-    const std::function<void(double)>& progress);
+    const std::function<bool(double)>& progress);
 
   /**
    * The sorted [first, last) ranges of the samples changed since the last call of

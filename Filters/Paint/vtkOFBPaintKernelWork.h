@@ -61,7 +61,8 @@ struct vtkOFBPaintKernel::LocalRecords
 struct vtkOFBPaintKernel::DabWork
 {
   LocalRecords* Records;
-  const std::function<void(double)>* Progress; // null in parallel waves
+  const std::function<bool(double)>* Progress; // null in parallel waves
+  bool Stop = false;                           // the progress function asked to stop
   vtkIdType Visited = 0;
   double ProgressBase = 0.0;
   double ProgressSpan = 0.0;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace
 {
@@ -14,7 +15,9 @@ vtkTypeUInt64 MortonCode(const glm::dvec3& q)
 {
   auto spread = [](double v)
   {
-    vtkTypeUInt64 x = static_cast<vtkTypeUInt64>(std::min(std::max(v, 0.0), 2097151.0));
+    // Clamped in double first: NaN (an infinite centre) and values out of range have no
+    // integer.
+    vtkTypeUInt64 x = static_cast<vtkTypeUInt64>(v > 0.0 ? std::min(v, 2097151.0) : 0.0);
     x = (x | (x << 32)) & 0x1f00000000ffffull;
     x = (x | (x << 16)) & 0x1f0000ff0000ffull;
     x = (x | (x << 8)) & 0x100f00f00f00f00full;
@@ -23,6 +26,16 @@ vtkTypeUInt64 MortonCode(const glm::dvec3& q)
     return x;
   };
   return spread(q.x) | (spread(q.y) << 1) | (spread(q.z) << 2);
+}
+
+// The hash cell coordinate of v (in cell units) as an integer, clamped in double to
+// +-2^60 (NaN to 0) so that the conversion and the neighbour offsets cannot overflow.
+std::int64_t CellCoordinate(double v)
+{
+  constexpr double limit = 1152921504606846976.0; // 2^60
+  const double f = std::floor(v);
+  return static_cast<std::int64_t>(
+    f > -limit ? (f < limit ? f : limit) : (f <= -limit ? -limit : 0.0));
 }
 }
 
@@ -65,7 +78,10 @@ void vtkOFBPaintWaves::Compute(const std::vector<vtkOFBDab>& dabs, bool smear)
     tableSize <<= 1;
   }
   auto cellOf = [&](const glm::dvec3& c)
-  { return glm::i64vec3(std::floor(c.x * invH), std::floor(c.y * invH), std::floor(c.z * invH)); };
+  {
+    return glm::i64vec3(
+      CellCoordinate(c.x * invH), CellCoordinate(c.y * invH), CellCoordinate(c.z * invH));
+  };
   auto hashOf = [&](const glm::i64vec3& k)
   {
     const vtkTypeUInt64 v = static_cast<vtkTypeUInt64>(k.x) * 73856093ull ^

@@ -47,6 +47,8 @@ vtkOFBPainter::vtkOFBPainter()
   , MirrorY(false)
   , MirrorZ(false)
   , InStroke(false)
+  , MaximumDabsPerCall(vtkIdType(1) << 22)
+  , AbortPaint(false)
 {
   this->MirrorOrigin[0] = this->MirrorOrigin[1] = this->MirrorOrigin[2] = 0.0;
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 1.0;
@@ -60,15 +62,100 @@ vtkOFBPainter::vtkOFBPainter()
 vtkOFBPainter::~vtkOFBPainter() = default;
 
 //------------------------------------------------------------------------------
+vtkOFBPainter::CallScope::CallScope(vtkOFBPainter* painter, const char* what)
+  : Painter(painter)
+{
+  vtkInternals& internals = *painter->Internals;
+  if (internals.InCall.exchange(true))
+  {
+    vtkErrorWithObjectMacro(painter,
+      << what
+      << ": called while a call of this painter is in progress (from one of its "
+         "progress observers, or from another thread): refused, nothing changed.");
+    return;
+  }
+  vtkOFB* ofb = internals.OFB;
+  if (ofb && !ofb->BeginExclusiveWrite(painter))
+  {
+    internals.InCall = false;
+    vtkErrorWithObjectMacro(painter,
+      << what
+      << ": the OFB is being painted by another painter (paint one OFB from one "
+         "painter at a time): refused, nothing changed.");
+    return;
+  }
+  internals.HeldOFB = ofb;
+  internals.HeldBrush = internals.Brush;
+  painter->AbortPaint = false;
+  this->Entered = true;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPainter::CallScope::~CallScope()
+{
+  if (!this->Entered)
+  {
+    return;
+  }
+  vtkInternals& internals = *this->Painter->Internals;
+  if (internals.HeldOFB)
+  {
+    internals.HeldOFB->EndExclusiveWrite(this->Painter);
+  }
+  internals.HeldColors = nullptr;
+  internals.HeldNormals = nullptr;
+  internals.HeldBrush = nullptr;
+  internals.HeldOFB = nullptr;
+  internals.InCall = false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPainter::IsPainting() const
+{
+  return this->Internals->InCall.load();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPainter::CheckBrush(const char* what)
+{
+  if (!this->Internals->Brush)
+  {
+    vtkErrorMacro(<< what << ": no brush: call SetBrush with a vtkOFBBrush. Nothing painted.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPainter::CheckDabCount(vtkIdType count, const char* what)
+{
+  if (count > this->MaximumDabsPerCall)
+  {
+    vtkErrorMacro(<< what << ": " << count << " dabs (mirror reflections included) exceed "
+                  << "MaximumDabsPerCall (" << this->MaximumDabsPerCall
+                  << "): nothing painted. Paint them in several calls, or raise the limit.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBPainter::SetOFB(vtkOFB* ofb)
 {
   if (this->Internals->OFB == ofb)
   {
     return;
   }
+  if (this->Internals->InCall)
+  {
+    // The call in progress reads the OFB's arrays through raw pointers.
+    vtkErrorMacro("SetOFB: called while a painting call is in progress (from one of its "
+                  "progress observers?): refused, the OFB is unchanged.");
+    return;
+  }
   if (this->InStroke)
   {
-    this->EndStroke();
+    this->FinishStroke();
   }
   this->Internals->OFB = ofb;
   this->Internals->Ready = false;
@@ -152,8 +239,9 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
   {
     const bool rebuilt = ofb->GetStructureMTime() != internals.LastStructureTime ||
       n != internals.LastNumberOfSamples ||
-      (internals.LastColors && colors != internals.LastColors) ||
-      (internals.LastNormals && normals != internals.LastNormals);
+      // An array freed since reads as null through its weak pointer: changed as well.
+      (internals.HadColors && (!internals.LastColors || colors != internals.LastColors)) ||
+      (internals.HadNormals && (!internals.LastNormals || normals != internals.LastNormals));
     if (rebuilt || ofb->GetMTime() != internals.LastMTime)
     {
       if (!internals.UndoSteps.empty() || !internals.RedoSteps.empty() || !internals.Open.Empty())
@@ -206,6 +294,12 @@ bool vtkOFBPainter::Prepare(bool needColors, bool needNormals)
   }
   internals.LastColors = colors;
   internals.LastNormals = normals;
+  internals.HadColors = colors != nullptr;
+  internals.HadNormals = normals != nullptr;
+  // Held until the call returns: an observer that removes them from the OFB does not
+  // free them under the kernel.
+  internals.HeldColors = colors;
+  internals.HeldNormals = normals;
   internals.LastStructureTime = ofb->GetStructureMTime();
   internals.LastNumberOfSamples = n;
   return true;
@@ -235,7 +329,7 @@ vtkIdType vtkOFBPainter::Finish()
 //------------------------------------------------------------------------------
 bool vtkOFBPainter::MakeDab(const double center[3], double pressure, vtkOFBDab& dab)
 {
-  vtkOFBBrush* brush = this->Internals->Brush;
+  vtkOFBBrush* brush = this->Internals->Brush; // checked by the caller (CheckBrush)
   if (!Finite3(center))
   {
     vtkErrorMacro("A dab centre is not finite (NaN or infinite): nothing painted.");
@@ -300,9 +394,25 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
                                           << ") is not one of its enumerators: nothing painted.");
     return 0;
   }
-  if (!Finite3(this->MirrorOrigin) && (this->MirrorX || this->MirrorY || this->MirrorZ))
+  const bool mirrored = this->MirrorX || this->MirrorY || this->MirrorZ;
+  if (!Finite3(this->MirrorOrigin) && mirrored)
   {
     vtkErrorMacro("MirrorOrigin is not finite: nothing painted.");
+    return 0;
+  }
+  // Counted after reflection, before the reflections are stored.
+  vtkIdType total = static_cast<vtkIdType>(dabs.size());
+  if (mirrored && total <= this->MaximumDabsPerCall)
+  {
+    double reflections[21];
+    int axes[7];
+    for (const vtkOFBDab& d : dabs)
+    {
+      total += this->GetMirrorReflections(d.Center, reflections, axes);
+    }
+  }
+  if (!this->CheckDabCount(total, "Paint"))
+  {
     return 0;
   }
   this->AddMirrorImages(dabs);
@@ -315,7 +425,9 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   settings.BlendMode = static_cast<vtkOFBBrush::BlendModeType>(blendMode);
   settings.Target = static_cast<vtkOFBBrush::TargetType>(target);
   settings.SmearAmount = brush->GetSmearAmount();
-  settings.BumpDepth = brush->GetBumpDepth();
+  // As the brush clamps it (a subclass of the brush could hold more): a larger depth
+  // overflows the float normals.
+  settings.BumpDepth = std::min(1000.0, std::max(-1000.0, brush->GetBumpDepth()));
   settings.NormalAware = brush->GetNormalAware();
   settings.CosMaxAngle = std::cos(vtkMath::RadiansFromDegrees(brush->GetMaxNormalAngle()));
   // Without an undo budget the previous values would be dropped at once: keep none,
@@ -323,7 +435,7 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   settings.RecordUndo = this->UndoLimit > 0;
   if (!settings.RecordUndo)
   {
-    this->ClearHistory();
+    this->DropHistory();
   }
   if (settings.Falloff == vtkOFBBrush::FALLOFF_CUSTOM && brush->GetCustomFalloff())
   {
@@ -339,10 +451,12 @@ vtkIdType vtkOFBPainter::Paint(std::vector<vtkOFBDab>& dabs)
   }
 
   bool reported = false;
-  std::function<void(double)> progress = [this, &reported](double p)
+  // The observer may set AbortPaint: the kernel stops before its next dab.
+  std::function<bool(double)> progress = [this, &reported](double p)
   {
     reported = true;
     this->InvokeEvent(vtkCommand::ProgressEvent, &p);
+    return !this->AbortPaint;
   };
   this->Internals->Kernel.Paint(
     dabs, settings, this->Internals->Open.Colors, this->Internals->Open.Normals, progress);
@@ -373,11 +487,17 @@ void vtkOFBPainter::CopySettings(vtkOFBPainter* source)
   this->SetMirrorOrigin(source->MirrorOrigin);
   this->SetDefaultColor(source->DefaultColor);
   this->SetUndoLimit(source->UndoLimit);
+  this->SetMaximumDabsPerCall(source->MaximumDabsPerCall);
 }
 
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::Dab(const double center[3])
 {
+  CallScope scope(this, "Dab");
+  if (!scope || !this->CheckBrush("Dab"))
+  {
+    return 0;
+  }
   std::vector<vtkOFBDab> dabs(1);
   if (!this->MakeDab(center, 1.0, dabs[0]))
   {
@@ -396,9 +516,18 @@ vtkIdType vtkOFBPainter::Dab(double x, double y, double z)
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::Dabs(vtkPoints* centers)
 {
+  CallScope scope(this, "Dabs");
+  if (!scope)
+  {
+    return 0;
+  }
   if (!centers)
   {
     vtkErrorMacro("Dabs: no points given.");
+    return 0;
+  }
+  if (!this->CheckBrush("Dabs") || !this->CheckDabCount(centers->GetNumberOfPoints(), "Dabs"))
+  {
     return 0;
   }
   std::vector<vtkOFBDab> dabs(centers->GetNumberOfPoints());
@@ -417,6 +546,11 @@ vtkIdType vtkOFBPainter::Dabs(vtkPoints* centers)
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
 {
+  CallScope scope(this, "Dabs");
+  if (!scope)
+  {
+    return 0;
+  }
   if (!input || !input->GetPoints())
   {
     vtkErrorMacro("Dabs: no points given.");
@@ -435,9 +569,8 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
     return 0;
   }
   const double colorScale = color && color->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
-  if (!this->Internals->Brush)
+  if (!this->CheckBrush("Dabs") || !this->CheckDabCount(input->GetNumberOfPoints(), "Dabs"))
   {
-    vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
     return 0;
   }
   const bool strengthByPressure = this->Internals->Brush->GetPressureAffectsStrength();
@@ -492,9 +625,19 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
 //------------------------------------------------------------------------------
 void vtkOFBPainter::BeginStroke()
 {
+  CallScope scope(this, "BeginStroke");
+  if (scope)
+  {
+    this->StartStroke();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::StartStroke()
+{
   if (this->InStroke)
   {
-    this->EndStroke();
+    this->FinishStroke();
   }
   this->InStroke = true;
   this->Internals->HasLastPoint = false;
@@ -506,19 +649,23 @@ void vtkOFBPainter::BeginStroke()
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
 {
+  CallScope scope(this, "StrokeTo");
+  if (!scope)
+  {
+    return 0;
+  }
   if (!Finite3(p))
   {
     vtkErrorMacro("A stroke point is not finite (NaN or infinite): ignored.");
     return 0;
   }
-  if (!this->Internals->Brush)
+  if (!this->CheckBrush("StrokeTo"))
   {
-    vtkErrorMacro("No brush: call SetBrush with a vtkOFBBrush.");
     return 0;
   }
   if (!this->InStroke)
   {
-    this->BeginStroke();
+    this->StartStroke();
   }
   vtkInternals& internals = *this->Internals;
   pressure = std::min(1.0, std::max(0.0, std::isfinite(pressure) ? pressure : 1.0));
@@ -589,6 +736,16 @@ vtkIdType vtkOFBPainter::StrokeTo(double x, double y, double z, double pressure)
 //------------------------------------------------------------------------------
 void vtkOFBPainter::EndStroke()
 {
+  CallScope scope(this, "EndStroke");
+  if (scope)
+  {
+    this->FinishStroke();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::FinishStroke()
+{
   if (!this->InStroke)
   {
     return;
@@ -643,9 +800,14 @@ void vtkOFBPainter::EnforceUndoLimit()
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::Restore(bool undo)
 {
+  CallScope scope(this, undo ? "Undo" : "Redo");
+  if (!scope)
+  {
+    return 0;
+  }
   if (this->InStroke)
   {
-    this->EndStroke();
+    this->FinishStroke();
   }
   vtkInternals& internals = *this->Internals;
   std::deque<vtkofbpainter::Step>& from = undo ? internals.UndoSteps : internals.RedoSteps;
@@ -662,9 +824,9 @@ vtkIdType vtkOFBPainter::Restore(bool undo)
   vtkofbpainter::Step step = std::move(from.back());
   from.pop_back();
   // Swap each recorded value with the current one: the step becomes its inverse.
-  if (!step.Colors.empty())
+  if (!step.Colors.empty() && internals.HeldColors)
   {
-    unsigned char* colors = internals.LastColors->GetPointer(0);
+    unsigned char* colors = internals.HeldColors->GetPointer(0);
     for (auto& r : step.Colors)
     {
       unsigned char* c = colors + 4 * static_cast<vtkIdType>(r.Id);
@@ -675,9 +837,9 @@ vtkIdType vtkOFBPainter::Restore(bool undo)
       internals.Kernel.MarkChanged(r.Id);
     }
   }
-  if (!step.Normals.empty() && internals.LastNormals)
+  if (!step.Normals.empty() && internals.HeldNormals)
   {
-    float* normals = internals.LastNormals->GetPointer(0);
+    float* normals = internals.HeldNormals->GetPointer(0);
     for (auto& r : step.Normals)
     {
       float* n = normals + 3 * static_cast<vtkIdType>(r.Id);
@@ -719,6 +881,16 @@ bool vtkOFBPainter::CanRedo() const
 //------------------------------------------------------------------------------
 void vtkOFBPainter::ClearHistory()
 {
+  CallScope scope(this, "ClearHistory");
+  if (scope)
+  {
+    this->DropHistory();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPainter::DropHistory()
+{
   vtkInternals& internals = *this->Internals;
   if (internals.Ready)
   {
@@ -751,7 +923,11 @@ vtkIdType vtkOFBPainter::GetUndoMemory() const
 //------------------------------------------------------------------------------
 void vtkOFBPainter::ResetInitialValues()
 {
-  this->Internals->Kernel.ResetInitialValues();
+  CallScope scope(this, "ResetInitialValues");
+  if (scope)
+  {
+    this->Internals->Kernel.ResetInitialValues();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -770,6 +946,8 @@ void vtkOFBPainter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DefaultColor: (" << this->DefaultColor[0] << ", " << this->DefaultColor[1]
      << ", " << this->DefaultColor[2] << ", " << this->DefaultColor[3] << ")\n";
   os << indent << "UndoLimit: " << this->UndoLimit << "\n";
+  os << indent << "MaximumDabsPerCall: " << this->MaximumDabsPerCall << "\n";
+  os << indent << "AbortPaint: " << this->AbortPaint << "\n";
   os << indent << "MirrorX: " << this->MirrorX << ", MirrorY: " << this->MirrorY
      << ", MirrorZ: " << this->MirrorZ << "\n";
   os << indent << "MirrorOrigin: (" << this->MirrorOrigin[0] << ", " << this->MirrorOrigin[1]

@@ -51,11 +51,24 @@
  * last change (its modification time moved on, or its samples were rebuilt), the
  * history no longer describes it: the painter drops it, with a warning.
  *
- * Progress: a call whose dabs cover many samples invokes vtkCommand::ProgressEvent
- * (call data: a double in [0, 1]) as it goes.
+ * Progress: a call whose dabs cover many samples, or that paints many dabs, invokes
+ * vtkCommand::ProgressEvent (call data: a double in [0, 1]) as it goes. An observer
+ * may call AbortPaintOn() to stop the call at the next dab (see AbortPaint).
  *
- * Bad input gives an error and changes nothing (returns 0): no OFB, an empty OFB,
- * a NaN or infinite centre, a radius that is not positive and finite.
+ * Calls during a call: while a painting call runs (its progress observers run inside
+ * it), the painter holds references to the OFB, the brush and the arrays it paints,
+ * and takes the OFB with vtkOFB::BeginExclusiveWrite, so that nothing it reads is
+ * freed under it: the OFB then refuses Initialize(), ShallowCopy(), DeepCopy() and
+ * rebuilds with an error, and this painter refuses SetOFB and its other painting,
+ * stroke and history calls with an error. An array removed from the OFB meanwhile
+ * ("Colors", "Normals") receives the rest of the call; the next call finds the OFB
+ * changed and drops the history (see above). A second painter (or a second thread
+ * using this painter) that starts a call on an OFB being painted gets an error and
+ * paints nothing: paint one OFB from one painter at a time.
+ *
+ * Bad input gives an error and changes nothing (returns 0): no OFB, no brush, an empty
+ * OFB, a NaN or infinite centre, a radius that is not positive and finite, more dabs
+ * than MaximumDabsPerCall.
  *
  * @sa vtkOFBBrush vtkOFBPaintFilter vtkOFBPolyDataMapper
  */
@@ -194,10 +207,38 @@ public:
   vtkGetVector3Macro(MirrorOrigin, double);
   ///@}
 
+  ///@{
   /**
-   * Take the settings of `source`: Spacing, the mirror settings, DefaultColor and
-   * UndoLimit (not its OFB, brush, history or stroke). vtkOFBPaintFilter paints with
-   * the settings of the painter it holds so.
+   * Most dabs one call paints, counted after mirror reflection (default 2^22 =
+   * 4,194,304; at least 1). A Dab, Dabs or StrokeTo call that would paint more is an
+   * error naming the limit that paints nothing, refused before the dabs are stored.
+   * Dabs cost about 50 bytes each besides the time they take to paint.
+   */
+  vtkSetClampMacro(MaximumDabsPerCall, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MaximumDabsPerCall, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Stop the painting call in progress: set it from a ProgressEvent observer and the
+   * call stops before its next dab (a dab already begun is finished). What was painted
+   * stays painted, is marked modified and makes the undo step as usual. Every painting
+   * call clears it when it starts.
+   */
+  vtkSetMacro(AbortPaint, bool);
+  vtkGetMacro(AbortPaint, bool);
+  vtkBooleanMacro(AbortPaint, bool);
+  ///@}
+
+  /**
+   * True while a painting call runs (in its progress observers).
+   */
+  bool IsPainting() const;
+
+  /**
+   * Take the settings of `source`: Spacing, the mirror settings, DefaultColor,
+   * MaximumDabsPerCall and UndoLimit (not its OFB, brush, history or stroke). vtkOFBPaintFilter
+   * paints with the settings of the painter it holds so.
    */
   void CopySettings(vtkOFBPainter* source);
 
@@ -285,8 +326,22 @@ protected:
   bool MirrorZ;
   double MirrorOrigin[3];
   bool InStroke;
+  vtkIdType MaximumDabsPerCall;
+  bool AbortPaint;
 
 private:
+  /// Marks the painter busy and holds the OFB and brush for one public call.
+  class CallScope;
+  friend class CallScope;
+  /// False, with an error, without a brush.
+  bool CheckBrush(const char* what);
+  /// False, with an error naming the limit, when `count` dabs are too many.
+  bool CheckDabCount(vtkIdType count, const char* what);
+  /// The stroke steps without the checks of the public calls.
+  void StartStroke();
+  void FinishStroke();
+  void DropHistory();
+
   // The dab steps name vtkOFBDab, a type of the implementation: private, so that a
   // subclass needs only the installed headers.
   /// A dab at `center` with the brush's settings and `pressure`; false if not finite.

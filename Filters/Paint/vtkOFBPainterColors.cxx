@@ -8,6 +8,11 @@
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::SetSampleColors(vtkIdTypeArray* ids, vtkUnsignedCharArray* colors)
 {
+  CallScope scope(this, "SetSampleColors");
+  if (!scope)
+  {
+    return 0;
+  }
   if (!ids || !colors || colors->GetNumberOfComponents() != 4 ||
     colors->GetNumberOfTuples() != ids->GetNumberOfTuples() || ids->GetNumberOfComponents() != 1)
   {
@@ -33,7 +38,7 @@ vtkIdType vtkOFBPainter::SetSampleColors(vtkIdTypeArray* ids, vtkUnsignedCharArr
   }
   if (this->UndoLimit <= 0)
   {
-    this->ClearHistory(); // no previous values kept (as Paint does)
+    this->DropHistory(); // no previous values kept (as Paint does)
   }
   internals.Kernel.SetColors(
     id, colors->GetPointer(0), count, this->UndoLimit > 0, internals.Open.Colors);

@@ -12,7 +12,9 @@
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
 
+#include <atomic>
 #include <deque>
 #include <utility>
 #include <vector>
@@ -51,8 +53,20 @@ struct vtkOFBPainter::vtkInternals
   vtkMTimeType LastMTime = 0;
   vtkMTimeType LastStructureTime = 0;
   vtkIdType LastNumberOfSamples = 0;
-  vtkUnsignedCharArray* LastColors = nullptr;
-  vtkFloatArray* LastNormals = nullptr;
+  // Weak: an array freed since (removed from the OFB) reads as null, and a new array at
+  // the same address is not taken for the old one.
+  vtkWeakPointer<vtkUnsignedCharArray> LastColors;
+  vtkWeakPointer<vtkFloatArray> LastNormals;
+  bool HadColors = false;
+  bool HadNormals = false;
+
+  // A public call in progress (see vtkOFBPainter::CallScope): what it holds so that an
+  // observer of its progress cannot free it.
+  std::atomic<bool> InCall{ false };
+  vtkSmartPointer<vtkOFB> HeldOFB;
+  vtkSmartPointer<vtkOFBBrush> HeldBrush;
+  vtkSmartPointer<vtkUnsignedCharArray> HeldColors;
+  vtkSmartPointer<vtkFloatArray> HeldNormals;
 
   std::deque<vtkofbpainter::Step> UndoSteps;
   std::deque<vtkofbpainter::Step> RedoSteps;
@@ -81,6 +95,26 @@ struct vtkOFBPainter::vtkInternals
     }
     return b;
   }
+};
+
+/**
+ * One public call of a painter: refuses a call made during another (from a progress
+ * observer, or from a second thread), holds the OFB and the brush until the call
+ * returns, and takes the OFB from other writers (vtkOFB::BeginExclusiveWrite) so that
+ * nothing the call reads through raw pointers is freed or rebuilt under it.
+ */
+class vtkOFBPainter::CallScope
+{
+public:
+  CallScope(vtkOFBPainter* painter, const char* what);
+  ~CallScope();
+  CallScope(const CallScope&) = delete;
+  CallScope& operator=(const CallScope&) = delete;
+  explicit operator bool() const { return this->Entered; }
+
+private:
+  vtkOFBPainter* Painter;
+  bool Entered = false;
 };
 
 #endif

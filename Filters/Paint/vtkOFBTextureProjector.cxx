@@ -137,6 +137,10 @@ struct Texture
     // past its edges.
     x = this->Repeat ? std::fmod(x, this->Width) : std::min(std::max(x, -1.0), 1.0 * this->Width);
     y = this->Repeat ? std::fmod(y, this->Height) : std::min(std::max(y, -1.0), 1.0 * this->Height);
+    if (!(std::isfinite(x) && std::isfinite(y)))
+    {
+      x = y = 0.0; // a non-finite coordinate (fmod, max and min keep NaN) has no texel
+    }
     const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
     if (!this->Interpolate)
     {

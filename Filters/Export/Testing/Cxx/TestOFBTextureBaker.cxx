@@ -4,14 +4,18 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkOFBBrush.h"
+#include "vtkOFBMapToColors.h"
 #include "vtkOFBPainter.h"
+#include "vtkOFBProbeFilter.h"
 #include "vtkOFBSampler.h"
+#include "vtkOFBTextureAtlas.h"
 #include "vtkOFBTextureBaker.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
@@ -21,6 +25,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -361,5 +366,77 @@ TEST(TextureBaker, FeedsImagingFilters)
     EXPECT_EQ(scalars->GetDataType(), VTK_UNSIGNED_CHAR);
     EXPECT_EQ(scalars->GetNumberOfTuples(), 32 * 16);
     EXPECT_EQ(scalars->GetComponent(0, 0), 255.0); // the sampler's default white
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureBaker, MemoryLimitRefusesLargeTexturesBeforeAllocating)
+{
+  vtkSmartPointer<vtkPolyData> plane = Plane();
+  vtkSmartPointer<vtkOFB> ofb = Build(plane, 64);
+  vtkNew<vtkOFBTextureBaker> baker;
+  EXPECT_EQ(baker->GetMemoryLimit(), 4096);
+  // 16384 x 16384 RGBA: about 15 GiB, refused at once with the default limit.
+  EXPECT_GT(vtkOFBTextureBaker::EstimateBakeBytes(16384, 16384, 4), vtkIdType(14) << 30);
+  vtkNew<MessageObserver> o;
+  o->Watch(baker);
+  const auto start = std::chrono::steady_clock::now();
+  Bake(baker, plane, ofb, 16384, 16384);
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 2.0);
+  EXPECT_NE(o->Errors.find("MemoryLimit (4096 MiB)"), std::string::npos) << o->Errors;
+  EXPECT_EQ(baker->GetOutput()->GetNumberOfPoints(), 0);
+  // A lower limit refuses a smaller texture; under it the bake runs.
+  baker->SetMemoryLimit(1);
+  o->Clear();
+  Bake(baker, plane, ofb, 256, 256);
+  EXPECT_NE(o->Errors.find("MemoryLimit (1 MiB)"), std::string::npos) << o->Errors;
+  baker->SetMemoryLimit(64);
+  o->Clear();
+  Bake(baker, plane, ofb, 256, 256);
+  EXPECT_TRUE(o->Errors.empty()) << o->Errors;
+  EXPECT_EQ(baker->GetOutput()->GetNumberOfPoints(), 256 * 256);
+}
+
+//------------------------------------------------------------------------------
+TEST(TextureBaker, ExportFiltersWithoutInputs)
+{
+  vtkNew<vtkOFBTextureBaker> baker;
+  vtkNew<vtkOFBTextureAtlas> atlas;
+  vtkNew<vtkOFBProbeFilter> probe;
+  vtkNew<vtkOFBMapToColors> map;
+  for (vtkAlgorithm* algorithm : std::vector<vtkAlgorithm*>{ baker, atlas, probe, map })
+  {
+    vtkNew<MessageObserver> messages;
+    messages->Watch(algorithm);
+    messages->Watch(algorithm->GetExecutive());
+    algorithm->Update();
+    EXPECT_FALSE(messages->Errors.empty()) << algorithm->GetClassName();
+  }
+  // Only the mesh, or only the OFB.
+  vtkSmartPointer<vtkPolyData> plane = Plane();
+  vtkSmartPointer<vtkOFB> ofb = Build(plane, 32);
+  for (int only = 0; only < 2; ++only)
+  {
+    vtkNew<vtkOFBTextureBaker> b;
+    vtkNew<vtkOFBProbeFilter> p;
+    vtkNew<vtkOFBTextureAtlas> a;
+    for (vtkAlgorithm* algorithm : std::vector<vtkAlgorithm*>{ b, p, a })
+    {
+      vtkNew<MessageObserver> messages;
+      messages->Watch(algorithm);
+      messages->Watch(algorithm->GetExecutive());
+      if (only == 0)
+      {
+        algorithm->SetInputDataObject(0, plane);
+      }
+      else
+      {
+        algorithm->SetInputDataObject(1, ofb);
+      }
+      algorithm->Update();
+      EXPECT_FALSE(messages->Errors.empty()) << algorithm->GetClassName() << " " << only;
+    }
   }
 }

@@ -17,6 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkTriangleFilter.h"
+#include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
@@ -773,4 +774,58 @@ TEST(LIC, BadInput)
   lic->Update();
   EXPECT_NE(messages->Errors.find("noise array"), std::string::npos) << messages->Errors;
   EXPECT_EQ(lic->GetOutput()->GetNumberOfSamples(), 0);
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, FarOriginsAndHugeValuesAreDefined)
+{
+  // One sample per cell of a 2 x 2 x 2 frame far from the origin (or at the ends of
+  // float depths), with huge and non-finite vectors: no undefined conversion (the
+  // sanitizer build runs this clean), and a LIC value that is finite or masked.
+  for (double origin : { 1e308, -1e308, 0.0 })
+  {
+    for (float depth : { 0.5f, 3e38f, -3e38f })
+    {
+      vtkNew<vtkOFB> ofb;
+      const double o[3] = { origin, -origin, origin };
+      const vtkIdType dims[3] = { 2, 2, 2 };
+      ASSERT_TRUE(ofb->SetFrame(o, 1.0, dims));
+      const vtkIdType cells = ofb->GetNumberOfCells();
+      for (vtkIdType c = 0; c <= cells; ++c)
+      {
+        ofb->GetCellOffsets()->SetValue(c, static_cast<vtkTypeUInt32>(c));
+      }
+      ASSERT_TRUE(ofb->AllocateSamples(cells));
+      vtkNew<vtkFloatArray> vectors;
+      vectors->SetName("V");
+      vectors->SetNumberOfComponents(3);
+      vectors->SetNumberOfTuples(cells);
+      for (vtkIdType i = 0; i < cells; ++i)
+      {
+        ofb->GetDepths()->SetValue(i, depth);
+        const float big = (i % 3 == 0) ? 3e38f : (i % 3 == 1 ? 1.0f : NAN);
+        vectors->SetTuple3(i, big, -big, 1.0);
+      }
+      ofb->BuildCellIndex();
+      ofb->GetSampleData()->SetVectors(vectors);
+      vtkNew<vtkOFBLIC> lic;
+      lic->SetInputData(ofb);
+      lic->Update();
+      vtkOFB* out = lic->GetOutput();
+      for (int a = 0; a < out->GetSampleData()->GetNumberOfArrays(); ++a)
+      {
+        vtkDataArray* array = out->GetSampleData()->GetArray(a);
+        if (array == vectors.Get() || array->GetDataType() != VTK_FLOAT)
+        {
+          continue;
+        }
+        for (vtkIdType v = 0; v < array->GetNumberOfValues(); ++v)
+        {
+          EXPECT_TRUE(std::isfinite(array->GetComponent(v / array->GetNumberOfComponents(),
+            static_cast<int>(v % array->GetNumberOfComponents()))))
+            << array->GetName() << " origin " << origin << " depth " << depth;
+        }
+      }
+    }
+  }
 }

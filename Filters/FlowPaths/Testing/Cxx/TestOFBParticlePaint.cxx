@@ -5,6 +5,7 @@
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
 #include "vtkLookupTable.h"
@@ -579,4 +580,32 @@ TEST(ParticlePaint, OneAndTwoThreadsPaintTheSame)
   vtkSMPTools::Initialize(0);
   EXPECT_FALSE(results[0].empty());
   EXPECT_TRUE(results[0] == results[1]);
+}
+
+//------------------------------------------------------------------------------
+TEST(ParticlePaint, MissingInputsOrBrushAreErrors)
+{
+  vtkNew<MessageObserver> messages;
+  // No surface at all: the pipeline's error, no crash.
+  {
+    vtkNew<vtkOFBParticleAdvector> advector;
+    messages->Clear();
+    messages->Watch(advector);
+    messages->Watch(advector->GetExecutive());
+    advector->Update();
+    EXPECT_FALSE(messages->Errors.empty());
+  }
+  // No brush.
+  vtkNew<vtkOFBParticleAdvector> advector;
+  advector->SetInputData(RotatingSphere(32));
+  advector->SetBrush(nullptr);
+  ExpectEmptyWithError(messages, advector, "No brush");
+  // No OFB of its own to paint (SetOFB(nullptr)) still works: it builds one.
+  vtkNew<vtkOFBParticleAdvector> own;
+  own->SetInputData(RotatingSphere(32));
+  own->SetOFB(nullptr);
+  messages->Clear();
+  messages->Watch(own);
+  own->Update();
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
 }

@@ -426,7 +426,8 @@ bool CheckJPEG(const std::vector<unsigned char>& b, Header& header, std::string&
   return false;
 }
 
-/// BMP: an uncompressed bottom-up bitmap of 8 or 24 bits whose rows fit in the file.
+/// BMP: an uncompressed bottom-up bitmap of 8 or 24 bits with the header vtkBMPReader reads
+/// (12 or 40 bytes), whose palette and rows fit in the file.
 bool CheckBMP(const std::vector<unsigned char>& b, Header& header, std::string& problem)
 {
   if (b.size() < 26)
@@ -444,7 +445,7 @@ bool CheckBMP(const std::vector<unsigned char>& b, Header& header, std::string& 
     height = LittleEndian16(&b[20]);
     bits = LittleEndian16(&b[24]);
   }
-  else if (dib >= 40 && b.size() >= 54)
+  else if (dib == 40 && b.size() >= 54)
   {
     width = static_cast<int32_t>(LittleEndian32(&b[18]));
     height = static_cast<int32_t>(LittleEndian32(&b[22]));
@@ -464,6 +465,15 @@ bool CheckBMP(const std::vector<unsigned char>& b, Header& header, std::string& 
   if (height < 0)
   {
     problem = "a top-down BMP (negative height), which is not read";
+    return false;
+  }
+  // vtkBMPReader reads a 256-entry palette after the header of an 8-bit bitmap, then the
+  // pixels from the offset: both must lie in the file, the pixels after the palette.
+  const long long palette = bits == 8 ? 256LL * (dib == 12 ? 3 : 4) : 0;
+  if (offset < 14 + dib + palette || 14 + dib + palette > static_cast<long long>(b.size()))
+  {
+    problem = "a BMP whose pixel data offset (" + std::to_string(offset) +
+      ") does not follow its header and palette";
     return false;
   }
   header.Width = width;

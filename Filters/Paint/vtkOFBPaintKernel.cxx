@@ -339,10 +339,10 @@ vtkIdType vtkOFBPaintKernel::SetColors(const vtkIdType* ids,
       continue;
     }
     this->InitialColor(i, work); // keep the initial value before the first change
-    if (recordUndo && !(this->Flags[i] & ColorRecorded))
+    if (recordUndo && !(this->Flags[i] & COLOR_RECORDED))
     {
       colorUndo.push_back({ static_cast<vtkTypeUInt32>(i), { c[0], c[1], c[2], c[3] } });
-      this->Flags[i] |= ColorRecorded;
+      this->Flags[i] |= COLOR_RECORDED;
     }
     this->MarkChangedInWork(i, work);
     std::memcpy(c, rgba + 4 * k, 4);
@@ -526,7 +526,7 @@ void vtkOFBPaintKernel::PaintColors(const std::vector<vtkOFBDab>& dabs,
   std::vector<vtkOFBColorRecord>& records = work.Records->Colors;
   std::vector<ColorDab>& state = work.Records->ColorDabs;
   state.resize(count);
-  const unsigned char recordBit = settings.RecordUndo ? ColorRecorded : 0;
+  const unsigned char recordBit = settings.RecordUndo ? COLOR_RECORDED : 0;
   // The dabs are resolved (smear source, centre normal) as the pipelined query
   // reaches them; a dab with nothing to paint gets a NaN radius (no samples).
   this->OFB->ForEachSampleInSpheres(
@@ -616,7 +616,7 @@ void vtkOFBPaintKernel::PaintNormals(const vtkOFBDab& dab,
   const bool erase = settings.BlendMode == vtkOFBBrush::BLEND_ERASE;
   const glm::dvec3 c(dab.Center[0], dab.Center[1], dab.Center[2]);
   std::vector<vtkOFBNormalRecord>& records = work.Records->Normals;
-  const unsigned char recordBit = settings.RecordUndo ? NormalRecorded : 0;
+  const unsigned char recordBit = settings.RecordUndo ? NORMAL_RECORDED : 0;
   this->OFB->ForEachSampleInSphere(dab.Center,
     dab.Radius,
     [&](vtkIdType i, double d2)

@@ -84,8 +84,8 @@ public:
   /// Flag bits of a sample: its previous value is in the current undo step.
   enum : unsigned char
   {
-    ColorRecorded = 2,
-    NormalRecorded = 4
+    COLOR_RECORDED = 2,
+    NORMAL_RECORDED = 4
   };
   static constexpr int InitialBlockShift = 12; // 4096 samples per initial-value block
 

@@ -23,11 +23,11 @@ void vtkOFBPaintKernel::ClearRecorded(const std::vector<vtkOFBColorRecord>& colo
 {
   for (const auto& r : colors)
   {
-    this->Flags[r.Id] &= static_cast<unsigned char>(~ColorRecorded);
+    this->Flags[r.Id] &= static_cast<unsigned char>(~COLOR_RECORDED);
   }
   for (const auto& r : normals)
   {
-    this->Flags[r.Id] &= static_cast<unsigned char>(~NormalRecorded);
+    this->Flags[r.Id] &= static_cast<unsigned char>(~NORMAL_RECORDED);
   }
 }
 

@@ -3,6 +3,7 @@
 // allocates and then decodes it. An input may be refused with a message; it must not
 // crash, and an image it accepts has the size and scalars the checks promise.
 #include "ofbExampleImage.h"
+#include "ofbFuzzFile.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -14,28 +15,10 @@
 #include <cstdlib>
 #include <string>
 
-#include <unistd.h>
-
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   vtkObject::GlobalWarningDisplayOff();
-  static const std::string path = []
-  {
-    const char* dir = std::getenv("TMPDIR");
-    return std::string(dir && *dir ? dir : "/tmp") + "/ofb-fuzz-image-" +
-      std::to_string(getpid()) + ".img";
-  }();
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file)
-  {
-    std::perror(path.c_str());
-    std::abort();
-  }
-  if (size > 0)
-  {
-    std::fwrite(data, 1, size, file);
-  }
-  std::fclose(file);
+  const std::string& path = ofbFuzzWriteInput("ofb-fuzz-image", ".img", data, size);
 
   // A small pixel limit keeps each run short; the checks are the same at any limit.
   std::string message;

@@ -2,6 +2,7 @@
 // replayed on a small painted sphere. Pixel points map to points of the sphere, `view`
 // lines are accepted and decals stamp nothing, so that every command of the format runs
 // without a window. A replay may refuse a line; it must not crash.
+#include "ofbFuzzFile.h"
 #include "ofbPaintStrokes.h"
 
 #include "vtkNew.h"
@@ -64,23 +65,7 @@ bool Pick(double x, double y, double point[3])
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   vtkObject::GlobalWarningDisplayOff();
-  static const std::string path = []
-  {
-    const char* dir = std::getenv("TMPDIR");
-    return std::string(dir && *dir ? dir : "/tmp") + "/ofb-fuzz-strokes-" +
-      std::to_string(getpid()) + ".txt";
-  }();
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file)
-  {
-    std::perror(path.c_str());
-    std::abort();
-  }
-  if (size > 0)
-  {
-    std::fwrite(data, 1, size, file);
-  }
-  std::fclose(file);
+  const std::string& path = ofbFuzzWriteInput("ofb-fuzz-strokes", ".txt", data, size);
 
   // A fresh copy and painter each time: one input's brush and paint do not leak into
   // the next one's run.

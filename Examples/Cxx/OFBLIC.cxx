@@ -300,6 +300,44 @@ int WriteImage(App& app, const std::string& path)
 }
 }
 
+/// The application's pipeline: sampler -> LIC -> mapper coloured by speed and modulated by
+/// the LIC, in a window of `size` pixels; every filter's errors counted in app.Errors.
+void BuildPipeline(App& app, vtkPolyData* mesh, int resolution, int steps, double grain, int size)
+{
+  app.Sampler->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  app.LIC->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  app.Colors->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  app.Mapper->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  app.Sampler->SetInputData(mesh);
+  app.Sampler->SetResolution(resolution);
+  app.LIC->SetInputConnection(app.Sampler->GetOutputPort());
+  app.LIC->SetNumberOfSteps(steps);
+  app.LIC->SetNoiseGrainSize(grain);
+  app.LIC->SetEnhanceContrast(vtkOFBLIC::ENHANCE_CONTRAST_LIC);
+  app.Table->SetHueRange(0.667, 0.0);
+  app.Table->Build();
+  app.Mapper->SetInputData(mesh);
+  app.Mapper->SetOFBConnection(app.LIC->GetOutputPort());
+  app.Mapper->SetLookupModeToInverseDistance();
+  app.Mapper->GetColoring()->SetIntensityArrayName("LIC");
+  app.Mapper->GetColoring()->IntensityModulationOn();
+  app.Mapper->GetColoring()->SetColorSourceToScalars();
+  app.Mapper->GetColoring()->SetLookupTable(app.Table);
+  app.Mapper->GetColoring()->SetScalarArrayName("Speed");
+  app.Mapper->GetColoring()->SetScalarRange(mesh->GetPointData()->GetArray("Speed")->GetRange());
+  app.Mapper->GetColoring()->SetLowColorContrastEnhancementFactor(0.05);
+  app.Mapper->GetColoring()->SetHighColorContrastEnhancementFactor(0.05);
+  app.Actor->SetMapper(app.Mapper);
+  app.Text->GetTextProperty()->SetFontSize(12);
+  app.Text->SetPosition(10, 10);
+  app.Renderer->AddActor(app.Actor);
+  app.Renderer->AddViewProp(app.Text);
+  app.Renderer->SetBackground(0.1, 0.1, 0.15);
+  app.Window->AddRenderer(app.Renderer);
+  app.Window->SetSize(size, size);
+  app.Window->SetWindowName("OFBLIC: surface LIC on the OFB");
+}
+
 int main(int argc, char* argv[])
 {
   std::string meshPath = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
@@ -379,38 +417,7 @@ int main(int argc, char* argv[])
   App app;
   app.Mesh = mesh;
   app.ExportPath = !exportPath.empty() ? exportPath : ofbpaint::DefaultExportPath(meshPath, "lic");
-  app.Sampler->AddObserver(vtkCommand::ErrorEvent, app.Errors);
-  app.LIC->AddObserver(vtkCommand::ErrorEvent, app.Errors);
-  app.Colors->AddObserver(vtkCommand::ErrorEvent, app.Errors);
-  app.Mapper->AddObserver(vtkCommand::ErrorEvent, app.Errors);
-  app.Sampler->SetInputData(mesh);
-  app.Sampler->SetResolution(resolution);
-  app.LIC->SetInputConnection(app.Sampler->GetOutputPort());
-  app.LIC->SetNumberOfSteps(steps);
-  app.LIC->SetNoiseGrainSize(grain);
-  app.LIC->SetEnhanceContrast(vtkOFBLIC::ENHANCE_CONTRAST_LIC);
-  app.Table->SetHueRange(0.667, 0.0);
-  app.Table->Build();
-  app.Mapper->SetInputData(mesh);
-  app.Mapper->SetOFBConnection(app.LIC->GetOutputPort());
-  app.Mapper->SetLookupModeToInverseDistance();
-  app.Mapper->GetColoring()->SetIntensityArrayName("LIC");
-  app.Mapper->GetColoring()->IntensityModulationOn();
-  app.Mapper->GetColoring()->SetColorSourceToScalars();
-  app.Mapper->GetColoring()->SetLookupTable(app.Table);
-  app.Mapper->GetColoring()->SetScalarArrayName("Speed");
-  app.Mapper->GetColoring()->SetScalarRange(mesh->GetPointData()->GetArray("Speed")->GetRange());
-  app.Mapper->GetColoring()->SetLowColorContrastEnhancementFactor(0.05);
-  app.Mapper->GetColoring()->SetHighColorContrastEnhancementFactor(0.05);
-  app.Actor->SetMapper(app.Mapper);
-  app.Text->GetTextProperty()->SetFontSize(12);
-  app.Text->SetPosition(10, 10);
-  app.Renderer->AddActor(app.Actor);
-  app.Renderer->AddViewProp(app.Text);
-  app.Renderer->SetBackground(0.1, 0.1, 0.15);
-  app.Window->AddRenderer(app.Renderer);
-  app.Window->SetSize(size, size);
-  app.Window->SetWindowName("OFBLIC: surface LIC on the OFB");
+  BuildPipeline(app, mesh, resolution, steps, grain, size);
   app.LIC->Update();
   if (app.Errors->Count > 0 || app.LIC->GetOutput()->GetNumberOfSamples() == 0)
   {

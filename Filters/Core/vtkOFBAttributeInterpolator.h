@@ -342,7 +342,8 @@ struct vtkOFBAttributeInterpolator
   /**
    * Barycentric interpolation of an array-of-structures array into n samples:
    * sample i from fragment f = order[i] (i without order), of triangle tri[f] at
-   * barycentrics (w1[f], w2[f]).
+   * barycentrics (w1[f], w2[f]). With triangleCells (a cell array), sample i
+   * takes the tuple of the input cell triangleCells[tri[f]] instead.
    */
   template<typename T>
   static void InterpolateTuples(const T* in,
@@ -353,8 +354,19 @@ struct vtkOFBAttributeInterpolator
     const vtkTypeUInt32* tri,
     const float* w1,
     const float* w2,
-    const vtkTypeUInt32* order)
+    const vtkTypeUInt32* order,
+    const vtkIdType* triangleCells)
   {
+    if (triangleCells)
+    {
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        const vtkIdType f = order ? order[i] : i;
+        const T* tuple = in + triangleCells[tri[f]] * nc;
+        std::copy(tuple, tuple + nc, out + i * nc);
+      }
+      return;
+    }
     for (vtkIdType i = 0; i < n; ++i)
     {
       const vtkIdType f = order ? order[i] : i;
@@ -375,7 +387,11 @@ struct vtkOFBAttributeInterpolator
     }
   }
 
-  /// Interpolate samples [first, first + n) of one of the surface's other arrays.
+  /**
+   * Interpolate samples [first, first + n) of one of the surface's other arrays
+   * (copy them from the cells, for a cell array: triangleCells, see
+   * vtkOFBSurface::GetArrayCells).
+   */
   static bool InterpolateArray(vtkDataArray* in,
     vtkDataArray* out,
     vtkIdType first,
@@ -384,7 +400,8 @@ struct vtkOFBAttributeInterpolator
     const vtkTypeUInt32* tri,
     const float* w1,
     const float* w2,
-    const vtkTypeUInt32* order)
+    const vtkTypeUInt32* order,
+    const vtkIdType* triangleCells = nullptr)
   {
     const int nc = in->GetNumberOfComponents();
     switch (in->GetDataType())
@@ -397,7 +414,8 @@ struct vtkOFBAttributeInterpolator
         tri,
         w1,
         w2,
-        order));
+        order,
+        triangleCells));
       default:
         return false;
     }

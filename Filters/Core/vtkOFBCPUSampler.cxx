@@ -216,6 +216,7 @@ void vtkOFBCPUSampler::FillBands(BandBuilder& builder, Job& job, vtkIdType sampl
     {
       out.OthersIn.push_back(surface.Arrays[k]);
       out.Others.push_back(arrays.Others[k]);
+      out.OthersCells.push_back(surface.GetArrayCells(k));
     }
   }
   std::vector<Band>& bands = builder.Bands;

@@ -91,6 +91,10 @@ struct vtkOFBSampleArrays
       {
         sampleData->SetTCoords(this->Others[k]);
       }
+      else if (static_cast<int>(k) == surface.CellVectorsIndex)
+      {
+        sampleData->SetVectors(this->Others[k]);
+      }
       else
       {
         sampleData->AddArray(this->Others[k]);

@@ -2,9 +2,12 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkDataArrayRange.h"
+#include "vtkDataSetSurfaceFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
@@ -27,6 +30,7 @@
 #include <cmath>
 #include <cstring>
 #include <initializer_list>
+#include <numeric>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBSampler);
@@ -137,22 +141,31 @@ struct TriangleCollector
   {
   }
 
-  void Collect(vtkCellArray* cells, vtkOFBSurface& surface)
+  /**
+   * The triangles of `cells`; with `cellIds` (the input cell id of each of
+   * `cells`), the input cell of each kept triangle too (surface.TriangleCells).
+   */
+  void Collect(vtkCellArray* cells, vtkOFBSurface& surface, const vtkIdType* cellIds)
   {
     if (cells->IsHomogeneous() == 3 && cells->IsStorage64Bit())
     {
-      this->Collect(
-        cells->GetConnectivityArray64()->GetPointer(0), cells->GetNumberOfCells(), surface);
+      this->Collect(cells->GetConnectivityArray64()->GetPointer(0),
+        cells->GetNumberOfCells(),
+        cellIds,
+        surface);
       return;
     }
     if (cells->IsHomogeneous() == 3)
     {
-      this->Collect(
-        cells->GetConnectivityArray32()->GetPointer(0), cells->GetNumberOfCells(), surface);
+      this->Collect(cells->GetConnectivityArray32()->GetPointer(0),
+        cells->GetNumberOfCells(),
+        cellIds,
+        surface);
       return;
     }
     // Mixed cells (not left by the triangulation in practice): their triangles.
     std::vector<vtkIdType> ids;
+    std::vector<vtkIdType> triangleCellIds;
     auto iter = vtk::TakeSmartPointer(cells->NewIterator());
     for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
     {
@@ -162,13 +175,20 @@ struct TriangleCollector
       if (npts == 3)
       {
         ids.insert(ids.end(), pts, pts + 3);
+        if (cellIds)
+        {
+          triangleCellIds.push_back(cellIds[iter->GetCurrentCellId()]);
+        }
       }
     }
-    this->Collect(ids.data(), static_cast<vtkIdType>(ids.size() / 3), surface);
+    this->Collect(ids.data(),
+      static_cast<vtkIdType>(ids.size() / 3),
+      cellIds ? triangleCellIds.data() : nullptr,
+      surface);
   }
 
   template<typename IdT>
-  void Collect(const IdT* ids, vtkIdType n, vtkOFBSurface& surface)
+  void Collect(const IdT* ids, vtkIdType n, const vtkIdType* cellIds, vtkOFBSurface& surface)
   {
     const vtkIdType nChunks = (n + Chunk - 1) / Chunk;
     std::vector<vtkIdType> kept(nChunks + 1, 0);
@@ -191,7 +211,9 @@ struct TriangleCollector
     }
     this->Skipped = n - kept[nChunks];
     surface.Triangles.resize(3 * kept[nChunks]);
+    surface.TriangleCells.resize(cellIds ? kept[nChunks] : 0);
     vtkIdType* out = surface.Triangles.data();
+    vtkIdType* outCells = surface.TriangleCells.data();
     vtkSMPTools::For(0,
       nChunks,
       1,
@@ -202,6 +224,10 @@ struct TriangleCollector
           vtkIdType k = 3 * kept[c];
           for (vtkIdType t = c * Chunk; t < std::min(n, (c + 1) * Chunk); ++t)
           {
+            if (cellIds && valid[t])
+            {
+              outCells[k / 3] = cellIds[t];
+            }
             for (int j = 0; valid[t] && j < 3; ++j)
             {
               out[k++] = static_cast<vtkIdType>(ids[3 * t + j]);
@@ -360,12 +386,71 @@ void CollectOtherArrays(vtkPointData* pd,
 }
 }
 
+namespace
+{
+/// Index in surface.Arrays of the array named `name`, or -1.
+int FindArray(const vtkOFBSurface& surface, const char* name)
+{
+  for (size_t k = 0; k < surface.Arrays.size(); ++k)
+  {
+    if (!std::strcmp(surface.Arrays[k]->GetName(), name))
+    {
+      return static_cast<int>(k);
+    }
+  }
+  return -1;
+}
+
+/**
+ * The cell arrays of `cd` (of `nCells` tuples) that the samples take from their
+ * triangle's cell: every named, non-bit array but those named as the samples' own
+ * arrays or the vector field. One named as a point array already in
+ * surface.Arrays replaces it when `cellsFirst`, else is left out. The cell data's
+ * active vectors become the samples' when they have no other vector field.
+ */
+void CollectCellArrays(vtkCellData* cd, vtkIdType nCells, bool cellsFirst, vtkOFBSurface& surface)
+{
+  surface.ArraysPerCell.resize(surface.Arrays.size(), false);
+  for (int i = 0; i < cd->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = cd->GetArray(i);
+    if (!array || array->GetDataType() == VTK_BIT || array->GetNumberOfTuples() != nCells ||
+      !array->GetName() || !std::strcmp(array->GetName(), vtkOFB::ColorsArrayName()) ||
+      !std::strcmp(array->GetName(), vtkOFB::NormalsArrayName()) ||
+      (surface.Vectors && !std::strcmp(array->GetName(), surface.Vectors->GetName())))
+    {
+      continue;
+    }
+    int k = FindArray(surface, array->GetName());
+    if (k >= 0 && (!cellsFirst || surface.ArraysPerCell[k]))
+    {
+      continue; // the point array wins (or a cell array of the same name came first)
+    }
+    if (k < 0)
+    {
+      k = static_cast<int>(surface.Arrays.size());
+      surface.Arrays.emplace_back();
+      surface.ArraysPerCell.push_back(true);
+    }
+    surface.Arrays[k] = AsAOS(array);
+    surface.ArraysPerCell[k] = true;
+    surface.TCoordsIndex = surface.TCoordsIndex == k ? -1 : surface.TCoordsIndex;
+    if (array == cd->GetVectors() && !surface.Vectors && array->GetNumberOfComponents() == 3)
+    {
+      surface.CellVectorsIndex = k;
+    }
+  }
+}
+}
+
 //------------------------------------------------------------------------------
 vtkOFBSampler::vtkOFBSampler()
   : Resolution(1024)
   , MemoryLimit(8192)
   , UseInputColors(true)
   , PassPointArrays(true)
+  , PassCellArrays(true)
+  , ArrayPrecedence(POINT_ARRAYS_FIRST)
   , ProjectVectors(true)
   , NumberOfSkippedTriangles(0)
   , LastBuildTime(0.0)
@@ -391,11 +476,39 @@ vtkOFBSamplerBackend* vtkOFBSampler::SelectBackend()
 }
 
 //------------------------------------------------------------------------------
+int vtkOFBSampler::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkOFBSampler::GetSurface(vtkDataSet* input)
+{
+  // A polydata is sampled as it is (no copy); any other dataset through its
+  // outer surface, with its point and cell arrays.
+  if (auto* polyData = vtkPolyData::SafeDownCast(input))
+  {
+    return polyData;
+  }
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  if (!input)
+  {
+    return surface;
+  }
+  auto extract = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+  extract->SetInputData(input);
+  extract->Update();
+  surface->ShallowCopy(extract->GetOutput());
+  return surface;
+}
+
+//------------------------------------------------------------------------------
 int vtkOFBSampler::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkSmartPointer<vtkPolyData> input = this->GetSurface(vtkDataSet::GetData(inputVector[0]));
   vtkOFB* output = vtkOFB::GetData(outputVector);
   // The pipeline has recycled the previous output (vtkOFB::PrepareForNewData):
   // SetFrame, AllocateSamples and the sample arrays reuse its memory, and
@@ -424,6 +537,7 @@ int vtkOFBSampler::RequestData(vtkInformation*,
   {
     return 1;
   }
+  this->ProjectCellVectors(surface, output);
   this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
   this->UpdateProgress(1.0);
   return 1;
@@ -484,7 +598,70 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
   {
     CollectOtherArrays(pd, input->GetNumberOfPoints(), { normals, vectors, colors }, surface);
   }
+  vtkCellData* cd = input->GetCellData();
+  for (int i = 0; this->PassCellArrays && i < cd->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* array = cd->GetArray(i);
+    if (array && array->GetNumberOfTuples() != input->GetNumberOfCells())
+    {
+      vtkWarningMacro("The cell array "
+        << vtkOFBArrayLength(array, input->GetNumberOfCells(), "cells") << ": left out.");
+    }
+  }
+  if (this->PassCellArrays)
+  {
+    CollectCellArrays(input->GetCellData(),
+      input->GetNumberOfCells(),
+      this->ArrayPrecedence == CELL_ARRAYS_FIRST,
+      surface);
+  }
+  if (std::find(surface.ArraysPerCell.begin(), surface.ArraysPerCell.end(), true) ==
+    surface.ArraysPerCell.end())
+  {
+    // No cell array: the triangles' cells are not needed.
+    surface.ArraysPerCell.clear();
+    surface.TriangleCells.clear();
+  }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::NeedsTriangleCells(vtkPolyData* input) const
+{
+  vtkCellData* cd = input->GetCellData();
+  return this->PassCellArrays && cd->GetNumberOfArrays() > 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSampler::ProjectCellVectors(const vtkOFBSurface& surface, vtkOFB* output)
+{
+  // Point vectors are projected as they are interpolated (vtkOFBAttributeInterpolator);
+  // cell vectors, copied from the cells, are projected here on the sample normals.
+  vtkPointData* sd = output->GetSampleData();
+  vtkDataArray* vectors = sd->GetVectors();
+  vtkDataArray* normals = sd->GetNormals();
+  if (surface.CellVectorsIndex < 0 || !this->ProjectVectors || !vectors || !normals)
+  {
+    return;
+  }
+  vtkSMPTools::For(0,
+    vectors->GetNumberOfTuples(),
+    Chunk,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double v[3], n[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        vectors->GetTuple(i, v);
+        normals->GetTuple(i, n);
+        const double vn = vtkMath::Dot(v, n);
+        for (int k = 0; k < 3; ++k)
+        {
+          v[k] -= vn * n[k];
+        }
+        vectors->SetTuple(i, v);
+      }
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -552,23 +729,56 @@ bool vtkOFBSampler::CopyPoints(vtkPolyData* input, vtkOFBSurface& surface)
 bool vtkOFBSampler::CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface)
 {
   // Triangles: the input's own cells when they are all triangles, else a triangulation.
+  // With cell arrays to pass, the input cell id of each triangle too: polygons
+  // follow the vertices and lines in vtkPolyData's cell ids.
+  const bool needCells = this->NeedsTriangleCells(input);
+  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
   vtkSmartPointer<vtkPolyData> mesh = input;
   vtkCellArray* polys = input->GetPolys();
+  std::vector<vtkIdType> polyCells;
+  const vtkIdType* cellIds = nullptr;
   if (input->GetNumberOfStrips() > 0 || polys->IsHomogeneous() != 3)
   {
     auto copy = vtkSmartPointer<vtkPolyData>::New();
     copy->SetPoints(input->GetPoints());
     copy->SetPolys(input->GetPolys());
     copy->SetStrips(input->GetStrips());
+    if (needCells)
+    {
+      // The triangle filter carries this id from each polygon or strip to its triangles.
+      auto ids = vtkSmartPointer<vtkIdTypeArray>::New();
+      ids->SetName("vtkOFBInputCellIds");
+      ids->SetNumberOfTuples(copy->GetNumberOfCells());
+      for (vtkIdType i = 0; i < ids->GetNumberOfTuples(); ++i)
+      {
+        ids->SetValue(i, firstPoly + i);
+      }
+      copy->GetCellData()->AddArray(ids);
+    }
     auto triangulate = vtkSmartPointer<vtkTriangleFilter>::New();
     triangulate->SetInputData(copy);
     triangulate->PassLinesOff();
     triangulate->PassVertsOff();
     triangulate->Update();
     mesh = triangulate->GetOutput();
+    auto* triangleIds =
+      vtkIdTypeArray::SafeDownCast(mesh->GetCellData()->GetArray("vtkOFBInputCellIds"));
+    if (needCells && !triangleIds)
+    {
+      vtkErrorMacro("The triangulation lost the input cell ids of its triangles: cannot pass "
+                    "the cell arrays.");
+      return false;
+    }
+    cellIds = needCells ? triangleIds->GetPointer(0) : nullptr;
+  }
+  else if (needCells)
+  {
+    polyCells.resize(polys->GetNumberOfCells());
+    std::iota(polyCells.begin(), polyCells.end(), firstPoly);
+    cellIds = polyCells.data();
   }
   TriangleCollector triangles(surface.Points.data());
-  triangles.Collect(mesh->GetPolys(), surface);
+  triangles.Collect(mesh->GetPolys(), surface, cellIds);
   this->NumberOfSkippedTriangles = triangles.Skipped;
   if (this->NumberOfSkippedTriangles > 0)
   {
@@ -738,8 +948,9 @@ bool vtkOFBSampler::ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBack
 }
 
 //------------------------------------------------------------------------------
-double vtkOFBSampler::EstimateMemory(vtkPolyData* input)
+double vtkOFBSampler::EstimateMemory(vtkDataSet* dataSet)
 {
+  vtkSmartPointer<vtkPolyData> input = this->GetSurface(dataSet);
   vtkOFBSurface surface;
   vtkOFBSamplerBackend::Job job;
   if (!this->CheckInputCells(input) || !this->PrepareSurface(input, surface) ||
@@ -762,6 +973,10 @@ void vtkOFBSampler::PrintSelf(ostream& os, vtkIndent indent)
      << ", " << static_cast<int>(this->DefaultColor[3]) << ")\n";
   os << indent << "UseInputColors: " << (this->UseInputColors ? "On" : "Off") << "\n";
   os << indent << "PassPointArrays: " << (this->PassPointArrays ? "On" : "Off") << "\n";
+  os << indent << "PassCellArrays: " << (this->PassCellArrays ? "On" : "Off") << "\n";
+  os << indent << "ArrayPrecedence: "
+     << (this->ArrayPrecedence == CELL_ARRAYS_FIRST ? "CELL_ARRAYS_FIRST" : "POINT_ARRAYS_FIRST")
+     << "\n";
   os << indent << "ProjectVectors: " << (this->ProjectVectors ? "On" : "Off") << "\n";
   os << indent << "NumberOfSkippedTriangles: " << this->NumberOfSkippedTriangles << "\n";
   os << indent << "LastBuildTime: " << this->LastBuildTime << " ms\n";

@@ -2,6 +2,10 @@
  * @class   vtkOFBSampler
  * @brief   Build a vtkOFB from a surface on the CPU (vtkSMPTools)
  *
+ * Input: any vtkDataSet. A vtkPolyData is sampled as it is (no copy); any other
+ * dataset (vtkUnstructuredGrid, vtkImageData, ...) through its outer surface as
+ * vtkDataSetSurfaceFilter extracts it, with its point and cell arrays.
+ *
  * vtkOFBSampler scan-converts the triangles of a vtkPolyData into the three grids
  * of a vtkOFB (paper "Sample-based Surface Coloring", sections 4 and 8). Each
  * triangle goes to the grid of the axis closest to its face normal and is sampled
@@ -20,6 +24,18 @@
  * field chosen with SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
  * name) (or the input's active point vectors) projected into the tangent plane,
  * and, with PassPointArrays, every other point array, interpolated.
+ *
+ * With PassCellArrays, every cell array of the input becomes a sample array of
+ * the same name too: a sample takes the value of the input cell its triangle
+ * came from (the polygon or strip a triangle was cut from), not interpolated.
+ * When a point array and a cell array have the same name, ArrayPrecedence says
+ * which one the samples get. Cell arrays named "Colors", "Normals" or as the
+ * vector field are left out. When the input has no point vector field (none
+ * chosen with SetInputArrayToProcess, no active point vectors) and its cell data
+ * has active 3-component vectors, these become the samples' active vectors
+ * (projected into the tangent plane with ProjectVectors), so that vtkOFBLIC
+ * finds them; the samples' active scalars stay the paint ("Colors") as with
+ * point scalars.
  *
  * Polygons and strips are triangulated; lines and vertices are ignored with a
  * warning; zero-area triangles are skipped. Empty input, non-finite coordinates,
@@ -49,6 +65,8 @@
 #include "vtkWeakPointer.h"       // for LastBuildBackend
 
 class vtkDataArray;
+class vtkDataSet;
+class vtkOFB;
 class vtkPolyData;
 class vtkOFBSurface;
 
@@ -112,6 +130,35 @@ public:
 
   ///@{
   /**
+   * Give the samples every cell array of the input, each sample the value of its
+   * triangle's input cell (default on).
+   */
+  vtkSetMacro(PassCellArrays, bool);
+  vtkGetMacro(PassCellArrays, bool);
+  vtkBooleanMacro(PassCellArrays, bool);
+  ///@}
+
+  /// Which of a point array and a cell array of the same name the samples get.
+  enum ArrayPrecedences
+  {
+    POINT_ARRAYS_FIRST = 0, ///< the point array, interpolated (the default)
+    CELL_ARRAYS_FIRST = 1   ///< the cell array, per triangle's cell
+  };
+
+  ///@{
+  /**
+   * Whether a point array or a cell array of the input wins when both have the
+   * same name (and PassPointArrays and PassCellArrays are on):
+   * POINT_ARRAYS_FIRST (default) or CELL_ARRAYS_FIRST.
+   */
+  vtkSetClampMacro(ArrayPrecedence, int, POINT_ARRAYS_FIRST, CELL_ARRAYS_FIRST);
+  vtkGetMacro(ArrayPrecedence, int);
+  void SetArrayPrecedenceToPointArraysFirst() { this->SetArrayPrecedence(POINT_ARRAYS_FIRST); }
+  void SetArrayPrecedenceToCellArraysFirst() { this->SetArrayPrecedence(CELL_ARRAYS_FIRST); }
+  ///@}
+
+  ///@{
+  /**
    * Project the vector field into the tangent plane of each sample (default on).
    */
   vtkSetMacro(ProjectVectors, bool);
@@ -136,11 +183,12 @@ public:
   void ReleaseBuffers();
 
   /**
-   * Estimated bytes of a build of `input` at the current settings on the CPU (the
+   * Estimated bytes of a build of `dataSet` at the current settings on the CPU (the
    * copy of the surface, the per-triangle buffers, the grids and the estimated
-   * samples), or -1 if the input is not valid. Only the surface is prepared.
+   * samples), or -1 if the input is not valid. Only the surface is prepared (for
+   * a dataset other than a vtkPolyData, extracted first).
    */
-  double EstimateMemory(vtkPolyData* input);
+  double EstimateMemory(vtkDataSet* dataSet);
 
 protected:
   vtkOFBSampler();
@@ -152,6 +200,9 @@ protected:
    * unavailable for this build gives way to the CPU backend, with a warning.
    */
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /// The input port accepts any vtkDataSet.
+  int FillInputPortInformation(int port, vtkInformation* info) override;
 
   /**
    * The backend that builds the next output: the CPU backend here (subclasses
@@ -170,6 +221,8 @@ protected:
   unsigned char DefaultColor[4];
   bool UseInputColors;
   bool PassPointArrays;
+  bool PassCellArrays;
+  int ArrayPrecedence;
   bool ProjectVectors;
   vtkIdType NumberOfSkippedTriangles;
   double LastBuildTime;
@@ -177,6 +230,22 @@ protected:
 private:
   vtkOFBSampler(const vtkOFBSampler&) = delete;
   void operator=(const vtkOFBSampler&) = delete;
+
+  /**
+   * The surface to sample: `input` itself if a vtkPolyData, else its outer
+   * surface (vtkDataSetSurfaceFilter) with its point and cell arrays; an empty
+   * one for no input.
+   */
+  vtkSmartPointer<vtkPolyData> GetSurface(vtkDataSet* input);
+
+  /// Whether the build needs the input cell of each triangle (cell arrays to pass).
+  bool NeedsTriangleCells(vtkPolyData* input) const;
+
+  /**
+   * Project the samples' active vectors into their tangent plane when they come
+   * from a cell array (surface.CellVectorsIndex) and ProjectVectors is on.
+   */
+  void ProjectCellVectors(const vtkOFBSurface& surface, vtkOFB* output);
 
   /**
    * Whether the input has points, cells that name only existing points

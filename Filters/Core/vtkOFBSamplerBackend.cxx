@@ -209,7 +209,8 @@ bool vtkOFBSamplerBackend::InterpolateAttributes(const vtkOFBSurface& surface,
             triangles + begin,
             w1 + begin,
             w2 + begin,
-            nullptr);
+            nullptr,
+            surface.GetArrayCells(k));
         });
     }
   }

@@ -181,6 +181,7 @@ struct Output
   float* Vectors;
   std::vector<vtkDataArray*> Others; // the other arrays that are interpolated
   std::vector<vtkDataArray*> OthersIn;
+  std::vector<const vtkIdType*> OthersCells; // input cell per triangle, for cell arrays
 };
 
 /**

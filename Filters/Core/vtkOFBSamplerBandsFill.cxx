@@ -282,7 +282,8 @@ void BandBuilder::WriteSamples(const Band& band, const Output& out, const BandSc
       s.Tri.data(),
       s.W1.data(),
       s.W2.data(),
-      order);
+      order,
+      out.OthersCells[k]);
   }
 }
 

@@ -3,7 +3,10 @@
 // whatever OpenGL the test machine has (llvmpipe in CI).
 #include "vtkOFBTestUtilities.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
 #include "vtkOFBBuilder.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
@@ -119,4 +122,51 @@ TEST(BackendAgreement, AutoPicksTheCPUOnSoftwareRenderersAndWithoutAWindow)
   int used = vtkOFBBuilder::BACKEND_OPENGL;
   BuildWith(sphere, 64, vtkOFBBuilder::BACKEND_AUTO, nullptr, &used);
   EXPECT_EQ(used, vtkOFBBuilder::BACKEND_CPU);
+}
+
+TEST(BackendAgreement, CellArraysOfAnImageBoxOnBothBackends)
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(64, 64);
+  if (!vtkOFBBuilder::IsSupported(window))
+  {
+    GTEST_SKIP() << "this machine's OpenGL cannot run the OpenGL backend (needs 4.3)";
+  }
+  // A box of 3 x 2 x 2 unit voxels whose cell array "CellId" is each voxel's id:
+  // sampled through its outer surface, each sample has the id of a voxel touching it.
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(4, 3, 3);
+  vtkNew<vtkIntArray> ids;
+  ids->SetName("CellId");
+  for (vtkIdType c = 0; c < image->GetNumberOfCells(); ++c)
+  {
+    ids->InsertNextValue(static_cast<int>(c));
+  }
+  image->GetCellData()->AddArray(ids);
+  for (const int backend : { vtkOFBBuilder::BACKEND_OPENGL, vtkOFBBuilder::BACKEND_CPU })
+  {
+    vtkNew<vtkOFBBuilder> builder;
+    builder->SetInputData(image);
+    builder->SetResolution(64);
+    builder->SetBackend(backend);
+    builder->SetRenderWindow(window);
+    builder->Update();
+    ASSERT_EQ(builder->GetLastBackend(), backend);
+    vtkOFB* ofb = builder->GetOutput();
+    ASSERT_GT(ofb->GetNumberOfSamples(), 1000);
+    vtkDataArray* cellIds = ofb->GetSampleData()->GetArray("CellId");
+    ASSERT_NE(cellIds, nullptr);
+    for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+    {
+      double x[3], bounds[6];
+      ofb->GetSamplePosition(i, x);
+      image->GetCellBounds(static_cast<vtkIdType>(cellIds->GetTuple1(i)), bounds);
+      for (int k = 0; k < 3; ++k)
+      {
+        ASSERT_GE(x[k], bounds[2 * k] - 0.05) << "backend " << backend << ", sample " << i;
+        ASSERT_LE(x[k], bounds[2 * k + 1] + 0.05) << "backend " << backend << ", sample " << i;
+      }
+    }
+  }
 }

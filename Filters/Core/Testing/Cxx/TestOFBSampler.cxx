@@ -482,7 +482,9 @@ TEST(Sampler, RebuildReusesTheMemoryOfArraysNobodyElseHolds)
   vtkSmartPointer<vtkDataArray> kept = copy->GetSampleData()->GetNormals();
   copy->Recycle();
   EXPECT_EQ(copy->GetNumberOfSamples(), 0);
-  EXPECT_EQ(copy->GetNumberOfSpareArrays(), 4); // offsets, depths, cell index, colours
+  // Offsets, depths, cell index, colours and the OBJ reader's cell array "GroupIds".
+  ASSERT_NE(reference->GetSampleData()->GetArray("GroupIds"), nullptr);
+  EXPECT_EQ(copy->GetNumberOfSpareArrays(), 5);
   EXPECT_EQ(copy->TakeSpareArray("Normals", VTK_FLOAT, 3, 1), nullptr);
   EXPECT_EQ(copy->TakeSpareArray(nullptr, VTK_FLOAT, 1, 1), nullptr);
   EXPECT_EQ(copy->TakeSpareArray("Depths", VTK_DOUBLE, 1, 1), nullptr);

@@ -3,6 +3,7 @@
 #include "vtkOFBLICTestHelpers.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
@@ -828,4 +829,47 @@ TEST(LIC, FarOriginsAndHugeValuesAreDefined)
       }
     }
   }
+}
+
+//------------------------------------------------------------------------------
+TEST(LIC, CellVectorFieldOfTheSampledSurfaceIsFound)
+{
+  // The square's triangles carry the field as active cell vectors, no point vectors:
+  // the sampler makes them the samples' active vectors, which vtkOFBLIC finds.
+  vtkSmartPointer<vtkPolyData> mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(MakeSquare());
+  mesh->GetPointData()->Initialize();
+  vtkNew<vtkFloatArray> flow;
+  flow->SetName("CellFlow");
+  flow->SetNumberOfComponents(3);
+  const double axis[3] = { 0.0, 0.0, 1.0 };
+  const VectorField rotation = RotationField(axis);
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    double bounds[6], centre[3], v[3];
+    mesh->GetCellBounds(c, bounds);
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+    }
+    rotation(centre, v);
+    flow->InsertNextTuple(v);
+  }
+  mesh->GetCellData()->SetVectors(flow);
+  vtkSmartPointer<vtkOFB> ofb = Build(mesh, 256);
+  ASSERT_GT(ofb->GetNumberOfSamples(), 50000);
+  ASSERT_NE(ofb->GetSampleData()->GetVectors(), nullptr);
+  EXPECT_STREQ(ofb->GetSampleData()->GetVectors()->GetName(), "CellFlow");
+
+  vtkNew<vtkOFBLIC> lic;
+  vtkNew<MessageObserver> messages;
+  messages->Watch(lic);
+  vtkSmartPointer<vtkOFB> out = RunLIC(lic, ofb);
+  EXPECT_EQ(messages->Errors.find("No vector field"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(messages->Errors, "");
+  ASSERT_EQ(out->GetNumberOfSamples(), ofb->GetNumberOfSamples());
+  const float* values = LICValues(out);
+  ASSERT_NE(values, nullptr);
+  const auto range = std::minmax_element(values, values + out->GetNumberOfSamples());
+  EXPECT_LT(*range.first + 0.1f, *range.second) << "the LIC is constant";
 }

@@ -395,6 +395,9 @@ int RunPeer(const std::string& mesh, int resolution, int repetitions, int nThrea
   vtkNew<vtkOFBSampler> sampler;
   sampler->SetInputData(polyData);
   sampler->SetResolution(resolution);
+  // The geometry and the default arrays only, as the peer stores: not the cell arrays
+  // that a mesh reader adds (the OBJ reader's GroupIds).
+  sampler->PassCellArraysOff();
   sampler->Update();
   vtkOFB* ofb = sampler->GetOutput();
   const SamplePayload payload = ExtractSamples(ofb);
@@ -572,6 +575,9 @@ int main(int argc, char* argv[])
       vtkNew<vtkOFBSampler> sampler;
       sampler->SetInputData(mesh);
       sampler->SetResolution(resolution);
+      // The geometry and the default arrays only, as the peer stores: not the cell arrays
+      // that a mesh reader adds (the OBJ reader's GroupIds).
+      sampler->PassCellArraysOff();
       std::vector<double> times;
       double first = 0.0;
       for (int r = -1; r < options.Repetitions; ++r)

@@ -15,6 +15,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkTriangleFilter.h"
 
 #include <cmath>
 #include <string>
@@ -122,6 +123,20 @@ inline vtkSmartPointer<vtkPolyData> WithBadPointId(vtkPolyData* mesh, vtkIdType 
   out->SetPolys(polys);
   return out;
 }
+
+/// MakeTexturedPlane(4) split into triangles: 25 points, with texture coordinates.
+inline vtkSmartPointer<vtkPolyData> MakeTexturedTrianglePlane()
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(MakeTexturedPlane(4));
+  triangles->Update();
+  vtkSmartPointer<vtkPolyData> out = triangles->GetOutput();
+  return out;
+}
+
+/// Point ids that MakeTexturedTrianglePlane's 25 points do not have: one past the end, far
+/// past it, and negative (for WithBadPointId).
+constexpr vtkIdType BadPlanePointIds[] = { 25, 99999, -1 };
 
 /// Add a float sample array `name` holding coordinate `axis` of each sample's position.
 inline void AddCoordinateArray(vtkOFB* ofb, const char* name, int axis)

@@ -11,7 +11,6 @@
 #include "vtkOFBTextureAtlas.h"
 #include "vtkOFBTextureBaker.h"
 #include "vtkPointData.h"
-#include "vtkTriangleFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -21,19 +20,6 @@ using namespace vtkofbtest;
 
 namespace
 {
-/// A 2 x 2 plane of 4 x 4 quads split into triangles, with texture coordinates.
-vtkSmartPointer<vtkPolyData> TrianglePlane()
-{
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(MakeTexturedPlane(4));
-  triangles->Update();
-  vtkSmartPointer<vtkPolyData> out = triangles->GetOutput();
-  return out;
-}
-
-/// Bad ids for the plane's 25 points: one past the end, far past it, and negative.
-const vtkIdType BadIds[] = { 25, 99999, -1 };
-
 /// Expect an error naming the bad point id.
 void ExpectBadIdError(const std::string& errors, vtkIdType badId)
 {
@@ -44,11 +30,11 @@ void ExpectBadIdError(const std::string& errors, vtkIdType badId)
 //------------------------------------------------------------------------------
 TEST(BadPointIds, TextureAtlasRefusesThemInBothLayouts)
 {
-  vtkSmartPointer<vtkPolyData> plane = TrianglePlane();
+  vtkSmartPointer<vtkPolyData> plane = MakeTexturedTrianglePlane();
   vtkSmartPointer<vtkOFB> ofb = Build(plane, 32);
   for (int layout : { vtkOFBTextureAtlas::CHARTS, vtkOFBTextureAtlas::TRIANGLES })
   {
-    for (vtkIdType badId : BadIds)
+    for (vtkIdType badId : BadPlanePointIds)
     {
       vtkNew<vtkOFBTextureAtlas> atlas;
       vtkNew<MessageObserver> o;
@@ -69,7 +55,7 @@ TEST(BadPointIds, TextureAtlasRefusesShortAttributeArrays)
 {
   // The atlas copies the point and cell arrays to its output: a short one would be read
   // past its end.
-  vtkSmartPointer<vtkPolyData> plane = TrianglePlane();
+  vtkSmartPointer<vtkPolyData> plane = MakeTexturedTrianglePlane();
   vtkSmartPointer<vtkOFB> ofb = Build(plane, 32);
   for (bool onCells : { false, true })
   {
@@ -101,9 +87,9 @@ TEST(BadPointIds, TextureAtlasRefusesShortAttributeArrays)
 //------------------------------------------------------------------------------
 TEST(BadPointIds, TextureBakerRefusesThem)
 {
-  vtkSmartPointer<vtkPolyData> plane = TrianglePlane();
+  vtkSmartPointer<vtkPolyData> plane = MakeTexturedTrianglePlane();
   vtkSmartPointer<vtkOFB> ofb = Build(plane, 32);
-  for (vtkIdType badId : BadIds)
+  for (vtkIdType badId : BadPlanePointIds)
   {
     vtkNew<vtkOFBTextureBaker> baker;
     vtkNew<MessageObserver> o;
@@ -120,9 +106,9 @@ TEST(BadPointIds, TextureBakerRefusesThem)
 //------------------------------------------------------------------------------
 TEST(BadPointIds, ProbeFilterRefusesThem)
 {
-  vtkSmartPointer<vtkPolyData> plane = TrianglePlane();
+  vtkSmartPointer<vtkPolyData> plane = MakeTexturedTrianglePlane();
   vtkSmartPointer<vtkOFB> ofb = Build(plane, 32);
-  for (vtkIdType badId : BadIds)
+  for (vtkIdType badId : BadPlanePointIds)
   {
     vtkNew<vtkOFBProbeFilter> probe;
     vtkNew<MessageObserver> o;

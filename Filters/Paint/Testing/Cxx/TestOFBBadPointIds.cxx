@@ -13,7 +13,6 @@
 #include "vtkOFBTextureProjector.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkTriangleFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -24,19 +23,6 @@ using namespace vtkofbtest;
 
 namespace
 {
-/// A 2 x 2 plane of 4 x 4 quads split into triangles (25 points), with texture coordinates.
-vtkSmartPointer<vtkPolyData> TrianglePlane()
-{
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(MakeTexturedPlane(4));
-  triangles->Update();
-  vtkSmartPointer<vtkPolyData> out = triangles->GetOutput();
-  return out;
-}
-
-/// One past the end of the plane's 25 points, far past it, and negative.
-const vtkIdType BadIds[] = { 25, 99999, -1 };
-
 void ExpectBadIdError(const std::string& errors, vtkIdType badId)
 {
   EXPECT_NE(errors.find("point id " + std::to_string(badId)), std::string::npos) << errors;
@@ -84,8 +70,8 @@ std::string Paint(vtkOFB* ofb, vtkPolyData* strokes, vtkIdType& samples)
 //------------------------------------------------------------------------------
 TEST(BadPointIds, DecalPatchRefusesThem)
 {
-  vtkSmartPointer<vtkPolyData> plane = TrianglePlane();
-  for (vtkIdType badId : BadIds)
+  vtkSmartPointer<vtkPolyData> plane = MakeTexturedTrianglePlane();
+  for (vtkIdType badId : BadPlanePointIds)
   {
     // Triangles (the walker reads them as they are) and quads (triangulated first).
     for (bool quads : { false, true })
@@ -106,12 +92,12 @@ TEST(BadPointIds, DecalPatchRefusesThem)
 //------------------------------------------------------------------------------
 TEST(BadPointIds, TextureProjectorRefusesThem)
 {
-  vtkSmartPointer<vtkPolyData> plane = TrianglePlane();
+  vtkSmartPointer<vtkPolyData> plane = MakeTexturedTrianglePlane();
   vtkSmartPointer<vtkOFB> ofb = Build(plane, 32);
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(4, 4, 1);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  for (vtkIdType badId : BadIds)
+  for (vtkIdType badId : BadPlanePointIds)
   {
     vtkNew<vtkOFBTextureProjector> projector;
     vtkNew<MessageObserver> o;
@@ -128,7 +114,7 @@ TEST(BadPointIds, TextureProjectorRefusesThem)
 //------------------------------------------------------------------------------
 TEST(BadPointIds, PaintFilterRefusesStrokeIdsPastTheEndOrNegative)
 {
-  vtkSmartPointer<vtkOFB> ofb = Build(TrianglePlane(), 32);
+  vtkSmartPointer<vtkOFB> ofb = Build(MakeTexturedTrianglePlane(), 32);
   vtkIdType samples = -1;
   for (vtkIdType badId : { vtkIdType(3), vtkIdType(99999), vtkIdType(-1) })
   {
@@ -153,7 +139,7 @@ TEST(BadPointIds, PaintFilterRefusesStrokeIdsPastTheEndOrNegative)
 //------------------------------------------------------------------------------
 TEST(BadPointIds, PaintFilterRefusesShortPerPointArrays)
 {
-  vtkSmartPointer<vtkOFB> ofb = Build(TrianglePlane(), 32);
+  vtkSmartPointer<vtkOFB> ofb = Build(MakeTexturedTrianglePlane(), 32);
   for (const char* name : { "Radius", "Color", "Strength", "Pressure" })
   {
     for (vtkIdType tuples : { 0, 2 })

@@ -5,10 +5,14 @@
 
 #include "vtkOFBTestUtilities.h"
 
+#include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
@@ -33,6 +37,66 @@ inline vtkSmartPointer<vtkPolyData> MakeSquare()
   triangles->SetInputConnection(plane->GetOutputPort());
   triangles->Update();
   vtkSmartPointer<vtkPolyData> out = triangles->GetOutput();
+  return out;
+}
+
+/**
+ * A pipe wall with a bump and a swirling flow: radius 1, length 4 along its axis, an
+ * outward bump of height 0.35 and width about 0.5 on one side at mid-length, open ends.
+ * The flow ("Flow", point vectors) runs along the axis at speed 1 and turns about it at
+ * an angular speed of 1.2 + 0.6 sin(1.5 z). The pipe is then tilted (30 degrees about x,
+ * 20 about y) so that its axis and the bump lie along no grid axis. `around` x `along`
+ * quads, each cut into two triangles.
+ */
+inline vtkSmartPointer<vtkPolyData> MakePipeWithBump(int around = 256, int along = 256)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> flow;
+  flow->SetName("Flow");
+  flow->SetNumberOfComponents(3);
+  for (int j = 0; j <= along; ++j)
+  {
+    const double z = -2.0 + 4.0 * j / along;
+    for (int i = 0; i < around; ++i)
+    {
+      const double theta = 2.0 * vtkMath::Pi() * i / around;
+      double dTheta = std::remainder(theta, 2.0 * vtkMath::Pi());
+      const double bump = 0.35 * std::exp(-(z * z + dTheta * dTheta) / 0.25);
+      const double r = 1.0 + bump;
+      const double x[3] = { r * std::cos(theta), r * std::sin(theta), z };
+      points->InsertNextPoint(x);
+      const double omega = 1.2 + 0.6 * std::sin(1.5 * z);
+      const double v[3] = { -omega * x[1], omega * x[0], 1.0 };
+      flow->InsertNextTuple(v);
+    }
+  }
+  vtkNew<vtkCellArray> triangles;
+  for (int j = 0; j < along; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const vtkIdType a = j * around + i;
+      const vtkIdType b = j * around + (i + 1) % around;
+      const vtkIdType c = a + around;
+      const vtkIdType d = b + around;
+      const vtkIdType t0[3] = { a, b, d };
+      const vtkIdType t1[3] = { a, d, c };
+      triangles->InsertNextCell(3, t0);
+      triangles->InsertNextCell(3, t1);
+    }
+  }
+  vtkNew<vtkPolyData> pipe;
+  pipe->SetPoints(points);
+  pipe->SetPolys(triangles);
+  pipe->GetPointData()->SetVectors(flow);
+  vtkNew<vtkTransform> tilt;
+  tilt->RotateY(20.0);
+  tilt->RotateX(30.0);
+  vtkNew<vtkTransformPolyDataFilter> tilted;
+  tilted->SetInputData(pipe);
+  tilted->SetTransform(tilt); // rotates the active vectors too
+  tilted->Update();
+  vtkSmartPointer<vtkPolyData> out = tilted->GetOutput();
   return out;
 }
 

@@ -102,6 +102,36 @@ TEST(LIC, FlatSquareUniformFieldGivesStreaksAlongTheField)
 }
 
 //------------------------------------------------------------------------------
+TEST(LIC, PipeWithBumpHasATangentSwirlOnEveryGrid)
+{
+  // The pipe of the LIC quality measures: samples on all three grids, and a flow that the
+  // sampler keeps (its tangential part) almost whole, since it runs along the wall.
+  vtkSmartPointer<vtkPolyData> pipe = MakePipeWithBump(128, 128);
+  vtkSmartPointer<vtkOFB> ofb = Build(pipe, 256);
+  ASSERT_GT(ofb->GetNumberOfSamples(), 0);
+  vtkIdType perAxis[3] = { 0, 0, 0 };
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    ++perAxis[ofb->GetSampleAxis(i)];
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    EXPECT_GT(perAxis[axis], ofb->GetNumberOfSamples() / 100) << "axis " << axis;
+  }
+  vtkDataArray* flow = ofb->GetSampleData()->GetVectors();
+  ASSERT_NE(flow, nullptr);
+  double kept = 0.0, total = 0.0;
+  for (vtkIdType p = 0; p < pipe->GetNumberOfPoints(); ++p)
+  {
+    total += vtkMath::Norm(pipe->GetPointData()->GetVectors()->GetTuple3(p));
+  }
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    kept += vtkMath::Norm(flow->GetTuple3(i));
+  }
+  EXPECT_GT(kept / ofb->GetNumberOfSamples(), 0.9 * total / pipe->GetNumberOfPoints());
+}
+
 TEST(LIC, EnhancedSecondPassTakesHalfTheSteps)
 {
   // EnhancedLIC written out with the filter's public pieces: a first LIC of 10 steps, its

@@ -486,8 +486,9 @@ bool vtkOFBImageComparison::Compare()
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBImageComparison::RegressionTest(
-  vtkRenderWindow* window, const char* baselineFileName, const char* outputDirectory)
+int vtkOFBImageComparison::RegressionTest(vtkRenderWindow* window,
+  const char* baselineFileName,
+  const char* outputDirectory)
 {
   if (!window)
   {
@@ -605,8 +606,10 @@ int vtkOFBImageComparison::RegressionTest(
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBImageComparison::Test(
-  int argc, char* argv[], vtkRenderWindow* window, vtkOFBImageComparison* settings)
+int vtkOFBImageComparison::Test(int argc,
+  char* argv[],
+  vtkRenderWindow* window,
+  vtkOFBImageComparison* settings)
 {
   vtkNew<vtkTesting> testing;
   testing->AddArguments(argc, argv);

@@ -123,7 +123,7 @@ public:
   ///@{
   /**
    * The least correlation of the high-passed luminance inside the mask for the image to
-   * pass (default 0.95).
+   * pass (default 0.97).
    */
   vtkSetClampMacro(CorrelationThreshold, double, -1.0, 1.0);
   vtkGetMacro(CorrelationThreshold, double);
@@ -211,8 +211,9 @@ public:
    * there as <name>.png and <name>.diff.png (with no baseline, the rendered image only).
    * Returns PASSED or FAILED.
    */
-  int RegressionTest(
-    vtkRenderWindow* window, const char* baselineFileName, const char* outputDirectory);
+  int RegressionTest(vtkRenderWindow* window,
+    const char* baselineFileName,
+    const char* outputDirectory);
 
 #ifndef __VTK_WRAP__
   /**
@@ -221,8 +222,10 @@ public:
    * (or VTK_TEMP_DIR). Returns DO_INTERACTOR with -I, NOT_RUN without -V, else PASSED or
    * FAILED. `settings` (optional) gives the thresholds and mask settings.
    */
-  static int Test(
-    int argc, char* argv[], vtkRenderWindow* window, vtkOFBImageComparison* settings = nullptr);
+  static int Test(int argc,
+    char* argv[],
+    vtkRenderWindow* window,
+    vtkOFBImageComparison* settings = nullptr);
 #endif
 
 protected:
@@ -239,7 +242,7 @@ protected:
   double BackgroundColor[3] = { 0.0, 0.0, 0.0 };
   int BackgroundTolerance = 2;
   int HighPassRadius = 3;
-  double CorrelationThreshold = 0.95;
+  double CorrelationThreshold = 0.97;
   double LowPassThreshold = 6.0;
   double ImageDifferenceThreshold = 0.15;
   bool AllowShift = true;

@@ -113,15 +113,15 @@ bool CompareWithBaseline(vtkImageData* image, const char* what, vtkOFBImageCompa
   vtkDiff->Update();
   std::cout << what << ": correlation " << c->GetCorrelation() << ", low-pass difference "
             << c->GetLowPassDifference() << ", mean absolute difference "
-            << c->GetMeanAbsoluteDifference() << ", error outside "
-            << c->GetImageDifferenceError() << ", mask " << c->GetNumberOfMaskPixels()
-            << " pixels; vtkImageDifference over the whole image "
-            << vtkDiff->GetThresholdedError() << std::endl;
+            << c->GetMeanAbsoluteDifference() << ", error outside " << c->GetImageDifferenceError()
+            << ", mask " << c->GetNumberOfMaskPixels()
+            << " pixels; vtkImageDifference over the whole image " << vtkDiff->GetThresholdedError()
+            << std::endl;
   return passed;
 }
 
 /// A copy of an RGB image with f(x, y, rgb) applied to each pixel.
-template <typename F>
+template<typename F>
 vtkSmartPointer<vtkImageData> Edited(vtkImageData* in, F f)
 {
   auto out = vtkSmartPointer<vtkImageData>::New();
@@ -202,7 +202,10 @@ TEST(ImageComparison, DriverNoiseAndSilhouettesPass)
   vtkImageData* base = Rendered(Settings());
   const unsigned char bg[3] = { 26, 26, 38 };
   auto isBackground = [&bg](const unsigned char* p)
-  { return std::abs(p[0] - bg[0]) <= 2 && std::abs(p[1] - bg[1]) <= 2 && std::abs(p[2] - bg[2]) <= 2; };
+  {
+    return std::abs(p[0] - bg[0]) <= 2 && std::abs(p[1] - bg[1]) <= 2 &&
+      std::abs(p[2] - bg[2]) <= 2;
+  };
   const auto* src = static_cast<unsigned char*>(base->GetScalarPointer());
   vtkSmartPointer<vtkImageData> noisy = Edited(base,
     [&](int x, int y, unsigned char* p)
@@ -328,9 +331,12 @@ TEST(ImageComparison, GivenMaskIsUsed)
   vtkImageData* base = Rendered(Settings());
   vtkImageData* other = Rendered(s);
   const auto* o = static_cast<unsigned char*>(other->GetScalarPointer());
-  vtkSmartPointer<vtkImageData> rightChanged =
-    Edited(base, [&](int x, int y, unsigned char* p)
-      { if (x >= Size / 2) std::copy(o + 3 * (y * Size + x), o + 3 * (y * Size + x) + 3, p); });
+  vtkSmartPointer<vtkImageData> rightChanged = Edited(base,
+    [&](int x, int y, unsigned char* p)
+    {
+      if (x >= Size / 2)
+        std::copy(o + 3 * (y * Size + x), o + 3 * (y * Size + x) + 3, p);
+    });
   vtkNew<vtkImageData> mask;
   mask->SetDimensions(Size, Size, 1);
   mask->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
@@ -370,8 +376,8 @@ TEST(ImageComparison, RegressionTestWritesTheImagesWhenItFails)
   EXPECT_EQ(c->RegressionTest(scene.View->Window, baseline.c_str(), (dir + "/out").c_str()),
     vtkOFBImageComparison::FAILED);
   EXPECT_NE(std::string(c->GetErrorText()).find("no baseline"), std::string::npos);
-  EXPECT_NE(std::string(c->GetErrorText()).find("cp '" + image + "' '" + baseline + "'"),
-    std::string::npos)
+  EXPECT_NE(
+    std::string(c->GetErrorText()).find("cp '" + image + "' '" + baseline + "'"), std::string::npos)
     << c->GetErrorText();
   ASSERT_TRUE(vtksys::SystemTools::FileExists(image, true));
 
@@ -407,8 +413,8 @@ TEST(ImageComparison, RegressionTestWritesTheImagesWhenItFails)
     std::ofstream out(notPNG);
     out << "not a PNG\n";
   }
-  EXPECT_EQ(c->RegressionTest(scene.View->Window, notPNG.c_str(), nullptr),
-    vtkOFBImageComparison::FAILED);
+  EXPECT_EQ(
+    c->RegressionTest(scene.View->Window, notPNG.c_str(), nullptr), vtkOFBImageComparison::FAILED);
   EXPECT_NE(std::string(c->GetErrorText()).find("cannot read"), std::string::npos)
     << c->GetErrorText();
   EXPECT_NE(messages->Errors, "");
@@ -444,7 +450,8 @@ TEST(ImageComparison, TestReadsTheArgumentsOfAVTKTest)
   vtkNew<vtkOFBImageComparison> quiet;
   vtkNew<MessageObserver> messages;
   messages->Watch(quiet);
-  EXPECT_EQ(vtkOFBRegressionTestImageWith(scene.View->Window, quiet), vtkOFBImageComparison::FAILED);
+  EXPECT_EQ(
+    vtkOFBRegressionTestImageWith(scene.View->Window, quiet), vtkOFBImageComparison::FAILED);
   ASSERT_TRUE(vtksys::SystemTools::FileExists(out + "/TestArguments.png", true));
   vtksys::SystemTools::CopyFileAlways(out + "/TestArguments.png", baseline);
   EXPECT_EQ(vtkOFBRegressionTestImage(scene.View->Window), vtkOFBImageComparison::PASSED);

@@ -445,7 +445,7 @@ bool vtkOFBImageComparison::Compare()
     for (size_t i = 0; i < n; ++i)
     {
       diff.Channel[c][i] =
-        std::min(255.0f, 4.0f * std::fabs(image.Channel[c][i] - baseline.Channel[c][i]));
+        std::min(255.0f, 8.0f * std::fabs(image.Channel[c][i] - baseline.Channel[c][i]));
     }
   }
   if (this->DifferenceImage)
@@ -459,27 +459,23 @@ bool vtkOFBImageComparison::Compare()
   std::ostringstream text;
   if (this->Correlation < this->CorrelationThreshold)
   {
-    text << "the high-passed images correlate at " << this->Correlation << " inside the mask ("
+    text << "The high-passed images correlate at " << this->Correlation << " inside the mask ("
          << count << " pixels), below CorrelationThreshold " << this->CorrelationThreshold
-         << ": the texture changed. ";
+         << ": the texture changed.";
   }
   if (this->LowPassDifference > this->LowPassThreshold)
   {
-    text << "the low-passed images differ by " << this->LowPassDifference
-         << " levels inside the mask, more than LowPassThreshold " << this->LowPassThreshold
-         << ": the colours changed. ";
+    text << (text.tellp() > 0 ? " " : "") << "The low-passed images differ by "
+         << this->LowPassDifference << " levels inside the mask, more than LowPassThreshold "
+         << this->LowPassThreshold << ": the colours changed.";
   }
   if (this->ImageDifferenceError > this->ImageDifferenceThreshold)
   {
-    text << "vtkImageDifference's error outside the mask is " << this->ImageDifferenceError
-         << ", more than ImageDifferenceThreshold " << this->ImageDifferenceThreshold
-         << ": the silhouette or the background changed. ";
+    text << (text.tellp() > 0 ? " " : "") << "vtkImageDifference's error outside the mask is "
+         << this->ImageDifferenceError << ", more than ImageDifferenceThreshold "
+         << this->ImageDifferenceThreshold << ": the silhouette or the background changed.";
   }
   this->ErrorText = text.str();
-  if (!this->ErrorText.empty())
-  {
-    this->ErrorText.pop_back();
-  }
   this->Passed = this->ErrorText.empty();
   this->Modified();
   return this->Passed;
@@ -522,15 +518,23 @@ int vtkOFBImageComparison::RegressionTest(vtkRenderWindow* window,
   const std::string baselineName = baselineFileName;
   const std::string name = vtksys::SystemTools::GetFilenameWithoutLastExtension(baselineName);
   const std::string directory = outputDirectory ? outputDirectory : "";
-  const std::string imageOut = directory.empty() ? "" : directory + "/" + name + ".png";
-  const std::string diffOut = directory.empty() ? "" : directory + "/" + name + ".diff.png";
+  std::string imageOut = directory.empty() ? "" : directory + "/" + name + ".png";
+  std::string diffOut = directory.empty() ? "" : directory + "/" + name + ".diff.png";
+  if (!imageOut.empty() &&
+    vtksys::SystemTools::CollapseFullPath(imageOut) ==
+      vtksys::SystemTools::CollapseFullPath(baselineName))
+  {
+    // Never over the baseline itself: no output.
+    imageOut.clear();
+    diffOut.clear();
+  }
   if (!vtksys::SystemTools::FileExists(baselineName, true))
   {
-    std::string text = "no baseline " + baselineName;
+    std::string text = "No baseline " + baselineName + ".";
     if (!imageOut.empty() && WritePNG(rendered, imageOut))
     {
-      text += "; the rendered image is " + imageOut + " (cp '" + imageOut + "' '" + baselineName +
-        "' makes it the baseline)";
+      text += " The rendered image is " + imageOut + "; cp '" + imageOut + "' '" + baselineName +
+        "' makes it the baseline.";
     }
     this->Fail(text);
     return FAILED;
@@ -593,12 +597,12 @@ int vtkOFBImageComparison::RegressionTest(vtkRenderWindow* window,
   std::string text = this->ErrorText;
   if (!imageOut.empty() && WritePNG(rendered, imageOut))
   {
-    text += "; the rendered image is " + imageOut;
+    text += " The rendered image is " + imageOut;
     if (this->DifferenceImage && WritePNG(this->DifferenceImage, diffOut))
     {
       text += ", the difference " + diffOut;
     }
-    text += " (cp '" + imageOut + "' '" + baselineName + "' makes it the baseline)";
+    text += "; cp '" + imageOut + "' '" + baselineName + "' makes it the baseline.";
   }
   this->ErrorText = text;
   std::cout << "Failed image comparison (" << name << "): " << text << std::endl;

@@ -197,7 +197,7 @@ public:
 
   /**
    * A difference image of the last comparison (RGB, the size of the inputs): the absolute
-   * difference of the two images times 4, clamped; null before a comparison or after bad
+   * difference of the two images times 8, clamped; null before a comparison or after bad
    * input.
    */
   vtkGetObjectMacro(DifferenceImage, vtkImageData);

@@ -10,6 +10,7 @@ under xvfb-run; ctest does both.
 """
 
 import os
+import sys
 import tempfile
 import unittest
 
@@ -167,4 +168,4 @@ class ImageComparison(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    unittest.main()
+    unittest.main(argv=sys.argv[:1])

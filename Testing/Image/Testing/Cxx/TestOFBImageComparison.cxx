@@ -375,7 +375,7 @@ TEST(ImageComparison, RegressionTestWritesTheImagesWhenItFails)
   // No baseline: fails, and writes the rendered image to copy over the baseline.
   EXPECT_EQ(c->RegressionTest(scene.View->Window, baseline.c_str(), (dir + "/out").c_str()),
     vtkOFBImageComparison::FAILED);
-  EXPECT_NE(std::string(c->GetErrorText()).find("no baseline"), std::string::npos);
+  EXPECT_NE(std::string(c->GetErrorText()).find("No baseline"), std::string::npos);
   EXPECT_NE(
     std::string(c->GetErrorText()).find("cp '" + image + "' '" + baseline + "'"), std::string::npos)
     << c->GetErrorText();
@@ -397,6 +397,12 @@ TEST(ImageComparison, RegressionTestWritesTheImagesWhenItFails)
   EXPECT_TRUE(vtksys::SystemTools::FileExists(image, true));
   EXPECT_TRUE(vtksys::SystemTools::FileExists(diff, true));
   EXPECT_NE(std::string(c->GetErrorText()).find("texture"), std::string::npos);
+
+  // Output into the baseline's own directory: the baseline is never overwritten.
+  vtksys::SystemTools::CopyFileAlways(baseline, dir + "/out/Kept.png");
+  EXPECT_EQ(c->RegressionTest(scene.View->Window, baseline.c_str(), dir.c_str()),
+    vtkOFBImageComparison::FAILED);
+  EXPECT_FALSE(vtksys::SystemTools::FilesDiffer(baseline, dir + "/out/Kept.png"));
 
   // An alternative baseline (name_1.png) that matches passes.
   vtksys::SystemTools::CopyFileAlways(image, dir + "/TestSphereLIC_1.png");

@@ -233,6 +233,164 @@ vtkSmartPointer<vtkImageData> ToImage(const Planes& planes)
   return image;
 }
 
+/// The surface's mask (1 inside): the non-zero pixels of `given`, or else the pixels that
+/// differ from `background` (RGB in [0, 1]) by more than `tolerance` levels in both images.
+bool SurfaceMask(vtkImageData* given,
+  const Planes& image,
+  const Planes& baseline,
+  const double background[3],
+  int tolerance,
+  std::vector<unsigned char>& mask,
+  std::string& why)
+{
+  const int w = image.Width;
+  const int h = image.Height;
+  const size_t n = static_cast<size_t>(w) * h;
+  mask.assign(n, 0);
+  if (given)
+  {
+    int mw = 0;
+    int mh = 0;
+    if (!SizeOf(given, "mask", mw, mh, why))
+    {
+      return false;
+    }
+    vtkDataArray* values = given->GetPointData()->GetScalars();
+    if (mw != w || mh != h || values->GetNumberOfComponents() != 1)
+    {
+      std::ostringstream text;
+      text << "the mask is " << mw << " x " << mh << " pixels of "
+           << values->GetNumberOfComponents() << " components, not " << w << " x " << h
+           << " of one component";
+      why = text.str();
+      return false;
+    }
+    for (size_t i = 0; i < n; ++i)
+    {
+      mask[i] = values->GetComponent(static_cast<vtkIdType>(i), 0) != 0.0;
+    }
+    return true;
+  }
+  const double limit = tolerance + 0.5;
+  auto isBackground = [&](const Planes& p, size_t i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      if (std::fabs(p.Channel[c][i] - 255.0 * background[c]) > limit)
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  for (size_t i = 0; i < n; ++i)
+  {
+    mask[i] = !isBackground(image, i) && !isBackground(baseline, i);
+  }
+  return true;
+}
+
+/// The correlation of the high-passed luminance (minus its box blur of radius r) over the
+/// mask, the best over the shifts of the image by up to `shift` pixels; 1 when neither
+/// image has texture there (a high pass under half a level RMS).
+double TextureCorrelation(const Planes& image,
+  const Planes& baseline,
+  const std::vector<unsigned char>& mask,
+  int r,
+  int shift)
+{
+  const int w = image.Width;
+  const int h = image.Height;
+  std::vector<float> highImage = BoxBlur(image.Grey, w, h, r);
+  std::vector<float> highBaseline = BoxBlur(baseline.Grey, w, h, r);
+  for (size_t i = 0; i < highImage.size(); ++i)
+  {
+    highImage[i] = image.Grey[i] - highImage[i];
+    highBaseline[i] = baseline.Grey[i] - highBaseline[i];
+  }
+  double best = -2.0;
+  double rmsImage = 0.0;
+  double rmsBaseline = 0.0;
+  for (int dy = -shift; dy <= shift; ++dy)
+  {
+    for (int dx = -shift; dx <= shift; ++dx)
+    {
+      best = std::max(best,
+        ShiftedCorrelation(highImage, highBaseline, mask, w, h, dx, dy, rmsImage, rmsBaseline));
+    }
+  }
+  return (rmsImage < 0.5 && rmsBaseline < 0.5) ? 1.0 : best;
+}
+
+/// The mean absolute differences (levels) over the `count` mask pixels of the low-passed
+/// (box blur of radius r) and of the plain RGB images.
+void ColourDifferences(const Planes& image,
+  const Planes& baseline,
+  const std::vector<unsigned char>& mask,
+  int r,
+  vtkIdType count,
+  double& low,
+  double& plain)
+{
+  double lowSum = 0.0;
+  double plainSum = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const std::vector<float> lowImage = BoxBlur(image.Channel[c], image.Width, image.Height, r);
+    const std::vector<float> lowBaseline =
+      BoxBlur(baseline.Channel[c], image.Width, image.Height, r);
+    for (size_t i = 0; i < mask.size(); ++i)
+    {
+      if (mask[i])
+      {
+        lowSum += std::fabs(lowImage[i] - lowBaseline[i]);
+        plainSum += std::fabs(image.Channel[c][i] - baseline.Channel[c][i]);
+      }
+    }
+  }
+  low = lowSum / (3.0 * count);
+  plain = plainSum / (3.0 * count);
+}
+
+/// vtkImageDifference's thresholded error outside the mask: of the image whose mask
+/// pixels are replaced by the baseline's, so that they add no error.
+double OutsideError(const Planes& image,
+  const Planes& baseline,
+  const std::vector<unsigned char>& mask)
+{
+  Planes outside = image;
+  for (size_t i = 0; i < mask.size(); ++i)
+  {
+    if (mask[i])
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        outside.Channel[c][i] = baseline.Channel[c][i];
+      }
+    }
+  }
+  vtkNew<vtkImageDifference> difference;
+  difference->SetInputData(ToImage(outside));
+  difference->SetImageData(ToImage(baseline));
+  difference->Update();
+  return difference->GetThresholdedError();
+}
+
+/// |image - baseline| x 8 per channel, clamped, as an RGB image.
+vtkSmartPointer<vtkImageData> DifferenceOf(const Planes& image, const Planes& baseline)
+{
+  Planes diff = image;
+  for (int c = 0; c < 3; ++c)
+  {
+    for (size_t i = 0; i < diff.Grey.size(); ++i)
+    {
+      diff.Channel[c][i] =
+        std::min(255.0f, 8.0f * std::fabs(image.Channel[c][i] - baseline.Channel[c][i]));
+    }
+  }
+  return ToImage(diff);
+}
+
 /// name.png -> name_<count>.png, as vtkTesting names alternative baselines.
 std::string AlternativeName(const std::string& name, int count)
 {
@@ -318,50 +476,12 @@ bool vtkOFBImageComparison::Compare()
          << " x " << baseline.Height;
     return this->Fail(text.str());
   }
-  const size_t n = static_cast<size_t>(w) * h;
-
   // Step 2: the mask (given, or the pixels off the background in both), eroded.
-  std::vector<unsigned char> mask(n, 0);
-  if (this->Mask)
+  std::vector<unsigned char> mask;
+  if (!SurfaceMask(
+        this->Mask, image, baseline, this->BackgroundColor, this->BackgroundTolerance, mask, why))
   {
-    int mw = 0;
-    int mh = 0;
-    if (!SizeOf(this->Mask, "mask", mw, mh, why))
-    {
-      return this->Fail(why);
-    }
-    vtkDataArray* values = this->Mask->GetPointData()->GetScalars();
-    if (mw != w || mh != h || values->GetNumberOfComponents() != 1)
-    {
-      std::ostringstream text;
-      text << "the mask is " << mw << " x " << mh << " pixels of "
-           << values->GetNumberOfComponents() << " components, not " << w << " x " << h
-           << " of one component";
-      return this->Fail(text.str());
-    }
-    for (size_t i = 0; i < n; ++i)
-    {
-      mask[i] = values->GetComponent(static_cast<vtkIdType>(i), 0) != 0.0;
-    }
-  }
-  else
-  {
-    const double tolerance = this->BackgroundTolerance + 0.5;
-    auto isBackground = [&](const Planes& p, size_t i)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        if (std::fabs(p.Channel[c][i] - 255.0 * this->BackgroundColor[c]) > tolerance)
-        {
-          return false;
-        }
-      }
-      return true;
-    };
-    for (size_t i = 0; i < n; ++i)
-    {
-      mask[i] = !isBackground(image, i) && !isBackground(baseline, i);
-    }
+    return this->Fail(why);
   }
   const int r = this->HighPassRadius;
   mask = Erode(mask, w, h, r + 1);
@@ -374,85 +494,20 @@ bool vtkOFBImageComparison::Compare()
          << "): no surface in the image or the baseline, or the wrong background colour";
     return this->Fail(text.str());
   }
-
-  // Step 3: the texture: correlation of the high-passed luminance, the best shift.
-  std::vector<float> highImage = BoxBlur(image.Grey, w, h, r);
-  std::vector<float> highBaseline = BoxBlur(baseline.Grey, w, h, r);
-  for (size_t i = 0; i < n; ++i)
-  {
-    highImage[i] = image.Grey[i] - highImage[i];
-    highBaseline[i] = baseline.Grey[i] - highBaseline[i];
-  }
-  const int shift = this->AllowShift ? 1 : 0;
-  double best = -2.0;
-  double rmsImage = 0.0;
-  double rmsBaseline = 0.0;
-  for (int dy = -shift; dy <= shift; ++dy)
-  {
-    for (int dx = -shift; dx <= shift; ++dx)
-    {
-      best = std::max(best,
-        ShiftedCorrelation(highImage, highBaseline, mask, w, h, dx, dy, rmsImage, rmsBaseline));
-    }
-  }
-  // Neither has texture inside the mask (a high pass under half a level RMS): the
-  // texture agrees; the low pass compares the colours.
-  this->Correlation = (rmsImage < 0.5 && rmsBaseline < 0.5) ? 1.0 : best;
-
-  // Step 4: the colour: the low-passed and the plain RGB images inside the mask.
-  double lowSum = 0.0;
-  double plainSum = 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    const std::vector<float> lowImage = BoxBlur(image.Channel[c], w, h, r);
-    const std::vector<float> lowBaseline = BoxBlur(baseline.Channel[c], w, h, r);
-    for (size_t i = 0; i < n; ++i)
-    {
-      if (mask[i])
-      {
-        lowSum += std::fabs(lowImage[i] - lowBaseline[i]);
-        plainSum += std::fabs(image.Channel[c][i] - baseline.Channel[c][i]);
-      }
-    }
-  }
-  this->LowPassDifference = lowSum / (3.0 * count);
-  this->MeanAbsoluteDifference = plainSum / (3.0 * count);
   this->NumberOfMaskPixels = count;
 
-  // Step 5: VTK's measure outside the mask: the mask pixels of the image replaced by
-  // the baseline's, so that they add no error.
-  Planes outside = image;
-  for (size_t i = 0; i < n; ++i)
-  {
-    if (mask[i])
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        outside.Channel[c][i] = baseline.Channel[c][i];
-      }
-    }
-  }
-  vtkNew<vtkImageDifference> difference;
-  difference->SetInputData(ToImage(outside));
-  difference->SetImageData(ToImage(baseline));
-  difference->Update();
-  this->ImageDifferenceError = difference->GetThresholdedError();
+  // Steps 3-5: the texture and the colour inside the mask, VTK's measure outside.
+  this->Correlation = TextureCorrelation(image, baseline, mask, r, this->AllowShift ? 1 : 0);
+  ColourDifferences(
+    image, baseline, mask, r, count, this->LowPassDifference, this->MeanAbsoluteDifference);
+  this->ImageDifferenceError = OutsideError(image, baseline, mask);
 
   // Step 6: the difference image, the verdict and its text.
-  Planes diff = image;
-  for (int c = 0; c < 3; ++c)
-  {
-    for (size_t i = 0; i < n; ++i)
-    {
-      diff.Channel[c][i] =
-        std::min(255.0f, 8.0f * std::fabs(image.Channel[c][i] - baseline.Channel[c][i]));
-    }
-  }
   if (this->DifferenceImage)
   {
     this->DifferenceImage->Delete();
   }
-  vtkSmartPointer<vtkImageData> differenceImage = ToImage(diff);
+  vtkSmartPointer<vtkImageData> differenceImage = DifferenceOf(image, baseline);
   differenceImage->Register(this);
   this->DifferenceImage = differenceImage;
 

@@ -232,6 +232,16 @@ TEST(ImageComparison, DriverNoiseAndSilhouettesPass)
     << c->GetErrorText();
 }
 
+// Antialiasing: the same settings rendered with 8 samples a pixel (the silhouettes
+// blended by multisampling) pass against the baseline rendered with one.
+TEST(ImageComparison, MultisampledRenderingPasses)
+{
+  Scene scene{ Settings() };
+  scene.View->Window->SetMultiSamples(8);
+  vtkNew<vtkOFBImageComparison> c;
+  EXPECT_TRUE(CompareWithBaseline(scene.Grab(), "8 samples a pixel", c)) << c->GetErrorText();
+}
+
 TEST(ImageComparison, OnePixelShiftPassesUnlessShiftIsOff)
 {
   vtkImageData* base = Rendered(Settings());

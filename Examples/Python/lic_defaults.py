@@ -20,7 +20,7 @@ that are not background): the 1st and 99th percentiles and the standard deviatio
 [0, 1].
 
 Run (from a build tree):
-    PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
+    PYTHONPATH=build/lib/python3.11/dist-packages xvfb-run -a /usr/bin/python3 \\
         Examples/Python/lic_defaults.py pipe-close.png --view close
 Options: --view close|far, --size (pixels), --around/--along (the pipe's quads), the
 settings above, --check (exit with an error unless both the LIC and the grey shown span

@@ -125,10 +125,10 @@ inline void vtkOFBLICStretchTails(float* values,
       counts.resize(Bins, 0);
       for (vtkIdType i = begin; i < end; ++i)
       {
-        if (!mask[i])
+        const double at = (values[i] - lo) * binScale; // NaN (from a noise array) fails
+        if (!mask[i] && at >= 0.0)
         {
-          const int bin = static_cast<int>((values[i] - lo) * binScale);
-          ++counts[std::min(Bins - 1, std::max(0, bin))];
+          ++counts[std::min(Bins - 1, static_cast<int>(at))];
         }
       }
     });

@@ -313,6 +313,67 @@ inline double FractionEqualAcrossGrids(vtkOFB* ofb, const float* values, double 
   }
   return pairs ? static_cast<double>(equal) / pairs : 0.0;
 }
+
+/// The contrast of values in [0, 1]: their 1st and 99th percentiles (linear
+/// interpolation between the closest ranks, as numpy's percentile) and standard deviation.
+struct ContrastMeasure
+{
+  double Low = 0.0;
+  double High = 0.0;
+  double Std = 0.0;
+  vtkIdType Count = 0;
+  double Span() const { return this->High - this->Low; }
+};
+
+inline ContrastMeasure MeasureContrast(std::vector<double> values)
+{
+  ContrastMeasure c;
+  c.Count = static_cast<vtkIdType>(values.size());
+  if (values.empty())
+  {
+    return c;
+  }
+  std::sort(values.begin(), values.end());
+  auto percentile = [&values](double p)
+  {
+    const double at = p / 100.0 * (values.size() - 1);
+    const std::size_t k = static_cast<std::size_t>(std::floor(at));
+    const std::size_t k1 = std::min(k + 1, values.size() - 1);
+    return values[k] + (at - k) * (values[k1] - values[k]);
+  };
+  c.Low = percentile(1.0);
+  c.High = percentile(99.0);
+  double mean = 0.0;
+  for (double v : values)
+  {
+    mean += v;
+  }
+  mean /= values.size();
+  double variance = 0.0;
+  for (double v : values)
+  {
+    variance += (v - mean) * (v - mean);
+  }
+  c.Std = std::sqrt(variance / values.size());
+  return c;
+}
+
+/// The contrast of the "LIC" sample array of `ofb` over its samples not masked ("LICMask"
+/// 0, where there is one); no values if there is no "LIC".
+inline ContrastMeasure LICContrast(vtkOFB* ofb)
+{
+  vtkDataArray* lic = ofb->GetSampleData()->GetArray("LIC");
+  vtkDataArray* mask = ofb->GetSampleData()->GetArray("LICMask");
+  std::vector<double> values;
+  for (vtkIdType i = 0; lic && i < lic->GetNumberOfTuples(); ++i)
+  {
+    if (!mask || mask->GetComponent(i, 0) == 0.0)
+    {
+      values.push_back(lic->GetComponent(i, 0));
+    }
+  }
+  return MeasureContrast(values);
+}
 }
 
 #endif

@@ -124,6 +124,7 @@ struct Options
   bool OffScreen = false;
   bool Parts[4] = { true, true, true, true }; // first, anim, first+enh, anim+enh
   bool Checksum = false;
+  bool PerSample = false;
 };
 
 const char* const PartNames[4] = { "first", "anim", "first+enh", "anim+enh" };
@@ -174,12 +175,14 @@ int ParseOptions(int argc, char* argv[], Options& o)
     }
     else if (arg == "--checksum")
       o.Checksum = true;
+    else if (arg == "--per-sample")
+      o.PerSample = true;
     else
     {
       std::cout << "usage: ofbLICBenchmark [--meshes bunny,horse|FILES] [--resolutions LIST] "
                    "[--threads LIST] [--steps N] [--rounds N] [--frames N] [--width W] "
                    "[--height H] [--frames-only] [--offscreen] "
-                   "[--parts first,anim,first+enh,anim+enh] [--checksum]\n";
+                   "[--parts first,anim,first+enh,anim+enh] [--checksum] [--per-sample]\n";
       return arg == "--help" ? 0 : 1;
     }
   }
@@ -284,7 +287,7 @@ std::uint32_t HashLIC(vtkOFBLIC* lic)
   return h;
 }
 
-LICTimes TimeLIC(vtkOFB* ofb, int steps, const bool parts[4])
+LICTimes TimeLIC(vtkOFB* ofb, int steps, const bool parts[4], bool perSample)
 {
   LICTimes t;
   auto update = [](vtkOFBLIC* lic)
@@ -305,6 +308,7 @@ LICTimes TimeLIC(vtkOFB* ofb, int steps, const bool parts[4])
     lic->SetNumberOfSteps(steps);
     lic->SetEnhancedLIC(enhanced != 0);
     lic->AnimateOn();
+    lic->SetCacheStreamlines(!perSample);
     t.Seconds[first] = update(lic);
     t.Hash[first] = HashLIC(lic);
     if (parts[first + 1])
@@ -355,7 +359,7 @@ void RunLIC(const Options& o,
     LICTimes last;
     for (int r = 0; r < o.Rounds; ++r)
     {
-      last = TimeLIC(ofb, o.Steps, o.Parts);
+      last = TimeLIC(ofb, o.Steps, o.Parts, o.PerSample);
       for (int p = 0; p < 4; ++p)
       {
         times[p].push_back(last.Seconds[p]);

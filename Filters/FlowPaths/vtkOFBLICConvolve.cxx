@@ -23,15 +23,6 @@ namespace
 // meets no sample it can give one (see TraceTile).
 constexpr int LongSteps = 10;
 
-// How far across the flow (cells) a seed streamline may pass a sample and still give it
-// its window. A window from a streamline half a cell aside reads other samples at about
-// a third of its steps (the default LIC correlated 0.63 with the per-sample traced LIC,
-// and each window ended in a jump against its neighbour's: dashes, and seams at the
-// tile planes, which no seed streamline crosses to give windows); within 0.05 cells it
-// reads almost the same ones (a correlation of 0.96, and no dashes or seams: see
-// TestOFBLICQuality). A sample that no seed streamline passes that close seeds its own.
-constexpr double Reach = 0.05;
-
 /**
  * Progress and abort of one parallel loop over tiles: the thread that called Update
  * sends the progress events (in steps of about 1 % of the loop) and reads AbortExecute
@@ -239,7 +230,9 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
   const int n = tracer.NumberOfSteps;
   const int m = LongSteps * n;
   const std::size_t start = store.size();
-  const double reach2 = Reach * Reach * tracer.CellSize * tracer.CellSize;
+  // A window of a streamline that passes a sample farther aside than ReuseDistance reads
+  // other samples than the sample's own streamline (dashes, seams at the tile planes).
+  const double reach2 = tracer.ReuseDistance * tracer.ReuseDistance;
   // Per step of the run: whether it passed a sample it can give a window to (forward
   // steps, backward steps, then the run in its order).
   std::vector<unsigned char> nearBuffer(4 * m + 4);
@@ -285,7 +278,7 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
       }
       // A long streamline through i: backward steps reversed, i, forward steps. A
       // direction stops early once its last n samples are of other tiles, covered or
-      // passed farther than Reach across the flow: every sample before them that it can
+      // passed farther than ReuseDistance across the flow: every sample before them that it can
       // still cover has its full window.
       int ahead, back;
       bool aheadEnded, backEnded;
@@ -306,7 +299,7 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
             const glm::dvec3 f = vtkOFBLICTracer::Vec(sk.Field);
             const double ff = glm::dot(f, f);
             const double along = glm::dot(d, f);
-            useful = glm::dot(d, d) * ff - along * along <= reach2 * ff;
+            useful = glm::dot(d, d) * ff - along * along < reach2 * ff;
           }
           (dir > 0 ? nearAhead : nearBack)[step] = useful;
           return useful;
@@ -328,7 +321,7 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
       std::reverse_copy(nearBack, nearBack + back, line);
       line[back] = 1;
       std::copy(nearAhead, nearAhead + ahead, line + back + 1);
-      // Every sample of the tile met within Reach across the flow gets the window around
+      // Every sample of the tile met within ReuseDistance across the flow gets the window around
       // its meeting as its streamline: where the streamline stopped by itself, a window may end
       // there (as a sample's own streamline would); where it ran out of steps or went idle, the
       // window must fit.

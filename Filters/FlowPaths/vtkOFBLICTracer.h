@@ -175,9 +175,10 @@ public:
   const vtkOFB* OFB = nullptr;
   const vtkOFBLICSample* Samples = nullptr;
   int NumberOfSteps = 0;
-  double Step = 0.0;         // world units
-  double SearchRadius = 0.0; // world units
-  double FieldRadius = 0.0;  // world units; > 0: inverse-distance field, else nearest
+  double Step = 0.0;          // world units
+  double SearchRadius = 0.0;  // world units
+  double FieldRadius = 0.0;   // world units; > 0: inverse-distance field, else nearest
+  double ReuseDistance = 0.0; // world units; fast LIC: see vtkOFBLIC::TraceTile
 
   // The OFB's frame and storage, read directly in the inner loop.
   const vtkTypeUInt32* Offsets = nullptr;

@@ -125,6 +125,7 @@ struct Scene
     camera->SetFocalPoint(0.0, 0.0, 0.0);
     camera->SetViewUp(0.0, 1.0, 0.0);
     this->Renderer->ResetCamera(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
+    camera->Zoom(1.5);
   }
 
   vtkSmartPointer<vtkImageData> Grab()
@@ -238,6 +239,10 @@ TEST(OFBCompositeMapper, HiddenBlocksAreNotDrawnAndLeaveTheBounds)
   PaintByBlock(ofb);
   Scene scene(blocks, ofb);
   vtkSmartPointer<vtkImageData> all = scene.Grab();
+  for (const Pixel& p : { At(all, 35, 35), At(all, 85, 35), At(all, 35, 85), At(all, 85, 85) })
+  {
+    EXPECT_GT(p[0] + p[1] + p[2], 200); // every patch drawn
+  }
   vtkNew<vtkCompositeDataDisplayAttributes> attributes;
   attributes->SetBlockVisibility(blocks->GetBlock(0), false); // flat index 1: x < 0, y < 0
   scene.Mapper->SetCompositeDataDisplayAttributes(attributes);

@@ -2,6 +2,7 @@
 
 #include "vtkCellData.h"
 #include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeRange.h"
@@ -10,6 +11,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkOFBCompositeSurface);
 
@@ -42,6 +45,15 @@ vtkCompositeDataDisplayAttributes* vtkOFBCompositeSurface::GetDisplayAttributes(
 vtkPolyData* vtkOFBCompositeSurface::GetSurface(vtkCompositeDataSet* input)
 {
   vtkMTimeType changed = std::max(this->GetMTime(), input ? input->GetMTime() : 0);
+  if (input)
+  {
+    // A block changed in place (its own Modified()) changes the surface too.
+    auto iter = vtk::TakeSmartPointer(input->NewIterator());
+    for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
+    {
+      changed = std::max(changed, iter->GetCurrentDataObject()->GetMTime());
+    }
+  }
   if (this->DisplayAttributes)
   {
     changed = std::max(changed, this->DisplayAttributes->GetMTime());
@@ -73,8 +85,8 @@ void vtkOFBCompositeSurface::ComputeVisibility(vtkDataObject* node,
   unsigned int& index)
 {
   const unsigned int flat = index++;
-  const bool visible = node && this->DisplayAttributes &&
-      this->DisplayAttributes->HasBlockVisibility(node)
+  const bool visible =
+    node && this->DisplayAttributes && this->DisplayAttributes->HasBlockVisibility(node)
     ? this->DisplayAttributes->GetBlockVisibility(node)
     : parentVisible;
   if (this->Visible.size() <= flat)
@@ -98,8 +110,9 @@ void vtkOFBCompositeSurface::ExtractVisible(vtkPolyData* merged)
   auto* blocks = vtkIntArray::SafeDownCast(
     merged->GetCellData()->GetArray(vtkOFBMergeBlocks::BlockIndexArrayName()));
   const vtkIdType nCells = merged->GetNumberOfCells();
-  auto isVisible = [this](int block)
-  { return block < 0 || static_cast<size_t>(block) >= this->Visible.size() || this->Visible[block]; };
+  auto isVisible = [this](int block) {
+    return block < 0 || static_cast<size_t>(block) >= this->Visible.size() || this->Visible[block];
+  };
   vtkIdType kept = 0;
   for (vtkIdType c = 0; blocks && c < nCells; ++c)
   {

@@ -13,7 +13,7 @@
 #ifndef vtkOFBCompositeSurface_h
 #define vtkOFBCompositeSurface_h
 
-#include "vtkNew.h"          // for Merge
+#include "vtkNew.h" // for Merge
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for members
 #include "vtkWeakPointer.h"  // for LastInput

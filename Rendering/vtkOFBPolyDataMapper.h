@@ -99,6 +99,11 @@
  * Without an OFB, with an empty one, or on a context without shader storage buffers, the
  * mapper renders like vtkOpenGLPolyDataMapper and warns once.
  *
+ * Port 0 also takes a composite dataset (a vtkMultiBlockDataSet of wall patches): its
+ * blocks are drawn as one surface in one draw, coloured from one OFB built from the same
+ * input, with per-block visibility (SetCompositeDataDisplayAttributes); see
+ * GetRenderedSurface().
+ *
  * A render is a short sequence of named steps (RenderPiece): UpdateOFBInput, CheckOFB,
  * PrepareContext, SelectArrays, CheckSurfaceInFrame, then the GPU-side steps of the private
  * helper vtkOFBShaderStorage (levels, uploads, lookup table), which owns every GPU resource

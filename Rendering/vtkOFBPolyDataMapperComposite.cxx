@@ -8,8 +8,8 @@
 #include "vtkExecutive.h"
 #include "vtkMath.h"
 #include "vtkOFBCompositeSurface.h"
-#include "vtkRenderWindow.h"
 #include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
 //------------------------------------------------------------------------------

@@ -136,9 +136,9 @@ vtkSmartPointer<vtkDataArray> BlockArray(vtkOFBMergeBlocks* self,
       vtkOFBArrayLength(array, tuples, what == std::string("point") ? "points" : "cells");
     if (array->GetNumberOfComponents() != spec.Components)
     {
-      text = "Block " + std::to_string(block.FlatIndex) + ": the " + what + " array '" +
-        spec.Name + "' has " + std::to_string(array->GetNumberOfComponents()) +
-        " components, not " + std::to_string(spec.Components) + " as in the first block";
+      text = "Block " + std::to_string(block.FlatIndex) + ": the " + what + " array '" + spec.Name +
+        "' has " + std::to_string(array->GetNumberOfComponents()) + " components, not " +
+        std::to_string(spec.Components) + " as in the first block";
     }
     vtkWarningWithObjectMacro(self, << text << ": filled instead.");
     return nullptr;
@@ -516,7 +516,8 @@ int vtkOFBMergeBlocks::RequestData(vtkInformation*,
   output->SetStrips(internals.AppendCells(3));
   this->UpdateProgress(0.7);
   internals.MergePointData(output->GetPointData(), this->IntegerFillValue);
-  internals.MergeCellData(output->GetCellData(), this->IntegerFillValue, output->GetNumberOfCells());
+  internals.MergeCellData(
+    output->GetCellData(), this->IntegerFillValue, output->GetNumberOfCells());
   internals.SetActiveAttributes(output->GetPointData(), false);
   internals.SetActiveAttributes(output->GetCellData(), true);
   this->UpdateProgress(1.0);

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """A vtkMultiBlockDataSet from Python: sampled into one OFB with the samples' "BlockIndex"
 (flat indices), merged by vtkOFBMergeBlocks with NaN for an array a block lacks, and drawn
-by vtkOFBPolyDataMapper with a block hidden through vtkCompositeDataDisplayAttributes.
+by vtkOFBPolyDataMapper with a block hidden through vtkCompositeDataDisplayAttributes,
+picked with vtkOFBSamplePicker and coloured by block.
 
-Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages.
+Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages.
 """
 
 import sys
@@ -131,6 +132,30 @@ class CompositeInput(unittest.TestCase):
         bounds = actor.GetBounds()
         self.assertAlmostEqual(bounds[0], 0.0)
         self.assertAlmostEqual(bounds[1], 3.0)
+
+        # The sample under a pixel of the right tile is of block 3.
+        picker = vtkofb.vtkOFBSamplePicker()
+        picker.SetOFB(ofb)
+        sample = picker.Pick(130, 25, renderer)
+        self.assertGreaterEqual(sample, 0)
+        self.assertEqual(ofb.GetSampleData().GetArray("BlockIndex").GetTuple1(sample), 3)
+
+        # Coloured by block: the block index through the colouring's lookup table.
+        attributes.RemoveBlockVisibilities()
+        coloring = mapper.GetColoring()
+        coloring.SetColorSourceToScalars()
+        coloring.SetScalarArrayName("BlockIndex")
+        coloring.SetScalarRange(1.0, 3.0)
+        window.Render()
+        capture.Modified()
+        capture.Update()
+        image = numpy_support.vtk_to_numpy(capture.GetOutput().GetPointData().GetScalars())
+        row = image.reshape(50, 150, -1)[25]
+        left, middle, right = (tuple(int(c) for c in row[x][:3]) for x in (20, 75, 130))
+        self.assertNotEqual(left, middle)
+        self.assertNotEqual(middle, right)
+        self.assertNotEqual(left, right)
+        self.assertNotEqual(middle, (0, 0, 0))  # visible again
 
 
 if __name__ == "__main__":

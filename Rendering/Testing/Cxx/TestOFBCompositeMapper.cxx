@@ -92,9 +92,11 @@ void PaintByBlock(vtkOFB* ofb)
   auto* block = vtkIntArray::SafeDownCast(ofb->GetSampleData()->GetArray("BlockIndex"));
   auto* colors = vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray("Colors"));
   ASSERT_TRUE(block && colors);
-  const unsigned char palette[5][4] = {
-    { 0, 0, 0, 255 }, { 255, 0, 0, 255 }, { 0, 255, 0, 255 }, { 0, 0, 255, 255 }, { 255, 255, 0, 255 }
-  };
+  const unsigned char palette[5][4] = { { 0, 0, 0, 255 },
+    { 255, 0, 0, 255 },
+    { 0, 255, 0, 255 },
+    { 0, 0, 255, 255 },
+    { 255, 255, 0, 255 } };
   for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
   {
     colors->SetTypedTuple(i, palette[block->GetValue(i)]);

@@ -119,7 +119,8 @@ TEST(SamplerComposite, MultiBlockIsOneOFBWithTheFlatBlockIndex)
   merge->SetInputData(blocks);
   merge->Update();
   EXPECT_EQ(merge->GetOutput()->GetNumberOfPoints(), 25 + 20); // the shared edge merged
-  EXPECT_EQ(ofb->GetNumberOfSamples(), Sample(merge->GetOutput(), 64, nullptr)->GetNumberOfSamples());
+  EXPECT_EQ(
+    ofb->GetNumberOfSamples(), Sample(merge->GetOutput(), 64, nullptr)->GetNumberOfSamples());
 }
 
 TEST(SamplerComposite, FlatIndicesFollowTheTreeWithEmptyNodes)
@@ -188,7 +189,7 @@ TEST(SamplerComposite, ArraysMissingInABlockAreFilled)
   AddCellValue(left, "Pressure", VTK_DOUBLE, 5.0);
   AddCellValue(left, "Zone", VTK_INT, 7.0);
   AddCellValue(right, "Zone", VTK_FLOAT, 9.0); // converted to the first block's int
-  vtkNew<vtkFloatArray> temperature; // a point array of the right tile only
+  vtkNew<vtkFloatArray> temperature;           // a point array of the right tile only
   temperature->SetName("Temperature");
   temperature->SetNumberOfTuples(right->GetNumberOfPoints());
   temperature->FillComponent(0, 300.0);
@@ -278,8 +279,8 @@ TEST(SamplerComposite, BlockThatIsNotADataSetIsLeftOutWithAWarning)
   vtkNew<MessageObserver> messages;
   vtkSmartPointer<vtkOFB> ofb = Sample(blocks, 64, messages);
   EXPECT_EQ(messages->Errors, "");
-  EXPECT_NE(messages->Warnings.find("Block 3 is a vtkTable, not a dataset: left out."),
-    std::string::npos)
+  EXPECT_NE(
+    messages->Warnings.find("Block 3 is a vtkTable, not a dataset: left out."), std::string::npos)
     << messages->Warnings;
   ExpectTileIndices(ofb, 1, 2);
 }

@@ -129,8 +129,8 @@ TEST(CellFields, MapToColorsColoursByTheMeshsCellArray)
   for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
   {
     const bool isNaN = std::isnan(pressure->GetTuple1(i));
-    const bool magenta =
-      rgba->GetValue(4 * i) == 255 && rgba->GetValue(4 * i + 1) == 0 && rgba->GetValue(4 * i + 2) == 255;
+    const bool magenta = rgba->GetValue(4 * i) == 255 && rgba->GetValue(4 * i + 1) == 0 &&
+      rgba->GetValue(4 * i + 2) == 255;
     nan += isNaN;
     wrong += isNaN != magenta;
   }

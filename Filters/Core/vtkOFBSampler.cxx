@@ -441,8 +441,8 @@ int FindArray(const vtkOFBSurface& surface, const char* name)
  * arrays or the vector field. One named as a point array already in
  * surface.Arrays replaces it when `cellsFirst`, else is left out. The cell data's
  * active vectors become the samples' when they have no other vector field, and its
- * active scalars the samples' when the input has no active point scalars
- * (`pointScalars`).
+ * active scalars (unless RGB(A) bytes, colours) the samples' when the input has no
+ * active point scalars (`pointScalars`).
  */
 void CollectCellArrays(vtkCellData* cd,
   vtkIdType nCells,
@@ -479,7 +479,7 @@ void CollectCellArrays(vtkCellData* cd,
     {
       surface.CellVectorsIndex = k;
     }
-    if (array == cd->GetScalars() && !pointScalars)
+    if (array == cd->GetScalars() && !pointScalars && !IsColorArray(array))
     {
       surface.CellScalarsIndex = k;
     }

@@ -43,7 +43,8 @@
  * has active 3-component vectors, these become the samples' active vectors
  * (projected into the tangent plane with ProjectVectors), so that vtkOFBLIC
  * finds them. Likewise, when the input has no active point scalars and its cell
- * data has active scalars, these become the samples' active scalars (the paint,
+ * data has active scalars other than colours (RGB or RGBA bytes), these become the
+ * samples' active scalars (the paint,
  * "Colors", stays a sample array of that name); otherwise the samples' active
  * scalars are the paint. A NaN in a cell array is a NaN in the samples of that cell
  * (the colouring shows it in the lookup table's NaN colour).

@@ -346,6 +346,19 @@ TEST(SamplerComposite, ActiveCellScalarsBecomeTheSamplesActiveScalars)
   EXPECT_STREQ(ofb->GetSampleData()->GetScalars()->GetName(), "Colors");
   EXPECT_NE(ofb->GetSampleData()->GetArray("Pressure"), nullptr);
 
+  // Cell colours (RGB bytes) as the active cell scalars leave the paint active.
+  vtkSmartPointer<vtkPolyData> coloured = Tile(0.0, 0.0);
+  vtkNew<vtkUnsignedCharArray> cellColors;
+  cellColors->SetName("FaceColors");
+  cellColors->SetNumberOfComponents(3);
+  cellColors->SetNumberOfTuples(coloured->GetNumberOfCells());
+  cellColors->FillComponent(0, 200.0);
+  coloured->GetCellData()->SetScalars(cellColors);
+  ofb = Sample(coloured, 32, nullptr);
+  ASSERT_NE(ofb->GetSampleData()->GetScalars(), nullptr);
+  EXPECT_STREQ(ofb->GetSampleData()->GetScalars()->GetName(), "Colors");
+  EXPECT_NE(ofb->GetSampleData()->GetArray("FaceColors"), nullptr);
+
   // Through a composite input as well.
   vtkSmartPointer<vtkMultiBlockDataSet> blocks = TwoTiles();
   AddCellValue(vtkPolyData::SafeDownCast(blocks->GetBlock(0)), "Pressure", VTK_DOUBLE, 1.0, true);

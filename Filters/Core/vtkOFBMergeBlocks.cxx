@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -202,6 +203,8 @@ struct vtkOFBMergeBlocks::vtkInternals
   /// Per block, the output points it brings (ids in the block, then in the output).
   std::vector<vtkSmartPointer<vtkIdList>> NewPointsIn, NewPointsOut;
   vtkIdType NumberOfPoints = 0;
+  /// Point arrays that some output points lack (filled there).
+  std::set<std::string> IncompletePointArrays;
 
   /// The dataset blocks with cells, with warnings for those that are not datasets.
   bool CollectBlocks(vtkDataObject* input)
@@ -369,13 +372,18 @@ struct vtkOFBMergeBlocks::vtkInternals
     return out;
   }
 
-  /// The point arrays of the output: each block's new points' values, else the fill.
+  /**
+   * The point arrays of the output: each point's values from the first block that has
+   * the array and the point, else the fill. Arrays some point lacks are noted in
+   * IncompletePointArrays.
+   */
   void MergePointData(vtkPointData* out, double integerFill)
   {
     for (const ArraySpec& spec : UnionOfArrays(this->Blocks, false))
     {
       vtkSmartPointer<vtkDataArray> merged =
         NewFilledArray(spec, this->NumberOfPoints, integerFill);
+      std::vector<char> set(this->NumberOfPoints, 0);
       for (size_t b = 0; b < this->Blocks.size(); ++b)
       {
         vtkPolyData* surface = this->Blocks[b].Surface;
@@ -385,10 +393,30 @@ struct vtkOFBMergeBlocks::vtkInternals
           surface->GetNumberOfPoints(),
           this->Blocks[b],
           "point");
-        if (array)
+        if (!array)
         {
-          merged->InsertTuples(this->NewPointsOut[b], this->NewPointsIn[b], array);
+          continue;
         }
+        // The block's own points at once, then its points shared with earlier blocks that
+        // have no value yet.
+        merged->InsertTuples(this->NewPointsOut[b], this->NewPointsIn[b], array);
+        const std::vector<vtkIdType>& map = this->PointMap[b];
+        for (vtkIdType k = 0; k < this->NewPointsOut[b]->GetNumberOfIds(); ++k)
+        {
+          set[this->NewPointsOut[b]->GetId(k)] = 1;
+        }
+        for (vtkIdType i = 0; i < static_cast<vtkIdType>(map.size()); ++i)
+        {
+          if (!set[map[i]])
+          {
+            merged->SetTuple(map[i], i, array);
+            set[map[i]] = 1;
+          }
+        }
+      }
+      if (std::find(set.begin(), set.end(), 0) != set.end())
+      {
+        this->IncompletePointArrays.insert(spec.Name);
       }
       out->AddArray(merged);
     }
@@ -465,7 +493,11 @@ struct vtkOFBMergeBlocks::vtkInternals
           ? static_cast<vtkDataSetAttributes*>(block.Surface->GetCellData())
           : static_cast<vtkDataSetAttributes*>(block.Surface->GetPointData());
         vtkDataArray* active = field->GetAttribute(attribute);
-        if (active && active->GetName() && out->GetArray(active->GetName()))
+        // Normals that some points lack are not the normals (vtkOFBSampler computes them).
+        const bool incompleteNormals = !cells && active && active->GetName() &&
+          attribute == vtkDataSetAttributes::NORMALS &&
+          this->IncompletePointArrays.count(active->GetName()) > 0;
+        if (active && active->GetName() && out->GetArray(active->GetName()) && !incompleteNormals)
         {
           out->SetActiveAttribute(active->GetName(), attribute);
           break;

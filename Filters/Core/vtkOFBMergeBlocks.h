@@ -19,9 +19,9 @@
  * - Points shared by blocks: with MergePoints (default on) a point of a block at exactly
  *   the coordinates of a point of an earlier block becomes that point, so that the
  *   triangles of neighbouring patches are neighbours in the output (particles walk across,
- *   normals are computed across) and the patches' border is no seam. Such a point keeps the
- *   point data of the first block that has it. Points of one block are never merged with
- *   each other.
+ *   normals are computed across) and the patches' border is no seam. Such a point takes
+ *   each point array from the first of its blocks that has the array. Points of one block
+ *   are never merged with each other.
  * - Arrays: the output has every numeric point and cell array of any block (by name; the
  *   first block that has a name sets its type and number of components). A block that lacks
  *   an array, has it with another number of components, or has it with another number of
@@ -29,7 +29,8 @@
  *   arrays, IntegerFillValue (default 0) for integer arrays. Arrays of another type than
  *   the first block's are converted. String, bit and unnamed arrays are left out. The
  *   active attributes (scalars, vectors, normals, texture coordinates) are those of the
- *   first block that has them.
+ *   first block that has them; point normals only when every point has them (else they
+ *   stay an array, and vtkOFBSampler computes normals for all).
  * - Blocks left out: empty nodes and datasets without cells (no cell of theirs in the
  *   output), and blocks that are not datasets (a vtkTable, ...), with a warning naming their
  *   flat index.

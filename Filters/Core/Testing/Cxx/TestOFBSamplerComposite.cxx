@@ -432,3 +432,33 @@ TEST(SamplerComposite, NormalsOfSomeBlocksOnlyAreNotTheNormals)
   merge->Update();
   EXPECT_NE(merge->GetOutput()->GetPointData()->GetNormals(), nullptr);
 }
+
+TEST(SamplerComposite, PolyDataArrayOfTheWrongLengthIsLeftOutWithAWarning)
+{
+  vtkSmartPointer<vtkPolyData> tile = Tile(0.0, 0.0);
+  AddCellValue(tile, "Good", VTK_DOUBLE, 4.0);
+  vtkNew<vtkDoubleArray> shortCells; // 3 tuples for 16 cells
+  shortCells->SetName("Short");
+  shortCells->SetNumberOfTuples(3);
+  shortCells->FillComponent(0, 1.0);
+  tile->GetCellData()->AddArray(shortCells);
+  vtkNew<vtkDoubleArray> longPoints; // 99 tuples for 25 points
+  longPoints->SetName("Long");
+  longPoints->SetNumberOfTuples(99);
+  longPoints->FillComponent(0, 1.0);
+  tile->GetPointData()->AddArray(longPoints);
+  vtkNew<MessageObserver> messages;
+  vtkSmartPointer<vtkOFB> ofb = Sample(tile, 32, messages);
+  EXPECT_EQ(messages->Errors, "");
+  EXPECT_NE(messages->Warnings.find("The cell array 'Short' has 3 tuples for 16 cells: left out."),
+    std::string::npos)
+    << messages->Warnings;
+  EXPECT_NE(
+    messages->Warnings.find("The point array 'Long' has 99 tuples for 25 points: left out."),
+    std::string::npos)
+    << messages->Warnings;
+  EXPECT_GT(ofb->GetNumberOfSamples(), 0);
+  EXPECT_EQ(ofb->GetSampleData()->GetArray("Short"), nullptr);
+  EXPECT_EQ(ofb->GetSampleData()->GetArray("Long"), nullptr);
+  EXPECT_NE(ofb->GetSampleData()->GetArray("Good"), nullptr);
+}

@@ -112,7 +112,9 @@ int vtkOFBPolyDataMapper::FillInputPortInformation(int port, vtkInformation* inf
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
     return 1;
   }
-  return this->Superclass::FillInputPortInformation(port, info);
+  this->Superclass::FillInputPortInformation(port, info);
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -284,7 +286,7 @@ void vtkOFBPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   {
     this->Storage->Bind();
   }
-  this->Superclass::RenderPiece(ren, act);
+  this->RenderSurface(ren, act);
   if (this->OFBActive)
   {
     this->Storage->Unbind();
@@ -446,7 +448,7 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkSelection& selection)
 void vtkOFBPolyDataMapper::CheckSurfaceInFrame(vtkOFB* ofb)
 {
   // The surface should lie in the OFB's frame; parts outside keep the property colour.
-  vtkPolyData* input = this->GetInput();
+  vtkPolyData* input = this->GetRenderedSurface();
   if (!input || input->GetNumberOfPoints() == 0)
   {
     return;
@@ -471,7 +473,7 @@ void vtkOFBPolyDataMapper::CheckSurfaceInFrame(vtkOFB* ofb)
 bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkSelection& selection)
 {
   if (!this->Storage->UpdateLevels(ofb,
-        this->GetInput(),
+        this->GetRenderedSurface(),
         vtkOFBFindLookupMode(this->LookupMode)->Pyramid,
         this->MaximumNumberOfMipmapLevels,
         this->MinimumMipmapResolution))
@@ -757,6 +759,8 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OFB: " << this->GetOFB() << "\n";
+  os << indent << "CompositeDataDisplayAttributes: " << this->GetCompositeDataDisplayAttributes()
+     << "\n";
   os << indent << "LookupMode: " << GetLookupModeAsString(this->LookupMode) << "\n";
   os << indent << "InterpolationRadius: " << this->InterpolationRadius << " cells\n";
   os << indent << "MipmapBias: " << this->MipmapBias << "\n";

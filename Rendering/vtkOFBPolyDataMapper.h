@@ -99,6 +99,11 @@
  * Without an OFB, with an empty one, or on a context without shader storage buffers, the
  * mapper renders like vtkOpenGLPolyDataMapper and warns once.
  *
+ * Port 0 also takes a composite dataset (a vtkMultiBlockDataSet of wall patches): its
+ * blocks are drawn as one surface in one draw, coloured from one OFB built from the same
+ * input, with per-block visibility (SetCompositeDataDisplayAttributes); see
+ * GetRenderedSurface().
+ *
  * A render is a short sequence of named steps (RenderPiece): UpdateOFBInput, CheckOFB,
  * PrepareContext, SelectArrays, CheckSurfaceInFrame, then the GPU-side steps of the private
  * helper vtkOFBShaderStorage (levels, uploads, lookup table), which owns every GPU resource
@@ -114,16 +119,20 @@
 #include "vtkOFBRenderingModule.h" // for export macro
 #include "vtkOpenGLPolyDataMapper.h"
 
-#include "vtkWeakPointer.h" // for WarnedOFB
+#include "vtkSmartPointer.h" // for CompositeSurface
+#include "vtkWeakPointer.h"  // for WarnedOFB
 
 #include <memory> // for std::unique_ptr
 #include <set>    // for Warnings
 #include <string> // for Warnings
 
 class vtkAlgorithmOutput;
+class vtkCompositeDataDisplayAttributes;
 class vtkDataArray;
 class vtkOFB;
 class vtkOFBColoring;
+class vtkOFBCompositeSurface;
+class vtkPolyData;
 
 class VTKOFBRENDERING_EXPORT vtkOFBPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
@@ -226,6 +235,26 @@ public:
   vtkBooleanMacro(UsePaintedNormals, bool);
   ///@}
 
+  ///@{
+  /**
+   * Per-block visibility of a composite input, as vtkCompositePolyDataMapper2 takes it
+   * (SetBlockVisibility; a block without its own visibility has its parent's). Default
+   * none: every block is visible. Hidden blocks are not drawn and leave the bounds; the OFB
+   * (built from all blocks) is unchanged.
+   */
+  void SetCompositeDataDisplayAttributes(vtkCompositeDataDisplayAttributes* attributes);
+  vtkCompositeDataDisplayAttributes* GetCompositeDataDisplayAttributes();
+  ///@}
+
+  /**
+   * The surface drawn: the input vtkPolyData, or for a composite input (a
+   * vtkMultiBlockDataSet, vtkPartitionedDataSetCollection, ... of datasets) its visible
+   * blocks merged into one vtkPolyData by vtkOFBMergeBlocks, with the cell array
+   * "BlockIndex", the surface whose OFB vtkOFBSampler builds from the same input. A
+   * composite input is drawn in one draw, coloured from one OFB.
+   */
+  vtkPolyData* GetRenderedSurface();
+
   /**
    * Also the colouring's modification time (which includes its lookup table's).
    */
@@ -283,6 +312,16 @@ protected:
   ~vtkOFBPolyDataMapper() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  ///@{
+  /**
+   * Composite input (vtkOFBPolyDataMapperComposite.cxx): RenderSurface draws
+   * GetRenderedSurface() as vtkOpenGLPolyDataMapper::RenderPiece draws its input;
+   * ComputeBounds gives the visible blocks' bounds.
+   */
+  void RenderSurface(vtkRenderer* ren, vtkActor* act);
+  void ComputeBounds() override;
+  ///@}
 
   ///@{
   /**
@@ -377,6 +416,7 @@ protected:
   vtkIdType AlphaHint;
 
   std::set<std::string> Warnings;
+  vtkSmartPointer<vtkOFBCompositeSurface> CompositeSurface;
   vtkWeakPointer<vtkOFB> WarnedOFB;
   vtkMTimeType WarnedMTime;
 

@@ -113,7 +113,7 @@ struct Downstream
  * within 60 degrees of the equator and 3 cells of a cut: the mean over the pairs that
  * cross a cut, and over those inside one patch (the same band, so the same geometry).
  */
-Downstream DownstreamDifference(vtkOFB* ofb)
+Downstream CutDownstreamDifference(vtkOFB* ofb)
 {
   Downstream m;
   auto* lic = vtkFloatArray::SafeDownCast(ofb->GetSampleData()->GetArray("LIC"));
@@ -262,8 +262,8 @@ TEST(CompositeSphere, LICCrossesTheCutsWithNoSeam)
   // Pairs across a cut differ downstream as the pairs inside a patch in the same band
   // (a seam would show as a larger difference across),
   // and exactly as the same pairs of the uncut sphere.
-  const Downstream m = DownstreamDifference(cut);
-  const Downstream uncut = DownstreamDifference(whole);
+  const Downstream m = CutDownstreamDifference(cut);
+  const Downstream uncut = CutDownstreamDifference(whole);
   std::cout << "downstream difference: across a cut " << m.Crossing << " (" << m.CrossingPairs
             << " pairs), inside a patch " << m.Inside << " (" << m.InsidePairs
             << "), the same pairs on the uncut sphere " << uncut.Crossing << "\n";

@@ -27,6 +27,7 @@ constexpr vtkOFBLookupModeInfo vtkOFBLookupModeInfos[] = {
     "NearestMipmapped",
     "OFB_LOOKUP_NEAREST_MIPMAPPED",
     true },
+  { vtkOFBPolyDataMapper::LOOKUP_SMOOTH, "Smooth", "OFB_LOOKUP_SMOOTH", true },
 };
 static_assert(sizeof(vtkOFBLookupModeInfos) / sizeof(vtkOFBLookupModeInfos[0]) ==
     vtkOFBPolyDataMapper::NUMBER_OF_LOOKUP_MODES,

@@ -12,6 +12,7 @@
 #include "vtkOFBLookupFS.h"
 #include "vtkOFBLookupModes.h"
 #include "vtkOFBMapToColors.h"
+#include "vtkOFBPyramid.h"
 #include "vtkOFBShaderStorage.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLActor.h"
@@ -20,6 +21,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
@@ -65,6 +67,9 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , UseIntensity(false)
   , UseNormals(false)
   , DeepCells(false)
+  , LevelIntensity(false)
+  , IntensityMean(0.5)
+  , MeanTime(0)
   , Storage(new vtkStorage)
   , AlphaTranslucent(false)
   , AlphaHint(0)
@@ -158,6 +163,21 @@ void vtkOFBPolyDataMapper::SetLookupMode(int mode)
     this->LookupMode = mode;
     this->Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::SetPyramid(vtkOFBPyramid* pyramid)
+{
+  if (this->Storage->SetPyramid(pyramid))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPyramid* vtkOFBPolyDataMapper::GetPyramid()
+{
+  return this->Storage->GetPyramid();
 }
 
 //------------------------------------------------------------------------------
@@ -306,6 +326,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
   {
     return false;
   }
+  this->UpdateLevelIntensity(ofb);
   if (this->SourceScalars)
   {
     this->UploadLookupTable();
@@ -315,6 +336,39 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
     this->UpdateLightnessRange(ofb);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::UpdateLevelIntensity(vtkOFB* ofb)
+{
+  this->LevelIntensity = false;
+  const char* name = this->Coloring->GetIntensityArrayName();
+  if (!this->UseIntensity || !name || !vtkOFBFindLookupMode(this->LookupMode)->Pyramid ||
+    this->Storage->GetNumberOfLevels() < 2 || !this->Storage->GetPyramid()->IsComputedArray(name))
+  {
+    return;
+  }
+  vtkDataArray* array = ofb->GetSampleData()->GetArray(name);
+  if (!array)
+  {
+    return;
+  }
+  this->LevelIntensity = true;
+  if (array == this->MeanArray && array->GetMTime() <= this->MeanTime)
+  {
+    return;
+  }
+  // As the shader reads it: clamped to [0, 1], NaN as 0.
+  const vtkIdType n = std::min(array->GetNumberOfTuples(), ofb->GetNumberOfSamples());
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = array->GetComponent(i, 0);
+    sum += v > 0.0 ? std::min(v, 1.0) : 0.0;
+  }
+  this->IntensityMean = n > 0 ? sum / n : 0.5;
+  this->MeanArray = array;
+  this->MeanTime = array->GetMTime();
 }
 
 //------------------------------------------------------------------------------
@@ -507,7 +561,7 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
     this->DeepCells = this->Storage->GetMaximumCellSamples() > DeepCellSamples;
     key << this->LookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity << "|"
         << this->UseNormals << "|" << this->DeepCells << "|" << this->Coloring->GetLICColorMode()
-        << "|" << this->Coloring->GetEnhanceColorContrast();
+        << "|" << this->Coloring->GetEnhanceColorContrast() << "|" << this->LevelIntensity;
   }
   if (key.str() != this->ShaderKey)
   {
@@ -597,6 +651,7 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(std::map<vtkShader::Type, vtkShade
       { this->UseIntensity, "OFB_USE_INTENSITY" },
       { this->UseNormals, "OFB_USE_NORMALS" },
       { this->DeepCells, "OFB_DEEP_CELLS" },
+      { this->LevelIntensity, "OFB_LEVEL_INTENSITY" },
       { this->Coloring->GetEnhanceColorContrast(), "OFB_ENHANCE_COLOR" } };
     for (const auto& flag : flags)
     {
@@ -708,6 +763,10 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO,
     program->SetUniformf("ofbIntensityWeight", static_cast<float>(coloring->GetIntensityWeight()));
     program->SetUniformf("ofbLICIntensity", static_cast<float>(coloring->GetLICIntensity()));
     program->SetUniformf("ofbMapModeBias", static_cast<float>(coloring->GetMapModeBias()));
+    if (this->LevelIntensity)
+    {
+      program->SetUniformf("ofbIntensityMean", static_cast<float>(this->IntensityMean));
+    }
   }
   if (coloring->GetEnhanceColorContrast())
   {
@@ -762,6 +821,8 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MipmapBias: " << this->MipmapBias << "\n";
   os << indent << "MaximumNumberOfMipmapLevels: " << this->MaximumNumberOfMipmapLevels << "\n";
   os << indent << "MinimumMipmapResolution: " << this->MinimumMipmapResolution << "\n";
+  os << indent << "Pyramid: " << this->Storage->GetPyramid()->GetClassName() << " ("
+     << this->Storage->GetPyramid() << ")\n";
   os << indent << "Coloring:\n";
   this->Coloring->PrintSelf(os, indent.GetNextIndent());
   os << indent << "UsePaintedNormals: " << (this->UsePaintedNormals ? "On" : "Off") << "\n";

@@ -36,6 +36,22 @@
  *   vtkOFB::MarkSamplesModified (painting), only the coarse samples that read them, and
  *   only those are uploaded (vtkOFBPyramid::UpdateModifiedArrays).
  *
+ * - Smooth: interpolation along the surface where a level-0 cell covers a pixel or more,
+ *   and the two pyramid levels around the footprint blended where cells are smaller than
+ *   pixels (the blend of Mipmapped, so no line where the level changes). In each level the
+ *   samples within min(InterpolationRadius, 1.5) cells in the 3x3 cells around the point
+ *   of all three grids are weighted by the smooth compact kernel (1 - t^2/r^2)^2 of their
+ *   distance t and by their agreement with the fragment's tangent plane (full within half a
+ *   cell of it, none from one cell: the other side of a thin sheet does not bleed through).
+ *   The weights are continuous, so the colour is continuous across cell borders and grid
+ *   changes: close-ups show no cell blocks. The lookup to use for a LIC (with a
+ *   vtkOFBLICPyramid from OFB::FlowPaths as the pyramid, SetPyramid, streaks stay at every
+ *   zoom instead of fading to grey). Where the pyramid computes the intensity on every
+ *   level (vtkOFBPyramid::IsComputedArray), the levels are independent textures, whose
+ *   plain mix would lose contrast half-way between levels (a band of weaker streaks); the
+ *   blended intensity is then m + (mix - m) / sqrt((1 - t)^2 + t^2), with m the mean of
+ *   level 0's intensity and t the blend weight, which keeps the variance of the mix.
+ *
  * The colouring is a vtkOFBColoring (GetColoring(), one made by default), the object
  * vtkOFBMapToColors reads too: share it, `mapToColors->SetColoring(mapper->GetColoring())`,
  * and the export holds what is shown. Colour sources: paint (the OFB's "Colors" array) or
@@ -124,6 +140,7 @@ class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkOFB;
 class vtkOFBColoring;
+class vtkOFBPyramid;
 
 class VTKOFBRENDERING_EXPORT vtkOFBPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
@@ -139,6 +156,7 @@ public:
     LOOKUP_INVERSE_DISTANCE,
     LOOKUP_MIPMAPPED,
     LOOKUP_NEAREST_MIPMAPPED,
+    LOOKUP_SMOOTH,
     NUMBER_OF_LOOKUP_MODES
   };
 
@@ -157,7 +175,8 @@ public:
   ///@{
   /**
    * How a fragment's colour is read from the OFB, a LookupModes value: LOOKUP_NEAREST
-   * (default), LOOKUP_INVERSE_DISTANCE, LOOKUP_MIPMAPPED or LOOKUP_NEAREST_MIPMAPPED.
+   * (default), LOOKUP_INVERSE_DISTANCE, LOOKUP_MIPMAPPED, LOOKUP_NEAREST_MIPMAPPED or
+   * LOOKUP_SMOOTH.
    * Another value is an error and leaves the mode unchanged. The mode reaches the
    * fragment shader as OFB_LOOKUP_MODE, one of the defines OFB_LOOKUP_NEAREST, ...
    * (the enumerators' names with OFB_ for LOOKUP_), which the shader tells apart.
@@ -168,6 +187,7 @@ public:
   void SetLookupModeToInverseDistance() { this->SetLookupMode(LOOKUP_INVERSE_DISTANCE); }
   void SetLookupModeToMipmapped() { this->SetLookupMode(LOOKUP_MIPMAPPED); }
   void SetLookupModeToNearestMipmapped() { this->SetLookupMode(LOOKUP_NEAREST_MIPMAPPED); }
+  void SetLookupModeToSmooth() { this->SetLookupMode(LOOKUP_SMOOTH); }
   static const char* GetLookupModeAsString(int mode);
   ///@}
 
@@ -200,6 +220,20 @@ public:
   vtkGetMacro(MaximumNumberOfMipmapLevels, int);
   vtkSetClampMacro(MinimumMipmapResolution, int, 3, 65536);
   vtkGetMacro(MinimumMipmapResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * The pyramid of coarser levels that the mipmapped lookups read (Mipmapped,
+   * NearestMipmapped, Smooth). Default: a vtkOFBPyramid of the mapper's own, whose levels
+   * filter level 0's arrays down. A subclass may compute arrays per level instead: a
+   * vtkOFBLICPyramid (OFB::FlowPaths) computes the LIC on every level, with the noise grain
+   * and the steps in that level's cells, so that a LIC seen from far shows streaks. The
+   * mapper sets its input OFB, surface, MaximumNumberOfLevels and MinimumResolution at
+   * every render. Null restores a pyramid of the mapper's own.
+   */
+  void SetPyramid(vtkOFBPyramid* pyramid);
+  vtkOFBPyramid* GetPyramid();
   ///@}
 
   ///@{
@@ -325,6 +359,9 @@ protected:
   void UpdateLightnessRange(vtkOFB* ofb);
   void UpdateShaderKey();
   void UpdateOFBProducer();
+  /// Whether the pyramid computes the intensity on every level (LevelIntensity), and the
+  /// mean of level 0's intensity (IntensityMean), computed again when the array changes.
+  void UpdateLevelIntensity(vtkOFB* ofb);
   ///@}
 
   /**
@@ -362,6 +399,10 @@ protected:
   bool UseIntensity;
   bool UseNormals;
   bool DeepCells;
+  bool LevelIntensity;
+  double IntensityMean;
+  vtkWeakPointer<vtkDataArray> MeanArray; // the array IntensityMean is of, and when
+  vtkMTimeType MeanTime;
   std::string ShaderKey;
   vtkTimeStamp ShaderKeyTime;
 

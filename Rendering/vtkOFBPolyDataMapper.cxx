@@ -52,7 +52,8 @@ constexpr int DeepCellSamples = 8;
 
 //------------------------------------------------------------------------------
 vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
-  : LookupMode(LOOKUP_NEAREST)
+  : LookupMode(LOOKUP_AUTOMATIC)
+  , ResolvedLookupMode(LOOKUP_NEAREST)
   , InterpolationRadius(std::sqrt(3.0))
   , MipmapBias(0.0)
   , MaximumNumberOfMipmapLevels(8)
@@ -321,6 +322,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
   {
     return false;
   }
+  this->ResolveLookupMode();
   this->CheckSurfaceInFrame(ofb);
   if (!this->UploadOFB(ofb, selection))
   {
@@ -339,11 +341,21 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::ResolveLookupMode()
+{
+  this->ResolvedLookupMode = this->LookupMode;
+  if (this->LookupMode == LOOKUP_AUTOMATIC)
+  {
+    this->ResolvedLookupMode = this->UseIntensity ? LOOKUP_SMOOTH : LOOKUP_NEAREST;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBPolyDataMapper::UpdateLevelIntensity(vtkOFB* ofb)
 {
   this->LevelIntensity = false;
   const char* name = this->Coloring->GetIntensityArrayName();
-  if (!this->UseIntensity || !name || !vtkOFBFindLookupMode(this->LookupMode)->Pyramid ||
+  if (!this->UseIntensity || !name || !vtkOFBFindLookupMode(this->ResolvedLookupMode)->Pyramid ||
     this->Storage->GetNumberOfLevels() < 2 || !this->Storage->GetPyramid()->IsComputedArray(name))
   {
     return;
@@ -526,7 +538,7 @@ bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkSelection& selection)
 {
   if (!this->Storage->UpdateLevels(ofb,
         this->GetInput(),
-        vtkOFBFindLookupMode(this->LookupMode)->Pyramid,
+        vtkOFBFindLookupMode(this->ResolvedLookupMode)->Pyramid,
         this->MaximumNumberOfMipmapLevels,
         this->MinimumMipmapResolution))
   {
@@ -559,9 +571,10 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
   if (this->OFBActive)
   {
     this->DeepCells = this->Storage->GetMaximumCellSamples() > DeepCellSamples;
-    key << this->LookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity << "|"
-        << this->UseNormals << "|" << this->DeepCells << "|" << this->Coloring->GetLICColorMode()
-        << "|" << this->Coloring->GetEnhanceColorContrast() << "|" << this->LevelIntensity;
+    key << this->ResolvedLookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity
+        << "|" << this->UseNormals << "|" << this->DeepCells << "|"
+        << this->Coloring->GetLICColorMode() << "|" << this->Coloring->GetEnhanceColorContrast()
+        << "|" << this->LevelIntensity;
   }
   if (key.str() != this->ShaderKey)
   {
@@ -644,7 +657,8 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(std::map<vtkShader::Type, vtkShade
     {
       defines << "#define " << info.Define << " " << info.Mode << "\n";
     }
-    defines << "#define OFB_LOOKUP_MODE " << vtkOFBFindLookupMode(this->LookupMode)->Define << "\n"
+    defines << "#define OFB_LOOKUP_MODE " << vtkOFBFindLookupMode(this->ResolvedLookupMode)->Define
+            << "\n"
             << "#define OFB_MAX_LEVELS " << vtkOFBShaderStorage::MaximumNumberOfLevels << "\n"
             << "#define OFB_LIC_MODE " << this->Coloring->GetLICColorMode() << "\n";
     const std::pair<bool, const char*> flags[] = { { this->SourceScalars, "OFB_SOURCE_SCALARS" },
@@ -817,6 +831,7 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OFB: " << this->GetOFB() << "\n";
   os << indent << "LookupMode: " << GetLookupModeAsString(this->LookupMode) << "\n";
+  os << indent << "ResolvedLookupMode: " << GetLookupModeAsString(this->ResolvedLookupMode) << "\n";
   os << indent << "InterpolationRadius: " << this->InterpolationRadius << " cells\n";
   os << indent << "MipmapBias: " << this->MipmapBias << "\n";
   os << indent << "MaximumNumberOfMipmapLevels: " << this->MaximumNumberOfMipmapLevels << "\n";

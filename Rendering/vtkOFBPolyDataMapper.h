@@ -11,7 +11,7 @@
  *
  * The vertex shader passes the model-coordinate position (in OFB cells) to the fragment
  * shader; the OFB lives in shader storage buffers (OpenGL 4.3). Lookup modes:
- * - Nearest (default): the closest sample in the cell under the point at depths within one
+ * - Nearest: the closest sample in the cell under the point at depths within one
  *   cell (as vtkOFB::FindSample), in the grid most aligned with the triangle's geometric
  *   normal (computed per fragment from screen-space derivatives of the position: the normal
  *   vtkOFBSampler routes a triangle by, so the grid that holds its samples), else the next
@@ -51,6 +51,9 @@
  *   plain mix would lose contrast half-way between levels (a band of weaker streaks); the
  *   blended intensity is then m + (mix - m) / sqrt((1 - t)^2 + t^2), with m the mean of
  *   level 0's intensity and t the blend weight, which keeps the variance of the mix.
+ * - Automatic (default): Smooth where the colouring modulates by an intensity array that
+ *   the OFB has (a LIC: no cell blocks close up), else Nearest (paint: the cheapest, and
+ *   crisp brush edges). It builds the pyramid only when it resolves to Smooth.
  *
  * The colouring is a vtkOFBColoring (GetColoring(), one made by default), the object
  * vtkOFBMapToColors reads too: share it, `mapToColors->SetColoring(mapper->GetColoring())`,
@@ -157,6 +160,7 @@ public:
     LOOKUP_MIPMAPPED,
     LOOKUP_NEAREST_MIPMAPPED,
     LOOKUP_SMOOTH,
+    LOOKUP_AUTOMATIC,
     NUMBER_OF_LOOKUP_MODES
   };
 
@@ -174,9 +178,11 @@ public:
 
   ///@{
   /**
-   * How a fragment's colour is read from the OFB, a LookupModes value: LOOKUP_NEAREST
-   * (default), LOOKUP_INVERSE_DISTANCE, LOOKUP_MIPMAPPED, LOOKUP_NEAREST_MIPMAPPED or
-   * LOOKUP_SMOOTH.
+   * How a fragment's colour is read from the OFB, a LookupModes value: LOOKUP_NEAREST,
+   * LOOKUP_INVERSE_DISTANCE, LOOKUP_MIPMAPPED, LOOKUP_NEAREST_MIPMAPPED, LOOKUP_SMOOTH or
+   * LOOKUP_AUTOMATIC (default: LOOKUP_SMOOTH where the colouring shows an intensity array
+   * of the OFB, a LIC, else LOOKUP_NEAREST; GetResolvedLookupMode says which the last
+   * render used).
    * Another value is an error and leaves the mode unchanged. The mode reaches the
    * fragment shader as OFB_LOOKUP_MODE, one of the defines OFB_LOOKUP_NEAREST, ...
    * (the enumerators' names with OFB_ for LOOKUP_), which the shader tells apart.
@@ -188,6 +194,8 @@ public:
   void SetLookupModeToMipmapped() { this->SetLookupMode(LOOKUP_MIPMAPPED); }
   void SetLookupModeToNearestMipmapped() { this->SetLookupMode(LOOKUP_NEAREST_MIPMAPPED); }
   void SetLookupModeToSmooth() { this->SetLookupMode(LOOKUP_SMOOTH); }
+  void SetLookupModeToAutomatic() { this->SetLookupMode(LOOKUP_AUTOMATIC); }
+  vtkGetMacro(ResolvedLookupMode, int);
   static const char* GetLookupModeAsString(int mode);
   ///@}
 
@@ -359,6 +367,8 @@ protected:
   void UpdateLightnessRange(vtkOFB* ofb);
   void UpdateShaderKey();
   void UpdateOFBProducer();
+  /// The mode this render uses: LookupMode, or Automatic's choice.
+  void ResolveLookupMode();
   /// Whether the pyramid computes the intensity on every level (LevelIntensity), and the
   /// mean of level 0's intensity (IntensityMean), computed again when the array changes.
   void UpdateLevelIntensity(vtkOFB* ofb);
@@ -381,6 +391,7 @@ protected:
   void WarnOnce(const std::string& message);
 
   int LookupMode;
+  int ResolvedLookupMode;
   double InterpolationRadius;
   double MipmapBias;
   int MaximumNumberOfMipmapLevels;

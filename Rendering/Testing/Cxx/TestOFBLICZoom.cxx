@@ -380,3 +380,19 @@ TEST(OFBLICZoom, NoLineWhereTheMipmapLevelChanges)
     }
   }
 }
+
+TEST(OFBLICZoom, AutomaticLookupIsSmoothForALICAndNearestForPaint)
+{
+  ZoomScene scene(0);
+  scene.ViewFlat(0.4, 0.41, 4.0);
+  EXPECT_EQ(scene.Mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_AUTOMATIC);
+  const vtkofbzoom::GreyImage automatic = scene.Render();
+  EXPECT_EQ(scene.Mapper->GetResolvedLookupMode(), vtkOFBPolyDataMapper::LOOKUP_SMOOTH);
+  scene.Mapper->SetLookupModeToSmooth();
+  const vtkofbzoom::GreyImage smooth = scene.Render();
+  EXPECT_EQ(automatic.Values, smooth.Values);
+  scene.Mapper->SetLookupModeToAutomatic();
+  scene.Mapper->GetColoring()->IntensityModulationOff();
+  scene.Render();
+  EXPECT_EQ(scene.Mapper->GetResolvedLookupMode(), vtkOFBPolyDataMapper::LOOKUP_NEAREST);
+}

@@ -21,9 +21,9 @@
  * kept streamlines of every level instead of tracing them again; the filter cache
  * (FilterCacheSize) keeps the levels' LICs of recent phases as it keeps filtered arrays.
  *
- * Cost: the levels hold about a third of level 0's samples together, so the LIC of the
- * pyramid costs about a third of level 0's, on top of the pyramid's sampling and
- * filtering (docs/lic.md gives the measured times). Without a LIC set, the pyramid is a
+ * Cost: the levels hold about a third of level 0's samples together; the LIC of the
+ * pyramid costs about half of level 0's, on top of the pyramid's sampling and filtering
+ * (docs/lic.md gives the measured times). Without a LIC set, the pyramid is a
  * plain vtkOFBPyramid.
  *
  * @sa vtkOFBPyramid vtkOFBLIC vtkOFBPolyDataMapper

@@ -143,9 +143,21 @@ TEST(OFBLICPyramid, NewPhaseComputesTheLevelsAgainAndPaintLeavesThem)
   {
     colors->SetTypedComponent(i, 0, 0);
   }
+  auto redSum = [](vtkOFB* ofb)
+  {
+    vtkDataArray* c = ofb->GetSampleData()->GetArray(vtkOFB::ColorsArrayName());
+    double sum = 0.0;
+    for (vtkIdType i = 0; i < c->GetNumberOfTuples(); ++i)
+    {
+      sum += c->GetComponent(i, 0);
+    }
+    return sum;
+  };
+  const double redBefore = redSum(pyramid->GetLevel(1));
   level0->MarkSamplesModified(100, 200);
   level0->Modified();
   ASSERT_TRUE(pyramid->UpdateLevels());
+  EXPECT_LT(redSum(pyramid->GetLevel(1)), redBefore) << "the paint was not filtered down";
   EXPECT_EQ(pyramid->GetNumberOfLevelLICComputations(), 2);
   vtkDataArray* kept = pyramid->GetLevel(1)->GetSampleData()->GetArray("LIC");
   for (vtkIdType i = 0; i < kept->GetNumberOfTuples(); ++i)

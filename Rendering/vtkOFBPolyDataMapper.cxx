@@ -9,6 +9,8 @@
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBColoring.h"
+#include "vtkOFBLIC.h"
+#include "vtkOFBLICPyramid.h"
 #include "vtkOFBLookupFS.h"
 #include "vtkOFBLookupModes.h"
 #include "vtkOFBMapToColors.h"
@@ -54,6 +56,8 @@ constexpr int DeepCellSamples = 8;
 vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   : LookupMode(LOOKUP_AUTOMATIC)
   , ResolvedLookupMode(LOOKUP_NEAREST)
+  , AutomaticLevelLIC(true)
+  , UserPyramid(false)
   , InterpolationRadius(std::sqrt(3.0))
   , MipmapBias(0.0)
   , MaximumNumberOfMipmapLevels(8)
@@ -169,6 +173,7 @@ void vtkOFBPolyDataMapper::SetLookupMode(int mode)
 //------------------------------------------------------------------------------
 void vtkOFBPolyDataMapper::SetPyramid(vtkOFBPyramid* pyramid)
 {
+  this->UserPyramid = pyramid != nullptr;
   if (this->Storage->SetPyramid(pyramid))
   {
     this->Modified();
@@ -237,6 +242,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
     return false;
   }
   this->ResolveLookupMode();
+  this->UpdateAutomaticPyramid();
   this->CheckSurfaceInFrame(ofb);
   if (!this->UploadOFB(ofb, selection))
   {
@@ -261,6 +267,39 @@ void vtkOFBPolyDataMapper::ResolveLookupMode()
   if (this->LookupMode == LOOKUP_AUTOMATIC)
   {
     this->ResolvedLookupMode = this->UseIntensity ? LOOKUP_SMOOTH : LOOKUP_NEAREST;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::UpdateAutomaticPyramid()
+{
+  if (this->UserPyramid)
+  {
+    return;
+  }
+  vtkOFBLIC* producer = nullptr;
+  if (this->AutomaticLevelLIC && this->LookupMode == LOOKUP_AUTOMATIC &&
+    this->ResolvedLookupMode == LOOKUP_SMOOTH && this->GetNumberOfInputConnections(1) > 0)
+  {
+    producer = vtkOFBLIC::SafeDownCast(this->GetInputAlgorithm(1, 0));
+  }
+  if (producer)
+  {
+    vtkOFBLICPyramid* pyramid = vtkOFBLICPyramid::SafeDownCast(this->AutoPyramid);
+    if (!pyramid)
+    {
+      this->AutoPyramid = vtkSmartPointer<vtkOFBLICPyramid>::New();
+      pyramid = vtkOFBLICPyramid::SafeDownCast(this->AutoPyramid);
+    }
+    if (pyramid->GetLIC() != producer)
+    {
+      pyramid->SetLIC(producer);
+    }
+    this->Storage->SetPyramid(pyramid);
+  }
+  else if (this->AutoPyramid && this->Storage->GetPyramid() == this->AutoPyramid)
+  {
+    this->Storage->SetPyramid(nullptr);
   }
 }
 
@@ -750,6 +789,7 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MipmapBias: " << this->MipmapBias << "\n";
   os << indent << "MaximumNumberOfMipmapLevels: " << this->MaximumNumberOfMipmapLevels << "\n";
   os << indent << "MinimumMipmapResolution: " << this->MinimumMipmapResolution << "\n";
+  os << indent << "AutomaticLevelLIC: " << (this->AutomaticLevelLIC ? "On" : "Off") << "\n";
   os << indent << "Pyramid: " << this->Storage->GetPyramid()->GetClassName() << " ("
      << this->Storage->GetPyramid() << ")\n";
   os << indent << "Coloring:\n";

@@ -53,7 +53,9 @@
  *   level 0's intensity and t the blend weight, which keeps the variance of the mix.
  * - Automatic (default): Smooth where the colouring modulates by an intensity array that
  *   the OFB has (a LIC: no cell blocks close up), else Nearest (paint: the cheapest, and
- *   crisp brush edges). It builds the pyramid only when it resolves to Smooth.
+ *   crisp brush edges). It builds the pyramid only when it resolves to Smooth. With
+ *   AutomaticLevelLIC (default on), an OFB connected straight from a vtkOFBLIC gets a
+ *   vtkOFBLICPyramid of it, so a LIC keeps its streaks from far without any setting.
  *
  * The colouring is a vtkOFBColoring (GetColoring(), one made by default), the object
  * vtkOFBMapToColors reads too: share it, `mapToColors->SetColoring(mapper->GetColoring())`,
@@ -133,7 +135,8 @@
 #include "vtkOFBRenderingModule.h" // for export macro
 #include "vtkOpenGLPolyDataMapper.h"
 
-#include "vtkWeakPointer.h" // for WarnedOFB
+#include "vtkSmartPointer.h" // for AutoPyramid
+#include "vtkWeakPointer.h"  // for WarnedOFB
 
 #include <memory> // for std::unique_ptr
 #include <set>    // for Warnings
@@ -242,6 +245,18 @@ public:
    */
   void SetPyramid(vtkOFBPyramid* pyramid);
   vtkOFBPyramid* GetPyramid();
+  ///@}
+
+  ///@{
+  /**
+   * With LOOKUP_AUTOMATIC resolved to Smooth, no pyramid set with SetPyramid and the OFB
+   * connected straight from a vtkOFBLIC (SetOFBConnection), use a vtkOFBLICPyramid of that
+   * LIC: the default display of a LIC pipeline keeps its streaks from far. It costs a LIC
+   * on the coarser levels (about half of level 0's) whenever the LIC changes. Default on.
+   */
+  vtkSetMacro(AutomaticLevelLIC, bool);
+  vtkGetMacro(AutomaticLevelLIC, bool);
+  vtkBooleanMacro(AutomaticLevelLIC, bool);
   ///@}
 
   ///@{
@@ -369,6 +384,9 @@ protected:
   void UpdateOFBProducer();
   /// The mode this render uses: LookupMode, or Automatic's choice.
   void ResolveLookupMode();
+  /// The pyramid of Automatic (AutomaticLevelLIC): a vtkOFBLICPyramid of the OFB's
+  /// producer where it is a vtkOFBLIC, else the storage's own.
+  void UpdateAutomaticPyramid();
   /// Whether the pyramid computes the intensity on every level (LevelIntensity), and the
   /// mean of level 0's intensity (IntensityMean), computed again when the array changes.
   void UpdateLevelIntensity(vtkOFB* ofb);
@@ -392,6 +410,9 @@ protected:
 
   int LookupMode;
   int ResolvedLookupMode;
+  bool AutomaticLevelLIC;
+  bool UserPyramid;                           // a pyramid was given with SetPyramid
+  vtkSmartPointer<vtkOFBPyramid> AutoPyramid; // AutomaticLevelLIC's vtkOFBLICPyramid
   double InterpolationRadius;
   double MipmapBias;
   int MaximumNumberOfMipmapLevels;

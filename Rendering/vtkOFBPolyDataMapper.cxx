@@ -14,6 +14,7 @@
 #include "vtkOFBLookupFS.h"
 #include "vtkOFBLookupModes.h"
 #include "vtkOFBMapToColors.h"
+#include "vtkOFBPolyDataMapperInternals.h"
 #include "vtkOFBPyramid.h"
 #include "vtkOFBShaderStorage.h"
 #include "vtkObjectFactory.h"
@@ -36,14 +37,6 @@
 #include <utility>
 
 vtkStandardNewMacro(vtkOFBPolyDataMapper);
-
-// The header's names for the implementation's types, which it does not install.
-class vtkOFBPolyDataMapper::vtkStorage : public vtkOFBShaderStorage
-{
-};
-struct vtkOFBPolyDataMapper::vtkSelection : public vtkOFBShaderStorage::Selection
-{
-};
 
 namespace
 {
@@ -268,72 +261,6 @@ void vtkOFBPolyDataMapper::ResolveLookupMode()
   {
     this->ResolvedLookupMode = this->UseIntensity ? LOOKUP_SMOOTH : LOOKUP_NEAREST;
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::UpdateAutomaticPyramid()
-{
-  if (this->UserPyramid)
-  {
-    return;
-  }
-  vtkOFBLIC* producer = nullptr;
-  if (this->AutomaticLevelLIC && this->LookupMode == LOOKUP_AUTOMATIC &&
-    this->ResolvedLookupMode == LOOKUP_SMOOTH && this->GetNumberOfInputConnections(1) > 0)
-  {
-    producer = vtkOFBLIC::SafeDownCast(this->GetInputAlgorithm(1, 0));
-  }
-  if (producer)
-  {
-    vtkOFBLICPyramid* pyramid = vtkOFBLICPyramid::SafeDownCast(this->AutoPyramid);
-    if (!pyramid)
-    {
-      this->AutoPyramid = vtkSmartPointer<vtkOFBLICPyramid>::New();
-      pyramid = vtkOFBLICPyramid::SafeDownCast(this->AutoPyramid);
-    }
-    if (pyramid->GetLIC() != producer)
-    {
-      pyramid->SetLIC(producer);
-    }
-    this->Storage->SetPyramid(pyramid);
-  }
-  else if (this->AutoPyramid && this->Storage->GetPyramid() == this->AutoPyramid)
-  {
-    this->Storage->SetPyramid(nullptr);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBPolyDataMapper::UpdateLevelIntensity(vtkOFB* ofb)
-{
-  this->LevelIntensity = false;
-  const char* name = this->Coloring->GetIntensityArrayName();
-  if (!this->UseIntensity || !name || !vtkOFBFindLookupMode(this->ResolvedLookupMode)->Pyramid ||
-    this->Storage->GetNumberOfLevels() < 2 || !this->Storage->GetPyramid()->IsComputedArray(name))
-  {
-    return;
-  }
-  vtkDataArray* array = ofb->GetSampleData()->GetArray(name);
-  if (!array)
-  {
-    return;
-  }
-  this->LevelIntensity = true;
-  if (array == this->MeanArray && array->GetMTime() <= this->MeanTime)
-  {
-    return;
-  }
-  // As the shader reads it: clamped to [0, 1], NaN as 0.
-  const vtkIdType n = std::min(array->GetNumberOfTuples(), ofb->GetNumberOfSamples());
-  double sum = 0.0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double v = array->GetComponent(i, 0);
-    sum += v > 0.0 ? std::min(v, 1.0) : 0.0;
-  }
-  this->IntensityMean = n > 0 ? sum / n : 0.5;
-  this->MeanArray = array;
-  this->MeanTime = array->GetMTime();
 }
 
 //------------------------------------------------------------------------------

@@ -600,6 +600,10 @@ int vtkOFBLIC::RequestData(vtkInformation*,
       output->Initialize();
       return 1;
     }
+    // The second pass stretched to the full range as the first (its quantiles
+    // vtkOFBLICFinalStretchTail and 1 - vtkOFBLICFinalStretchTail to 0 and 1): a LIC
+    // averages its input, so without this it would span about half of [0, 1].
+    vtkOFBLICStretchTails(values.data(), n, cache.Mask.data(), vtkOFBLICFinalStretchTail);
   }
   if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
     this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)

@@ -15,6 +15,7 @@
 #include "vtkOFBArrayLength.h"
 #include "vtkOFBCPUSampler.h"
 #include "vtkOFBInputChecks.h"
+#include "vtkOFBSampleSources.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -22,6 +23,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTimerLog.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
@@ -452,12 +454,15 @@ vtkOFBSampler::vtkOFBSampler()
   , PassCellArrays(true)
   , ArrayPrecedence(POINT_ARRAYS_FIRST)
   , ProjectVectors(true)
+  , StructureReuse(STRUCTURE_REUSE_TIME_SERIES)
+  , LastUpdateResampled(false)
   , NumberOfSkippedTriangles(0)
   , LastBuildTime(0.0)
 {
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 255;
   this->DefaultColor[3] = 255;
   this->CPUBackend = vtk::TakeSmartPointer(vtkOFBCPUSampler::New());
+  this->Sources = vtk::TakeSmartPointer(vtkOFBSampleSources::New());
 }
 
 //------------------------------------------------------------------------------
@@ -467,6 +472,7 @@ vtkOFBSampler::~vtkOFBSampler() = default;
 void vtkOFBSampler::ReleaseBuffers()
 {
   this->CPUBackend->ReleaseBuffers();
+  this->Sources->Reset();
 }
 
 //------------------------------------------------------------------------------
@@ -515,6 +521,7 @@ int vtkOFBSampler::RequestData(vtkInformation*,
   // vtkOFBAlgorithm frees what is left after this.
   this->NumberOfSkippedTriangles = 0;
   this->LastBuildTime = 0.0;
+  this->LastUpdateResampled = false;
 
   const double start = vtkTimerLog::GetUniversalTime();
   vtkOFBSamplerBackend* backend = this->SelectBackend();
@@ -530,17 +537,61 @@ int vtkOFBSampler::RequestData(vtkInformation*,
     !this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, job))
   {
     output->Initialize();
+    this->Sources->Reset();
     return 1;
   }
   this->UpdateProgress(0.05);
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (this->ResampleAttributes(inInfo, input, surface, job))
+  {
+    this->ProjectCellVectors(surface, output);
+    this->LastUpdateResampled = true;
+    this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
+    this->UpdateProgress(1.0);
+    return 1;
+  }
+  auto key = vtkOFBSampleSources::MakeKey(input, this->Resolution, backend);
   if (this->RunBackend(backend, job) != vtkOFBSamplerBackend::RESULT_BUILT)
   {
+    this->Sources->Reset();
     return 1;
+  }
+  if (job.Sources)
+  {
+    key.Backend = this->LastBuildBackend.GetPointer();
+    this->Sources->Keep(output, input, key);
   }
   this->ProjectCellVectors(surface, output);
   this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::ResampleAttributes(vtkInformation* inInfo,
+  vtkPolyData* input,
+  const vtkOFBSurface& surface,
+  vtkOFBSamplerBackend::Job& job)
+{
+  const bool reuse = this->StructureReuse == STRUCTURE_REUSE_ALWAYS ||
+    (this->StructureReuse == STRUCTURE_REUSE_TIME_SERIES && inInfo &&
+      inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  if (!reuse)
+  {
+    this->Sources->Reset();
+    return false;
+  }
+  auto key =
+    vtkOFBSampleSources::MakeKey(input, this->Resolution, this->LastBuildBackend.GetPointer());
+  if (this->Sources->Matches(input, key) && this->Sources->Resample(surface, job.Output))
+  {
+    vtkDebugMacro("Same geometry as the last build: re-sampled the attributes alone.");
+    return true;
+  }
+  // A full build, which records its sources; the kept structure is let go first.
+  this->Sources->Reset();
+  job.Sources = this->Sources;
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -978,6 +1029,8 @@ void vtkOFBSampler::PrintSelf(ostream& os, vtkIndent indent)
      << (this->ArrayPrecedence == CELL_ARRAYS_FIRST ? "CELL_ARRAYS_FIRST" : "POINT_ARRAYS_FIRST")
      << "\n";
   os << indent << "ProjectVectors: " << (this->ProjectVectors ? "On" : "Off") << "\n";
+  os << indent << "StructureReuse: " << this->StructureReuse << "\n";
+  os << indent << "LastUpdateResampled: " << (this->LastUpdateResampled ? "yes" : "no") << "\n";
   os << indent << "NumberOfSkippedTriangles: " << this->NumberOfSkippedTriangles << "\n";
   os << indent << "LastBuildTime: " << this->LastBuildTime << " ms\n";
 }

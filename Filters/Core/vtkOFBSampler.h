@@ -67,6 +67,7 @@
 class vtkDataArray;
 class vtkDataSet;
 class vtkOFB;
+class vtkOFBSampleSources;
 class vtkPolyData;
 class vtkOFBSurface;
 
@@ -166,13 +167,48 @@ public:
   vtkBooleanMacro(ProjectVectors, bool);
   ///@}
 
+  /// When an update re-samples the attributes alone on the structure of the last build.
+  enum StructureReuses
+  {
+    STRUCTURE_REUSE_OFF = 0,         ///< never: every update is a full build
+    STRUCTURE_REUSE_TIME_SERIES = 1, ///< when the input reports time steps (the default)
+    STRUCTURE_REUSE_ALWAYS = 2       ///< whenever the geometry is unchanged
+  };
+
+  ///@{
+  /**
+   * Re-sample the attributes alone when the geometry is unchanged since the last
+   * build (see vtkOFBSampleSources): STRUCTURE_REUSE_TIME_SERIES (default: when
+   * the input's pipeline information has TIME_STEPS), STRUCTURE_REUSE_ALWAYS, or
+   * STRUCTURE_REUSE_OFF. The geometry is the input's points, polygons and strips
+   * and point normals (their arrays and modification times, else a hash of their
+   * content), the resolution and the backend. A re-sampling gives the output the
+   * structure of the last build (shared: its GetStructureMTime does not change)
+   * and the normals of its samples (shared too), and interpolates the colours,
+   * the vector field and the other arrays from the triangle and barycentrics
+   * that the build recorded for each sample: the same values as a full build. The
+   * recording costs 12 bytes a sample, kept between updates while reuse is on.
+   */
+  vtkSetClampMacro(StructureReuse, int, STRUCTURE_REUSE_OFF, STRUCTURE_REUSE_ALWAYS);
+  vtkGetMacro(StructureReuse, int);
+  void SetStructureReuseToOff() { this->SetStructureReuse(STRUCTURE_REUSE_OFF); }
+  void SetStructureReuseToTimeSeries() { this->SetStructureReuse(STRUCTURE_REUSE_TIME_SERIES); }
+  void SetStructureReuseToAlways() { this->SetStructureReuse(STRUCTURE_REUSE_ALWAYS); }
+  ///@}
+
+  /**
+   * Whether the last update re-sampled the attributes alone (true) or built the
+   * OFB (false).
+   */
+  vtkGetMacro(LastUpdateResampled, bool);
+
   /**
    * Zero-area triangles skipped by the last build.
    */
   vtkGetMacro(NumberOfSkippedTriangles, vtkIdType);
 
   /**
-   * Wall-clock time of the last build (ms).
+   * Wall-clock time of the last update (ms): a build or a re-sampling.
    */
   vtkGetMacro(LastBuildTime, double);
 
@@ -224,6 +260,8 @@ protected:
   bool PassCellArrays;
   int ArrayPrecedence;
   bool ProjectVectors;
+  int StructureReuse;
+  bool LastUpdateResampled;
   vtkIdType NumberOfSkippedTriangles;
   double LastBuildTime;
 
@@ -290,7 +328,18 @@ private:
   vtkOFBSamplerBackend::Result RunBackend(vtkOFBSamplerBackend* backend,
     vtkOFBSamplerBackend::Job& job);
 
+  /**
+   * Re-sample the attributes of `surface` alone on the kept structure when the
+   * geometry of `input` is that of the last build (StructureReuse); else set
+   * `job` up to record the sources of the build. True when re-sampled.
+   */
+  bool ResampleAttributes(vtkInformation* inInfo,
+    vtkPolyData* input,
+    const vtkOFBSurface& surface,
+    vtkOFBSamplerBackend::Job& job);
+
   vtkSmartPointer<vtkOFBSamplerBackend> CPUBackend;
+  vtkSmartPointer<vtkOFBSampleSources> Sources;
   vtkWeakPointer<vtkOFBSamplerBackend> LastBuildBackend;
 };
 

@@ -16,7 +16,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
 #include <new>
+#include <type_traits>
 
 vtkStandardNewMacro(vtkOFBSampleSources);
 
@@ -102,6 +104,235 @@ uint64_t HashArray(vtkDataArray* array, uint64_t seed)
   }
   return Mix(h ^ static_cast<uint64_t>(n));
 }
+
+/// The re-sampling of one array over samples [begin, end) from their sources.
+struct ResampleJob
+{
+  virtual ~ResampleJob() = default;
+  virtual void Run(vtkIdType begin,
+    vtkIdType end,
+    const vtkTypeUInt32* tri,
+    const float* w1,
+    const float* w2) const = 0;
+};
+
+/// The paint: the point colours interpolated as vtkOFBAttributeInterpolator does, else DefaultColor.
+struct ColorJob : ResampleJob
+{
+  std::vector<float> Table; // per triangle 3 corners x 4 components
+  int NC;
+  unsigned char Default[4];
+  unsigned char* Out;
+
+  ColorJob(const vtkOFBAttributeInterpolator& in,
+    const vtkIdType* ids,
+    const vtkTypeUInt32* order,
+    vtkIdType nTriangles,
+    unsigned char* out)
+    : NC(in.ColorComponents)
+    , Out(out)
+  {
+    std::memcpy(this->Default, in.DefaultColor, 4);
+    if (!in.PointColors)
+    {
+      return;
+    }
+    this->Table.resize(static_cast<size_t>(12 * nTriangles));
+    const int nc = this->NC;
+    vtkSMPTools::For(0,
+      nTriangles,
+      Chunk,
+      [&](vtkIdType t0, vtkIdType t1)
+      {
+        for (vtkIdType t = t0; t < t1; ++t)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            for (int k = 0; k < 4; ++k)
+            {
+              this->Table[12 * t + 4 * c + k] =
+                k < nc ? static_cast<float>(in.PointColors[nc * ids[3 * order[t] + c] + k]) : 0.0f;
+            }
+          }
+        }
+      });
+  }
+
+  void Run(vtkIdType begin,
+    vtkIdType end,
+    const vtkTypeUInt32* tri,
+    const float* w1,
+    const float* w2) const override
+  {
+    unsigned char* out = this->Out;
+    if (this->Table.empty())
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        std::memcpy(out + 4 * i, this->Default, 4);
+      }
+      return;
+    }
+    const int nc = this->NC;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const float* c = this->Table.data() + 12 * static_cast<size_t>(tri[i]);
+      for (int k = 0; k < nc; ++k)
+      {
+        const float v = (1.0f - w1[i] - w2[i]) * c[k] + w1[i] * c[4 + k] + w2[i] * c[8 + k];
+        out[4 * i + k] = static_cast<unsigned char>(std::min(255.0f, v + 0.5f));
+      }
+      if (nc == 3)
+      {
+        out[4 * i + 3] = 255;
+      }
+    }
+  }
+};
+
+/**
+ * The vector field interpolated and projected on the kept normals, in the
+ * operations of vtkOFBAttributeInterpolator::InterpolateVectors.
+ */
+struct VectorJob : ResampleJob
+{
+  std::vector<float> Table; // per triangle 3 corners x 3 components
+  bool Project;
+  const float* Normals;
+  float* Out;
+
+  VectorJob(const vtkOFBAttributeInterpolator& in,
+    const vtkIdType* ids,
+    const vtkTypeUInt32* order,
+    vtkIdType nTriangles,
+    const float* normals,
+    float* out)
+    : Project(in.ProjectVectors)
+    , Normals(normals)
+    , Out(out)
+  {
+    this->Table.resize(static_cast<size_t>(9 * nTriangles));
+    vtkSMPTools::For(0,
+      nTriangles,
+      Chunk,
+      [&](vtkIdType t0, vtkIdType t1)
+      {
+        for (vtkIdType t = t0; t < t1; ++t)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            std::copy_n(
+              in.PointVectors + 3 * ids[3 * order[t] + c], 3, &this->Table[9 * t + 3 * c]);
+          }
+        }
+      });
+  }
+
+  void Run(vtkIdType begin,
+    vtkIdType end,
+    const vtkTypeUInt32* tri,
+    const float* w1,
+    const float* w2) const override
+  {
+    // Locals that alias nothing: the loop keeps them in registers.
+    const float* VTK_OFB_RESTRICT table = this->Table.data();
+    const float* VTK_OFB_RESTRICT normals = this->Normals;
+    float* VTK_OFB_RESTRICT out = this->Out;
+    const float project = this->Project ? 1.0f : 0.0f;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const float* c = table + 9 * static_cast<size_t>(tri[i]);
+      const float b1 = w1[i], b2 = w2[i], b0 = 1.0f - b1 - b2;
+      const float vx = b0 * c[0] + b1 * c[3] + b2 * c[6];
+      const float vy = b0 * c[1] + b1 * c[4] + b2 * c[7];
+      const float vz = b0 * c[2] + b1 * c[5] + b2 * c[8];
+      const float nx = normals[3 * i], ny = normals[3 * i + 1], nz = normals[3 * i + 2];
+      const float vn = project * (vx * nx + vy * ny + vz * nz);
+      out[3 * i] = vx - vn * nx;
+      out[3 * i + 1] = vy - vn * ny;
+      out[3 * i + 2] = vz - vn * nz;
+    }
+  }
+};
+
+/**
+ * Another point array, interpolated as vtkOFBAttributeInterpolator::InterpolateTuples
+ * does, or a cell array, the tuple of each sample's triangle's cell.
+ */
+template<typename T>
+struct TupleJob : ResampleJob
+{
+  std::vector<T> Table; // per triangle 3 corners x NC values, or NC for a cell array
+  int NC;
+  bool PerCell;
+  T* Out;
+
+  TupleJob(const T* in,
+    int nc,
+    const vtkIdType* ids,
+    const vtkTypeUInt32* order,
+    const vtkIdType* cells,
+    vtkIdType nTriangles,
+    T* out)
+    : NC(nc)
+    , PerCell(cells != nullptr)
+    , Out(out)
+  {
+    const int corners = cells ? 1 : 3;
+    this->Table.resize(static_cast<size_t>(corners * nc * nTriangles));
+    vtkSMPTools::For(0,
+      nTriangles,
+      Chunk,
+      [&](vtkIdType t0, vtkIdType t1)
+      {
+        for (vtkIdType t = t0; t < t1; ++t)
+        {
+          for (int c = 0; c < corners; ++c)
+          {
+            const vtkIdType source = cells ? cells[order[t]] : ids[3 * order[t] + c];
+            std::copy_n(in + nc * source, nc, &this->Table[(corners * t + c) * nc]);
+          }
+        }
+      });
+  }
+
+  void Run(vtkIdType begin,
+    vtkIdType end,
+    const vtkTypeUInt32* tri,
+    const float* w1,
+    const float* w2) const override
+  {
+    const int nc = this->NC;
+    if (this->PerCell)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const T* tuple = this->Table.data() + static_cast<size_t>(tri[i]) * nc;
+        std::copy(tuple, tuple + nc, this->Out + i * nc);
+      }
+      return;
+    }
+    const T* VTK_OFB_RESTRICT table = this->Table.data();
+    T* VTK_OFB_RESTRICT out = this->Out;
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const T* c = table + 3 * static_cast<size_t>(tri[i]) * nc;
+      const double b1 = w1[i], b2 = w2[i], b0 = 1.0 - b1 - b2;
+      for (int k = 0; k < nc; ++k)
+      {
+        const double v = b0 * c[k] + b1 * c[nc + k] + b2 * c[2 * nc + k];
+        if (std::is_integral<T>::value)
+        {
+          out[i * nc + k] = static_cast<T>(std::llround(v));
+        }
+        else
+        {
+          out[i * nc + k] = static_cast<T>(v);
+        }
+      }
+    }
+  }
+};
 
 /// The arrays of a geometry: points, offsets and connectivity of polygons and strips, normals.
 void GeometryArrays(vtkPolyData* input, vtkDataArray* arrays[6])
@@ -192,7 +423,10 @@ bool vtkOFBSampleSources::RecordSamples(vtkIdType n)
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBSampleSources::Keep(vtkOFB* output, vtkPolyData* input, Key& key)
+void vtkOFBSampleSources::Keep(vtkOFB* output,
+  vtkPolyData* input,
+  Key& key,
+  const vtkOFBSurface& surface)
 {
   if (static_cast<vtkIdType>(this->Triangles.size()) != output->GetNumberOfSamples())
   {
@@ -208,6 +442,30 @@ void vtkOFBSampleSources::Keep(vtkOFB* output, vtkPolyData* input, Key& key)
   this->Structure->ShallowCopy(output); // its own sample data: cleared below, not output's
   this->Normals = output->GetSampleData()->GetNormals();
   this->Structure->GetSampleData()->Initialize();
+  this->SurfaceTriangles = surface.Triangles;
+  this->TriangleCells = surface.TriangleCells;
+  // The triangles renumbered in the order the samples first reach them, so that
+  // the tables of a re-sampling (a record per triangle) are read in about the
+  // order they are laid out: the input's own order may be anything.
+  const vtkIdType nTriangles = surface.GetNumberOfTriangles();
+  std::vector<vtkTypeUInt32> renumbered(static_cast<size_t>(nTriangles), VTK_TYPE_UINT32_MAX);
+  this->Order.clear();
+  for (vtkTypeUInt32& t : this->Triangles)
+  {
+    if (renumbered[t] == VTK_TYPE_UINT32_MAX)
+    {
+      renumbered[t] = static_cast<vtkTypeUInt32>(this->Order.size());
+      this->Order.push_back(t);
+    }
+    t = renumbered[t];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSampleSources::GetSurfaceTriangles(vtkOFBSurface& surface) const
+{
+  surface.Triangles = this->SurfaceTriangles;
+  surface.TriangleCells = this->TriangleCells;
 }
 
 //------------------------------------------------------------------------------
@@ -216,6 +474,9 @@ void vtkOFBSampleSources::Reset()
   this->Structure = nullptr;
   this->Normals = nullptr;
   this->Kept = Key();
+  std::vector<vtkIdType>().swap(this->SurfaceTriangles);
+  std::vector<vtkIdType>().swap(this->TriangleCells);
+  std::vector<vtkTypeUInt32>().swap(this->Order);
   std::vector<vtkTypeUInt32>().swap(this->Triangles);
   std::vector<float>().swap(this->W1);
   std::vector<float>().swap(this->W2);
@@ -235,85 +496,49 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
   {
     return false;
   }
-  output->ShallowCopy(this->Structure);
-  const vtkIdType n = output->GetNumberOfSamples();
+  // The arrays of the previous output that the pipeline recycled are taken before
+  // the structure is set (vtkOFB::ShallowCopy lets the spare arrays go): a
+  // re-sampling writes over the memory of the last one.
+  const vtkIdType n = this->Structure->GetNumberOfSamples();
   if (n != static_cast<vtkIdType>(this->Triangles.size()))
   {
     return false;
   }
-  const vtkTypeUInt32* tri = this->Triangles.data();
-  const float* w1 = this->W1.data();
-  const float* w2 = this->W2.data();
-  const vtkIdType* ids = surface.Triangles.data();
-  const float* normals = vtkFloatArray::SafeDownCast(this->Normals)->GetPointer(0);
-
-  // Colours: the input's point colours interpolated as the backends do, else DefaultColor.
-  vtkSmartPointer<vtkUnsignedCharArray> colors =
-    vtkUnsignedCharArray::SafeDownCast(vtkOFBSampleArrays::NewArray(
-    output, vtkOFB::ColorsArrayName(), VTK_UNSIGNED_CHAR, nullptr, 4, n));
-  unsigned char* rgba = colors->GetPointer(0);
-  const vtkOFBAttributeInterpolator interpolator(surface);
-  vtkSMPTools::For(0,
-    n,
-    Chunk,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      if (!interpolator.PointColors)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          std::memcpy(rgba + 4 * i, interpolator.DefaultColor, 4);
-        }
-        return;
-      }
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        interpolator.InterpolateColors(ids + 3 * tri[i], 1, w1 + i, w2 + i, rgba + 4 * i);
-      }
-    });
-
-  // The vector field: interpolated and projected on the kept normals, in the
-  // operations of vtkOFBAttributeInterpolator::InterpolateVectors.
+  vtkSmartPointer<vtkUnsignedCharArray> colors = vtkUnsignedCharArray::SafeDownCast(
+    vtkOFBSampleArrays::NewArray(output, vtkOFB::ColorsArrayName(), VTK_UNSIGNED_CHAR, nullptr, 4, n));
   vtkSmartPointer<vtkFloatArray> vectors;
-  if (interpolator.PointVectors)
+  if (surface.Vectors)
   {
-    vectors = vtkFloatArray::SafeDownCast(vtkOFBSampleArrays::NewArray(
-      output, surface.Vectors->GetName(), VTK_FLOAT, nullptr, 3, n));
-    float* out = vectors->GetPointer(0);
-    const float* in = interpolator.PointVectors;
-    const bool project = interpolator.ProjectVectors;
-    vtkSMPTools::For(0,
-      n,
-      Chunk,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          const vtkIdType* t = ids + 3 * tri[i];
-          const float* v0 = in + 3 * t[0];
-          const float* v1 = in + 3 * t[1];
-          const float* v2 = in + 3 * t[2];
-          const float b1 = w1[i], b2 = w2[i];
-          float v[3];
-          for (int k = 0; k < 3; ++k)
-          {
-            v[k] = (1.0f - b1 - b2) * v0[k] + b1 * v1[k] + b2 * v2[k];
-          }
-          if (project)
-          {
-            const float* nn = normals + 3 * i;
-            const float vn = v[0] * nn[0] + v[1] * nn[1] + v[2] * nn[2];
-            for (int k = 0; k < 3; ++k)
-            {
-              v[k] -= vn * nn[k];
-            }
-          }
-          std::copy(v, v + 3, out + 3 * i);
-        }
-      });
+    vectors = vtkFloatArray::SafeDownCast(
+      vtkOFBSampleArrays::NewArray(output, surface.Vectors->GetName(), VTK_FLOAT, nullptr, 3, n));
   }
+  std::vector<vtkSmartPointer<vtkDataArray>> others;
+  for (const auto& in : surface.Arrays)
+  {
+    others.push_back(vtkOFBAttributeInterpolator::IsInterpolable(in)
+        ? vtkOFBSampleArrays::NewArray(
+            output, in->GetName(), in->GetDataType(), in, in->GetNumberOfComponents(), n)
+        : nullptr);
+  }
+  output->ShallowCopy(this->Structure);
+  const vtkIdType* ids = surface.Triangles.data();
+  // The tables have a record per triangle that a sample lies on, in the order of
+  // this->Order.
+  const vtkIdType nTriangles = static_cast<vtkIdType>(this->Order.size());
+  const vtkTypeUInt32* order = this->Order.data();
 
-  // The other point and cell arrays, as vtkOFBSamplerBackend::InterpolateAttributes.
+  // One job per array, each with a table of its values at the corners of every
+  // triangle (or of its cell, for a cell array), so that a sample reads one record
+  // of its triangle; the samples go in chunks, every job over a chunk in turn while
+  // its sources are in cache.
+  std::vector<std::unique_ptr<ResampleJob>> jobs;
+  const vtkOFBAttributeInterpolator interpolator(surface);
+  jobs.emplace_back(new ColorJob(interpolator, ids, order, nTriangles, colors->GetPointer(0)));
+  if (vectors && interpolator.PointVectors)
+  {
+    jobs.emplace_back(new VectorJob(interpolator, ids, order, nTriangles,
+      vtkFloatArray::SafeDownCast(this->Normals)->GetPointer(0), vectors->GetPointer(0)));
+  }
   vtkPointData* sampleData = output->GetSampleData();
   sampleData->SetScalars(colors);
   sampleData->SetNormals(this->Normals);
@@ -324,21 +549,19 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
   for (size_t k = 0; k < surface.Arrays.size(); ++k)
   {
     vtkDataArray* in = surface.Arrays[k];
-    if (!vtkOFBAttributeInterpolator::IsInterpolable(in))
+    vtkDataArray* out = others[k];
+    if (!out)
     {
       continue;
     }
-    vtkSmartPointer<vtkDataArray> out = vtkOFBSampleArrays::NewArray(
-      output, in->GetName(), in->GetDataType(), in, in->GetNumberOfComponents(), n);
     const vtkIdType* cells = surface.GetArrayCells(k);
-    vtkSMPTools::For(0,
-      n,
-      Chunk,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        vtkOFBAttributeInterpolator::InterpolateArray(
-          in, out, begin, end - begin, ids, tri + begin, w1 + begin, w2 + begin, nullptr, cells);
-      });
+    switch (in->GetDataType())
+    {
+      vtkTemplateMacro(jobs.emplace_back(new TupleJob<VTK_TT>(static_cast<const VTK_TT*>(
+                                                                 in->GetVoidPointer(0)),
+        in->GetNumberOfComponents(), ids, order, cells, nTriangles,
+        static_cast<VTK_TT*>(out->GetVoidPointer(0)))));
+    }
     if (static_cast<int>(k) == surface.TCoordsIndex)
     {
       sampleData->SetTCoords(out);
@@ -352,6 +575,19 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
       sampleData->AddArray(out);
     }
   }
+  const vtkTypeUInt32* tri = this->Triangles.data();
+  const float* w1 = this->W1.data();
+  const float* w2 = this->W2.data();
+  vtkSMPTools::For(0,
+    n,
+    Chunk,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (const auto& job : jobs)
+      {
+        job->Run(begin, end, tri, w1, w2);
+      }
+    });
   output->MarkAllSamplesModified();
   return true;
 }

@@ -80,10 +80,17 @@ public:
   float* GetW2() { return this->W2.data(); }
 
   /**
-   * Keep the structure and the normals of `output`, built from the geometry of
-   * `key` with its sources recorded (RecordSamples).
+   * Keep the structure and the normals of `output`, built from `surface`, the
+   * geometry of `key`, with its sources recorded (RecordSamples); and the
+   * surface's triangles and their input cells.
    */
-  void Keep(vtkOFB* output, vtkPolyData* input, Key& key);
+  void Keep(vtkOFB* output, vtkPolyData* input, Key& key, const vtkOFBSurface& surface);
+
+  /**
+   * Give `surface` the triangles (and their input cells, where the build had cell
+   * arrays) of the kept build.
+   */
+  void GetSurfaceTriangles(vtkOFBSurface& surface) const;
 
   /**
    * Give `output` the kept structure and the attributes of `surface` (the
@@ -112,8 +119,10 @@ private:
   /// A 64-bit hash of the content of the arrays of `input` that make its geometry.
   static uint64_t HashGeometry(vtkPolyData* input);
 
-  std::vector<vtkTypeUInt32> Triangles;
+  std::vector<vtkTypeUInt32> Triangles; // per sample, renumbered (see Order)
+  std::vector<vtkTypeUInt32> Order;     // the surface triangle of each renumbered one
   std::vector<float> W1, W2;
+  std::vector<vtkIdType> SurfaceTriangles, TriangleCells;
   vtkSmartPointer<vtkOFB> Structure;
   vtkSmartPointer<vtkDataArray> Normals;
   Key Kept;

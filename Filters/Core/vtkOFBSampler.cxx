@@ -533,6 +533,12 @@ int vtkOFBSampler::RequestData(vtkInformation*,
   job.Output = output;
   job.MemoryLimit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
   job.Algorithm = this;
+  if (this->ResampleAttributes(inputVector[0]->GetInformationObject(0), input, job))
+  {
+    this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
+    this->UpdateProgress(1.0);
+    return 1;
+  }
   if (!this->CheckInputCells(input) || !this->CheckInputMemory(input, backend, job) ||
     !this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, job))
   {
@@ -541,15 +547,6 @@ int vtkOFBSampler::RequestData(vtkInformation*,
     return 1;
   }
   this->UpdateProgress(0.05);
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (this->ResampleAttributes(inInfo, input, surface, job))
-  {
-    this->ProjectCellVectors(surface, output);
-    this->LastUpdateResampled = true;
-    this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
-    this->UpdateProgress(1.0);
-    return 1;
-  }
   auto key = vtkOFBSampleSources::MakeKey(input, this->Resolution, backend);
   if (this->RunBackend(backend, job) != vtkOFBSamplerBackend::RESULT_BUILT)
   {
@@ -559,7 +556,7 @@ int vtkOFBSampler::RequestData(vtkInformation*,
   if (job.Sources)
   {
     key.Backend = this->LastBuildBackend.GetPointer();
-    this->Sources->Keep(output, input, key);
+    this->Sources->Keep(output, input, key, surface);
   }
   this->ProjectCellVectors(surface, output);
   this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
@@ -570,7 +567,6 @@ int vtkOFBSampler::RequestData(vtkInformation*,
 //------------------------------------------------------------------------------
 bool vtkOFBSampler::ResampleAttributes(vtkInformation* inInfo,
   vtkPolyData* input,
-  const vtkOFBSurface& surface,
   vtkOFBSamplerBackend::Job& job)
 {
   const bool reuse = this->StructureReuse == STRUCTURE_REUSE_ALWAYS ||
@@ -583,10 +579,34 @@ bool vtkOFBSampler::ResampleAttributes(vtkInformation* inInfo,
   }
   auto key =
     vtkOFBSampleSources::MakeKey(input, this->Resolution, this->LastBuildBackend.GetPointer());
-  if (this->Sources->Matches(input, key) && this->Sources->Resample(surface, job.Output))
+  if (input->GetNumberOfPoints() > 0 && this->Sources->Matches(input, key))
   {
-    vtkDebugMacro("Same geometry as the last build: re-sampled the attributes alone.");
-    return true;
+    // The geometry was checked and prepared by the last build: its triangles (and
+    // their input cells) with this input's arrays.
+    vtkOFBSurface surface;
+    this->Sources->GetSurfaceTriangles(surface);
+    vtkDataArray* normals = input->GetPointData()->GetNormals();
+    if (normals &&
+      (normals->GetNumberOfComponents() != 3 ||
+        normals->GetNumberOfTuples() != input->GetNumberOfPoints()))
+    {
+      normals = nullptr; // as PrepareNormals: computed, not an input array
+    }
+    if (!this->PrepareAttributes(input, normals, surface))
+    {
+      job.Output->Initialize();
+      this->Sources->Reset();
+      return true;
+    }
+    const bool cellsKnown = surface.ArraysPerCell.empty() ||
+      surface.TriangleCells.size() * 3 == surface.Triangles.size();
+    if (cellsKnown && this->Sources->Resample(surface, job.Output))
+    {
+      this->ProjectCellVectors(surface, job.Output);
+      this->LastUpdateResampled = true;
+      vtkDebugMacro("Same geometry as the last build: re-sampled the attributes alone.");
+      return true;
+    }
   }
   // A full build, which records its sources; the kept structure is let go first.
   this->Sources->Reset();
@@ -627,6 +647,14 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     return false;
   }
   vtkDataArray* normals = this->PrepareNormals(input, surface);
+  return this->PrepareAttributes(input, normals, surface);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::PrepareAttributes(vtkPolyData* input,
+  vtkDataArray* normals,
+  vtkOFBSurface& surface)
+{
   vtkDataArray* vectors = nullptr;
   if (!this->SelectVectors(input, surface, vectors))
   {

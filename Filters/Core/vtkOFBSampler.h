@@ -308,6 +308,7 @@ private:
    * reporting an error.
    */
   bool PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface);
+  bool PrepareAttributes(vtkPolyData* input, vtkDataArray* normals, vtkOFBSurface& surface);
   bool CopyPoints(vtkPolyData* input, vtkOFBSurface& surface);
   bool CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface);
   vtkDataArray* PrepareNormals(vtkPolyData* input, vtkOFBSurface& surface);
@@ -329,13 +330,14 @@ private:
     vtkOFBSamplerBackend::Job& job);
 
   /**
-   * Re-sample the attributes of `surface` alone on the kept structure when the
-   * geometry of `input` is that of the last build (StructureReuse); else set
-   * `job` up to record the sources of the build. True when re-sampled.
+   * Re-sample the attributes of `input` alone on the kept structure when its
+   * geometry is that of the last build (StructureReuse): the triangles of that
+   * build with the arrays of `input` (PrepareAttributes). Else set `job` up to
+   * record the sources of the build. True when the update is done (re-sampled, or
+   * failed with an error and an empty output).
    */
   bool ResampleAttributes(vtkInformation* inInfo,
     vtkPolyData* input,
-    const vtkOFBSurface& surface,
     vtkOFBSamplerBackend::Job& job);
 
   vtkSmartPointer<vtkOFBSamplerBackend> CPUBackend;

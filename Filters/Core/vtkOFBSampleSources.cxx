@@ -105,6 +105,25 @@ uint64_t HashArray(vtkDataArray* array, uint64_t seed)
   return Mix(h ^ static_cast<uint64_t>(n));
 }
 
+/// The memory of a table (vtkOFBSampleSources::Tables: kept between re-samplings).
+template<typename T>
+struct TableView
+{
+  T* Data = nullptr;
+  size_t Size = 0;
+  T& operator[](size_t i) const { return this->Data[i]; }
+  T* data() const { return this->Data; }
+  bool empty() const { return this->Size == 0; }
+};
+
+/// Room for n values of type T in `store` (which keeps its memory between calls).
+template<typename T>
+TableView<T> Reserve(std::vector<char>& store, size_t n)
+{
+  store.resize(n * sizeof(T));
+  return TableView<T>{ reinterpret_cast<T*>(store.data()), n };
+}
+
 /// The re-sampling of one array over samples [begin, end) from their sources.
 struct ResampleJob
 {
@@ -119,7 +138,7 @@ struct ResampleJob
 /// The paint: the point colours interpolated as vtkOFBAttributeInterpolator does, else DefaultColor.
 struct ColorJob : ResampleJob
 {
-  std::vector<float> Table; // per triangle 3 corners x 4 components
+  TableView<float> Table; // per triangle 3 corners x 4 components
   int NC;
   unsigned char Default[4];
   unsigned char* Out;
@@ -128,6 +147,7 @@ struct ColorJob : ResampleJob
     const vtkIdType* ids,
     const vtkTypeUInt32* order,
     vtkIdType nTriangles,
+    std::vector<char>& store,
     unsigned char* out)
     : NC(in.ColorComponents)
     , Out(out)
@@ -137,7 +157,7 @@ struct ColorJob : ResampleJob
     {
       return;
     }
-    this->Table.resize(static_cast<size_t>(12 * nTriangles));
+    this->Table = Reserve<float>(store, static_cast<size_t>(12 * nTriangles));
     const int nc = this->NC;
     vtkSMPTools::For(0,
       nTriangles,
@@ -196,7 +216,7 @@ struct ColorJob : ResampleJob
  */
 struct VectorJob : ResampleJob
 {
-  std::vector<float> Table; // per triangle 3 corners x 3 components
+  TableView<float> Table; // per triangle 3 corners x 3 components
   bool Project;
   const float* Normals;
   float* Out;
@@ -205,13 +225,14 @@ struct VectorJob : ResampleJob
     const vtkIdType* ids,
     const vtkTypeUInt32* order,
     vtkIdType nTriangles,
+    std::vector<char>& store,
     const float* normals,
     float* out)
     : Project(in.ProjectVectors)
     , Normals(normals)
     , Out(out)
   {
-    this->Table.resize(static_cast<size_t>(9 * nTriangles));
+    this->Table = Reserve<float>(store, static_cast<size_t>(9 * nTriangles));
     vtkSMPTools::For(0,
       nTriangles,
       Chunk,
@@ -262,7 +283,7 @@ struct VectorJob : ResampleJob
 template<typename T>
 struct TupleJob : ResampleJob
 {
-  std::vector<T> Table; // per triangle 3 corners x NC values, or NC for a cell array
+  TableView<T> Table; // per triangle 3 corners x NC values, or NC for a cell array
   int NC;
   bool PerCell;
   T* Out;
@@ -273,13 +294,14 @@ struct TupleJob : ResampleJob
     const vtkTypeUInt32* order,
     const vtkIdType* cells,
     vtkIdType nTriangles,
+    std::vector<char>& store,
     T* out)
     : NC(nc)
     , PerCell(cells != nullptr)
     , Out(out)
   {
     const int corners = cells ? 1 : 3;
-    this->Table.resize(static_cast<size_t>(corners * nc * nTriangles));
+    this->Table = Reserve<T>(store, static_cast<size_t>(corners * nc * nTriangles));
     vtkSMPTools::For(0,
       nTriangles,
       Chunk,
@@ -462,10 +484,19 @@ void vtkOFBSampleSources::Keep(vtkOFB* output,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBSampleSources::GetSurfaceTriangles(vtkOFBSurface& surface) const
+bool vtkOFBSampleSources::HasTriangleCells() const
 {
-  surface.Triangles = this->SurfaceTriangles;
-  surface.TriangleCells = this->TriangleCells;
+  return !this->TriangleCells.empty();
+}
+
+//------------------------------------------------------------------------------
+std::vector<char>& vtkOFBSampleSources::Table(size_t k)
+{
+  if (this->Tables.size() <= k)
+  {
+    this->Tables.resize(k + 1);
+  }
+  return this->Tables[k];
 }
 
 //------------------------------------------------------------------------------
@@ -477,6 +508,7 @@ void vtkOFBSampleSources::Reset()
   std::vector<vtkIdType>().swap(this->SurfaceTriangles);
   std::vector<vtkIdType>().swap(this->TriangleCells);
   std::vector<vtkTypeUInt32>().swap(this->Order);
+  this->Tables.clear();
   std::vector<vtkTypeUInt32>().swap(this->Triangles);
   std::vector<float>().swap(this->W1);
   std::vector<float>().swap(this->W2);
@@ -521,7 +553,7 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
         : nullptr);
   }
   output->ShallowCopy(this->Structure);
-  const vtkIdType* ids = surface.Triangles.data();
+  const vtkIdType* ids = this->SurfaceTriangles.data();
   // The tables have a record per triangle that a sample lies on, in the order of
   // this->Order.
   const vtkIdType nTriangles = static_cast<vtkIdType>(this->Order.size());
@@ -533,10 +565,10 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
   // its sources are in cache.
   std::vector<std::unique_ptr<ResampleJob>> jobs;
   const vtkOFBAttributeInterpolator interpolator(surface);
-  jobs.emplace_back(new ColorJob(interpolator, ids, order, nTriangles, colors->GetPointer(0)));
+  jobs.emplace_back(new ColorJob(interpolator, ids, order, nTriangles, this->Table(0), colors->GetPointer(0)));
   if (vectors && interpolator.PointVectors)
   {
-    jobs.emplace_back(new VectorJob(interpolator, ids, order, nTriangles,
+    jobs.emplace_back(new VectorJob(interpolator, ids, order, nTriangles, this->Table(1),
       vtkFloatArray::SafeDownCast(this->Normals)->GetPointer(0), vectors->GetPointer(0)));
   }
   vtkPointData* sampleData = output->GetSampleData();
@@ -554,12 +586,13 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
     {
       continue;
     }
-    const vtkIdType* cells = surface.GetArrayCells(k);
+    const bool perCell = k < surface.ArraysPerCell.size() && surface.ArraysPerCell[k];
+    const vtkIdType* cells = perCell ? this->TriangleCells.data() : nullptr;
     switch (in->GetDataType())
     {
       vtkTemplateMacro(jobs.emplace_back(new TupleJob<VTK_TT>(static_cast<const VTK_TT*>(
                                                                  in->GetVoidPointer(0)),
-        in->GetNumberOfComponents(), ids, order, cells, nTriangles,
+        in->GetNumberOfComponents(), ids, order, cells, nTriangles, this->Table(2 + k),
         static_cast<VTK_TT*>(out->GetVoidPointer(0)))));
     }
     if (static_cast<int>(k) == surface.TCoordsIndex)

@@ -87,15 +87,16 @@ public:
   void Keep(vtkOFB* output, vtkPolyData* input, Key& key, const vtkOFBSurface& surface);
 
   /**
-   * Give `surface` the triangles (and their input cells, where the build had cell
-   * arrays) of the kept build.
+   * Whether the kept build has the input cell of each of its triangles (it had
+   * cell arrays to pass), which a re-sampling of cell arrays needs.
    */
-  void GetSurfaceTriangles(vtkOFBSurface& surface) const;
+  bool HasTriangleCells() const;
 
   /**
-   * Give `output` the kept structure and the attributes of `surface` (the
-   * prepared input of the same geometry) interpolated from the kept sources.
-   * False when nothing is kept.
+   * Give `output` the kept structure and the arrays of `surface` (the attributes
+   * of an input of the same geometry, see vtkOFBSampler::PrepareAttributes: its
+   * triangles and their cells are the kept ones) interpolated from the kept
+   * sources. False when nothing is kept.
    */
   bool Resample(const vtkOFBSurface& surface, vtkOFB* output);
 
@@ -122,7 +123,11 @@ private:
   std::vector<vtkTypeUInt32> Triangles; // per sample, renumbered (see Order)
   std::vector<vtkTypeUInt32> Order;     // the surface triangle of each renumbered one
   std::vector<float> W1, W2;
+  /// The memory of the tables of a re-sampling, kept for the next one.
+  std::vector<char>& Table(size_t k);
+
   std::vector<vtkIdType> SurfaceTriangles, TriangleCells;
+  std::vector<std::vector<char>> Tables;
   vtkSmartPointer<vtkOFB> Structure;
   vtkSmartPointer<vtkDataArray> Normals;
   Key Kept;

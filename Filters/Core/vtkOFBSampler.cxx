@@ -584,7 +584,6 @@ bool vtkOFBSampler::ResampleAttributes(vtkInformation* inInfo,
     // The geometry was checked and prepared by the last build: its triangles (and
     // their input cells) with this input's arrays.
     vtkOFBSurface surface;
-    this->Sources->GetSurfaceTriangles(surface);
     vtkDataArray* normals = input->GetPointData()->GetNormals();
     if (normals &&
       (normals->GetNumberOfComponents() != 3 ||
@@ -598,8 +597,7 @@ bool vtkOFBSampler::ResampleAttributes(vtkInformation* inInfo,
       this->Sources->Reset();
       return true;
     }
-    const bool cellsKnown = surface.ArraysPerCell.empty() ||
-      surface.TriangleCells.size() * 3 == surface.Triangles.size();
+    const bool cellsKnown = surface.ArraysPerCell.empty() || this->Sources->HasTriangleCells();
     if (cellsKnown && this->Sources->Resample(surface, job.Output))
     {
       this->ProjectCellVectors(surface, job.Output);

@@ -96,9 +96,11 @@
 #include "vtkOFBFlowPathsModule.h" // for export macro
 #include "vtkSmartPointer.h"       // for member
 
-#include <memory> // for std::unique_ptr
+#include <cstdint> // for HashGeometry
+#include <memory>  // for std::unique_ptr
 
 class vtkAlgorithmOutput;
+class vtkDataArray;
 class vtkOFB;
 class vtkOFBBrush;
 class vtkDataSet;
@@ -422,6 +424,8 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   virtual int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  /// An unsteady input is asked for the time step at or after the requested time.
+  virtual int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   ///@{
@@ -429,6 +433,20 @@ protected:
    * The steps of RequestData (see the .cxx).
    */
   bool CheckSettings();
+  ///@{
+  /**
+   * Pathlines through an unsteady input (vtkOFBParticleAdvectorTime.cxx): whether
+   * port 0 reports TIME_STEPS; a hash of a surface's points and cells; keep the
+   * field of a new time step (the newer of the two around the particles' time);
+   * the steps from the particles' time to `time` (their duration in the
+   * internals); the field and stepper of step k.
+   */
+  bool IsUnsteady(vtkInformationVector** inputVector) const;
+  static uint64_t HashGeometry(vtkPolyData* surface);
+  void KeepField(vtkPolyData* surface, vtkDataArray* vectors, bool rebuilt);
+  vtkIdType PlanUnsteadySteps(double time);
+  void PrepareUnsteadyStep(vtkIdType k);
+  ///@}
   bool PrepareSurface(vtkPolyData* surface, vtkInformationVector** inputVector, bool& rebuilt);
   bool PrepareOFB(vtkOFB* inputOFB, vtkPolyData* surface);
   bool NeedsRestart(vtkDataSet* seeds);

@@ -178,6 +178,19 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
       return false;
     }
   }
+  if (in.Unsteady && in.Started && in.SurfaceObject &&
+    surface->GetNumberOfPoints() == static_cast<vtkIdType>(in.FieldNew.size() / 3) &&
+    vtkOFBParticleAdvector::HashGeometry(surface) == in.GeometryHash)
+  {
+    // A new time step of the same surface: the field alone changes, the particles
+    // go on (vtkOFBParticleAdvectorTime.cxx).
+    this->KeepField(surface, pointVectors, false);
+    in.SurfaceObject = surface;
+    in.SurfaceTime = ContentTime(surface);
+    in.VectorArray = vectors;
+    in.VectorTime = vectors->GetMTime();
+    return true;
+  }
 
   vtkSmartPointer<vtkPolyData> triangles = surface;
   if (surface->GetNumberOfStrips() > 0 || surface->GetPolys()->IsHomogeneous() != 3)
@@ -207,6 +220,11 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
   in.SurfaceTime = ContentTime(surface);
   in.VectorArray = vectors;
   in.VectorTime = vectors->GetMTime();
+  if (in.Unsteady)
+  {
+    in.GeometryHash = vtkOFBParticleAdvector::HashGeometry(surface);
+    this->KeepField(surface, pointVectors, true);
+  }
   rebuilt = true;
   return true;
 }

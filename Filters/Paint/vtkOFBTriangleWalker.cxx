@@ -122,6 +122,27 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBTriangleWalker::SetPointVectors(const double* vectors)
+{
+  const vtkIdType numTriangles = this->GetNumberOfTriangles();
+  double largest = 0.0;
+  for (vtkIdType t = 0; t < numTriangles; ++t)
+  {
+    const glm::dvec3& ex = this->Axes[2 * t];
+    const glm::dvec3& ey = this->Axes[2 * t + 1];
+    vtkOFBWalkerTriangle& r = this->Records[t];
+    for (int i = 0; i < 3; ++i)
+    {
+      const double* v = vectors + 3 * this->Corners[3 * t + i];
+      const glm::dvec3 w(v[0], v[1], v[2]);
+      r.Vector[i] = glm::vec2(glm::dot(w, ex), glm::dot(w, ey));
+      largest = std::max(largest, glm::dot(w, w));
+    }
+  }
+  this->MaximumSpeed = std::sqrt(largest);
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBTriangleWalker::BuildGeometry()
 {
   const vtkIdType numTriangles = this->GetNumberOfTriangles();

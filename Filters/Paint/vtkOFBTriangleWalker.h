@@ -162,6 +162,14 @@ public:
    */
   bool Build(vtkPolyData* surface, vtkDataArray* vectors, std::string& error);
 
+  /**
+   * Replace the field, on the same surface, by the point vectors `vectors` (3
+   * doubles a point, world units, as many points as the surface Build took): each
+   * triangle's corner vectors projected into its plane, and the largest speed.
+   * For a field that changes in time on a fixed surface (no rebuild).
+   */
+  void SetPointVectors(const double* vectors);
+
   /// The triangles of the walker (the same points, only its triangles) for a locator.
   vtkPolyData* GetTriangles() const { return this->Triangles; }
 

@@ -59,6 +59,8 @@ vtkOFBLIC::vtkOFBLIC()
   , MaskIntensity(0.0)
   , CacheStreamlines(true)
   , NumberOfMaskedSamples(0)
+  , LastRecomputed(0)
+  , LastStructureMTime(0)
   , LastExecutionTime(0.0)
   , Internals(new vtkInternals)
 {
@@ -179,11 +181,19 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
     .Add(this->NormalizeVectors ? 1.0 : 0.0)
     .Add(this->MaskThreshold)
     .Add(this->MaskOnSurface ? 1.0 : 0.0);
+  if (input->GetStructureMTime() != this->LastStructureMTime)
+  {
+    this->LastRecomputed |= RECOMPUTED_STRUCTURE;
+    this->LastStructureMTime = input->GetStructureMTime();
+  }
   if (cache.SamplesKey != samplesKey)
   {
+    this->LastRecomputed |= RECOMPUTED_SAMPLES;
+    // The noise depends on the samples' positions alone, which the structure gives
+    // (its key has the structure's time): a new field on the same structure (a new
+    // time step re-sampled by vtkOFBSampler) keeps it.
     cache.SamplesKey = vtkOFBLICCacheKey();
     cache.LinesKey = vtkOFBLICCacheKey();
-    cache.NoiseKey = vtkOFBLICCacheKey();
     cache.Masked = this->PrepareSamples(input, vectors, normals);
     cache.SamplesKey = samplesKey;
   }
@@ -216,6 +226,7 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
   }
   if (cache.NoiseKey != noiseKey)
   {
+    this->LastRecomputed |= RECOMPUTED_NOISE;
     cache.NoiseKey = vtkOFBLICCacheKey();
     if (!this->PrepareNoise(input))
     {
@@ -488,6 +499,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   this->NumberOfMaskedSamples = 0;
+  this->LastRecomputed = 0;
   if (!input || !output)
   {
     vtkErrorMacro("No input OFB.");
@@ -561,6 +573,15 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   {
     cache.LinesKey = vtkOFBLICCacheKey();
   }
+  if (trace && this->NumberOfSteps > 0)
+  {
+    this->LastRecomputed |= RECOMPUTED_STREAMLINES;
+  }
+  vtkDebugMacro("Recomputed:" << (this->LastRecomputed & RECOMPUTED_STRUCTURE ? " structure" : "")
+                              << (this->LastRecomputed & RECOMPUTED_SAMPLES ? " samples" : "")
+                              << (this->LastRecomputed & RECOMPUTED_NOISE ? " noise" : "")
+                              << (this->LastRecomputed & RECOMPUTED_STREAMLINES ? " streamlines" : "")
+                              << "; convolved.");
   vtkOFBLICBuffer<float>& values = cache.Values;
   values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
@@ -650,5 +671,6 @@ void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaskIntensity: " << this->MaskIntensity << "\n";
   os << indent << "CacheStreamlines: " << (this->CacheStreamlines ? "On" : "Off") << "\n";
   os << indent << "NumberOfMaskedSamples: " << this->NumberOfMaskedSamples << "\n";
+  os << indent << "LastRecomputed: " << this->LastRecomputed << "\n";
   os << indent << "LastExecutionTime: " << this->LastExecutionTime << " ms\n";
 }

@@ -135,7 +135,8 @@ struct ResampleJob
     const float* w2) const = 0;
 };
 
-/// The paint: the point colours interpolated as vtkOFBAttributeInterpolator does, else DefaultColor.
+/// The paint: the point colours interpolated as vtkOFBAttributeInterpolator does, else
+/// DefaultColor.
 struct ColorJob : ResampleJob
 {
   TableView<float> Table; // per triangle 3 corners x 4 components
@@ -412,8 +413,7 @@ uint64_t vtkOFBSampleSources::HashGeometry(vtkPolyData* input)
 bool vtkOFBSampleSources::Matches(vtkPolyData* input, Key& key)
 {
   if (!this->Structure || key.Resolution != this->Kept.Resolution ||
-    key.Backend != this->Kept.Backend ||
-    !std::equal(key.Sizes, key.Sizes + 3, this->Kept.Sizes))
+    key.Backend != this->Kept.Backend || !std::equal(key.Sizes, key.Sizes + 3, this->Kept.Sizes))
   {
     return false;
   }
@@ -536,8 +536,9 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
   {
     return false;
   }
-  vtkSmartPointer<vtkUnsignedCharArray> colors = vtkUnsignedCharArray::SafeDownCast(
-    vtkOFBSampleArrays::NewArray(output, vtkOFB::ColorsArrayName(), VTK_UNSIGNED_CHAR, nullptr, 4, n));
+  vtkSmartPointer<vtkUnsignedCharArray> colors =
+    vtkUnsignedCharArray::SafeDownCast(vtkOFBSampleArrays::NewArray(
+      output, vtkOFB::ColorsArrayName(), VTK_UNSIGNED_CHAR, nullptr, 4, n));
   vtkSmartPointer<vtkFloatArray> vectors;
   if (surface.Vectors)
   {
@@ -565,11 +566,17 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
   // its sources are in cache.
   std::vector<std::unique_ptr<ResampleJob>> jobs;
   const vtkOFBAttributeInterpolator interpolator(surface);
-  jobs.emplace_back(new ColorJob(interpolator, ids, order, nTriangles, this->Table(0), colors->GetPointer(0)));
+  jobs.emplace_back(
+    new ColorJob(interpolator, ids, order, nTriangles, this->Table(0), colors->GetPointer(0)));
   if (vectors && interpolator.PointVectors)
   {
-    jobs.emplace_back(new VectorJob(interpolator, ids, order, nTriangles, this->Table(1),
-      vtkFloatArray::SafeDownCast(this->Normals)->GetPointer(0), vectors->GetPointer(0)));
+    jobs.emplace_back(new VectorJob(interpolator,
+      ids,
+      order,
+      nTriangles,
+      this->Table(1),
+      vtkFloatArray::SafeDownCast(this->Normals)->GetPointer(0),
+      vectors->GetPointer(0)));
   }
   vtkPointData* sampleData = output->GetSampleData();
   sampleData->SetScalars(colors);
@@ -590,10 +597,15 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
     const vtkIdType* cells = perCell ? this->TriangleCells.data() : nullptr;
     switch (in->GetDataType())
     {
-      vtkTemplateMacro(jobs.emplace_back(new TupleJob<VTK_TT>(static_cast<const VTK_TT*>(
-                                                                 in->GetVoidPointer(0)),
-        in->GetNumberOfComponents(), ids, order, cells, nTriangles, this->Table(2 + k),
-        static_cast<VTK_TT*>(out->GetVoidPointer(0)))));
+      vtkTemplateMacro(
+        jobs.emplace_back(new TupleJob<VTK_TT>(static_cast<const VTK_TT*>(in->GetVoidPointer(0)),
+          in->GetNumberOfComponents(),
+          ids,
+          order,
+          cells,
+          nTriangles,
+          this->Table(2 + k),
+          static_cast<VTK_TT*>(out->GetVoidPointer(0)))));
     }
     if (static_cast<int>(k) == surface.TCoordsIndex)
     {

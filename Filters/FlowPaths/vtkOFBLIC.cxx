@@ -577,11 +577,12 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   {
     this->LastRecomputed |= RECOMPUTED_STREAMLINES;
   }
-  vtkDebugMacro("Recomputed:" << (this->LastRecomputed & RECOMPUTED_STRUCTURE ? " structure" : "")
-                              << (this->LastRecomputed & RECOMPUTED_SAMPLES ? " samples" : "")
-                              << (this->LastRecomputed & RECOMPUTED_NOISE ? " noise" : "")
-                              << (this->LastRecomputed & RECOMPUTED_STREAMLINES ? " streamlines" : "")
-                              << "; convolved.");
+  vtkDebugMacro(
+    "Recomputed:" << (this->LastRecomputed & RECOMPUTED_STRUCTURE ? " structure" : "")
+                  << (this->LastRecomputed & RECOMPUTED_SAMPLES ? " samples" : "")
+                  << (this->LastRecomputed & RECOMPUTED_NOISE ? " noise" : "")
+                  << (this->LastRecomputed & RECOMPUTED_STREAMLINES ? " streamlines" : "")
+                  << "; convolved.");
   vtkOFBLICBuffer<float>& values = cache.Values;
   values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;

@@ -14,10 +14,11 @@
  * - port 0: the surface, a vtkPolyData with a vector field. The field is the
  *   point array chosen with SetInputArrayToProcess(0, 0, 0, association, name)
  *   (default: the active point vectors); each use projects it into the tangent
- *   plane of the triangle at hand. Cell vectors are averaged to the points, with
- *   a warning. Polygons are triangulated; lines and vertices are ignored. A
- *   missing field, one without 3 components, one that is zero everywhere or has
- *   non-finite values gives an error and empty outputs.
+ *   plane of the triangle at hand. A cell array (or, without a point field, the
+ *   active cell vectors) holds on its cells' triangles, as vtkOFBSampler's cell
+ *   arrays do: each triangle carries its cell's vector. Polygons are triangulated; lines and
+ * vertices are ignored. A missing field, one without 3 components, one that is zero everywhere or
+ * has non-finite values gives an error and empty outputs.
  * - port 1 (optional): the OFB to paint. The advector paints a copy that it keeps
  *   from step to step (taken again when that input changes); port 0 of the output
  *   is that copy. Alternatively SetOFB() gives an OFB that the application holds:
@@ -78,6 +79,18 @@
  * moves particles (integrator, step size, seeds...) or an input restarts them
  * from the seeds on the next update; appearance settings (colours, footprint,
  * trail length) apply from the next step.
+ *
+ * Unsteady fields. When the surface (port 0) reports TIME_STEPS, time is the
+ * input's and the particles follow pathlines, as vtkParticleTracer does: a request
+ * for time t asks the input for the step at or after t and keeps the step before
+ * from the previous update; the field is linear in time between the two (at the
+ * middle of each integration step), and the particles go on from their time to t
+ * in steps of at most StepSize cells for the fastest point (NormalizeVectors does
+ * not apply). A new time step of the same geometry changes the field alone (no
+ * restart); a time before the particles' time restarts them from the seeds there;
+ * times outside the input's steps hold the nearest step's field (clamped, as VTK's
+ * readers do); a non-finite time is an error. Step() has no effect then. The
+ * outputs' DATA_TIME_STEP is the particles' time.
  *
  * Outputs: port 0 the painted OFB; port 1 the particles as vertices, with point
  * arrays "Velocity" (the field at the particle in its tangent plane, world units,

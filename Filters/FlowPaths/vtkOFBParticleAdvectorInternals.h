@@ -117,6 +117,7 @@ public:
   // An unsteady input (TIME_STEPS on port 0): the fields (3 per point) of the two
   // time steps around the particles' time, their times and largest speeds.
   bool Unsteady = false;
+  bool FieldPerCell = false; // the field is a cell array (3 per cell), else per point
   uint64_t GeometryHash = 0;
   std::vector<double> FieldOld, FieldNew, Blend;
   double TimeOld = 0.0, TimeNew = 0.0;

@@ -29,8 +29,8 @@ uint64_t HashValues(vtkDataArray* array, uint64_t h)
   const vtkIdType n = array->GetNumberOfValues();
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const double v = array->GetComponent(i / array->GetNumberOfComponents(),
-      static_cast<int>(i % array->GetNumberOfComponents()));
+    const double v = array->GetComponent(
+      i / array->GetNumberOfComponents(), static_cast<int>(i % array->GetNumberOfComponents()));
     uint64_t bits;
     std::memcpy(&bits, &v, sizeof(bits));
     h = (h ^ bits) * 0x100000001b3ULL;
@@ -58,7 +58,7 @@ void vtkOFBParticleAdvector::KeepField(vtkPolyData* surface, vtkDataArray* vecto
   const double time = surface->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
     ? surface->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
     : 0.0;
-  const vtkIdType n = surface->GetNumberOfPoints();
+  const vtkIdType n = in.FieldPerCell ? surface->GetNumberOfCells() : surface->GetNumberOfPoints();
   std::vector<double> field(3 * static_cast<size_t>(n));
   double largest = 0.0;
   for (vtkIdType i = 0; i < n; ++i)
@@ -157,7 +157,14 @@ void vtkOFBParticleAdvector::PrepareUnsteadyStep(vtkIdType k)
   {
     in.Blend[i] = (1.0 - w) * in.FieldOld[i] + w * in.FieldNew[i];
   }
-  in.Walker.SetPointVectors(in.Blend.data());
+  if (in.FieldPerCell)
+  {
+    in.Walker.SetCellVectors(in.Blend.data());
+  }
+  else
+  {
+    in.Walker.SetPointVectors(in.Blend.data());
+  }
   vtkOFBParticleStepper& stepper = in.System.Stepper;
   stepper.Normalize = false;
   stepper.Scale = 1.0;

@@ -23,9 +23,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <time.h>
 #include <sstream>
 #include <string>
+#include <time.h>
 #include <vector>
 
 namespace
@@ -122,14 +122,18 @@ int main(int argc, char* argv[])
   }
   if (meshes.empty())
   {
-    for (const char* name :
-      { "stanford-bunny.obj", "horse.ply", "spot.obj", "teapot.obj", "fandisk.obj", "rocker-arm.obj" })
+    for (const char* name : { "stanford-bunny.obj",
+           "horse.ply",
+           "spot.obj",
+           "teapot.obj",
+           "fandisk.obj",
+           "rocker-arm.obj" })
     {
       meshes.push_back(std::string(VTKOFB_DATA_DIR) + "/" + name);
     }
   }
-  std::printf("threads: %d (%s)\n", vtkSMPTools::GetEstimatedNumberOfThreads(),
-    vtkSMPTools::GetBackend());
+  std::printf(
+    "threads: %d (%s)\n", vtkSMPTools::GetEstimatedNumberOfThreads(), vtkSMPTools::GetBackend());
   std::printf("| mesh | cells | samples | full build ms | re-sampling ms | full / re-sampling | "
               "full build thread CPU ms | re-sampling thread CPU ms | full / re-sampling (CPU) "
               "|\n");
@@ -174,9 +178,16 @@ int main(int argc, char* argv[])
       {
         return 1;
       }
-      std::printf("| %s | %d | %lld | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n", name.c_str(),
-        resolution, static_cast<long long>(samples), fullMs, resampleMs, fullMs / resampleMs,
-        fullCpu, resampleCpu, fullCpu / resampleCpu);
+      std::printf("| %s | %d | %lld | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
+        name.c_str(),
+        resolution,
+        static_cast<long long>(samples),
+        fullMs,
+        resampleMs,
+        fullMs / resampleMs,
+        fullCpu,
+        resampleCpu,
+        fullCpu / resampleCpu);
       std::fflush(stdout);
     }
   }

@@ -34,12 +34,12 @@ public:
 
   /// The mesh (its points are copied into new arrays at every step, as a reader does).
   vtkSmartPointer<vtkPolyData> Mesh;
-  double Omega = 1.0;  // angular speed (rad per unit time)
-  double Alpha = 1.0;  // turning rate of the axis (rad per unit time)
-  double Step = 0.1;   // time between steps
+  double Omega = 1.0; // angular speed (rad per unit time)
+  double Alpha = 1.0; // turning rate of the axis (rad per unit time)
+  double Step = 0.1;  // time between steps
   int NumberOfSteps = 21;
-  int Executions = 0;                  // RequestData calls
-  std::vector<double> RequestedTimes;  // UPDATE_TIME_STEP of each call
+  int Executions = 0;                 // RequestData calls
+  std::vector<double> RequestedTimes; // UPDATE_TIME_STEP of each call
 
   /// The axis w(t).
   void Axis(double t, double w[3]) const
@@ -96,7 +96,9 @@ public:
 protected:
   TurningRotationSource() { this->SetNumberOfInputPorts(0); }
 
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  int RequestInformation(vtkInformation*,
+    vtkInformationVector**,
+    vtkInformationVector* out) override
   {
     vtkInformation* info = out->GetInformationObject(0);
     std::vector<double> steps(this->NumberOfSteps);

@@ -193,7 +193,8 @@ TEST(OFBSampleSources, TimeSeriesReuseTheStructure)
   sampler->UpdateTimeStep(0.5);
   EXPECT_TRUE(sampler->GetLastUpdateResampled());
   EXPECT_EQ(sampler->GetOutput()->GetStructureMTime(), structure);
-  EXPECT_DOUBLE_EQ(sampler->GetOutput()->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 0.5);
+  EXPECT_DOUBLE_EQ(
+    sampler->GetOutput()->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 0.5);
 
   vtkNew<vtkOFBSampler> direct;
   direct->SetResolution(128);

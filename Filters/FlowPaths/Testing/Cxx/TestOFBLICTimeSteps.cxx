@@ -30,12 +30,13 @@ TEST(OFBLICTimeSteps, ANewStepKeepsTheStructureAndTheNoise)
     vtkOFBLIC::RECOMPUTED_NOISE | vtkOFBLIC::RECOMPUTED_STREAMLINES;
   EXPECT_EQ(lic->GetLastRecomputed(), all);
   vtkNew<vtkFloatArray> first;
-  first->DeepCopy(vtkOFB::SafeDownCast(lic->GetOutputDataObject(0))->GetSampleData()->GetArray("LIC"));
+  first->DeepCopy(
+    vtkOFB::SafeDownCast(lic->GetOutputDataObject(0))->GetSampleData()->GetArray("LIC"));
 
   lic->UpdateTimeStep(1.0);
   EXPECT_TRUE(sampler->GetLastUpdateResampled());
-  EXPECT_EQ(lic->GetLastRecomputed(),
-    vtkOFBLIC::RECOMPUTED_SAMPLES | vtkOFBLIC::RECOMPUTED_STREAMLINES);
+  EXPECT_EQ(
+    lic->GetLastRecomputed(), vtkOFBLIC::RECOMPUTED_SAMPLES | vtkOFBLIC::RECOMPUTED_STREAMLINES);
   vtkDataArray* second =
     vtkOFB::SafeDownCast(lic->GetOutputDataObject(0))->GetSampleData()->GetArray("LIC");
   ASSERT_NE(second, nullptr);

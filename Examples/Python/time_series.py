@@ -147,7 +147,7 @@ advector = vtkofb.vtkOFBParticleAdvector()
 advector.SetInputConnection(series.GetOutputPort())
 advector.SetNumberOfParticles(args.particles)
 advector.SetStepSize(1.0)
-advector.SetTrailLength(40)
+advector.SetTrailLength(60)
 advector.PaintOff()
 
 mapper = vtkofb.vtkOFBPolyDataMapper()
@@ -163,10 +163,14 @@ surface.SetMapper(mapper)
 trails = vtkPolyDataMapper()
 trails.SetInputConnection(advector.GetOutputPort(2))
 trails.ScalarVisibilityOff()
+# The trails lie on the surface: drawn in front of it (VTK's coincident topology offset).
+trails.SetResolveCoincidentTopologyToPolygonOffset()
+trails.SetRelativeCoincidentTopologyLineOffsetParameters(-4.0, -40.0)
 lines = vtkActor()
 lines.SetMapper(trails)
-lines.GetProperty().SetColor(1.0, 0.35, 0.1)
-lines.GetProperty().SetLineWidth(2.0)
+lines.GetProperty().SetColor(1.0, 0.55, 0.1)
+lines.GetProperty().SetLineWidth(3.0)
+lines.GetProperty().LightingOff()
 
 failures = []
 window = None

@@ -214,7 +214,8 @@ public:
 
   /**
    * Free the build buffers the CPU backend keeps between updates (triangle setups
-   * and spans, a few hundred bytes per triangle); the next update allocates them again.
+   * and spans, a few hundred bytes per triangle) and the sources kept for
+   * re-sampling (StructureReuse); the next update allocates them again (and builds).
    */
   void ReleaseBuffers();
 

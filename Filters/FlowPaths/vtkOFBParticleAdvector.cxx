@@ -347,7 +347,7 @@ int vtkOFBParticleAdvector::RequestInformation(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBParticleAdvector::RequestData(vtkInformation*,
+int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
@@ -432,7 +432,27 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
       in.TimeOld = in.TimeNew;
       in.SpeedOld = in.SpeedNew;
     }
-    target = system.CurrentStep + this->PlanUnsteadySteps(requested);
+    // One input step at a time: up to the step just read when the requested time is
+    // beyond it and the input has more, and then again (CONTINUE_EXECUTING, as
+    // vtkParticleTracer does) with the next one.
+    in.Goal = requested;
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    const double* steps = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    const int numSteps = inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    if (in.TimeNew < requested && in.TimeNew > in.ParticleTime &&
+      std::upper_bound(steps, steps + numSteps, in.TimeNew) != steps + numSteps)
+    {
+      in.Goal = in.TimeNew;
+    }
+    if (in.Goal < requested)
+    {
+      request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+    }
+    else
+    {
+      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+    }
+    target = system.CurrentStep + this->PlanUnsteadySteps(in.Goal);
   }
   else if (in.PendingSteps > 0)
   {
@@ -505,7 +525,7 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   in.OutputTime = Milliseconds(Clock::now() - outputStart);
   if (in.Unsteady)
   {
-    in.ParticleTime = requested;
+    in.ParticleTime = in.Goal;
   }
   const double time = in.Unsteady ? in.ParticleTime : static_cast<double>(system.CurrentStep);
   for (int i = 0; i < 3; ++i)

@@ -83,7 +83,8 @@
  * Unsteady fields. When the surface (port 0) reports TIME_STEPS, time is the
  * input's and the particles follow pathlines, as vtkParticleTracer does: a request
  * for time t asks the input for the step at or after t and keeps the step before
- * from the previous update; the field is linear in time between the two (at the
+ * from the previous update, one input step at a time when t is beyond the next one
+ * (CONTINUE_EXECUTING); the field is linear in time between the two (at the
  * middle of each integration step), and the particles go on from their time to t
  * in steps of at most StepSize cells for the fastest point (NormalizeVectors does
  * not apply). A new time step of the same geometry changes the field alone (no

@@ -119,6 +119,15 @@ int vtkOFBParticleAdvector::RequestUpdateExtent(vtkInformation*,
   const double* steps = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   const int n = inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   const double* upper = std::lower_bound(steps, steps + n, std::isfinite(t) ? t : steps[0]);
+  const vtkInternals& in = *this->Internals;
+  if (in.Started && in.Unsteady && std::isfinite(t) && t > in.TimeNew &&
+    in.ParticleTime <= in.TimeNew)
+  {
+    // Going on forward: the step after the newest one read, one step at a time
+    // (RequestData continues executing until the requested time).
+    const double* next = std::upper_bound(steps, steps + n, in.TimeNew);
+    upper = std::min(upper, next);
+  }
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(),
     upper == steps + n ? steps[n - 1] : *upper);
   return 1;

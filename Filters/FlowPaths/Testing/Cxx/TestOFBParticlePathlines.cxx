@@ -142,3 +142,40 @@ TEST(OFBParticlePathlines, TimeBackwardsRestartsAndOutsideTheRangeIsClamped)
   EXPECT_NE(messages->Errors.find("not finite"), std::string::npos);
   EXPECT_EQ(p.Advector->GetParticles()->GetNumberOfPoints(), 0);
 }
+
+TEST(OFBParticlePathlines, ARequestThatSkipsStepsGoesThroughEach)
+{
+  // From t = 0 straight to t = 2: the advector reads every step between (one
+  // execution a step) and ends where the step-by-step run ends.
+  Pipeline jump;
+  jump.Advector->UpdateTimeStep(0.0);
+  vtkNew<vtkPoints> start;
+  start->DeepCopy(jump.Advector->GetParticles()->GetPoints());
+  const size_t before = jump.Source->RequestedTimes.size();
+  jump.Advector->UpdateTimeStep(2.0);
+  EXPECT_EQ(jump.Source->RequestedTimes.size() - before, 20u);
+  EXPECT_DOUBLE_EQ(
+    jump.Advector->GetParticles()->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 2.0);
+
+  Pipeline stepwise;
+  for (int k = 0; k <= 20; ++k)
+  {
+    stepwise.Advector->UpdateTimeStep(0.1 * k);
+  }
+  vtkPoints* a = jump.Advector->GetParticles()->GetPoints();
+  vtkPoints* b = stepwise.Advector->GetParticles()->GetPoints();
+  ASSERT_EQ(a->GetNumberOfPoints(), 12);
+  ASSERT_EQ(b->GetNumberOfPoints(), 12);
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < 12; ++i)
+  {
+    double x[3], y[3], exact[3];
+    a->GetPoint(i, x);
+    b->GetPoint(i, y);
+    start->GetPoint(i, exact);
+    jump.Source->Advance(exact, 0.0, 2.0);
+    EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(x, y)), 1e-6);
+    worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(x, exact)));
+  }
+  EXPECT_LT(worst, BoundInCells * jump.Cell());
+}

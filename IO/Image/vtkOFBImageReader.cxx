@@ -9,7 +9,7 @@
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-#include <OpenImageIO/imageio.h>
+#include "vtkOFBImageBackend.h"
 
 #include <sys/stat.h>
 
@@ -22,71 +22,11 @@ vtkStandardNewMacro(vtkOFBImageReader);
 
 namespace
 {
-/// The VTK type for OpenImageIO's sample type: VTK_UNSIGNED_CHAR, VTK_UNSIGNED_SHORT,
-/// VTK_FLOAT, or 0 for a type that is not read.
-int ScalarTypeOf(OIIO::TypeDesc type)
-{
-  switch (type.basetype)
-  {
-    case OIIO::TypeDesc::UINT8:
-      return VTK_UNSIGNED_CHAR;
-    case OIIO::TypeDesc::UINT16:
-      return VTK_UNSIGNED_SHORT;
-    case OIIO::TypeDesc::HALF:
-    case OIIO::TypeDesc::FLOAT:
-    case OIIO::TypeDesc::DOUBLE:
-      return VTK_FLOAT;
-    default:
-      return 0;
-  }
-}
-
-/// The wider of two VTK scalar types of ScalarTypeOf (0 stays 0).
-int Wider(int a, int b)
-{
-  if (a == 0 || b == 0)
-  {
-    return 0;
-  }
-  auto rank = [](int t) { return t == VTK_UNSIGNED_CHAR ? 0 : (t == VTK_UNSIGNED_SHORT ? 1 : 2); };
-  return rank(a) >= rank(b) ? a : b;
-}
-
-OIIO::TypeDesc TypeDescOf(int scalarType)
-{
-  return scalarType == VTK_UNSIGNED_CHAR
-    ? OIIO::TypeDesc::UINT8
-    : (scalarType == VTK_UNSIGNED_SHORT ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::FLOAT);
-}
-
-/// The reader's configuration: alpha as the file stores it (no premultiplication).
-OIIO::ImageSpec ReadConfiguration()
-{
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  return config;
-}
-
-/// OpenImageIO's pending error message (it keeps one per thread), or `fallback`.
-std::string PendingError(const OIIO::ImageInput* input, const std::string& fallback)
-{
-  std::string message = input ? input->geterror() : std::string();
-  const std::string global = OIIO::geterror();
-  if (message.empty())
-  {
-    message = global;
-  }
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-  {
-    message.pop_back();
-  }
-  return message.empty() ? fallback : message;
-}
-
 /// A code for a decoder's message: cut short, or damaged.
 unsigned long CodeOf(const std::string& message)
 {
-  for (const char* word : { "end of file", "premature", "truncated", "short", "EOF", "Read error" })
+  for (const char* word :
+    { "end of file", "premature", "Premature", "truncated", "short", "EOF", "Read error" })
   {
     if (message.find(word) != std::string::npos)
     {
@@ -117,13 +57,10 @@ bool vtkOFBImageReader::CanReadFile(const char* fileName)
   {
     return false;
   }
-  const OIIO::ImageSpec config = ReadConfiguration();
-  auto input = OIIO::ImageInput::open(fileName, &config);
-  const bool ok = input != nullptr;
-  if (!ok)
-  {
-    OIIO::geterror(); // clear it
-  }
+  std::string error;
+  const vtkOFBImageBackendAPI* api = vtkOFBLoadImageBackend(error);
+  vtkOFBImageHeader header;
+  const bool ok = api && api->ReadHeader(fileName, header, error);
   return ok;
 }
 
@@ -176,63 +113,64 @@ int vtkOFBImageReader::RequestInformation(vtkInformation*,
     this->Fail("an empty file", vtkErrorCode::PrematureEndOfFileError);
     return 1;
   }
-  const OIIO::ImageSpec config = ReadConfiguration();
-  auto input = OIIO::ImageInput::open(this->FileName, &config);
-  if (!input)
+  std::string error;
+  const vtkOFBImageBackendAPI* api = vtkOFBLoadImageBackend(error);
+  if (!api)
+  {
+    this->Fail(error, vtkErrorCode::UnknownError);
+    return 1;
+  }
+  vtkOFBImageHeader spec;
+  if (!api->ReadHeader(this->FileName, spec, error))
   {
     this->Fail("not an image file that OpenImageIO reads, or a damaged one (" +
-        PendingError(nullptr, "no format recognizes it") + ")",
+        (error.empty() ? std::string("no format recognizes it") : error) + ")",
       vtkErrorCode::UnrecognizedFileTypeError);
     return 1;
   }
-  this->FormatName = input->format_name();
-  const OIIO::ImageSpec& spec = input->spec();
-  this->FileBitsPerSample = spec.get_int_attribute("oiio:BitsPerSample", 8 * spec.format.size());
-  int type = ScalarTypeOf(spec.format);
-  for (const OIIO::TypeDesc& channelType : spec.channelformats)
-  {
-    type = Wider(type, ScalarTypeOf(channelType));
-  }
+  this->FormatName = spec.Format;
+  this->FileBitsPerSample = spec.BitsPerSample;
+  const int type = spec.ScalarType;
   std::string problem;
-  if (spec.deep)
+  if (spec.Deep)
   {
     problem = "a deep image (several samples a pixel), which is not read";
   }
-  else if (spec.depth > 1)
+  else if (spec.Depth > 1)
   {
-    problem = "a volume of " + std::to_string(spec.depth) + " slices, which is not read";
+    problem = "a volume of " + std::to_string(spec.Depth) + " slices, which is not read";
   }
-  else if (spec.nchannels < 1 || spec.nchannels > 4)
+  else if (spec.Channels < 1 || spec.Channels > 4)
   {
-    problem = std::to_string(spec.nchannels) +
+    problem = std::to_string(spec.Channels) +
       " channels (1 to 4 are read: grey, grey and alpha, RGB, RGBA)";
   }
   else if (type == 0)
   {
-    problem = std::string("samples of type ") + spec.format.c_str() +
+    problem = "samples of type " + spec.TypeName +
       " (unsigned 8- or 16-bit integers, half, float or double are read)";
   }
-  else if (spec.width < 1 || spec.height < 1)
+  else if (spec.Width < 1 || spec.Height < 1)
   {
-    problem = "a size of " + std::to_string(spec.width) + " x " + std::to_string(spec.height);
+    problem = "a size of " + std::to_string(spec.Width) + " x " + std::to_string(spec.Height);
   }
   if (!problem.empty())
   {
     this->Fail(problem, vtkErrorCode::FileFormatError);
     return 1;
   }
-  const vtkIdType pixels = static_cast<vtkIdType>(spec.width) * spec.height;
+  const vtkIdType pixels = static_cast<vtkIdType>(spec.Width) * spec.Height;
   if (pixels > this->MaximumNumberOfPixels)
   {
-    this->Fail("a size of " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+    this->Fail("a size of " + std::to_string(spec.Width) + " x " + std::to_string(spec.Height) +
         ", over the limit of " + std::to_string(this->MaximumNumberOfPixels) +
         " pixels (MaximumNumberOfPixels)",
       vtkErrorCode::OutOfDiskSpaceError);
     return 1;
   }
-  this->Width = spec.width;
-  this->Height = spec.height;
-  this->Components = spec.nchannels;
+  this->Width = spec.Width;
+  this->Height = spec.Height;
+  this->Components = spec.Channels;
   this->ScalarType = type;
   this->HeaderValid = true;
   const int extent[6] = { 0, this->Width - 1, 0, this->Height - 1, 0, 0 };
@@ -252,19 +190,11 @@ int vtkOFBImageReader::RequestData(vtkInformation*,
   {
     return 1; // RequestInformation said why
   }
-  const OIIO::ImageSpec config = ReadConfiguration();
-  auto input = OIIO::ImageInput::open(this->FileName, &config);
-  if (!input)
+  std::string error;
+  const vtkOFBImageBackendAPI* api = vtkOFBLoadImageBackend(error);
+  if (!api)
   {
-    this->Fail("it cannot be opened again (" + PendingError(nullptr, "changed on the disk?") + ")",
-      vtkErrorCode::CannotOpenFileError);
-    return 1;
-  }
-  const OIIO::ImageSpec& spec = input->spec();
-  if (spec.width != this->Width || spec.height != this->Height ||
-    spec.nchannels != this->Components)
-  {
-    this->Fail("it changed on the disk while it was read", vtkErrorCode::FileFormatError);
+    this->Fail(error, vtkErrorCode::UnknownError);
     return 1;
   }
   vtkSmartPointer<vtkDataArray> pixels;
@@ -282,42 +212,26 @@ int vtkOFBImageReader::RequestData(vtkInformation*,
       vtkErrorCode::OutOfDiskSpaceError);
     return 1;
   }
-  // The file's top row first: start at the output's last row and go down.
-  const OIIO::stride_t pixelBytes =
-    static_cast<OIIO::stride_t>(this->Components) * pixels->GetDataTypeSize();
-  const OIIO::stride_t rowBytes = pixelBytes * this->Width;
-  char* last = static_cast<char*>(pixels->GetVoidPointer(0)) +
-    rowBytes * (static_cast<vtkIdType>(this->Height) - 1);
   auto progress = [](void* self, float done) -> bool
   {
     auto* reader = static_cast<vtkOFBImageReader*>(self);
     reader->UpdateProgress(done);
     return reader->GetAbortExecute() != 0; // true stops the read
   };
-  const bool read = input->read_image(0,
-    0,
-    0,
-    this->Components,
-    TypeDescOf(this->ScalarType),
-    last,
-    pixelBytes,
-    -rowBytes,
-    OIIO::AutoStride,
-    progress,
-    this);
-  // Some decoders (libtiff's missing strips, libjpeg's premature end) return success
-  // with a message and grey pixels: any message is a failure.
-  const std::string problem = PendingError(input.get(), "");
-  input->close();
-  if (!read || !problem.empty())
+  if (!api->ReadPixels(this->FileName,
+        this->ScalarType,
+        this->Width,
+        this->Height,
+        this->Components,
+        pixels->GetVoidPointer(0),
+        progress,
+        this,
+        error))
   {
-    if (this->GetAbortExecute())
+    if (!this->GetAbortExecute())
     {
-      return 1;
+      this->Fail("the decoder failed: " + error, CodeOf(error));
     }
-    this->Fail(
-      "the decoder failed: " + (problem.empty() ? std::string("no reason given") : problem),
-      CodeOf(problem));
     return 1;
   }
   output->SetExtent(0, this->Width - 1, 0, this->Height - 1, 0, 0);

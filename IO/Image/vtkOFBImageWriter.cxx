@@ -7,7 +7,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 
-#include <OpenImageIO/imageio.h>
+#include "vtkOFBImageBackend.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -22,22 +22,6 @@ vtkStandardNewMacro(vtkOFBImageWriter);
 
 namespace
 {
-/// OpenImageIO's pending error message of `output` (or its global one), or `fallback`.
-std::string PendingError(const OIIO::ImageOutput* output, const std::string& fallback)
-{
-  std::string message = output ? output->geterror() : std::string();
-  const std::string global = OIIO::geterror();
-  if (message.empty())
-  {
-    message = global;
-  }
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-  {
-    message.pop_back();
-  }
-  return message.empty() ? fallback : message;
-}
-
 /// The directory of `path` ("." when it has none) and its file name.
 void SplitPath(const std::string& path, std::string& directory, std::string& name)
 {
@@ -83,12 +67,9 @@ bool vtkOFBImageWriter::CanWriteExtension(const char* fileName)
   {
     return false;
   }
-  auto output = OIIO::ImageOutput::create(fileName);
-  if (!output)
-  {
-    OIIO::geterror(); // clear it
-  }
-  return output != nullptr;
+  std::string error;
+  const vtkOFBImageBackendAPI* api = vtkOFBLoadImageBackend(error);
+  return api && !api->WriterFormat(fileName).empty();
 }
 
 //------------------------------------------------------------------------------
@@ -113,10 +94,16 @@ void vtkOFBImageWriter::WriteData()
   std::string directory, name;
   SplitPath(path, directory, name);
   const std::string extension = ExtensionOf(name);
-  auto output = extension.empty() ? nullptr : OIIO::ImageOutput::create(path);
-  if (!output)
+  std::string error;
+  const vtkOFBImageBackendAPI* api = vtkOFBLoadImageBackend(error);
+  if (!api)
   {
-    OIIO::geterror();
+    this->Fail(error, vtkErrorCode::UnknownError);
+    return;
+  }
+  const std::string format = extension.empty() ? std::string() : api->WriterFormat(path.c_str());
+  if (format.empty())
+  {
     this->Fail(extension.empty()
         ? std::string("no extension to choose the format by (.png, .exr, .tif, ...)")
         : "no image format has the extension '" + extension + "'",
@@ -172,7 +159,7 @@ void vtkOFBImageWriter::WriteData()
     problem =
       std::to_string(nc) + " components (1 to 4 are written: grey, grey and alpha, RGB, RGBA)";
   }
-  else if (output->format_name() == std::string("hdr") && nc != 3)
+  else if (format == "hdr" && nc != 3)
   {
     problem = std::to_string(nc) + " components: Radiance HDR stores RGB only";
   }
@@ -182,58 +169,28 @@ void vtkOFBImageWriter::WriteData()
     return;
   }
 
-  const OIIO::TypeDesc data = type == VTK_UNSIGNED_CHAR
-    ? OIIO::TypeDesc::UINT8
-    : (type == VTK_UNSIGNED_SHORT ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::FLOAT);
-  const std::string format = output->format_name();
-  OIIO::TypeDesc file = data;
-  if (format == "openexr" && type == VTK_FLOAT)
-  {
-    file = this->HalfFloat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT;
-  }
-  OIIO::ImageSpec spec(w, h, nc, file);
-  spec.alpha_channel = nc == 2 || nc == 4 ? nc - 1 : -1;
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  if (format == "jpeg")
-  {
-    spec.attribute("Compression", "jpeg:" + std::to_string(this->Quality));
-  }
-  else if (format == "openexr" || format == "tiff")
-  {
-    spec.attribute("Compression", "zip");
-  }
-
   // Written under a temporary name with the same extension (the format), then renamed.
   static std::atomic<unsigned> counter(0);
   const std::string staged =
     (directory == "." && path.find('/') == std::string::npos ? std::string() : directory + "/") +
     "." + name + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + extension;
-  if (!output->open(staged, spec))
-  {
-    problem = PendingError(output.get(), "it cannot be created");
-    std::remove(staged.c_str());
-    this->Fail(problem, vtkErrorCode::CannotOpenFileError);
-    return;
-  }
-  const OIIO::stride_t pixelBytes = static_cast<OIIO::stride_t>(nc) * scalars->GetDataTypeSize();
-  const OIIO::stride_t rowBytes = pixelBytes * w;
-  const char* last = static_cast<const char*>(scalars->GetVoidPointer(0)) +
-    rowBytes * (static_cast<vtkIdType>(h) - 1);
   auto progress = [](void* self, float done) -> bool
   {
     auto* writer = static_cast<vtkOFBImageWriter*>(self);
     writer->UpdateProgress(done);
     return writer->GetAbortExecute() != 0;
   };
-  bool ok =
-    output->write_image(data, last, pixelBytes, -rowBytes, OIIO::AutoStride, progress, this);
-  problem = ok ? std::string() : PendingError(output.get(), "the write failed");
-  const bool closed = output->close();
-  if (ok && !closed)
-  {
-    ok = false;
-    problem = PendingError(output.get(), "closing the file failed");
-  }
+  bool ok = api->Write(staged.c_str(),
+    type,
+    w,
+    h,
+    nc,
+    scalars->GetVoidPointer(0),
+    this->HalfFloat,
+    this->Quality,
+    progress,
+    this,
+    problem);
   if (ok && std::rename(staged.c_str(), path.c_str()) != 0)
   {
     ok = false;

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""vtkOFBImageReader and vtkOFBImageWriter from Python: a surface LIC baked into a 32-bit
-float OpenEXR texture that reads back bit for bit, a 16-bit PNG round trip, and the
-errors of a missing file and of an extension no format has.
+"""vtkOFBImageReader and vtkOFBImageWriter from Python: OpenImageIO loaded only at the
+first image, a surface LIC baked into a 32-bit float OpenEXR texture that reads back bit
+for bit, a 16-bit PNG round trip, and the errors of a missing file and of an extension
+no format has.
 
 Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages;
 ctest does both.
@@ -53,6 +54,16 @@ def pixels(image):
     return numpy_support.vtk_to_numpy(image.GetPointData().GetScalars())
 
 
+def openimageio_loaded():
+    with open("/proc/self/maps") as maps:
+        return "libOpenImageIO" in maps.read()
+
+
+# Before any test: importing vtkofb loads no OpenImageIO (its ~270 libraries would slow
+# every program's start); the first image does.
+LOADED_AT_IMPORT = openimageio_loaded()
+
+
 class TestOFBImageIO(unittest.TestCase):
     def setUp(self):
         self.dir = tempfile.TemporaryDirectory(prefix="vtkofb-image-py-")
@@ -62,6 +73,14 @@ class TestOFBImageIO(unittest.TestCase):
 
     def path(self, name):
         return os.path.join(self.dir.name, name)
+
+    def test_openimageio_loaded_at_the_first_image(self):
+        self.assertFalse(LOADED_AT_IMPORT)
+        image = vtkImageData()
+        image.SetDimensions(2, 2, 1)
+        image.AllocateScalars(VTK_UNSIGNED_SHORT, 1)
+        self.assertEqual(write(image, self.path("a.png")), (1, []))
+        self.assertTrue(openimageio_loaded())
 
     def test_lic_bake_to_openexr_bit_for_bit(self):
         source = vtkSphereSource()

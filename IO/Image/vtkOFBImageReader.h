@@ -6,6 +6,8 @@
  * TIFF, OpenEXR, Radiance HDR, BMP, PNM, TGA and the other formats of the OpenImageIO
  * build (found from the file's contents, not its name). It is how decals, brush images
  * and textures come into vtkOFB: the output goes to vtkOFBTextureProjector as it is.
+ * OpenImageIO is loaded at the first file read (libvtkOFBIOImageOpenImageIO.so, beside
+ * this library), not when the program starts.
  *
  * Output: a 2-D vtkImageData of the file's width x height (origin 0, spacing 1; extent
  * [0, W-1] x [0, H-1] x [0, 0]) whose scalars, named "Pixels", keep the file's channels
@@ -20,8 +22,9 @@
  *
  * Errors (an empty output, an error naming the file and the cause, and GetErrorCode() a
  * vtkErrorCode: NoFileNameError, FileNotFoundError, CannotOpenFileError,
- * UnrecognizedFileTypeError, FileFormatError, PrematureEndOfFileError, or
- * OutOfDiskSpaceError for an image over the limit or the memory): no
+ * UnrecognizedFileTypeError, FileFormatError, PrematureEndOfFileError,
+ * OutOfDiskSpaceError for an image over the limit or the memory, UnknownError when
+ * OpenImageIO's module cannot be loaded): no
  * FileName, a file that does not exist or is not a regular file, one that no format
  * recognizes or that is damaged or cut short (the decoder's message is given), a
  * layout that is not read (a deep image, a volume, more than 4 channels, signed or

@@ -6,7 +6,8 @@
  * name's extension names: .png, .jpg/.jpeg, .tif/.tiff, .exr, .hdr, .bmp, .tga, .pnm and
  * the others of the OpenImageIO build. It is how baked textures leave vtkOFB: a float
  * bake of vtkOFBTextureBaker (a LIC, a scalar field) goes to a 32-bit float OpenEXR
- * without quantization, the paint to a PNG.
+ * without quantization, the paint to a PNG. OpenImageIO is loaded at the first file
+ * written (libvtkOFBIOImageOpenImageIO.so, beside this library).
  *
  * Input: a vtkImageData of one slice (extent [x0, x1] x [y0, y1] x [z, z]) whose active
  * scalars are unsigned char, unsigned short or float with 1 to 4 components (grey, grey
@@ -30,7 +31,8 @@
  * Write() returns 0): no FileName, an extension no format has, a directory that is
  * missing or not writable, no input, an input that is not one slice or has no pixels,
  * scalars of another type (convert them first, e.g. vtkImageCast to float) or with
- * another number of components, a layout the format cannot store, a failed write.
+ * another number of components, a layout the format cannot store, a failed write,
+ * OpenImageIO's module that cannot be loaded.
  *
  * @sa vtkOFBImageReader vtkOFBTextureBaker
  */

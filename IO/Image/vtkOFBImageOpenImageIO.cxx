@@ -123,6 +123,9 @@ bool ReadPixels(const char* path,
     error = "it cannot be opened again (" + PendingError<OIIO::ImageInput>(nullptr) + ")";
     return false;
   }
+  // One thread: a decoder's errors are kept per thread, and those of OpenImageIO's worker
+  // threads would not reach this one (a file cut short would read as complete).
+  input->threads(1);
   const OIIO::ImageSpec& spec = input->spec();
   if (spec.width != width || spec.height != height || spec.nchannels != channels)
   {
@@ -188,6 +191,7 @@ bool Write(const char* path,
     error = PendingError<OIIO::ImageOutput>(nullptr);
     return false;
   }
+  output->threads(1); // as for reading: every error on this thread
   const std::string format = output->format_name();
   const OIIO::TypeDesc memory = TypeDescOf(scalarType);
   OIIO::TypeDesc file = memory;

@@ -4,9 +4,9 @@
 # bookworm machine.
 #
 #   scripts/sanitize.sh --ci     the bounded run of CI: the OFB library modules, the unit
-#                                tests of OFB::Core, OFB::Paint, OFB::FlowPaths and
-#                                OFB::Export, and each fuzz target for FUZZ_SECONDS
-#                                (default 60).
+#                                tests of OFB::Core, OFB::Paint, OFB::FlowPaths,
+#                                OFB::Export and OFB::IOImage, and each fuzz target for
+#                                FUZZ_SECONDS (default 60).
 #   scripts/sanitize.sh --long   everything: the whole project (examples, rendering and
 #                                interaction modules; no Python wrapping), the whole test
 #                                suite but the install tests, and each fuzz target for
@@ -69,10 +69,11 @@ xvfb() { xvfb-run -a -s "-screen 0 1280x1024x24" env ${dri:+LD_PRELOAD="$dri"} "
 if [ "$MODE" = --ci ]; then
   # The unit tests list their tests when built (gtest_discover_tests), under the sanitizers.
   cmake --build "$BUILD_DIR" -- -j"$JOBS" vtkOFBCoreGTests vtkOFBPaintGTests \
-    vtkOFBFlowPathsGTests vtkOFBExportGTests ofbFuzzReader ofbFuzzStrokes ofbFuzzImageHeader
+    vtkOFBFlowPathsGTests vtkOFBExportGTests vtkOFBIOImageGTests ofbFuzzReader ofbFuzzStrokes \
+    ofbFuzzImageHeader
   echo "sanitize.sh: built in $((SECONDS - start)) s"
   (cd "$BUILD_DIR" && xvfb ctest -j"$JOBS" --output-on-failure \
-    -R '^OFB\.(Core|Paint|FlowPaths|Export)\.')
+    -R '^OFB\.(Core|Paint|FlowPaths|Export|IOImage)\.')
 else
   cmake --build "$BUILD_DIR" -- -j"$JOBS"
   echo "sanitize.sh: built in $((SECONDS - start)) s"

@@ -1,14 +1,11 @@
 #include "ofbExampleImage.h"
 #include "ofbExampleErrors.h"
 
-#include "vtkBMPReader.h"
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkImageData.h"
-#include "vtkJPEGReader.h"
 #include "vtkNew.h"
-#include "vtkPNGReader.h"
-#include "vtkPNMReader.h"
+#include "vtkOFBImageReader.h"
 #include "vtkPointData.h"
 #include "vtk_zlib.h"
 
@@ -29,7 +26,10 @@ enum class Format
   PNG,
   JPEG,
   BMP,
-  PNM
+  PNM,
+  TIFF,
+  EXR,
+  HDR
 };
 
 /// What a header claims.
@@ -102,11 +102,25 @@ bool Sniff(const std::vector<unsigned char>& b, Format& format, std::string& pro
   {
     format = Format::PNM;
   }
+  else if (n >= 4 &&
+    (std::memcmp(b.data(), "II*\0", 4) == 0 || std::memcmp(b.data(), "MM\0*", 4) == 0))
+  {
+    format = Format::TIFF;
+  }
+  else if (n >= 4 && std::memcmp(b.data(), "\x76\x2f\x31\x01", 4) == 0)
+  {
+    format = Format::EXR;
+  }
+  else if ((n >= 10 && std::memcmp(b.data(), "#?RADIANCE", 10) == 0) ||
+    (n >= 6 && std::memcmp(b.data(), "#?RGBE", 6) == 0))
+  {
+    format = Format::HDR;
+  }
   else
   {
     problem = n == 0 ? "an empty file"
                      : "not an image this program reads (PNG, JPEG, uncompressed BMP, binary "
-                       "PGM or PPM)";
+                       "PGM or PPM, TIFF, OpenEXR, Radiance HDR)";
     return false;
   }
   return true;
@@ -544,25 +558,6 @@ bool CheckPNM(const std::vector<unsigned char>& b, Header& header, std::string& 
   return true;
 }
 
-vtkSmartPointer<vtkImageReader2> MakeReader(Format format)
-{
-  switch (format)
-  {
-    case Format::PNG:
-      return vtkSmartPointer<vtkPNGReader>::New();
-    case Format::JPEG:
-      return vtkSmartPointer<vtkJPEGReader>::New();
-    case Format::BMP:
-    {
-      auto bmp = vtkSmartPointer<vtkBMPReader>::New();
-      bmp->Allow8BitBMPOff(); // palette images as RGB
-      return bmp;
-    }
-    default:
-      return vtkSmartPointer<vtkPNMReader>::New();
-  }
-}
-
 /// The format's own checks, then the size limits.
 bool CheckHeader(const std::vector<unsigned char>& bytes,
   Format format,
@@ -578,8 +573,10 @@ bool CheckHeader(const std::vector<unsigned char>& bytes,
       return CheckJPEG(bytes, header, problem) && CheckSize(header, maxPixels, problem);
     case Format::BMP:
       return CheckBMP(bytes, header, problem) && CheckSize(header, maxPixels, problem);
-    default:
+    case Format::PNM:
       return CheckPNM(bytes, header, problem) && CheckSize(header, maxPixels, problem);
+    default:
+      return true; // TIFF, OpenEXR, HDR: the reader checks the size from the header
   }
 }
 }
@@ -602,19 +599,33 @@ vtkSmartPointer<vtkImageData> ReadImageChecked(const std::string& path,
   }
   bytes.clear();
   bytes.shrink_to_fit();
-  vtkSmartPointer<vtkImageReader2> reader = MakeReader(format);
+  const bool checked = format == Format::PNG || format == Format::JPEG || format == Format::BMP ||
+    format == Format::PNM;
+  vtkNew<vtkOFBImageReader> reader;
   vtkNew<FirstError> errors;
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
   reader->SetFileName(path.c_str());
+  reader->SetMaximumNumberOfPixels(maxPixels);
   reader->Update();
   vtkImageData* image = reader->GetOutput();
-  const int* dims = image ? image->GetDimensions() : nullptr;
-  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  const int* dims = image->GetDimensions();
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
   if (errors->Count > 0 || reader->GetErrorCode() != vtkErrorCode::NoError || !scalars ||
-    dims[0] != header.Width || dims[1] != header.Height || dims[2] != 1 ||
-    scalars->GetNumberOfTuples() != header.Width * header.Height)
+    dims[0] < 1 || dims[1] < 1 || dims[0] > MaximumImageSide || dims[1] > MaximumImageSide ||
+    dims[2] != 1 || (checked && (dims[0] != header.Width || dims[1] != header.Height)) ||
+    scalars->GetNumberOfTuples() != static_cast<vtkIdType>(dims[0]) * dims[1])
   {
-    message = "cannot read '" + path + "': the decoder failed" + errors->Suffix();
+    // The reader's message without its "Cannot read the image 'PATH': " and final dot.
+    std::string cause = errors->Text;
+    const std::string::size_type named = cause.find("': ");
+    cause = named == std::string::npos ? cause : cause.substr(named + 3);
+    if (!cause.empty() && cause.back() == '.')
+    {
+      cause.pop_back();
+    }
+    message = "cannot read '" + path + "': " +
+      (cause.empty() ? std::string("the decoder gave no image of the claimed size")
+                     : "the decoder failed: " + cause);
     return nullptr;
   }
   vtkSmartPointer<vtkImageData> result = vtkSmartPointer<vtkImageData>::New();

@@ -2,11 +2,11 @@
  * @file   ofbExampleImage.h
  * @brief  The one way the example applications read an image (decals, imported textures)
  *
- * VTK 9.1's image readers trust the file: libpng's errors while decoding the pixels end in
- * a crash (vtkPNGReader sets no error handler there), and a header claiming 2^31 pixels
- * makes the reader allocate that much. ReadImageChecked therefore checks the file itself
- * before any decoder allocates, then decodes it with the reader of the format it found and
- * checks what came out:
+ * Images are decoded by vtkOFBImageReader (OFB::IOImage, through OpenImageIO), in the
+ * file's own sample type: 8-bit, 16-bit or float, as decals and textures take them.
+ * ReadImageChecked first checks the file itself, so that no decoder sees a damaged
+ * stream of the formats most often passed around and no header makes it allocate
+ * gigabytes, then decodes it and checks what came out:
  *
  * - the path is a regular file of at most MaximumImageFileBytes;
  * - PNG: the signature, every chunk's length and CRC-32, an IHDR first with a valid bit
@@ -16,13 +16,14 @@
  * - JPEG: the frame header (SOF) before the scan; BMP: an uncompressed 8- or 24-bit bitmap
  *   whose pixel rows fit in the file; PNM: a binary P5 (grey) or P6 (RGB) with a maximum
  *   value of at most 255 whose pixels fit in the file;
+ * - TIFF, OpenEXR and Radiance HDR (found by their signatures) go to the decoder, which
+ *   refuses a header of more than `maxPixels` pixels before it allocates, and refuses
+ *   files cut short or damaged with the decoder's message;
  * - both sides at least 1 and at most MaximumImageSide, and at most `maxPixels` pixels;
- * - other formats (TIFF, ASCII PNM, ...) are refused;
- * - after decoding: no error event, the reader's ErrorCode 0, and an image of the size the
- *   header gave, with scalars.
+ * - other formats (ASCII PNM, GIF, ...) are refused;
+ * - after decoding: no error, and an image of the size the header gave, with scalars.
  *
- * Every image the applications read goes through here (a later move to another image
- * library replaces this file alone).
+ * Every image the applications read goes through here.
  */
 #ifndef ofbExampleImage_h
 #define ofbExampleImage_h
@@ -42,8 +43,9 @@ constexpr long long DefaultMaximumImagePixels = 1LL << 26;
 /// The largest image file accepted: 1 GiB.
 constexpr long long MaximumImageFileBytes = 1LL << 30;
 
-/// The image at `path` (PNG, JPEG, BMP, binary PNM) checked as above, or null with
-/// `message` saying what is wrong ("cannot read 'PATH': ...").
+/// The image at `path` (PNG, JPEG, BMP, binary PNM, TIFF, OpenEXR, Radiance HDR) checked
+/// as above, or null with `message` saying what is wrong ("cannot read 'PATH': ...").
+/// Its scalars are unsigned char, unsigned short or float, as in the file.
 vtkSmartPointer<vtkImageData> ReadImageChecked(const std::string& path,
   long long maxPixels,
   std::string& message);

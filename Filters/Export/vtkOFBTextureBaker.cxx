@@ -1,6 +1,7 @@
 #include "vtkOFBTextureBaker.h"
 
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -245,12 +246,14 @@ int vtkOFBTextureBaker::RequestInformation(vtkInformation*,
   vtkDataArray* source = ofb ? this->FindSourceArray(ofb) : nullptr;
   if (source)
   {
-    vtkDataObject::SetPointDataActiveScalarInfo(
-      info, source->GetDataType(), source->GetNumberOfComponents());
+    vtkDataObject::SetPointDataActiveScalarInfo(info,
+      this->OutputScalarType == VTK_FLOAT ? VTK_FLOAT : source->GetDataType(),
+      source->GetNumberOfComponents());
   }
   else if (this->ArrayName.empty() || this->ArrayName == vtkOFB::ColorsArrayName())
   {
-    vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_UNSIGNED_CHAR, 4);
+    vtkDataObject::SetPointDataActiveScalarInfo(
+      info, this->OutputScalarType == VTK_FLOAT ? VTK_FLOAT : VTK_UNSIGNED_CHAR, 4);
   }
   else
   {
@@ -305,6 +308,12 @@ int vtkOFBTextureBaker::RequestData(vtkInformation*,
   if (!(this->Radius > 0.0) || !std::isfinite(this->Radius))
   {
     vtkErrorMacro("Radius " << this->Radius << " is not positive and finite.");
+    return 1;
+  }
+  if (this->OutputScalarType != VTK_VOID && this->OutputScalarType != VTK_FLOAT)
+  {
+    vtkErrorMacro("OutputScalarType " << this->OutputScalarType
+                                      << " is neither VTK_VOID (the array's type) nor VTK_FLOAT.");
     return 1;
   }
   vtkDataArray* source = this->FindSourceArray(ofb);
@@ -416,6 +425,13 @@ void vtkOFBTextureBaker::Bake(vtkPolyData* mesh,
                     "the OFB's surface?");
   }
   Pad(values, filled, w, h, this->Padding);
+  if (this->OutputScalarType == VTK_FLOAT && values->GetDataType() != VTK_FLOAT)
+  {
+    auto floats = vtkSmartPointer<vtkFloatArray>::New();
+    floats->DeepCopy(values); // converted, not scaled
+    floats->SetName(source->GetName());
+    values = floats;
+  }
   image->GetPointData()->SetScalars(values);
   image->GetPointData()->AddArray(mask);
   vtkDataObject::SetPointDataActiveScalarInfo(
@@ -440,6 +456,10 @@ void vtkOFBTextureBaker::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TextureSize: " << this->TextureSize[0] << " x " << this->TextureSize[1] << "\n";
   os << indent << "ArrayName: " << (this->ArrayName.empty() ? "(active scalars)" : this->ArrayName)
+     << "\n";
+  os << indent << "OutputScalarType: "
+     << (this->OutputScalarType == VTK_VOID ? "SameAsArray"
+                                            : vtkImageScalarTypeNameMacro(this->OutputScalarType))
      << "\n";
   os << indent << "LookupMode: " << (this->LookupMode == 0 ? "Nearest" : "Smooth") << "\n";
   os << indent << "Radius: " << this->Radius << " cells\n";

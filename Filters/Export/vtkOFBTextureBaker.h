@@ -12,8 +12,9 @@
  * ignored with a warning: apply vtkTriangleFilter first). Input port 1: the OFB
  * (`SetOFBConnection` / `SetOFBData`). Output: a vtkImageData of `TextureSize`
  * texels (origin 0, spacing 1; texel (i, j) is texture coordinate ((i + 0.5) / W,
- * (j + 0.5) / H), row 0 at v = 0, as vtkTexture and vtkPNGWriter take it) with the
- * baked array (same name, type and components as the OFB's, the active scalars) and
+ * (j + 0.5) / H), row 0 at v = 0, as vtkTexture and vtkOFBImageWriter take it) with the
+ * baked array (same name and components as the OFB's, the active scalars; its type, or
+ * float with OutputScalarTypeToFloat) and
  * a `vtkValidPointMask` array (1 where a triangle covers the texel centre and a sample
  * was found, 0 elsewhere). A triangle too small in UV space to cover any texel centre
  * covers the texel under its centroid instead (where no other triangle covers it), so
@@ -31,7 +32,11 @@
  * coordinates, a TextureSize outside [1, 16384] or one whose bake would take more
  * than MemoryLimit, a Radius that is not positive and finite, an array the OFB lacks.
  *
- * @sa vtkOFBProbeFilter vtkTexture vtkPNGWriter
+ * A float bake (the OFB's LIC and other float arrays as they are, or any array with
+ * OutputScalarTypeToFloat) written by vtkOFBImageWriter to an OpenEXR file keeps every
+ * value bit for bit (32-bit float); the paint (RGBA bytes) goes to a PNG.
+ *
+ * @sa vtkOFBProbeFilter vtkTexture vtkOFBImageWriter
  */
 
 #ifndef vtkOFBTextureBaker_h
@@ -76,6 +81,19 @@ public:
    */
   vtkSetStdStringFromCharMacro(ArrayName);
   vtkGetCharFromStdStringMacro(ArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * The type of the baked texels: VTK_VOID (default) keeps the array's type (RGBA bytes
+   * for the paint, float for the LIC), VTK_FLOAT converts the values to 32-bit float
+   * (not scaled: bytes stay 0 to 255), for an OpenEXR texture of a double or integer
+   * array. Other types are refused with an error.
+   */
+  vtkSetMacro(OutputScalarType, int);
+  vtkGetMacro(OutputScalarType, int);
+  void SetOutputScalarTypeToSameAsArray() { this->SetOutputScalarType(VTK_VOID); }
+  void SetOutputScalarTypeToFloat() { this->SetOutputScalarType(VTK_FLOAT); }
   ///@}
 
   ///@{
@@ -150,6 +168,7 @@ protected:
 
   int TextureSize[2] = { 1024, 1024 };
   std::string ArrayName;
+  int OutputScalarType = VTK_VOID;
   int LookupMode = 0;
   double Radius;
   bool NormalAware = true;

@@ -20,6 +20,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBTextureProjector);
@@ -103,10 +104,27 @@ struct Triangles
   vtkIdType Size() const { return static_cast<vtkIdType>(this->Normals.size()); }
 };
 
-/// A texture of unsigned char texels (1 to 4 components) read as RGBA in [0, 255].
+/// A texel value as a fraction of the type's range, times 255: bytes as they are, 16-bit
+/// integers scaled by 255 / 65535, floats clamped to [0, 1] (NaN as 0) and scaled by 255.
+inline double Texel255(unsigned char v)
+{
+  return v;
+}
+inline double Texel255(unsigned short v)
+{
+  return v * (255.0 / 65535.0);
+}
+inline double Texel255(float v)
+{
+  return v > 0.0f ? (v < 1.0f ? 255.0 * v : 255.0) : 0.0;
+}
+
+/// A texture of unsigned char, unsigned short or float texels (1 to 4 components) read
+/// as RGBA in [0, 255].
+template<typename T>
 struct Texture
 {
-  const unsigned char* Texels = nullptr;
+  const T* Texels = nullptr;
   int Components = 0;
   int Width = 0;
   int Height = 0;
@@ -119,14 +137,14 @@ struct Texture
   }
   void Texel(int i, int j, double rgba[4]) const
   {
-    const unsigned char* t =
-      this->Texels + this->Components * (static_cast<vtkIdType>(j) * this->Width + i);
+    const T* t = this->Texels + this->Components * (static_cast<vtkIdType>(j) * this->Width + i);
     const bool grey = this->Components < 3;
     for (int c = 0; c < 3; ++c)
     {
-      rgba[c] = t[grey ? 0 : c];
+      rgba[c] = Texel255(t[grey ? 0 : c]);
     }
-    rgba[3] = this->Components == 2 || this->Components == 4 ? t[this->Components - 1] : 255.0;
+    rgba[3] =
+      this->Components == 2 || this->Components == 4 ? Texel255(t[this->Components - 1]) : 255.0;
   }
   /// The texture at (u, v): the nearest texel, or the bilinear mean of four.
   void Lookup(double u, double v, double rgba[4]) const
@@ -247,10 +265,11 @@ void FindClosestTriangles(vtkOFB* input,
  * Lay the texture at each reached sample's closest point over its colour in `rgba`;
  * the number of samples reached.
  */
+template<typename T>
 vtkIdType ApplyTexture(vtkOFB* input,
   const Triangles& triangles,
   vtkDataArray* tcoords,
-  const Texture& texture,
+  const Texture<T>& texture,
   double opacity,
   const std::vector<std::atomic<vtkTypeUInt64>>& best,
   unsigned char* rgba)
@@ -359,8 +378,8 @@ int vtkOFBTextureProjector::RequestData(vtkInformation*,
   }
   output->Initialize();
   vtkDataArray* tcoords = mesh ? mesh->GetPointData()->GetTCoords() : nullptr;
-  auto* texels =
-    image ? vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars()) : nullptr;
+  vtkDataArray* texels = image ? image->GetPointData()->GetScalars() : nullptr;
+  const int texelType = texels ? texels->GetDataType() : 0;
   vtkDataArray* colors =
     input ? input->GetSampleData()->GetArray(vtkOFB::ColorsArrayName()) : nullptr;
   if (!input || input->GetNumberOfSamples() == 0)
@@ -387,10 +406,15 @@ int vtkOFBTextureProjector::RequestData(vtkInformation*,
   }
   if (!texels || texels->GetNumberOfComponents() < 1 || texels->GetNumberOfComponents() > 4 ||
     dims[2] != 1 || texels->GetNumberOfTuples() != static_cast<vtkIdType>(dims[0]) * dims[1] ||
-    dims[0] < 1 || dims[1] < 1)
+    dims[0] < 1 || dims[1] < 1 ||
+    (texelType != VTK_UNSIGNED_CHAR && texelType != VTK_UNSIGNED_SHORT && texelType != VTK_FLOAT))
   {
-    vtkErrorMacro("No texture on port 2: a 2-D image of unsigned char scalars (grey, grey and "
-                  "alpha, RGB or RGBA).");
+    vtkErrorMacro("No texture on port 2: a 2-D image of unsigned char, unsigned short or float "
+                  "scalars (grey, grey and alpha, RGB or RGBA)"
+      << (texels ? std::string(", not ") + texels->GetDataTypeAsString() + " with " +
+               std::to_string(texels->GetNumberOfComponents()) + " components"
+                 : std::string())
+      << ".");
     return 1;
   }
   if (colors &&
@@ -435,14 +459,23 @@ int vtkOFBTextureProjector::RequestData(vtkInformation*,
   std::vector<std::atomic<vtkTypeUInt64>> best(static_cast<size_t>(n));
   FindClosestTriangles(input, triangles, this->MaximumDistance * input->GetCellSize(), best);
   this->UpdateProgress(0.7);
-  const Texture texture{ texels->GetPointer(0),
-    texels->GetNumberOfComponents(),
-    dims[0],
-    dims[1],
-    this->RepeatTexture,
-    this->InterpolateTexture };
-  this->NumberOfProjectedSamples =
-    ApplyTexture(input, triangles, tcoords, texture, this->Opacity, best, out->GetPointer(0));
+  auto project = [&](auto* first)
+  {
+    using T = std::remove_const_t<std::remove_pointer_t<decltype(first)>>;
+    const Texture<T> texture{ first,
+      texels->GetNumberOfComponents(),
+      dims[0],
+      dims[1],
+      this->RepeatTexture,
+      this->InterpolateTexture };
+    return ApplyTexture(
+      input, triangles, tcoords, texture, this->Opacity, best, out->GetPointer(0));
+  };
+  const void* first = texels->GetVoidPointer(0);
+  this->NumberOfProjectedSamples = texelType == VTK_UNSIGNED_CHAR
+    ? project(static_cast<const unsigned char*>(first))
+    : (texelType == VTK_UNSIGNED_SHORT ? project(static_cast<const unsigned short*>(first))
+                                       : project(static_cast<const float*>(first)));
   this->UpdateProgress(1.0);
   return 1;
 }

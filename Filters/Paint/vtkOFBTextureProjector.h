@@ -11,9 +11,12 @@
  * Input port 0: the OFB. Port 1: the mesh (`SetMeshConnection` / `SetMeshData`; a
  * vtkPolyData of polygons with 2-component texture coordinates, the active TCoords).
  * Port 2: the texture (`SetTextureConnection` / `SetTextureData`; a 2-D vtkImageData of
- * unsigned char scalars: grey, grey and alpha, RGB or RGBA; row 0 at v = 0, as
- * vtkPNGReader gives it). Output: a copy of the OFB (arrays shared) whose "Colors"
- * (RGBA bytes, made white and opaque where the OFB has none) are a new array.
+ * unsigned char, unsigned short or float scalars: grey, grey and alpha, RGB or RGBA; row
+ * 0 at v = 0, as vtkOFBImageReader gives it). Texels are fractions of their type's range:
+ * bytes / 255, 16-bit values / 65535 (a 16-bit image keeps the precision of its 16 bits
+ * until the colour is rounded to a byte), floats clamped to [0, 1]. Output: a copy of the OFB
+ * (arrays shared) whose "Colors" (RGBA bytes, made white and opaque where the OFB has none) are a
+ * new array.
  *
  * Each sample takes the point closest to it on the mesh's triangles within
  * `MaximumDistance` cells (default 2; only triangles it does not face away from, where
@@ -25,7 +28,8 @@
  * transparent part leaves them. Samples with no triangle within reach keep theirs.
  *
  * Errors (an empty output): no OFB or an empty one, no mesh or one without texture
- * coordinates, no texture or one that is not unsigned char with 1 to 4 components, a
+ * coordinates, no texture or one that is not unsigned char, unsigned short or float with 1 to 4
+ * components, a
  * MaximumDistance that is not positive and finite.
  *
  * @sa vtkOFBTextureBaker vtkOFBProbeFilter vtkOFBPainter

@@ -43,4 +43,6 @@ function (run_python_example python_dir)
   string(REGEX REPLACE "([][+.*()^$?|\\\\])" "\\\\\\1" package_regex "${package_dir}")
   expect("${python_example_output}" "from ${package_regex}\n" "vtkofb from ${package_dir}")
   expect("${python_example_output}" "[1-9][0-9]* samples" "a sample count")
+  expect("${python_example_output}" "paint written to and read back from a PNG [(]png[)]"
+    "an image round trip through the installed OpenImageIO module")
 endfunction ()

@@ -9,12 +9,15 @@
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkErrorCode.h"
+#include "vtkFloatArray.h"
 #include "vtkGLTFExporter.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkNew.h"
 #include "vtkOBJWriter.h"
 #include "vtkOFB.h"
+#include "vtkOFBImageReader.h"
+#include "vtkOFBImageWriter.h"
 #include "vtkOFBProbeFilter.h"
 #include "vtkOFBTextureAtlas.h"
 #include "vtkOFBTextureBaker.h"
@@ -30,9 +33,11 @@
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -66,24 +71,66 @@ long long ExpectedFaces(vtkPolyData* surface)
   return faces;
 }
 
+/// The float texture `lic` as the 32-bit float OpenEXR staged as `name` (vtkOFBImageWriter),
+/// read back (vtkOFBImageReader) and compared bit for bit.
+bool WriteFloatTexture(vtkImageData* lic,
+  ofbexample::StagedFiles& files,
+  const std::string& name,
+  std::string& message)
+{
+  vtkNew<FirstError> errors;
+  vtkNew<vtkOFBImageWriter> writer;
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer->SetInputData(lic);
+  writer->SetFileName(files.Staged(name).c_str());
+  if (writer->Write() == 0 || errors->Count > 0)
+  {
+    message = "cannot write '" + files.Final(name) + "'" + errors->Suffix();
+    return false;
+  }
+  vtkNew<vtkOFBImageReader> reader;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(files.Staged(name).c_str());
+  reader->Update();
+  vtkDataArray* written = lic->GetPointData()->GetScalars();
+  vtkDataArray* read = reader->GetOutput()->GetPointData()->GetScalars();
+  if (errors->Count > 0 || !read || read->GetDataType() != VTK_FLOAT ||
+    read->GetNumberOfValues() != written->GetNumberOfValues() ||
+    std::memcmp(read->GetVoidPointer(0),
+      written->GetVoidPointer(0),
+      sizeof(float) * written->GetNumberOfValues()) != 0)
+  {
+    return files.Incomplete(name, message);
+  }
+  return files.Check(name, message);
+}
+
 /**
- * The textured OBJ: its texture PNG, its .mtl and the .obj staged (the writer given the
+ * The textured OBJ: its texture PNG (and, with `lic`, the float LIC over the same texture
+ * coordinates as <stem>_LIC.exr), its .mtl and the .obj staged (the writer given the
  * staged .obj and the texture's final file name, so that the .mtl and the .obj name the
  * final files), checked (the .obj's faces counted back, the .mtl compared with what it
- * must say), then renamed into place: the texture, the material, the .obj last.
+ * must say, the OpenEXR read back), then renamed into place: the textures, the material,
+ * the .obj last.
  */
 bool WriteOBJ(vtkPolyData* surface,
   vtkImageData* texels,
+  vtkImageData* lic,
   const std::string& path,
   std::string& message)
 {
   const std::string name = SystemTools::GetFilenameName(path);
   const std::string stem = SystemTools::GetFilenameWithoutLastExtension(name);
-  const std::string png = stem + ".png", mtl = stem + ".mtl";
+  const std::string png = stem + ".png", mtl = stem + ".mtl", exr = stem + "_LIC.exr";
+  std::vector<std::string> names = { png, mtl, name };
+  if (lic)
+  {
+    names.insert(names.begin(), exr);
+  }
   ofbexample::StagedFiles files(path);
   std::string bytes;
-  if (!files.Begin({ png, mtl, name }, message) || !ofbexample::EncodePNG(texels, bytes, message) ||
-    !files.Write(png, bytes, message))
+  if (!files.Begin(names, message) || !ofbexample::EncodePNG(texels, bytes, message) ||
+    !files.Write(png, bytes, message) || (lic && !WriteFloatTexture(lic, files, exr, message)))
   {
     return false;
   }
@@ -113,7 +160,7 @@ bool WriteOBJ(vtkPolyData* surface,
   {
     return files.Incomplete(name, message);
   }
-  return files.Commit({ png, mtl, name }, message);
+  return files.Commit(names, message);
 }
 
 /// `bytes` as the one file `path`, staged and renamed into place.
@@ -280,7 +327,27 @@ bool ExportPainting(vtkPolyData* surface,
       message = "cannot export '" + path + "': baking the texture failed" + errors->Suffix();
       return false;
     }
-    if (!(ext == ".obj" ? WriteOBJ(textured, texels, path, message)
+    // An OBJ also gets the LIC's intensity, where the OFB has one, as a 32-bit float
+    // OpenEXR over the same texture coordinates: exact, for renderers and compositors.
+    auto* licArray = vtkFloatArray::SafeDownCast(ofb->GetSampleData()->GetArray("LIC"));
+    vtkNew<vtkOFBTextureBaker> licBaker;
+    vtkImageData* lic = nullptr;
+    if (ext == ".obj" && licArray && licArray->GetNumberOfComponents() == 1)
+    {
+      licBaker->AddObserver(vtkCommand::ErrorEvent, errors);
+      licBaker->SetInputData(textured);
+      licBaker->SetOFBData(ofb);
+      licBaker->SetArrayName("LIC");
+      licBaker->SetTextureSize(size);
+      licBaker->Update();
+      lic = licBaker->GetOutput();
+      if (errors->Count > 0 || lic->GetNumberOfPoints() == 0)
+      {
+        message = "cannot export '" + path + "': baking the LIC failed" + errors->Suffix();
+        return false;
+      }
+    }
+    if (!(ext == ".obj" ? WriteOBJ(textured, texels, lic, path, message)
                         : WriteGLTF(textured, texels, path, message)))
     {
       return false;
@@ -293,6 +360,11 @@ bool ExportPainting(vtkPolyData* surface,
            << " charts on the OFB's grids";
     }
     done << ")";
+    if (lic)
+    {
+      done << " and the LIC as " << SystemTools::GetFilenameWithoutLastExtension(path)
+           << "_LIC.exr (32-bit float, read back bit for bit)";
+    }
     message = done.str();
     return true;
   }

@@ -236,10 +236,11 @@ TEST(TextureProjector, BadInput)
   bare->ShallowCopy(plane);
   bare->GetPointData()->SetTCoords(nullptr);
   expectError(ofb, bare, image, 2.0, "texture coordinates");
-  auto floats = vtkSmartPointer<vtkImageData>::New();
-  floats->SetDimensions(4, 4, 1);
-  floats->AllocateScalars(VTK_FLOAT, 3);
-  expectError(ofb, plane, floats, 2.0, "unsigned char");
+  // Unsigned char, unsigned short and float texels are taken; doubles (or ints) are not.
+  auto doubles = vtkSmartPointer<vtkImageData>::New();
+  doubles->SetDimensions(4, 4, 1);
+  doubles->AllocateScalars(VTK_DOUBLE, 3);
+  expectError(ofb, plane, doubles, 2.0, "unsigned char, unsigned short or float");
   auto five = Image(2, 2, 5, [](int, int, int) { return 0; });
   expectError(ofb, plane, five, 2.0, "unsigned char");
   for (double distance : { 0.0, -1.0, std::nan(""), HUGE_VAL })

@@ -413,6 +413,12 @@ vtkSmartPointer<vtkImageData> ReadPNG(const std::string& fileName)
 
 bool WritePNG(vtkImageData* image, const std::string& fileName)
 {
+  // The test's output directory (-T) may not exist yet in a fresh build.
+  const std::string directory = vtksys::SystemTools::GetFilenamePath(fileName);
+  if (!directory.empty() && !vtksys::SystemTools::MakeDirectory(directory))
+  {
+    return false;
+  }
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputData(image);
   writer->SetFileName(fileName.c_str());

@@ -10,6 +10,7 @@
 #include "vtkOFBHugePages.h"
 #include "vtkOFBPaintKernel.h"
 #include "vtkOFBPainterInternals.h"
+#include "vtkOFBStrokePath.h"
 #include "vtkOFBStrokeSampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
@@ -49,6 +50,7 @@ vtkOFBPainter::vtkOFBPainter()
   , InStroke(false)
   , MaximumDabsPerCall(vtkIdType(1) << 22)
   , AbortPaint(false)
+  , FollowSurface(true)
 {
   this->MirrorOrigin[0] = this->MirrorOrigin[1] = this->MirrorOrigin[2] = 0.0;
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 1.0;
@@ -488,6 +490,7 @@ void vtkOFBPainter::CopySettings(vtkOFBPainter* source)
   this->SetDefaultColor(source->DefaultColor);
   this->SetUndoLimit(source->UndoLimit);
   this->SetMaximumDabsPerCall(source->MaximumDabsPerCall);
+  this->SetFollowSurface(source->FollowSurface);
 }
 
 //------------------------------------------------------------------------------
@@ -684,16 +687,29 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
   vtkOFBBrush* brush = internals.Brush;
   auto radiusAt = [brush](double pr)
   { return brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pr : 1.0); };
+  // With FollowSurface the point moves to the closest sample and the dabs follow a path
+  // over the surface from the last point; otherwise they follow the straight chord.
+  const vtkOFBStrokePath surface(this->FollowSurface ? internals.OFB.GetPointer() : nullptr);
+  double q[3] = { p[0], p[1], p[2] };
+  const vtkIdType sample = surface.IsValid() ? surface.Snap(p, q) : -1;
   if (!internals.HasLastPoint)
   {
-    place(p, pressure);
+    place(q, pressure);
     internals.Sampler.Start(radiusAt(pressure));
   }
   else
   {
-    const glm::dvec3 a(internals.LastPoint[0], internals.LastPoint[1], internals.LastPoint[2]);
-    const glm::dvec3 b(p[0], p[1], p[2]);
-    const double length = glm::length(b - a);
+    std::vector<glm::dvec3> path;
+    if (sample >= 0 && internals.LastSample >= 0)
+    {
+      surface.Trace(internals.LastSample, sample, path);
+    }
+    else
+    {
+      path = { glm::dvec3(internals.LastPoint[0], internals.LastPoint[1], internals.LastPoint[2]),
+        glm::dvec3(q[0], q[1], q[2]) };
+    }
+    const double length = vtkOFBStrokePath::Length(path, 0, path.size() - 1);
     const double cellSize = internals.OFB ? internals.OFB->GetCellSize() : 0.0;
     const double smallest = radiusAt(std::min(pressure, internals.LastPressure));
     if (vtkOFBStrokeSampler::MostDabs(length, this->Spacing, smallest, cellSize) >
@@ -702,25 +718,36 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
       vtkErrorMacro("StrokeTo: this segment ("
         << length << " long) would place more than " << vtkOFBMaximumStrokeDabs << " dabs (radius "
         << brush->GetRadius() << ", Spacing " << this->Spacing << "): nothing painted.");
-      std::copy(p, p + 3, internals.LastPoint);
+      std::copy(q, q + 3, internals.LastPoint);
+      internals.LastSample = sample;
       internals.LastPressure = pressure;
       internals.Sampler.Start(radiusAt(pressure));
       return 0;
     }
+    // The pressure goes from the last point's to this one's along the path's length.
     const double startPressure = internals.LastPressure;
-    internals.Sampler.Walk(length,
+    std::vector<double> walked(path.size(), 0.0);
+    for (size_t i = 1; i < path.size(); ++i)
+    {
+      walked[i] = walked[i - 1] + glm::length(path[i] - path[i - 1]);
+    }
+    internals.Sampler.WalkPath(path,
       this->Spacing,
       cellSize,
-      [&](double t)
+      [&](size_t i, double t)
       {
-        const glm::dvec3 c = a + t * (b - a);
-        const double pr = startPressure + t * (pressure - startPressure);
+        const glm::dvec3 c = path[i] + t * (path[i + 1] - path[i]);
+        const double f = length > 0.0
+          ? std::min(1.0, (walked[i] + t * (walked[i + 1] - walked[i])) / length)
+          : 1.0;
+        const double pr = startPressure + f * (pressure - startPressure);
         const double cc[3] = { c.x, c.y, c.z };
         place(cc, pr);
         return radiusAt(pr);
       });
   }
-  std::copy(p, p + 3, internals.LastPoint);
+  std::copy(q, q + 3, internals.LastPoint);
+  internals.LastSample = sample;
   internals.LastPressure = pressure;
   internals.HasLastPoint = true;
   return dabs.empty() ? 0 : this->Paint(dabs);
@@ -772,6 +799,7 @@ void vtkOFBPainter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UndoLimit: " << this->UndoLimit << "\n";
   os << indent << "MaximumDabsPerCall: " << this->MaximumDabsPerCall << "\n";
   os << indent << "AbortPaint: " << this->AbortPaint << "\n";
+  os << indent << "FollowSurface: " << this->FollowSurface << "\n";
   os << indent << "MirrorX: " << this->MirrorX << ", MirrorY: " << this->MirrorY
      << ", MirrorZ: " << this->MirrorZ << "\n";
   os << indent << "MirrorOrigin: (" << this->MirrorOrigin[0] << ", " << this->MirrorOrigin[1]

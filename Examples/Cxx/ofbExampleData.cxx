@@ -543,10 +543,13 @@ bool CheckLeaf(const Leaf& leaf, std::string& problem)
 
 /**
  * The chosen blocks as one surface: the outer surface of each (vtkDataSetSurfaceFilter;
- * polydata as they are), appended, with the cell array "BlockIndex" (each block's flat
- * index). vtkAppendPolyData keeps the arrays that every block has.
+ * polydata as they are), appended, with (for the blocks of a composite file) the cell array
+ * "BlockIndex" (each block's flat index). vtkAppendPolyData keeps the arrays that every
+ * block has.
  */
-vtkSmartPointer<vtkPolyData> MergeBlocks(const std::vector<Leaf>& chosen, std::string& problem)
+vtkSmartPointer<vtkPolyData> MergeBlocks(const std::vector<Leaf>& chosen,
+  bool composite,
+  std::string& problem)
 {
   vtkNew<ofbexample::FirstError> errors;
   vtkNew<vtkAppendPolyData> append;
@@ -571,11 +574,14 @@ vtkSmartPointer<vtkPolyData> MergeBlocks(const std::vector<Leaf>& chosen, std::s
       filter->Update();
       surface->ShallowCopy(filter->GetOutput());
     }
-    vtkNew<vtkIntArray> index;
-    index->SetName("BlockIndex");
-    index->SetNumberOfTuples(surface->GetNumberOfCells());
-    index->FillValue(static_cast<int>(leaf.Index));
-    surface->GetCellData()->AddArray(index);
+    if (composite)
+    {
+      vtkNew<vtkIntArray> index;
+      index->SetName("BlockIndex");
+      index->SetNumberOfTuples(surface->GetNumberOfCells());
+      index->FillValue(static_cast<int>(leaf.Index));
+      surface->GetCellData()->AddArray(index);
+    }
     append->AddInputData(surface);
   }
   append->Update();
@@ -703,7 +709,7 @@ bool ReadDataSurface(const std::string& path,
     }
     else if (ChooseLeaves(leaves, options.Blocks, chosen, problem))
     {
-      surface = MergeBlocks(chosen, problem);
+      surface = MergeBlocks(chosen, vtkDataSet::SafeDownCast(object) == nullptr, problem);
     }
   }
   if (!surface)

@@ -17,7 +17,8 @@
  *   0): of a .pvd, or of a reader that reports time steps. A value outside the file's
  *   range, or a time asked of a file without time steps, is an error naming the range.
  * - The chosen blocks become one surface (MergeBlocks: the outer surface of each block,
- *   appended, with a cell array "BlockIndex" holding each block's flat index).
+ *   appended; for a composite file with a cell array "BlockIndex" holding each block's
+ *   flat index, which vtkOFBSampler passes on as a sample array).
  * - The field (`--field NAME`): a point or a cell array of that name (point first). A
  *   file without it is an error that lists the arrays the file has (vectors first).
  *

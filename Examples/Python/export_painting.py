@@ -51,25 +51,30 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations)
 
 import vtkofb
-from ofb_example_view import add_view_options, frame_camera, read_surface, vivid_share
+from ofb_example_view import (add_data_options, add_view_options, frame_camera, paint_field,
+                              read_data_or_exit, vivid_share)
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("mesh", help="surface (.obj, .ply, .stl, .vtp), with or without texture "
-                    "coordinates")
+parser.add_argument("mesh", help="surface (.vtp .vtu .vtm .pvd .vtk .stl .obj .ply), with or "
+                                 "without texture coordinates")
 parser.add_argument("png", help="picture of the three views to write")
 parser.add_argument("--resolution", type=int, default=1024)
 parser.add_argument("--texture", type=int, default=1024)
 parser.add_argument("--output-dir", default=".")
 add_view_options(parser, azimuth=-50.0)
 parser.add_argument("--check", action="store_true")
+add_data_options(parser, "start the paint from this point or cell array in colour "
+                         "(blue to red)")
 args = parser.parse_args()
 
 # 1. Read the mesh and sample it into an OFB.
-mesh = read_surface(args.mesh)
+mesh = read_data_or_exit(args.mesh, args)[0]
 sampler = vtkofb.vtkOFBSampler()
 sampler.SetInputData(mesh)
 sampler.SetResolution(args.resolution)
 sampler.Update()
+if args.field:
+    paint_field(sampler.GetOutput(), args.field)
 ofb = sampler.GetOutput()
 cell = ofb.GetCellSize()
 

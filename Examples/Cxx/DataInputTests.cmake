@@ -13,9 +13,9 @@ set_tests_properties(OFB.Examples.Data.MakeInputs PROPERTIES FIXTURES_SETUP ofb_
 
 # OFBLIC on each format, with its vector field (cells or points) and its blocks and times.
 set(_lic_names Vtp Vtu Vtk VtmBlock Pvd PvdStep)
-set(_lic_args "pipe.vtp;--field;WSS" "pipe.vtu;--field;Velocity" "pipe.vtk;--field;Flow"
-  "pipe.vtm;--field;WSS;--block;downstream" "series.pvd;--field;WSS;--time;0.6"
-  "series.pvd;--field;WSS;--time-step;2")
+set(_lic_args "pipe.vtp|--field|WSS" "pipe.vtu|--field|Velocity" "pipe.vtk|--field|Flow"
+  "pipe.vtm|--field|WSS|--block|downstream" "series.pvd|--field|WSS|--time|0.6"
+  "series.pvd|--field|WSS|--time-step|2")
 set(_lic_messages "vtkPolyData, 1 block[^\n]*field 'WSS' on cells"
   "vtkUnstructuredGrid, 1 block[^\n]*field 'Velocity' on points"
   "legacy VTK vtkPolyData[^\n]*field 'Flow' on points"
@@ -24,6 +24,7 @@ set(_lic_messages "vtkPolyData, 1 block[^\n]*field 'WSS' on cells"
 foreach (_name IN LISTS _lic_names)
   list(FIND _lic_names "${_name}" _index)
   list(GET _lic_args ${_index} _args)
+  string(REPLACE "|" ";" _args "${_args}")
   list(GET _lic_messages ${_index} _message)
   list(GET _args 0 _file)
   list(REMOVE_AT _args 0)
@@ -50,16 +51,22 @@ set_tests_properties(OFB.Examples.Data.OFBParticles.Vtu PROPERTIES
 list(APPEND _data_tests OFB.Examples.Data.OFBParticles.VtmCellField
   OFB.Examples.Data.OFBParticles.Vtu)
 
-# OFBPaint: the .vtp coloured by a cell field, four stroke points a quarter turn apart
-# around the pipe (one off the wall) painted as one ring, checked on the saved OFB.
+# OFBPaint: a .vtm's blocks coloured by their cell field; on the .vtp, four stroke points a
+# quarter turn apart around the pipe (one off the wall) painted as one ring, checked on
+# the saved OFB.
+add_test(NAME OFB.Examples.Data.OFBPaint.Field
+  COMMAND OFBPaint "${_data}/pipe.vtm" --field WSS --resolution 96 --width 200 --height 200
+    --strokes "${CMAKE_CURRENT_SOURCE_DIR}/OFBPaint/no-strokes.txt"
+    --image "${_data}/paint-field.png")
+set_tests_properties(OFB.Examples.Data.OFBPaint.Field PROPERTIES
+  TIMEOUT 120 PASS_REGULAR_EXPRESSION "2 block[^\n]*field 'WSS' on cells.*Wrote ")
 add_test(NAME OFB.Examples.Data.OFBPaint.PipeStrokes
-  COMMAND OFBPaint "${_data}/pipe.vtp" --field WSSMagnitude --resolution 128 --width 200
-    --height 200 --strokes "${_data}/pipe-strokes.txt" --image "${_data}/paint-pipe.png"
+  COMMAND OFBPaint "${_data}/pipe.vtp" --resolution 128 --width 200 --height 200
+    --strokes "${_data}/pipe-strokes.txt" --image "${_data}/paint-pipe.png"
     --save "${_data}/paint-pipe.ofb")
 set_tests_properties(OFB.Examples.Data.OFBPaint.PipeStrokes PROPERTIES
-  TIMEOUT 120 FIXTURES_SETUP ofb_data_paint
-  PASS_REGULAR_EXPRESSION "field 'WSSMagnitude' on cells.*Replayed [^\n]*5 points")
-list(APPEND _data_tests OFB.Examples.Data.OFBPaint.PipeStrokes)
+  TIMEOUT 120 FIXTURES_SETUP ofb_data_paint PASS_REGULAR_EXPRESSION "Replayed [^\n]*5 points")
+list(APPEND _data_tests OFB.Examples.Data.OFBPaint.Field OFB.Examples.Data.OFBPaint.PipeStrokes)
 if (VTKOFB_WRAP_PYTHON)
   add_test(NAME OFB.Examples.Data.OFBPaint.PipeStrokesRing
     COMMAND /usr/bin/python3 "${CMAKE_CURRENT_SOURCE_DIR}/OFBPaint/check_pipe_strokes.py"
@@ -72,10 +79,10 @@ endif ()
 
 # Bad data: a message naming what is wrong and a non-zero exit, before any window.
 add_test(NAME OFB.Examples.Data.Bad.MissingFieldLIC
-  COMMAND ${_expect} "has no point or cell array 'Nope'; its arrays: cell vectors: WSS" 30
+  COMMAND ${_expect} "has no point or cell array 'Nope'. its arrays: cell vectors: WSS" 30
     $<TARGET_FILE:OFBLIC> "${_data}/pipe.vtp" --field Nope --image "${_data}/out.png")
 add_test(NAME OFB.Examples.Data.Bad.MissingFieldParticles
-  COMMAND ${_expect} "has no point or cell array 'Nope'; its arrays: point vectors: Velocity"
+  COMMAND ${_expect} "has no point or cell array 'Nope'. its arrays: point vectors: Velocity"
     30 $<TARGET_FILE:OFBParticles> "${_data}/pipe.vtu" --field Nope --image "${_data}/out.png")
 add_test(NAME OFB.Examples.Data.Bad.MissingFieldPaint
   COMMAND ${_expect} "has no point or cell array 'Nope'" 30 $<TARGET_FILE:OFBPaint>

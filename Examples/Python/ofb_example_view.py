@@ -291,12 +291,13 @@ def paint_field(ofb, name):
     low, high = (values[finite].min(), values[finite].max()) if finite.any() else (0.0, 1.0)
     table = vtkLookupTable()
     table.SetHueRange(0.667, 0.0)
-    table.SetTableRange(low, high)
     table.Build()
+    rgba = np.array([table.GetTableValue(i) for i in range(table.GetNumberOfTableValues())])
     values = np.where(finite, values, low)
+    index = np.clip(((values - low) / max(high - low, 1e-300) * len(rgba)).astype(np.int64),
+                    0, len(rgba) - 1)
     colors = numpy_support.vtk_to_numpy(data.GetArray("Colors"))
-    for i, v in enumerate(values):
-        colors[i] = table.MapValue(v)
+    colors[:] = np.round(255.0 * rgba[index]).astype(np.uint8)
     data.GetArray("Colors").Modified()
     ofb.MarkAllSamplesModified()
     ofb.Modified()

@@ -97,7 +97,7 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
   "Orthogonal Fragment Buffers for VTK: sample-based surface colouring")
 set(CPACK_PACKAGE_DESCRIPTION
   "VTK 9.1 modules OFB::Core, OFB::Paint, OFB::FlowPaths, OFB::Export,
-OFB::Rendering and OFB::Interaction (libraries, headers and the CMake
+OFB::Rendering, OFB::Interaction and OFB::TestingImage (libraries, headers and the CMake
 package found with find_package(vtkofb)) and the vtkofb
 Python package for Debian's python3-vtk9.")
 set(CPACK_PACKAGE_VERSION "${PROJECT_VERSION}")

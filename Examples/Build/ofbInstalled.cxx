@@ -2,15 +2,18 @@
 // find_package(vtkofb)). It builds the OFB of a sphere on the CPU, queries it, writes it to an
 // .ofb file and reads it back, and checks that the object factories are registered
 // (vtk_module_autoinit: an OpenGL render window, the interactor's default style) and that the
-// OFB mapper and picker take the OFB. It opens no window, so it runs without a display.
+// OFB mapper and picker take the OFB, and compares an image with itself by the image
+// comparison of tests (OFB::TestingImage). It opens no window, so it runs without a display.
 //
 // Usage: ofbInstalled [file.ofb]   (default: ofbInstalled.ofb in the current directory)
 
 #include "vtkIdList.h"
+#include "vtkImageData.h"
 #include "vtkInteractorObserver.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBuilder.h"
+#include "vtkOFBImageComparison.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBReader.h"
 #include "vtkOFBSamplePicker.h"
@@ -91,11 +94,37 @@ int main(int argc, char* argv[])
   vtkNew<vtkOFBSamplePicker> picker;
   picker->SetOFB(reader->GetOutput());
 
+  // A 64 x 64 texture on a black border, compared with itself: it passes.
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(64, 64, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int i = 0; i < 64 * 64; ++i)
+  {
+    const int x = i % 64;
+    const int y = i / 64;
+    const bool inside = x >= 8 && x < 56 && y >= 8 && y < 56;
+    for (int c = 0; c < 3; ++c)
+    {
+      pixels[3 * i + c] = static_cast<unsigned char>(inside ? 40 + (x * 37 + y * 91) % 160 : 0);
+    }
+  }
+  vtkNew<vtkOFBImageComparison> comparison;
+  comparison->SetImage(image);
+  comparison->SetBaseline(image);
+  if (!comparison->Compare())
+  {
+    std::cerr << "ofbInstalled: an image differs from itself: " << comparison->GetErrorText()
+              << "\n";
+    return 1;
+  }
+
   std::cout << "ofbInstalled: " << ofb->GetNumberOfSamples() << " samples (X "
             << ofb->GetNumberOfSamples(0) << ", Y " << ofb->GetNumberOfSamples(1) << ", Z "
             << ofb->GetNumberOfSamples(2) << "), " << near->GetNumberOfIds()
             << " within 3 cells of (1, 0, 0), written to and read from " << fileName
             << "; render window class " << window->GetClassName() << ", interactor style "
-            << style->GetClassName() << "\n";
+            << style->GetClassName() << "; image comparison passed (correlation "
+            << comparison->GetCorrelation() << ")\n";
   return 0;
 }

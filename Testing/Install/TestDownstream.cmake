@@ -84,8 +84,10 @@ run(cxx_example env -i PATH=/usr/bin:/bin "${example}/ofbInstalled" "${WORK_DIR}
 expect("${cxx_example_output}" "[1-9][0-9]* samples" "a sample count")
 expect("${cxx_example_output}" "render window class vtk[A-Za-z]*OpenGLRenderWindow"
   "an OpenGL render window")
-expect("${cxx_example_output}" "interactor style vtkInteractorStyleSwitch\n"
+expect("${cxx_example_output}" "interactor style vtkInteractorStyleSwitch;"
   "the interactor style of InteractionStyle's factory")
+expect("${cxx_example_output}" "image comparison passed \\(correlation 1\\)"
+  "the image comparison of OFB::TestingImage")
 
 # Subclasses of the algorithms, compiled against the installed headers alone.
 run(cxx_subclass env -i PATH=/usr/bin:/bin "${example}/ofbSubclass")

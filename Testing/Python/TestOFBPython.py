@@ -27,7 +27,7 @@ CLASSES = ("vtkOFB", "vtkOFBAlgorithm", "vtkOFBSampler", "vtkOFBBuilder",
            "vtkOFBToPolyData", "vtkOFBSamplePicker", "vtkOFBWriter", "vtkOFBReader",
            "vtkOFBPyramid", "vtkOFBPolyDataMapper", "vtkOFBColoring", "vtkOFBMapToColors",
            "vtkOFBProbeFilter", "vtkOFBTextureBaker",
-           "vtkOFBTextureProjector", "vtkOFBDecalPatch")
+           "vtkOFBTextureProjector", "vtkOFBDecalPatch", "vtkOFBImageComparison")
 
 
 class Events:

@@ -56,5 +56,5 @@ int TestOFBLICHorse(int argc, char* argv[])
     std::cerr << "The mapper did not colour from the OFB." << std::endl;
     return 1;
   }
-  return vtkofbtest::CompareWithBaseline(argc, argv, scene.Window);
+  return vtkofbtest::CompareLICWithBaseline(argc, argv, scene.Window);
 }

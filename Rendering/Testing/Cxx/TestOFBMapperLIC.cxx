@@ -78,5 +78,5 @@ int TestOFBMapperLIC(int argc, char* argv[])
     std::cerr << "The mapper did not colour from the OFB." << std::endl;
     return 1;
   }
-  return vtkofbtest::CompareWithBaseline(argc, argv, renWin);
+  return vtkofbtest::CompareLICWithBaseline(argc, argv, renWin);
 }

@@ -8,6 +8,7 @@
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBRegressionTestImage.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRegressionTestImage.h"
@@ -108,6 +109,26 @@ inline int CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* renWin)
     iren->Start();
   }
   return !retVal;
+}
+
+/**
+ * Compare the rendered window with the test's baseline image by vtkOFBImageComparison
+ * (interactive with -I): the texture (the high-passed luminance) and the low-passed
+ * colour inside the surface, VTK's image difference outside it. For images whose
+ * surface carries a LIC, which VTK's image difference alone does not see. The
+ * background of the window's first renderer tells the surface from the background.
+ * Returns the test's exit code (0 on success).
+ */
+inline int CompareLICWithBaseline(int argc, char* argv[], vtkRenderWindow* renWin)
+{
+  const int retVal = vtkOFBRegressionTestImage(renWin);
+  if (retVal == vtkOFBImageComparison::DO_INTERACTOR)
+  {
+    vtkNew<vtkRenderWindowInteractor> iren;
+    iren->SetRenderWindow(renWin);
+    iren->Start();
+  }
+  return retVal == vtkOFBImageComparison::FAILED ? 1 : 0;
 }
 
 /**

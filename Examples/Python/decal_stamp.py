@@ -15,6 +15,9 @@ bunny's ears, back and flank): each stays round and points along the mesh's up a
 Run (from a build tree; Debian's python3 has VTK's modules):
     PYTHONPATH=build/lib/python3.11/dist-packages /usr/bin/python3 \\
         Examples/Python/decal_stamp.py Testing/Data/stanford-bunny.obj decals.png
+Data (the C++ applications' inputs and options): .vtp, .vtu, .vtm, .pvd, legacy .vtk, .stl,
+.obj or .ply, by content; --block LIST, --time T or --time-step N; --field NAME starts the
+paint from that point or cell array in colour (blue to red).
 Options: --resolution (OFB cells on the longest side), --decals (how many), --size,
 --up, --azimuth, --elevation, --check (exit with an error unless every decal was
 stamped and the picture shows them; the ctest uses it). Headless: prefix with xvfb-run -a.

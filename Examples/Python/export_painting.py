@@ -23,6 +23,9 @@ Run (from a build tree; Debian's python3 has VTK's modules):
     PYTHONPATH=build/lib/python3.11/dist-packages /usr/bin/python3 \\
         Examples/Python/export_painting.py Testing/Data/spot.obj export.png
     (or Testing/Data/stanford-bunny.obj: texture coordinates made by the atlas)
+Data (the C++ applications' inputs and options): .vtp, .vtu, .vtm, .pvd, legacy .vtk, .stl,
+.obj or .ply, by content; --block LIST, --time T or --time-step N; --field NAME starts the
+paint from that point or cell array in colour (blue to red).
 Options: --resolution (OFB cells on the longest side), --texture (texels a side; for an
 atlas the most, a texel a cell where that fits),
 --output-dir (where spot_painted.ply, .obj, .mtl and .png go), --size (pixels a view),

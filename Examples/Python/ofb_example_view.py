@@ -179,11 +179,30 @@ def _leaves(data):
     return leaves
 
 
+def _check_block(index, data):
+    """Finite points and cell point ids in range, before a filter reads them."""
+    n = data.GetNumberOfPoints()
+    if n and data.GetPoints() is not None:
+        points = numpy_support.vtk_to_numpy(data.GetPoints().GetData())
+        if not np.isfinite(points).all():
+            raise DataError("block %d: a point is not finite" % index)
+    cells = ([data.GetVerts(), data.GetLines(), data.GetPolys(), data.GetStrips()]
+             if isinstance(data, vtkPolyData) else
+             [data.GetCells()] if hasattr(data, "GetCells") and data.GetCells() is not None
+             else [])
+    for array in cells:
+        ids = numpy_support.vtk_to_numpy(array.GetConnectivityArray())
+        if ids.size and (ids.min() < 0 or ids.max() >= n):
+            raise DataError("block %d: a cell uses point %d, not one of the %d points"
+                            % (index, ids.max() if ids.max() >= n else ids.min(), n))
+
+
 def _merge_blocks(chosen, composite):
     """The chosen blocks as one surface, for a composite file with the cell array
     BlockIndex (as the C++ applications' MergeBlocks)."""
     append = vtkAppendPolyData()
     for index, _, data in chosen:
+        _check_block(index, data)
         if isinstance(data, vtkPolyData):
             surface = vtkPolyData()
             surface.ShallowCopy(data)
@@ -242,7 +261,10 @@ def read_data(path, field=None, block=None, time=None, time_step=None, vectors=F
             chosen += match[:1]
     if not chosen:
         raise DataError("cannot read '%s': no data set in the file" % path)
-    surface = _merge_blocks(chosen, not isinstance(data, vtkDataSet))
+    try:
+        surface = _merge_blocks(chosen, not isinstance(data, vtkDataSet))
+    except DataError as error:
+        raise DataError("cannot read '%s': %s" % (path, error))
     if surface.GetNumberOfPolys() + surface.GetNumberOfStrips() == 0:
         raise DataError("cannot read '%s': no polygons in the file" % path)
     array, on_cells = None, False

@@ -16,6 +16,9 @@ changed, so the script can keep, compare and save every stage.
 Run (from a build tree; Debian's python3 has VTK's modules):
     PYTHONPATH=build/lib/python3.11/dist-packages /usr/bin/python3 \
         Examples/Python/paint_strokes.py Testing/Data/stanford-bunny.obj paint.png
+Data (the C++ applications' inputs and options): .vtp, .vtu, .vtm, .pvd, legacy .vtk, .stl,
+.obj or .ply, by content; --block LIST, --time T or --time-step N; --field NAME starts the
+paint from that point or cell array in colour (blue to red).
 Options: --resolution (OFB cells on the longest side), --rings, --size (pixels),
 --up (the mesh's up axis), --azimuth and --elevation (degrees), --save FILE.ofb (the
 painted OFB, for OFBPaint --load or vtkOFBReader), --check (exit with an error unless

@@ -75,7 +75,6 @@ struct vtkOFBPainter::vtkInternals
   // Stroke state: the last point given (on the surface with FollowSurface), the last dab and the walk of the dabs.
   bool HasLastPoint = false;
   double LastPoint[3] = { 0.0, 0.0, 0.0 };
-  vtkIdType LastSample = -1; // the sample the last point was moved to (FollowSurface)
   double LastPressure = 1.0;
   bool HasLastDab = false;
   double LastDab[3] = { 0.0, 0.0, 0.0 };

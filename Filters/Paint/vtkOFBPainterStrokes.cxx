@@ -98,10 +98,14 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
   }
   else
   {
+    // The last point is re-found rather than kept as a sample id: the OFB may have been
+    // rebuilt between two calls (it was moved onto a sample: the same one when it was not).
     std::vector<glm::dvec3> path;
-    if (sample >= 0 && internals.LastSample >= 0)
+    double lastOnSurface[3];
+    const vtkIdType last = sample >= 0 ? surface.Snap(internals.LastPoint, lastOnSurface) : -1;
+    if (last >= 0)
     {
-      surface.Trace(internals.LastSample, sample, path);
+      surface.Trace(last, sample, path);
     }
     else
     {
@@ -118,7 +122,6 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
         << length << " long) would place more than " << vtkOFBMaximumStrokeDabs << " dabs (radius "
         << brush->GetRadius() << ", Spacing " << this->Spacing << "): nothing painted.");
       std::copy(q, q + 3, internals.LastPoint);
-      internals.LastSample = sample;
       internals.LastPressure = pressure;
       internals.Sampler.Start(radiusAt(pressure));
       return 0;
@@ -146,7 +149,6 @@ vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
       });
   }
   std::copy(q, q + 3, internals.LastPoint);
-  internals.LastSample = sample;
   internals.LastPressure = pressure;
   internals.HasLastPoint = true;
   return dabs.empty() ? 0 : this->Paint(dabs);

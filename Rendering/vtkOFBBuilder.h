@@ -2,9 +2,11 @@
  * @class   vtkOFBBuilder
  * @brief   Build a vtkOFB from a surface, on the GPU through VTK's OpenGL context or on the CPU
  *
- * vtkOFBBuilder is the construction entry point of vtkOFB. It has every setting
- * of vtkOFBSampler (Resolution, MemoryLimit, colours, arrays) and adds the choice
- * of backend (a vtkOFBSamplerBackend that the sampler's build runs):
+ * vtkOFBBuilder is the construction entry point of vtkOFB. It takes the inputs of
+ * vtkOFBSampler (any vtkDataSet, or a vtkCompositeDataSet as one OFB over all its
+ * blocks with the samples' "BlockIndex"; both backends build from the same prepared
+ * surface), has every setting of vtkOFBSampler (Resolution, MemoryLimit, colours,
+ * arrays) and adds the choice of backend (a vtkOFBSamplerBackend that the sampler's build runs):
  *
  * - `BACKEND_CPU`: vtkOFBSampler's multi-threaded scan conversion (vtkSMPTools).
  * - `BACKEND_OPENGL`: rasterization in the context of a VTK render window (SetRenderWindow,

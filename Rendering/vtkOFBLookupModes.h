@@ -27,6 +27,9 @@ constexpr vtkOFBLookupModeInfo vtkOFBLookupModeInfos[] = {
     "NearestMipmapped",
     "OFB_LOOKUP_NEAREST_MIPMAPPED",
     true },
+  { vtkOFBPolyDataMapper::LOOKUP_SMOOTH, "Smooth", "OFB_LOOKUP_SMOOTH", true },
+  // Resolved to Smooth or Nearest before the shader is made (never OFB_LOOKUP_MODE).
+  { vtkOFBPolyDataMapper::LOOKUP_AUTOMATIC, "Automatic", "OFB_LOOKUP_AUTOMATIC", false },
 };
 static_assert(sizeof(vtkOFBLookupModeInfos) / sizeof(vtkOFBLookupModeInfos[0]) ==
     vtkOFBPolyDataMapper::NUMBER_OF_LOOKUP_MODES,

@@ -9,9 +9,13 @@
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBColoring.h"
+#include "vtkOFBLIC.h"
+#include "vtkOFBLICPyramid.h"
 #include "vtkOFBLookupFS.h"
 #include "vtkOFBLookupModes.h"
 #include "vtkOFBMapToColors.h"
+#include "vtkOFBPolyDataMapperInternals.h"
+#include "vtkOFBPyramid.h"
 #include "vtkOFBShaderStorage.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLActor.h"
@@ -20,6 +24,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
@@ -33,14 +38,6 @@
 
 vtkStandardNewMacro(vtkOFBPolyDataMapper);
 
-// The header's names for the implementation's types, which it does not install.
-class vtkOFBPolyDataMapper::vtkStorage : public vtkOFBShaderStorage
-{
-};
-struct vtkOFBPolyDataMapper::vtkSelection : public vtkOFBShaderStorage::Selection
-{
-};
-
 namespace
 {
 // Above this many samples in a cell, the lookups binary-search a cell's depths before their
@@ -50,7 +47,10 @@ constexpr int DeepCellSamples = 8;
 
 //------------------------------------------------------------------------------
 vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
-  : LookupMode(LOOKUP_NEAREST)
+  : LookupMode(LOOKUP_AUTOMATIC)
+  , ResolvedLookupMode(LOOKUP_NEAREST)
+  , AutomaticLevelLIC(true)
+  , UserPyramid(false)
   , InterpolationRadius(std::sqrt(3.0))
   , MipmapBias(0.0)
   , MaximumNumberOfMipmapLevels(8)
@@ -65,6 +65,9 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , UseIntensity(false)
   , UseNormals(false)
   , DeepCells(false)
+  , LevelIntensity(false)
+  , IntensityMean(0.5)
+  , MeanTime(0)
   , Storage(new vtkStorage)
   , AlphaTranslucent(false)
   , AlphaHint(0)
@@ -112,7 +115,9 @@ int vtkOFBPolyDataMapper::FillInputPortInformation(int port, vtkInformation* inf
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
     return 1;
   }
-  return this->Superclass::FillInputPortInformation(port, info);
+  this->Superclass::FillInputPortInformation(port, info);
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -161,6 +166,22 @@ void vtkOFBPolyDataMapper::SetLookupMode(int mode)
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::SetPyramid(vtkOFBPyramid* pyramid)
+{
+  this->UserPyramid = pyramid != nullptr;
+  if (this->Storage->SetPyramid(pyramid))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPyramid* vtkOFBPolyDataMapper::GetPyramid()
+{
+  return this->Storage->GetPyramid();
+}
+
+//------------------------------------------------------------------------------
 vtkIdType vtkOFBPolyDataMapper::GetGPUMemorySize()
 {
   return static_cast<vtkIdType>(this->Storage->GetMemorySize());
@@ -170,92 +191,6 @@ vtkIdType vtkOFBPolyDataMapper::GetGPUMemorySize()
 vtkIdType vtkOFBPolyDataMapper::GetUploadedBytes()
 {
   return static_cast<vtkIdType>(this->Storage->GetUploadedBytes());
-}
-
-//------------------------------------------------------------------------------
-bool vtkOFBPolyDataMapper::HasTranslucentPolygonalGeometry()
-{
-  this->UpdateOFBProducer();
-  vtkOFB* ofb = this->GetOFB();
-  if (!ofb || ofb->GetNumberOfSamples() == 0)
-  {
-    return this->Superclass::HasTranslucentPolygonalGeometry();
-  }
-  vtkOFBShaderStorage::Selection selection;
-  selection.ScalarName = this->Coloring->GetScalarArrayName();
-  selection.ScalarComponent = this->Coloring->GetScalarComponent();
-  if (this->Coloring->GetColorSource() == vtkOFBColoring::COLOR_SOURCE_SCALARS &&
-    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_SCALARS, selection))
-  {
-    vtkScalarsToColors* lut = this->Coloring->GetLookupTable();
-    lut->Build();
-    return lut->IsOpaque() == 0;
-  }
-  return this->HasTranslucentColors(ofb);
-}
-
-//------------------------------------------------------------------------------
-bool vtkOFBPolyDataMapper::HasTranslucentColors(vtkOFB* ofb)
-{
-  vtkOFBShaderStorage::Selection selection;
-  auto* colors = vtkUnsignedCharArray::SafeDownCast(
-    vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::ATTRIBUTE_COLORS, selection));
-  if (!colors || colors->GetNumberOfComponents() != 4)
-  {
-    return false;
-  }
-  const vtkIdType n = std::min(colors->GetNumberOfTuples(), ofb->GetNumberOfSamples());
-  const unsigned char* rgba = colors->GetPointer(0);
-  // First sample of [first, last) with alpha below 255, or -1.
-  auto findTranslucent = [rgba](vtkIdType first, vtkIdType last) -> vtkIdType
-  {
-    for (vtkIdType i = first; i < last; ++i)
-    {
-      if (rgba[4 * i + 3] != 255)
-      {
-        return i;
-      }
-    }
-    return -1;
-  };
-  const bool changed = ofb != this->AlphaOFB || colors != this->AlphaColors ||
-    ofb->GetStructureMTime() > this->AlphaTime.GetMTime() ||
-    colors->GetMTime() > this->AlphaTime.GetMTime();
-  vtkNew<vtkIdTypeArray> ranges;
-  if (!changed)
-  {
-    ofb->GetSampleRangesModifiedSince(this->AlphaTime.GetMTime(), ranges);
-    if (ranges->GetNumberOfTuples() == 0)
-    {
-      return this->AlphaTranslucent;
-    }
-  }
-  vtkIdType found = -1;
-  if (!changed && !this->AlphaTranslucent)
-  {
-    // Opaque so far: only the modified samples can have made it translucent.
-    for (vtkIdType r = 0; r < ranges->GetNumberOfTuples() && found < 0; ++r)
-    {
-      found = findTranslucent(std::max<vtkIdType>(0, ranges->GetTypedComponent(r, 0)),
-        std::min(n, ranges->GetTypedComponent(r, 1)));
-    }
-  }
-  else
-  {
-    // A full scan, from where the last translucent sample was (likely still translucent).
-    const vtkIdType hint = std::min(std::max<vtkIdType>(this->AlphaHint, 0), n);
-    found = findTranslucent(hint, n);
-    if (found < 0)
-    {
-      found = findTranslucent(0, hint);
-    }
-  }
-  this->AlphaOFB = ofb;
-  this->AlphaColors = colors;
-  this->AlphaTime.Modified();
-  this->AlphaTranslucent = found >= 0;
-  this->AlphaHint = found >= 0 ? found : 0;
-  return this->AlphaTranslucent;
 }
 
 //------------------------------------------------------------------------------
@@ -284,7 +219,7 @@ void vtkOFBPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   {
     this->Storage->Bind();
   }
-  this->Superclass::RenderPiece(ren, act);
+  this->RenderSurface(ren, act);
   if (this->OFBActive)
   {
     this->Storage->Unbind();
@@ -301,11 +236,14 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
   {
     return false;
   }
+  this->ResolveLookupMode();
+  this->UpdateAutomaticPyramid();
   this->CheckSurfaceInFrame(ofb);
   if (!this->UploadOFB(ofb, selection))
   {
     return false;
   }
+  this->UpdateLevelIntensity(ofb);
   if (this->SourceScalars)
   {
     this->UploadLookupTable();
@@ -315,6 +253,16 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
     this->UpdateLightnessRange(ofb);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::ResolveLookupMode()
+{
+  this->ResolvedLookupMode = this->LookupMode;
+  if (this->LookupMode == LOOKUP_AUTOMATIC)
+  {
+    this->ResolvedLookupMode = this->UseIntensity ? LOOKUP_SMOOTH : LOOKUP_NEAREST;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -446,7 +394,7 @@ bool vtkOFBPolyDataMapper::SelectArrays(vtkOFB* ofb, vtkSelection& selection)
 void vtkOFBPolyDataMapper::CheckSurfaceInFrame(vtkOFB* ofb)
 {
   // The surface should lie in the OFB's frame; parts outside keep the property colour.
-  vtkPolyData* input = this->GetInput();
+  vtkPolyData* input = this->GetRenderedSurface();
   if (!input || input->GetNumberOfPoints() == 0)
   {
     return;
@@ -471,8 +419,8 @@ void vtkOFBPolyDataMapper::CheckSurfaceInFrame(vtkOFB* ofb)
 bool vtkOFBPolyDataMapper::UploadOFB(vtkOFB* ofb, const vtkSelection& selection)
 {
   if (!this->Storage->UpdateLevels(ofb,
-        this->GetInput(),
-        vtkOFBFindLookupMode(this->LookupMode)->Pyramid,
+        this->GetRenderedSurface(),
+        vtkOFBFindLookupMode(this->ResolvedLookupMode)->Pyramid,
         this->MaximumNumberOfMipmapLevels,
         this->MinimumMipmapResolution))
   {
@@ -505,9 +453,10 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
   if (this->OFBActive)
   {
     this->DeepCells = this->Storage->GetMaximumCellSamples() > DeepCellSamples;
-    key << this->LookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity << "|"
-        << this->UseNormals << "|" << this->DeepCells << "|" << this->Coloring->GetLICColorMode()
-        << "|" << this->Coloring->GetEnhanceColorContrast();
+    key << this->ResolvedLookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity
+        << "|" << this->UseNormals << "|" << this->DeepCells << "|"
+        << this->Coloring->GetLICColorMode() << "|" << this->Coloring->GetEnhanceColorContrast()
+        << "|" << this->LevelIntensity;
   }
   if (key.str() != this->ShaderKey)
   {
@@ -590,13 +539,15 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(std::map<vtkShader::Type, vtkShade
     {
       defines << "#define " << info.Define << " " << info.Mode << "\n";
     }
-    defines << "#define OFB_LOOKUP_MODE " << vtkOFBFindLookupMode(this->LookupMode)->Define << "\n"
+    defines << "#define OFB_LOOKUP_MODE " << vtkOFBFindLookupMode(this->ResolvedLookupMode)->Define
+            << "\n"
             << "#define OFB_MAX_LEVELS " << vtkOFBShaderStorage::MaximumNumberOfLevels << "\n"
             << "#define OFB_LIC_MODE " << this->Coloring->GetLICColorMode() << "\n";
     const std::pair<bool, const char*> flags[] = { { this->SourceScalars, "OFB_SOURCE_SCALARS" },
       { this->UseIntensity, "OFB_USE_INTENSITY" },
       { this->UseNormals, "OFB_USE_NORMALS" },
       { this->DeepCells, "OFB_DEEP_CELLS" },
+      { this->LevelIntensity, "OFB_LEVEL_INTENSITY" },
       { this->Coloring->GetEnhanceColorContrast(), "OFB_ENHANCE_COLOR" } };
     for (const auto& flag : flags)
     {
@@ -708,6 +659,10 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO,
     program->SetUniformf("ofbIntensityWeight", static_cast<float>(coloring->GetIntensityWeight()));
     program->SetUniformf("ofbLICIntensity", static_cast<float>(coloring->GetLICIntensity()));
     program->SetUniformf("ofbMapModeBias", static_cast<float>(coloring->GetMapModeBias()));
+    if (this->LevelIntensity)
+    {
+      program->SetUniformf("ofbIntensityMean", static_cast<float>(this->IntensityMean));
+    }
   }
   if (coloring->GetEnhanceColorContrast())
   {
@@ -757,11 +712,17 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OFB: " << this->GetOFB() << "\n";
+  os << indent << "CompositeDataDisplayAttributes: " << this->GetCompositeDataDisplayAttributes()
+     << "\n";
   os << indent << "LookupMode: " << GetLookupModeAsString(this->LookupMode) << "\n";
+  os << indent << "ResolvedLookupMode: " << GetLookupModeAsString(this->ResolvedLookupMode) << "\n";
   os << indent << "InterpolationRadius: " << this->InterpolationRadius << " cells\n";
   os << indent << "MipmapBias: " << this->MipmapBias << "\n";
   os << indent << "MaximumNumberOfMipmapLevels: " << this->MaximumNumberOfMipmapLevels << "\n";
   os << indent << "MinimumMipmapResolution: " << this->MinimumMipmapResolution << "\n";
+  os << indent << "AutomaticLevelLIC: " << (this->AutomaticLevelLIC ? "On" : "Off") << "\n";
+  os << indent << "Pyramid: " << this->Storage->GetPyramid()->GetClassName() << " ("
+     << this->Storage->GetPyramid() << ")\n";
   os << indent << "Coloring:\n";
   this->Coloring->PrintSelf(os, indent.GetNextIndent());
   os << indent << "UsePaintedNormals: " << (this->UsePaintedNormals ? "On" : "Off") << "\n";

@@ -11,7 +11,7 @@
  *
  * The vertex shader passes the model-coordinate position (in OFB cells) to the fragment
  * shader; the OFB lives in shader storage buffers (OpenGL 4.3). Lookup modes:
- * - Nearest (default): the closest sample in the cell under the point at depths within one
+ * - Nearest: the closest sample in the cell under the point at depths within one
  *   cell (as vtkOFB::FindSample), in the grid most aligned with the triangle's geometric
  *   normal (computed per fragment from screen-space derivatives of the position: the normal
  *   vtkOFBSampler routes a triangle by, so the grid that holds its samples), else the next
@@ -35,6 +35,27 @@
  *   its filtering down the pyramid), or, for values changed in place and marked with
  *   vtkOFB::MarkSamplesModified (painting), only the coarse samples that read them, and
  *   only those are uploaded (vtkOFBPyramid::UpdateModifiedArrays).
+ *
+ * - Smooth: interpolation along the surface where a level-0 cell covers a pixel or more,
+ *   and the two pyramid levels around the footprint blended where cells are smaller than
+ *   pixels (the blend of Mipmapped, so no line where the level changes). In each level the
+ *   samples within min(InterpolationRadius, 1.5) cells in the 3x3 cells around the point
+ *   of all three grids are weighted by the smooth compact kernel (1 - t^2/r^2)^2 of their
+ *   distance t and by their agreement with the fragment's tangent plane (full within half a
+ *   cell of it, none from one cell: the other side of a thin sheet does not bleed through).
+ *   The weights are continuous, so the colour is continuous across cell borders and grid
+ *   changes: close-ups show no cell blocks. The lookup to use for a LIC (with a
+ *   vtkOFBLICPyramid from OFB::FlowPaths as the pyramid, SetPyramid, streaks stay at every
+ *   zoom instead of fading to grey). Where the pyramid computes the intensity on every
+ *   level (vtkOFBPyramid::IsComputedArray), the levels are independent textures, whose
+ *   plain mix would lose contrast half-way between levels (a band of weaker streaks); the
+ *   blended intensity is then m + (mix - m) / sqrt((1 - t)^2 + t^2), with m the mean of
+ *   level 0's intensity and t the blend weight, which keeps the variance of the mix.
+ * - Automatic (default): Smooth where the colouring modulates by an intensity array that
+ *   the OFB has (a LIC: no cell blocks close up), else Nearest (paint: the cheapest, and
+ *   crisp brush edges). It builds the pyramid only when it resolves to Smooth. With
+ *   AutomaticLevelLIC (default on), an OFB connected straight from a vtkOFBLIC gets a
+ *   vtkOFBLICPyramid of it, so a LIC keeps its streaks from far without any setting.
  *
  * The colouring is a vtkOFBColoring (GetColoring(), one made by default), the object
  * vtkOFBMapToColors reads too: share it, `mapToColors->SetColoring(mapper->GetColoring())`,
@@ -99,6 +120,11 @@
  * Without an OFB, with an empty one, or on a context without shader storage buffers, the
  * mapper renders like vtkOpenGLPolyDataMapper and warns once.
  *
+ * Port 0 also takes a composite dataset (a vtkMultiBlockDataSet of wall patches): its
+ * blocks are drawn as one surface in one draw, coloured from one OFB built from the same
+ * input, with per-block visibility (SetCompositeDataDisplayAttributes); see
+ * GetRenderedSurface().
+ *
  * A render is a short sequence of named steps (RenderPiece): UpdateOFBInput, CheckOFB,
  * PrepareContext, SelectArrays, CheckSurfaceInFrame, then the GPU-side steps of the private
  * helper vtkOFBShaderStorage (levels, uploads, lookup table), which owns every GPU resource
@@ -114,16 +140,21 @@
 #include "vtkOFBRenderingModule.h" // for export macro
 #include "vtkOpenGLPolyDataMapper.h"
 
-#include "vtkWeakPointer.h" // for WarnedOFB
+#include "vtkSmartPointer.h" // for CompositeSurface, AutoPyramid
+#include "vtkWeakPointer.h"  // for WarnedOFB
 
 #include <memory> // for std::unique_ptr
 #include <set>    // for Warnings
 #include <string> // for Warnings
 
 class vtkAlgorithmOutput;
+class vtkCompositeDataDisplayAttributes;
 class vtkDataArray;
 class vtkOFB;
 class vtkOFBColoring;
+class vtkOFBCompositeSurface;
+class vtkOFBPyramid;
+class vtkPolyData;
 
 class VTKOFBRENDERING_EXPORT vtkOFBPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
@@ -139,6 +170,8 @@ public:
     LOOKUP_INVERSE_DISTANCE,
     LOOKUP_MIPMAPPED,
     LOOKUP_NEAREST_MIPMAPPED,
+    LOOKUP_SMOOTH,
+    LOOKUP_AUTOMATIC,
     NUMBER_OF_LOOKUP_MODES
   };
 
@@ -156,8 +189,11 @@ public:
 
   ///@{
   /**
-   * How a fragment's colour is read from the OFB, a LookupModes value: LOOKUP_NEAREST
-   * (default), LOOKUP_INVERSE_DISTANCE, LOOKUP_MIPMAPPED or LOOKUP_NEAREST_MIPMAPPED.
+   * How a fragment's colour is read from the OFB, a LookupModes value: LOOKUP_NEAREST,
+   * LOOKUP_INVERSE_DISTANCE, LOOKUP_MIPMAPPED, LOOKUP_NEAREST_MIPMAPPED, LOOKUP_SMOOTH or
+   * LOOKUP_AUTOMATIC (default: LOOKUP_SMOOTH where the colouring shows an intensity array
+   * of the OFB, a LIC, else LOOKUP_NEAREST; GetResolvedLookupMode says which the last
+   * render used).
    * Another value is an error and leaves the mode unchanged. The mode reaches the
    * fragment shader as OFB_LOOKUP_MODE, one of the defines OFB_LOOKUP_NEAREST, ...
    * (the enumerators' names with OFB_ for LOOKUP_), which the shader tells apart.
@@ -168,6 +204,9 @@ public:
   void SetLookupModeToInverseDistance() { this->SetLookupMode(LOOKUP_INVERSE_DISTANCE); }
   void SetLookupModeToMipmapped() { this->SetLookupMode(LOOKUP_MIPMAPPED); }
   void SetLookupModeToNearestMipmapped() { this->SetLookupMode(LOOKUP_NEAREST_MIPMAPPED); }
+  void SetLookupModeToSmooth() { this->SetLookupMode(LOOKUP_SMOOTH); }
+  void SetLookupModeToAutomatic() { this->SetLookupMode(LOOKUP_AUTOMATIC); }
+  vtkGetMacro(ResolvedLookupMode, int);
   static const char* GetLookupModeAsString(int mode);
   ///@}
 
@@ -204,6 +243,32 @@ public:
 
   ///@{
   /**
+   * The pyramid of coarser levels that the mipmapped lookups read (Mipmapped,
+   * NearestMipmapped, Smooth). Default: a vtkOFBPyramid of the mapper's own, whose levels
+   * filter level 0's arrays down. A subclass may compute arrays per level instead: a
+   * vtkOFBLICPyramid (OFB::FlowPaths) computes the LIC on every level, with the noise grain
+   * and the steps in that level's cells, so that a LIC seen from far shows streaks. The
+   * mapper sets its input OFB, surface, MaximumNumberOfLevels and MinimumResolution at
+   * every render. Null restores a pyramid of the mapper's own.
+   */
+  void SetPyramid(vtkOFBPyramid* pyramid);
+  vtkOFBPyramid* GetPyramid();
+  ///@}
+
+  ///@{
+  /**
+   * With LOOKUP_AUTOMATIC resolved to Smooth, no pyramid set with SetPyramid and the OFB
+   * connected straight from a vtkOFBLIC (SetOFBConnection), use a vtkOFBLICPyramid of that
+   * LIC: the default display of a LIC pipeline keeps its streaks from far. It costs a LIC
+   * on the coarser levels (about half of level 0's) whenever the LIC changes. Default on.
+   */
+  vtkSetMacro(AutomaticLevelLIC, bool);
+  vtkGetMacro(AutomaticLevelLIC, bool);
+  vtkBooleanMacro(AutomaticLevelLIC, bool);
+  ///@}
+
+  ///@{
+  /**
    * The colouring of the OFB's samples (default: a vtkOFBColoring of its own): colour
    * source, lookup table and scalar range, intensity (LIC) and how it combines, colour
    * contrast. Shareable with vtkOFBMapToColors and other mappers; a change to it is seen
@@ -225,6 +290,26 @@ public:
   vtkGetMacro(UsePaintedNormals, bool);
   vtkBooleanMacro(UsePaintedNormals, bool);
   ///@}
+
+  ///@{
+  /**
+   * Per-block visibility of a composite input, as vtkCompositePolyDataMapper2 takes it
+   * (SetBlockVisibility; a block without its own visibility has its parent's). Default
+   * none: every block is visible. Hidden blocks are not drawn and leave the bounds; the OFB
+   * (built from all blocks) is unchanged.
+   */
+  void SetCompositeDataDisplayAttributes(vtkCompositeDataDisplayAttributes* attributes);
+  vtkCompositeDataDisplayAttributes* GetCompositeDataDisplayAttributes();
+  ///@}
+
+  /**
+   * The surface drawn: the input vtkPolyData, or for a composite input (a
+   * vtkMultiBlockDataSet, vtkPartitionedDataSetCollection, ... of datasets) its visible
+   * blocks merged into one vtkPolyData by vtkOFBMergeBlocks, with the cell array
+   * "BlockIndex", the surface whose OFB vtkOFBSampler builds from the same input. A
+   * composite input is drawn in one draw, coloured from one OFB.
+   */
+  vtkPolyData* GetRenderedSurface();
 
   /**
    * Also the colouring's modification time (which includes its lookup table's).
@@ -286,6 +371,16 @@ protected:
 
   ///@{
   /**
+   * Composite input (vtkOFBPolyDataMapperComposite.cxx): RenderSurface draws
+   * GetRenderedSurface() as vtkOpenGLPolyDataMapper::RenderPiece draws its input;
+   * ComputeBounds gives the visible blocks' bounds.
+   */
+  void RenderSurface(vtkRenderer* ren, vtkActor* act);
+  void ComputeBounds() override;
+  ///@}
+
+  ///@{
+  /**
    * vtkOpenGLPolyDataMapper's per-aspect shader hooks: the position in OFB cells
    * (PositionVC), the lookup and the colour it gives (Color), the painted normals (Normal).
    */
@@ -325,6 +420,14 @@ protected:
   void UpdateLightnessRange(vtkOFB* ofb);
   void UpdateShaderKey();
   void UpdateOFBProducer();
+  /// The mode this render uses: LookupMode, or Automatic's choice.
+  void ResolveLookupMode();
+  /// The pyramid of Automatic (AutomaticLevelLIC): a vtkOFBLICPyramid of the OFB's
+  /// producer where it is a vtkOFBLIC, else the storage's own.
+  void UpdateAutomaticPyramid();
+  /// Whether the pyramid computes the intensity on every level (LevelIntensity), and the
+  /// mean of level 0's intensity (IntensityMean), computed again when the array changes.
+  void UpdateLevelIntensity(vtkOFB* ofb);
   ///@}
 
   /**
@@ -344,6 +447,10 @@ protected:
   void WarnOnce(const std::string& message);
 
   int LookupMode;
+  int ResolvedLookupMode;
+  bool AutomaticLevelLIC;
+  bool UserPyramid;                           // a pyramid was given with SetPyramid
+  vtkSmartPointer<vtkOFBPyramid> AutoPyramid; // AutomaticLevelLIC's vtkOFBLICPyramid
   double InterpolationRadius;
   double MipmapBias;
   int MaximumNumberOfMipmapLevels;
@@ -362,6 +469,10 @@ protected:
   bool UseIntensity;
   bool UseNormals;
   bool DeepCells;
+  bool LevelIntensity;
+  double IntensityMean;
+  vtkWeakPointer<vtkDataArray> MeanArray; // the array IntensityMean is of, and when
+  vtkMTimeType MeanTime;
   std::string ShaderKey;
   vtkTimeStamp ShaderKeyTime;
 
@@ -377,6 +488,7 @@ protected:
   vtkIdType AlphaHint;
 
   std::set<std::string> Warnings;
+  vtkSmartPointer<vtkOFBCompositeSurface> CompositeSurface;
   vtkWeakPointer<vtkOFB> WarnedOFB;
   vtkMTimeType WarnedMTime;
 

@@ -23,6 +23,7 @@ constexpr unsigned int BindingBase = 8;
 
 //------------------------------------------------------------------------------
 vtkOFBShaderStorage::vtkOFBShaderStorage()
+  : Pyramid(vtkSmartPointer<vtkOFBPyramid>::New())
 {
   for (int i = 0; i < NUMBER_OF_BUFFERS; ++i)
   {
@@ -70,6 +71,32 @@ bool vtkOFBShaderStorage::SetContext(vtkOpenGLRenderWindow* window, std::string&
     this->Window = window;
     this->ForgetUploads();
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBShaderStorage::SetPyramid(vtkOFBPyramid* pyramid)
+{
+  if (pyramid ? pyramid == this->Pyramid : this->OwnPyramid)
+  {
+    return false;
+  }
+  if (this->Pyramid->GetInputOFB())
+  {
+    this->Pyramid->SetInputOFB(nullptr);
+    this->Pyramid->SetSurface(nullptr);
+  }
+  this->OwnPyramid = !pyramid;
+  if (pyramid)
+  {
+    this->Pyramid = pyramid;
+  }
+  else
+  {
+    this->Pyramid = vtkSmartPointer<vtkOFBPyramid>::New();
+  }
+  // Another pyramid's levels: everything is uploaded again.
+  this->UploadedOFB = nullptr;
   return true;
 }
 

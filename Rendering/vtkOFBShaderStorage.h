@@ -23,10 +23,12 @@
 #ifndef vtkOFBShaderStorage_h
 #define vtkOFBShaderStorage_h
 
-#include "vtkNew.h"         // for vtkNew
-#include "vtkTimeStamp.h"   // for UploadTime
-#include "vtkType.h"        // for vtkIdType
-#include "vtkWeakPointer.h" // for vtkWeakPointer
+#include "vtkNew.h"          // for vtkNew
+#include "vtkOFBPyramid.h"   // for Pyramid
+#include "vtkSmartPointer.h" // for Pyramid
+#include "vtkTimeStamp.h"    // for UploadTime
+#include "vtkType.h"         // for vtkIdType
+#include "vtkWeakPointer.h"  // for vtkWeakPointer
 
 #include <string> // for Selection
 #include <vector> // for levels
@@ -34,7 +36,6 @@
 class vtkDataArray;
 class vtkIdTypeArray;
 class vtkOFB;
-class vtkOFBPyramid;
 class vtkOpenGLRenderWindow;
 class vtkPointData;
 class vtkPolyData;
@@ -132,6 +133,15 @@ public:
     int minimumResolution);
   vtkIdType UploadChanges(const Selection& selection, std::string& error);
   void UpdateLookupTable(vtkScalarsToColors* lut, const double range[2]);
+  ///@}
+
+  ///@{
+  /**
+   * The pyramid that UpdateLevels builds the coarser levels with (a vtkOFBPyramid of its
+   * own by default; null restores one). SetPyramid returns whether it changed.
+   */
+  bool SetPyramid(vtkOFBPyramid* pyramid);
+  vtkOFBPyramid* GetPyramid() const { return this->Pyramid; }
   ///@}
 
   /// The OFB whose samples the buffers hold (null when none).
@@ -235,7 +245,8 @@ private:
   std::string CheckedWindowReason;
 
   // The levels of this render, and what the buffers hold.
-  vtkNew<vtkOFBPyramid> Pyramid;
+  vtkSmartPointer<vtkOFBPyramid> Pyramid;
+  bool OwnPyramid = true; // Pyramid is the storage's own
   std::vector<vtkOFB*> Levels;
   vtkNew<vtkIdTypeArray> Ranges;
   vtkTimeStamp UploadTime;

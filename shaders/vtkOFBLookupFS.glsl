@@ -4,10 +4,11 @@
 //
 // The mapper defines before this text:
 //   OFB_LOOKUP_NEAREST, OFB_LOOKUP_INVERSE_DISTANCE, OFB_LOOKUP_MIPMAPPED,
-//   OFB_LOOKUP_NEAREST_MIPMAPPED
+//   OFB_LOOKUP_NEAREST_MIPMAPPED, OFB_LOOKUP_SMOOTH
 //                       the lookup modes (vtkOFBPolyDataMapper::LookupModes): nearest
 //                       sample, inverse-distance weighting, mipmapped IDW, nearest sample
-//                       in the level nearest to the fragment's footprint
+//                       in the level nearest to the fragment's footprint, smooth surface
+//                       interpolation blended over the levels around the footprint
 //   OFB_LOOKUP_MODE     the mode of this shader, one of those (another is an #error)
 //   OFB_MAX_LEVELS      size of the per-level uniform arrays
 //   OFB_SOURCE_SCALARS  colour from a float sample attribute through a lookup table, else paint
@@ -17,6 +18,8 @@
 //                       colour contrast enhancement)
 //   OFB_USE_NORMALS     painted normals replace the interpolated normal for shading
 //   OFB_DEEP_CELLS      some cell holds many samples: binary searches before the linear scans
+//   OFB_LEVEL_INTENSITY the intensity of every level is computed on that level (a LIC per
+//                       level): independent textures, blended keeping their contrast
 // and enables GL_ARB_shader_bit_encoding and (where offered) GL_ARB_ES3_1_compatibility.
 //
 // Units: every position here is in cells of the level being read, measured from the
@@ -55,6 +58,9 @@ layout(std430) readonly buffer ofbIntensityBlock { uint ofbIntensity[]; };
 uniform float ofbIntensityWeight; // map mode: strength of the multiplication
 uniform float ofbLICIntensity;    // blend mode: the LIC's share
 uniform float ofbMapModeBias;     // map mode: added to the LIC
+#ifdef OFB_LEVEL_INTENSITY
+uniform float ofbIntensityMean;   // the mean of level 0's intensity
+#endif
 #endif
 #ifdef OFB_ENHANCE_COLOR
 uniform vec2 ofbLightnessStretch; // x: low end m, y: 1 / (M - m), 0: none
@@ -344,6 +350,70 @@ ofbAccum ofbLookupIDW(int L, vec3 g)
   return acc;
 }
 
+// Smooth interpolation along the surface (level L units): in each of the three grids, the
+// samples of the 2x2 cells whose centres are nearest to g, weighted by the tents
+// (1 - |du|)(1 - |dv|) of their in-plane offsets (bilinear interpolation where the surface
+// lies in one grid's region: the weights of a grid sum to 1), times their agreement with
+// the fragment's tangent plane (n, the face normal): 1 within half a cell of the plane, 0
+// from one cell (the other side of a thin sheet, another sheet in the same cell) or beyond
+// two cells in depth. Every weight is continuous in g and vanishes before its cell leaves
+// the 2x2, so the values are continuous across cell borders and across the borders
+// between the grids' regions (no cell blocks where a cell covers many pixels). Where no
+// sample has weight, the nearest sample.
+ofbAccum ofbLookupSmooth(int L, vec3 g, vec3 n)
+{
+  ofbAccum acc = ofbAccumInit();
+  float nl = length(n);
+  vec3 nn = nl > 0.0 ? n / nl : vec3(0.0);
+  for (int k = 0; k < 12; ++k)
+  {
+    int a = k >> 2;
+    int j = k & 3;
+    vec3 uvd;
+    ivec2 cells;
+    int cellBase;
+    ofbGridFrame(L, a, g, uvd, cells, cellBase);
+    vec3 nuvd = a == 0 ? nn.yzx : (a == 1 ? nn.zxy : nn.xyz);
+    ivec2 cell = ivec2(floor(uvd.xy - 0.5)) + ivec2(j & 1, j >> 1);
+    vec2 duv = (vec2(cell) + 0.5) - uvd.xy;
+    vec2 tent = max(vec2(1.0) - abs(duv), vec2(0.0));
+    float wuv = tent.x * tent.y;
+    int first;
+    int end;
+    ofbCellRange(L, cellBase, cells, cell, wuv > 0.0, first, end);
+    for (int i = ofbScanStart(first, end, uvd.z - 2.0); i < end; ++i)
+    {
+      uvec2 s = ofbSamples[i];
+      float dd = uintBitsToFloat(s.x) - uvd.z;
+      if (dd > 2.0)
+      {
+        break;
+      }
+      float h = abs(dot(vec3(duv, dd), nuvd));
+      float w = wuv * (1.0 - smoothstep(0.5, 1.0, h));
+      if (w > 0.0)
+      {
+        ofbAccumulate(acc, i, s.y, w);
+      }
+    }
+  }
+  if (!(acc.weight > 0.0) && !OFB_HELPER_INVOCATION)
+  {
+    acc = ofbLookupNearest(L, g, n);
+  }
+  return acc;
+}
+
+// The filtered lookup of one level of the blended modes: smooth, else inverse distance.
+ofbAccum ofbLookupLevel(int L, vec3 g, vec3 n)
+{
+#if OFB_LOOKUP_MODE == OFB_LOOKUP_SMOOTH
+  return ofbLookupSmooth(L, g, n);
+#else
+  return ofbLookupIDW(L, g);
+#endif
+}
+
 vec3 ofbLevelPosition(int L, vec3 g0)
 {
   return g0 * ofbLevelTransform[L].w + ofbLevelTransform[L].xyz;
@@ -360,17 +430,19 @@ ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
   // The level whose cells are nearest to the footprint (level 0 below 1.41 cells).
   int L = clamp(int(floor(lod + ofbMipmapBias + 0.5)), 0, ofbNumberOfLevels - 1);
   return ofbLookupNearest(L, ofbLevelPosition(L, g0), n);
-#elif OFB_LOOKUP_MODE == OFB_LOOKUP_MIPMAPPED
+#elif OFB_LOOKUP_MODE == OFB_LOOKUP_MIPMAPPED || OFB_LOOKUP_MODE == OFB_LOOKUP_SMOOTH
+  // The two levels around the footprint, blended by where it lies between them (level 0
+  // alone where a level-0 cell covers a pixel or more): no line where the level changes.
   float level = clamp(lod + ofbMipmapBias, 0.0, float(ofbNumberOfLevels - 1));
   int l0 = int(floor(level));
   int l1 = min(l0 + 1, ofbNumberOfLevels - 1);
   float t = level - float(l0);
-  ofbAccum a0 = ofbLookupIDW(l0, ofbLevelPosition(l0, g0));
+  ofbAccum a0 = ofbLookupLevel(l0, ofbLevelPosition(l0, g0), n);
   if (t <= 0.0 || l1 == l0)
   {
     return a0;
   }
-  ofbAccum a1 = ofbLookupIDW(l1, ofbLevelPosition(l1, g0));
+  ofbAccum a1 = ofbLookupLevel(l1, ofbLevelPosition(l1, g0), n);
   // Blend the normalised results of the two levels (a level without samples here drops out).
   ofbAccum acc = ofbAccumInit();
   float w0 = a0.weight > 0.0 ? (1.0 - t) / a0.weight : 0.0;
@@ -380,6 +452,15 @@ ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
   acc.intensity = a0.intensity * w0 + a1.intensity * w1;
   acc.normal = a0.normal * w0 + a1.normal * w1;
   acc.weight = (a0.weight > 0.0 ? 1.0 - t : 0.0) + (a1.weight > 0.0 ? t : 0.0);
+#if defined(OFB_USE_INTENSITY) && defined(OFB_LEVEL_INTENSITY)
+  // Two independent textures mixed: their deviations from the mean scaled back to the
+  // variance of one, so that the streaks keep their contrast between the levels.
+  if (a0.weight > 0.0 && a1.weight > 0.0)
+  {
+    float keep = inversesqrt((1.0 - t) * (1.0 - t) + t * t);
+    acc.intensity = ofbIntensityMean + (acc.intensity - ofbIntensityMean) * keep;
+  }
+#endif
   return acc;
 #else
 #error unknown lookup mode (OFB_LOOKUP_MODE)

@@ -163,7 +163,8 @@ std::vector<vtkIdType> AffectedTargets(vtkOFB* source,
 }
 
 /**
- * Resample of every array of `source` to the target samples `ids` alone, in place (the
+ * Resample of the arrays `names` (all where null) of `source` to the target samples `ids`
+ * alone, in place (the
  * other target samples keep their values), their normals scaled to unit length; the
  * facing test's target normals are `reference` where given, `fellBack` as in
  * ResampleArrays. False (nothing changed) where the target lacks an array of the source
@@ -174,12 +175,13 @@ bool ResampleSome(vtkOFB* source,
   double radius,
   const std::vector<vtkIdType>& ids,
   const float* reference,
-  unsigned char* fellBack)
+  unsigned char* fellBack,
+  const std::set<std::string>* names)
 {
   vtkOFBPyramidResampler transfer(source, target, radius);
   transfer.SetTargetNormals(reference);
   transfer.FellBack = fellBack;
-  transfer.CollectArrays(nullptr, false);
+  transfer.CollectArrays(names, false);
   if (!transfer.WriteInPlace())
   {
     return false;
@@ -553,6 +555,16 @@ void vtkOFBPyramid::FilterAllLevels(const std::set<std::string>* names)
   references.resize(this->Levels.size(), nullptr);
   fellBacks.resize(this->Levels.size(), nullptr);
   FilterLevels(this->InputOFB, this->Levels, this->FilterRadius, names, references, fellBacks);
+  this->ComputeLevelArrays(names);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPyramid::ComputeLevelArrays(const std::set<std::string>*) {}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPyramid::IsComputedArray(const std::string&) const
+{
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -583,6 +595,17 @@ bool vtkOFBPyramid::FilterChangedSamples()
   {
     return false;
   }
+  // The arrays filtered, not computed per level (ComputeLevelArrays).
+  std::set<std::string> filtered;
+  vtkPointData* pd = this->InputOFB->GetSampleData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    if (array && array->GetName() && !this->IsComputedArray(array->GetName()))
+    {
+      filtered.insert(array->GetName());
+    }
+  }
   // Level by level, the targets that may read a changed sample are filtered again, and
   // they are the changed samples of the next level.
   for (size_t k = 0; k < this->Levels.size() && !changed.empty(); ++k)
@@ -595,7 +618,7 @@ bool vtkOFBPyramid::FilterChangedSamples()
       AffectedTargets(finer, changed, level, radius, state.FellBack.data());
     const float* reference =
       state.ReferenceNormals.empty() ? nullptr : state.ReferenceNormals.data();
-    if (!ResampleSome(finer, level, radius, targets, reference, state.FellBack.data()))
+    if (!ResampleSome(finer, level, radius, targets, reference, state.FellBack.data(), &filtered))
     {
       return false;
     }

@@ -17,6 +17,11 @@
  * helper object, not a pipeline algorithm: nothing updates it but these calls.) Both run on the CPU
  * (vtkSMPTools).
  *
+ * Subclasses may compute an array on each level's own samples instead of filtering it
+ * from the finer level (ComputeLevelArrays, IsComputedArray): vtkOFBLICPyramid
+ * (OFB::FlowPaths) computes a LIC on every level, so that it keeps its streaks when the
+ * filtered LIC would average to grey. vtkOFBPolyDataMapper::SetPyramid takes one.
+ *
  * @sa vtkOFB vtkOFBSampler vtkOFBPolyDataMapper
  */
 
@@ -172,6 +177,15 @@ public:
    */
   static bool Resample(vtkOFB* source, vtkOFB* target, double radius);
 
+  /**
+   * Whether the sample array `name` of the coarser levels is computed on each level's own
+   * samples (by a subclass: vtkOFBLICPyramid's "LIC") instead of filtered from the finer
+   * level; the levels of such an array are independent textures, not low-passed copies
+   * (vtkOFBPolyDataMapper blends them keeping their contrast). The in-place filtering of
+   * changed samples leaves it as it is. Default false.
+   */
+  virtual bool IsComputedArray(const std::string& name) const;
+
 protected:
   vtkOFBPyramid();
   ~vtkOFBPyramid() override;
@@ -217,6 +231,14 @@ protected:
     std::vector<std::pair<std::string, vtkTypeUInt64>>& hashes);
   /// Keep the levels of the arrays just filtered, within FilterCacheSize.
   void CacheLevels(const std::vector<std::pair<std::string, vtkTypeUInt64>>& hashes);
+
+  /**
+   * Called after the arrays `names` (all where null) of levels 1.. were filtered from
+   * level 0, when all levels' arrays are computed (not after an in-place filtering of
+   * changed samples): a subclass computes some arrays on each level's own samples instead
+   * of filtering them (vtkOFBLICPyramid: a LIC per level). The default does nothing.
+   */
+  virtual void ComputeLevelArrays(const std::set<std::string>* names);
 
   /// UpdateModifiedArrays for values changed in place; false where it must do all.
   bool FilterChangedSamples();

@@ -75,7 +75,16 @@ struct vtkOFBSampleArrays
     vtkPointData* sampleData,
     const std::vector<bool>& interpolated)
   {
-    sampleData->SetScalars(this->Colors);
+    // The paint is the active scalars unless a cell array takes them (added first:
+    // SetScalars would remove the array it replaces).
+    if (surface.CellScalarsIndex >= 0 && interpolated[surface.CellScalarsIndex])
+    {
+      sampleData->AddArray(this->Colors);
+    }
+    else
+    {
+      sampleData->SetScalars(this->Colors);
+    }
     sampleData->SetNormals(this->Normals);
     if (this->Vectors)
     {
@@ -94,6 +103,10 @@ struct vtkOFBSampleArrays
       else if (static_cast<int>(k) == surface.CellVectorsIndex)
       {
         sampleData->SetVectors(this->Others[k]);
+      }
+      else if (static_cast<int>(k) == surface.CellScalarsIndex)
+      {
+        sampleData->SetScalars(this->Others[k]);
       }
       else
       {

@@ -3,6 +3,8 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkDoubleArray.h"
@@ -11,10 +13,12 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBArrayLength.h"
 #include "vtkOFBCPUSampler.h"
 #include "vtkOFBInputChecks.h"
+#include "vtkOFBMergeBlocks.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -31,6 +35,7 @@
 #include <cstring>
 #include <initializer_list>
 #include <numeric>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBSampler);
@@ -388,6 +393,35 @@ void CollectOtherArrays(vtkPointData* pd,
 
 namespace
 {
+/**
+ * Re-emits the errors and warnings of an inner algorithm as those of `Target`, where the
+ * target's observers see them: the text after VTK's "Class (address): " prefix.
+ */
+class MessageForwarder : public vtkCommand
+{
+public:
+  static MessageForwarder* New() { return new MessageForwarder; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    std::string text = data ? static_cast<const char*>(data) : "";
+    const size_t prefix = text.find("): ");
+    text = prefix == std::string::npos ? text : text.substr(prefix + 3);
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    if (event == vtkCommand::ErrorEvent)
+    {
+      vtkErrorWithObjectMacro(this->Target, << text);
+    }
+    else
+    {
+      vtkWarningWithObjectMacro(this->Target, << text);
+    }
+  }
+  vtkObject* Target = nullptr;
+};
+
 /// Index in surface.Arrays of the array named `name`, or -1.
 int FindArray(const vtkOFBSurface& surface, const char* name)
 {
@@ -406,9 +440,15 @@ int FindArray(const vtkOFBSurface& surface, const char* name)
  * triangle's cell: every named, non-bit array but those named as the samples' own
  * arrays or the vector field. One named as a point array already in
  * surface.Arrays replaces it when `cellsFirst`, else is left out. The cell data's
- * active vectors become the samples' when they have no other vector field.
+ * active vectors become the samples' when they have no other vector field, and its
+ * active scalars (unless RGB(A) bytes, colours) the samples' when the input has no
+ * active point scalars (`pointScalars`).
  */
-void CollectCellArrays(vtkCellData* cd, vtkIdType nCells, bool cellsFirst, vtkOFBSurface& surface)
+void CollectCellArrays(vtkCellData* cd,
+  vtkIdType nCells,
+  bool cellsFirst,
+  bool pointScalars,
+  vtkOFBSurface& surface)
 {
   surface.ArraysPerCell.resize(surface.Arrays.size(), false);
   for (int i = 0; i < cd->GetNumberOfArrays(); ++i)
@@ -438,6 +478,10 @@ void CollectCellArrays(vtkCellData* cd, vtkIdType nCells, bool cellsFirst, vtkOF
     if (array == cd->GetVectors() && !surface.Vectors && array->GetNumberOfComponents() == 3)
     {
       surface.CellVectorsIndex = k;
+    }
+    if (array == cd->GetScalars() && !pointScalars && !IsColorArray(array))
+    {
+      surface.CellScalarsIndex = k;
     }
   }
 }
@@ -478,21 +522,38 @@ vtkOFBSamplerBackend* vtkOFBSampler::SelectBackend()
 //------------------------------------------------------------------------------
 int vtkOFBSampler::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Remove(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE());
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  // Composite datasets are merged here (vtkOFBMergeBlocks), not block by block by the
+  // pipeline: one OFB on one frame over all blocks.
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkPolyData> vtkOFBSampler::GetSurface(vtkDataSet* input)
+vtkSmartPointer<vtkPolyData> vtkOFBSampler::GetSurface(vtkDataObject* input)
 {
   // A polydata is sampled as it is (no copy); any other dataset through its
-  // outer surface, with its point and cell arrays.
+  // outer surface, with its point and cell arrays; a composite dataset as the
+  // surface of all its blocks, with their block index (vtkOFBMergeBlocks).
   if (auto* polyData = vtkPolyData::SafeDownCast(input))
   {
     return polyData;
   }
   auto surface = vtkSmartPointer<vtkPolyData>::New();
-  if (!input)
+  if (vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkNew<vtkOFBMergeBlocks> merge;
+    merge->SetInputData(input);
+    vtkNew<MessageForwarder> forward;
+    forward->Target = this;
+    merge->AddObserver(vtkCommand::ErrorEvent, forward);
+    merge->AddObserver(vtkCommand::WarningEvent, forward);
+    merge->Update();
+    surface->ShallowCopy(merge->GetOutput());
+    return surface;
+  }
+  if (!vtkDataSet::SafeDownCast(input))
   {
     return surface;
   }
@@ -508,7 +569,7 @@ int vtkOFBSampler::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkSmartPointer<vtkPolyData> input = this->GetSurface(vtkDataSet::GetData(inputVector[0]));
+  vtkSmartPointer<vtkPolyData> input = this->GetSurface(vtkDataObject::GetData(inputVector[0]));
   vtkOFB* output = vtkOFB::GetData(outputVector);
   // The pipeline has recycled the previous output (vtkOFB::PrepareForNewData):
   // SetFrame, AllocateSamples and the sample arrays reuse its memory, and
@@ -613,6 +674,7 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     CollectCellArrays(input->GetCellData(),
       input->GetNumberOfCells(),
       this->ArrayPrecedence == CELL_ARRAYS_FIRST,
+      pd->GetScalars() != nullptr,
       surface);
   }
   if (std::find(surface.ArraysPerCell.begin(), surface.ArraysPerCell.end(), true) ==
@@ -948,7 +1010,7 @@ bool vtkOFBSampler::ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBack
 }
 
 //------------------------------------------------------------------------------
-double vtkOFBSampler::EstimateMemory(vtkDataSet* dataSet)
+double vtkOFBSampler::EstimateMemory(vtkDataObject* dataSet)
 {
   vtkSmartPointer<vtkPolyData> input = this->GetSurface(dataSet);
   vtkOFBSurface surface;

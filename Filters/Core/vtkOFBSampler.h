@@ -2,9 +2,17 @@
  * @class   vtkOFBSampler
  * @brief   Build a vtkOFB from a surface on the CPU (vtkSMPTools)
  *
- * Input: any vtkDataSet. A vtkPolyData is sampled as it is (no copy); any other
- * dataset (vtkUnstructuredGrid, vtkImageData, ...) through its outer surface as
- * vtkDataSetSurfaceFilter extracts it, with its point and cell arrays.
+ * Input: any vtkDataSet or vtkCompositeDataSet. A vtkPolyData is sampled as it is
+ * (no copy); any other dataset (vtkUnstructuredGrid, vtkImageData, ...) through its
+ * outer surface as vtkDataSetSurfaceFilter extracts it, with its point and cell
+ * arrays. A composite dataset (vtkMultiBlockDataSet, vtkPartitionedDataSetCollection,
+ * ...) gives one OFB on one frame over all its blocks: the blocks are merged into one
+ * surface by vtkOFBMergeBlocks (points shared by blocks merged, so that patch borders
+ * are no seams), and the samples get the int array "BlockIndex", the flat index of
+ * their block (as vtkDataObjectTreeIterator numbers blocks). An array that some blocks
+ * lack is filled there with NaN (float and double arrays) or 0 (integer arrays); empty
+ * blocks and blocks that are not datasets are left out (the latter with a warning).
+ * For other merge settings, run vtkOFBMergeBlocks before the sampler.
  *
  * vtkOFBSampler scan-converts the triangles of a vtkPolyData into the three grids
  * of a vtkOFB (paper "Sample-based Surface Coloring", sections 4 and 8). Each
@@ -34,8 +42,12 @@
  * chosen with SetInputArrayToProcess, no active point vectors) and its cell data
  * has active 3-component vectors, these become the samples' active vectors
  * (projected into the tangent plane with ProjectVectors), so that vtkOFBLIC
- * finds them; the samples' active scalars stay the paint ("Colors") as with
- * point scalars.
+ * finds them. Likewise, when the input has no active point scalars and its cell
+ * data has active scalars other than colours (RGB or RGBA bytes), these become the
+ * samples' active scalars (the paint,
+ * "Colors", stays a sample array of that name); otherwise the samples' active
+ * scalars are the paint. A NaN in a cell array is a NaN in the samples of that cell
+ * (the colouring shows it in the lookup table's NaN colour).
  *
  * Polygons and strips are triangulated; lines and vertices are ignored with a
  * warning; zero-area triangles are skipped. Empty input, non-finite coordinates,
@@ -188,7 +200,7 @@ public:
    * samples), or -1 if the input is not valid. Only the surface is prepared (for
    * a dataset other than a vtkPolyData, extracted first).
    */
-  double EstimateMemory(vtkDataSet* dataSet);
+  double EstimateMemory(vtkDataObject* dataSet);
 
 protected:
   vtkOFBSampler();
@@ -201,7 +213,7 @@ protected:
    */
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /// The input port accepts any vtkDataSet.
+  /// The input port accepts any vtkDataSet or vtkCompositeDataSet.
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   /**
@@ -232,11 +244,11 @@ private:
   void operator=(const vtkOFBSampler&) = delete;
 
   /**
-   * The surface to sample: `input` itself if a vtkPolyData, else its outer
-   * surface (vtkDataSetSurfaceFilter) with its point and cell arrays; an empty
-   * one for no input.
+   * The surface to sample: `input` itself if a vtkPolyData, the merged surface of
+   * its blocks (vtkOFBMergeBlocks) if a composite dataset, else its outer surface
+   * (vtkDataSetSurfaceFilter) with its point and cell arrays; an empty one for no input.
    */
-  vtkSmartPointer<vtkPolyData> GetSurface(vtkDataSet* input);
+  vtkSmartPointer<vtkPolyData> GetSurface(vtkDataObject* input);
 
   /// Whether the build needs the input cell of each triangle (cell arrays to pass).
   bool NeedsTriangleCells(vtkPolyData* input) const;

@@ -50,6 +50,8 @@ public:
   int TCoordsIndex = -1;
   /// The cell array among Arrays that becomes the samples' active vectors, or -1.
   int CellVectorsIndex = -1;
+  /// The cell array among Arrays that becomes the samples' active scalars, or -1.
+  int CellScalarsIndex = -1;
   /// Paint of the samples when Colors is null, RGBA.
   unsigned char DefaultColor[4] = { 255, 255, 255, 255 };
   /// Whether the vector field is projected into the tangent plane of each sample.

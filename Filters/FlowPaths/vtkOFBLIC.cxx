@@ -58,6 +58,7 @@ vtkOFBLIC::vtkOFBLIC()
   , MaskColor{ 0.5, 0.5, 0.5 }
   , MaskIntensity(0.0)
   , CacheStreamlines(true)
+  , StreamlineReuseDistance(0.05)
   , NumberOfMaskedSamples(0)
   , LastExecutionTime(0.0)
   , Internals(new vtkInternals)
@@ -540,12 +541,14 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   tracer.SearchRadius = std::sqrt(3.0) * input->GetCellSize();
   tracer.FieldRadius =
     this->FieldInterpolation == FIELD_INVERSE_DISTANCE ? 1.5 * input->GetCellSize() : 0.0;
+  tracer.ReuseDistance = this->StreamlineReuseDistance * input->GetCellSize();
   const std::vector<double> weights = this->ComputeKernel(this->NumberOfSteps);
   // The kept streamlines, traced during the first pass when they are not valid.
   vtkOFBLICCacheKey linesKey = cache.SamplesKey;
   linesKey.Add(static_cast<double>(this->NumberOfSteps))
     .Add(this->StepSize)
-    .Add(static_cast<double>(this->FieldInterpolation));
+    .Add(static_cast<double>(this->FieldInterpolation))
+    .Add(this->StreamlineReuseDistance);
   bool trace = true;
   const bool keep = this->CacheStreamlines && this->NumberOfSteps > 0;
   if (!keep)
@@ -649,6 +652,7 @@ void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
      << this->MaskColor[2] << ")\n";
   os << indent << "MaskIntensity: " << this->MaskIntensity << "\n";
   os << indent << "CacheStreamlines: " << (this->CacheStreamlines ? "On" : "Off") << "\n";
+  os << indent << "StreamlineReuseDistance: " << this->StreamlineReuseDistance << " cells\n";
   os << indent << "NumberOfMaskedSamples: " << this->NumberOfMaskedSamples << "\n";
   os << indent << "LastExecutionTime: " << this->LastExecutionTime << " ms\n";
 }

@@ -135,11 +135,12 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
         std::lock_guard<std::mutex> lock(storesMutex);
         if (freeStores.empty())
         {
-          // Room for the runs of all samples at 4 ids a sample (the horse and the
-          // bunny need about 2.5): mapped, not touched, so growing never copies in
-          // practice and only the pages used are faulted in.
+          // Room for the runs of all samples at NumberOfSteps + 8 ids a sample (the
+          // horse and the bunny need about 1.05 NumberOfSteps + 1): mapped, not
+          // touched, so growing never copies in practice and only the pages used are
+          // faulted in.
           cache.Runs.emplace_back(new vtkOFBLICRunStore);
-          cache.Runs.back()->Ids.reserve(4 * cache.Mask.size() + 4096);
+          cache.Runs.back()->Ids.reserve((steps + 8) * cache.Mask.size() + 4096);
           freeStores.push_back(cache.Runs.back().get());
         }
         store = freeStores.back();
@@ -229,6 +230,14 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
   const int n = tracer.NumberOfSteps;
   const int m = LongSteps * n;
   const std::size_t start = store.size();
+  // A window of a streamline that passes a sample farther aside than ReuseDistance reads
+  // other samples than the sample's own streamline (dashes, seams at the tile planes).
+  const double reach2 = tracer.ReuseDistance * tracer.ReuseDistance;
+  // Per step of the run: whether it passed a sample it can give a window to (forward
+  // steps, backward steps, then the run in its order).
+  std::vector<unsigned char> nearBuffer(4 * m + 4);
+  unsigned char* near = nearBuffer.data();
+  unsigned char* line = near + 2 * m + 2;
   *store.Extend(1) = -1;
   // The tile's records, depths and cell offsets are read in order first (streams the
   // hardware follows), so that the streamlines' random order of visits finds them in
@@ -268,16 +277,33 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
         return;
       }
       // A long streamline through i: backward steps reversed, i, forward steps. A
-      // direction stops early once its last n samples are of other tiles or covered:
-      // every sample before them that it can still cover has its full window.
+      // direction stops early once its last n samples are of other tiles, covered or
+      // passed farther than ReuseDistance across the flow: every sample before them that it can
+      // still cover has its full window.
       int ahead, back;
       bool aheadEnded, backEnded;
       vtkTypeInt32* backward = sequence + m + 1;
+      unsigned char* nearAhead = near;
+      unsigned char* nearBack = near + m + 1;
       tracer.TraceBoth(
         i,
         m,
         std::max(n, 1),
-        [&](vtkIdType k) { return samples[k].Tile() == tile && !covered[k]; },
+        [&](vtkIdType k, const glm::dvec3& p, int dir, int step)
+        {
+          const vtkOFBLICSample& sk = samples[k];
+          bool useful = sk.Tile() == tile && !covered[k];
+          if (useful)
+          {
+            const glm::dvec3 d = p - vtkOFBLICTracer::Vec(sk.Position);
+            const glm::dvec3 f = vtkOFBLICTracer::Vec(sk.Field);
+            const double ff = glm::dot(f, f);
+            const double along = glm::dot(d, f);
+            useful = glm::dot(d, d) * ff - along * along < reach2 * ff;
+          }
+          (dir > 0 ? nearAhead : nearBack)[step] = useful;
+          return useful;
+        },
         sequence,
         ahead,
         aheadEnded,
@@ -292,16 +318,19 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
       run[back] = static_cast<vtkTypeInt32>(i);
       std::copy(sequence, sequence + ahead, run + back + 1);
       run[length] = -1;
-      // Every sample of the tile met gets the window around its meeting as its
-      // streamline: where the streamline stopped by itself, a window may end there (as
-      // a sample's own streamline would); where it ran out of steps or went idle, the
+      std::reverse_copy(nearBack, nearBack + back, line);
+      line[back] = 1;
+      std::copy(nearAhead, nearAhead + ahead, line + back + 1);
+      // Every sample of the tile met within ReuseDistance across the flow gets the window around
+      // its meeting as its streamline: where the streamline stopped by itself, a window may end
+      // there (as a sample's own streamline would); where it ran out of steps or went idle, the
       // window must fit.
       const int low = backEnded ? 0 : n;
       const int high = aheadEnded ? length - 1 : length - 1 - n;
       for (int t = low; t <= high; ++t)
       {
         const vtkIdType k = run[t];
-        if (samples[k].Tile() != tile || covered[k])
+        if (!line[t] || samples[k].Tile() != tile || covered[k])
         {
           continue;
         }

@@ -1,4 +1,4 @@
-// Private header of vtkOFBLIC: the contrast stretch and the high-pass filter of the
+// Private header of vtkOFBLIC: the contrast stretches and the high-pass filter of the
 // enhanced pass (EnhancedLIC).
 #ifndef vtkOFBLICEnhance_h
 #define vtkOFBLICEnhance_h
@@ -16,12 +16,12 @@
 #include <limits>
 #include <vector>
 
-/// Stretch the unmasked values: m + low * range -> 0, M - high * range -> 1, clamped.
-inline void vtkOFBLICStretch(float* values,
+/// The smallest and largest unmasked values into lo and hi; false if there are none.
+inline bool vtkOFBLICRange(const float* values,
   vtkIdType n,
   const unsigned char* mask,
-  double low,
-  double high)
+  float& lo,
+  float& hi)
 {
   vtkSMPThreadLocal<float> localMin(std::numeric_limits<float>::max());
   vtkSMPThreadLocal<float> localMax(std::numeric_limits<float>::lowest());
@@ -32,20 +32,20 @@ inline void vtkOFBLICStretch(float* values,
     {
       // Local copies: through the references the compiler stores them every sample (they
       // could alias values).
-      float lo = localMin.Local();
-      float hi = localMax.Local();
+      float a = localMin.Local();
+      float b = localMax.Local();
       for (vtkIdType i = begin; i < end; ++i)
       {
         const float v = values[i];
         const bool use = !mask[i];
-        lo = use && v < lo ? v : lo;
-        hi = use && v > hi ? v : hi;
+        a = use && v < a ? v : a;
+        b = use && v > b ? v : b;
       }
-      localMin.Local() = lo;
-      localMax.Local() = hi;
+      localMin.Local() = a;
+      localMax.Local() = b;
     });
-  float lo = std::numeric_limits<float>::max();
-  float hi = std::numeric_limits<float>::lowest();
+  lo = std::numeric_limits<float>::max();
+  hi = std::numeric_limits<float>::lowest();
   for (float v : localMin)
   {
     lo = std::min(lo, v);
@@ -54,13 +54,13 @@ inline void vtkOFBLICStretch(float* values,
   {
     hi = std::max(hi, v);
   }
-  if (!(hi > lo))
-  {
-    return;
-  }
-  const double range = hi - lo;
-  const double m = lo + low * range;
-  const double scale = 1.0 / std::max(1e-12, (hi - high * range) - m);
+  return lo <= hi;
+}
+
+/// values = clamp((values - m) * scale, 0, 1) at every sample (masked samples' values are
+/// never read again: streamlines stop there and the output masks them).
+inline void vtkOFBLICMapToUnit(float* values, vtkIdType n, double m, double scale)
+{
   vtkSMPTools::For(0,
     n,
     4096,
@@ -72,6 +72,109 @@ inline void vtkOFBLICStretch(float* values,
       }
     });
 }
+
+/**
+ * Stretch the unmasked values as VTK's contrast enhancement does: with min and max their
+ * range, min + low * range -> 0 and max - high * range -> 1, clamped. Nothing where the
+ * values are all equal.
+ */
+inline void vtkOFBLICStretch(float* values,
+  vtkIdType n,
+  const unsigned char* mask,
+  double low,
+  double high)
+{
+  float lo, hi;
+  if (!vtkOFBLICRange(values, n, mask, lo, hi) || !(hi > lo))
+  {
+    return;
+  }
+  const double range = hi - lo;
+  const double m = lo + low * range;
+  vtkOFBLICMapToUnit(values, n, m, 1.0 / std::max(1e-12, (hi - high * range) - m));
+}
+
+/**
+ * Stretch the unmasked values so that the fraction `tail` of them lies below 0 and the
+ * same fraction above 1 (then clamped): the quantiles `tail` and 1 - `tail` go to 0 and 1.
+ * Unlike the range, they do not depend on a few extreme values (the LIC of the few
+ * samples whose streamline is short, at a boundary or a sink, is an average of few noise
+ * values). The quantiles are read from a histogram of 4096 bins over the range, counted
+ * in integers, so the result does not depend on the number of threads. Nothing where
+ * the values are all equal.
+ */
+inline void vtkOFBLICStretchTails(float* values,
+  vtkIdType n,
+  const unsigned char* mask,
+  double tail)
+{
+  float lo, hi;
+  if (!vtkOFBLICRange(values, n, mask, lo, hi) || !(hi > lo))
+  {
+    return;
+  }
+  constexpr int Bins = 4096;
+  const double binScale = Bins / (static_cast<double>(hi) - lo);
+  vtkSMPThreadLocal<std::vector<vtkIdType>> localCounts;
+  vtkSMPTools::For(0,
+    n,
+    4096,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<vtkIdType>& counts = localCounts.Local();
+      counts.resize(Bins, 0);
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const double at = (values[i] - lo) * binScale; // NaN (from a noise array) fails
+        if (!mask[i] && at >= 0.0)
+        {
+          ++counts[std::min(Bins - 1, static_cast<int>(at))];
+        }
+      }
+    });
+  std::vector<vtkIdType> counts(Bins, 0);
+  for (const std::vector<vtkIdType>& local : localCounts)
+  {
+    for (std::size_t b = 0; b < local.size(); ++b)
+    {
+      counts[b] += local[b];
+    }
+  }
+  vtkIdType total = 0;
+  for (vtkIdType c : counts)
+  {
+    total += c;
+  }
+  // The value below which `fraction` of the values lie, interpolated within its bin.
+  auto quantile = [&](double fraction)
+  {
+    const double rank = fraction * total;
+    double below = 0.0;
+    for (int b = 0; b < Bins; ++b)
+    {
+      if (below + counts[b] >= rank && counts[b] > 0)
+      {
+        return lo + (b + (rank - below) / counts[b]) / binScale;
+      }
+      below += counts[b];
+    }
+    return static_cast<double>(hi);
+  };
+  const double m = quantile(tail);
+  const double top = quantile(1.0 - tail);
+  if (!(top > m))
+  {
+    return;
+  }
+  vtkOFBLICMapToUnit(values, n, m, 1.0 / (top - m));
+}
+
+/// The share of the first pass's tails that its stretch before the high-pass clips: the
+/// quantiles 0.1 % and 99.9 % go to 0 and 1.
+constexpr double vtkOFBLICStretchTail = 0.001;
+
+/// The high-pass's gain: a sample plus this times its difference to its neighbours' mean.
+constexpr double vtkOFBLICHighPassGain = 3.0;
 
 /**
  * The high-pass of vtkOFBLICHighPass over one OFB and its cache: the mean over the
@@ -117,7 +220,8 @@ struct vtkOFBLICHighPassWork
   void HighPass(vtkIdType i, double sum, int count) const
   {
     const double mean = count ? sum / count : this->Values[i];
-    this->Out[i] = static_cast<float>(this->Values[i] + 4.0 * (this->Values[i] - mean));
+    const double v = this->Values[i] + vtkOFBLICHighPassGain * (this->Values[i] - mean);
+    this->Out[i] = static_cast<float>(std::min(1.0, std::max(0.0, v)));
   }
 
   /// The 3 x 3 cells around cell (iu, iv) of grid a that hold samples, in the order
@@ -451,7 +555,9 @@ struct vtkOFBLICHighPassWork
 };
 
 /**
- * The first pass's result in cache.Values high-pass filtered and stretched, in place.
+ * The first pass's result in cache.Values stretched (its quantiles vtkOFBLICStretchTail
+ * and 1 - vtkOFBLICStretchTail to 0 and 1, clamped), high-pass filtered and clamped to
+ * [0, 1], in place: the second pass's input.
  * The neighbours of each sample are found once per packed samples (geometry and mask)
  * and kept in the cache (vtkOFBLICCache::NeighbourCount, NeighbourOffsets): a later
  * enhanced re-convolution (a new AnimationPhase) then sums the kept neighbours in the
@@ -464,10 +570,13 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
 {
   vtkOFBLICBuffer<float>& values = cache.Values;
   const vtkIdType n = static_cast<vtkIdType>(values.size());
-  // No stretch before the filter: it is affine, and so is the high-pass (a sample plus
-  // four times its difference to its neighbours' mean), so the stretch after it gives
-  // the same values (to rounding) as a stretch before and after did. Masked samples'
-  // values are never read again (streamlines stop there; the output masks them).
+  // As VTK's enhanced LIC: the first pass stretched to [0, 1], then high-passed and
+  // clamped to [0, 1], so that the second pass convolves values of the full range. The
+  // first pass is an average of many noise values, so of a narrow range (about 0.35 to
+  // 0.45 with the default noise); the stretch maps its quantiles, not its extremes (see
+  // vtkOFBLICStretchTails), so the result does not depend on a few samples. Masked
+  // samples' values are never read again (streamlines stop there; the output masks them).
+  vtkOFBLICStretchTails(values.data(), n, cache.Mask.data(), vtkOFBLICStretchTail);
   cache.Scratch.resize(n);
   const bool build =
     cache.NeighboursKey != cache.SamplesKey || cache.NeighbourCount.size() != values.size();
@@ -489,7 +598,6 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
     work.FromKeptNeighbours(n);
   }
   values.swap(cache.Scratch);
-  vtkOFBLICStretch(values.data(), n, cache.Mask.data(), 0.0, 0.0);
 }
 
 #endif

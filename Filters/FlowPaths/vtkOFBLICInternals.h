@@ -34,8 +34,9 @@ struct vtkOFBLIC::vtkInternals
    * The streamlines of the samples of one tile (fast LIC): from each sample not yet
    * given one, a seed streamline of up to LongSteps NumberOfSteps steps each way is
    * traced (each way stopping early once its last NumberOfSteps samples are of other
-   * tiles or already given one) and appended to `store` as a run; every sample of the
-   * tile it meets gets the window of NumberOfSteps steps each way around that meeting:
+   * tiles, already given one or passed too far aside) and appended to `store` as a run;
+   * every sample of the tile it passes within ReuseDistance across the flow gets the window
+   * of NumberOfSteps steps each way around that meeting:
    * `where` receives the meeting's place in the runs of the tile, `covered` marks it.
    * `sequence` is a buffer of 2 LongSteps NumberOfSteps + 1 ids.
    */

@@ -175,9 +175,10 @@ public:
   const vtkOFB* OFB = nullptr;
   const vtkOFBLICSample* Samples = nullptr;
   int NumberOfSteps = 0;
-  double Step = 0.0;         // world units
-  double SearchRadius = 0.0; // world units
-  double FieldRadius = 0.0;  // world units; > 0: inverse-distance field, else nearest
+  double Step = 0.0;          // world units
+  double SearchRadius = 0.0;  // world units
+  double FieldRadius = 0.0;   // world units; > 0: inverse-distance field, else nearest
+  double ReuseDistance = 0.0; // world units; fast LIC: see vtkOFBLIC::TraceTile
 
   // The OFB's frame and storage, read directly in the inner loop.
   const vtkTypeUInt32* Offsets = nullptr;
@@ -316,8 +317,10 @@ public:
    * Up to `steps` steps each way from sample i: the samples met forward to ahead[] and
    * backward to back[], their numbers returned in nAhead and nBack. The two directions
    * advance together: two independent chains of dependent loads, which the processor
-   * overlaps. A direction also stops once its last `idle` samples all failed `useful`
-   * (fast LIC: the samples a seed streamline can still give a window to); `ended` is
+   * overlaps. A direction also stops once its last `idle` samples all failed
+   * `useful(k, p, dir, step)` (k the sample met at position p, the step-th step of
+   * direction dir; fast LIC: the samples a seed streamline can still give a window to);
+   * `ended` is
    * true for a direction that stopped by itself (masked sample, border, fold), not for
    * one that ran out of steps or went idle.
    */
@@ -355,7 +358,7 @@ public:
         if (forward)
         {
           ahead[nAhead++] = static_cast<vtkTypeInt32>(jf);
-          idleAhead = useful(jf) ? 0 : idleAhead + 1;
+          idleAhead = useful(jf, pf, 1, nAhead - 1) ? 0 : idleAhead + 1;
           forward = nAhead < steps && idleAhead < idle;
         }
       }
@@ -367,7 +370,7 @@ public:
         if (backward)
         {
           back[nBack++] = static_cast<vtkTypeInt32>(jb);
-          idleBack = useful(jb) ? 0 : idleBack + 1;
+          idleBack = useful(jb, pb, -1, nBack - 1) ? 0 : idleBack + 1;
           backward = nBack < steps && idleBack < idle;
         }
       }
@@ -384,7 +387,7 @@ public:
       i,
       n,
       n + 1,
-      [](vtkIdType) { return true; },
+      [](vtkIdType, const glm::dvec3&, int, int) { return true; },
       line,
       ahead,
       aheadEnded,

@@ -15,7 +15,11 @@
 // anim+enh; default all: `--parts first --rounds 1 --frames 0` under perf profiles the first
 // computation alone), --checksum (a line per OFB with a 32-bit FNV-1a hash of the LIC
 // array of each part: the same numbers before and after a change of the code mean a
-// bit-for-bit identical result).
+// bit-for-bit identical result), --per-sample (CacheStreamlines off: every sample traces
+// its own streamline, every update), --reuse D (StreamlineReuseDistance D cells),
+// --quality (a line per OFB: the correlation of the LIC, EnhancedLIC on, with the one
+// traced from every sample, and the downstream-neighbour difference across grid switches
+// and tile planes as ratios to that elsewhere, with the per-sample traced LIC's).
 // Rows, per mesh, resolution and number of threads (medians over the rounds):
 // - first: a new vtkOFBLIC on the sampler's OFB, everything included (packed samples,
 //   tangential field and mask, noise, tracing, convolution, output), EnhancedLIC off
@@ -35,6 +39,7 @@
 // mappers take turns within every round, so that a change of load hits all of them.
 // On a shared machine the numbers are noisy: compare the ratios, repeat, and note the
 // load (printed from /proc/loadavg at the start and the end).
+#include "vtkOFBLICTestHelpers.h"
 #include "vtkOFBReadMesh.h"
 
 #include "vtkActor.h"
@@ -54,6 +59,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <chrono>
@@ -124,6 +130,9 @@ struct Options
   bool OffScreen = false;
   bool Parts[4] = { true, true, true, true }; // first, anim, first+enh, anim+enh
   bool Checksum = false;
+  bool PerSample = false;
+  double Reuse = -1.0; // StreamlineReuseDistance; negative: the filter's default
+  bool Quality = false;
 };
 
 const char* const PartNames[4] = { "first", "anim", "first+enh", "anim+enh" };
@@ -174,12 +183,19 @@ int ParseOptions(int argc, char* argv[], Options& o)
     }
     else if (arg == "--checksum")
       o.Checksum = true;
+    else if (arg == "--per-sample")
+      o.PerSample = true;
+    else if (arg == "--reuse" && hasValue)
+      o.Reuse = std::max(0.0, std::atof(argv[++i]));
+    else if (arg == "--quality")
+      o.Quality = true;
     else
     {
       std::cout << "usage: ofbLICBenchmark [--meshes bunny,horse|FILES] [--resolutions LIST] "
                    "[--threads LIST] [--steps N] [--rounds N] [--frames N] [--width W] "
                    "[--height H] [--frames-only] [--offscreen] "
-                   "[--parts first,anim,first+enh,anim+enh] [--checksum]\n";
+                   "[--parts first,anim,first+enh,anim+enh] [--checksum] [--per-sample] [--reuse "
+                   "D] [--quality]\n";
       return arg == "--help" ? 0 : 1;
     }
   }
@@ -284,7 +300,7 @@ std::uint32_t HashLIC(vtkOFBLIC* lic)
   return h;
 }
 
-LICTimes TimeLIC(vtkOFB* ofb, int steps, const bool parts[4])
+LICTimes TimeLIC(vtkOFB* ofb, int steps, const bool parts[4], bool perSample, double reuse)
 {
   LICTimes t;
   auto update = [](vtkOFBLIC* lic)
@@ -305,6 +321,11 @@ LICTimes TimeLIC(vtkOFB* ofb, int steps, const bool parts[4])
     lic->SetNumberOfSteps(steps);
     lic->SetEnhancedLIC(enhanced != 0);
     lic->AnimateOn();
+    lic->SetCacheStreamlines(!perSample);
+    if (reuse >= 0.0)
+    {
+      lic->SetStreamlineReuseDistance(reuse);
+    }
     t.Seconds[first] = update(lic);
     t.Hash[first] = HashLIC(lic);
     if (parts[first + 1])
@@ -339,6 +360,50 @@ double BytesPerSample(int steps, bool first, bool enhanced)
   return bytes;
 }
 
+/**
+ * The quality of the LIC (EnhancedLIC on, as by default) against the LIC traced from
+ * every sample (CacheStreamlines off): their correlation, and the mean LIC difference
+ * between a sample and the sample one cell downstream across grid switches and across
+ * the 64-cell tile planes, as ratios to that elsewhere (vtkOFBLICTestHelpers.h).
+ */
+void PrintQuality(const Options& o, vtkOFB* ofb)
+{
+  vtkNew<vtkOFBLIC> fast;
+  vtkNew<vtkOFBLIC> traced;
+  for (vtkOFBLIC* lic : { fast.Get(), traced.Get() })
+  {
+    lic->SetInputData(ofb);
+    lic->SetNumberOfSteps(o.Steps);
+  }
+  if (o.Reuse >= 0.0)
+  {
+    fast->SetStreamlineReuseDistance(o.Reuse);
+  }
+  fast->SetCacheStreamlines(!o.PerSample);
+  traced->CacheStreamlinesOff();
+  fast->Update();
+  traced->Update();
+  auto values = [](vtkOFBLIC* lic)
+  { return vtkFloatArray::SafeDownCast(lic->GetOutput()->GetSampleData()->GetArray("LIC")); };
+  vtkUnsignedCharArray* mask =
+    vtkUnsignedCharArray::SafeDownCast(traced->GetOutput()->GetSampleData()->GetArray("LICMask"));
+  if (!values(fast) || !values(traced) || !mask)
+  {
+    return;
+  }
+  const float* a = values(fast)->GetPointer(0);
+  const float* b = values(traced)->GetPointer(0);
+  const unsigned char* m = mask->GetPointer(0);
+  const vtkofbtest::Correlation c = vtkofbtest::CorrelationUnmasked(ofb, a, b, m);
+  const vtkofbtest::DownstreamDifference da = vtkofbtest::DownstreamDifferences(ofb, a, m);
+  const vtkofbtest::DownstreamDifference db = vtkofbtest::DownstreamDifferences(ofb, b, m);
+  std::cout << "  quality: correlation with the per-sample traced LIC " << std::setprecision(3)
+            << c.Value << "; downstream difference grid switch / same grid "
+            << da.GridSwitch / da.SameGrid << " (per-sample " << db.GridSwitch / db.SameGrid
+            << "), tile plane / in tile " << da.TilePlane / da.InTile << " (per-sample "
+            << db.TilePlane / db.InTile << ")" << std::endl;
+}
+
 /// The LIC rows of one OFB for every number of threads.
 void RunLIC(const Options& o,
   const std::string& name,
@@ -355,7 +420,7 @@ void RunLIC(const Options& o,
     LICTimes last;
     for (int r = 0; r < o.Rounds; ++r)
     {
-      last = TimeLIC(ofb, o.Steps, o.Parts);
+      last = TimeLIC(ofb, o.Steps, o.Parts, o.PerSample, o.Reuse);
       for (int p = 0; p < 4; ++p)
       {
         times[p].push_back(last.Seconds[p]);
@@ -579,6 +644,10 @@ int main(int argc, char* argv[])
       if (!o.FramesOnly)
       {
         RunLIC(o, name, resolution, ofb, buildSeconds);
+        if (o.Quality)
+        {
+          PrintQuality(o, ofb);
+        }
       }
       built.push_back({ name, resolution, mesh, ofb });
     }

@@ -1,12 +1,12 @@
 // ofbMapperBenchmark: frame time of vtkOFBPolyDataMapper (Nearest, InverseDistance,
-// Mipmapped, NearestMipmapped) against VTK's own poly data mapper with vertex colours, on the same
-// mesh (the Stanford bunny by default) in the same window, printed as ratios. Not a test: run it by
-// hand, under xvfb-run on a headless machine:
+// Mipmapped, NearestMipmapped, Smooth) against VTK's own poly data mapper with vertex colours, on
+// the same mesh (the Stanford bunny by default) in the same window, printed as ratios. Not a test:
+// run it by hand, under xvfb-run on a headless machine:
 //   xvfb-run -a -s "-screen 0 1280x1024x24" ofbMapperBenchmark [options]
 // Options: --mesh FILE (.obj/.ply), --resolution N (OFB cells, default 1024),
 // --frames N (timed frames per mapper and round, default 30), --rounds N (default 3),
 // --warmup N (untimed frames before each timing, default 3), --modes LIST (comma-separated
-// subset of nearest,idw,mipmapped,nearestmipmapped; default all), --width W --height H
+// subset of nearest,idw,mipmapped,nearestmipmapped,smooth; default all), --width W --height H
 // (1280x1024), --images PREFIX (write PREFIX<k>-<mapper>.ppm of the first view of every
 // mapper), --offscreen (render off screen: the frame is not copied to the X server),
 // --painted-normals (each mode also with UsePaintedNormals, the sample normals shading).
@@ -165,7 +165,8 @@ struct Options
   std::vector<int> Modes = { vtkOFBPolyDataMapper::LOOKUP_NEAREST,
     vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
     vtkOFBPolyDataMapper::LOOKUP_MIPMAPPED,
-    vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED };
+    vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED,
+    vtkOFBPolyDataMapper::LOOKUP_SMOOTH };
 };
 
 // Lookup modes from a comma-separated list; false on an unknown name.
@@ -192,6 +193,10 @@ bool ParseModes(const std::string& list, std::vector<int>& modes)
     else if (name == "nearestmipmapped")
     {
       modes.push_back(vtkOFBPolyDataMapper::LOOKUP_NEAREST_MIPMAPPED);
+    }
+    else if (name == "smooth")
+    {
+      modes.push_back(vtkOFBPolyDataMapper::LOOKUP_SMOOTH);
     }
     else if (!name.empty())
     {
@@ -275,10 +280,11 @@ int ParseOptions(int argc, char* argv[], Options& o)
       *integer = std::max(minimum, std::atoi(argv[++i]));
       continue;
     }
-    std::cout << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
-                 "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped,nearestmipmapped] "
-                 "[--painted-normals] [--width W] "
-                 "[--height H] [--images PREFIX] [--offscreen]\n";
+    std::cout
+      << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
+         "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped,nearestmipmapped,smooth] "
+         "[--painted-normals] [--width W] "
+         "[--height H] [--images PREFIX] [--offscreen]\n";
     return arg == "--help" ? 0 : 1;
   }
   return -1;

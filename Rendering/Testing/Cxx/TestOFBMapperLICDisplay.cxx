@@ -107,6 +107,7 @@ struct FlatScene
     this->LUT->SetRange(-1.0, 1.0);
     this->LUT->Build();
     this->Mapper->SetInputData(this->Surface);
+    this->Mapper->SetLookupModeToNearest(); // sample by sample, as vtkOFBMapToColors
     this->Mapper->SetOFB(this->OFB);
     this->Mapper->GetColoring()->SetLookupTable(this->LUT);
     this->Mapper->GetColoring()->SetScalarRange(-1.0, 1.0);

@@ -670,11 +670,11 @@ TEST(OFBPolyDataMapper, ArraysShorterThanTheSamplesAreMissing)
 TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)
 {
   vtkNew<vtkOFBPolyDataMapper> mapper;
-  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_NEAREST);
+  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_AUTOMATIC);
   EXPECT_EQ(mapper->GetColoring()->GetColorSource(), vtkOFBColoring::COLOR_SOURCE_PAINT);
   EXPECT_NEAR(mapper->GetInterpolationRadius(), 1.7320508, 1e-6);
   mapper->SetLookupMode(99); // not a lookup mode: an error, the mode stays
-  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_NEAREST);
+  EXPECT_EQ(mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_AUTOMATIC);
   mapper->GetColoring()->SetIntensityWeight(3.0);
   EXPECT_EQ(mapper->GetColoring()->GetIntensityWeight(), 1.0);
   EXPECT_EQ(mapper->GetOFB(), nullptr);

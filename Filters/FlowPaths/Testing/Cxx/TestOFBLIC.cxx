@@ -134,11 +134,12 @@ TEST(LIC, PipeWithBumpHasATangentSwirlOnEveryGrid)
 
 TEST(LIC, EnhancedSecondPassTakesHalfTheSteps)
 {
-  // EnhancedLIC written out with the filter's public pieces: a first LIC of 10 steps, its
-  // high-pass (the sample plus four times its difference to the mean of the samples
-  // within 1.5 cells) stretched to [0, 1], then a LIC of that as noise with 5 steps (as
-  // VTK's second pass, half the steps). Without kept streamlines every sample traces its
-  // own, so both ways read the same streamlines.
+  // EnhancedLIC written out with the filter's public pieces: a first LIC of 10 steps,
+  // stretched so that its quantiles 0.1 % and 99.9 % go to 0 and 1, its high-pass (the
+  // sample plus three times its difference to the mean of the samples within 1.5 cells)
+  // clamped to [0, 1], then a LIC of that as noise with 5 steps (as VTK's second pass,
+  // half the steps). Without kept streamlines every sample traces its own, so both ways
+  // read the same streamlines.
   const double angle = vtkMath::RadiansFromDegrees(30.0);
   const double dir[3] = { std::cos(angle), std::sin(angle), 0.0 };
   vtkSmartPointer<vtkOFB> ofb = BuildWithField(MakeSquare(), 128, UniformField(dir));
@@ -155,8 +156,18 @@ TEST(LIC, EnhancedSecondPassTakesHalfTheSteps)
   };
   vtkSmartPointer<vtkOFB> enhanced = run(ofb, 10, true, nullptr);
   vtkSmartPointer<vtkOFB> first = run(ofb, 10, false, nullptr);
-  const float* p = LICValues(first);
-  ASSERT_NE(p, nullptr);
+  const float* first1 = LICValues(first);
+  ASSERT_NE(first1, nullptr);
+  std::vector<double> sorted(first1, first1 + n);
+  std::sort(sorted.begin(), sorted.end());
+  const double q0 = sorted[static_cast<std::size_t>(0.001 * n)];
+  const double q1 = sorted[static_cast<std::size_t>(0.999 * n)];
+  ASSERT_GT(q1, q0);
+  std::vector<double> p(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    p[i] = std::min(1.0, std::max(0.0, (first1[i] - q0) / (q1 - q0)));
+  }
   std::vector<double> highPass(n);
   const double radius = 1.5 * ofb->GetCellSize();
   for (vtkIdType i = 0; i < n; ++i)
@@ -176,19 +187,14 @@ TEST(LIC, EnhancedSecondPassTakesHalfTheSteps)
         }
       });
     ASSERT_GE(count, 3);
-    highPass[i] = p[i] + 4.0 * (p[i] - sum / count);
+    highPass[i] = std::min(1.0, std::max(0.0, p[i] + 3.0 * (p[i] - sum / count)));
   }
-  const auto range = std::minmax_element(highPass.begin(), highPass.end());
-  const double low = *range.first;
-  const double span = *range.second - low;
-  ASSERT_GT(span, 0.0);
   vtkNew<vtkFloatArray> noise;
   noise->SetName("HighPass");
   noise->SetNumberOfTuples(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    noise->SetValue(
-      i, static_cast<float>(std::min(1.0, std::max(0.0, (highPass[i] - low) / span))));
+    noise->SetValue(i, static_cast<float>(highPass[i]));
   }
   vtkNew<vtkOFB> withNoise;
   withNoise->ShallowCopy(ofb);
@@ -208,7 +214,9 @@ TEST(LIC, EnhancedSecondPassTakesHalfTheSteps)
     std::cout << "second pass of " << steps << " steps: largest difference " << largest << "\n";
     if (steps == 5)
     {
-      EXPECT_LT(largest, 1e-4); // summation order only
+      // Summation order, and the filter's quantiles read from a histogram (to about 1e-4
+      // of the first pass's range) instead of sorted values.
+      EXPECT_LT(largest, 1e-3);
     }
     else
     {

@@ -1,0 +1,135 @@
+#include "vtkOFBLICPyramid.h"
+
+#include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkOFB.h"
+#include "vtkOFBLIC.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkTimerLog.h"
+
+#include <string>
+
+namespace
+{
+// The arrays that vtkOFBLIC writes.
+const char* const LICArrayNames[] = { "LIC", "LICMask" };
+}
+
+vtkStandardNewMacro(vtkOFBLICPyramid);
+vtkCxxSetObjectMacro(vtkOFBLICPyramid, LIC, vtkOFBLIC);
+
+//------------------------------------------------------------------------------
+vtkOFBLICPyramid::vtkOFBLICPyramid()
+  : LIC(nullptr)
+  , NumberOfLevelLICComputations(0)
+  , LastLevelLICTime(0.0)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkOFBLICPyramid::~vtkOFBLICPyramid()
+{
+  this->SetLIC(nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBLICPyramid::IsComputedArray(const std::string& name) const
+{
+  return this->LIC && (name == LICArrayNames[0] || name == LICArrayNames[1]);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLICPyramid::CopySettings(vtkOFBLIC* from, vtkOFBLIC* to)
+{
+  to->SetNumberOfSteps(from->GetNumberOfSteps());
+  to->SetStepSize(from->GetStepSize());
+  to->SetNormalizeVectors(from->GetNormalizeVectors());
+  to->SetFieldInterpolation(from->GetFieldInterpolation());
+  to->SetKernelType(from->GetKernelType());
+  to->SetOrientedLIC(from->GetOrientedLIC());
+  to->SetAnimate(from->GetAnimate());
+  to->SetAnimationPhase(from->GetAnimationPhase());
+  to->SetNoiseType(from->GetNoiseType());
+  to->SetNoiseGrainSize(from->GetNoiseGrainSize());
+  to->SetMinNoiseValue(from->GetMinNoiseValue());
+  to->SetMaxNoiseValue(from->GetMaxNoiseValue());
+  to->SetNumberOfNoiseLevels(from->GetNumberOfNoiseLevels());
+  to->SetImpulseNoiseProbability(from->GetImpulseNoiseProbability());
+  to->SetImpulseNoiseBackgroundValue(from->GetImpulseNoiseBackgroundValue());
+  to->SetNoiseGeneratorSeed(from->GetNoiseGeneratorSeed());
+  to->SetNoiseArrayName(from->GetNoiseArrayName());
+  to->SetEnhancedLIC(from->GetEnhancedLIC());
+  to->SetEnhanceContrast(from->GetEnhanceContrast());
+  to->SetLowLICContrastEnhancementFactor(from->GetLowLICContrastEnhancementFactor());
+  to->SetHighLICContrastEnhancementFactor(from->GetHighLICContrastEnhancementFactor());
+  to->SetMaskThreshold(from->GetMaskThreshold());
+  to->SetMaskOnSurface(from->GetMaskOnSurface());
+  to->SetMaskColor(from->GetMaskColor());
+  to->SetMaskIntensity(from->GetMaskIntensity());
+  to->SetCacheStreamlines(from->GetCacheStreamlines());
+  // The field: the same array (by name) where one was chosen, else the active vectors.
+  vtkInformation* info = from->GetInformation();
+  if (info->Has(vtkAlgorithm::INPUT_ARRAYS_TO_PROCESS()))
+  {
+    to->SetInputArrayToProcess(0, from->GetInputArrayInformation(0));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLICPyramid::ComputeLevelArrays(const std::set<std::string>* names)
+{
+  if (!this->LIC || (names && !names->count(LICArrayNames[0])))
+  {
+    return;
+  }
+  vtkOFB* input = this->GetInputOFB();
+  if (!input || !input->GetSampleData()->GetArray(LICArrayNames[0]))
+  {
+    return;
+  }
+  const double start = vtkTimerLog::GetUniversalTime();
+  const int levels = this->GetNumberOfLevels();
+  this->LevelLICs.resize(static_cast<size_t>(levels > 1 ? levels - 1 : 0));
+  for (int k = 1; k < levels; ++k)
+  {
+    vtkOFB* level = this->GetLevel(k);
+    vtkSmartPointer<vtkOFBLIC>& lic = this->LevelLICs[k - 1];
+    if (!lic)
+    {
+      lic = vtkSmartPointer<vtkOFBLIC>::New();
+    }
+    CopySettings(this->LIC, lic);
+    lic->SetInputData(level);
+    lic->Update();
+    vtkOFB* out = lic->GetOutput();
+    for (const char* name : LICArrayNames)
+    {
+      vtkDataArray* array = out ? out->GetSampleData()->GetArray(name) : nullptr;
+      if (array && array->GetNumberOfTuples() == level->GetNumberOfSamples())
+      {
+        // The level's own LIC replaces the one filtered from the finer level.
+        level->GetSampleData()->RemoveArray(name);
+        level->GetSampleData()->AddArray(array);
+      }
+      else
+      {
+        vtkWarningMacro("The LIC of level " << k << " could not be computed: it keeps the LIC "
+                                            << "filtered from level " << k - 1 << ".");
+        break;
+      }
+    }
+    level->Modified();
+  }
+  ++this->NumberOfLevelLICComputations;
+  this->LastLevelLICTime = vtkTimerLog::GetUniversalTime() - start;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLICPyramid::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LIC: " << this->LIC << "\n";
+  os << indent << "NumberOfLevelLICComputations: " << this->NumberOfLevelLICComputations << "\n";
+  os << indent << "LastLevelLICTime: " << this->LastLevelLICTime << " s\n";
+}

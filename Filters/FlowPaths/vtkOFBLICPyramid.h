@@ -1,0 +1,95 @@
+/**
+ * @class   vtkOFBLICPyramid
+ * @brief   Mipmap pyramid of a vtkOFB whose LIC is computed on every level
+ *
+ * vtkOFBLICPyramid is a vtkOFBPyramid whose coarser levels hold a LIC computed on their
+ * own samples instead of the LIC of level 0 filtered down. A filtered LIC averages its
+ * streaks with their neighbours across the flow and fades to grey where many cells share a
+ * pixel; a LIC computed on level k, with the noise grain, the step length and the mask in
+ * that level's cells, has streaks as wide as level k's cells. vtkOFBPolyDataMapper reads
+ * the two levels around a pixel's footprint and blends them (LOOKUP_SMOOTH, or
+ * LOOKUP_MIPMAPPED): seen from far, the display shows streaks about a pixel wide at any
+ * zoom, as an image-space LIC does, and no line where the level changes.
+ *
+ * The LIC of every level runs a vtkOFBLIC with the settings of the one given with SetLIC
+ * (normally the filter that computed level 0's LIC; it is not run here, its settings are
+ * read at every computation), on the level's samples, whose field, normals and other
+ * arrays are level 0's filtered down (vtkOFBPyramid). Its "LIC" and "LICMask" replace the
+ * filtered ones. They are computed when the levels' arrays are: when the levels are
+ * rebuilt, and when level 0's "LIC" array changes (a new LIC, another AnimationPhase). Each
+ * level keeps its vtkOFBLIC, so that with CacheStreamlines a new phase re-convolves the
+ * kept streamlines of every level instead of tracing them again; the filter cache
+ * (FilterCacheSize) keeps the levels' LICs of recent phases as it keeps filtered arrays.
+ *
+ * Cost: the levels hold about a third of level 0's samples together; the LIC of the
+ * pyramid costs about half of level 0's, on top of the pyramid's sampling and filtering
+ * (docs/lic.md gives the measured times). Without a LIC set, the pyramid is a
+ * plain vtkOFBPyramid.
+ *
+ * @sa vtkOFBPyramid vtkOFBLIC vtkOFBPolyDataMapper
+ */
+
+#ifndef vtkOFBLICPyramid_h
+#define vtkOFBLICPyramid_h
+
+#include "vtkOFBFlowPathsModule.h" // for export macro
+#include "vtkOFBPyramid.h"
+#include "vtkSmartPointer.h" // for LevelLICs
+
+#include <vector> // for LevelLICs
+
+class vtkOFBLIC;
+
+class VTKOFBFLOWPATHS_EXPORT vtkOFBLICPyramid : public vtkOFBPyramid
+{
+public:
+  static vtkOFBLICPyramid* New();
+  vtkTypeMacro(vtkOFBLICPyramid, vtkOFBPyramid);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The LIC whose settings every level's LIC uses (kept by reference; its settings are
+   * read when the levels' LICs are computed). Default none: the LIC is filtered down as
+   * any other array.
+   */
+  void SetLIC(vtkOFBLIC* lic);
+  vtkGetObjectMacro(LIC, vtkOFBLIC);
+  ///@}
+
+  /**
+   * How many times the LICs of the levels were computed since creation (each time all
+   * coarser levels), for tests and benchmarks.
+   */
+  vtkGetMacro(NumberOfLevelLICComputations, vtkIdType);
+
+  /**
+   * Seconds that the last computation of the levels' LICs took.
+   */
+  vtkGetMacro(LastLevelLICTime, double);
+
+  /**
+   * True for "LIC" and "LICMask" when a LIC is set.
+   */
+  bool IsComputedArray(const std::string& name) const override;
+
+protected:
+  vtkOFBLICPyramid();
+  ~vtkOFBLICPyramid() override;
+
+  void ComputeLevelArrays(const std::set<std::string>* names) override;
+
+  /// Copy the settings of `from` that compute a LIC into `to`.
+  static void CopySettings(vtkOFBLIC* from, vtkOFBLIC* to);
+
+  vtkOFBLIC* LIC;
+  std::vector<vtkSmartPointer<vtkOFBLIC>> LevelLICs; // levels 1..
+  vtkIdType NumberOfLevelLICComputations;
+  double LastLevelLICTime;
+
+private:
+  vtkOFBLICPyramid(const vtkOFBLICPyramid&) = delete;
+  void operator=(const vtkOFBLICPyramid&) = delete;
+};
+
+#endif

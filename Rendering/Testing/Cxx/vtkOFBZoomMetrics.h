@@ -1,0 +1,150 @@
+// Screen-space measures of a rendered LIC for the zoom tests (TestOFBLICZoom): how much
+// longer it is correlated along the field than across it, how much larger its gradient is
+// across OFB cell borders than inside cells, and across the line where the mipmap level
+// changes than around it. Images are grey levels in [0, 1], row-major from the bottom row.
+#ifndef vtkOFBZoomMetrics_h
+#define vtkOFBZoomMetrics_h
+
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace vtkofbzoom
+{
+struct GreyImage
+{
+  int Width = 0;
+  int Height = 0;
+  std::vector<double> Values;
+  double At(int i, int j) const { return this->Values[static_cast<size_t>(j) * this->Width + i]; }
+};
+
+/// The back buffer of `window` as grey levels (the red channel; the LIC tests render grey).
+inline GreyImage Grab(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  vtkImageData* image = grab->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  GreyImage out;
+  out.Width = dims[0];
+  out.Height = dims[1];
+  const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
+  out.Values.resize(static_cast<size_t>(dims[0]) * dims[1]);
+  for (size_t k = 0; k < out.Values.size(); ++k)
+  {
+    out.Values[k] = p[3 * k] / 255.0;
+  }
+  return out;
+}
+
+/// Standard deviation of the image over the pixels at least `margin` from its sides.
+inline double Contrast(const GreyImage& image, int margin)
+{
+  double sum = 0.0;
+  double sum2 = 0.0;
+  int n = 0;
+  for (int j = margin; j < image.Height - margin; ++j)
+  {
+    for (int i = margin; i < image.Width - margin; ++i)
+    {
+      sum += image.At(i, j);
+      sum2 += image.At(i, j) * image.At(i, j);
+      ++n;
+    }
+  }
+  const double mean = n ? sum / n : 0.0;
+  return n ? std::sqrt(std::max(0.0, sum2 / n - mean * mean)) : 0.0;
+}
+
+/// The integral scale in pixels along the direction (di, dj) (a unit step: one of the
+/// axes): 1 + the sum over lags d = 1..maxLag of the normalised autocorrelation at lag d,
+/// over the pixels at least `margin` from the sides. Long for streaks along the
+/// direction, about the grain's width across them, about 1 for uncorrelated noise.
+inline double CorrelationLength(const GreyImage& image, int di, int dj, int maxLag, int margin)
+{
+  double sum = 0.0;
+  double sum2 = 0.0;
+  int n = 0;
+  for (int j = margin; j < image.Height - margin; ++j)
+  {
+    for (int i = margin; i < image.Width - margin; ++i)
+    {
+      sum += image.At(i, j);
+      sum2 += image.At(i, j) * image.At(i, j);
+      ++n;
+    }
+  }
+  const double mean = sum / std::max(n, 1);
+  const double variance = sum2 / std::max(n, 1) - mean * mean;
+  if (!(variance > 1.0e-12))
+  {
+    return 0.0;
+  }
+  double length = 1.0;
+  for (int d = 1; d <= maxLag; ++d)
+  {
+    double c = 0.0;
+    int m = 0;
+    for (int j = margin; j < image.Height - margin - d * dj; ++j)
+    {
+      for (int i = margin; i < image.Width - margin - d * di; ++i)
+      {
+        c += (image.At(i, j) - mean) * (image.At(i + d * di, j + d * dj) - mean);
+        ++m;
+      }
+    }
+    length += m ? c / (m * variance) : 0.0;
+  }
+  return length;
+}
+
+/// Mean absolute difference of neighbouring pixels (horizontal and vertical pairs) whose
+/// pair `selected(i, j, i2, j2)` returns 1 (group A) and 2 (group B); other values skip
+/// the pair. Returns mean(A) / mean(B) and both means.
+inline double GradientRatio(const GreyImage& image,
+  const std::function<int(int, int, int, int)>& selected,
+  double& meanA,
+  double& meanB)
+{
+  double sums[2] = { 0.0, 0.0 };
+  long counts[2] = { 0, 0 };
+  for (int j = 0; j < image.Height; ++j)
+  {
+    for (int i = 0; i < image.Width; ++i)
+    {
+      const int pairs[2][2] = { { i + 1, j }, { i, j + 1 } };
+      for (const auto& q : pairs)
+      {
+        if (q[0] >= image.Width || q[1] >= image.Height)
+        {
+          continue;
+        }
+        const int group = selected(i, j, q[0], q[1]);
+        if (group == 1 || group == 2)
+        {
+          sums[group - 1] += std::abs(image.At(q[0], q[1]) - image.At(i, j));
+          ++counts[group - 1];
+        }
+      }
+    }
+  }
+  meanA = counts[0] ? sums[0] / counts[0] : 0.0;
+  meanB = counts[1] ? sums[1] / counts[1] : 0.0;
+  return meanB > 0.0 ? meanA / meanB : (meanA > 0.0 ? HUGE_VAL : 1.0);
+}
+}
+
+#endif

@@ -4,7 +4,6 @@
 #include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
 
-#include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataSet.h"
@@ -16,9 +15,9 @@
 #include "vtkGenericDataObjectReader.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
-#include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
+#include "vtkOFBMergeBlocks.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -171,18 +170,15 @@ bool CheckLeaf(const Leaf& leaf, std::string& problem)
 }
 
 /**
- * The chosen blocks as one surface: the outer surface of each (vtkDataSetSurfaceFilter;
- * polydata as they are), appended, with (for the blocks of a composite file) the cell array
- * "BlockIndex" (each block's flat index). vtkAppendPolyData keeps the arrays that every
- * block has.
+ * The chosen blocks as one surface. A data set: its polygons (a vtkPolyData as it is) or
+ * its outer surface (vtkDataSetSurfaceFilter). A composite data set: vtkOFBMergeBlocks on
+ * the chosen blocks (the others left empty, so that the flat indices stay the file's), the
+ * step by which vtkOFBSampler builds one OFB of a composite input: a cell array
+ * "BlockIndex", points shared by blocks merged, the union of the blocks' arrays.
  */
-vtkSmartPointer<vtkPolyData> MergeBlocks(const std::vector<Leaf>& chosen,
-  bool composite,
-  std::string& problem)
+vtkSmartPointer<vtkPolyData> MergeBlocks(
+  vtkDataObject* object, const std::vector<Leaf>& chosen, std::string& problem)
 {
-  vtkNew<ofbexample::FirstError> errors;
-  vtkNew<vtkAppendPolyData> append;
-  append->AddObserver(vtkCommand::ErrorEvent, errors);
   for (const Leaf& leaf : chosen)
   {
     if (!CheckLeaf(leaf, problem))
@@ -190,31 +186,47 @@ vtkSmartPointer<vtkPolyData> MergeBlocks(const std::vector<Leaf>& chosen,
       problem = "block " + std::to_string(leaf.Index) + ": " + problem;
       return nullptr;
     }
-    auto surface = vtkSmartPointer<vtkPolyData>::New();
-    if (auto* poly = vtkPolyData::SafeDownCast(leaf.Data))
+  }
+  vtkNew<ofbexample::FirstError> errors;
+  auto merged = vtkSmartPointer<vtkPolyData>::New();
+  auto* tree = vtkDataObjectTree::SafeDownCast(object);
+  if (!tree)
+  {
+    if (auto* poly = vtkPolyData::SafeDownCast(object))
     {
-      surface->ShallowCopy(poly);
+      merged->ShallowCopy(poly);
     }
     else
     {
       vtkNew<vtkDataSetSurfaceFilter> filter;
       filter->AddObserver(vtkCommand::ErrorEvent, errors);
-      filter->SetInputData(leaf.Data);
+      filter->SetInputData(object);
       filter->Update();
-      surface->ShallowCopy(filter->GetOutput());
+      merged->ShallowCopy(filter->GetOutput());
     }
-    if (composite)
-    {
-      vtkNew<vtkIntArray> index;
-      index->SetName("BlockIndex");
-      index->SetNumberOfTuples(surface->GetNumberOfCells());
-      index->FillValue(static_cast<int>(leaf.Index));
-      surface->GetCellData()->AddArray(index);
-    }
-    append->AddInputData(surface);
   }
-  append->Update();
-  vtkSmartPointer<vtkPolyData> merged = append->GetOutput();
+  else
+  {
+    auto blocks = vtk::TakeSmartPointer(vtkDataObjectTree::SafeDownCast(tree->NewInstance()));
+    blocks->CopyStructure(tree);
+    auto it = vtk::TakeSmartPointer(tree->NewTreeIterator());
+    it->VisitOnlyLeavesOn();
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      const unsigned int index = it->GetCurrentFlatIndex();
+      if (std::any_of(
+            chosen.begin(), chosen.end(), [index](const Leaf& l) { return l.Index == index; }))
+      {
+        blocks->SetDataSet(it, it->GetCurrentDataObject());
+      }
+    }
+    vtkNew<vtkOFBMergeBlocks> merge;
+    merge->AddObserver(vtkCommand::ErrorEvent, errors);
+    merge->SetInputData(blocks);
+    merge->Update();
+    merged->ShallowCopy(merge->GetOutput());
+  }
   if (errors->Count > 0)
   {
     problem = errors->Text;
@@ -339,7 +351,7 @@ bool ReadDataSurface(const std::string& path,
     }
     else if (ChooseLeaves(leaves, options.Blocks, chosen, problem))
     {
-      surface = MergeBlocks(chosen, vtkDataSet::SafeDownCast(object) == nullptr, problem);
+      surface = MergeBlocks(object, chosen, problem);
     }
   }
   if (!surface)

@@ -16,9 +16,11 @@
  * - Time (`--time T`: the step whose time is closest to T; `--time-step N`: the Nth, from
  *   0): of a .pvd, or of a reader that reports time steps. A value outside the file's
  *   range, or a time asked of a file without time steps, is an error naming the range.
- * - The chosen blocks become one surface (MergeBlocks: the outer surface of each block,
- *   appended; for a composite file with a cell array "BlockIndex" holding each block's
- *   flat index, which vtkOFBSampler passes on as a sample array).
+ * - The chosen blocks of a composite file become one surface through vtkOFBMergeBlocks,
+ *   as vtkOFBSampler merges a composite input into one OFB: a cell array "BlockIndex"
+ *   holding each block's flat index (a sample array in the OFB), the points shared by
+ *   blocks merged, the union of the blocks' arrays. A single data set gives its polygons
+ *   or its outer surface.
  * - The field (`--field NAME`): a point or a cell array of that name (point first). A
  *   file without it is an error that lists the arrays the file has (vectors first).
  *

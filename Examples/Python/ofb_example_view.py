@@ -14,11 +14,10 @@ import xml.etree.ElementTree as ElementTree
 
 import numpy as np
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkCommand, vtkIntArray, vtkLookupTable
+from vtkmodules.vtkCommonCore import vtkCommand, vtkLookupTable
 from vtkmodules.vtkCommonDataModel import (vtkCompositeDataSet, vtkDataObjectTree, vtkDataSet,
                                            vtkMultiBlockDataSet, vtkPolyData)
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
-from vtkmodules.vtkFiltersCore import vtkAppendPolyData
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
 from vtkmodules.vtkIOImage import vtkPNGWriter
@@ -197,29 +196,36 @@ def _check_block(index, data):
                             % (index, ids.max() if ids.max() >= n else ids.min(), n))
 
 
-def _merge_blocks(chosen, composite):
-    """The chosen blocks as one surface, for a composite file with the cell array
-    BlockIndex (as the C++ applications' MergeBlocks)."""
-    append = vtkAppendPolyData()
-    for index, _, data in chosen:
-        _check_block(index, data)
-        if isinstance(data, vtkPolyData):
-            surface = vtkPolyData()
-            surface.ShallowCopy(data)
-        else:
-            extract = vtkDataSetSurfaceFilter()
-            extract.SetInputData(data)
-            extract.Update()
-            surface = extract.GetOutput()
-        if composite:
-            block = vtkIntArray()
-            block.SetName("BlockIndex")
-            block.SetNumberOfTuples(surface.GetNumberOfCells())
-            block.Fill(index)
-            surface.GetCellData().AddArray(block)
-        append.AddInputData(surface)
-    append.Update()
-    return append.GetOutput()
+def _merge_blocks(data, chosen):
+    """The chosen blocks as one surface, as the C++ applications' MergeBlocks: a data set's
+    polygons or outer surface; a composite data set's chosen blocks through
+    vtkOFBMergeBlocks (BlockIndex, shared points merged, the union of the arrays), the
+    others left empty so that the flat indices stay the file's."""
+    for index, _, block in chosen:
+        _check_block(index, block)
+    if isinstance(data, vtkPolyData):
+        return data
+    if isinstance(data, vtkDataSet):
+        extract = vtkDataSetSurfaceFilter()
+        extract.SetInputData(data)
+        extract.Update()
+        return extract.GetOutput()
+    import vtkofb  # the examples' own module, built beside them
+    blocks = data.NewInstance()
+    blocks.CopyStructure(data)
+    wanted = set(index for index, _, _ in chosen)
+    it = data.NewTreeIterator()
+    it.VisitOnlyLeavesOn()
+    it.SkipEmptyNodesOn()
+    it.InitTraversal()
+    while not it.IsDoneWithTraversal():
+        if it.GetCurrentFlatIndex() in wanted:
+            blocks.SetDataSet(it, it.GetCurrentDataObject())
+        it.GoToNextItem()
+    merge = vtkofb.vtkOFBMergeBlocks()
+    merge.SetInputData(blocks)
+    merge.Update()
+    return merge.GetOutput()
 
 
 def describe_arrays(surface):
@@ -262,7 +268,7 @@ def read_data(path, field=None, block=None, time=None, time_step=None, vectors=F
     if not chosen:
         raise DataError("cannot read '%s': no data set in the file" % path)
     try:
-        surface = _merge_blocks(chosen, not isinstance(data, vtkDataSet))
+        surface = _merge_blocks(data, chosen)
     except DataError as error:
         raise DataError("cannot read '%s': %s" % (path, error))
     if surface.GetNumberOfPolys() + surface.GetNumberOfStrips() == 0:

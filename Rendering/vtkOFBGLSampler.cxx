@@ -3,6 +3,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
+#include "vtkOFBSampleSources.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -564,6 +565,12 @@ vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
     w2[i] = barycentrics[2 * i + 1];
   }
   barycentrics.clear();
+  if (job.Sources && job.Sources->RecordSamples(n))
+  {
+    std::copy(triangles.begin(), triangles.end(), job.Sources->GetTriangles());
+    std::copy(w1.begin(), w1.end(), job.Sources->GetW1());
+    std::copy(w2.begin(), w2.end(), job.Sources->GetW2());
+  }
   if (!output->BuildCellIndex() ||
     !vtkOFBSamplerBackend::InterpolateAttributes(
       surface, output, triangles.data(), w1.data(), w2.data()))

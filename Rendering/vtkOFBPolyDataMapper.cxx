@@ -610,6 +610,24 @@ void vtkOFBPolyDataMapper::ReplaceShaderNormal(std::map<vtkShader::Type, vtkShad
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::ReplaceShaderLight(std::map<vtkShader::Type, vtkShader*> shaders,
+  vtkRenderer* ren,
+  vtkActor* act)
+{
+  this->Superclass::ReplaceShaderLight(shaders, ren, act);
+  // After the lighting: the LIC of blend mode mixed in unlit (ofbBlendLIC).
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  if (this->OFBActive && fs.find("ofbBlendLIC") != std::string::npos)
+  {
+    vtkShaderProgram::Substitute(fs,
+      "//VTK::Light::Impl",
+      "  gl_FragData[0].rgb = ofbBlendLIC(gl_FragData[0].rgb, ofbAcc);\n"
+      "//VTK::Light::Impl\n");
+    shaders[vtkShader::Fragment]->SetSource(fs);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBPolyDataMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO,
   vtkRenderer* ren,
   vtkActor* act)

@@ -393,6 +393,9 @@ protected:
   void ReplaceShaderNormal(std::map<vtkShader::Type, vtkShader*> shaders,
     vtkRenderer* ren,
     vtkActor* act) override;
+  void ReplaceShaderLight(std::map<vtkShader::Type, vtkShader*> shaders,
+    vtkRenderer* ren,
+    vtkActor* act) override;
   ///@}
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;

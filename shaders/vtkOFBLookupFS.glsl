@@ -482,7 +482,11 @@ vec4 ofbResolve(ofbAccum acc)
   // The LIC combined as vtkSurfaceLICInterface does: blend, or map (multiply).
   float lic = acc.intensity * inv;
 #if OFB_LIC_MODE == 0
+#ifdef OFB_ENHANCE_COLOR
   color.rgb = mix(color.rgb, vec3(lic), ofbLICIntensity);
+#endif
+  // Without colour contrast, blend mode mixes the LIC after the lighting (ofbBlendLIC),
+  // as vtkSurfaceLICInterface does: the LIC's grey is not shaded.
 #else
   color.rgb *= mix(1.0, clamp(lic + ofbMapModeBias, 0.0, 1.0), ofbIntensityWeight);
 #endif
@@ -495,4 +499,14 @@ vec4 ofbResolve(ofbAccum acc)
   }
 #endif
   return color;
+}
+
+// Blend mode without colour contrast: the lit colour mixed with the unlit LIC grey.
+vec3 ofbBlendLIC(vec3 lit, ofbAccum acc)
+{
+#if defined(OFB_USE_INTENSITY) && OFB_LIC_MODE == 0 && !defined(OFB_ENHANCE_COLOR)
+  return acc.weight > 0.0 ? mix(lit, vec3(acc.intensity / acc.weight), ofbLICIntensity) : lit;
+#else
+  return lit;
+#endif
 }

@@ -3,6 +3,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkOFB.h"
 #include "vtkOFBSampleArrays.h"
+#include "vtkOFBSampleSources.h"
 #include "vtkOFBSamplerBands.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
@@ -208,6 +209,12 @@ void vtkOFBCPUSampler::FillBands(BandBuilder& builder, Job& job, vtkIdType sampl
   out.Colors = arrays.Colors->GetPointer(0);
   out.Normals = arrays.Normals->GetPointer(0);
   out.Vectors = arrays.Vectors ? arrays.Vectors->GetPointer(0) : nullptr;
+  if (job.Sources && job.Sources->RecordSamples(samples))
+  {
+    out.SourceTri = job.Sources->GetTriangles();
+    out.SourceW1 = job.Sources->GetW1();
+    out.SourceW2 = job.Sources->GetW2();
+  }
   std::vector<bool> interpolated;
   for (size_t k = 0; k < surface.Arrays.size(); ++k)
   {

@@ -19,6 +19,7 @@
 #include "vtkOFBCPUSampler.h"
 #include "vtkOFBInputChecks.h"
 #include "vtkOFBMergeBlocks.h"
+#include "vtkOFBSampleSources.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -496,12 +497,15 @@ vtkOFBSampler::vtkOFBSampler()
   , PassCellArrays(true)
   , ArrayPrecedence(POINT_ARRAYS_FIRST)
   , ProjectVectors(true)
+  , StructureReuse(STRUCTURE_REUSE_TIME_SERIES)
+  , LastUpdateResampled(false)
   , NumberOfSkippedTriangles(0)
   , LastBuildTime(0.0)
 {
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 255;
   this->DefaultColor[3] = 255;
   this->CPUBackend = vtk::TakeSmartPointer(vtkOFBCPUSampler::New());
+  this->Sources = vtk::TakeSmartPointer(vtkOFBSampleSources::New());
 }
 
 //------------------------------------------------------------------------------
@@ -511,6 +515,7 @@ vtkOFBSampler::~vtkOFBSampler() = default;
 void vtkOFBSampler::ReleaseBuffers()
 {
   this->CPUBackend->ReleaseBuffers();
+  this->Sources->Reset();
 }
 
 //------------------------------------------------------------------------------
@@ -576,6 +581,7 @@ int vtkOFBSampler::RequestData(vtkInformation*,
   // vtkOFBAlgorithm frees what is left after this.
   this->NumberOfSkippedTriangles = 0;
   this->LastBuildTime = 0.0;
+  this->LastUpdateResampled = false;
 
   const double start = vtkTimerLog::GetUniversalTime();
   vtkOFBSamplerBackend* backend = this->SelectBackend();
@@ -587,16 +593,30 @@ int vtkOFBSampler::RequestData(vtkInformation*,
   job.Output = output;
   job.MemoryLimit = 1024.0 * 1024.0 * static_cast<double>(this->MemoryLimit);
   job.Algorithm = this;
+  if (this->ResampleAttributes(inputVector[0]->GetInformationObject(0), input, job))
+  {
+    this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
+    this->UpdateProgress(1.0);
+    return 1;
+  }
   if (!this->CheckInputCells(input) || !this->CheckInputMemory(input, backend, job) ||
     !this->PrepareSurface(input, surface) || !this->ComputeFrame(surface, job))
   {
     output->Initialize();
+    this->Sources->Reset();
     return 1;
   }
   this->UpdateProgress(0.05);
+  auto key = vtkOFBSampleSources::MakeKey(input, this->Resolution, backend);
   if (this->RunBackend(backend, job) != vtkOFBSamplerBackend::RESULT_BUILT)
   {
+    this->Sources->Reset();
     return 1;
+  }
+  if (job.Sources)
+  {
+    key.Backend = this->LastBuildBackend.GetPointer();
+    this->Sources->Keep(output, input, key, surface);
   }
   this->ProjectCellVectors(surface, output);
   this->LastBuildTime = 1000.0 * (vtkTimerLog::GetUniversalTime() - start);
@@ -637,6 +657,14 @@ bool vtkOFBSampler::PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface)
     return false;
   }
   vtkDataArray* normals = this->PrepareNormals(input, surface);
+  return this->PrepareAttributes(input, normals, surface);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSampler::PrepareAttributes(vtkPolyData* input,
+  vtkDataArray* normals,
+  vtkOFBSurface& surface)
+{
   vtkDataArray* vectors = nullptr;
   if (!this->SelectVectors(input, surface, vectors))
   {
@@ -1040,6 +1068,8 @@ void vtkOFBSampler::PrintSelf(ostream& os, vtkIndent indent)
      << (this->ArrayPrecedence == CELL_ARRAYS_FIRST ? "CELL_ARRAYS_FIRST" : "POINT_ARRAYS_FIRST")
      << "\n";
   os << indent << "ProjectVectors: " << (this->ProjectVectors ? "On" : "Off") << "\n";
+  os << indent << "StructureReuse: " << this->StructureReuse << "\n";
+  os << indent << "LastUpdateResampled: " << (this->LastUpdateResampled ? "yes" : "no") << "\n";
   os << indent << "NumberOfSkippedTriangles: " << this->NumberOfSkippedTriangles << "\n";
   os << indent << "LastBuildTime: " << this->LastBuildTime << " ms\n";
 }

@@ -79,6 +79,7 @@
 class vtkDataArray;
 class vtkDataSet;
 class vtkOFB;
+class vtkOFBSampleSources;
 class vtkPolyData;
 class vtkOFBSurface;
 
@@ -178,19 +179,55 @@ public:
   vtkBooleanMacro(ProjectVectors, bool);
   ///@}
 
+  /// When an update re-samples the attributes alone on the structure of the last build.
+  enum StructureReuses
+  {
+    STRUCTURE_REUSE_OFF = 0,         ///< never: every update is a full build
+    STRUCTURE_REUSE_TIME_SERIES = 1, ///< when the input reports time steps (the default)
+    STRUCTURE_REUSE_ALWAYS = 2       ///< whenever the geometry is unchanged
+  };
+
+  ///@{
+  /**
+   * Re-sample the attributes alone when the geometry is unchanged since the last
+   * build (see vtkOFBSampleSources): STRUCTURE_REUSE_TIME_SERIES (default: when
+   * the input's pipeline information has TIME_STEPS), STRUCTURE_REUSE_ALWAYS, or
+   * STRUCTURE_REUSE_OFF. The geometry is the input's points, polygons and strips
+   * and point normals (their arrays and modification times, else a hash of their
+   * content), the resolution and the backend. A re-sampling gives the output the
+   * structure of the last build (shared: its GetStructureMTime does not change)
+   * and the normals of its samples (shared too), and interpolates the colours,
+   * the vector field and the other arrays from the triangle and barycentrics
+   * that the build recorded for each sample: the same values as a full build. The
+   * recording costs 12 bytes a sample, kept between updates while reuse is on.
+   */
+  vtkSetClampMacro(StructureReuse, int, STRUCTURE_REUSE_OFF, STRUCTURE_REUSE_ALWAYS);
+  vtkGetMacro(StructureReuse, int);
+  void SetStructureReuseToOff() { this->SetStructureReuse(STRUCTURE_REUSE_OFF); }
+  void SetStructureReuseToTimeSeries() { this->SetStructureReuse(STRUCTURE_REUSE_TIME_SERIES); }
+  void SetStructureReuseToAlways() { this->SetStructureReuse(STRUCTURE_REUSE_ALWAYS); }
+  ///@}
+
+  /**
+   * Whether the last update re-sampled the attributes alone (true) or built the
+   * OFB (false).
+   */
+  vtkGetMacro(LastUpdateResampled, bool);
+
   /**
    * Zero-area triangles skipped by the last build.
    */
   vtkGetMacro(NumberOfSkippedTriangles, vtkIdType);
 
   /**
-   * Wall-clock time of the last build (ms).
+   * Wall-clock time of the last update (ms): a build or a re-sampling.
    */
   vtkGetMacro(LastBuildTime, double);
 
   /**
    * Free the build buffers the CPU backend keeps between updates (triangle setups
-   * and spans, a few hundred bytes per triangle); the next update allocates them again.
+   * and spans, a few hundred bytes per triangle) and the sources kept for
+   * re-sampling (StructureReuse); the next update allocates them again (and builds).
    */
   void ReleaseBuffers();
 
@@ -236,6 +273,8 @@ protected:
   bool PassCellArrays;
   int ArrayPrecedence;
   bool ProjectVectors;
+  int StructureReuse;
+  bool LastUpdateResampled;
   vtkIdType NumberOfSkippedTriangles;
   double LastBuildTime;
 
@@ -282,6 +321,7 @@ private:
    * reporting an error.
    */
   bool PrepareSurface(vtkPolyData* input, vtkOFBSurface& surface);
+  bool PrepareAttributes(vtkPolyData* input, vtkDataArray* normals, vtkOFBSurface& surface);
   bool CopyPoints(vtkPolyData* input, vtkOFBSurface& surface);
   bool CollectTriangles(vtkPolyData* input, vtkOFBSurface& surface);
   vtkDataArray* PrepareNormals(vtkPolyData* input, vtkOFBSurface& surface);
@@ -302,7 +342,19 @@ private:
   vtkOFBSamplerBackend::Result RunBackend(vtkOFBSamplerBackend* backend,
     vtkOFBSamplerBackend::Job& job);
 
+  /**
+   * Re-sample the attributes of `input` alone on the kept structure when its
+   * geometry is that of the last build (StructureReuse): the triangles of that
+   * build with the arrays of `input` (PrepareAttributes). Else set `job` up to
+   * record the sources of the build. True when the update is done (re-sampled, or
+   * failed with an error and an empty output).
+   */
+  bool ResampleAttributes(vtkInformation* inInfo,
+    vtkPolyData* input,
+    vtkOFBSamplerBackend::Job& job);
+
   vtkSmartPointer<vtkOFBSamplerBackend> CPUBackend;
+  vtkSmartPointer<vtkOFBSampleSources> Sources;
   vtkWeakPointer<vtkOFBSamplerBackend> LastBuildBackend;
 };
 

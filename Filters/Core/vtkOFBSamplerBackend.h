@@ -31,6 +31,7 @@
 
 class vtkAlgorithm;
 class vtkOFB;
+class vtkOFBSampleSources;
 class vtkOFBSurface;
 
 class VTKOFBCORE_EXPORT vtkOFBSamplerBackend : public vtkObject
@@ -57,6 +58,12 @@ public:
     vtkAlgorithm* Algorithm = nullptr;
     /// Why the build failed or the backend is unavailable (empty when already reported).
     std::string Error;
+    /**
+     * Where the backend records the triangle and barycentrics of each sample
+     * (vtkOFBSampleSources::RecordSamples), for a later re-sampling of the
+     * attributes alone; null: not recorded.
+     */
+    vtkOFBSampleSources* Sources = nullptr;
   };
 
   enum Result

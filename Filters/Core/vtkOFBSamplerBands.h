@@ -182,6 +182,10 @@ struct Output
   std::vector<vtkDataArray*> Others; // the other arrays that are interpolated
   std::vector<vtkDataArray*> OthersIn;
   std::vector<const vtkIdType*> OthersCells; // input cell per triangle, for cell arrays
+  // The triangle and barycentrics of each sample (vtkOFBSampleSources), or null.
+  vtkTypeUInt32* SourceTri = nullptr;
+  float* SourceW1 = nullptr;
+  float* SourceW2 = nullptr;
 };
 
 /**

@@ -24,8 +24,9 @@ void BandBuilder::FillBand(const Band& band, const Output& out, BandScratch& s) 
   const vtkIdType rowLength = this->Frame.Dims[(band.Axis + 1) % 3];
   const bool vectors = out.Vectors != nullptr;
   const bool colors = this->Interpolator.PointColors != nullptr;
-  // The other arrays are interpolated after the sort, from fragments kept till then.
-  const bool keepFragments = !out.Others.empty();
+  // The other arrays are interpolated after the sort, from fragments kept till then
+  // (and the sources of the samples recorded from them).
+  const bool keepFragments = !out.Others.empty() || out.SourceTri != nullptr;
   s.Reserve(band.Count, nCells, vectors, colors, keepFragments);
   // slot[c]: the change in the number of samples from cell c - 1 to cell c (+1
   // where a span starts, -1 after it ends), then the first slot of cell c, then
@@ -270,6 +271,16 @@ void BandBuilder::WriteSamples(const Band& band, const Output& out, const BandSc
       {
         outVectors[3 * k + c] = s.Vectors[c][order[k]];
       }
+    }
+  }
+  if (out.SourceTri)
+  {
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkTypeUInt32 f = order[k];
+      out.SourceTri[band.First + k] = s.Tri[f];
+      out.SourceW1[band.First + k] = s.W1[f];
+      out.SourceW2[band.First + k] = s.W2[f];
     }
   }
   for (size_t k = 0; k < out.Others.size(); ++k)

@@ -142,8 +142,10 @@ public:
 
   ///@{
   /**
-   * COLOR_MODE_BLEND: the intensity's share of the result, in [0, 1] (default 0.8, as
-   * VTK's): 0 shows the colour alone, 1 the intensity alone.
+   * COLOR_MODE_BLEND: the intensity's share of the result, in [0, 1] (default 1: the LIC
+   * alone at full contrast; VTK's default is 0.8): 0 shows the colour alone. Lower it, or
+   * use COLOR_MODE_MAP, to see a colour under the LIC. Without EnhanceColorContrast the
+   * mapper mixes the LIC into the lit colour, unlit, as VTK does.
    */
   vtkSetClampMacro(LICIntensity, double, 0.0, 1.0);
   vtkGetMacro(LICIntensity, double);

@@ -60,6 +60,8 @@ vtkOFBLIC::vtkOFBLIC()
   , CacheStreamlines(true)
   , StreamlineReuseDistance(0.05)
   , NumberOfMaskedSamples(0)
+  , LastRecomputed(0)
+  , LastStructureMTime(0)
   , LastExecutionTime(0.0)
   , Internals(new vtkInternals)
 {
@@ -180,11 +182,19 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
     .Add(this->NormalizeVectors ? 1.0 : 0.0)
     .Add(this->MaskThreshold)
     .Add(this->MaskOnSurface ? 1.0 : 0.0);
+  if (input->GetStructureMTime() != this->LastStructureMTime)
+  {
+    this->LastRecomputed |= RECOMPUTED_STRUCTURE;
+    this->LastStructureMTime = input->GetStructureMTime();
+  }
   if (cache.SamplesKey != samplesKey)
   {
+    this->LastRecomputed |= RECOMPUTED_SAMPLES;
+    // The noise depends on the samples' positions alone, which the structure gives
+    // (its key has the structure's time): a new field on the same structure (a new
+    // time step re-sampled by vtkOFBSampler) keeps it.
     cache.SamplesKey = vtkOFBLICCacheKey();
     cache.LinesKey = vtkOFBLICCacheKey();
-    cache.NoiseKey = vtkOFBLICCacheKey();
     cache.Masked = this->PrepareSamples(input, vectors, normals);
     cache.SamplesKey = samplesKey;
   }
@@ -217,6 +227,7 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
   }
   if (cache.NoiseKey != noiseKey)
   {
+    this->LastRecomputed |= RECOMPUTED_NOISE;
     cache.NoiseKey = vtkOFBLICCacheKey();
     if (!this->PrepareNoise(input))
     {
@@ -489,6 +500,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   this->NumberOfMaskedSamples = 0;
+  this->LastRecomputed = 0;
   if (!input || !output)
   {
     vtkErrorMacro("No input OFB.");
@@ -564,6 +576,16 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   {
     cache.LinesKey = vtkOFBLICCacheKey();
   }
+  if (trace && this->NumberOfSteps > 0)
+  {
+    this->LastRecomputed |= RECOMPUTED_STREAMLINES;
+  }
+  vtkDebugMacro(
+    "Recomputed:" << (this->LastRecomputed & RECOMPUTED_STRUCTURE ? " structure" : "")
+                  << (this->LastRecomputed & RECOMPUTED_SAMPLES ? " samples" : "")
+                  << (this->LastRecomputed & RECOMPUTED_NOISE ? " noise" : "")
+                  << (this->LastRecomputed & RECOMPUTED_STREAMLINES ? " streamlines" : "")
+                  << "; convolved.");
   vtkOFBLICBuffer<float>& values = cache.Values;
   values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
@@ -600,6 +622,10 @@ int vtkOFBLIC::RequestData(vtkInformation*,
       output->Initialize();
       return 1;
     }
+    // The second pass stretched to the full range as the first (its quantiles
+    // vtkOFBLICFinalStretchTail and 1 - vtkOFBLICFinalStretchTail to 0 and 1): a LIC
+    // averages its input, so without this it would span about half of [0, 1].
+    vtkOFBLICStretchTails(values.data(), n, cache.Mask.data(), vtkOFBLICFinalStretchTail);
   }
   if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
     this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)
@@ -654,5 +680,6 @@ void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CacheStreamlines: " << (this->CacheStreamlines ? "On" : "Off") << "\n";
   os << indent << "StreamlineReuseDistance: " << this->StreamlineReuseDistance << " cells\n";
   os << indent << "NumberOfMaskedSamples: " << this->NumberOfMaskedSamples << "\n";
+  os << indent << "LastRecomputed: " << this->LastRecomputed << "\n";
   os << indent << "LastExecutionTime: " << this->LastExecutionTime << " ms\n";
 }

@@ -359,6 +359,25 @@ public:
    */
   vtkGetMacro(NumberOfMaskedSamples, vtkIdType);
 
+  /// What an update computed again rather than took from the cache (bits of LastRecomputed).
+  enum RecomputedParts
+  {
+    RECOMPUTED_STRUCTURE = 1,  ///< the input's structure changed (not the same frame and samples)
+    RECOMPUTED_SAMPLES = 2,    ///< the samples' field packed again (a new field or mask)
+    RECOMPUTED_NOISE = 4,      ///< the noise (it depends on the structure and noise settings)
+    RECOMPUTED_STREAMLINES = 8 ///< the streamlines traced again (CacheStreamlines)
+  };
+
+  /**
+   * What the last update computed again, a combination of RecomputedParts; the
+   * convolution itself is always done. A new time step of the same surface through
+   * vtkOFBSampler's attribute-only re-sampling keeps the input's structure: the
+   * noise is kept, the field is packed and the streamlines traced again
+   * (RECOMPUTED_SAMPLES | RECOMPUTED_STREAMLINES). With the debug flag on, each
+   * update says so.
+   */
+  vtkGetMacro(LastRecomputed, int);
+
   /**
    * Wall-clock time of the last update (ms).
    */
@@ -433,6 +452,8 @@ protected:
   bool CacheStreamlines;
   double StreamlineReuseDistance;
   vtkIdType NumberOfMaskedSamples;
+  int LastRecomputed;
+  vtkMTimeType LastStructureMTime;
   double LastExecutionTime;
 
 private:

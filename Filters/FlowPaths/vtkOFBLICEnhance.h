@@ -173,6 +173,9 @@ inline void vtkOFBLICStretchTails(float* values,
 /// quantiles 0.1 % and 99.9 % go to 0 and 1.
 constexpr double vtkOFBLICStretchTail = 0.001;
 
+/// The share of the enhanced LIC's result that its final stretch clips at each end.
+constexpr double vtkOFBLICFinalStretchTail = 0.02;
+
 /// The high-pass's gain: a sample plus this times its difference to its neighbours' mean.
 constexpr double vtkOFBLICHighPassGain = 3.0;
 

@@ -280,6 +280,10 @@ vtkTypeBool vtkOFBParticleAdvector::ProcessRequest(vtkInformation* request,
   {
     return this->RequestInformation(request, inInfo, outInfo);
   }
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
+  {
+    return this->RequestUpdateExtent(request, inInfo, outInfo);
+  }
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
   {
     return this->RequestData(request, inInfo, outInfo);
@@ -315,9 +319,21 @@ int vtkOFBParticleAdvector::RequestDataObject(vtkInformation*,
 }
 
 int vtkOFBParticleAdvector::RequestInformation(vtkInformation*,
-  vtkInformationVector**,
+  vtkInformationVector** inInfo,
   vtkInformationVector* outInfo)
 {
+  if (this->IsUnsteady(inInfo))
+  {
+    // Pathlines: the time of the unsteady input (its steps and range).
+    vtkInformation* source = inInfo[0]->GetInformationObject(0);
+    for (int i = 0; i < 3; ++i)
+    {
+      vtkInformation* info = outInfo->GetInformationObject(i);
+      info->CopyEntry(source, vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+      info->CopyEntry(source, vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+    }
+    return 1;
+  }
   // Time is the number of steps from the seeds, open-ended. Without a time range
   // the pipeline would not execute again for a new time request.
   const double range[2] = { 0.0, static_cast<double>(VTK_INT_MAX) };
@@ -331,7 +347,7 @@ int vtkOFBParticleAdvector::RequestInformation(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBParticleAdvector::RequestData(vtkInformation*,
+int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
@@ -349,6 +365,12 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   outOFB->Initialize();
   outParticles->Initialize();
   outTrails->Initialize();
+  const bool unsteady = this->IsUnsteady(inputVector);
+  if (unsteady != in.Unsteady)
+  {
+    in.Unsteady = unsteady;
+    in.SurfaceObject = nullptr; // rebuilt: restart
+  }
 
   bool rebuilt = false;
   if (!this->CheckSettings() || !this->PrepareSurface(surface, inputVector, rebuilt))
@@ -373,7 +395,66 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   // How far to go: the steps asked for by Step(), else the requested time.
   vtkOFBParticleSystem& system = in.System;
   vtkIdType target = system.CurrentStep;
-  if (in.PendingSteps > 0)
+  double requested = in.TimeNew; // an unsteady input's time, without a request
+  if (in.Unsteady)
+  {
+    // Pathlines: from the particles' time to the requested one (time backwards: a
+    // restart there); Step() has no effect.
+    for (int i = 0; i < 3; ++i)
+    {
+      vtkInformation* info = outputVector->GetInformationObject(i);
+      if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+      {
+        requested = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+        break;
+      }
+    }
+    if (!std::isfinite(requested))
+    {
+      vtkErrorMacro("The requested time is not finite: no particles.");
+      in.Started = false;
+      this->ClearFootprints();
+      in.PendingSteps = 0;
+      return 1;
+    }
+    if (!restart && requested < in.ParticleTime && !this->StartParticles(seeds))
+    {
+      in.Started = false;
+      this->ClearFootprints();
+      in.PendingSteps = 0;
+      return 1;
+    }
+    if (restart || requested < in.ParticleTime)
+    {
+      // From the seeds at the requested time, with the field of the step just read.
+      in.ParticleTime = requested;
+      in.FieldOld = in.FieldNew;
+      in.TimeOld = in.TimeNew;
+      in.SpeedOld = in.SpeedNew;
+    }
+    // One input step at a time: up to the step just read when the requested time is
+    // beyond it and the input has more, and then again (CONTINUE_EXECUTING, as
+    // vtkParticleTracer does) with the next one.
+    in.Goal = requested;
+    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    const double* steps = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    const int numSteps = inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    if (in.TimeNew < requested && in.TimeNew > in.ParticleTime &&
+      std::upper_bound(steps, steps + numSteps, in.TimeNew) != steps + numSteps)
+    {
+      in.Goal = in.TimeNew;
+    }
+    if (in.Goal < requested)
+    {
+      request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+    }
+    else
+    {
+      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+    }
+    target = system.CurrentStep + this->PlanUnsteadySteps(in.Goal);
+  }
+  else if (in.PendingSteps > 0)
   {
     target += in.PendingSteps;
   }
@@ -407,13 +488,18 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   // chunks (each batch of particles makes a chunk's steps in a row), about 20 per
   // update.
   const bool painting = in.Target && this->Paint && this->FootprintRadius > 0.0;
-  const vtkIdType chunk = painting ? 1 : std::max<vtkIdType>(1, (target - first) / 20);
+  const vtkIdType chunk =
+    painting || in.Unsteady ? 1 : std::max<vtkIdType>(1, (target - first) / 20);
   in.AdvectionTime = 0.0;
   in.PaintingTime = 0.0;
   for (vtkIdType step = first; step < target;)
   {
     const vtkIdType count = std::min(chunk, target - step);
     const auto start = Clock::now();
+    if (in.Unsteady)
+    {
+      this->PrepareUnsteadyStep(step - first);
+    }
     system.Advance(in.Coloring, count);
     const auto moved = Clock::now();
     in.AdvectionTime += Milliseconds(moved - start);
@@ -437,7 +523,11 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation*,
   this->FillParticles(outParticles);
   this->FillTrails(outTrails);
   in.OutputTime = Milliseconds(Clock::now() - outputStart);
-  const double time = static_cast<double>(system.CurrentStep);
+  if (in.Unsteady)
+  {
+    in.ParticleTime = in.Goal;
+  }
+  const double time = in.Unsteady ? in.ParticleTime : static_cast<double>(system.CurrentStep);
   for (int i = 0; i < 3; ++i)
   {
     vtkDataObject* output = vtkDataObject::GetData(outputVector, i);

@@ -14,10 +14,11 @@
  * - port 0: the surface, a vtkPolyData with a vector field. The field is the
  *   point array chosen with SetInputArrayToProcess(0, 0, 0, association, name)
  *   (default: the active point vectors); each use projects it into the tangent
- *   plane of the triangle at hand. Cell vectors are averaged to the points, with
- *   a warning. Polygons are triangulated; lines and vertices are ignored. A
- *   missing field, one without 3 components, one that is zero everywhere or has
- *   non-finite values gives an error and empty outputs.
+ *   plane of the triangle at hand. A cell array (or, without a point field, the
+ *   active cell vectors) holds on its cells' triangles, as vtkOFBSampler's cell
+ *   arrays do: each triangle carries its cell's vector. Polygons are triangulated; lines and
+ * vertices are ignored. A missing field, one without 3 components, one that is zero everywhere or
+ * has non-finite values gives an error and empty outputs.
  * - port 1 (optional): the OFB to paint. The advector paints a copy that it keeps
  *   from step to step (taken again when that input changes); port 0 of the output
  *   is that copy. Alternatively SetOFB() gives an OFB that the application holds:
@@ -79,6 +80,19 @@
  * from the seeds on the next update; appearance settings (colours, footprint,
  * trail length) apply from the next step.
  *
+ * Unsteady fields. When the surface (port 0) reports TIME_STEPS, time is the
+ * input's and the particles follow pathlines, as vtkParticleTracer does: a request
+ * for time t asks the input for the step at or after t and keeps the step before
+ * from the previous update, one input step at a time when t is beyond the next one
+ * (CONTINUE_EXECUTING); the field is linear in time between the two (at the
+ * middle of each integration step), and the particles go on from their time to t
+ * in steps of at most StepSize cells for the fastest point (NormalizeVectors does
+ * not apply). A new time step of the same geometry changes the field alone (no
+ * restart); a time before the particles' time restarts them from the seeds there;
+ * times outside the input's steps hold the nearest step's field (clamped, as VTK's
+ * readers do); a non-finite time is an error. Step() has no effect then. The
+ * outputs' DATA_TIME_STEP is the particles' time.
+ *
  * Outputs: port 0 the painted OFB; port 1 the particles as vertices, with point
  * arrays "Velocity" (the field at the particle in its tangent plane, world units,
  * reversed for backward tracing), "Age" (steps since release or reseed), "Id",
@@ -96,9 +110,11 @@
 #include "vtkOFBFlowPathsModule.h" // for export macro
 #include "vtkSmartPointer.h"       // for member
 
-#include <memory> // for std::unique_ptr
+#include <cstdint> // for HashGeometry
+#include <memory>  // for std::unique_ptr
 
 class vtkAlgorithmOutput;
+class vtkDataArray;
 class vtkOFB;
 class vtkOFBBrush;
 class vtkDataSet;
@@ -422,6 +438,8 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   virtual int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  /// An unsteady input is asked for the time step at or after the requested time.
+  virtual int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   virtual int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   ///@{
@@ -429,6 +447,20 @@ protected:
    * The steps of RequestData (see the .cxx).
    */
   bool CheckSettings();
+  ///@{
+  /**
+   * Pathlines through an unsteady input (vtkOFBParticleAdvectorTime.cxx): whether
+   * port 0 reports TIME_STEPS; a hash of a surface's points and cells; keep the
+   * field of a new time step (the newer of the two around the particles' time);
+   * the steps from the particles' time to `time` (their duration in the
+   * internals); the field and stepper of step k.
+   */
+  bool IsUnsteady(vtkInformationVector** inputVector) const;
+  static uint64_t HashGeometry(vtkPolyData* surface);
+  void KeepField(vtkPolyData* surface, vtkDataArray* vectors, bool rebuilt);
+  vtkIdType PlanUnsteadySteps(double time);
+  void PrepareUnsteadyStep(vtkIdType k);
+  ///@}
   bool PrepareSurface(vtkPolyData* surface, vtkInformationVector** inputVector, bool& rebuilt);
   bool PrepareOFB(vtkOFB* inputOFB, vtkPolyData* surface);
   bool NeedsRestart(vtkDataSet* seeds);

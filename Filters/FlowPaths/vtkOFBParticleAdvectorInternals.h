@@ -7,6 +7,7 @@
 #include "vtkOFBParticleSystem.h"
 #include "vtkSmartPointer.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,17 @@ public:
   double PaintingTime = 0.0;
   double OutputTime = 0.0;
   std::vector<vtkIdType> Slots; // where each particle's output starts (kept between steps)
+  // An unsteady input (TIME_STEPS on port 0): the fields (3 per point) of the two
+  // time steps around the particles' time, their times and largest speeds.
+  bool Unsteady = false;
+  bool FieldPerCell = false; // the field is a cell array (3 per cell), else per point
+  uint64_t GeometryHash = 0;
+  std::vector<double> FieldOld, FieldNew, Blend;
+  double TimeOld = 0.0, TimeNew = 0.0;
+  double SpeedOld = 0.0, SpeedNew = 0.0;
+  double ParticleTime = 0.0; // the time the particles are at
+  double StepDuration = 0.0; // of the steps of this update
+  double Goal = 0.0;         // the time this execution takes the particles to
   vtkSmartPointer<vtkDataArray> ScalarArray;
 };
 

@@ -7,7 +7,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCellDataToPointData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformationVector.h"
 #include "vtkLookupTable.h"
 #include "vtkOFB.h"
@@ -142,57 +142,102 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
     return true;
   }
 
-  // Cell vectors: averaged to the points.
-  vtkSmartPointer<vtkDataArray> pointVectors = vectors;
-  if (association == vtkDataObject::FIELD_ASSOCIATION_CELLS)
-  {
-    vtkWarningMacro("The vector field is given on cells: it is averaged to the points.");
-    vtkNew<vtkPolyData> cells;
-    cells->CopyStructure(surface);
-    vtkSmartPointer<vtkDataArray> named = vectors;
-    if (!vectors->GetName())
-    {
-      named.TakeReference(vectors->NewInstance());
-      named->ShallowCopy(vectors);
-      named->SetName("Vectors");
-    }
-    cells->GetCellData()->AddArray(named);
-    vtkNew<vtkCellDataToPointData> toPoints;
-    toPoints->SetInputData(cells);
-    toPoints->Update();
-    pointVectors = toPoints->GetOutput()->GetPointData()->GetArray(named->GetName());
-  }
-  else if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  // A cell field holds on its cells' triangles (as the sampler's cell arrays do):
+  // each triangle carries its cell's vector.
+  const bool perCell = association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  if (!perCell && association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
   {
     vtkErrorMacro("The vector field must be a point or cell array.");
     return false;
   }
-  const vtkIdType numPoints = surface->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < numPoints; ++i)
+  const vtkIdType numValues = perCell ? surface->GetNumberOfCells() : surface->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < numValues; ++i)
   {
     double v[3];
-    pointVectors->GetTuple(i, v);
+    vectors->GetTuple(i, v);
     if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
     {
-      vtkErrorMacro("The vector field has a non-finite value at point " << i << ".");
+      vtkErrorMacro("The vector field has a non-finite value at " << (perCell ? "cell " : "point ")
+                                                                  << i << ".");
       return false;
     }
   }
+  if (in.Unsteady && in.Started && in.SurfaceObject && perCell == in.FieldPerCell &&
+    numValues == static_cast<vtkIdType>(in.FieldNew.size() / 3) &&
+    vtkOFBParticleAdvector::HashGeometry(surface) == in.GeometryHash)
+  {
+    // A new time step of the same surface: the field alone changes, the particles
+    // go on (vtkOFBParticleAdvectorTime.cxx).
+    this->KeepField(surface, vectors, false);
+    in.SurfaceObject = surface;
+    in.SurfaceTime = ContentTime(surface);
+    in.VectorArray = vectors;
+    in.VectorTime = vectors->GetMTime();
+    return true;
+  }
 
   vtkSmartPointer<vtkPolyData> triangles = surface;
+  // The input cell of each polygon given to the walker, for a cell field: polygons
+  // follow the vertices and lines in vtkPolyData's cell ids, and the triangle filter
+  // carries an id array from each polygon or strip to its triangles.
+  std::vector<vtkIdType> polygonCells;
   if (surface->GetNumberOfStrips() > 0 || surface->GetPolys()->IsHomogeneous() != 3)
   {
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(surface);
+    copy->GetCellData()->Initialize();
+    vtkNew<vtkIdTypeArray> ids;
+    ids->SetName("vtkOFBInputCellIds");
+    ids->SetNumberOfTuples(surface->GetNumberOfCells());
+    for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+    {
+      ids->SetValue(c, c);
+    }
+    copy->GetCellData()->AddArray(ids);
     vtkNew<vtkTriangleFilter> triangulate;
     triangulate->PassVertsOff();
     triangulate->PassLinesOff();
-    triangulate->SetInputData(surface);
+    triangulate->SetInputData(copy);
     triangulate->Update();
     triangles = triangulate->GetOutput();
+    auto* triangleIds =
+      vtkIdTypeArray::SafeDownCast(triangles->GetCellData()->GetArray("vtkOFBInputCellIds"));
+    if (perCell &&
+      (!triangleIds || triangleIds->GetNumberOfTuples() != triangles->GetNumberOfCells()))
+    {
+      vtkErrorMacro(
+        "The triangulation lost the cells of its triangles: cannot use the cell field.");
+      return false;
+    }
+    if (triangleIds)
+    {
+      polygonCells.assign(
+        triangleIds->GetPointer(0), triangleIds->GetPointer(0) + triangleIds->GetNumberOfTuples());
+    }
   }
-  if (!in.Walker.Build(triangles, pointVectors, error))
+  else
+  {
+    const vtkIdType first = surface->GetNumberOfVerts() + surface->GetNumberOfLines();
+    polygonCells.resize(surface->GetNumberOfPolys());
+    for (size_t p = 0; p < polygonCells.size(); ++p)
+    {
+      polygonCells[p] = first + static_cast<vtkIdType>(p);
+    }
+  }
+  in.FieldPerCell = perCell;
+  if (!in.Walker.Build(triangles, perCell ? nullptr : vectors, error, polygonCells.data()))
   {
     vtkErrorMacro("The input surface cannot carry particles: " << error << ".");
     return false;
+  }
+  if (perCell)
+  {
+    std::vector<double> field(3 * static_cast<size_t>(numValues));
+    for (vtkIdType c = 0; c < numValues; ++c)
+    {
+      vectors->GetTuple(c, &field[3 * c]);
+    }
+    in.Walker.SetCellVectors(field.data());
   }
   if (!(in.Walker.GetMaximumSpeed() > 0.0))
   {
@@ -207,6 +252,11 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
   in.SurfaceTime = ContentTime(surface);
   in.VectorArray = vectors;
   in.VectorTime = vectors->GetMTime();
+  if (in.Unsteady)
+  {
+    in.GeometryHash = vtkOFBParticleAdvector::HashGeometry(surface);
+    this->KeepField(surface, vectors, true);
+  }
   rebuilt = true;
   return true;
 }

@@ -30,7 +30,10 @@ inline void Normalize(glm::dvec3& b)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, std::string& error)
+bool vtkOFBTriangleWalker::Build(vtkPolyData* surface,
+  vtkDataArray* vectors,
+  std::string& error,
+  const vtkIdType* polygonCells)
 {
   const vtkIdType numPoints = surface ? surface->GetNumberOfPoints() : 0;
   // The callers check their input first; the walker, shared between modules, does not
@@ -66,11 +69,14 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
 
   // Triangles of non-zero area, in input order.
   this->Corners.clear();
+  this->Cells.clear();
   if (surface && surface->GetPolys())
   {
     auto it = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
+    vtkIdType polygon = -1;
     for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
     {
+      ++polygon;
       vtkIdType n;
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
@@ -88,6 +94,7 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
         continue;
       }
       this->Corners.insert(this->Corners.end(), ids, ids + 3);
+      this->Cells.push_back(polygonCells ? polygonCells[polygon] : polygon);
     }
   }
   if (this->Corners.empty())
@@ -119,6 +126,44 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface, vtkDataArray* vectors, st
   this->Gradients.clear();
   this->Gradients.shrink_to_fit();
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTriangleWalker::SetPointVectors(const double* vectors)
+{
+  const vtkIdType numTriangles = this->GetNumberOfTriangles();
+  double largest = 0.0;
+  for (vtkIdType t = 0; t < numTriangles; ++t)
+  {
+    const glm::dvec3& ex = this->Axes[2 * t];
+    const glm::dvec3& ey = this->Axes[2 * t + 1];
+    vtkOFBWalkerTriangle& r = this->Records[t];
+    for (int i = 0; i < 3; ++i)
+    {
+      const double* v = vectors + 3 * this->Corners[3 * t + i];
+      const glm::dvec3 w(v[0], v[1], v[2]);
+      r.Vector[i] = glm::vec2(glm::dot(w, ex), glm::dot(w, ey));
+      largest = std::max(largest, glm::dot(w, w));
+    }
+  }
+  this->MaximumSpeed = std::sqrt(largest);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTriangleWalker::SetCellVectors(const double* vectors)
+{
+  const vtkIdType numTriangles = this->GetNumberOfTriangles();
+  double largest = 0.0;
+  for (vtkIdType t = 0; t < numTriangles; ++t)
+  {
+    const double* v = vectors + 3 * this->Cells[t];
+    const glm::dvec3 w(v[0], v[1], v[2]);
+    const glm::vec2 projected(glm::dot(w, this->Axes[2 * t]), glm::dot(w, this->Axes[2 * t + 1]));
+    vtkOFBWalkerTriangle& r = this->Records[t];
+    r.Vector[0] = r.Vector[1] = r.Vector[2] = projected;
+    largest = std::max(largest, glm::dot(w, w));
+  }
+  this->MaximumSpeed = std::sqrt(largest);
 }
 
 //------------------------------------------------------------------------------

@@ -154,13 +154,33 @@ public:
 
   /**
    * Take the triangles of `surface` (every polygon must be a triangle: run
-   * vtkTriangleFilter first) and its point `vectors` (3 components, or null for a
+   * vtkTriangleFilter first; `polygonCells`, if given, names the cell each of its
+   * polygons came from, see SetCellVectors) and its point `vectors` (3 components, or null for a
    * zero field, else at least a tuple a point). Returns false with `error` set when a
    * cell names a point that does not exist, the vectors are short, or there is no
    * triangle of non-zero area. Triangles of zero area are left out; the others keep
    * their order.
    */
-  bool Build(vtkPolyData* surface, vtkDataArray* vectors, std::string& error);
+  bool Build(vtkPolyData* surface,
+    vtkDataArray* vectors,
+    std::string& error,
+    const vtkIdType* polygonCells = nullptr);
+
+  /**
+   * Replace the field by cell vectors `vectors` (3 doubles per cell of the
+   * polygonCells given to Build, world units): each triangle carries its cell's
+   * vector at its three corners, projected into its plane (a cell value holds on its
+   * triangles); and the largest speed.
+   */
+  void SetCellVectors(const double* vectors);
+
+  /**
+   * Replace the field, on the same surface, by the point vectors `vectors` (3
+   * doubles a point, world units, as many points as the surface Build took): each
+   * triangle's corner vectors projected into its plane, and the largest speed.
+   * For a field that changes in time on a fixed surface (no rebuild).
+   */
+  void SetPointVectors(const double* vectors);
 
   /// The triangles of the walker (the same points, only its triangles) for a locator.
   vtkPolyData* GetTriangles() const { return this->Triangles; }
@@ -316,6 +336,7 @@ private:
   std::vector<glm::dvec3> Points;
   std::vector<glm::dvec3> Vectors;
   std::vector<vtkIdType> Corners;   // 3 point ids per triangle
+  std::vector<vtkIdType> Cells;     // per triangle, its cell (Build's polygonCells)
   std::vector<vtkIdType> Canonical; // per point, the smallest id at its position (adjacency)
   std::vector<vtkOFBWalkerTriangle> Records; // what a walk reads
   std::vector<vtkOFBWalkerTurn> Turns;       // the turns across the edges

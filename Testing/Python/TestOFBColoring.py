@@ -53,7 +53,7 @@ class SharedColoring(unittest.TestCase):
         self.assertEqual(coloring.GetColorSource(), vtkofb.vtkOFBColoring.COLOR_SOURCE_SCALARS)
         coloring.SetLICColorModeToMap()
         self.assertEqual(coloring.GetLICColorMode(), vtkofb.vtkOFBColoring.COLOR_MODE_MAP)
-        self.assertAlmostEqual(coloring.GetLICIntensity(), 0.8)
+        self.assertAlmostEqual(coloring.GetLICIntensity(), 1.0)
         self.assertEqual(coloring.GetIntensityArrayName(), "LIC")
 
     def test_shared_by_mapper_and_map_to_colors(self):

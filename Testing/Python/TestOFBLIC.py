@@ -95,7 +95,7 @@ class LIC(unittest.TestCase):
         self.assertAlmostEqual(lic.GetMaxNoiseValue(), 0.8)
         # How the LIC combines with colour is the display's: vtkOFBColoring's.
         self.assertFalse(hasattr(lic, "GetLICIntensity"))
-        self.assertAlmostEqual(vtkofb.vtkOFBColoring().GetLICIntensity(), 0.8)
+        self.assertAlmostEqual(vtkofb.vtkOFBColoring().GetLICIntensity(), 1.0)
         lic.SetEnhanceContrast(vtkofb.vtkOFBLIC.ENHANCE_CONTRAST_BOTH)
         self.assertEqual(lic.GetEnhanceContrast(), 4)
 

@@ -57,6 +57,7 @@ int TestOFBMapperLIC(int argc, char* argv[])
   mapper->GetColoring()->SetScalarArrayName("Height");
   mapper->GetColoring()->SetIntensityArrayName("LIC");
   mapper->GetColoring()->IntensityModulationOn();
+  mapper->GetColoring()->SetLICIntensity(0.8); // VTK's default
   mapper->SetLookupModeToInverseDistance();
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

@@ -201,7 +201,7 @@ TEST(OFBMapperLICDisplay, BlendModeFollowsVTKsFormula)
       scene.Mapper->GetColoring()->SetColorSourceToScalars();
     }
     EXPECT_EQ(scene.Mapper->GetColoring()->GetLICColorMode(), vtkOFBColoring::COLOR_MODE_BLEND);
-    EXPECT_DOUBLE_EQ(scene.Mapper->GetColoring()->GetLICIntensity(), 0.8);
+    EXPECT_DOUBLE_EQ(scene.Mapper->GetColoring()->GetLICIntensity(), 1.0);
     for (double intensity : { 0.8, 0.3, 1.0 })
     {
       scene.Mapper->GetColoring()->SetLICIntensity(intensity);
@@ -483,7 +483,7 @@ TEST(OFBMapperLICDisplay, SettingsAreClampedAndNamedAsVTKs)
 {
   vtkNew<vtkOFBPolyDataMapper> mapper;
   EXPECT_EQ(mapper->GetColoring()->GetLICColorMode(), vtkOFBColoring::COLOR_MODE_BLEND);
-  EXPECT_DOUBLE_EQ(mapper->GetColoring()->GetLICIntensity(), 0.8);
+  EXPECT_DOUBLE_EQ(mapper->GetColoring()->GetLICIntensity(), 1.0);
   EXPECT_DOUBLE_EQ(mapper->GetColoring()->GetMapModeBias(), 0.0);
   mapper->GetColoring()->SetLICColorMode(7);
   EXPECT_EQ(mapper->GetColoring()->GetLICColorMode(), vtkOFBColoring::COLOR_MODE_MAP);

@@ -693,7 +693,7 @@ TEST(OFBPolyDataMapper, SettingsAreClampedAndPrinted)
          "IntensityModulation",
          "IntensityWeight",
          "LICColorMode: COLOR_MODE_BLEND",
-         "LICIntensity: 0.8",
+         "LICIntensity: 1",
          "MapModeBias",
          "UsePaintedNormals",
          "LastUploadedSampleCount",

@@ -83,7 +83,7 @@ TEST(Coloring, DefaultsClampsAndNames)
   EXPECT_STREQ(coloring->GetIntensityArrayName(), "LIC");
   EXPECT_FALSE(coloring->GetIntensityModulation());
   EXPECT_EQ(coloring->GetLICColorMode(), vtkOFBColoring::COLOR_MODE_BLEND);
-  EXPECT_DOUBLE_EQ(coloring->GetLICIntensity(), 0.8);
+  EXPECT_DOUBLE_EQ(coloring->GetLICIntensity(), 1.0);
   EXPECT_DOUBLE_EQ(coloring->GetMapModeBias(), 0.0);
   EXPECT_DOUBLE_EQ(coloring->GetIntensityWeight(), 1.0);
   EXPECT_FALSE(coloring->GetEnhanceColorContrast());

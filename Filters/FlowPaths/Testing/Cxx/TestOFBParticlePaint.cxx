@@ -459,26 +459,46 @@ TEST(ParticlePaint, BadInput)
       EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 2);
     }
   }
-  // Cell vectors: averaged to points, with a warning.
+  // Cell vectors hold on their cells' triangles (no averaging, no warning): on a plane
+  // of quads whose cells have different vectors, a particle inside a cell moves along
+  // its own cell's vector.
   {
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(-1.0, -1.0, 0.0);
+    plane->SetPoint1(1.0, -1.0, 0.0);
+    plane->SetPoint2(-1.0, 1.0, 0.0);
+    plane->SetResolution(4, 4);
+    plane->Update();
     vtkNew<vtkPolyData> cells;
-    cells->DeepCopy(sphere);
+    cells->DeepCopy(plane->GetOutput());
+    cells->GetPointData()->Initialize();
     vtkNew<vtkDoubleArray> v;
     v->SetNumberOfComponents(3);
     for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
     {
-      v->InsertNextTuple3(0.0, 0.0, 1.0);
+      v->InsertNextTuple3(1.0, 0.1 * static_cast<double>(c) - 0.8, 0.0);
     }
     cells->GetCellData()->SetVectors(v);
+    // A seed in the middle of cell 5 (column 1, row 1: x in [-0.5, 0], y in [-0.5, 0]).
+    vtkNew<vtkPolyData> seeds;
+    vtkNew<vtkPoints> seedPoints;
+    seedPoints->InsertNextPoint(-0.25, -0.25, 0.0);
+    seeds->SetPoints(seedPoints);
     vtkNew<vtkOFBParticleAdvector> advector;
     advector->SetInputData(cells);
-    advector->SetNumberOfParticles(5);
+    advector->SetSourceData(seeds);
+    advector->PaintOff();
     messages->Clear();
     messages->Watch(advector);
     advector->Step();
     EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
-    EXPECT_NE(messages->Warnings.find("given on cells"), std::string::npos);
-    EXPECT_EQ(advector->GetParticles()->GetNumberOfPoints(), 5);
+    EXPECT_TRUE(messages->Warnings.empty()) << messages->Warnings;
+    ASSERT_EQ(advector->GetParticles()->GetNumberOfPoints(), 1);
+    double x[3];
+    advector->GetParticles()->GetPoint(0, x);
+    const double expected = 0.1 * 5 - 0.8; // cell 5's slope dy/dx
+    ASSERT_GT(x[0] + 0.25, 0.0);
+    EXPECT_NEAR((x[1] + 0.25) / (x[0] + 0.25), expected, 1e-5);
   }
 }
 

@@ -69,6 +69,28 @@ add_test(NAME OFB.Examples.Hostile.Mesh.OFBDemo
 list(APPEND _hostile_tests OFB.Examples.Hostile.Mesh.OFBLIC OFB.Examples.Hostile.Mesh.OFBParticles
   OFB.Examples.Hostile.Mesh.OFBDemo)
 
+# Simulation data (ofbExampleData): refused before VTK's filters see them, by each
+# application in turn.
+set(_data_inputs bad-index.vtu truncated.vtu missing-part.pvd nested.pvd no-datasets.pvd
+  legacy-garbage.vtk)
+set(_data_messages "cell 0 uses point 99999, not one of the 4 points" "no polygons"
+  "its file 'not-there.vtp': no such file" "a collection inside a collection"
+  "the collection lists no DataSet" "Could not read file")
+set(_data_apps OFBLIC OFBParticles OFBPaint OFBLIC OFBParticles OFBPaint)
+foreach (_input IN LISTS _data_inputs)
+  list(FIND _data_inputs "${_input}" _index)
+  list(GET _data_messages ${_index} _message)
+  list(GET _data_apps ${_index} _app)
+  set(_extra)
+  if (_app STREQUAL "OFBPaint")
+    set(_extra --strokes "${_strokes}")
+  endif ()
+  add_test(NAME OFB.Examples.Hostile.Data.${_input}
+    COMMAND ${_expect} "${_app}: cannot read '[^']*${_input}': [^\n]*${_message}" 30
+      $<TARGET_FILE:${_app}> "${_hostile}/${_input}" ${_extra} --image "${_hostile}/out.png")
+  list(APPEND _hostile_tests OFB.Examples.Hostile.Data.${_input})
+endforeach ()
+
 # Stroke files: no directories, devices or FIFOs; bounded size, lines and dabs.
 set(_stroke_inputs "${_hostile}/strokes-directory" /dev/zero "${_hostile}/strokes.fifo"
   "${_hostile}/too-large.txt" "${_hostile}/too-many-lines.txt" "${_hostile}/dab-bomb.txt")
@@ -102,7 +124,8 @@ add_test(NAME OFB.Examples.Hostile.Exit.ParticlesTooMany
 add_test(NAME OFB.Examples.Hostile.Exit.ParticlesUnknownColor
   COMMAND ${_expect} "Usage: OFBParticles" 10 $<TARGET_FILE:OFBParticles> --color nosuch)
 add_test(NAME OFB.Examples.Hostile.Exit.ParticlesUnknownField
-  COMMAND ${_expect} "Usage: OFBParticles" 10 $<TARGET_FILE:OFBParticles> --field nosuch)
+  COMMAND ${_expect} "OFBParticles: '[^']*horse.ply' has no point or cell array 'nosuch'" 30
+    $<TARGET_FILE:OFBParticles> --field nosuch)
 add_test(NAME OFB.Examples.Hostile.Exit.LICImageIsDirectory
   COMMAND ${_expect} "cannot write '[^']*strokes-directory': it is a directory" 120
     $<TARGET_FILE:OFBLIC> --resolution 64 --size 64 --image "${_hostile}/strokes-directory")

@@ -3,7 +3,8 @@
 // drawn by vtkOFBPolyDataMapper from an OFB paint of grid colours and stripes a few cells
 // wide (finer than the triangles).
 //
-// Usage: OFBDemo [mesh.obj|mesh.ply] [--resolution N] [--backend auto|cpu|opengl]
+// Usage: OFBDemo [mesh or data file: .obj .ply .stl .vtp .vtu .vtm .pvd .vtk] [--resolution N]
+// [--backend auto|cpu|opengl]
 //                [--lookup nearest|idw|mipmap|nearestmipmap] [--output file.png] [--width W]
 //                [--height H]
 //
@@ -33,9 +34,9 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
+#include "ofbExampleData.h"
 #include "ofbExampleErrors.h"
 #include "ofbExampleFiles.h"
-#include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
 
 #include <chrono>
@@ -441,12 +442,13 @@ int main(int argc, char* argv[])
 
   // 1. Read the mesh.
   std::string readError;
-  vtkSmartPointer<vtkPolyData> mesh = ofbexample::ReadMeshChecked(options.MeshPath, readError);
-  if (!mesh)
+  ofbexample::DataSurface data;
+  if (!ofbexample::ReadDataSurface(options.MeshPath, {}, false, data, readError))
   {
     std::cerr << "OFBDemo: " << readError << "\n";
     return EXIT_FAILURE;
   }
+  vtkSmartPointer<vtkPolyData> mesh = data.Surface;
   std::cout << "Mesh:              " << options.MeshPath << "\n"
             << "                   " << mesh->GetNumberOfPoints() << " points, "
             << mesh->GetNumberOfPolys() << " polygons\n";

@@ -3,9 +3,14 @@
 // surface when the camera moves. The field is the tangential part of a rotation about a
 // tilted axis through the centre of the mesh.
 //
-// Usage: OFBLIC [mesh.obj|mesh.ply] [--resolution N] [--steps N] [--grain G]
+// Usage: OFBLIC [data file] [--field NAME] [--block I|NAME[,...]] [--time T | --time-step N]
+//               [--resolution N] [--steps N] [--grain G]
 //               [--image file.png [--keys K1,K2,...]] [--size S] [--export file.obj]
-// Without a mesh it reads Testing/Data/stanford-bunny.obj of the source tree. With
+// The data file is a mesh or a simulation result (.vtp, .vtu, .vtm, .pvd, legacy .vtk,
+// .stl, .obj, .ply; ofbExampleData.h): --field names its vector field (a point or a cell
+// array of 3 components), --block its blocks and --time / --time-step its time step.
+// Without --field the field is a rotation about a tilted axis (below). Without a file it
+// reads Testing/Data/stanford-bunny.obj of the source tree. With
 // --image it renders once off screen, writes the PNG and exits (no window); --keys
 // K1,K2,... applies keys first, then one animation frame (a test of the keys); with
 // --export as well it then exports what it drew. --export sets the file of key x
@@ -47,9 +52,9 @@
 #include "vtkTextProperty.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "ofbExampleData.h"
 #include "ofbExampleErrors.h"
 #include "ofbExampleFiles.h"
-#include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
 #include "ofbPaintExport.h" // OFBPaint's export, shared
 
@@ -251,8 +256,9 @@ public:
 };
 vtkStandardNewMacro(KeyStyle);
 
-/// The field (rotation about a tilted axis through the centre) and its speed.
-void AddField(vtkPolyData* mesh)
+/// The field (rotation about a tilted axis through the centre) and its speed (its range in
+/// `range`).
+void AddField(vtkPolyData* mesh, double range[2])
 {
   double b[6];
   mesh->GetBounds(b);
@@ -275,6 +281,7 @@ void AddField(vtkPolyData* mesh)
   }
   mesh->GetPointData()->SetVectors(flow);
   mesh->GetPointData()->AddArray(speed);
+  speed->GetRange(range);
 }
 
 int WriteImage(App& app, const std::string& path)
@@ -324,7 +331,6 @@ void BuildPipeline(App& app, vtkPolyData* mesh, int resolution, int steps, doubl
   app.Mapper->GetColoring()->SetColorSourceToScalars();
   app.Mapper->GetColoring()->SetLookupTable(app.Table);
   app.Mapper->GetColoring()->SetScalarArrayName("Speed");
-  app.Mapper->GetColoring()->SetScalarRange(mesh->GetPointData()->GetArray("Speed")->GetRange());
   app.Mapper->GetColoring()->SetLowColorContrastEnhancementFactor(0.05);
   app.Mapper->GetColoring()->SetHighColorContrastEnhancementFactor(0.05);
   app.Actor->SetMapper(app.Mapper);
@@ -346,6 +352,7 @@ int main(int argc, char* argv[])
   std::string exportPath;
   int resolution = 512, steps = 20, size = 800;
   double grain = 1.0;
+  ofbexample::DataOptions dataOptions;
   bool ok = true; // false once a value is not a number in its range
   for (int i = 1; i < argc && ok; ++i)
   {
@@ -379,6 +386,9 @@ int main(int argc, char* argv[])
     {
       exportPath = argv[++i];
     }
+    else if (ofbexample::ParseDataOption(argc, argv, i, dataOptions, ok))
+    {
+    }
     else if (!arg.empty() && arg[0] != '-')
     {
       meshPath = arg;
@@ -389,9 +399,10 @@ int main(int argc, char* argv[])
     }
     if (!ok)
     {
-      std::cerr << "Usage: " << argv[0]
-                << " [mesh.obj|mesh.ply] [--resolution N] [--steps N] [--grain G]"
+      std::cerr << "Usage: " << argv[0] << " [data file] " << ofbexample::DataOptionsUsage()
+                << " [--resolution N] [--steps N] [--grain G]"
                    " [--image file.png [--keys K1,K2,...]] [--size S] [--export file.obj]\n"
+                   "  data: .vtp .vtu .vtm .pvd .vtk .stl .obj .ply; --field a vector array\n"
                    "  resolution 8-16384, steps 0-1000, grain 0.01-100 cells, size 64-8192\n";
       return arg == "--help" ? 0 : 1;
     }
@@ -406,18 +417,29 @@ int main(int argc, char* argv[])
     return 1;
   }
   std::string readError;
-  vtkSmartPointer<vtkPolyData> mesh = ofbexample::ReadMeshChecked(meshPath, readError);
-  if (!mesh)
+  ofbexample::DataSurface data;
+  if (!ofbexample::ReadDataSurface(meshPath, dataOptions, true, data, readError))
   {
     std::cerr << "OFBLIC: " << readError << "\n";
     return 1;
   }
-  AddField(mesh);
+  vtkSmartPointer<vtkPolyData> mesh = data.Surface;
+  double speedRange[2];
+  if (data.Field)
+  {
+    ofbexample::UseFieldAsVectors(data, speedRange);
+  }
+  else
+  {
+    AddField(mesh, speedRange);
+  }
+  std::cout << "read " << meshPath << ": " << data.Summary << "\n";
 
   App app;
   app.Mesh = mesh;
   app.ExportPath = !exportPath.empty() ? exportPath : ofbpaint::DefaultExportPath(meshPath, "lic");
   BuildPipeline(app, mesh, resolution, steps, grain, size);
+  app.Mapper->GetColoring()->SetScalarRange(speedRange);
   app.LIC->Update();
   if (app.Errors->Count > 0 || app.LIC->GetOutput()->GetNumberOfSamples() == 0)
   {

@@ -1,18 +1,23 @@
 // OFBParticles: surface particles moving along a vector field on a mesh and painting
 // its OFB (vtkOFBParticleAdvector), drawn by vtkOFBPolyDataMapper, animated.
 //
-// Usage: OFBParticles [mesh.obj|mesh.ply] [--field rotation|height|mesh]
-//                     [--particles N] [--resolution N] [--radius CELLS] [--lifetime STEPS]
+// Usage: OFBParticles [data file] [--field rotation|height|mesh|NAME]
+//                     [--block I|NAME[,...]] [--time T | --time-step N] [--particles N]
+//                     [--resolution N] [--radius CELLS] [--lifetime STEPS]
 //                     [--color constant|seeds|scalar|periodic] [--reveal]
 //                     [--image out.png --steps N] [--width W] [--height H]
 //                     [--view-up X Y Z]
 //
-// Without a mesh it reads Testing/Data/horse.ply of the source tree. Fields:
+// The data file is a mesh or a simulation result (.vtp, .vtu, .vtm, .pvd, legacy .vtk,
+// .stl, .obj, .ply; ofbExampleData.h), with its blocks (--block) and time step (--time,
+// --time-step). Without one it reads Testing/Data/horse.ply of the source tree. Fields:
 // `rotation` (default) the tangential part of a rotation about an axis through the
 // mesh's centre, `height` the surface gradient of the height along the view-up axis,
-// `mesh` the mesh's own point vectors. In the window: space pauses, r reseeds, c changes the colour
-// mode, t toggles reveal mode (the surface starts dark and the particles uncover it, the paper's
-// Fig. 2), q quits. `--image` runs headless: N steps, then writes a PNG.
+// `mesh` the file's active point vectors, any other NAME the file's point or cell array
+// of 3 components of that name (a cell field is averaged to the points for the walk). In the
+// window: space pauses, r reseeds, c changes the colour mode, t toggles reveal mode (the surface
+// starts dark and the particles uncover it, the paper's Fig. 2), q quits. `--image` runs headless:
+// N steps, then writes a PNG.
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
@@ -37,9 +42,9 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "ofbExampleData.h"
 #include "ofbExampleErrors.h"
 #include "ofbExampleFiles.h"
-#include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
 
 #include <cmath>
@@ -54,6 +59,7 @@ struct Options
 {
   std::string Mesh = std::string(VTKOFB_DATA_DIR) + "/horse.ply";
   std::string Field = "rotation";
+  ofbexample::DataOptions Data; // --block, --time, --time-step; Field when not built in
   std::string Color = "periodic";
   std::string Image;
   int Particles = 10000;
@@ -95,7 +101,12 @@ bool Parse(int argc, char* argv[], Options& o)
     if (a == "--field" && more)
     {
       o.Field = argv[++i];
-      ok = (o.Field == "rotation" || o.Field == "height" || o.Field == "mesh") && ok;
+      ok = !o.Field.empty() && ok;
+      const bool builtIn = o.Field == "rotation" || o.Field == "height" || o.Field == "mesh";
+      o.Data.Field = builtIn ? std::string() : o.Field;
+    }
+    else if (a != "--field" && ofbexample::ParseDataOption(argc, argv, i, o.Data, ok))
+    {
     }
     else if (a == "--color" && more)
     {
@@ -270,8 +281,9 @@ int main(int argc, char* argv[])
   Options o;
   if (!Parse(argc, argv, o))
   {
-    std::cerr << "Usage: OFBParticles [mesh.obj|mesh.ply] [--field rotation|height|mesh] "
-                 "[--particles N] [--resolution N] [--radius CELLS] [--lifetime STEPS] "
+    std::cerr << "Usage: OFBParticles [data file] [--field rotation|height|mesh|NAME] "
+                 "[--block I|NAME[,...]] [--time T | --time-step N] [--particles N] [--resolution "
+                 "N] [--radius CELLS] [--lifetime STEPS] "
                  "[--color constant|seeds|scalar|periodic] [--reveal] [--image out.png "
                  "--steps N] [--width W] [--height H] [--view-up X Y Z]\n"
                  "  N: particles 1-1e8, resolution 8-16384, steps 1-1e6, lifetime 0-1e6;\n"
@@ -279,15 +291,26 @@ int main(int argc, char* argv[])
     return 1;
   }
   std::string readError;
-  vtkSmartPointer<vtkPolyData> mesh = ofbexample::ReadMeshChecked(o.Mesh, readError);
-  if (!mesh)
+  ofbexample::DataSurface data;
+  if (!ofbexample::ReadDataSurface(o.Mesh, o.Data, true, data, readError))
   {
     std::cerr << "OFBParticles: " << readError << "\n";
     return 1;
   }
-  if (!MakeField(mesh, o.Field, o.ViewUp))
+  vtkSmartPointer<vtkPolyData> mesh = data.Surface;
+  std::cout << "read " << o.Mesh << ": " << data.Summary << "\n";
+  if (data.Field)
   {
-    std::cerr << "Unknown field '" << o.Field << "' (or the mesh has no point vectors)\n";
+    // The particles walk the triangles with point vectors.
+    mesh->GetPointData()->SetVectors(data.FieldOnCells
+        ? ofbexample::CellFieldToPoints(mesh, data.Field).GetPointer()
+        : data.Field);
+  }
+  else if (!MakeField(mesh, o.Field, o.ViewUp))
+  {
+    std::cerr << "OFBParticles: '" << o.Mesh
+              << "' has no active point vectors for --field mesh; its arrays: "
+              << ofbexample::DescribeArrays(mesh) << "\n";
     return 1;
   }
   // A height array for the scalar colour mode.

@@ -64,6 +64,36 @@ VTP = """<?xml version="1.0"?>
 """
 
 
+VTU = """<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian">
+<UnstructuredGrid><Piece NumberOfPoints="4" NumberOfCells="1">
+<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">
+0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points>
+<Cells><DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 99999</DataArray>
+<DataArray type="Int64" Name="offsets" format="ascii">4</DataArray>
+<DataArray type="UInt8" Name="types" format="ascii">10</DataArray></Cells>
+</Piece></UnstructuredGrid></VTKFile>
+"""
+
+
+def collection(*files):
+    return ('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1"><Collection>\n' +
+            "".join('<DataSet timestep="%d" file="%s"/>\n' % (i, f) for i, f in enumerate(files))
+            + "</Collection></VTKFile>\n")
+
+
+def data_files():
+    """Simulation-result formats (ofbexample::ReadDataSurface)."""
+    return {
+        "bad-index.vtu": VTU,
+        "truncated.vtu": VTU[:200],
+        "missing-part.pvd": collection("not-there.vtp"),
+        "nested.pvd": collection("nested.pvd"),
+        "no-datasets.pvd": collection(),
+        "legacy-garbage.vtk": "# vtk DataFile Version 3.0\nbroken\nASCII\nDATASET NOSUCH\n",
+    }
+
+
 def meshes():
     tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
     ply_ascii = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
@@ -110,6 +140,7 @@ def main():
     files = {}
     files.update(images())
     files.update(meshes())
+    files.update(data_files())
     files.update(strokes(out))
     for name, data in files.items():
         with open(os.path.join(out, name), "wb") as f:

@@ -539,10 +539,10 @@ bool CheckCells(vtkPolyData* mesh, std::string& problem)
 
 /// The reader for the file's extension, after the checks of its format.
 vtkSmartPointer<vtkAbstractPolyDataReader> MakeReader(const std::string& path,
+  const std::string& ext,
   long long fileSize,
   std::string& problem)
 {
-  const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
   if (ext == ".obj")
   {
     OBJIndexCheck check;
@@ -563,7 +563,14 @@ vtkSmartPointer<vtkAbstractPolyDataReader> MakeReader(const std::string& path,
 
 namespace ofbexample
 {
-vtkSmartPointer<vtkPolyData> ReadMeshChecked(const std::string& path, std::string& message)
+bool CheckPolyData(vtkPolyData* mesh, std::string& problem)
+{
+  return CheckCells(mesh, problem);
+}
+
+vtkSmartPointer<vtkPolyData> ReadMeshChecked(const std::string& path,
+  std::string& message,
+  const std::string& format)
 {
   struct stat info;
   std::string problem;
@@ -578,7 +585,9 @@ vtkSmartPointer<vtkPolyData> ReadMeshChecked(const std::string& path, std::strin
   }
   vtkNew<FirstError> errors;
   vtkSmartPointer<vtkPolyData> mesh;
-  const bool vtp = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path)) == ".vtp";
+  const std::string ext =
+    format.empty() ? SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path)) : format;
+  const bool vtp = ext == ".vtp";
   if (vtp)
   {
     vtkNew<vtkXMLPolyDataReader> reader; // an XML reader, not a vtkAbstractPolyDataReader
@@ -588,7 +597,7 @@ vtkSmartPointer<vtkPolyData> ReadMeshChecked(const std::string& path, std::strin
     mesh = reader->GetOutput();
   }
   else if (vtkSmartPointer<vtkAbstractPolyDataReader> reader =
-             MakeReader(path, info.st_size, problem))
+             MakeReader(path, ext, info.st_size, problem))
   {
     reader->AddObserver(vtkCommand::ErrorEvent, errors);
     reader->SetFileName(path.c_str());

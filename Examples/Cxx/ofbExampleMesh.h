@@ -37,9 +37,16 @@ constexpr long long MaximumMeshElements = 1LL << 28;
 /// The largest PLY file walked before reading: 4 GiB.
 constexpr long long MaximumPLYFileBytes = 1LL << 32;
 
-/// The mesh at `path` (.obj, .ply, .stl or .vtp by its extension), checked as above; null
-/// with `message` the reason ("cannot read 'PATH': ...").
-vtkSmartPointer<vtkPolyData> ReadMeshChecked(const std::string& path, std::string& message);
+/// The mesh at `path` (.obj, .ply, .stl or .vtp by its extension, or by `format` when
+/// given: one of those extensions, found from the content by ofbExampleData), checked as
+/// above; null with `message` the reason ("cannot read 'PATH': ...").
+vtkSmartPointer<vtkPolyData> ReadMeshChecked(const std::string& path,
+  std::string& message,
+  const std::string& format = std::string());
+
+/// Finite points, every cell's point ids in [0, number of points) and at least one
+/// polygon or strip; false with `problem` the reason.
+bool CheckPolyData(vtkPolyData* mesh, std::string& problem);
 
 /// Whether the PLY file at `path` is complete: its header, counts and body pass the
 /// checks above (used to check a PLY file just written); false with `message` the reason.

@@ -15,6 +15,9 @@ bunny's ears, back and flank): each stays round and points along the mesh's up a
 Run (from a build tree; Debian's python3 has VTK's modules):
     PYTHONPATH=build/lib/python3.11/dist-packages /usr/bin/python3 \\
         Examples/Python/decal_stamp.py Testing/Data/stanford-bunny.obj decals.png
+Data (the C++ applications' inputs and options): .vtp, .vtu, .vtm, .pvd, legacy .vtk, .stl,
+.obj or .ply, by content; --block LIST, --time T or --time-step N; --field NAME starts the
+paint from that point or cell array in colour (blue to red).
 Options: --resolution (OFB cells on the longest side), --decals (how many), --size,
 --up, --azimuth, --elevation, --check (exit with an error unless every decal was
 stamped and the picture shows them; the ctest uses it). Headless: prefix with xvfb-run -a.
@@ -29,24 +32,29 @@ from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkRenderingCore import vtkActor
 
 import vtkofb
-from ofb_example_view import (add_view_options, read_surface, render_offscreen, save_png,
-                              vivid_share)
+from ofb_example_view import (add_data_options, add_view_options, read_data_or_exit,
+                              paint_field, render_offscreen, save_png, vivid_share)
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("mesh", help="surface to decorate (.obj, .ply, .stl or .vtp)")
+parser.add_argument("mesh", help="surface to decorate (.vtp .vtu .vtm .pvd .vtk .stl .obj "
+                                 ".ply)")
 parser.add_argument("png", help="image to write")
 parser.add_argument("--resolution", type=int, default=1024)
 parser.add_argument("--decals", type=int, default=7)
 add_view_options(parser, azimuth=30.0)
 parser.add_argument("--check", action="store_true")
+add_data_options(parser, "start the paint from this point or cell array in colour "
+                         "(blue to red)")
 args = parser.parse_args()
 
 # 1. The surface and its OFB.
-mesh = read_surface(args.mesh)
+mesh = read_data_or_exit(args.mesh, args)[0]
 sampler = vtkofb.vtkOFBSampler()
 sampler.SetInputData(mesh)
 sampler.SetResolution(args.resolution)
 sampler.Update()
+if args.field:
+    paint_field(sampler.GetOutput(), args.field)
 ofb = sampler.GetOutput()
 
 # 2. The badge: 256 x 256 RGBA, row 0 at the bottom (v = 0), transparent outside.

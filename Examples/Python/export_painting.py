@@ -23,6 +23,9 @@ Run (from a build tree; Debian's python3 has VTK's modules):
     PYTHONPATH=build/lib/python3.11/dist-packages /usr/bin/python3 \\
         Examples/Python/export_painting.py Testing/Data/spot.obj export.png
     (or Testing/Data/stanford-bunny.obj: texture coordinates made by the atlas)
+Data (the C++ applications' inputs and options): .vtp, .vtu, .vtm, .pvd, legacy .vtk, .stl,
+.obj or .ply, by content; --block LIST, --time T or --time-step N; --field NAME starts the
+paint from that point or cell array in colour (blue to red).
 Options: --resolution (OFB cells on the longest side), --texture (texels a side; for an
 atlas the most, a texel a cell where that fits),
 --output-dir (where spot_painted.ply, .obj, .mtl and .png go), --size (pixels a view),
@@ -51,25 +54,30 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations)
 
 import vtkofb
-from ofb_example_view import add_view_options, frame_camera, read_surface, vivid_share
+from ofb_example_view import (add_data_options, add_view_options, frame_camera, paint_field,
+                              read_data_or_exit, vivid_share)
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("mesh", help="surface (.obj, .ply, .stl, .vtp), with or without texture "
-                    "coordinates")
+parser.add_argument("mesh", help="surface (.vtp .vtu .vtm .pvd .vtk .stl .obj .ply), with or "
+                                 "without texture coordinates")
 parser.add_argument("png", help="picture of the three views to write")
 parser.add_argument("--resolution", type=int, default=1024)
 parser.add_argument("--texture", type=int, default=1024)
 parser.add_argument("--output-dir", default=".")
 add_view_options(parser, azimuth=-50.0)
 parser.add_argument("--check", action="store_true")
+add_data_options(parser, "start the paint from this point or cell array in colour "
+                         "(blue to red)")
 args = parser.parse_args()
 
 # 1. Read the mesh and sample it into an OFB.
-mesh = read_surface(args.mesh)
+mesh = read_data_or_exit(args.mesh, args)[0]
 sampler = vtkofb.vtkOFBSampler()
 sampler.SetInputData(mesh)
 sampler.SetResolution(args.resolution)
 sampler.Update()
+if args.field:
+    paint_field(sampler.GetOutput(), args.field)
 ofb = sampler.GetOutput()
 cell = ofb.GetCellSize()
 

@@ -16,6 +16,9 @@ changed, so the script can keep, compare and save every stage.
 Run (from a build tree; Debian's python3 has VTK's modules):
     PYTHONPATH=build/lib/python3.11/dist-packages /usr/bin/python3 \
         Examples/Python/paint_strokes.py Testing/Data/stanford-bunny.obj paint.png
+Data (the C++ applications' inputs and options): .vtp, .vtu, .vtm, .pvd, legacy .vtk, .stl,
+.obj or .ply, by content; --block LIST, --time T or --time-step N; --field NAME starts the
+paint from that point or cell array in colour (blue to red).
 Options: --resolution (OFB cells on the longest side), --rings, --size (pixels),
 --up (the mesh's up axis), --azimuth and --elevation (degrees), --save FILE.ofb (the
 painted OFB, for OFBPaint --load or vtkOFBReader), --check (exit with an error unless
@@ -36,27 +39,32 @@ from vtkmodules.vtkFiltersGeneral import vtkOBBTree
 from vtkmodules.vtkRenderingCore import vtkActor
 
 import vtkofb
-from ofb_example_view import (add_view_options, read_surface, render_offscreen, save_png,
-                              vivid_share)
+from ofb_example_view import (add_data_options, add_view_options, read_data_or_exit,
+                              paint_field, render_offscreen, save_png, vivid_share)
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("mesh", help="surface to paint (.obj, .ply, .stl or .vtp)")
+parser.add_argument("mesh", help="surface to paint (.vtp .vtu .vtm .pvd .vtk .stl .obj "
+                                 ".ply)")
 parser.add_argument("png", help="image to write")
 parser.add_argument("--resolution", type=int, default=512)
 parser.add_argument("--rings", type=int, default=5)
 add_view_options(parser, azimuth=20.0)
 parser.add_argument("--save", help="write the painted OFB to this .ofb file")
 parser.add_argument("--check", action="store_true")
+add_data_options(parser, "start the paint from this point or cell array in colour "
+                         "(blue to red)")
 args = parser.parse_args()
 
 # 1. Read the surface.
-mesh = read_surface(args.mesh)
+mesh = read_data_or_exit(args.mesh, args)[0]
 
 # 2. The OFB (built on the GPU where VTK's OpenGL context allows it, else on the CPU).
 builder = vtkofb.vtkOFBBuilder()
 builder.SetInputData(mesh)
 builder.SetResolution(args.resolution)
 builder.Update()
+if args.field:
+    paint_field(builder.GetOutput(), args.field)
 cell = builder.GetOutput().GetCellSize()
 built = numpy_support.vtk_to_numpy(builder.GetOutput().GetSampleData().GetArray("Colors")).copy()
 

@@ -3,8 +3,11 @@
 
     reader -> field computed here -> vtkOFBSampler -> vtkOFBLIC -> vtkOFBPolyDataMapper -> PNG
 
-The vector field is the tangential part of a rotation about a tilted axis through the
-centre of the mesh (the sampler projects it into the tangent plane of every sample).
+The input is a mesh or a simulation result (.vtp, .vtu, .vtm, .pvd, legacy .vtk, .stl,
+.obj, .ply; the C++ applications' inputs) with --block and --time / --time-step. The vector
+field is --field (a point or cell array of 3 components), else the tangential part of a
+rotation about a tilted axis through the centre of the mesh (the sampler projects it into
+the tangent plane of every sample).
 The LIC is computed once, on the surface (not on the screen), and shown as the
 intensity of the surface colour: a scalar (the flow's speed) through a lookup table, or
 grey.
@@ -31,6 +34,7 @@ import sys
 import numpy as np
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkLookupTable
+from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 from vtkmodules.vtkImagingCore import vtkImageExtractComponents
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkOBJWriter
@@ -38,10 +42,13 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkTexture
 
 import vtkofb
-from ofb_example_view import add_view_options, read_surface, render_offscreen, save_png
+from ofb_example_view import (add_data_options, add_view_options, read_data_or_exit,
+                              render_offscreen, save_png)
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("mesh", help="surface to show (.obj, .ply, .stl or .vtp)")
+parser.add_argument("mesh", help="data to show (.vtp .vtu .vtm .pvd .vtk .stl .obj .ply)")
+add_data_options(parser, "the vector field: a point or cell array of 3 components (default: "
+                         "a rotation)")
 parser.add_argument("png", help="image to write")
 parser.add_argument("--resolution", type=int, default=512)
 parser.add_argument("--steps", type=int, default=20)
@@ -60,23 +67,32 @@ parser.add_argument("--export", metavar="FILE.obj",
 parser.add_argument("--check", action="store_true")
 args = parser.parse_args()
 
-# 1. Read the surface.
-mesh = read_surface(args.mesh)
+# 1. Read the surface (its blocks merged, at the chosen time step) and the field.
+mesh, field, field_on_cells = read_data_or_exit(args.mesh, args, vectors=True)
 
-# 2. The vector field: a rotation about a tilted axis through the centre of the mesh,
-#    and a scalar to colour by (its speed).
-points = numpy_support.vtk_to_numpy(mesh.GetPoints().GetData()).astype(np.float64)
-bounds = np.array(mesh.GetBounds()).reshape(3, 2)
-center = bounds.mean(axis=1)
-axis = np.array([0.4, 1.0, 0.3])
-axis /= np.linalg.norm(axis)
-flow = np.cross(axis, points - center).astype(np.float32)
-flow_array = numpy_support.numpy_to_vtk(flow, deep=True)
-flow_array.SetName("Flow")
-mesh.GetPointData().SetVectors(flow_array)
+# 2. The vector field (--field, on points or cells, else a rotation about a tilted axis
+#    through the centre of the mesh) and a scalar to colour by (its speed).
+if field is not None:
+    attributes = mesh.GetCellData() if field_on_cells else mesh.GetPointData()
+    # The sampler takes cell vectors when the points have none active.
+    other = mesh.GetPointData() if field_on_cells else mesh.GetCellData()
+    other.SetActiveAttribute(-1, vtkDataSetAttributes.VECTORS)
+    attributes.SetVectors(field)
+    flow = numpy_support.vtk_to_numpy(field).astype(np.float64).reshape(-1, 3)
+else:
+    attributes = mesh.GetPointData()
+    points = numpy_support.vtk_to_numpy(mesh.GetPoints().GetData()).astype(np.float64)
+    bounds = np.array(mesh.GetBounds()).reshape(3, 2)
+    center = bounds.mean(axis=1)
+    axis = np.array([0.4, 1.0, 0.3])
+    axis /= np.linalg.norm(axis)
+    flow = np.cross(axis, points - center).astype(np.float32)
+    flow_array = numpy_support.numpy_to_vtk(flow, deep=True)
+    flow_array.SetName("Flow")
+    attributes.SetVectors(flow_array)
 speed_array = numpy_support.numpy_to_vtk(np.linalg.norm(flow, axis=1), deep=True)
 speed_array.SetName("Speed")
-mesh.GetPointData().AddArray(speed_array)
+attributes.AddArray(speed_array)
 
 # 3. The OFB: samples of the surface on three grids, with the field and the speed.
 sampler = vtkofb.vtkOFBSampler()

@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
-"""Surface particles as a plain VTK pipeline: a mesh with a rotation field, its OFB,
+"""Surface particles as a plain VTK pipeline: a mesh or simulation result with its vector
+field (--field, a point or cell array; else a rotation), its OFB,
 vtkOFBParticleAdvector painting it, vtkOFBPolyDataMapper drawing it, and the
 particles' trails as lines. Animated in a window, or headless with --image.
 
 Run with Debian's /usr/bin/python3 and PYTHONPATH=<build>/lib/python3.11/dist-packages:
-    python3 Examples/Python/surface_particles.py [mesh.ply|mesh.obj] [--image out.png]
-Options: --particles, --steps (before --image), --resolution (OFB cells on the longest
+    python3 Examples/Python/surface_particles.py [data file] [--image out.png]
+The data file: .vtp, .vtu, .vtm, .pvd, legacy .vtk, .stl, .obj or .ply (the C++
+applications' inputs). Options: --field NAME, --block LIST, --time T, --time-step N (as the
+C++ applications), --particles, --steps (before --image), --resolution (OFB cells on the longest
 side), --check (with --image: exit with an error unless every particle is still there,
 the OFB got paint and the image shows it; the ctest uses it).
 """
@@ -19,29 +22,40 @@ from vtkmodules.util import numpy_support
 
 import vtkofb
 from vtkmodules.vtkCommonCore import vtkDoubleArray
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkIOGeometry import vtkOBJReader
+from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
+from vtkmodules.vtkFiltersCore import vtkCellDataToPointData, vtkPolyDataNormals, vtkTriangleFilter
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
                                          vtkRenderWindowInteractor, vtkRenderer,
                                          vtkWindowToImageFilter)
 import vtkmodules.vtkInteractionStyle  # noqa: F401 (interactor style)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (OpenGL factories)
 
-from ofb_example_view import vivid_share
+from ofb_example_view import add_data_options, read_data_or_exit, vivid_share
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def read(path):
-    reader = vtkPLYReader() if path.endswith(".ply") else vtkOBJReader()
-    reader.SetFileName(path)
+def read(path, args):
+    """The data's surface with point normals and its --field as point vectors (a cell field
+    averaged to the points: the particles walk the triangles with point vectors)."""
+    mesh, field, on_cells = read_data_or_exit(path, args, vectors=True)
+    if field is not None and on_cells:
+        mesh.GetCellData().SetActiveAttribute(-1, vtkDataSetAttributes.VECTORS)
+        to_points = vtkCellDataToPointData()
+        to_points.SetInputData(mesh)
+        to_points.PassCellDataOn()
+        to_points.Update()
+        mesh = to_points.GetOutput()
+    if field is not None:
+        mesh.GetPointData().SetActiveVectors(field.GetName())
+    triangles = vtkTriangleFilter()
+    triangles.SetInputData(mesh)
     normals = vtkPolyDataNormals()
-    normals.SetInputConnection(reader.GetOutputPort())
+    normals.SetInputConnection(triangles.GetOutputPort())
     normals.SplittingOff()
     normals.Update()
-    return normals.GetOutput()
+    return normals.GetOutput(), field is not None
 
 
 def rotation_field(mesh, axis=(0.2, 1.0, 0.1)):
@@ -74,7 +88,10 @@ def check(advector, ofb, before, grab):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("mesh", nargs="?",
+    add_data_options(parser, "the vector field: a point or cell array of 3 components "
+                             "(default: a rotation)")
+    parser.add_argument("mesh", nargs="?", help="data file (.vtp .vtu .vtm .pvd .vtk .stl "
+                        ".obj .ply)",
                         default=os.path.join(HERE, "..", "..", "Testing", "Data", "horse.ply"))
     parser.add_argument("--particles", type=int, default=5000)
     parser.add_argument("--steps", type=int, default=100, help="steps before --image")
@@ -83,8 +100,9 @@ def main():
     parser.add_argument("--check", action="store_true")
     args = parser.parse_args()
 
-    mesh = read(args.mesh)
-    rotation_field(mesh)
+    mesh, has_field = read(args.mesh, args)
+    if not has_field:
+        rotation_field(mesh)
 
     sampler = vtkofb.vtkOFBSampler()
     sampler.SetInputData(mesh)

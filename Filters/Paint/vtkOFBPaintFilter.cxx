@@ -14,6 +14,7 @@
 #include "vtkOFBDabArrays.h"
 #include "vtkOFBInputChecks.h"
 #include "vtkOFBPainter.h"
+#include "vtkOFBStrokePath.h"
 #include "vtkOFBStrokeSampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkOFBPaintFilter);
 
@@ -82,16 +84,14 @@ struct DabArrays
     this->Previous->SetNumberOfComponents(3);
   }
 
-  /// A dab at `t` between points a and b of the strokes.
-  void Add(const StrokeValues& v, vtkIdType a, vtkIdType b, double t, const double previous[3])
+  /// A dab at `p`, with the values at `t` between points a and b of the strokes.
+  void Add(const StrokeValues& v,
+    vtkIdType a,
+    vtkIdType b,
+    double t,
+    const double p[3],
+    const double previous[3])
   {
-    double pa[3], pb[3], p[3];
-    v.Strokes->GetPoint(a, pa);
-    v.Strokes->GetPoint(b, pb);
-    for (int k = 0; k < 3; ++k)
-    {
-      p[k] = pa[k] + t * (pb[k] - pa[k]);
-    }
     this->Points->InsertNextPoint(p);
     this->Radius->InsertNextValue(v.RadiusAt(a) + t * (v.RadiusAt(b) - v.RadiusAt(a)));
     this->Pressure->InsertNextValue(v.PressureAt(a) + t * (v.PressureAt(b) - v.PressureAt(a)));
@@ -197,7 +197,7 @@ int vtkOFBPaintFilter::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, double cellSize)
+vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, vtkOFB* ofb)
 {
   vtkOFBDabArrays arrays{ strokes, std::string() };
   StrokeValues v{ strokes,
@@ -233,22 +233,50 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, d
     }
   }
 
+  // With the painter's FollowSurface every point moves onto the surface (the closest
+  // sample) and each segment becomes a path over it; otherwise the points and chords.
+  const vtkOFBStrokePath surface(this->Painter->GetFollowSurface() ? ofb : nullptr);
+  const vtkIdType numberOfPoints = strokes->GetNumberOfPoints();
+  std::vector<glm::dvec3> at(numberOfPoints);
+  std::vector<vtkIdType> sampleOf(numberOfPoints, -1);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double p[3], q[3];
+    strokes->GetPoint(i, p);
+    sampleOf[i] = surface.IsValid() ? surface.Snap(p, q) : -1;
+    at[i] = sampleOf[i] >= 0 ? glm::dvec3(q[0], q[1], q[2]) : glm::dvec3(p[0], p[1], p[2]);
+  }
+  auto pathOf = [&](vtkIdType a, vtkIdType b)
+  {
+    std::vector<glm::dvec3> path;
+    if (sampleOf[a] >= 0 && sampleOf[b] >= 0)
+    {
+      surface.Trace(sampleOf[a], sampleOf[b], path);
+    }
+    else
+    {
+      path = { at[a], at[b] };
+    }
+    return path;
+  };
+
   // The dabs the strokes will place, at most (each segment at its smaller radius).
   const double spacing = this->Painter->GetSpacing();
+  const double cellSize = ofb->GetCellSize();
   const bool byPressure = this->Brush->GetPressureAffectsRadius();
   auto radiusAt = [&](vtkIdType i) { return v.RadiusAt(i) * (byPressure ? v.PressureAt(i) : 1.0); };
   double expected = 0.0;
   const vtkIdType* ids = nullptr;
   vtkIdType n = 0;
+  std::vector<std::vector<glm::dvec3>> paths; // per segment of the polylines, in order
   vtkCellArray* lines = strokes->GetLines();
   for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
   {
     for (vtkIdType k = 1; k < n; ++k)
     {
-      double a[3], b[3];
-      strokes->GetPoint(ids[k - 1], a);
-      strokes->GetPoint(ids[k], b);
-      expected += vtkOFBStrokeSampler::MostDabs(std::sqrt(vtkMath::Distance2BetweenPoints(a, b)),
+      paths.push_back(pathOf(ids[k - 1], ids[k]));
+      expected += vtkOFBStrokeSampler::MostDabs(
+        vtkOFBStrokePath::Length(paths.back(), 0, paths.back().size() - 1),
         spacing,
         std::min(radiusAt(ids[k - 1]), radiusAt(ids[k])),
         cellSize);
@@ -270,34 +298,46 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, d
   {
     for (vtkIdType k = 0; k < n; ++k)
     {
-      out.Add(v, ids[k], ids[k], 0.0, none);
+      const glm::dvec3& c = at[ids[k]];
+      const double cc[3] = { c.x, c.y, c.z };
+      out.Add(v, ids[k], ids[k], 0.0, cc, none);
     }
   }
-  // Strokes: the first dab at the first point, then the painter's walk.
+  // Strokes: the first dab at the first point, then the painter's walk along each path,
+  // the values interpolated by the length walked.
+  size_t segment = 0;
   for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
   {
     if (n == 0)
     {
       continue;
     }
-    out.Add(v, ids[0], ids[0], 0.0, none);
-    double last[3];
-    strokes->GetPoint(ids[0], last);
+    double last[3] = { at[ids[0]].x, at[ids[0]].y, at[ids[0]].z };
+    out.Add(v, ids[0], ids[0], 0.0, last, none);
     vtkOFBStrokeSampler sampler;
     sampler.Start(radiusAt(ids[0]));
-    for (vtkIdType k = 1; k < n; ++k)
+    for (vtkIdType k = 1; k < n; ++k, ++segment)
     {
-      double a[3], b[3];
-      strokes->GetPoint(ids[k - 1], a);
-      strokes->GetPoint(ids[k], b);
-      sampler.Walk(std::sqrt(vtkMath::Distance2BetweenPoints(a, b)),
+      const std::vector<glm::dvec3>& path = paths[segment];
+      std::vector<double> walked(path.size(), 0.0);
+      for (size_t i = 1; i < path.size(); ++i)
+      {
+        walked[i] = walked[i - 1] + glm::length(path[i] - path[i - 1]);
+      }
+      const double length = walked.back();
+      sampler.WalkPath(path,
         spacing,
         cellSize,
-        [&](double t)
+        [&](size_t i, double t)
         {
-          out.Add(v, ids[k - 1], ids[k], t, last);
+          const glm::dvec3 c = path[i] + t * (path[i + 1] - path[i]);
+          const double cc[3] = { c.x, c.y, c.z };
+          const double f = length > 0.0
+            ? std::min(1.0, (walked[i] + t * (walked[i + 1] - walked[i])) / length)
+            : 1.0;
+          out.Add(v, ids[k - 1], ids[k], f, cc, last);
+          std::copy(cc, cc + 3, last);
           const vtkIdType added = out.Points->GetNumberOfPoints() - 1;
-          out.Points->GetPoint(added, last);
           return out.Radius->GetValue(added) * (byPressure ? out.Pressure->GetValue(added) : 1.0);
         });
     }
@@ -355,7 +395,7 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
   vtkSmartPointer<vtkPolyData> dabs;
   if (strokes && strokes->GetNumberOfPoints() > 0)
   {
-    dabs = this->MakeDabs(strokes, input->GetCellSize());
+    dabs = this->MakeDabs(strokes, input);
     if (!dabs)
     {
       return 1; // the error is reported

@@ -6,10 +6,14 @@
  * Port 0 takes the OFB, port 1 (optional) the strokes as a vtkPolyData: each
  * polyline (or line) is a stroke whose dabs are placed every `Spacing` times the
  * radius along it (the Spacing of GetPainter(), by the walk of vtkOFBPainter::StrokeTo),
- * and each vertex cell is a single dab. Optional point arrays
+ * and each vertex cell is a single dab. With the painter's FollowSurface (the default)
+ * every point is first moved onto the surface (the closest sample) and the dabs between
+ * two points follow a path over the surface, as vtkOFBPainter::StrokeTo places them
+ * (see vtkOFBPainter::SetFollowSurface). Optional point arrays
  * give per-point values, interpolated along the strokes (see vtkOFBPainter's
- * per-dab arrays): "Radius" (world units), "Color" (3 or 4 components, floating
- * point in [0, 1] or unsigned char), "Strength" and "Pressure" (in [0, 1]);
+ * per-dab arrays) by the length walked along each path: "Radius" (world units),
+ * "Color" (3 or 4 components, floating point in [0, 1] or unsigned char), "Strength"
+ * and "Pressure" (in [0, 1]);
  * points without them use the settings of the brush (GetBrush()). With the Smear target each dab
  * carries the colour from the previous dab of its stroke.
  *
@@ -32,6 +36,7 @@
 #include "vtkOFBPaintModule.h" // for export macro
 #include "vtkSmartPointer.h"   // for member
 
+class vtkOFB;
 class vtkOFBBrush;
 class vtkOFBPainter;
 class vtkPolyData;
@@ -89,9 +94,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /// The dabs of `strokes` (per-dab point arrays) on an OFB of cells `cellSize` wide, or
-  /// null with an error.
-  vtkSmartPointer<vtkPolyData> MakeDabs(vtkPolyData* strokes, double cellSize);
+  /// The dabs of `strokes` (per-dab point arrays) on `ofb`, or null with an error.
+  vtkSmartPointer<vtkPolyData> MakeDabs(vtkPolyData* strokes, vtkOFB* ofb);
 
   vtkSmartPointer<vtkOFBBrush> Brush;
   vtkSmartPointer<vtkOFBPainter> Painter;

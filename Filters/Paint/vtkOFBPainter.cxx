@@ -10,7 +10,6 @@
 #include "vtkOFBHugePages.h"
 #include "vtkOFBPaintKernel.h"
 #include "vtkOFBPainterInternals.h"
-#include "vtkOFBStrokeSampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -49,6 +48,7 @@ vtkOFBPainter::vtkOFBPainter()
   , InStroke(false)
   , MaximumDabsPerCall(vtkIdType(1) << 22)
   , AbortPaint(false)
+  , FollowSurface(true)
 {
   this->MirrorOrigin[0] = this->MirrorOrigin[1] = this->MirrorOrigin[2] = 0.0;
   this->DefaultColor[0] = this->DefaultColor[1] = this->DefaultColor[2] = 1.0;
@@ -488,6 +488,7 @@ void vtkOFBPainter::CopySettings(vtkOFBPainter* source)
   this->SetDefaultColor(source->DefaultColor);
   this->SetUndoLimit(source->UndoLimit);
   this->SetMaximumDabsPerCall(source->MaximumDabsPerCall);
+  this->SetFollowSurface(source->FollowSurface);
 }
 
 //------------------------------------------------------------------------------
@@ -623,138 +624,6 @@ vtkIdType vtkOFBPainter::Dabs(vtkPolyData* input)
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBPainter::BeginStroke()
-{
-  CallScope scope(this, "BeginStroke");
-  if (scope)
-  {
-    this->StartStroke();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBPainter::StartStroke()
-{
-  if (this->InStroke)
-  {
-    this->FinishStroke();
-  }
-  this->InStroke = true;
-  this->Internals->HasLastPoint = false;
-  this->Internals->HasLastDab = false;
-  this->Internals->Sampler.Start(0.0);
-  this->Internals->StrokeDabs->Initialize();
-}
-
-//------------------------------------------------------------------------------
-vtkIdType vtkOFBPainter::StrokeTo(const double p[3], double pressure)
-{
-  CallScope scope(this, "StrokeTo");
-  if (!scope)
-  {
-    return 0;
-  }
-  if (!Finite3(p))
-  {
-    vtkErrorMacro("A stroke point is not finite (NaN or infinite): ignored.");
-    return 0;
-  }
-  if (!this->CheckBrush("StrokeTo"))
-  {
-    return 0;
-  }
-  if (!this->InStroke)
-  {
-    this->StartStroke();
-  }
-  vtkInternals& internals = *this->Internals;
-  pressure = std::min(1.0, std::max(0.0, std::isfinite(pressure) ? pressure : 1.0));
-  std::vector<vtkOFBDab> dabs;
-  auto place = [&](const double c[3], double pr)
-  {
-    vtkOFBDab d;
-    this->MakeDab(c, pr, d);
-    d.HasPrevious = internals.HasLastDab;
-    std::copy(internals.LastDab, internals.LastDab + 3, d.Previous);
-    dabs.push_back(d);
-    std::copy(c, c + 3, internals.LastDab);
-    internals.HasLastDab = true;
-    internals.StrokeDabs->InsertNextPoint(c);
-  };
-  vtkOFBBrush* brush = internals.Brush;
-  auto radiusAt = [brush](double pr)
-  { return brush->GetRadius() * (brush->GetPressureAffectsRadius() ? pr : 1.0); };
-  if (!internals.HasLastPoint)
-  {
-    place(p, pressure);
-    internals.Sampler.Start(radiusAt(pressure));
-  }
-  else
-  {
-    const glm::dvec3 a(internals.LastPoint[0], internals.LastPoint[1], internals.LastPoint[2]);
-    const glm::dvec3 b(p[0], p[1], p[2]);
-    const double length = glm::length(b - a);
-    const double cellSize = internals.OFB ? internals.OFB->GetCellSize() : 0.0;
-    const double smallest = radiusAt(std::min(pressure, internals.LastPressure));
-    if (vtkOFBStrokeSampler::MostDabs(length, this->Spacing, smallest, cellSize) >
-      vtkOFBMaximumStrokeDabs)
-    {
-      vtkErrorMacro("StrokeTo: this segment ("
-        << length << " long) would place more than " << vtkOFBMaximumStrokeDabs << " dabs (radius "
-        << brush->GetRadius() << ", Spacing " << this->Spacing << "): nothing painted.");
-      std::copy(p, p + 3, internals.LastPoint);
-      internals.LastPressure = pressure;
-      internals.Sampler.Start(radiusAt(pressure));
-      return 0;
-    }
-    const double startPressure = internals.LastPressure;
-    internals.Sampler.Walk(length,
-      this->Spacing,
-      cellSize,
-      [&](double t)
-      {
-        const glm::dvec3 c = a + t * (b - a);
-        const double pr = startPressure + t * (pressure - startPressure);
-        const double cc[3] = { c.x, c.y, c.z };
-        place(cc, pr);
-        return radiusAt(pr);
-      });
-  }
-  std::copy(p, p + 3, internals.LastPoint);
-  internals.LastPressure = pressure;
-  internals.HasLastPoint = true;
-  return dabs.empty() ? 0 : this->Paint(dabs);
-}
-
-//------------------------------------------------------------------------------
-vtkIdType vtkOFBPainter::StrokeTo(double x, double y, double z, double pressure)
-{
-  const double p[3] = { x, y, z };
-  return this->StrokeTo(p, pressure);
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBPainter::EndStroke()
-{
-  CallScope scope(this, "EndStroke");
-  if (scope)
-  {
-    this->FinishStroke();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBPainter::FinishStroke()
-{
-  if (!this->InStroke)
-  {
-    return;
-  }
-  this->InStroke = false;
-  this->CloseStep();
-}
-
-//------------------------------------------------------------------------------
 vtkIdType vtkOFBPainter::GetScratchMemory() const
 {
   return this->Internals->Kernel.GetMemory();
@@ -772,6 +641,7 @@ void vtkOFBPainter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UndoLimit: " << this->UndoLimit << "\n";
   os << indent << "MaximumDabsPerCall: " << this->MaximumDabsPerCall << "\n";
   os << indent << "AbortPaint: " << this->AbortPaint << "\n";
+  os << indent << "FollowSurface: " << this->FollowSurface << "\n";
   os << indent << "MirrorX: " << this->MirrorX << ", MirrorY: " << this->MirrorY
      << ", MirrorZ: " << this->MirrorZ << "\n";
   os << indent << "MirrorOrigin: (" << this->MirrorOrigin[0] << ", " << this->MirrorOrigin[1]

@@ -153,7 +153,9 @@ public:
    * brush to `p` with `pressure` in [0, 1] (clamped), placing the first dab at the
    * first point and then dabs every Spacing * radius along the path (the radius at
    * each dab, scaled by the pressure interpolated along the segment when the brush
-   * has PressureAffectsRadius); EndStroke() closes the step. StrokeTo outside a
+   * has PressureAffectsRadius); EndStroke() closes the step. With FollowSurface (the
+   * default) each point is first moved onto the surface (to the closest sample) and the
+   * path between two points follows the surface (see SetFollowSurface). StrokeTo outside a
    * stroke begins one. Each StrokeTo returns the number of samples it changed.
    * With the Smear target each dab carries the colour found at the previous dab.
    */
@@ -180,6 +182,23 @@ public:
    */
   vtkSetClampMacro(Spacing, double, 0.01, 10.0);
   vtkGetMacro(Spacing, double);
+  ///@}
+
+  ///@{
+  /**
+   * Strokes that follow the surface (default on). StrokeTo moves each point to the
+   * closest sample of the OFB, however far from the surface it is given, and joins two
+   * points by a path over the surface: a walk from sample to sample, two cells a step,
+   * each step to the nearby sample closest to the next point whose normal is not turned
+   * more than 120 degrees from the last (so a stroke on a pipe goes around the wall and
+   * never through the inside, and never steps onto the opposite wall of a thin pipe or
+   * the back of a thin plate). Off: the dabs are placed at the points given and along the
+   * straight chords between them (a volume brush moved through space).
+   * vtkOFBPaintFilter's strokes follow the same setting of its painter.
+   */
+  vtkSetMacro(FollowSurface, bool);
+  vtkGetMacro(FollowSurface, bool);
+  vtkBooleanMacro(FollowSurface, bool);
   ///@}
 
   ///@{
@@ -237,8 +256,8 @@ public:
 
   /**
    * Take the settings of `source`: Spacing, the mirror settings, DefaultColor,
-   * MaximumDabsPerCall and UndoLimit (not its OFB, brush, history or stroke). vtkOFBPaintFilter
-   * paints with the settings of the painter it holds so.
+   * MaximumDabsPerCall, UndoLimit and FollowSurface (not its OFB, brush, history or stroke).
+   * vtkOFBPaintFilter paints with the settings of the painter it holds so.
    */
   void CopySettings(vtkOFBPainter* source);
 
@@ -328,6 +347,7 @@ protected:
   bool InStroke;
   vtkIdType MaximumDabsPerCall;
   bool AbortPaint;
+  bool FollowSurface;
 
 private:
   /// Marks the painter busy and holds the OFB and brush for one public call.

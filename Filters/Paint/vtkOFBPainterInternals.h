@@ -72,7 +72,7 @@ struct vtkOFBPainter::vtkInternals
   std::deque<vtkofbpainter::Step> RedoSteps;
   vtkofbpainter::Step Open;
 
-  // Stroke state: the last point given, the last dab and the walk of the dabs.
+  // Stroke state: the last point given (on the surface with FollowSurface), the last dab and the walk of the dabs.
   bool HasLastPoint = false;
   double LastPoint[3] = { 0.0, 0.0, 0.0 };
   double LastPressure = 1.0;

@@ -4,7 +4,11 @@
 #ifndef vtkOFBStrokeSampler_h
 #define vtkOFBStrokeSampler_h
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
+#include <cstddef>
+#include <vector>
 
 /**
  * The path length between two dabs of a stroke: `spacing` radii, but at least an eighth
@@ -51,6 +55,23 @@ public:
       s += vtkOFBDabStep(spacing, this->LastRadius, cellSize);
     }
     this->SinceLastDab = length - lastS;
+  }
+
+  /**
+   * Walk the segments of a polyline in order (a stroke's path over the surface, see
+   * vtkOFBStrokePath): `place(i, t)` places a dab at the fraction t in (0, 1] of the
+   * segment from path[i] to path[i + 1] and returns its radius.
+   */
+  template<class Place>
+  void WalkPath(const std::vector<glm::dvec3>& path, double spacing, double cellSize, Place&& place)
+  {
+    for (std::size_t i = 1; i < path.size(); ++i)
+    {
+      this->Walk(glm::length(path[i] - path[i - 1]),
+        spacing,
+        cellSize,
+        [&](double t) { return place(i - 1, t); });
+    }
   }
 
   /// The most dabs a segment of `length` places when no radius along it is below `radius`.

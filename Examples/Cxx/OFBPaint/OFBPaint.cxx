@@ -1,12 +1,16 @@
 // OFBPaint: paint a surface with the mouse through its Orthogonal Fragment Buffer.
 //
-// Usage: OFBPaint [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb]
+// Usage: OFBPaint [data file] [--field NAME] [--block I|NAME[,...]] [--time T | --time-step N]
+//                 [--resolution N] [--load paint.ofb]
 //                 [--save paint.ofb] [--import-texture image.png] [--decal image.png]
 //                 [--export painted.obj|.ply|.vtp] [--texture N]
 //                 [--width W] [--height H] [--strokes strokes.txt --image out.png]
 //                 [--play events.log]
 //
-// Without a mesh it opens Testing/Data/stanford-bunny.obj of the source tree. The surface
+// The data file is a mesh or a simulation result (.vtp, .vtu, .vtm, .pvd, legacy .vtk, .stl,
+// .obj, .ply; ofbExampleData.h). Without one it opens Testing/Data/stanford-bunny.obj of the
+// source tree. With --field the painting starts from that point or cell array through a
+// blue-to-red colour map (its magnitude for a vector). The surface
 // is drawn by vtkOFBPolyDataMapper from an OFB built at --resolution (default 1024) and
 // painted with vtkOFBPainterWidget: left-drag paints, the other buttons move the camera,
 // 'h' shows the keys. With --strokes and --image it runs without a window on screen:
@@ -21,6 +25,7 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkInteractorEventRecorder.h"
+#include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
@@ -32,6 +37,7 @@
 #include "vtkOFBReader.h"
 #include "vtkOFBSampler.h"
 #include "vtkOFBWriter.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -40,21 +46,25 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
+#include "ofbExampleData.h"
 #include "ofbExampleErrors.h"
 #include "ofbExampleFiles.h"
 #include "ofbExampleMesh.h"
 #include "ofbExampleOptions.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -72,15 +82,64 @@ const char* const PaletteNames[9] = { "red",
 
 using ErrorCounter = ofbexample::FirstError; // counts error events, keeps the first
 
+/// The samples' colours from the sample array `name` (a point array interpolated, a cell
+/// array per triangle; a vector's magnitude) through a blue-to-red map over its range.
+bool PaintField(vtkOFB* ofb, const std::string& name)
+{
+  vtkDataArray* field = ofb->GetSampleData()->GetArray(name.c_str());
+  auto* colors =
+    vtkUnsignedCharArray::SafeDownCast(ofb->GetSampleData()->GetArray(vtkOFB::ColorsArrayName()));
+  if (!field || !colors || colors->GetNumberOfComponents() != 4)
+  {
+    return false;
+  }
+  const int components = field->GetNumberOfComponents();
+  std::vector<double> values(ofb->GetNumberOfSamples());
+  double range[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    double v = 0.0;
+    for (int k = 0; k < components; ++k)
+    {
+      const double c = field->GetComponent(i, k);
+      v += components == 1 ? c : c * c;
+    }
+    values[i] = components == 1 ? v : std::sqrt(v);
+    if (std::isfinite(values[i]))
+    {
+      range[0] = std::min(range[0], values[i]);
+      range[1] = std::max(range[1], values[i]);
+    }
+  }
+  vtkNew<vtkLookupTable> table;
+  table->SetHueRange(0.667, 0.0);
+  table->SetTableRange(
+    range[0] <= range[1] ? range[0] : 0.0, range[0] <= range[1] ? range[1] : 1.0);
+  table->Build();
+  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
+  {
+    const unsigned char* rgba = table->MapValue(std::isfinite(values[i]) ? values[i] : range[0]);
+    colors->SetTypedTuple(i, rgba);
+  }
+  ofb->MarkAllSamplesModified();
+  ofb->Modified();
+  return true;
+}
+
 void Usage(const char* argv0)
 {
   std::cerr
     << "Usage: " << argv0
-    << " [mesh.obj|.ply|.stl|.vtp] [--resolution N] [--load paint.ofb] [--save paint.ofb]\n"
+    << " [data file] [--field NAME] [--block I|NAME[,...]] [--time T | --time-step N]\n"
+       "       [--resolution N] [--load paint.ofb] [--save paint.ofb]\n"
        "       [--import-texture IMAGE] [--decal IMAGE] [--export FILE] [--texture N]\n"
        "       [--width W] [--height H]\n"
        "       [--strokes strokes.txt --image out.png]\n"
        "Paint the surface (default stanford-bunny.obj) with the mouse; 'h' lists the keys.\n"
+       "  data file        .vtp .vtu .vtm .pvd .vtk .stl .obj .ply, by content or extension\n"
+       "  --field NAME     start from this point or cell array in colour (blue to red)\n"
+       "  --block LIST     the blocks to show: flat indices or names, comma-separated\n"
+       "  --time T         the time step closest to T; --time-step N the Nth (from 0)\n"
        "  --resolution N   OFB cells along the longest side (default 1024)\n"
        "  --load FILE      start from a painted OFB saved before (key 's')\n"
        "  --save FILE      where 's' saves and 'l' loads (default <mesh name>.ofb); the\n"
@@ -116,6 +175,7 @@ public:
 
 private:
   bool BuildOFB(int resolution);
+  std::string FieldName; // --field: the painting starts from it
   bool LoadOFB(const std::string& path);
   bool SaveOFB(const std::string& path);
   bool Screenshot(const std::string& path);
@@ -165,6 +225,11 @@ bool PaintApp::BuildOFB(int resolution)
   {
     std::cerr << "OFBPaint: building the OFB at resolution " << resolution << " failed"
               << (errors->Text.empty() ? "" : ": " + errors->Text) << "\n";
+    return false;
+  }
+  if (!this->FieldName.empty() && !PaintField(ofb, this->FieldName))
+  {
+    std::cerr << "OFBPaint: the OFB has no sample array '" << this->FieldName << "'\n";
     return false;
   }
   this->UseOFB(ofb);
@@ -440,12 +505,27 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
 {
   this->MeshPath = meshPath;
   std::string error;
-  this->Surface = ofbexample::ReadSurfaceChecked(meshPath, error);
-  if (!this->Surface)
+  ofbexample::DataOptions dataOptions;
+  dataOptions.Field = options.at("--field");
+  dataOptions.Blocks = options.at("--block");
+  dataOptions.HasTime = !options.at("--time").empty();
+  if ((dataOptions.HasTime &&
+        !ofbexample::ParseDouble(options.at("--time"), -1e300, 1e300, dataOptions.Time)) ||
+    (!options.at("--time-step").empty() &&
+      !ofbexample::ParseInt(options.at("--time-step"), 0, 1000000000, dataOptions.TimeStep)))
+  {
+    std::cerr << "OFBPaint: --time must be a number and --time-step a step index from 0\n";
+    return false;
+  }
+  ofbexample::DataSurface data;
+  if (!ofbexample::ReadDataTriangles(meshPath, dataOptions, false, data, error))
   {
     std::cerr << "OFBPaint: " << error << "\n";
     return false;
   }
+  this->Surface = data.Surface;
+  this->FieldName = dataOptions.Field;
+  std::cout << "read " << meshPath << ": " << data.Summary << "\n";
   int resolution = 0, width = 0, height = 0;
   if (!ofbexample::ParseInt(options.at("--resolution"), 8, 8192, resolution) ||
     !ofbexample::ParseInt(options.at("--width"), 64, 8192, width) ||
@@ -637,7 +717,11 @@ int main(int argc, char* argv[])
     { "--height", "900" },
     { "--strokes", "" },
     { "--image", "" },
-    { "--play", "" } };
+    { "--play", "" },
+    { "--field", "" },
+    { "--block", "" },
+    { "--time", "" },
+    { "--time-step", "" } };
   std::string meshPath;
   for (int i = 1; i < argc; ++i)
   {

@@ -19,7 +19,9 @@
 //   view AZ EL [ZOOM]        camera: azimuth and elevation (degrees) from the default view,
 //                            zoom factor (pixel points depend on it: set it first)
 //   stroke                   begin a stroke (one undo step); its points follow
-//   X Y Z [PRESSURE]         a point in world coordinates
+//   X Y Z [PRESSURE]         a point in world coordinates (moved onto the surface: the
+//                            closest sample; the dabs between two points follow the
+//                            surface, see vtkOFBPainter::SetFollowSurface)
 //   pixel PX PY [PRESSURE]   a point picked on the surface at pixel (PX, PY) of the image,
 //                            from its top-left corner (skipped, with a note, off the surface)
 //   end                      end the stroke (also ended by 'stroke' or the end of the file)

@@ -413,6 +413,7 @@ TEST(Painter, StrokesAreSpacedAsSet)
   vtkNew<vtkOFBPainter> painter;
   painter->SetOFB(ofb);
   painter->GetBrush()->SetRadius(0.2);
+  painter->FollowSurfaceOff(); // a straight path through space, above the sphere
   for (double spacing : { 0.25, 0.1, 1.0 })
   {
     painter->SetSpacing(spacing);

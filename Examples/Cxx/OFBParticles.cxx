@@ -14,7 +14,7 @@
 // `rotation` (default) the tangential part of a rotation about an axis through the
 // mesh's centre, `height` the surface gradient of the height along the view-up axis,
 // `mesh` the file's active point vectors, any other NAME the file's point or cell array
-// of 3 components of that name (a cell field is averaged to the points for the walk). In the
+// of 3 components of that name (a cell field holds on its cells' triangles). In the
 // window: space pauses, r reseeds, c changes the colour mode, t toggles reveal mode (the surface
 // starts dark and the particles uncover it, the paper's Fig. 2), q quits. `--image` runs headless:
 // N steps, then writes a PNG.
@@ -22,6 +22,8 @@
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -301,10 +303,17 @@ int main(int argc, char* argv[])
   std::cout << "read " << o.Mesh << ": " << data.Summary << "\n";
   if (data.Field)
   {
-    // The particles walk the triangles with point vectors.
-    mesh->GetPointData()->SetVectors(data.FieldOnCells
-        ? ofbexample::CellFieldToPoints(mesh, data.Field).GetPointer()
-        : data.Field);
+    if (data.FieldOnCells)
+    {
+      // A cell field holds on its cells' triangles (the advector reads the active cell
+      // vectors where there are no active point vectors).
+      mesh->GetPointData()->SetActiveAttribute(-1, vtkDataSetAttributes::VECTORS);
+      mesh->GetCellData()->SetVectors(data.Field);
+    }
+    else
+    {
+      mesh->GetPointData()->SetVectors(data.Field);
+    }
   }
   else if (!MakeField(mesh, o.Field, o.ViewUp))
   {

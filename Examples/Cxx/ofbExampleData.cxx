@@ -452,37 +452,4 @@ void UseFieldAsVectors(DataSurface& data, double range[2])
   on->AddArray(speed);
   speed->GetRange(range);
 }
-
-vtkSmartPointer<vtkDataArray> CellFieldToPoints(vtkPolyData* surface, vtkDataArray* field)
-{
-  const int nc = field->GetNumberOfComponents();
-  auto points = vtkSmartPointer<vtkDoubleArray>::New();
-  points->SetName(field->GetName());
-  points->SetNumberOfComponents(nc);
-  points->SetNumberOfTuples(surface->GetNumberOfPoints());
-  points->Fill(0.0);
-  std::vector<int> count(surface->GetNumberOfPoints(), 0);
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
-  {
-    surface->GetCellPoints(c, ids);
-    for (vtkIdType j = 0; j < ids->GetNumberOfIds(); ++j)
-    {
-      const vtkIdType p = ids->GetId(j);
-      for (int k = 0; k < nc; ++k)
-      {
-        points->SetComponent(p, k, points->GetComponent(p, k) + field->GetComponent(c, k));
-      }
-      ++count[p];
-    }
-  }
-  for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
-  {
-    for (int k = 0; count[p] > 1 && k < nc; ++k)
-    {
-      points->SetComponent(p, k, points->GetComponent(p, k) / count[p]);
-    }
-  }
-  return points;
-}
 }

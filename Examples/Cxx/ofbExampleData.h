@@ -93,10 +93,6 @@ std::string DescribeArrays(vtkPolyData* surface);
 /// cells; the other's active vectors unset, so vtkOFBSampler takes it) and add its
 /// magnitude beside it as "Speed"; `range` the magnitude's range.
 void UseFieldAsVectors(DataSurface& data, double range[2]);
-
-/// A point copy of a cell field (each point the mean of its cells' values), named as the
-/// field, for algorithms that take point vectors (the particle advector).
-vtkSmartPointer<vtkDataArray> CellFieldToPoints(vtkPolyData* surface, vtkDataArray* field);
 }
 
 #endif

@@ -23,7 +23,7 @@ from vtkmodules.util import numpy_support
 import vtkofb
 from vtkmodules.vtkCommonCore import vtkDoubleArray
 from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
-from vtkmodules.vtkFiltersCore import vtkCellDataToPointData, vtkPolyDataNormals, vtkTriangleFilter
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals, vtkTriangleFilter
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
                                          vtkRenderWindowInteractor, vtkRenderer,
@@ -37,17 +37,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def read(path, args):
-    """The data's surface with point normals and its --field as point vectors (a cell field
-    averaged to the points: the particles walk the triangles with point vectors)."""
+    """The data's surface with point normals and its --field as the active point or cell
+    vectors (a cell field holds on its cells' triangles)."""
     mesh, field, on_cells = read_data_or_exit(path, args, vectors=True)
     if field is not None and on_cells:
-        mesh.GetCellData().SetActiveAttribute(-1, vtkDataSetAttributes.VECTORS)
-        to_points = vtkCellDataToPointData()
-        to_points.SetInputData(mesh)
-        to_points.PassCellDataOn()
-        to_points.Update()
-        mesh = to_points.GetOutput()
-    if field is not None:
+        mesh.GetPointData().SetActiveAttribute(-1, vtkDataSetAttributes.VECTORS)
+        mesh.GetCellData().SetActiveVectors(field.GetName())
+    elif field is not None:
         mesh.GetPointData().SetActiveVectors(field.GetName())
     triangles = vtkTriangleFilter()
     triangles.SetInputData(mesh)

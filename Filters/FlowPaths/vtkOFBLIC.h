@@ -394,8 +394,9 @@ protected:
   /// False on error.
   bool PrepareNoise(vtkOFB* input);
 
-  /// The kernel's 2 n + 1 weights for n steps each way (index n is t = 0).
-  std::vector<double> ComputeKernel(int n) const;
+  /// The kernel's 2 n + 1 weights for n steps each way (index n is t = 0); without
+  /// `animation`, without the factor of Animate.
+  std::vector<double> ComputeKernel(int n, bool animation = true) const;
 
   /// The input's arrays shared, with "LIC" (values clamped, the mask value where masked)
   /// and "LICMask" added.

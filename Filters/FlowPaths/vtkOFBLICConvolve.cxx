@@ -79,12 +79,43 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
   bool keep,
   bool trace,
   const std::vector<double>& weights,
+  const vtkOFBLICKernelParts* parts,
+  bool recombine,
   const float* input,
   float* output,
   double progress0,
   double progress1)
 {
   vtkOFBLICCache& cache = this->Cache;
+  parts = keep ? parts : nullptr;
+  recombine = recombine && parts && !trace;
+  if (parts && !recombine)
+  {
+    cache.Moments.resize(cache.Mask.size());
+  }
+  vtkOFBLICMoments* moments = parts ? cache.Moments.data() : nullptr;
+  if (recombine)
+  {
+    // Another phase: the kept moments combined in the order of the samples, no run read.
+    const vtkIdType n = static_cast<vtkIdType>(cache.Mask.size());
+    const unsigned char* masked = cache.Mask.data();
+    vtkSMPTools::For(0,
+      n,
+      1 << 16,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          output[i] = masked[i] ? input[i] : parts->Combine(moments[i], input[i]);
+        }
+      });
+    if (self->GetAbortExecute())
+    {
+      return false;
+    }
+    self->UpdateProgress(progress1);
+    return true;
+  }
   const unsigned char* mask = cache.Mask.data();
   const int steps = tracer.NumberOfSteps;
   const double* w = weights.data();
@@ -176,6 +207,12 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
             if (mask[i])
             {
               output[i] = input[i];
+            }
+            else if (parts)
+            {
+              const vtkIdType at = where[i];
+              parts->Gather(runs + at, values.data() + at, moments[i]);
+              output[i] = parts->Combine(moments[i], input[i]);
             }
             else if (keep)
             {

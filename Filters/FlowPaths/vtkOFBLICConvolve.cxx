@@ -193,7 +193,12 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
         tiles.ForEachSample(t, [&](vtkIdType i) { VTKOFB_PREFETCH(input + i); });
         std::vector<float>& values = localValues.Local();
         const vtkIdType length = runs ? cache.TileRunLengths[t] : 0;
-        if (runs)
+        // Runs traced just now are copied (their ids were just written, the values not
+        // yet read); kept runs (a second pass, a re-convolution) are read through the ids
+        // (the tile's input stays in the cache; a copy would read and write every id of
+        // the runs, most of them more than once).
+        const bool copy = runs && trace;
+        if (copy)
         {
           values.resize(std::max<std::size_t>(values.size(), length));
           for (vtkIdType k = 0; k < length; ++k)
@@ -211,19 +216,37 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
             else if (parts)
             {
               const vtkIdType at = where[i];
-              parts->Gather(runs + at, values.data() + at, moments[i]);
+              if (copy)
+              {
+                parts->Gather(runs + at, values.data() + at, moments[i]);
+              }
+              else
+              {
+                parts->Gather(
+                  runs + at, vtkOFBLICTracer::ThroughIds{ runs + at, input }, moments[i]);
+              }
               output[i] = parts->Combine(moments[i], input[i]);
+            }
+            else if (keep && !copy)
+            {
+              const vtkIdType at = where[i];
+              const bool inside = at >= steps && at + steps < length;
+              const vtkOFBLICTracer::ThroughIds v{ runs + at, input };
+              if (!inside ||
+                !vtkOFBLICTracer::GatherWhole(runs + at, v, steps, w, inverseTotal, output[i]))
+              {
+                output[i] = vtkOFBLICTracer::GatherRun(runs + at, v, steps, w, inverseTotal);
+              }
             }
             else if (keep)
             {
               const vtkIdType at = where[i];
               const bool inside = at >= steps && at + steps < length;
+              const float* v = values.data() + at;
               if (!inside ||
-                !vtkOFBLICTracer::GatherWhole(
-                  runs + at, values.data() + at, steps, w, inverseTotal, output[i]))
+                !vtkOFBLICTracer::GatherWhole(runs + at, v, steps, w, inverseTotal, output[i]))
               {
-                output[i] =
-                  vtkOFBLICTracer::GatherRun(runs + at, values.data() + at, steps, w, inverseTotal);
+                output[i] = vtkOFBLICTracer::GatherRun(runs + at, v, steps, w, inverseTotal);
               }
             }
             else

@@ -438,8 +438,9 @@ public:
    * v[s] the input value at at[s] (the run's values copied beside it, so that the window
    * is read contiguously; a gather through the ids waited on its loads).
    */
+  template<typename Values>
   static float GatherRun(const vtkTypeInt32* at,
-    const float* v,
+    const Values& v,
     int n,
     const double* weights,
     double inverseTotal)
@@ -473,8 +474,9 @@ public:
    * otherwise. (A run's values are contiguous, so the chain of additions of one
    * accumulator, not the loads, is what GatherRun waits on.)
    */
+  template<typename Values>
   static bool GatherWhole(const vtkTypeInt32* at,
-    const float* v,
+    const Values& v,
     int n,
     const double* weights,
     double inverseTotal,
@@ -489,24 +491,35 @@ public:
     {
       return false;
     }
-    const float* x = v - n; // x[k] is the value at position k - n, weights[k] its weight
+    // v[k - n] is the value at position k - n, weights[k] its weight.
     const int count = 2 * n + 1;
     double a0 = 0.0, a1 = 0.0, a2 = 0.0, a3 = 0.0;
     int k = 0;
     for (; k + 4 <= count; k += 4)
     {
-      a0 += weights[k] * x[k];
-      a1 += weights[k + 1] * x[k + 1];
-      a2 += weights[k + 2] * x[k + 2];
-      a3 += weights[k + 3] * x[k + 3];
+      a0 += weights[k] * v[k - n];
+      a1 += weights[k + 1] * v[k + 1 - n];
+      a2 += weights[k + 2] * v[k + 2 - n];
+      a3 += weights[k + 3] * v[k + 3 - n];
     }
     for (; k < count; ++k)
     {
-      a0 += weights[k] * x[k];
+      a0 += weights[k] * v[k - n];
     }
     out = static_cast<float>(((a0 + a1) + (a2 + a3)) * inverseTotal);
     return true;
   }
+
+  /**
+   * The values of a window read through its ids: (*this)[s] is input[at[s]] (for
+   * GatherRun and GatherWhole without a copy of the run's values).
+   */
+  struct ThroughIds
+  {
+    const vtkTypeInt32* At;
+    const float* Input;
+    float operator[](int s) const { return this->Input[this->At[s]]; }
+  };
 
   /**
    * 1 over the sum of the 2 n + 1 weights in the order Gather and GatherRun add them
@@ -687,7 +700,8 @@ struct vtkOFBLICKernelParts
    * The moments of the window of a kept run (as vtkOFBLICTracer::GatherRun: at[0] the
    * sample, at[s] and at[-s] its steps, -1 where the streamline stops, v[s] the value).
    */
-  void Gather(const vtkTypeInt32* at, const float* v, vtkOFBLICMoments& m) const
+  template<typename Values>
+  void Gather(const vtkTypeInt32* at, const Values& v, vtkOFBLICMoments& m) const
   {
     const int n = this->N;
     const double* base = this->Base.data() + n;

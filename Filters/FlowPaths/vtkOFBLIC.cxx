@@ -398,7 +398,7 @@ bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
 }
 
 //------------------------------------------------------------------------------
-std::vector<double> vtkOFBLIC::ComputeKernel(int n) const
+std::vector<double> vtkOFBLIC::ComputeKernel(int n, bool animation) const
 {
   std::vector<double> w(2 * n + 1, 1.0);
   const double pi = 3.141592653589793;
@@ -418,7 +418,7 @@ std::vector<double> vtkOFBLIC::ComputeKernel(int n) const
     {
       k *= (s + n + 1.0) / (2.0 * n + 2.0);
     }
-    if (this->Animate && n > 0)
+    if (animation && this->Animate && n > 0)
     {
       k *= 0.5 * (1.0 + std::cos(2.0 * pi * (static_cast<double>(s) / n + this->AnimationPhase)));
     }
@@ -586,6 +586,23 @@ int vtkOFBLIC::RequestData(vtkInformation*,
                   << (this->LastRecomputed & RECOMPUTED_NOISE ? " noise" : "")
                   << (this->LastRecomputed & RECOMPUTED_STREAMLINES ? " streamlines" : "")
                   << "; convolved.");
+  // Animated fast LIC: the first pass from each sample's moments (vtkOFBLICKernelParts),
+  // combined again without reading the runs while the lines, noise and kernel stay.
+  vtkOFBLICKernelParts parts;
+  vtkOFBLICCacheKey momentsKey;
+  const bool animated = keep && this->Animate;
+  bool recombine = false;
+  if (animated)
+  {
+    parts.Set(
+      this->ComputeKernel(this->NumberOfSteps, false), this->NumberOfSteps, this->AnimationPhase);
+    momentsKey.Add(linesKey)
+      .Add(cache.NoiseKey)
+      .Add(static_cast<double>(this->KernelType))
+      .Add(this->OrientedLIC ? 1.0 : 0.0);
+    recombine = !trace && cache.MomentsKey == momentsKey;
+  }
+  cache.MomentsKey = vtkOFBLICCacheKey();
   vtkOFBLICBuffer<float>& values = cache.Values;
   values.resize(n);
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
@@ -594,6 +611,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
         keep,
         trace,
         weights,
+        animated ? &parts : nullptr,
+        recombine,
         cache.Noise.data(),
         values.data(),
         0.05,
@@ -606,6 +625,10 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   {
     cache.LinesKey = linesKey;
   }
+  if (animated)
+  {
+    cache.MomentsKey = momentsKey;
+  }
   if (enhanced)
   {
     vtkOFBLICHighPass(input, cache);
@@ -616,8 +639,17 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     vtkOFBLICTracer second = tracer;
     second.NumberOfSteps = std::max(1, this->NumberOfSteps / 2);
     const std::vector<double> weights2 = this->ComputeKernel(second.NumberOfSteps);
-    if (!this->Internals->Convolve(
-          this, second, keep, false, weights2, pass1.data(), values.data(), 0.5, 0.95))
+    if (!this->Internals->Convolve(this,
+          second,
+          keep,
+          false,
+          weights2,
+          nullptr,
+          false,
+          pass1.data(),
+          values.data(),
+          0.5,
+          0.95))
     {
       output->Initialize();
       return 1;

@@ -56,8 +56,10 @@
  * frame many times cheaper than the first computation. What is kept, per sample: the
  * seed streamlines as sample ids (4 bytes each, about NumberOfSteps + 1 a sample: each
  * sample's streamline is a window of one of them) and the sample's place in them (4
- * bytes), 40 bytes of packed position, normal and field, 1 byte of mask, 4 of noise and
- * 4 of the tiles' sample lists, plus 9 bytes of work buffers; with EnhancedLIC also the
+ * bytes); with Animate on, the three sums of its window that another AnimationPhase
+ * combines without reading the streamlines (16 bytes; see docs/lic.md); 40 bytes of
+ * packed position, normal and field, 1 byte of mask, 4 of noise and 4 of the tiles'
+ * sample lists, plus 9 bytes of work buffers; with EnhancedLIC also the
  * high-pass's neighbours of each sample (17 bytes: a count and up to 8 offsets), found
  * once, so that an enhanced re-convolution does not search them again. The streamlines
  * are traced again when the input's structure, field or normals array (pointer or
@@ -335,9 +337,8 @@ public:
    * streaks and seams at the tile planes. At 0.05 the LIC correlates about 0.96 with
    * the one traced from every sample and shows neither, for about NumberOfSteps traced
    * steps a sample; 1 reads every sample met (about 3.3 steps a sample, 2.5 to 3.5
-   * times faster to compute and up to twice as fast to re-convolve, with the
-   * dashes); 0 traces every sample's own streamline and keeps it (2 NumberOfSteps steps
-   * a sample).
+   * times faster to compute, with the dashes); 0 traces every sample's own streamline
+   * and keeps it (2 NumberOfSteps steps a sample).
    */
   vtkSetClampMacro(StreamlineReuseDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(StreamlineReuseDistance, double);
@@ -413,8 +414,9 @@ protected:
   /// False on error.
   bool PrepareNoise(vtkOFB* input);
 
-  /// The kernel's 2 n + 1 weights for n steps each way (index n is t = 0).
-  std::vector<double> ComputeKernel(int n) const;
+  /// The kernel's 2 n + 1 weights for n steps each way (index n is t = 0); without
+  /// `animation`, without the factor of Animate.
+  std::vector<double> ComputeKernel(int n, bool animation = true) const;
 
   /// The input's arrays shared, with "LIC" (values clamped, the mask value where masked)
   /// and "LICMask" added.

@@ -42,6 +42,12 @@ public:
   {
     return this->Add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p)));
   }
+  vtkOFBLICCacheKey& Add(const vtkOFBLICCacheKey& o)
+  {
+    this->Values.insert(this->Values.end(), o.Values.begin(), o.Values.end());
+    return *this;
+  }
+  bool empty() const { return this->Values.empty(); }
   bool operator==(const vtkOFBLICCacheKey& o) const { return this->Values == o.Values; }
   bool operator!=(const vtkOFBLICCacheKey& o) const { return !(*this == o); }
 
@@ -257,8 +263,10 @@ public:
   std::vector<std::unique_ptr<vtkOFBLICRunStore>> Runs; // one a thread that traced
   std::vector<const vtkTypeInt32*> TileRuns;            // per tile: its first run id
   std::vector<vtkIdType> TileRunLengths;                // per tile: its ids in the runs
-  vtkOFBLICBuffer<unsigned char> Covered; // samples given their streamline, while tracing
-  vtkOFBLICBuffer<float> Values;          // work buffers, kept to avoid allocating every update
+  vtkOFBLICCacheKey MomentsKey;              // Moments: LinesKey, NoiseKey and the kernel
+  vtkOFBLICBuffer<vtkOFBLICMoments> Moments; // per sample (Animate on: re-convolution)
+  vtkOFBLICBuffer<unsigned char> Covered;    // samples given their streamline, while tracing
+  vtkOFBLICBuffer<float> Values;             // work buffers, kept to avoid allocating every update
   vtkOFBLICBuffer<float> Scratch;
   // The high-pass's neighbours of each sample (EnhancedLIC; see vtkOFBLICHighPass): a
   // count, or SearchNeighbours, and up to MaxNeighbours offsets to their ids.
@@ -278,7 +286,7 @@ public:
 
   void Clear()
   {
-    this->SamplesKey = this->NoiseKey = this->LinesKey = vtkOFBLICCacheKey();
+    this->SamplesKey = this->NoiseKey = this->LinesKey = this->MomentsKey = vtkOFBLICCacheKey();
     this->Masked = 0;
     this->Samples.Release();
     this->Mask.Release();
@@ -298,6 +306,8 @@ public:
 
   void ReleaseLines()
   {
+    this->MomentsKey = vtkOFBLICCacheKey();
+    this->Moments.Release();
     this->Where.Release();
     this->Runs.clear();
     std::vector<const vtkTypeInt32*>().swap(this->TileRuns);
@@ -307,6 +317,7 @@ public:
   std::size_t LinesBytes() const
   {
     std::size_t bytes = this->Where.capacity() * sizeof(vtkTypeInt32) +
+      this->Moments.capacity() * sizeof(vtkOFBLICMoments) +
       this->TileRuns.capacity() * sizeof(const vtkTypeInt32*) +
       this->TileRunLengths.capacity() * sizeof(vtkIdType);
     for (const auto& r : this->Runs)

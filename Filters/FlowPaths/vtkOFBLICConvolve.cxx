@@ -79,12 +79,43 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
   bool keep,
   bool trace,
   const std::vector<double>& weights,
+  const vtkOFBLICKernelParts* parts,
+  bool recombine,
   const float* input,
   float* output,
   double progress0,
   double progress1)
 {
   vtkOFBLICCache& cache = this->Cache;
+  parts = keep ? parts : nullptr;
+  recombine = recombine && parts && !trace;
+  if (parts && !recombine)
+  {
+    cache.Moments.resize(cache.Mask.size());
+  }
+  vtkOFBLICMoments* moments = parts ? cache.Moments.data() : nullptr;
+  if (recombine)
+  {
+    // Another phase: the kept moments combined in the order of the samples, no run read.
+    const vtkIdType n = static_cast<vtkIdType>(cache.Mask.size());
+    const unsigned char* masked = cache.Mask.data();
+    vtkSMPTools::For(0,
+      n,
+      1 << 16,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          output[i] = masked[i] ? input[i] : parts->Combine(moments[i], input[i]);
+        }
+      });
+    if (self->GetAbortExecute())
+    {
+      return false;
+    }
+    self->UpdateProgress(progress1);
+    return true;
+  }
   const unsigned char* mask = cache.Mask.data();
   const int steps = tracer.NumberOfSteps;
   const double* w = weights.data();
@@ -162,7 +193,12 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
         tiles.ForEachSample(t, [&](vtkIdType i) { VTKOFB_PREFETCH(input + i); });
         std::vector<float>& values = localValues.Local();
         const vtkIdType length = runs ? cache.TileRunLengths[t] : 0;
-        if (runs)
+        // Runs traced just now are copied (their ids were just written, the values not
+        // yet read); kept runs (a second pass, a re-convolution) are read through the ids
+        // (the tile's input stays in the cache; a copy would read and write every id of
+        // the runs, most of them more than once).
+        const bool copy = runs && trace;
+        if (copy)
         {
           values.resize(std::max<std::size_t>(values.size(), length));
           for (vtkIdType k = 0; k < length; ++k)
@@ -177,16 +213,40 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
             {
               output[i] = input[i];
             }
+            else if (parts)
+            {
+              const vtkIdType at = where[i];
+              if (copy)
+              {
+                parts->Gather(runs + at, values.data() + at, moments[i]);
+              }
+              else
+              {
+                parts->Gather(
+                  runs + at, vtkOFBLICTracer::ThroughIds{ runs + at, input }, moments[i]);
+              }
+              output[i] = parts->Combine(moments[i], input[i]);
+            }
+            else if (keep && !copy)
+            {
+              const vtkIdType at = where[i];
+              const bool inside = at >= steps && at + steps < length;
+              const vtkOFBLICTracer::ThroughIds v{ runs + at, input };
+              if (!inside ||
+                !vtkOFBLICTracer::GatherWhole(runs + at, v, steps, w, inverseTotal, output[i]))
+              {
+                output[i] = vtkOFBLICTracer::GatherRun(runs + at, v, steps, w, inverseTotal);
+              }
+            }
             else if (keep)
             {
               const vtkIdType at = where[i];
               const bool inside = at >= steps && at + steps < length;
+              const float* v = values.data() + at;
               if (!inside ||
-                !vtkOFBLICTracer::GatherWhole(
-                  runs + at, values.data() + at, steps, w, inverseTotal, output[i]))
+                !vtkOFBLICTracer::GatherWhole(runs + at, v, steps, w, inverseTotal, output[i]))
               {
-                output[i] =
-                  vtkOFBLICTracer::GatherRun(runs + at, values.data() + at, steps, w, inverseTotal);
+                output[i] = vtkOFBLICTracer::GatherRun(runs + at, v, steps, w, inverseTotal);
               }
             }
             else

@@ -438,8 +438,9 @@ public:
    * v[s] the input value at at[s] (the run's values copied beside it, so that the window
    * is read contiguously; a gather through the ids waited on its loads).
    */
+  template<typename Values>
   static float GatherRun(const vtkTypeInt32* at,
-    const float* v,
+    const Values& v,
     int n,
     const double* weights,
     double inverseTotal)
@@ -473,8 +474,9 @@ public:
    * otherwise. (A run's values are contiguous, so the chain of additions of one
    * accumulator, not the loads, is what GatherRun waits on.)
    */
+  template<typename Values>
   static bool GatherWhole(const vtkTypeInt32* at,
-    const float* v,
+    const Values& v,
     int n,
     const double* weights,
     double inverseTotal,
@@ -489,24 +491,35 @@ public:
     {
       return false;
     }
-    const float* x = v - n; // x[k] is the value at position k - n, weights[k] its weight
+    // v[k - n] is the value at position k - n, weights[k] its weight.
     const int count = 2 * n + 1;
     double a0 = 0.0, a1 = 0.0, a2 = 0.0, a3 = 0.0;
     int k = 0;
     for (; k + 4 <= count; k += 4)
     {
-      a0 += weights[k] * x[k];
-      a1 += weights[k + 1] * x[k + 1];
-      a2 += weights[k + 2] * x[k + 2];
-      a3 += weights[k + 3] * x[k + 3];
+      a0 += weights[k] * v[k - n];
+      a1 += weights[k + 1] * v[k + 1 - n];
+      a2 += weights[k + 2] * v[k + 2 - n];
+      a3 += weights[k + 3] * v[k + 3 - n];
     }
     for (; k < count; ++k)
     {
-      a0 += weights[k] * x[k];
+      a0 += weights[k] * v[k - n];
     }
     out = static_cast<float>(((a0 + a1) + (a2 + a3)) * inverseTotal);
     return true;
   }
+
+  /**
+   * The values of a window read through its ids: (*this)[s] is input[at[s]] (for
+   * GatherRun and GatherWhole without a copy of the run's values).
+   */
+  struct ThroughIds
+  {
+    const vtkTypeInt32* At;
+    const float* Input;
+    float operator[](int s) const { return this->Input[this->At[s]]; }
+  };
 
   /**
    * 1 over the sum of the 2 n + 1 weights in the order Gather and GatherRun add them
@@ -618,6 +631,117 @@ public:
   static glm::dvec3 Vec(const float* a, vtkIdType i)
   {
     return glm::dvec3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
+  }
+};
+
+/**
+ * One sample's window of the first pass of fast LIC with Animate on, as sums that do not
+ * depend on AnimationPhase (see vtkOFBLICKernelParts): over the window's steps s in
+ * [Low, High], A = sum K(s) v(s), C = sum K(s) cos(2 pi s / n) v(s) and
+ * S = sum K(s) sin(2 pi s / n) v(s), v the noise (16 bytes a sample).
+ */
+struct vtkOFBLICMoments
+{
+  float A;
+  float C;
+  float S;
+  vtkTypeInt16 Low;
+  vtkTypeInt16 High;
+};
+
+/**
+ * The animated kernel of fast LIC in three parts, so that another AnimationPhase needs
+ * no gathering: the weight of step s, K(s) (1 + cos(2 pi (s / n + phase))) / 2
+ * (vtkOFBLIC::ComputeKernel, K the kernel without the animation), is half of
+ * K(s) + c K(s) cos(2 pi s / n) - d K(s) sin(2 pi s / n), c = cos(2 pi phase) and
+ * d = sin(2 pi phase). A sample's window is gathered once into its vtkOFBLICMoments
+ * (Gather) and each phase combines them (Combine: O(1) a sample, the weights' total
+ * over the window from prefix sums). The first computation and a re-convolution both
+ * combine, so they give the same values bit for bit.
+ */
+struct vtkOFBLICKernelParts
+{
+  int N = 0;
+  std::vector<double> Base; // 2 n + 1 entries each, index n is s = 0
+  std::vector<double> Cos;
+  std::vector<double> Sin;
+  std::vector<double> Prefix[3]; // 2 n + 2 entries: the sums of Base, Cos, Sin below index j
+  double C = 1.0;
+  double S = 0.0;
+
+  /// `base`: the 2 n + 1 weights of the kernel without the animation.
+  void Set(const std::vector<double>& base, int n, double phase)
+  {
+    const double pi = 3.141592653589793;
+    this->N = n;
+    this->Base = base;
+    this->Cos.assign(2 * n + 1, 0.0);
+    this->Sin.assign(2 * n + 1, 0.0);
+    for (int s = -n; s <= n; ++s)
+    {
+      const double t = n > 0 ? 2.0 * pi * s / n : 0.0;
+      this->Cos[s + n] = base[s + n] * std::cos(t);
+      this->Sin[s + n] = base[s + n] * std::sin(t);
+    }
+    const std::vector<double>* parts[3] = { &this->Base, &this->Cos, &this->Sin };
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Prefix[k].assign(2 * n + 2, 0.0);
+      for (int j = 0; j <= 2 * n; ++j)
+      {
+        this->Prefix[k][j + 1] = this->Prefix[k][j] + (*parts[k])[j];
+      }
+    }
+    this->C = std::cos(2.0 * pi * phase);
+    this->S = std::sin(2.0 * pi * phase);
+  }
+
+  /**
+   * The moments of the window of a kept run (as vtkOFBLICTracer::GatherRun: at[0] the
+   * sample, at[s] and at[-s] its steps, -1 where the streamline stops, v[s] the value).
+   */
+  template<typename Values>
+  void Gather(const vtkTypeInt32* at, const Values& v, vtkOFBLICMoments& m) const
+  {
+    const int n = this->N;
+    const double* base = this->Base.data() + n;
+    const double* cs = this->Cos.data() + n;
+    const double* sn = this->Sin.data() + n;
+    double a = base[0] * v[0];
+    double c = cs[0] * v[0];
+    double d = 0.0;
+    int f = 1;
+    for (; f <= n && at[f] >= 0; ++f)
+    {
+      a += base[f] * v[f];
+      c += cs[f] * v[f];
+      d += sn[f] * v[f];
+    }
+    int b = 1;
+    for (; b <= n && at[-b] >= 0; ++b)
+    {
+      a += base[-b] * v[-b];
+      c += cs[-b] * v[-b];
+      d += sn[-b] * v[-b];
+    }
+    m.A = static_cast<float>(a);
+    m.C = static_cast<float>(c);
+    m.S = static_cast<float>(d);
+    m.Low = static_cast<vtkTypeInt16>(1 - b);
+    m.High = static_cast<vtkTypeInt16>(f - 1);
+  }
+
+  /// Eq. 4 for the current phase from a sample's moments; `own`: its input value (the
+  /// result where the weights' total is not above 1e-9, as in Gather).
+  float Combine(const vtkOFBLICMoments& m, float own) const
+  {
+    const int lo = m.Low + this->N;
+    const int hi = m.High + this->N + 1;
+    const double total = (this->Prefix[0][hi] - this->Prefix[0][lo]) +
+      this->C * (this->Prefix[1][hi] - this->Prefix[1][lo]) -
+      this->S * (this->Prefix[2][hi] - this->Prefix[2][lo]);
+    const double acc = static_cast<double>(m.A) + this->C * m.C - this->S * m.S;
+    return total > 2e-9 ? static_cast<float>(acc / total) : own;
   }
 };
 

@@ -339,23 +339,26 @@ LICTimes TimeLIC(vtkOFB* ofb, int steps, const bool parts[4], bool perSample, do
 }
 
 /**
- * Bytes a sample that the LIC moves at least (the model of the bandwidth share): the
- * re-convolution streams the kept streamline (8 steps bytes), reads the mask and the
- * noise and writes the result (9 bytes), and the output reads the result and the mask
- * and writes LIC and LICMask (10 bytes); the first computation also reads the input's
- * depth, cell index, normal and field (32 bytes), writes the packed sample and the noise
- * (44 bytes) and writes the streamlines (8 steps bytes).
+ * Bytes a sample that the LIC moves at least (the model of the bandwidth share), Animate
+ * on: the re-convolution reads the kept sums of the sample's window (16 bytes), the mask
+ * and the noise and writes the result (9 bytes), and the output reads the result and the
+ * mask and writes LIC and LICMask (10 bytes); the second pass of EnhancedLIC reads the
+ * ids of its window of 2 (steps / 2) + 1 kept steps (4 bytes each), reads and writes the
+ * values (9 bytes), and the high-pass reads and writes them (16 bytes); the first
+ * computation also reads the input's depth, cell index, normal and field (32 bytes),
+ * writes the packed sample and the noise (44 bytes), and writes the streamlines (about
+ * steps + 1 ids of 4 bytes) and the kept sums.
  */
 double BytesPerSample(int steps, bool first, bool enhanced)
 {
-  double bytes = 8.0 * steps + 19.0;
+  double bytes = 16.0 + 9.0 + 10.0;
   if (enhanced)
   {
-    bytes += 8.0 * steps + 9.0 + 16.0; // the second pass, and the high-pass's read and write
+    bytes += 4.0 * (2 * (steps / 2) + 1) + 9.0 + 16.0;
   }
   if (first)
   {
-    bytes += 76.0 + 8.0 * steps;
+    bytes += 76.0 + 4.0 * (steps + 1) + 16.0;
   }
   return bytes;
 }

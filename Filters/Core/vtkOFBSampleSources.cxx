@@ -335,22 +335,47 @@ struct TupleJob : ResampleJob
       }
       return;
     }
+    // The common component counts with the count known to the compiler.
+    switch (nc)
+    {
+      case 1:
+        this->Interpolate<1>(begin, end, tri, w1, w2, 1);
+        break;
+      case 3:
+        this->Interpolate<3>(begin, end, tri, w1, w2, 3);
+        break;
+      default:
+        this->Interpolate<0>(begin, end, tri, w1, w2, nc);
+        break;
+    }
+  }
+
+  /// The interpolation of samples [begin, end): NC components (0: `nc`, known at run time).
+  template<int NCT>
+  void Interpolate(vtkIdType begin,
+    vtkIdType end,
+    const vtkTypeUInt32* VTK_OFB_RESTRICT tri,
+    const float* VTK_OFB_RESTRICT w1,
+    const float* VTK_OFB_RESTRICT w2,
+    int nc) const
+  {
+    const int n = NCT > 0 ? NCT : nc;
     const T* VTK_OFB_RESTRICT table = this->Table.data();
     T* VTK_OFB_RESTRICT out = this->Out;
     for (vtkIdType i = begin; i < end; ++i)
     {
-      const T* c = table + 3 * static_cast<size_t>(tri[i]) * nc;
+      const T* c = table + 3 * static_cast<size_t>(tri[i]) * n;
       const double b1 = w1[i], b2 = w2[i], b0 = 1.0 - b1 - b2;
-      for (int k = 0; k < nc; ++k)
+      for (int k = 0; k < n; ++k)
       {
-        const double v = b0 * c[k] + b1 * c[nc + k] + b2 * c[2 * nc + k];
+        const double v = b0 * c[k] + b1 * c[n + k] + b2 * c[2 * n + k];
         if (std::is_integral<T>::value)
         {
-          out[i * nc + k] = static_cast<T>(std::llround(v));
+          out[i * n + k] = static_cast<T>(std::llround(v));
         }
         else
         {
-          out[i * nc + k] = static_cast<T>(v);
+          out[i * n + k] = static_cast<T>(v);
         }
       }
     }

@@ -176,8 +176,9 @@ bool CheckLeaf(const Leaf& leaf, std::string& problem)
  * step by which vtkOFBSampler builds one OFB of a composite input: a cell array
  * "BlockIndex", points shared by blocks merged, the union of the blocks' arrays.
  */
-vtkSmartPointer<vtkPolyData> MergeBlocks(
-  vtkDataObject* object, const std::vector<Leaf>& chosen, std::string& problem)
+vtkSmartPointer<vtkPolyData> MergeBlocks(vtkDataObject* object,
+  const std::vector<Leaf>& chosen,
+  std::string& problem)
 {
   for (const Leaf& leaf : chosen)
   {
@@ -402,22 +403,9 @@ bool ReadDataTriangles(const std::string& path,
   {
     return false;
   }
-  vtkNew<FirstError> errors;
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->AddObserver(vtkCommand::ErrorEvent, errors);
-  triangles->SetInputData(data.Surface);
-  triangles->PassLinesOff();
-  triangles->PassVertsOff();
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->AddObserver(vtkCommand::ErrorEvent, errors);
-  normals->SetInputConnection(triangles->GetOutputPort());
-  normals->SplittingOff(); // keep the points: the OFB interpolates point arrays
-  normals->Update();
-  vtkSmartPointer<vtkPolyData> surface = normals->GetOutput();
-  if (errors->Count > 0 || !surface || surface->GetNumberOfPolys() == 0)
+  vtkSmartPointer<vtkPolyData> surface = TrianglesWithNormals(data.Surface, path, message);
+  if (!surface)
   {
-    message = "cannot read '" + path +
-      "': " + (errors->Text.empty() ? std::string("no triangles in the file") : errors->Text);
     return false;
   }
   data.Surface = surface;

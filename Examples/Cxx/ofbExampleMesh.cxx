@@ -628,13 +628,10 @@ bool CheckPLYFile(const std::string& path, std::string& message)
   return true;
 }
 
-vtkSmartPointer<vtkPolyData> ReadSurfaceChecked(const std::string& path, std::string& message)
+vtkSmartPointer<vtkPolyData> TrianglesWithNormals(vtkPolyData* mesh,
+  const std::string& path,
+  std::string& message)
 {
-  vtkSmartPointer<vtkPolyData> mesh = ReadMeshChecked(path, message);
-  if (!mesh)
-  {
-    return nullptr;
-  }
   vtkNew<FirstError> errors;
   vtkNew<vtkTriangleFilter> triangles;
   triangles->AddObserver(vtkCommand::ErrorEvent, errors);
@@ -654,5 +651,15 @@ vtkSmartPointer<vtkPolyData> ReadSurfaceChecked(const std::string& path, std::st
     return nullptr;
   }
   return surface;
+}
+
+vtkSmartPointer<vtkPolyData> ReadSurfaceChecked(const std::string& path, std::string& message)
+{
+  vtkSmartPointer<vtkPolyData> mesh = ReadMeshChecked(path, message);
+  if (!mesh)
+  {
+    return nullptr;
+  }
+  return TrianglesWithNormals(mesh, path, message);
 }
 }

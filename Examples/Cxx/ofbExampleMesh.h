@@ -52,6 +52,12 @@ bool CheckPolyData(vtkPolyData* mesh, std::string& problem);
 /// checks above (used to check a PLY file just written); false with `message` the reason.
 bool CheckPLYFile(const std::string& path, std::string& message);
 
+/// `mesh` as triangles with point normals (points kept, not split), or nullptr and a
+/// `message` naming `path` when it has no triangles or a filter fails.
+vtkSmartPointer<vtkPolyData> TrianglesWithNormals(vtkPolyData* mesh,
+  const std::string& path,
+  std::string& message);
+
 /// As ReadMeshChecked, as triangles (lines and vertices dropped) with point normals (not
 /// split at sharp edges: the points stay those of the file).
 vtkSmartPointer<vtkPolyData> ReadSurfaceChecked(const std::string& path, std::string& message);

@@ -8,6 +8,7 @@
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
+#include "vtkOFBLIC.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -98,6 +99,23 @@ inline vtkSmartPointer<vtkPolyData> MakePipeWithBump(int around = 256, int along
   tilted->Update();
   vtkSmartPointer<vtkPolyData> out = tilted->GetOutput();
   return out;
+}
+
+/// Run a LIC filter on `ofb` and return its output (a new object).
+inline vtkSmartPointer<vtkOFB> RunLIC(vtkOFBLIC* lic, vtkOFB* ofb)
+{
+  lic->SetInputData(ofb);
+  lic->Update();
+  vtkSmartPointer<vtkOFB> out = vtkSmartPointer<vtkOFB>::New();
+  out->ShallowCopy(lic->GetOutput());
+  return out;
+}
+
+/// The "LIC" sample array's values, or nullptr.
+inline float* LICValues(vtkOFB* ofb)
+{
+  vtkFloatArray* a = vtkFloatArray::SafeDownCast(ofb->GetSampleData()->GetArray("LIC"));
+  return a ? a->GetPointer(0) : nullptr;
 }
 
 /// The same vector `dir` everywhere.

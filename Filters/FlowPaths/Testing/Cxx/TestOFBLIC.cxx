@@ -35,21 +35,6 @@ using namespace vtkofbtest;
 
 namespace
 {
-/// Run a LIC filter on `ofb` and return its output (a new object).
-vtkSmartPointer<vtkOFB> RunLIC(vtkOFBLIC* lic, vtkOFB* ofb)
-{
-  lic->SetInputData(ofb);
-  lic->Update();
-  vtkSmartPointer<vtkOFB> out = vtkSmartPointer<vtkOFB>::New();
-  out->ShallowCopy(lic->GetOutput());
-  return out;
-}
-
-float* LICValues(vtkOFB* ofb)
-{
-  vtkFloatArray* a = vtkFloatArray::SafeDownCast(ofb->GetSampleData()->GetArray("LIC"));
-  return a ? a->GetPointer(0) : nullptr;
-}
 
 /// The filter run on 1 thread, then again on 2 (the SMP default restored after).
 void RunOnOneAndTwoThreads(vtkOFBLIC* lic,

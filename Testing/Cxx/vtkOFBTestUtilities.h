@@ -3,15 +3,19 @@
 #define vtkOFBTestUtilities_h
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
 #include "vtkCommand.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkMinimalStandardRandomSequence.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBReadMesh.h"
 #include "vtkOFBSampler.h"
 #include "vtkPlaneSource.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
@@ -162,6 +166,54 @@ inline vtkSmartPointer<vtkOFB> Build(vtkPolyData* mesh, int resolution)
   sampler->Update();
   vtkSmartPointer<vtkOFB> ofb = sampler->GetOutput();
   return ofb;
+}
+
+/// The mean of the points of cell `c` of `mesh`.
+inline void CellCentre(vtkPolyData* mesh, vtkIdType c, double centre[3])
+{
+  vtkIdType npts;
+  const vtkIdType* pts;
+  mesh->GetCellPoints(c, npts, pts);
+  centre[0] = centre[1] = centre[2] = 0.0;
+  for (vtkIdType k = 0; k < npts; ++k)
+  {
+    double p[3];
+    mesh->GetPoint(pts[k], p);
+    for (int j = 0; j < 3; ++j)
+    {
+      centre[j] += p[j] / npts;
+    }
+  }
+}
+
+/// The quadrant of a point about the z axis: 0..3 from the signs of x (1) and y (2).
+inline int Quadrant(const double x[3])
+{
+  return (x[0] >= 0.0 ? 1 : 0) + (x[1] >= 0.0 ? 2 : 0);
+}
+
+/// `mesh` cut into four polydata blocks by the quadrants of its cell centres (block q
+/// holds quadrant q, with its own points and the point and cell data).
+inline vtkSmartPointer<vtkMultiBlockDataSet> CutIntoQuadrants(vtkPolyData* mesh)
+{
+  vtkNew<vtkIdList> ids[4];
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    double centre[3];
+    CellCentre(mesh, c, centre);
+    ids[Quadrant(centre)]->InsertNextId(c);
+  }
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  for (int q = 0; q < 4; ++q)
+  {
+    vtkNew<vtkPolyData> block;
+    block->AllocateEstimate(ids[q]->GetNumberOfIds(), 3);
+    block->GetPointData()->CopyAllocate(mesh->GetPointData());
+    block->GetCellData()->CopyAllocate(mesh->GetCellData());
+    block->CopyCells(mesh, ids[q]);
+    blocks->SetBlock(q, block);
+  }
+  return blocks;
 }
 }
 

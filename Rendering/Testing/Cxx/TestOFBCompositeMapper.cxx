@@ -37,40 +37,13 @@ using Pixel = std::array<int, 3>;
 /// The patch of a point: 1..4 (its flat index) from the signs of x and y.
 int Patch(const double x[3])
 {
-  return 1 + (x[0] >= 0.0 ? 1 : 0) + (x[1] >= 0.0 ? 2 : 0);
+  return 1 + vtkofbtest::Quadrant(x);
 }
 
-/// `sphere` cut into four polydata blocks by the signs of x and y of the cell centres.
+/// `sphere` cut into four polydata blocks by the signs of x and y of its cell centres.
 vtkSmartPointer<vtkMultiBlockDataSet> CutSphere(vtkPolyData* sphere)
 {
-  vtkNew<vtkIdList> ids[4];
-  for (vtkIdType c = 0; c < sphere->GetNumberOfCells(); ++c)
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    sphere->GetCellPoints(c, npts, pts);
-    double centre[3] = { 0.0, 0.0, 0.0 };
-    for (vtkIdType k = 0; k < npts; ++k)
-    {
-      double p[3];
-      sphere->GetPoint(pts[k], p);
-      for (int j = 0; j < 3; ++j)
-      {
-        centre[j] += p[j] / npts;
-      }
-    }
-    ids[Patch(centre) - 1]->InsertNextId(c);
-  }
-  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
-  for (int q = 0; q < 4; ++q)
-  {
-    vtkNew<vtkPolyData> block;
-    block->AllocateEstimate(ids[q]->GetNumberOfIds(), 3);
-    block->GetPointData()->CopyAllocate(sphere->GetPointData());
-    block->CopyCells(sphere, ids[q]);
-    blocks->SetBlock(q, block);
-  }
-  return blocks;
+  return vtkofbtest::CutIntoQuadrants(sphere);
 }
 
 vtkSmartPointer<vtkOFB> Build(vtkDataObject* input, int backend, vtkRenderWindow* window)

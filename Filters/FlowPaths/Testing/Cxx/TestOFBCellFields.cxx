@@ -39,19 +39,8 @@ vtkSmartPointer<vtkPolyData> CellFieldSphere(bool nanCells)
   const VectorField rotation = RotationField(ZAxis);
   for (vtkIdType c = 0; c < sphere->GetNumberOfCells(); ++c)
   {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    sphere->GetCellPoints(c, npts, pts);
-    double centre[3] = { 0.0, 0.0, 0.0 };
-    for (vtkIdType k = 0; k < npts; ++k)
-    {
-      double p[3];
-      sphere->GetPoint(pts[k], p);
-      for (int j = 0; j < 3; ++j)
-      {
-        centre[j] += p[j] / npts;
-      }
-    }
+    double centre[3];
+    CellCentre(sphere, c, centre);
     double v[3];
     rotation(centre, v);
     if (nanCells && c % 97 == 0)

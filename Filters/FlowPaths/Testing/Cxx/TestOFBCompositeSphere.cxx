@@ -29,7 +29,7 @@ constexpr int Resolution = 128;
 /// The patch of a point: 0..3 from the signs of x and y.
 int Patch(const double x[3])
 {
-  return (x[0] >= 0.0 ? 1 : 0) + (x[1] >= 0.0 ? 2 : 0);
+  return Quadrant(x);
 }
 
 /// The sphere with the rotation about z as its point vectors "Flow".
@@ -38,38 +38,10 @@ vtkSmartPointer<vtkPolyData> FlowSphere()
   return WithField(MakeSphere(1.0, 64), RotationField(ZAxis));
 }
 
-/// `sphere` cut into four polydata blocks (each with its own points and point data).
+/// `sphere` cut into four polydata blocks by the signs of x and y of its cell centres.
 vtkSmartPointer<vtkMultiBlockDataSet> CutSphere(vtkPolyData* sphere)
 {
-  vtkNew<vtkIdList> ids[4];
-  for (vtkIdType c = 0; c < sphere->GetNumberOfCells(); ++c)
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    sphere->GetCellPoints(c, npts, pts);
-    double centre[3] = { 0.0, 0.0, 0.0 };
-    for (vtkIdType k = 0; k < npts; ++k)
-    {
-      double p[3];
-      sphere->GetPoint(pts[k], p);
-      for (int j = 0; j < 3; ++j)
-      {
-        centre[j] += p[j] / npts;
-      }
-    }
-    ids[Patch(centre)]->InsertNextId(c);
-  }
-  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
-  for (int q = 0; q < 4; ++q)
-  {
-    vtkNew<vtkPolyData> block;
-    block->AllocateEstimate(ids[q]->GetNumberOfIds(), 3);
-    block->GetPointData()->CopyAllocate(sphere->GetPointData());
-    block->GetCellData()->CopyAllocate(sphere->GetCellData());
-    block->CopyCells(sphere, ids[q]);
-    blocks->SetBlock(q, block);
-  }
-  return blocks;
+  return CutIntoQuadrants(sphere);
 }
 
 vtkSmartPointer<vtkOFB> Sample(vtkDataObject* input)

@@ -9,6 +9,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
+#include "vtkSMPTools.h"
 
 #include <cstdlib>
 #include <string>
@@ -75,6 +76,28 @@ int vtkOFBBuilder::RequestData(vtkInformation* request,
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBBuilder::SetMeasureOpenGLPhases(bool measure)
+{
+  if (this->Internals->GLBackend->GetMeasurePhases() != measure)
+  {
+    this->Internals->GLBackend->SetMeasurePhases(measure);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBBuilder::GetMeasureOpenGLPhases() const
+{
+  return this->Internals->GLBackend->GetMeasurePhases();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkOFBBuilder::GetLastOpenGLPhaseTimes() const
+{
+  return this->Internals->GLBackend->GetLastPhaseTimes().c_str();
+}
+
+//------------------------------------------------------------------------------
 vtkOFBSamplerBackend* vtkOFBBuilder::SelectBackend()
 {
   if (this->Internals->GLBackend->GetRenderWindow())
@@ -110,9 +133,11 @@ vtkOpenGLRenderWindow* vtkOFBBuilder::FindOpenGLWindow(vtkSmartPointer<vtkRender
   if (window)
   {
     useGL = vtkOFBGLSampler::IsSupported(window, why);
-    if (useGL && this->Backend == BACKEND_AUTO && vtkOFBGLSampler::IsSoftwareRenderer(window))
+    if (useGL && this->Backend == BACKEND_AUTO &&
+      (vtkSMPTools::GetEstimatedNumberOfThreads() > 1 ||
+        vtkOFBGLSampler::IsSoftwareRenderer(window)))
     {
-      useGL = false; // the multi-threaded CPU sampler beats a software rasterizer
+      useGL = false; // the CPU sampler is faster from two threads on (see the header)
     }
   }
   if (!useGL && this->Backend == BACKEND_OPENGL)
@@ -130,4 +155,5 @@ void vtkOFBBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Backend: " << vtkOFBBuilder::GetBackendAsString(this->Backend) << "\n";
   os << indent << "LastBackend: " << vtkOFBBuilder::GetBackendAsString(this->LastBackend) << "\n";
   os << indent << "RenderWindow: " << this->RenderWindow << "\n";
+  os << indent << "MeasureOpenGLPhases: " << this->GetMeasureOpenGLPhases() << "\n";
 }

@@ -18,9 +18,13 @@
  *   depth (no limit on depth complexity). The sample arrays are then interpolated
  *   from the barycentric coordinates by the same code as the CPU backend. Needs
  *   OpenGL 4.3 (IsSupported). GL state is restored afterwards.
- * - `BACKEND_AUTO` (default): OpenGL when a render window is set whose context supports it
- *   and is a hardware renderer; the CPU on software renderers (llvmpipe), where
- *   the multi-threaded CPU sampler is faster, and when no window is set.
+ * - `BACKEND_AUTO` (default): the CPU, unless vtkSMPTools runs a single thread and a
+ *   render window is set whose context supports the OpenGL backend on a hardware
+ *   renderer. Measured (docs/benchmarks.md), the CPU sampler is faster from two
+ *   threads on: the OpenGL backend reads every sample back (16 bytes) and
+ *   interpolates the arrays on the CPU all the same, and on an NVIDIA H200 the
+ *   CPU with 2 threads built 1.0-3.2x faster, with 16 threads 1.0-5.6x; on
+ *   software renderers (llvmpipe) the CPU is 4-11x faster.
  *
  * Whenever OpenGL was asked for and cannot be used (no display, an old context, a
  * frame larger than the context's viewports, a GPU allocation failure), the
@@ -81,6 +85,18 @@ public:
    * before any build.
    */
   vtkGetMacro(LastBackend, int);
+
+  ///@{
+  /**
+   * Whether the OpenGL backend times its phases (default off; each phase then ends
+   * with a glFinish). GetLastOpenGLPhaseTimes() gives the last OpenGL build's
+   * phases in milliseconds ("compile 0.4, upload 1.2, ..."), empty when off.
+   */
+  void SetMeasureOpenGLPhases(bool measure);
+  bool GetMeasureOpenGLPhases() const;
+  vtkBooleanMacro(MeasureOpenGLPhases, bool);
+  const char* GetLastOpenGLPhaseTimes() const;
+  ///@}
 
   /**
    * Whether the context of `renWin` can run the OpenGL backend (OpenGL 4.3 with

@@ -8,6 +8,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkSMPTools.h"
+#include "vtkTimerLog.h"
 #include "vtkTypeUInt32Array.h"
 #include "vtk_glew.h"
 
@@ -19,6 +21,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <memory>
+#include <new>
 #include <sstream>
 
 namespace
@@ -40,16 +45,97 @@ std::string Source(const char* body, const std::string& defines)
   return s.replace(at, marker.size(), header);
 }
 
-/// Owns the GL objects of one build and deletes them, whatever the way out.
+/// A program of `stages`; 0 with `error` set when a stage does not compile or link.
+GLuint CompileProgram(std::initializer_list<std::pair<GLenum, std::string>> stages,
+  std::string& error)
+{
+  GLuint program = glCreateProgram();
+  for (const auto& stage : stages)
+  {
+    GLuint shader = glCreateShader(stage.first);
+    const char* text = stage.second.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok)
+    {
+      char log[2048] = { 0 };
+      glGetShaderInfoLog(shader, sizeof(log) - 1, nullptr, log);
+      error = std::string("shader compilation failed: ") + log;
+      glDeleteShader(shader);
+      glDeleteProgram(program);
+      return 0;
+    }
+    glAttachShader(program, shader);
+    glDeleteShader(shader); // freed with the program
+  }
+  glLinkProgram(program);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok)
+  {
+    char log[2048] = { 0 };
+    glGetProgramInfoLog(program, sizeof(log) - 1, nullptr, log);
+    error = std::string("shader link failed: ") + log;
+    glDeleteProgram(program);
+    return 0;
+  }
+  return program;
+}
+
+/// The programs of a build, by index into a GLuint[NumberOfPrograms].
+enum ProgramIndex
+{
+  COUNT_PROGRAM,
+  FILL_PROGRAM,
+  SCAN_PROGRAM, // three kernels: SCAN_PROGRAM + 0, 1, 2
+  SORT_PROGRAM = SCAN_PROGRAM + 3,
+  NumberOfPrograms
+};
+
+/// The counting and filling draws, the three scan kernels and the sort, in the
+/// current context; on failure none is kept and `error` says why.
+bool CompileBuildPrograms(GLuint programs[NumberOfPrograms], std::string& error)
+{
+  const std::string vertex = Source(vtkOFBBuildVS, "");
+  const std::string geometry = Source(vtkOFBBuildGS, "");
+  programs[COUNT_PROGRAM] = CompileProgram({ { GL_VERTEX_SHADER, vertex },
+                                             { GL_GEOMETRY_SHADER, geometry },
+                                             { GL_FRAGMENT_SHADER, Source(vtkOFBBuildFS, "") } },
+    error);
+  programs[FILL_PROGRAM] =
+    CompileProgram({ { GL_VERTEX_SHADER, vertex },
+                     { GL_GEOMETRY_SHADER, geometry },
+                     { GL_FRAGMENT_SHADER, Source(vtkOFBBuildFS, "#define FILL 1\n") } },
+      error);
+  for (int k = 0; k < 3; ++k)
+  {
+    const std::string kernel = "#define KERNEL " + std::to_string(k) + "\n";
+    programs[SCAN_PROGRAM + k] =
+      CompileProgram({ { GL_COMPUTE_SHADER, Source(vtkOFBScanCS, kernel) } }, error);
+  }
+  programs[SORT_PROGRAM] =
+    CompileProgram({ { GL_COMPUTE_SHADER, Source(vtkOFBSortCS, "") } }, error);
+  if (std::find(programs, programs + NumberOfPrograms, 0u) == programs + NumberOfPrograms)
+  {
+    return true;
+  }
+  for (int k = 0; k < NumberOfPrograms; ++k)
+  {
+    glDeleteProgram(programs[k]); // 0 is ignored
+    programs[k] = 0;
+  }
+  return false;
+}
+
+/// Owns the buffers, vertex array and framebuffer of one build and deletes them,
+/// whatever the way out.
 class Resources
 {
 public:
   ~Resources()
   {
-    for (GLuint p : this->Programs)
-    {
-      glDeleteProgram(p);
-    }
     if (!this->Buffers.empty())
     {
       glDeleteBuffers(static_cast<GLsizei>(this->Buffers.size()), this->Buffers.data());
@@ -62,42 +148,6 @@ public:
     {
       glDeleteFramebuffers(1, &this->FBO);
     }
-  }
-
-  GLuint Compile(std::initializer_list<std::pair<GLenum, std::string>> stages, std::string& error)
-  {
-    GLuint program = glCreateProgram();
-    this->Programs.push_back(program);
-    for (const auto& stage : stages)
-    {
-      GLuint shader = glCreateShader(stage.first);
-      const char* text = stage.second.c_str();
-      glShaderSource(shader, 1, &text, nullptr);
-      glCompileShader(shader);
-      GLint ok = 0;
-      glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-      if (!ok)
-      {
-        char log[2048] = { 0 };
-        glGetShaderInfoLog(shader, sizeof(log) - 1, nullptr, log);
-        error = std::string("shader compilation failed: ") + log;
-        glDeleteShader(shader);
-        return 0;
-      }
-      glAttachShader(program, shader);
-      glDeleteShader(shader); // freed with the program
-    }
-    glLinkProgram(program);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok)
-    {
-      char log[2048] = { 0 };
-      glGetProgramInfoLog(program, sizeof(log) - 1, nullptr, log);
-      error = std::string("shader link failed: ") + log;
-      return 0;
-    }
-    return program;
   }
 
   /// A buffer of `bytes` (at least 4) with optional data; 0 on an allocation error.
@@ -116,7 +166,6 @@ public:
     return glGetError() == GL_NO_ERROR ? b : 0;
   }
 
-  std::vector<GLuint> Programs;
   std::vector<GLuint> Buffers;
   GLuint VAO = 0;
   GLuint FBO = 0;
@@ -137,15 +186,66 @@ void Dispatch(GLuint program, const char* first, GLuint groups, GLuint groupSize
   }
 }
 
-/// Read `bytes` of buffer `b` into `out`.
+/**
+ * Read `bytes` of buffer `b` into `out`. With buffer storage (OpenGL 4.4), through
+ * a staging buffer in client memory: the GPU copies chunks into it at bus speed and
+ * the threads copy them out. Else with glGetBufferSubData, which some drivers do
+ * through a slow synchronous path (0.6 GB/s measured on an NVIDIA H200).
+ */
 void Download(GLuint b, size_t bytes, void* out)
 {
   if (bytes == 0)
   {
     return;
   }
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, b);
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), out);
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (major * 10 + minor < 44 || !glBufferStorage)
+  {
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, b);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), out);
+    return;
+  }
+  constexpr size_t Chunk = size_t(64) << 20;
+  const size_t stagingBytes = std::min(bytes, Chunk);
+  GLuint staging = 0;
+  glGenBuffers(1, &staging);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, staging);
+  glBufferStorage(GL_COPY_WRITE_BUFFER,
+    static_cast<GLsizeiptr>(stagingBytes),
+    nullptr,
+    GL_MAP_READ_BIT | GL_CLIENT_STORAGE_BIT);
+  glBindBuffer(GL_COPY_READ_BUFFER, b);
+  auto* target = static_cast<unsigned char*>(out);
+  for (size_t at = 0; at < bytes; at += Chunk)
+  {
+    const size_t n = std::min(Chunk, bytes - at);
+    glCopyBufferSubData(GL_COPY_READ_BUFFER,
+      GL_COPY_WRITE_BUFFER,
+      static_cast<GLintptr>(at),
+      0,
+      static_cast<GLsizeiptr>(n));
+    const auto* source = static_cast<const unsigned char*>(
+      glMapBufferRange(GL_COPY_WRITE_BUFFER, 0, static_cast<GLsizeiptr>(n), GL_MAP_READ_BIT));
+    if (!source)
+    {
+      break; // the caller's glGetError reports it
+    }
+    constexpr size_t Piece = size_t(1) << 20;
+    vtkSMPTools::For(0,
+      static_cast<vtkIdType>((n + Piece - 1) / Piece),
+      [&](vtkIdType first, vtkIdType last)
+      {
+        const size_t begin = static_cast<size_t>(first) * Piece;
+        const size_t end = std::min(n, static_cast<size_t>(last) * Piece);
+        std::memcpy(target + at + begin, source + begin, end - begin);
+      });
+    glUnmapBuffer(GL_COPY_WRITE_BUFFER);
+  }
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  glDeleteBuffers(1, &staging);
 }
 
 /**
@@ -179,7 +279,7 @@ public:
 
   ~ScopedBuildState()
   {
-    for (GLuint binding = 0; binding < 6; ++binding)
+    for (GLuint binding = 0; binding < 7; ++binding)
     {
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
     }
@@ -216,8 +316,10 @@ public:
     vtkOFB* output,
     GLint side,
     vtkOpenGLState* state,
+    const GLuint* programs,
     std::string& error)
-    : Surface(surface)
+    : Programs(programs)
+    , Surface(surface)
     , Output(output)
     , Side(side)
     , State(state)
@@ -225,43 +327,6 @@ public:
     , NumberOfCells(output->GetNumberOfCells())
     , Blocks(static_cast<GLuint>((this->NumberOfCells + BlockSize - 1) / BlockSize))
   {
-  }
-
-  /// The counting and filling draws, the three scan kernels and the sort.
-  bool CompilePrograms()
-  {
-    const std::string vertex = Source(vtkOFBBuildVS, "");
-    const std::string geometry = Source(vtkOFBBuildGS, "");
-    this->CountProgram = this->GL.Compile({ { GL_VERTEX_SHADER, vertex },
-                                            { GL_GEOMETRY_SHADER, geometry },
-                                            { GL_FRAGMENT_SHADER, Source(vtkOFBBuildFS, "") } },
-      this->Error);
-    if (!this->CountProgram)
-    {
-      return false;
-    }
-    this->FillProgram =
-      this->GL.Compile({ { GL_VERTEX_SHADER, vertex },
-                         { GL_GEOMETRY_SHADER, geometry },
-                         { GL_FRAGMENT_SHADER, Source(vtkOFBBuildFS, "#define FILL 1\n") } },
-        this->Error);
-    if (!this->FillProgram)
-    {
-      return false;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      const std::string kernel = "#define KERNEL " + std::to_string(k) + "\n";
-      this->ScanPrograms[k] =
-        this->GL.Compile({ { GL_COMPUTE_SHADER, Source(vtkOFBScanCS, kernel) } }, this->Error);
-      if (!this->ScanPrograms[k])
-      {
-        return false;
-      }
-    }
-    this->SortProgram =
-      this->GL.Compile({ { GL_COMPUTE_SHADER, Source(vtkOFBSortCS, "") } }, this->Error);
-    return this->SortProgram != 0;
   }
 
   /// The points in cell units of the frame (doubles) and the triangles' indices.
@@ -292,7 +357,7 @@ public:
       this->Error = "cannot allocate the vertex buffers";
       return false;
     }
-    for (GLuint program : { this->CountProgram, this->FillProgram })
+    for (GLuint program : { this->Programs[COUNT_PROGRAM], this->Programs[FILL_PROGRAM] })
     {
       const GLint location = glGetAttribLocation(program, "vertexCells");
       glBindBuffer(GL_ARRAY_BUFFER, vertices);
@@ -341,7 +406,7 @@ public:
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->Counts);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->Offsets);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, this->BlockSums);
-    this->Draw(this->CountProgram);
+    this->Draw(this->Programs[COUNT_PROGRAM]);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
@@ -350,7 +415,7 @@ public:
   vtkIdType ScanCounts()
   {
     const auto nCells = static_cast<GLuint>(this->NumberOfCells);
-    const GLuint* scan = this->ScanPrograms;
+    const GLuint* scan = this->Programs + SCAN_PROGRAM;
     glUseProgram(scan[0]);
     SetUniform(scan[0], "numberOfValues", nCells);
     Dispatch(scan[0], "firstBlock", this->Blocks, 1);
@@ -377,17 +442,19 @@ public:
   {
     this->Depths = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, n * sizeof(float));
     this->Triangles = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, n * sizeof(GLuint));
-    this->Barycentrics = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, 2 * n * sizeof(float));
-    if (!this->Depths || !this->Triangles || !this->Barycentrics)
+    this->W1 = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, n * sizeof(float));
+    this->W2 = this->GL.Buffer(GL_SHADER_STORAGE_BUFFER, n * sizeof(float));
+    if (!this->Depths || !this->Triangles || !this->W1 || !this->W2)
     {
       this->Error = "cannot allocate the samples on the GPU";
       return false;
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, this->Depths);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, this->Triangles);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, this->Barycentrics);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, this->W1);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, this->W2);
     glBindVertexArray(this->GL.VAO);
-    this->Draw(this->FillProgram);
+    this->Draw(this->Programs[FILL_PROGRAM]);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     return true;
   }
@@ -396,30 +463,27 @@ public:
   void SortCells()
   {
     const auto nCells = static_cast<GLuint>(this->NumberOfCells);
-    glUseProgram(this->SortProgram);
-    SetUniform(this->SortProgram, "numberOfCells", nCells);
-    Dispatch(this->SortProgram, "firstCell", (nCells + 255) / 256, 256);
+    glUseProgram(this->Programs[SORT_PROGRAM]);
+    SetUniform(this->Programs[SORT_PROGRAM], "numberOfCells", nCells);
+    Dispatch(this->Programs[SORT_PROGRAM], "firstCell", (nCells + 255) / 256, 256);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   }
 
-  /// The offsets and depths into the output, triangles and barycentrics for interpolation.
-  bool ReadBack(vtkIdType n,
-    std::vector<vtkTypeUInt32>& triangles,
-    std::vector<float>& barycentrics)
+  /// The offsets and depths into the output, triangles and weights for interpolation.
+  bool ReadBack(vtkIdType n, vtkTypeUInt32* triangles, float* w1, float* w2)
   {
     if (!this->Output->AllocateSamples(n))
     {
       this->Error = "cannot allocate the samples";
       return false;
     }
-    triangles.resize(n);
-    barycentrics.resize(2 * n);
     Download(this->Offsets,
       (this->NumberOfCells + 1) * sizeof(GLuint),
       this->Output->GetCellOffsets()->GetPointer(0));
     Download(this->Depths, n * sizeof(float), this->Output->GetDepths()->GetPointer(0));
-    Download(this->Triangles, n * sizeof(GLuint), triangles.data());
-    Download(this->Barycentrics, 2 * n * sizeof(float), barycentrics.data());
+    Download(this->Triangles, n * sizeof(GLuint), triangles);
+    Download(this->W1, n * sizeof(float), w1);
+    Download(this->W2, n * sizeof(float), w2);
     if (glGetError() != GL_NO_ERROR)
     {
       this->Error = "an OpenGL error occurred";
@@ -450,6 +514,7 @@ private:
     glDrawElements(GL_TRIANGLES, this->NumberOfIndices, GL_UNSIGNED_INT, nullptr);
   }
 
+  const GLuint* Programs; // NumberOfPrograms, compiled
   const vtkOFBSurface& Surface;
   vtkOFB* Output;
   const GLint Side;
@@ -458,10 +523,9 @@ private:
   const vtkIdType NumberOfCells;
   const GLuint Blocks;
   Resources GL;
-  GLuint CountProgram = 0, FillProgram = 0, ScanPrograms[3] = { 0, 0, 0 }, SortProgram = 0;
   GLsizei NumberOfIndices = 0;
   GLuint Counts = 0, Offsets = 0, BlockSums = 0;
-  GLuint Depths = 0, Triangles = 0, Barycentrics = 0;
+  GLuint Depths = 0, Triangles = 0, W1 = 0, W2 = 0;
 };
 
 /**
@@ -495,11 +559,93 @@ GLint ViewportSide(const vtkIdType dims[3], std::string& error)
 
 vtkStandardNewMacro(vtkOFBGLSampler);
 
-//------------------------------------------------------------------------------
-vtkOFBGLSampler::vtkOFBGLSampler() = default;
+struct vtkOFBGLSampler::Readback
+{
+  /// Points the arrays at the job's sample sources when it records them, else at
+  /// arrays of its own (left uninitialised: the read-back fills them in parallel).
+  bool Allocate(vtkIdType n, vtkOFBSampleSources* sources)
+  {
+    if (sources && sources->RecordSamples(n))
+    {
+      this->Triangles = sources->GetTriangles();
+      this->W1 = sources->GetW1();
+      this->W2 = sources->GetW2();
+      return true;
+    }
+    try
+    {
+      this->OwnTriangles.reset(new vtkTypeUInt32[static_cast<size_t>(n)]);
+      this->OwnW1.reset(new float[static_cast<size_t>(n)]);
+      this->OwnW2.reset(new float[static_cast<size_t>(n)]);
+    }
+    catch (const std::bad_alloc&)
+    {
+      return false;
+    }
+    this->Triangles = this->OwnTriangles.get();
+    this->W1 = this->OwnW1.get();
+    this->W2 = this->OwnW2.get();
+    return true;
+  }
+
+  std::unique_ptr<vtkTypeUInt32[]> OwnTriangles;
+  std::unique_ptr<float[]> OwnW1, OwnW2;
+  vtkTypeUInt32* Triangles = nullptr;
+  float* W1 = nullptr;
+  float* W2 = nullptr;
+};
+
+/// The build programs of the last context, kept between builds: compiling them
+/// took 5 to 50 ms a build on an NVIDIA driver.
+struct vtkOFBGLSampler::ProgramCache
+{
+  /// Whether Ids hold the programs of `window`'s current context, compiling them
+  /// if not (the context is current). Programs of another window's context stay
+  /// with that context and go with it.
+  bool Ready(vtkOpenGLRenderWindow* window, std::string& error)
+  {
+    if (this->Window == window && this->ContextTime == window->GetContextCreationTime() &&
+      this->Ids[SORT_PROGRAM] != 0)
+    {
+      return true;
+    }
+    std::fill(this->Ids, this->Ids + NumberOfPrograms, 0u);
+    this->Window = window;
+    this->ContextTime = window->GetContextCreationTime();
+    return CompileBuildPrograms(this->Ids, error);
+  }
+
+  /// Deletes the programs in their context while its window lives.
+  void Release()
+  {
+    if (this->Window && this->Ids[SORT_PROGRAM] != 0 &&
+      this->ContextTime == this->Window->GetContextCreationTime())
+    {
+      this->Window->MakeCurrent();
+      for (GLuint& program : this->Ids)
+      {
+        glDeleteProgram(program);
+        program = 0;
+      }
+    }
+  }
+
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  vtkMTimeType ContextTime = 0;
+  GLuint Ids[NumberOfPrograms] = {};
+};
 
 //------------------------------------------------------------------------------
-vtkOFBGLSampler::~vtkOFBGLSampler() = default;
+vtkOFBGLSampler::vtkOFBGLSampler()
+  : Programs(new ProgramCache)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkOFBGLSampler::~vtkOFBGLSampler()
+{
+  this->Programs->Release();
+}
 
 //------------------------------------------------------------------------------
 void vtkOFBGLSampler::SetRenderWindow(vtkOpenGLRenderWindow* window)
@@ -544,10 +690,11 @@ vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
   {
     job.Algorithm->UpdateProgress(0.1);
   }
-  std::vector<vtkTypeUInt32> triangles;
-  std::vector<float> barycentrics;
+  Readback readback;
+  this->LastPhaseTimes.clear();
+  this->PhaseStart = vtkTimerLog::GetUniversalTime();
   window->PushContext();
-  const bool rasterized = this->Rasterize(window, job, triangles, barycentrics);
+  const bool rasterized = this->Rasterize(window, job, readback);
   window->PopContext();
   if (!rasterized)
   {
@@ -557,27 +704,39 @@ vtkOFBSamplerBackend::Result vtkOFBGLSampler::Sample(Job& job)
   {
     job.Algorithm->UpdateProgress(0.7);
   }
-  const vtkIdType n = output->GetNumberOfSamples();
-  std::vector<float> w1(n), w2(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    w1[i] = barycentrics[2 * i];
-    w2[i] = barycentrics[2 * i + 1];
-  }
-  barycentrics.clear();
-  if (job.Sources && job.Sources->RecordSamples(n))
-  {
-    std::copy(triangles.begin(), triangles.end(), job.Sources->GetTriangles());
-    std::copy(w1.begin(), w1.end(), job.Sources->GetW1());
-    std::copy(w2.begin(), w2.end(), job.Sources->GetW2());
-  }
-  if (!output->BuildCellIndex() ||
-    !vtkOFBSamplerBackend::InterpolateAttributes(
-      surface, output, triangles.data(), w1.data(), w2.data()))
+  if (!output->BuildCellIndex())
   {
     return RESULT_FAILED;
   }
+  this->EndPhase("cell index", false);
+  if (!vtkOFBSamplerBackend::InterpolateAttributes(
+        surface, output, readback.Triangles, readback.W1, readback.W2))
+  {
+    return RESULT_FAILED;
+  }
+  this->EndPhase("interpolate", false);
   return RESULT_BUILT;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBGLSampler::EndPhase(const char* name, bool gpu)
+{
+  if (!this->MeasurePhases)
+  {
+    return;
+  }
+  if (gpu)
+  {
+    glFinish();
+  }
+  const double now = vtkTimerLog::GetUniversalTime();
+  std::ostringstream os;
+  os.setf(std::ios::fixed);
+  os.precision(1);
+  os << (this->LastPhaseTimes.empty() ? "" : ", ") << name << " "
+     << 1000.0 * (now - this->PhaseStart);
+  this->LastPhaseTimes += os.str();
+  this->PhaseStart = now;
 }
 
 //------------------------------------------------------------------------------
@@ -585,6 +744,7 @@ void vtkOFBGLSampler::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderWindow: " << this->RenderWindow.GetPointer() << "\n";
+  os << indent << "MeasurePhases: " << this->MeasurePhases << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -639,10 +799,7 @@ bool vtkOFBGLSampler::IsSoftwareRenderer(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBGLSampler::Rasterize(vtkOpenGLRenderWindow* window,
-  Job& job,
-  std::vector<vtkTypeUInt32>& triangles,
-  std::vector<float>& barycentrics)
+bool vtkOFBGLSampler::Rasterize(vtkOpenGLRenderWindow* window, Job& job, Readback& readback)
 {
   if (!vtkOFBGLSampler::IsSupported(window, job.Error))
   {
@@ -653,20 +810,37 @@ bool vtkOFBGLSampler::Rasterize(vtkOpenGLRenderWindow* window,
   {
     return false;
   }
-  GLBuild build(*job.Surface, job.Output, side, window->GetState(), job.Error);
   ScopedBuildState saved(window->GetState());
-  if (!build.CompilePrograms() || !build.UploadGeometry() || !build.AllocateCounters())
+  if (!this->Programs->Ready(window, job.Error))
   {
     return false;
   }
+  this->EndPhase("compile", true);
+  GLBuild build(*job.Surface, job.Output, side, window->GetState(), this->Programs->Ids, job.Error);
+  if (!build.UploadGeometry() || !build.AllocateCounters())
+  {
+    return false;
+  }
+  this->EndPhase("upload", true);
   build.CountSamples();
+  this->EndPhase("count", true);
   const vtkIdType n = build.ScanCounts();
+  this->EndPhase("scan", true);
   const double bytes = this->EstimateBytes(*job.Surface, job.Output->GetDimensions(), n);
   if (!vtkOFBSamplerBackend::CheckMemoryLimit(bytes, job.MemoryLimit, job.Error) ||
     !build.FillSamples(n))
   {
     return false;
   }
+  this->EndPhase("fill", true);
   build.SortCells();
-  return build.ReadBack(n, triangles, barycentrics);
+  this->EndPhase("sort", true);
+  if (!readback.Allocate(n, job.Sources))
+  {
+    job.Error = "cannot allocate the samples' triangles and weights";
+    return false;
+  }
+  const bool read = build.ReadBack(n, readback.Triangles, readback.W1, readback.W2);
+  this->EndPhase("read back", true);
+  return read;
 }

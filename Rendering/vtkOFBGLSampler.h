@@ -24,8 +24,8 @@
 #include "vtkType.h"
 #include "vtkWeakPointer.h" // for RenderWindow
 
+#include <memory> // for std::unique_ptr
 #include <string>
-#include <vector>
 
 class vtkOFB;
 class vtkOFBSurface;
@@ -60,6 +60,22 @@ public:
    */
   static bool IsSoftwareRenderer(vtkOpenGLRenderWindow* window);
 
+  ///@{
+  /**
+   * Whether Sample() times its phases (default off: each phase then ends with a
+   * glFinish, which serialises CPU and GPU and slows the build a little).
+   */
+  vtkSetMacro(MeasurePhases, bool);
+  vtkGetMacro(MeasurePhases, bool);
+  ///@}
+
+  /**
+   * The phases of the last build, in milliseconds of wall-clock time, as
+   * "name ms" pairs separated by commas ("compile 0.4, upload 1.2, ..."); empty
+   * when MeasurePhases was off.
+   */
+  const std::string& GetLastPhaseTimes() const { return this->LastPhaseTimes; }
+
 protected:
   vtkOFBGLSampler();
   ~vtkOFBGLSampler() override;
@@ -68,20 +84,30 @@ private:
   vtkOFBGLSampler(const vtkOFBGLSampler&) = delete;
   void operator=(const vtkOFBGLSampler&) = delete;
 
+  /// Where the read-back triangles and barycentric weights go (defined in the .cxx).
+  struct Readback;
+  /// The compiled build programs of the last context (defined in the .cxx).
+  struct ProgramCache;
+
   /**
    * Rasterize `surface` into `output`, whose frame is already set, in the current
    * context of `window`. On success the output has its offsets, samples and
-   * depths, and `triangles` and `barycentrics` (2 per sample) hold what attribute
-   * interpolation needs. `error` explains a failure (context, limits,
-   * allocation); the memory of the samples is checked against `job`'s limit once
-   * their number is known.
+   * depths, and `readback` holds the triangle and the two weights of each sample
+   * that attribute interpolation needs (in the job's sample sources when it
+   * records them). `error` explains a failure (context, limits, allocation); the
+   * memory of the samples is checked against `job`'s limit once their number is
+   * known.
    */
-  bool Rasterize(vtkOpenGLRenderWindow* window,
-    Job& job,
-    std::vector<vtkTypeUInt32>& triangles,
-    std::vector<float>& barycentrics);
+  bool Rasterize(vtkOpenGLRenderWindow* window, Job& job, Readback& readback);
+
+  /// Ends the current phase `name` (after a glFinish when `gpu`) when MeasurePhases is on.
+  void EndPhase(const char* name, bool gpu);
 
   vtkWeakPointer<vtkOpenGLRenderWindow> RenderWindow;
+  std::unique_ptr<ProgramCache> Programs;
+  bool MeasurePhases = false;
+  std::string LastPhaseTimes;
+  double PhaseStart = 0.0;
 };
 
 #endif

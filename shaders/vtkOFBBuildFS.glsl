@@ -36,9 +36,13 @@ layout(std430, binding = 3) writeonly buffer Triangles
 {
   uint triangles[];
 };
-layout(std430, binding = 4) writeonly buffer Barycentrics
+layout(std430, binding = 4) writeonly buffer FirstWeights
 {
-  vec2 barycentrics[];
+  float w1s[];
+};
+layout(std430, binding = 6) writeonly buffer SecondWeights
+{
+  float w2s[];
 };
 #endif
 
@@ -61,6 +65,7 @@ void main()
   float w1 = clamp(baryCoeffs.x * d.x + baryCoeffs.y * d.y, 0.0, 1.0);
   float w2 = clamp(baryCoeffs.z * d.x + baryCoeffs.w * d.y, 0.0, 1.0 - w1);
   triangles[slot] = triangleId;
-  barycentrics[slot] = vec2(w1, w2);
+  w1s[slot] = w1;
+  w2s[slot] = w2;
 #endif
 }

@@ -16,9 +16,13 @@ layout(std430, binding = 3) buffer Triangles
 {
   uint triangles[];
 };
-layout(std430, binding = 4) buffer Barycentrics
+layout(std430, binding = 4) buffer FirstWeights
 {
-  vec2 barycentrics[];
+  float w1s[];
+};
+layout(std430, binding = 6) buffer SecondWeights
+{
+  float w2s[];
 };
 
 uniform uint numberOfCells;
@@ -37,17 +41,20 @@ void main()
   {
     float d = depths[i];
     uint t = triangles[i];
-    vec2 w = barycentrics[i];
+    float w1 = w1s[i];
+    float w2 = w2s[i];
     uint j = i;
     while (j > b && (depths[j - 1u] > d || (depths[j - 1u] == d && triangles[j - 1u] > t)))
     {
       depths[j] = depths[j - 1u];
       triangles[j] = triangles[j - 1u];
-      barycentrics[j] = barycentrics[j - 1u];
+      w1s[j] = w1s[j - 1u];
+      w2s[j] = w2s[j - 1u];
       --j;
     }
     depths[j] = d;
     triangles[j] = t;
-    barycentrics[j] = w;
+    w1s[j] = w1;
+    w2s[j] = w2;
   }
 }

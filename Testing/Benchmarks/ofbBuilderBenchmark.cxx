@@ -1,10 +1,14 @@
 // OpenGL against CPU construction of vtkOFBBuilder, measured in the same run.
 //
-//   ofbBuilderBenchmark [--repetitions N] [--resolutions 512,1024,2048] [mesh ...]
+//   ofbBuilderBenchmark [--repetitions N] [--resolutions 512,1024,2048] [--egl [N]] [--phases]
+//                       [mesh ...]
 //
 // Prints, per mesh and resolution, the median build time of each backend, the
 // samples per second and the ratio OpenGL / CPU. Run it under xvfb-run on a
-// machine without a GPU (Mesa llvmpipe), or on a GPU machine with a display.
+// machine without a GPU (Mesa llvmpipe), or on a GPU machine with a display. With
+// --egl it takes its OpenGL context from EGL device N (default 0) and needs no X
+// display: for a Linux machine with a GPU driver and no X server. --phases adds, after
+// the timed builds, one OpenGL build that times its phases (each ended by a glFinish).
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBuilder.h"
@@ -13,9 +17,15 @@
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtk_glew.h"
 
+#ifdef VTKOFB_BENCHMARK_HAVE_EGL
+#include "ofbEGLWindow.h"
+#endif
+
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -53,9 +63,25 @@ int main(int argc, char* argv[])
   int reps = 5;
   std::vector<int> resolutions = { 512, 1024, 2048 };
   std::vector<std::string> meshes;
+  int eglDevice = -1;
+  bool phases = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
+    if (arg == "--phases")
+    {
+      phases = true;
+      continue;
+    }
+    if (arg == "--egl")
+    {
+      eglDevice = 0;
+      if (i + 1 < argc && std::isdigit(static_cast<unsigned char>(argv[i + 1][0])))
+      {
+        eglDevice = std::atoi(argv[++i]);
+      }
+      continue;
+    }
     if (arg == "--repetitions" && i + 1 < argc)
     {
       reps = std::max(1, std::atoi(argv[++i]));
@@ -80,9 +106,28 @@ int main(int argc, char* argv[])
     meshes = { VTKOFB_DATA_DIR "/stanford-bunny.obj", VTKOFB_DATA_DIR "/horse.ply" };
   }
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(8, 8);
+  vtkSmartPointer<vtkRenderWindow> window;
+  if (eglDevice >= 0)
+  {
+#ifdef VTKOFB_BENCHMARK_HAVE_EGL
+    std::string why;
+    window = ofbbench::NewEGLRenderWindow(eglDevice, why);
+    if (!window)
+    {
+      std::printf("--egl: %s\n", why.c_str());
+      return 1;
+    }
+#else
+    std::printf("--egl: this build has no EGL (libegl-dev was not found)\n");
+    return 1;
+#endif
+  }
+  else
+  {
+    window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetOffScreenRendering(1);
+    window->SetSize(8, 8);
+  }
   if (!vtkOFBBuilder::IsSupported(window))
   {
     std::printf("This OpenGL context cannot run the OpenGL backend (needs 4.3).\n");
@@ -143,6 +188,14 @@ int main(int argc, char* argv[])
         glSamples / ogl / 1000.0,
         ogl / cpu,
         cpuSamples == glSamples ? "" : "  (counts differ)");
+      if (phases)
+      {
+        builder->MeasureOpenGLPhasesOn();
+        builder->Modified();
+        builder->Update();
+        std::printf("    OpenGL phases (ms): %s\n", builder->GetLastOpenGLPhaseTimes());
+        builder->MeasureOpenGLPhasesOff();
+      }
     }
   }
   return 0;

@@ -158,3 +158,73 @@ TEST(Builder, ErrorsGiveAnEmptyOutputAfterAGoodBuild)
   EXPECT_EQ(builder->GetOutput()->GetNumberOfSamples(), 0);
   observer->Delete();
 }
+
+TEST(Builder, OpenGLPhaseTimesOnlyWhenAskedFor)
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(64, 64);
+  if (!vtkOFBBuilder::IsSupported(window))
+  {
+    GTEST_SKIP() << "this machine's OpenGL cannot run the OpenGL backend (needs 4.3)";
+  }
+  vtkNew<vtkOFBBuilder> builder;
+  builder->SetInputData(MakeSphere(1.0, 32));
+  builder->SetResolution(64);
+  builder->SetBackendToOpenGL();
+  builder->SetRenderWindow(window);
+  builder->Update();
+  ASSERT_EQ(builder->GetLastBackend(), vtkOFBBuilder::BACKEND_OPENGL);
+  EXPECT_STREQ(builder->GetLastOpenGLPhaseTimes(), "");
+  const vtkIdType samples = builder->GetOutput()->GetNumberOfSamples();
+
+  builder->MeasureOpenGLPhasesOn();
+  builder->Update(); // a new setting: the builder runs again
+  const std::string phases = builder->GetLastOpenGLPhaseTimes();
+  for (const char* phase : { "compile ",
+         "upload ",
+         "count ",
+         "scan ",
+         "fill ",
+         "sort ",
+         "read back ",
+         "cell index ",
+         "interpolate " })
+  {
+    EXPECT_NE(phases.find(phase), std::string::npos) << phase << " missing in: " << phases;
+  }
+  // The timing does not change the result.
+  EXPECT_EQ(builder->GetOutput()->GetNumberOfSamples(), samples);
+}
+
+TEST(Builder, OpenGLProgramsFollowTheWindow)
+{
+  // The builder keeps its compiled programs between builds in one context; a new
+  // window (a new context) gets its own, and the old window may go first.
+  vtkSmartPointer<vtkPolyData> sphere = MakeSphere(1.0, 32);
+  vtkNew<vtkOFBBuilder> builder;
+  builder->SetInputData(sphere);
+  builder->SetResolution(64);
+  builder->SetBackendToOpenGL();
+  vtkIdType samples[3] = { 0, 0, 0 };
+  for (int round = 0; round < 3; ++round)
+  {
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetSize(64, 64);
+    if (!vtkOFBBuilder::IsSupported(window))
+    {
+      GTEST_SKIP() << "this machine's OpenGL cannot run the OpenGL backend (needs 4.3)";
+    }
+    builder->SetRenderWindow(window);
+    builder->Update();
+    builder->Modified();
+    builder->Update(); // the same context again: the kept programs
+    ASSERT_EQ(builder->GetLastBackend(), vtkOFBBuilder::BACKEND_OPENGL) << round;
+    samples[round] = builder->GetOutput()->GetNumberOfSamples();
+    builder->SetRenderWindow(nullptr);
+  }
+  EXPECT_GT(samples[0], 0);
+  EXPECT_EQ(samples[1], samples[0]);
+  EXPECT_EQ(samples[2], samples[0]);
+}

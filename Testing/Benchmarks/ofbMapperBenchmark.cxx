@@ -9,7 +9,9 @@
 // subset of nearest,idw,mipmapped,nearestmipmapped,smooth; default all), --width W --height H
 // (1280x1024), --images PREFIX (write PREFIX<k>-<mapper>.ppm of the first view of every
 // mapper), --offscreen (render off screen: the frame is not copied to the X server),
-// --painted-normals (each mode also with UsePaintedNormals, the sample normals shading).
+// --painted-normals (each mode also with UsePaintedNormals, the sample normals shading),
+// --egl [N] (an OpenGL context of EGL device N, default 0, instead of an X window: for a
+// Linux machine with a GPU driver and no X display; the frames render off screen).
 // Fairness: one window, renderer, actor, property and headlight for every mapper; each
 // timing starts from the same camera and turns it once around the surface; the mappers
 // take turns within every round (so that a change of machine load hits all of them), and
@@ -28,6 +30,9 @@
 #include "vtkOFBSampler.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
+#ifdef VTKOFB_BENCHMARK_HAVE_EGL
+#include "ofbEGLWindow.h"
+#endif
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
@@ -38,6 +43,7 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -161,6 +167,7 @@ struct Options
   int Height = 1024;
   std::string Images;
   bool OffScreen = false;
+  int EGLDevice = -1;          // --egl: the EGL device whose context renders
   bool PaintedNormals = false; // each mode also with UsePaintedNormals
   std::vector<int> Modes = { vtkOFBPolyDataMapper::LOOKUP_NEAREST,
     vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
@@ -232,6 +239,15 @@ int ParseOptions(int argc, char* argv[], Options& o)
       o.OffScreen = true;
       continue;
     }
+    if (arg == "--egl")
+    {
+      o.EGLDevice = 0;
+      if (i + 1 < argc && std::isdigit(static_cast<unsigned char>(argv[i + 1][0])))
+      {
+        o.EGLDevice = std::atoi(argv[++i]);
+      }
+      continue;
+    }
     if (arg == "--painted-normals")
     {
       o.PaintedNormals = true;
@@ -284,7 +300,7 @@ int ParseOptions(int argc, char* argv[], Options& o)
       << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
          "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped,nearestmipmapped,smooth] "
          "[--painted-normals] [--width W] "
-         "[--height H] [--images PREFIX] [--offscreen]\n";
+         "[--height H] [--images PREFIX] [--offscreen] [--egl [N]]\n";
     return arg == "--help" ? 0 : 1;
   }
   return -1;
@@ -343,7 +359,7 @@ vtkSmartPointer<vtkOFB> BuildColoredOFB(vtkPolyData* surface, int resolution)
 // actor, all kept alive so that every round only switches the actor's mapper.
 struct Bench
 {
-  vtkNew<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkActor> Actor;
   vtkNew<vtkCamera> Start;
@@ -474,9 +490,19 @@ double PrintMedians(const Bench& b, const Options& o)
 // PREFIX<k>-<mapper>.ppm of the first view of every mapper.
 void WriteImages(Bench& b, const Options& o)
 {
-  const char* files[5] = { "peer", "nearest", "idw", "mipmapped", "nearestmipmapped" };
   for (size_t m = 0; m < b.Mappers.size(); ++m)
   {
+    // peer, or the lookup mode in lower case, with "-normals" for painted normals.
+    std::string file = "peer";
+    if (auto* mapper = vtkOFBPolyDataMapper::SafeDownCast(b.Mappers[m]))
+    {
+      file = vtkOFBPolyDataMapper::GetLookupModeAsString(mapper->GetLookupMode());
+      std::transform(file.begin(),
+        file.end(),
+        file.begin(),
+        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      file += mapper->GetUsePaintedNormals() ? "-normals" : "";
+    }
     b.Actor->SetMapper(b.Mappers[m]);
     b.Renderer->GetActiveCamera()->DeepCopy(b.Start);
     b.Window->Render();
@@ -486,8 +512,7 @@ void WriteImages(Bench& b, const Options& o)
     grab->ShouldRerenderOff();
     grab->SetInputBufferTypeToRGB();
     grab->Update();
-    WritePPM(o.Images + std::to_string(m) + "-" + files[m == 0 ? 0 : 1 + o.Modes[m - 1]] + ".ppm",
-      grab->GetOutput());
+    WritePPM(o.Images + std::to_string(m) + "-" + file + ".ppm", grab->GetOutput());
   }
 }
 }
@@ -514,6 +539,26 @@ int main(int argc, char* argv[])
     return 1;
   }
   Bench bench;
+  if (options.EGLDevice >= 0)
+  {
+#ifdef VTKOFB_BENCHMARK_HAVE_EGL
+    std::string why;
+    bench.Window = ofbbench::NewEGLRenderWindow(options.EGLDevice, why);
+    if (!bench.Window)
+    {
+      std::cerr << "--egl: " << why << "\n";
+      return 1;
+    }
+    options.OffScreen = true;
+#else
+    std::cerr << "--egl: this build has no EGL (libegl-dev was not found)\n";
+    return 1;
+#endif
+  }
+  else
+  {
+    bench.Window = vtkSmartPointer<vtkRenderWindow>::New();
+  }
   if (!SetUp(bench, options, surface, colored, ofb))
   {
     return 1;

@@ -77,7 +77,9 @@ public:
 
   ///@{
   /**
-   * The sample array to bake (default empty: the OFB's active scalars, the paint).
+   * The sample array to bake (default empty: the OFB's active scalars, which are the
+   * paint unless the sampled mesh had active cell scalars, or the paint when there
+   * are no active scalars; see docs/inputs.md).
    */
   vtkSetStdStringFromCharMacro(ArrayName);
   vtkGetCharFromStdStringMacro(ArrayName);

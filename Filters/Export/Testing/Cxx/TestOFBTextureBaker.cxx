@@ -112,6 +112,31 @@ TEST(TextureBaker, PlaneTexelsAreTheClosestSamples)
 }
 
 //------------------------------------------------------------------------------
+TEST(TextureBaker, DefaultBakesTheActiveScalarsElseThePaint)
+{
+  // A sampled field that is the active scalars (as a mesh's active cell scalars become)
+  // is what the baker writes by default; without active scalars, the paint.
+  vtkSmartPointer<vtkPolyData> plane = Plane();
+  vtkSmartPointer<vtkOFB> ofb = Build(plane, 64);
+  PaintAndMarkX(ofb, 0.4, 0.9);
+  ofb->GetSampleData()->SetActiveScalars("X");
+  vtkNew<vtkOFBTextureBaker> baker;
+  vtkImageData* image = Bake(baker, plane, ofb, 16, 16);
+  vtkDataArray* baked = image->GetPointData()->GetScalars();
+  ASSERT_NE(baked, nullptr);
+  EXPECT_STREQ(baked->GetName(), "X");
+  EXPECT_EQ(baked->GetNumberOfComponents(), 1);
+
+  ofb->GetSampleData()->SetActiveScalars(nullptr);
+  baker->Modified();
+  image = Bake(baker, plane, ofb, 16, 16);
+  baked = image->GetPointData()->GetScalars();
+  ASSERT_NE(baked, nullptr);
+  EXPECT_STREQ(baked->GetName(), vtkOFB::ColorsArrayName());
+  EXPECT_EQ(baked->GetNumberOfComponents(), 4);
+}
+
+//------------------------------------------------------------------------------
 TEST(TextureBaker, PaddingFillsAroundUVIslands)
 {
   // The texture coordinates cover [0.25, 0.75]^2 only.

@@ -36,6 +36,12 @@
 #include <emmintrin.h>
 #endif
 
+// AVX on x86-64 with GCC or Clang, chosen at run time (the build targets SSE2).
+#if defined(__SSE2__) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define VTK_OFB_RESAMPLE_AVX 1
+#endif
+
 namespace vtkofb
 {
 /// Samples per block: each job runs over a block in turn while its sources are in cache.
@@ -194,6 +200,122 @@ struct ColorJob : ResampleJob
   }
 };
 
+#if defined(VTK_OFB_RESAMPLE_AVX)
+/// Whether the processor (and the system) has AVX.
+inline bool HasAVX()
+{
+  static const bool avx = __builtin_cpu_supports("avx");
+  return avx;
+}
+
+/// (b0 v0 + b1 v1) + b2 v2, lane by lane.
+__attribute__((target("avx"))) inline __m256 Barycentric(__m256 b0,
+  __m256 b1,
+  __m256 b2,
+  const __m256* v)
+{
+  return _mm256_add_ps(
+    _mm256_add_ps(_mm256_mul_ps(b0, v[0]), _mm256_mul_ps(b1, v[1])), _mm256_mul_ps(b2, v[2]));
+}
+
+/**
+ * The vectors of samples [i, end) of VectorJob, eight at a time, with AVX (no FMA:
+ * the same roundings as the scalar loop), from an i that is a multiple of 4; returns
+ * the first sample not done. The two 128-bit halves of a register hold samples
+ * i..i+3 and i+4..i+7, each half a component of four samples (structure of arrays):
+ * the table's corners are transposed in each half, the normals de-interleaved, and
+ * the results interleaved again into six non-temporal 16-byte stores. `out` is
+ * 16-byte aligned; the table's records (x, y, z, 0) too.
+ */
+template<bool Projected>
+__attribute__((target("avx"))) vtkIdType InterpolateVectorsAVX(vtkIdType i,
+  vtkIdType end,
+  const vtkTypeUInt32* VTK_OFB_RESTRICT tri,
+  const float* VTK_OFB_RESTRICT w1,
+  const float* VTK_OFB_RESTRICT w2,
+  const float* VTK_OFB_RESTRICT table,
+  const float* VTK_OFB_RESTRICT normals,
+  float* VTK_OFB_RESTRICT out)
+{
+  const __m256 one = _mm256_set1_ps(1.0f);
+  for (; i + 8 <= end; i += 8)
+  {
+    const __m256 b1 = _mm256_loadu_ps(w1 + i);
+    const __m256 b2 = _mm256_loadu_ps(w2 + i);
+    const __m256 b0 = _mm256_sub_ps(_mm256_sub_ps(one, b1), b2);
+    const float* c[4];
+    const float* d[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      c[k] = table + 12 * static_cast<size_t>(tri[i + k]);
+      d[k] = table + 12 * static_cast<size_t>(tri[i + 4 + k]);
+    }
+    // Corner j of the eight samples as x, y, z of four samples in each half.
+    __m256 x[3], y[3], z[3];
+    for (int j = 0; j < 3; ++j)
+    {
+      __m256 r[4];
+      for (int k = 0; k < 4; ++k)
+      {
+        r[k] = _mm256_insertf128_ps(
+          _mm256_castps128_ps256(_mm_load_ps(c[k] + 4 * j)), _mm_load_ps(d[k] + 4 * j), 1);
+      }
+      const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]); // x0 x1 y0 y1
+      const __m256 t1 = _mm256_unpacklo_ps(r[2], r[3]); // x2 x3 y2 y3
+      const __m256 t2 = _mm256_unpackhi_ps(r[0], r[1]); // z0 z1 . .
+      const __m256 t3 = _mm256_unpackhi_ps(r[2], r[3]); // z2 z3 . .
+      x[j] = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(1, 0, 1, 0));
+      y[j] = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(3, 2, 3, 2));
+      z[j] = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(1, 0, 1, 0));
+    }
+    __m256 ox = Barycentric(b0, b1, b2, x), oy = Barycentric(b0, b1, b2, y),
+           oz = Barycentric(b0, b1, b2, z);
+    if (Projected)
+    {
+      // n0x n0y n0z n1x | n1y n1z n2x n2y | n2z n3x n3y n3z in each half.
+      const float* p = normals + 3 * i;
+      const __m256 na =
+        _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p)), _mm_loadu_ps(p + 12), 1);
+      const __m256 nb =
+        _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 4)), _mm_loadu_ps(p + 16), 1);
+      const __m256 nc =
+        _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 8)), _mm_loadu_ps(p + 20), 1);
+      const __m256 a = _mm256_shuffle_ps(na, nb, _MM_SHUFFLE(3, 2, 3, 0)); // n0x n1x n2x .
+      const __m256 b = _mm256_shuffle_ps(nb, nc, _MM_SHUFFLE(1, 1, 2, 2)); // n2x . n3x .
+      const __m256 nx = _mm256_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 1, 0));
+      const __m256 e = _mm256_shuffle_ps(na, nb, _MM_SHUFFLE(0, 0, 1, 1)); // n0y . n1y .
+      const __m256 f = _mm256_shuffle_ps(nb, nc, _MM_SHUFFLE(2, 2, 3, 3)); // n2y . n3y .
+      const __m256 ny = _mm256_shuffle_ps(e, f, _MM_SHUFFLE(2, 0, 2, 0));
+      const __m256 g = _mm256_shuffle_ps(na, nb, _MM_SHUFFLE(1, 1, 2, 2)); // n0z . n1z .
+      const __m256 nz = _mm256_shuffle_ps(g, nc, _MM_SHUFFLE(3, 0, 2, 0));
+      const __m256 vn = _mm256_add_ps(
+        _mm256_add_ps(_mm256_mul_ps(ox, nx), _mm256_mul_ps(oy, ny)), _mm256_mul_ps(oz, nz));
+      ox = _mm256_sub_ps(ox, _mm256_mul_ps(vn, nx));
+      oy = _mm256_sub_ps(oy, _mm256_mul_ps(vn, ny));
+      oz = _mm256_sub_ps(oz, _mm256_mul_ps(vn, nz));
+    }
+    // x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3 in each half.
+    const __m256 xy = _mm256_unpacklo_ps(ox, oy);                         // x0 y0 x1 y1
+    const __m256 zx = _mm256_shuffle_ps(oz, ox, _MM_SHUFFLE(1, 1, 0, 0)); // z0 . x1 .
+    const __m256 o0 = _mm256_shuffle_ps(xy, zx, _MM_SHUFFLE(2, 0, 1, 0));
+    const __m256 yz = _mm256_shuffle_ps(oy, oz, _MM_SHUFFLE(1, 1, 1, 1)); // y1 . z1 .
+    const __m256 xy2 = _mm256_unpackhi_ps(ox, oy);                        // x2 y2 x3 y3
+    const __m256 o1 = _mm256_shuffle_ps(yz, xy2, _MM_SHUFFLE(1, 0, 2, 0));
+    const __m256 zx3 = _mm256_shuffle_ps(oz, ox, _MM_SHUFFLE(3, 3, 2, 2)); // z2 . x3 .
+    const __m256 yz3 = _mm256_shuffle_ps(oy, oz, _MM_SHUFFLE(3, 3, 3, 3)); // y3 . z3 .
+    const __m256 o2 = _mm256_shuffle_ps(zx3, yz3, _MM_SHUFFLE(2, 0, 2, 0));
+    float* o = out + 3 * i;
+    _mm_stream_ps(o, _mm256_castps256_ps128(o0));
+    _mm_stream_ps(o + 4, _mm256_castps256_ps128(o1));
+    _mm_stream_ps(o + 8, _mm256_castps256_ps128(o2));
+    _mm_stream_ps(o + 12, _mm256_extractf128_ps(o0, 1));
+    _mm_stream_ps(o + 16, _mm256_extractf128_ps(o1, 1));
+    _mm_stream_ps(o + 20, _mm256_extractf128_ps(o2, 1));
+  }
+  return i;
+}
+#endif
+
 /**
  * The vector field interpolated and projected on the kept normals, in the
  * operations of vtkOFBAttributeInterpolator::InterpolateVectors: per component
@@ -301,6 +423,12 @@ struct VectorJob : ResampleJob
       const float* VTK_OFB_RESTRICT table = this->Table.data();
       const float* VTK_OFB_RESTRICT normals = this->Normals;
       float* VTK_OFB_RESTRICT out = this->Out;
+#if defined(VTK_OFB_RESAMPLE_AVX)
+      if (HasAVX())
+      {
+        i = InterpolateVectorsAVX<Projected>(i, end, tri, w1, w2, table, normals, out);
+      }
+#endif
       const __m128 one = _mm_set1_ps(1.0f);
       for (; i + 4 <= end; i += 4)
       {

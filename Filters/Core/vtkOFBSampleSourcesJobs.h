@@ -314,6 +314,68 @@ __attribute__((target("avx"))) vtkIdType InterpolateVectorsAVX(vtkIdType i,
   }
   return i;
 }
+
+/// Record (c0, c1, c2, 0) of a one-component table, in doubles.
+__attribute__((target("avx"))) inline __m256d LoadScalarRecord(const double* r)
+{
+  return _mm256_loadu_pd(r);
+}
+__attribute__((target("avx"))) inline __m256d LoadScalarRecord(const float* r)
+{
+  return _mm256_cvtps_pd(_mm_load_ps(r));
+}
+
+/// Four values of v, stored as T (two 16-byte non-temporal stores of doubles, one of floats).
+__attribute__((target("avx"))) inline void StreamScalars(double* o, __m256d v)
+{
+  _mm_stream_pd(o, _mm256_castpd256_pd128(v));
+  _mm_stream_pd(o + 2, _mm256_extractf128_pd(v, 1));
+}
+__attribute__((target("avx"))) inline void StreamScalars(float* o, __m256d v)
+{
+  _mm_stream_ps(o, _mm256_cvtpd_ps(v));
+}
+
+/**
+ * A one-component float or double array of TupleJob (records c0, c1, c2, 0,
+ * 16-byte aligned) over samples [i, end), four at a time in doubles with AVX (the
+ * operations of the scalar loop), from an i that is a multiple of 4 (`out`
+ * 16-byte aligned); returns the first sample not done.
+ */
+template<typename T>
+__attribute__((target("avx"))) vtkIdType InterpolateScalarsAVX(vtkIdType i,
+  vtkIdType end,
+  const vtkTypeUInt32* VTK_OFB_RESTRICT tri,
+  const float* VTK_OFB_RESTRICT w1,
+  const float* VTK_OFB_RESTRICT w2,
+  const T* VTK_OFB_RESTRICT table,
+  T* VTK_OFB_RESTRICT out)
+{
+  const __m256d one = _mm256_set1_pd(1.0);
+  for (; i + 4 <= end; i += 4)
+  {
+    const __m256d b1 = _mm256_cvtps_pd(_mm_loadu_ps(w1 + i));
+    const __m256d b2 = _mm256_cvtps_pd(_mm_loadu_ps(w2 + i));
+    const __m256d b0 = _mm256_sub_pd(_mm256_sub_pd(one, b1), b2);
+    __m256d r[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      r[k] = LoadScalarRecord(table + 4 * static_cast<size_t>(tri[i + k]));
+    }
+    // The records transposed: corner j of the four samples.
+    const __m256d t0 = _mm256_unpacklo_pd(r[0], r[1]); // c0 c0 | c2 c2
+    const __m256d t1 = _mm256_unpackhi_pd(r[0], r[1]); // c1 c1 | 0 0
+    const __m256d t2 = _mm256_unpacklo_pd(r[2], r[3]);
+    const __m256d t3 = _mm256_unpackhi_pd(r[2], r[3]);
+    const __m256d c0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+    const __m256d c1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+    const __m256d c2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+    StreamScalars(out + i,
+      _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(b0, c0), _mm256_mul_pd(b1, c1)), _mm256_mul_pd(b2, c2)));
+  }
+  return i;
+}
 #endif
 
 /**
@@ -511,6 +573,7 @@ struct TupleJob : ResampleJob
   ResampleTable<T> Table; // per triangle 3 corners x NC values, or NC for a cell array
   int NC;
   bool PerCell;
+  int Record; // values per triangle: 3 NC (4 for one floating-point component), or NC
   T* Out;
 
   TupleJob(const T* in,
@@ -522,10 +585,12 @@ struct TupleJob : ResampleJob
     T* out)
     : NC(nc)
     , PerCell(cells != nullptr)
+    , Record(cells ? nc : (nc == 1 && std::is_floating_point<T>::value ? 4 : 3 * nc))
     , Out(out)
   {
     const int corners = cells ? 1 : 3;
-    this->Table = ResampleTable<T>::Reserve(store, static_cast<size_t>(corners * nc * nTriangles));
+    const int record = this->Record;
+    this->Table = ResampleTable<T>::Reserve(store, static_cast<size_t>(record * nTriangles));
     vtkSMPTools::For(0,
       nTriangles,
       16384,
@@ -538,8 +603,12 @@ struct TupleJob : ResampleJob
             const vtkIdType source = cells ? cells[t] : ids[3 * t + c];
             for (int k = 0; k < nc; ++k)
             {
-              this->Table[(corners * t + c) * nc + k] = in[nc * source + k];
+              this->Table[record * t + c * nc + k] = in[nc * source + k];
             }
+          }
+          for (int k = corners * nc; k < record; ++k)
+          {
+            this->Table[record * t + k] = T(0);
           }
         }
       });
@@ -591,21 +660,29 @@ struct TupleJob : ResampleJob
   {
     vtkIdType i = begin;
 #if defined(__SSE2__) && defined(__x86_64__)
-    if (std::is_same<T, double>::value || std::is_same<T, float>::value)
+    if constexpr (std::is_same<T, double>::value || std::is_same<T, float>::value)
     {
+      const T* VTK_OFB_RESTRICT table = this->Table.data();
+      T* VTK_OFB_RESTRICT out = this->Out;
+      const bool aligned = reinterpret_cast<uintptr_t>(out) % 16 == 0;
+#if defined(VTK_OFB_RESAMPLE_AVX)
+      if (HasAVX() && aligned && reinterpret_cast<uintptr_t>(table) % 16 == 0)
+      {
+        const vtkIdType first = std::min(end, (i + 3) & ~vtkIdType(3));
+        this->Interpolate<1>(i, first, tri, w1, w2, 1);
+        i = InterpolateScalarsAVX(first, end, tri, w1, w2, table, out);
+      }
+#endif
       if (i < end && (i & 1) != 0)
       {
         this->Interpolate<1>(i, i + 1, tri, w1, w2, 1);
         ++i;
       }
-      const T* VTK_OFB_RESTRICT table = this->Table.data();
-      T* VTK_OFB_RESTRICT out = this->Out;
-      const bool aligned = reinterpret_cast<uintptr_t>(out) % 16 == 0;
       const __m128d one = _mm_set1_pd(1.0);
       for (; i + 2 <= end; i += 2)
       {
-        const T* a = table + 3 * static_cast<size_t>(tri[i]);
-        const T* b = table + 3 * static_cast<size_t>(tri[i + 1]);
+        const T* a = table + 4 * static_cast<size_t>(tri[i]);
+        const T* b = table + 4 * static_cast<size_t>(tri[i + 1]);
         const __m128d b1 =
           _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(w1 + i))));
         const __m128d b2 =
@@ -652,7 +729,7 @@ struct TupleJob : ResampleJob
     T* VTK_OFB_RESTRICT out = this->Out;
     for (vtkIdType i = begin; i < end; ++i)
     {
-      const T* c = table + 3 * static_cast<size_t>(tri[i]) * n;
+      const T* c = table + static_cast<size_t>(tri[i]) * this->Record;
       const double b1 = w1[i], b2 = w2[i], b0 = 1.0 - b1 - b2;
       for (int k = 0; k < n; ++k)
       {

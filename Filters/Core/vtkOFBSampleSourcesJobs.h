@@ -70,7 +70,7 @@ template<typename T>
 inline void StreamValue(T* p, T v)
 {
 #if defined(__SSE2__)
-  if (sizeof(T) == 4)
+  if constexpr (sizeof(T) == 4)
   {
     int bits;
     std::memcpy(&bits, &v, 4);
@@ -78,7 +78,7 @@ inline void StreamValue(T* p, T v)
     return;
   }
 #if defined(__x86_64__)
-  if (sizeof(T) == 8)
+  if constexpr (sizeof(T) == 8)
   {
     long long bits;
     std::memcpy(&bits, &v, 8);

@@ -6,6 +6,7 @@
 #include "vtkOFB.h"
 #include "vtkOFBAttributeInterpolator.h"
 #include "vtkOFBSampleArrays.h"
+#include "vtkOFBSampleSourcesJobs.h"
 #include "vtkOFBSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -18,9 +19,13 @@
 #include <cstring>
 #include <memory>
 #include <new>
-#include <type_traits>
 
 vtkStandardNewMacro(vtkOFBSampleSources);
+
+using vtkofb::ColorJob;
+using vtkofb::ResampleJob;
+using vtkofb::TupleJob;
+using vtkofb::VectorJob;
 
 namespace
 {
@@ -104,283 +109,6 @@ uint64_t HashArray(vtkDataArray* array, uint64_t seed)
   }
   return Mix(h ^ static_cast<uint64_t>(n));
 }
-
-/// The memory of a table (vtkOFBSampleSources::Tables: kept between re-samplings).
-template<typename T>
-struct TableView
-{
-  T* Data = nullptr;
-  size_t Size = 0;
-  T& operator[](size_t i) const { return this->Data[i]; }
-  T* data() const { return this->Data; }
-  bool empty() const { return this->Size == 0; }
-};
-
-/// Room for n values of type T in `store` (which keeps its memory between calls).
-template<typename T>
-TableView<T> Reserve(std::vector<char>& store, size_t n)
-{
-  store.resize(n * sizeof(T));
-  return TableView<T>{ reinterpret_cast<T*>(store.data()), n };
-}
-
-/// The re-sampling of one array over samples [begin, end) from their sources.
-struct ResampleJob
-{
-  virtual ~ResampleJob() = default;
-  virtual void Run(vtkIdType begin,
-    vtkIdType end,
-    const vtkTypeUInt32* tri,
-    const float* w1,
-    const float* w2) const = 0;
-};
-
-/// The paint: the point colours interpolated as vtkOFBAttributeInterpolator does, else
-/// DefaultColor.
-struct ColorJob : ResampleJob
-{
-  TableView<float> Table; // per triangle 3 corners x 4 components
-  int NC;
-  unsigned char Default[4];
-  unsigned char* Out;
-
-  ColorJob(const vtkOFBAttributeInterpolator& in,
-    const vtkIdType* ids,
-    const vtkTypeUInt32* order,
-    vtkIdType nTriangles,
-    std::vector<char>& store,
-    unsigned char* out)
-    : NC(in.ColorComponents)
-    , Out(out)
-  {
-    std::memcpy(this->Default, in.DefaultColor, 4);
-    if (!in.PointColors)
-    {
-      return;
-    }
-    this->Table = Reserve<float>(store, static_cast<size_t>(12 * nTriangles));
-    const int nc = this->NC;
-    vtkSMPTools::For(0,
-      nTriangles,
-      Chunk,
-      [&](vtkIdType t0, vtkIdType t1)
-      {
-        for (vtkIdType t = t0; t < t1; ++t)
-        {
-          for (int c = 0; c < 3; ++c)
-          {
-            for (int k = 0; k < 4; ++k)
-            {
-              this->Table[12 * t + 4 * c + k] =
-                k < nc ? static_cast<float>(in.PointColors[nc * ids[3 * order[t] + c] + k]) : 0.0f;
-            }
-          }
-        }
-      });
-  }
-
-  void Run(vtkIdType begin,
-    vtkIdType end,
-    const vtkTypeUInt32* tri,
-    const float* w1,
-    const float* w2) const override
-  {
-    unsigned char* out = this->Out;
-    if (this->Table.empty())
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        std::memcpy(out + 4 * i, this->Default, 4);
-      }
-      return;
-    }
-    const int nc = this->NC;
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const float* c = this->Table.data() + 12 * static_cast<size_t>(tri[i]);
-      for (int k = 0; k < nc; ++k)
-      {
-        const float v = (1.0f - w1[i] - w2[i]) * c[k] + w1[i] * c[4 + k] + w2[i] * c[8 + k];
-        out[4 * i + k] = static_cast<unsigned char>(std::min(255.0f, v + 0.5f));
-      }
-      if (nc == 3)
-      {
-        out[4 * i + 3] = 255;
-      }
-    }
-  }
-};
-
-/**
- * The vector field interpolated and projected on the kept normals, in the
- * operations of vtkOFBAttributeInterpolator::InterpolateVectors.
- */
-struct VectorJob : ResampleJob
-{
-  TableView<float> Table; // per triangle 3 corners x 3 components
-  bool Project;
-  const float* Normals;
-  float* Out;
-
-  VectorJob(const vtkOFBAttributeInterpolator& in,
-    const vtkIdType* ids,
-    const vtkTypeUInt32* order,
-    vtkIdType nTriangles,
-    std::vector<char>& store,
-    const float* normals,
-    float* out)
-    : Project(in.ProjectVectors)
-    , Normals(normals)
-    , Out(out)
-  {
-    this->Table = Reserve<float>(store, static_cast<size_t>(9 * nTriangles));
-    vtkSMPTools::For(0,
-      nTriangles,
-      Chunk,
-      [&](vtkIdType t0, vtkIdType t1)
-      {
-        for (vtkIdType t = t0; t < t1; ++t)
-        {
-          for (int c = 0; c < 3; ++c)
-          {
-            std::copy_n(
-              in.PointVectors + 3 * ids[3 * order[t] + c], 3, &this->Table[9 * t + 3 * c]);
-          }
-        }
-      });
-  }
-
-  void Run(vtkIdType begin,
-    vtkIdType end,
-    const vtkTypeUInt32* tri,
-    const float* w1,
-    const float* w2) const override
-  {
-    // Locals that alias nothing: the loop keeps them in registers.
-    const float* VTK_OFB_RESTRICT table = this->Table.data();
-    const float* VTK_OFB_RESTRICT normals = this->Normals;
-    float* VTK_OFB_RESTRICT out = this->Out;
-    const float project = this->Project ? 1.0f : 0.0f;
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const float* c = table + 9 * static_cast<size_t>(tri[i]);
-      const float b1 = w1[i], b2 = w2[i], b0 = 1.0f - b1 - b2;
-      const float vx = b0 * c[0] + b1 * c[3] + b2 * c[6];
-      const float vy = b0 * c[1] + b1 * c[4] + b2 * c[7];
-      const float vz = b0 * c[2] + b1 * c[5] + b2 * c[8];
-      const float nx = normals[3 * i], ny = normals[3 * i + 1], nz = normals[3 * i + 2];
-      const float vn = project * (vx * nx + vy * ny + vz * nz);
-      out[3 * i] = vx - vn * nx;
-      out[3 * i + 1] = vy - vn * ny;
-      out[3 * i + 2] = vz - vn * nz;
-    }
-  }
-};
-
-/**
- * Another point array, interpolated as vtkOFBAttributeInterpolator::InterpolateTuples
- * does, or a cell array, the tuple of each sample's triangle's cell.
- */
-template<typename T>
-struct TupleJob : ResampleJob
-{
-  TableView<T> Table; // per triangle 3 corners x NC values, or NC for a cell array
-  int NC;
-  bool PerCell;
-  T* Out;
-
-  TupleJob(const T* in,
-    int nc,
-    const vtkIdType* ids,
-    const vtkTypeUInt32* order,
-    const vtkIdType* cells,
-    vtkIdType nTriangles,
-    std::vector<char>& store,
-    T* out)
-    : NC(nc)
-    , PerCell(cells != nullptr)
-    , Out(out)
-  {
-    const int corners = cells ? 1 : 3;
-    this->Table = Reserve<T>(store, static_cast<size_t>(corners * nc * nTriangles));
-    vtkSMPTools::For(0,
-      nTriangles,
-      Chunk,
-      [&](vtkIdType t0, vtkIdType t1)
-      {
-        for (vtkIdType t = t0; t < t1; ++t)
-        {
-          for (int c = 0; c < corners; ++c)
-          {
-            const vtkIdType source = cells ? cells[order[t]] : ids[3 * order[t] + c];
-            std::copy_n(in + nc * source, nc, &this->Table[(corners * t + c) * nc]);
-          }
-        }
-      });
-  }
-
-  void Run(vtkIdType begin,
-    vtkIdType end,
-    const vtkTypeUInt32* tri,
-    const float* w1,
-    const float* w2) const override
-  {
-    const int nc = this->NC;
-    if (this->PerCell)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const T* tuple = this->Table.data() + static_cast<size_t>(tri[i]) * nc;
-        std::copy(tuple, tuple + nc, this->Out + i * nc);
-      }
-      return;
-    }
-    // The common component counts with the count known to the compiler.
-    switch (nc)
-    {
-      case 1:
-        this->Interpolate<1>(begin, end, tri, w1, w2, 1);
-        break;
-      case 3:
-        this->Interpolate<3>(begin, end, tri, w1, w2, 3);
-        break;
-      default:
-        this->Interpolate<0>(begin, end, tri, w1, w2, nc);
-        break;
-    }
-  }
-
-  /// The interpolation of samples [begin, end): NC components (0: `nc`, known at run time).
-  template<int NCT>
-  void Interpolate(vtkIdType begin,
-    vtkIdType end,
-    const vtkTypeUInt32* VTK_OFB_RESTRICT tri,
-    const float* VTK_OFB_RESTRICT w1,
-    const float* VTK_OFB_RESTRICT w2,
-    int nc) const
-  {
-    const int n = NCT > 0 ? NCT : nc;
-    const T* VTK_OFB_RESTRICT table = this->Table.data();
-    T* VTK_OFB_RESTRICT out = this->Out;
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const T* c = table + 3 * static_cast<size_t>(tri[i]) * n;
-      const double b1 = w1[i], b2 = w2[i], b0 = 1.0 - b1 - b2;
-      for (int k = 0; k < n; ++k)
-      {
-        const double v = b0 * c[k] + b1 * c[n + k] + b2 * c[2 * n + k];
-        if (std::is_integral<T>::value)
-        {
-          out[i * n + k] = static_cast<T>(std::llround(v));
-        }
-        else
-        {
-          out[i * n + k] = static_cast<T>(v);
-        }
-      }
-    }
-  }
-};
 
 /// The arrays of a geometry: points, offsets and connectivity of polygons and strips, normals.
 void GeometryArrays(vtkPolyData* input, vtkDataArray* arrays[6])
@@ -489,29 +217,39 @@ void vtkOFBSampleSources::Keep(vtkOFB* output,
   this->Structure->ShallowCopy(output); // its own sample data: cleared below, not output's
   this->Normals = output->GetSampleData()->GetNormals();
   this->Structure->GetSampleData()->Initialize();
-  this->SurfaceTriangles = surface.Triangles;
-  this->TriangleCells = surface.TriangleCells;
   // The triangles renumbered in the order the samples first reach them, so that
   // the tables of a re-sampling (a record per triangle) are read in about the
-  // order they are laid out: the input's own order may be anything.
+  // order they are laid out: the input's own order may be anything. Their point
+  // ids and cells are kept in that order, read in sequence when the tables are
+  // filled.
   const vtkIdType nTriangles = surface.GetNumberOfTriangles();
   std::vector<vtkTypeUInt32> renumbered(static_cast<size_t>(nTriangles), VTK_TYPE_UINT32_MAX);
-  this->Order.clear();
+  std::vector<vtkTypeUInt32> order;
   for (vtkTypeUInt32& t : this->Triangles)
   {
     if (renumbered[t] == VTK_TYPE_UINT32_MAX)
     {
-      renumbered[t] = static_cast<vtkTypeUInt32>(this->Order.size());
-      this->Order.push_back(t);
+      renumbered[t] = static_cast<vtkTypeUInt32>(order.size());
+      order.push_back(t);
     }
     t = renumbered[t];
+  }
+  this->Corners.resize(3 * order.size());
+  this->Cells.resize(surface.TriangleCells.empty() ? 0 : order.size());
+  for (size_t t = 0; t < order.size(); ++t)
+  {
+    std::copy_n(&surface.Triangles[3 * static_cast<size_t>(order[t])], 3, &this->Corners[3 * t]);
+    if (!this->Cells.empty())
+    {
+      this->Cells[t] = surface.TriangleCells[order[t]];
+    }
   }
 }
 
 //------------------------------------------------------------------------------
 bool vtkOFBSampleSources::HasTriangleCells() const
 {
-  return !this->TriangleCells.empty();
+  return !this->Cells.empty();
 }
 
 //------------------------------------------------------------------------------
@@ -530,9 +268,8 @@ void vtkOFBSampleSources::Reset()
   this->Structure = nullptr;
   this->Normals = nullptr;
   this->Kept = Key();
-  std::vector<vtkIdType>().swap(this->SurfaceTriangles);
-  std::vector<vtkIdType>().swap(this->TriangleCells);
-  std::vector<vtkTypeUInt32>().swap(this->Order);
+  std::vector<vtkIdType>().swap(this->Corners);
+  std::vector<vtkIdType>().swap(this->Cells);
   this->Tables.clear();
   std::vector<vtkTypeUInt32>().swap(this->Triangles);
   std::vector<float>().swap(this->W1);
@@ -579,32 +316,40 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
         : nullptr);
   }
   output->ShallowCopy(this->Structure);
-  const vtkIdType* ids = this->SurfaceTriangles.data();
   // The tables have a record per triangle that a sample lies on, in the order of
-  // this->Order.
-  const vtkIdType nTriangles = static_cast<vtkIdType>(this->Order.size());
-  const vtkTypeUInt32* order = this->Order.data();
+  // this->Corners.
+  const vtkIdType* ids = this->Corners.data();
+  const vtkIdType nTriangles = static_cast<vtkIdType>(this->Corners.size() / 3);
 
   // One job per array, each with a table of its values at the corners of every
   // triangle (or of its cell, for a cell array), so that a sample reads one record
-  // of its triangle; the samples go in chunks, every job over a chunk in turn while
-  // its sources are in cache.
+  // of its triangle; the samples go in chunks, every job over a short block of a
+  // chunk in turn while the block's sources are in cache.
   std::vector<std::unique_ptr<ResampleJob>> jobs;
   const vtkOFBAttributeInterpolator interpolator(surface);
   jobs.emplace_back(
-    new ColorJob(interpolator, ids, order, nTriangles, this->Table(0), colors->GetPointer(0)));
+    new ColorJob(interpolator, ids, nTriangles, this->Table(0), colors->GetPointer(0)));
   if (vectors && interpolator.PointVectors)
   {
     jobs.emplace_back(new VectorJob(interpolator,
       ids,
-      order,
       nTriangles,
       this->Table(1),
       vtkFloatArray::SafeDownCast(this->Normals)->GetPointer(0),
       vectors->GetPointer(0)));
   }
+  // The arrays attached as a full build does (vtkOFBSampleArrays::Attach): the paint
+  // is the active scalars unless a cell array takes them.
   vtkPointData* sampleData = output->GetSampleData();
-  sampleData->SetScalars(colors);
+  const int cellScalars = surface.CellScalarsIndex;
+  if (cellScalars >= 0 && cellScalars < static_cast<int>(others.size()) && others[cellScalars])
+  {
+    sampleData->AddArray(colors);
+  }
+  else
+  {
+    sampleData->SetScalars(colors);
+  }
   sampleData->SetNormals(this->Normals);
   if (vectors)
   {
@@ -619,14 +364,13 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
       continue;
     }
     const bool perCell = k < surface.ArraysPerCell.size() && surface.ArraysPerCell[k];
-    const vtkIdType* cells = perCell ? this->TriangleCells.data() : nullptr;
+    const vtkIdType* cells = perCell ? this->Cells.data() : nullptr;
     switch (in->GetDataType())
     {
       vtkTemplateMacro(
         jobs.emplace_back(new TupleJob<VTK_TT>(static_cast<const VTK_TT*>(in->GetVoidPointer(0)),
           in->GetNumberOfComponents(),
           ids,
-          order,
           cells,
           nTriangles,
           this->Table(2 + k),
@@ -639,6 +383,10 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
     else if (static_cast<int>(k) == surface.CellVectorsIndex)
     {
       sampleData->SetVectors(out);
+    }
+    else if (static_cast<int>(k) == cellScalars)
+    {
+      sampleData->SetScalars(out);
     }
     else
     {
@@ -653,10 +401,15 @@ bool vtkOFBSampleSources::Resample(const vtkOFBSurface& surface, vtkOFB* output)
     Chunk,
     [&](vtkIdType begin, vtkIdType end)
     {
-      for (const auto& job : jobs)
+      for (vtkIdType first = begin; first < end; first += vtkofb::ResampleBlock)
       {
-        job->Run(begin, end, tri, w1, w2);
+        const vtkIdType last = std::min(end, first + vtkofb::ResampleBlock);
+        for (const auto& job : jobs)
+        {
+          job->Run(first, last, tri, w1, w2);
+        }
       }
+      vtkofb::Fence();
     });
   output->MarkAllSamplesModified();
   return true;

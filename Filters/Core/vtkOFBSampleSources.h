@@ -120,13 +120,13 @@ private:
   /// A 64-bit hash of the content of the arrays of `input` that make its geometry.
   static uint64_t HashGeometry(vtkPolyData* input);
 
-  std::vector<vtkTypeUInt32> Triangles; // per sample, renumbered (see Order)
-  std::vector<vtkTypeUInt32> Order;     // the surface triangle of each renumbered one
+  std::vector<vtkTypeUInt32> Triangles; // per sample, renumbered (see Keep)
   std::vector<float> W1, W2;
+  /// The point ids (3) and the input cell of each renumbered triangle.
+  std::vector<vtkIdType> Corners, Cells;
   /// The memory of the tables of a re-sampling, kept for the next one.
   std::vector<char>& Table(size_t k);
 
-  std::vector<vtkIdType> SurfaceTriangles, TriangleCells;
   std::vector<std::vector<char>> Tables;
   vtkSmartPointer<vtkOFB> Structure;
   vtkSmartPointer<vtkDataArray> Normals;

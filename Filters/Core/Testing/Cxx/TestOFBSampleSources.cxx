@@ -10,10 +10,12 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <string>
 
 using namespace vtkofbtest;
@@ -71,7 +73,8 @@ vtkSmartPointer<vtkOFB> FullBuild(vtkPolyData* mesh, int resolution)
   return ofb;
 }
 
-/// Every value of every sample array of `a` equals that of `b` (and the structure too).
+/// Every value of every sample array of `a` equals that of `b`, bit for bit (and the
+/// structure too).
 void ExpectSameSamples(vtkOFB* a, vtkOFB* b)
 {
   ASSERT_EQ(a->GetNumberOfSamples(), b->GetNumberOfSamples());
@@ -92,13 +95,61 @@ void ExpectSameSamples(vtkOFB* a, vtkOFB* b)
     vtkIdType different = 0;
     for (vtkIdType v = 0; v < got->GetNumberOfValues(); ++v)
     {
-      const double e = expected->GetVariantValue(v).ToDouble();
-      const double g = got->GetVariantValue(v).ToDouble();
-      different += std::abs(e - g) > 1e-6 * (1.0 + std::abs(e)) ? 1 : 0;
+      const double e = expected->GetComponent(v / expected->GetNumberOfComponents(),
+        static_cast<int>(v % expected->GetNumberOfComponents()));
+      const double g = got->GetComponent(
+        v / got->GetNumberOfComponents(), static_cast<int>(v % got->GetNumberOfComponents()));
+      different += std::memcmp(&e, &g, sizeof(double)) != 0 ? 1 : 0;
     }
     EXPECT_EQ(different, 0) << expected->GetName();
   }
   EXPECT_NE(pa->GetVectors(), nullptr);
+  // The same arrays in the same roles (active scalars, vectors, texture coordinates).
+  auto name = [](vtkDataArray* array)
+  { return std::string(array && array->GetName() ? array->GetName() : "(none)"); };
+  EXPECT_EQ(name(pa->GetScalars()), name(pb->GetScalars()));
+  EXPECT_EQ(name(pa->GetVectors()), name(pb->GetVectors()));
+  EXPECT_EQ(name(pa->GetTCoords()), name(pb->GetTCoords()));
+}
+
+/// `mesh` with arrays of every kind the re-sampling has a loop for, depending on `t`.
+vtkSmartPointer<vtkPolyData> WithEveryKind(vtkPolyData* mesh, double t)
+{
+  vtkSmartPointer<vtkPolyData> out = WithArrays(mesh, t, false);
+  const vtkIdType n = out->GetNumberOfPoints();
+  vtkNew<vtkUnsignedCharArray> colors; // input colours: the paint interpolated
+  colors->SetName("RGB");
+  colors->SetNumberOfComponents(3);
+  vtkNew<vtkFloatArray> temperature; // one float component
+  temperature->SetName("Temperature");
+  vtkNew<vtkFloatArray> flow; // two components
+  flow->SetName("Flow2");
+  flow->SetNumberOfComponents(2);
+  vtkNew<vtkIntArray> label; // integers, rounded
+  label->SetName("Label");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    const double s = std::sin(25 * x[0] + t), c = std::cos(17 * x[1] - 2 * t);
+    colors->InsertNextTuple3(
+      std::floor(127.5 + 127.5 * s), std::floor(127.5 + 127.5 * c), static_cast<double>(i % 256));
+    temperature->InsertNextValue(static_cast<float>(300.0 + 50.0 * s * c));
+    flow->InsertNextTuple2(s, c);
+    label->InsertNextValue(static_cast<int>(1000 * s));
+  }
+  out->GetPointData()->SetScalars(colors);
+  out->GetPointData()->AddArray(temperature);
+  out->GetPointData()->AddArray(flow);
+  out->GetPointData()->AddArray(label);
+  vtkNew<vtkDoubleArray> cellScalars; // active cell scalars: the samples' active scalars
+  cellScalars->SetName("CellValue");
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    cellScalars->InsertNextValue(std::sin(0.01 * static_cast<double>(c) + t));
+  }
+  out->GetCellData()->SetScalars(cellScalars);
+  return out;
 }
 }
 
@@ -140,6 +191,44 @@ TEST(OFBSampleSources, NewArraysOnTheSameGeometryAreResampled)
   EXPECT_TRUE(sampler->GetLastUpdateResampled());
   ExpectSameSamples(sampler->GetOutput(),
     FullBuild(vtkPolyData::SafeDownCast(sampler->GetInputDataObject(0, 0)), 256));
+}
+
+TEST(OFBSampleSources, EveryKindOfArrayIsResampledBitForBit)
+{
+  // Input colours, float, two-component, integer and cell arrays, active cell
+  // scalars, and vectors projected or not: each as a full build gives it.
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  for (const bool project : { true, false })
+  {
+    vtkNew<vtkOFBSampler> sampler;
+    sampler->SetStructureReuseToAlways();
+    sampler->SetProjectVectors(project);
+    sampler->SetResolution(200);
+    sampler->SetInputData(WithEveryKind(bunny, 0.0));
+    sampler->Update();
+    for (int step = 1; step <= 2; ++step)
+    {
+      vtkSmartPointer<vtkPolyData> input = WithEveryKind(bunny, 0.7 * step);
+      sampler->SetInputData(input);
+      sampler->Update();
+      EXPECT_TRUE(sampler->GetLastUpdateResampled());
+      vtkNew<vtkOFBSampler> full;
+      full->SetStructureReuseToOff();
+      full->SetProjectVectors(project);
+      full->SetResolution(200);
+      full->SetInputData(input);
+      full->Update();
+      ExpectSameSamples(sampler->GetOutput(), full->GetOutput());
+      // The paint comes from the input colours (not the uniform default colour).
+      double range[2];
+      sampler->GetOutput()
+        ->GetSampleData()
+        ->GetArray(vtkOFB::ColorsArrayName())
+        ->GetRange(range, 0);
+      EXPECT_GT(range[1] - range[0], 100.0);
+    }
+  }
 }
 
 TEST(OFBSampleSources, ChangedGeometryOrSettingIsBuilt)

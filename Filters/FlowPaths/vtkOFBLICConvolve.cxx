@@ -78,6 +78,7 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
   const vtkOFBLICTracer& tracer,
   bool keep,
   bool trace,
+  bool keepRuns,
   const std::vector<double>& weights,
   const vtkOFBLICKernelParts* parts,
   bool recombine,
@@ -182,6 +183,12 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
         const vtkTypeInt32* runs = keep ? cache.TileRuns[t] : nullptr;
         if (fast && tiles.First[t] < tiles.First[t + 1])
         {
+          if (!keepRuns)
+          {
+            // The tile's runs are read right away and then dropped: the store is this
+            // thread's scratch, the same pages (in the cache) for every tile.
+            store->Ids.resize(0);
+          }
           const std::size_t start = store->size();
           this->TraceTile(tracer, tiles, t, *store, covered, where, local.data());
           tileStart[t] = { store, start };
@@ -263,7 +270,12 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
     return false;
   }
   self->UpdateProgress(progress1);
-  if (fast)
+  if (fast && !keepRuns)
+  {
+    std::vector<const vtkTypeInt32*>().swap(cache.TileRuns);
+    std::vector<vtkIdType>().swap(cache.TileRunLengths);
+  }
+  else if (fast)
   {
     for (vtkIdType t = 0; t < numberOfTiles; ++t)
     {

@@ -566,11 +566,15 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   // Animated fast LIC: the first pass from each sample's moments (vtkOFBLICKernelParts),
   // combined again without reading the runs while the lines, noise and kernel stay.
   // Without EnhancedLIC nothing else reads the runs again for a new phase: only the
-  // moments are kept (another kernel or noise traces again).
+  // moments are kept; with it, only the ids that the second pass's windows read (another
+  // kernel or noise traces again).
   const bool animated = keep && this->Animate;
   const bool keepRuns = keep && (!animated || enhanced);
+  const int secondSteps = std::max(1, this->NumberOfSteps / 2);
+  const int keepSteps = animated && enhanced ? secondSteps : 0;
   const bool linesValid = keep && cache.LinesKey == linesKey;
   const bool haveRuns = linesValid && !cache.TileRuns.empty();
+  const bool wholeRuns = haveRuns && cache.RunSteps >= this->NumberOfSteps;
   vtkOFBLICKernelParts parts;
   vtkOFBLICCacheKey momentsKey;
   bool recombine = false;
@@ -584,7 +588,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
       .Add(this->OrientedLIC ? 1.0 : 0.0);
     recombine = linesValid && cache.MomentsKey == momentsKey && (haveRuns || !keepRuns);
   }
-  const bool trace = !haveRuns && !recombine;
+  const bool trace = !wholeRuns && !recombine;
   if (!keep)
   {
     cache.LinesKey = vtkOFBLICCacheKey();
@@ -612,6 +616,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
         keep,
         trace,
         keepRuns,
+        keepSteps,
         weights,
         animated ? &parts : nullptr,
         recombine,
@@ -639,13 +644,14 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     values.resize(n);
     // Half the steps each way, as VTK's second pass (its input is smooth along the flow).
     vtkOFBLICTracer second = tracer;
-    second.NumberOfSteps = std::max(1, this->NumberOfSteps / 2);
+    second.NumberOfSteps = secondSteps;
     const std::vector<double> weights2 = this->ComputeKernel(second.NumberOfSteps);
     if (!this->Internals->Convolve(this,
           second,
           keep,
           false,
           true,
+          0,
           weights2,
           nullptr,
           false,

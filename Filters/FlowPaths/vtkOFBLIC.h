@@ -59,8 +59,9 @@
  * bytes); with Animate on, the three sums of its window that another AnimationPhase
  * combines without reading the streamlines (16 bytes; see docs/lic.md). With Animate on
  * and EnhancedLIC off a new AnimationPhase reads only these sums, so the seed
- * streamlines are read tile by tile as they are traced and not kept (another kernel or
- * noise traces again); 40 bytes of
+ * streamlines are read tile by tile as they are traced and not kept; with Animate and
+ * EnhancedLIC on only their ids that the second pass's windows read are kept (in both
+ * cases another kernel or noise traces again); 40 bytes of
  * packed position, normal and field, 1 byte of mask, 4 of noise and 4 of the tiles'
  * sample lists, plus 9 bytes of work buffers; with EnhancedLIC also the
  * high-pass's neighbours of each sample (17 bytes: a count and up to 8 offsets), found

@@ -622,6 +622,18 @@ TEST(LIC, AnimatedLICWithoutEnhancementKeepsOnlyTheSums)
   EXPECT_NE(sums->GetLastRecomputed() & vtkOFBLIC::RECOMPUTED_STREAMLINES, 0);
   fresh->EnhancedLICOn();
   EXPECT_TRUE(SameLIC(enhanced, RunLIC(fresh, ofb)));
+  // Its runs are kept only where the second pass's windows read them: a new phase
+  // traces nothing, another kernel traces again; both as a fresh filter.
+  sums->SetAnimationPhase(0.7);
+  fresh->SetAnimationPhase(0.7);
+  vtkSmartPointer<vtkOFB> enhancedPhase = RunLIC(sums, ofb);
+  EXPECT_EQ(sums->GetLastRecomputed() & vtkOFBLIC::RECOMPUTED_STREAMLINES, 0);
+  EXPECT_TRUE(SameLIC(enhancedPhase, RunLIC(fresh, ofb)));
+  sums->SetKernelTypeToGaussian();
+  fresh->SetKernelTypeToGaussian();
+  vtkSmartPointer<vtkOFB> enhancedKernel = RunLIC(sums, ofb);
+  EXPECT_NE(sums->GetLastRecomputed() & vtkOFBLIC::RECOMPUTED_STREAMLINES, 0);
+  EXPECT_TRUE(SameLIC(enhancedKernel, RunLIC(fresh, ofb)));
 }
 
 //------------------------------------------------------------------------------

@@ -340,8 +340,8 @@ public:
    * from different streamlines differ more than neighbours on one: dashes along the
    * streaks and seams at the tile planes. At 0.05 the LIC correlates about 0.96 with
    * the one traced from every sample and shows neither, for about NumberOfSteps traced
-   * steps a sample; 1 reads every sample met (about 3.3 steps a sample, 2.5 to 3.5
-   * times faster to compute, with the dashes); 0 traces every sample's own streamline
+   * steps a sample; 1 reads every sample met (about 3.3 steps a sample, 2 to 3 times
+   * faster to compute, with the dashes); 0 traces every sample's own streamline
    * and keeps it (2 NumberOfSteps steps a sample).
    */
   vtkSetClampMacro(StreamlineReuseDistance, double, 0.0, VTK_DOUBLE_MAX);

@@ -561,18 +561,40 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     .Add(this->StepSize)
     .Add(static_cast<double>(this->FieldInterpolation))
     .Add(this->StreamlineReuseDistance);
-  bool trace = true;
   const bool keep = this->CacheStreamlines && this->NumberOfSteps > 0;
+  const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
+  // Animated fast LIC: the first pass from each sample's moments (vtkOFBLICKernelParts),
+  // combined again without reading the runs while the lines, noise and kernel stay.
+  // Without EnhancedLIC nothing else reads the runs again for a new phase: only the
+  // moments are kept; with it, only the ids that the second pass's windows read (another
+  // kernel or noise traces again).
+  const bool animated = keep && this->Animate;
+  const bool keepRuns = keep && (!animated || enhanced);
+  const int secondSteps = std::max(1, this->NumberOfSteps / 2);
+  const int keepSteps = animated && enhanced ? secondSteps : 0;
+  const bool linesValid = keep && cache.LinesKey == linesKey;
+  const bool haveRuns = linesValid && !cache.TileRuns.empty();
+  const bool wholeRuns = haveRuns && cache.RunSteps >= this->NumberOfSteps;
+  vtkOFBLICKernelParts parts;
+  vtkOFBLICCacheKey momentsKey;
+  bool recombine = false;
+  if (animated)
+  {
+    parts.Set(
+      this->ComputeKernel(this->NumberOfSteps, false), this->NumberOfSteps, this->AnimationPhase);
+    momentsKey.Add(linesKey)
+      .Add(cache.NoiseKey)
+      .Add(static_cast<double>(this->KernelType))
+      .Add(this->OrientedLIC ? 1.0 : 0.0);
+    recombine = linesValid && cache.MomentsKey == momentsKey && (haveRuns || !keepRuns);
+  }
+  const bool trace = !wholeRuns && !recombine;
   if (!keep)
   {
     cache.LinesKey = vtkOFBLICCacheKey();
     cache.ReleaseLines();
   }
-  else if (cache.LinesKey == linesKey && !cache.TileRuns.empty())
-  {
-    trace = false;
-  }
-  else
+  else if (trace)
   {
     cache.LinesKey = vtkOFBLICCacheKey();
   }
@@ -586,30 +608,15 @@ int vtkOFBLIC::RequestData(vtkInformation*,
                   << (this->LastRecomputed & RECOMPUTED_NOISE ? " noise" : "")
                   << (this->LastRecomputed & RECOMPUTED_STREAMLINES ? " streamlines" : "")
                   << "; convolved.");
-  // Animated fast LIC: the first pass from each sample's moments (vtkOFBLICKernelParts),
-  // combined again without reading the runs while the lines, noise and kernel stay.
-  vtkOFBLICKernelParts parts;
-  vtkOFBLICCacheKey momentsKey;
-  const bool animated = keep && this->Animate;
-  bool recombine = false;
-  if (animated)
-  {
-    parts.Set(
-      this->ComputeKernel(this->NumberOfSteps, false), this->NumberOfSteps, this->AnimationPhase);
-    momentsKey.Add(linesKey)
-      .Add(cache.NoiseKey)
-      .Add(static_cast<double>(this->KernelType))
-      .Add(this->OrientedLIC ? 1.0 : 0.0);
-    recombine = !trace && cache.MomentsKey == momentsKey;
-  }
   cache.MomentsKey = vtkOFBLICCacheKey();
   vtkOFBLICBuffer<float>& values = cache.Values;
   values.resize(n);
-  const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
   if (!this->Internals->Convolve(this,
         tracer,
         keep,
         trace,
+        keepRuns,
+        keepSteps,
         weights,
         animated ? &parts : nullptr,
         recombine,
@@ -637,12 +644,14 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     values.resize(n);
     // Half the steps each way, as VTK's second pass (its input is smooth along the flow).
     vtkOFBLICTracer second = tracer;
-    second.NumberOfSteps = std::max(1, this->NumberOfSteps / 2);
+    second.NumberOfSteps = secondSteps;
     const std::vector<double> weights2 = this->ComputeKernel(second.NumberOfSteps);
     if (!this->Internals->Convolve(this,
           second,
           keep,
           false,
+          true,
+          0,
           weights2,
           nullptr,
           false,

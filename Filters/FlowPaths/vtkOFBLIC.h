@@ -57,7 +57,11 @@
  * seed streamlines as sample ids (4 bytes each, about NumberOfSteps + 1 a sample: each
  * sample's streamline is a window of one of them) and the sample's place in them (4
  * bytes); with Animate on, the three sums of its window that another AnimationPhase
- * combines without reading the streamlines (16 bytes; see docs/lic.md); 40 bytes of
+ * combines without reading the streamlines (16 bytes; see docs/lic.md). With Animate on
+ * and EnhancedLIC off a new AnimationPhase reads only these sums, so the seed
+ * streamlines are read tile by tile as they are traced and not kept; with Animate and
+ * EnhancedLIC on only their ids that the second pass's windows read are kept (in both
+ * cases another kernel or noise traces again); 40 bytes of
  * packed position, normal and field, 1 byte of mask, 4 of noise and 4 of the tiles'
  * sample lists, plus 9 bytes of work buffers; with EnhancedLIC also the
  * high-pass's neighbours of each sample (17 bytes: a count and up to 8 offsets), found
@@ -336,8 +340,8 @@ public:
    * from different streamlines differ more than neighbours on one: dashes along the
    * streaks and seams at the tile planes. At 0.05 the LIC correlates about 0.96 with
    * the one traced from every sample and shows neither, for about NumberOfSteps traced
-   * steps a sample; 1 reads every sample met (about 3.3 steps a sample, 2.5 to 3.5
-   * times faster to compute, with the dashes); 0 traces every sample's own streamline
+   * steps a sample; 1 reads every sample met (about 3.3 steps a sample, 2 to 3 times
+   * faster to compute, with the dashes); 0 traces every sample's own streamline
    * and keeps it (2 NumberOfSteps steps a sample).
    */
   vtkSetClampMacro(StreamlineReuseDistance, double, 0.0, VTK_DOUBLE_MAX);

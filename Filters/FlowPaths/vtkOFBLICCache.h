@@ -263,7 +263,8 @@ public:
   std::vector<std::unique_ptr<vtkOFBLICRunStore>> Runs; // one a thread that traced
   std::vector<const vtkTypeInt32*> TileRuns;            // per tile: its first run id
   std::vector<vtkIdType> TileRunLengths;                // per tile: its ids in the runs
-  vtkOFBLICCacheKey MomentsKey;              // Moments: LinesKey, NoiseKey and the kernel
+  int RunSteps = 0;             // the steps each way of every sample's window that the runs hold
+  vtkOFBLICCacheKey MomentsKey; // Moments: LinesKey, NoiseKey and the kernel
   vtkOFBLICBuffer<vtkOFBLICMoments> Moments; // per sample (Animate on: re-convolution)
   vtkOFBLICBuffer<unsigned char> Covered;    // samples given their streamline, while tracing
   vtkOFBLICBuffer<float> Values;             // work buffers, kept to avoid allocating every update
@@ -312,6 +313,7 @@ public:
     this->Runs.clear();
     std::vector<const vtkTypeInt32*>().swap(this->TileRuns);
     std::vector<vtkIdType>().swap(this->TileRunLengths);
+    this->RunSteps = 0;
   }
 
   std::size_t LinesBytes() const

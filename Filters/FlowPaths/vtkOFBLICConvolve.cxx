@@ -71,6 +71,70 @@ private:
   std::atomic<bool> Abort{ false };
   vtkIdType Reported = 0; // read and written by the calling thread only
 };
+
+/**
+ * The `length` ids of tile t's runs (ids[0] is the -1 before the first run) reduced in
+ * place to those that the window of `steps` steps each way of one of the tile's samples
+ * reads (as GatherRun does: up to a -1), a -1 for each gap: no window reaches a gap, so
+ * none ends earlier. The samples' places (`where`) are moved with their ids; `places` is
+ * a work buffer. Returns the new length.
+ */
+vtkIdType CompactRuns(const vtkOFBLICTiles& tiles,
+  vtkIdType t,
+  const unsigned char* mask,
+  int steps,
+  vtkTypeInt32* ids,
+  vtkIdType length,
+  vtkTypeInt32* where,
+  std::vector<vtkTypeInt32>& places)
+{
+  // places[k]: 1 where a window reads id k, then its new place.
+  places.assign(length, 0);
+  tiles.ForEachSample(t,
+    [&](vtkIdType i)
+    {
+      if (mask[i])
+      {
+        return;
+      }
+      const vtkIdType at = where[i];
+      places[at] = 1;
+      for (vtkIdType s = 1; s <= steps && ids[at + s] >= 0; ++s)
+      {
+        places[at + s] = 1;
+      }
+      for (vtkIdType s = 1; s <= steps && ids[at - s] >= 0; ++s)
+      {
+        places[at - s] = 1;
+      }
+    });
+  vtkIdType out = 1; // ids[0] stays -1
+  for (vtkIdType k = 1; k < length; ++k)
+  {
+    if (ids[k] >= 0 && places[k])
+    {
+      places[k] = static_cast<vtkTypeInt32>(out);
+      ids[out++] = ids[k];
+    }
+    else if (ids[out - 1] >= 0)
+    {
+      ids[out++] = -1;
+    }
+  }
+  if (ids[out - 1] >= 0)
+  {
+    ids[out++] = -1;
+  }
+  tiles.ForEachSample(t,
+    [&](vtkIdType i)
+    {
+      if (!mask[i])
+      {
+        where[i] = places[where[i]];
+      }
+    });
+  return out;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -78,6 +142,8 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
   const vtkOFBLICTracer& tracer,
   bool keep,
   bool trace,
+  bool keepRuns,
+  int keepSteps,
   const std::vector<double>& weights,
   const vtkOFBLICKernelParts* parts,
   bool recombine,
@@ -150,6 +216,9 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
   vtkSMPThreadLocal<vtkOFBLICRunStore*> localStore(nullptr);
   vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
   vtkSMPThreadLocal<std::vector<float>> localValues; // a tile's run values
+  // Runs kept only around the windows of keepSteps steps (see Compact below).
+  const bool compact = fast && keepRuns && keepSteps > 0 && keepSteps < steps;
+  vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localPlaces;
   // One parallel loop over all tiles: loops over blocks of tiles would each wait for
   // their slowest tile.
   TileProgress progress(self, numberOfTiles, progress0, progress1);
@@ -182,6 +251,12 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
         const vtkTypeInt32* runs = keep ? cache.TileRuns[t] : nullptr;
         if (fast && tiles.First[t] < tiles.First[t + 1])
         {
+          if (!keepRuns)
+          {
+            // The tile's runs are read right away and then dropped: the store is this
+            // thread's scratch, the same pages (in the cache) for every tile.
+            store->Ids.resize(0);
+          }
           const std::size_t start = store->size();
           this->TraceTile(tracer, tiles, t, *store, covered, where, local.data());
           tileStart[t] = { store, start };
@@ -255,6 +330,17 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
               output[i] = vtkOFBLICTracer::Gather(i, local.data(), steps, w, inverseTotal, input);
             }
           });
+        if (compact && runs)
+        {
+          // The runs' ids that no window of keepSteps steps reads are dropped, in place:
+          // the tile's next runs go right after (fewer pages touched), and a later pass
+          // reads fewer ids.
+          vtkTypeInt32* ids = store->Ids.data() + tileStart[t].second;
+          const vtkIdType kept =
+            CompactRuns(tiles, t, mask, keepSteps, ids, length, where, localPlaces.Local());
+          cache.TileRunLengths[t] = kept;
+          store->Ids.resize(tileStart[t].second + kept);
+        }
         progress.TileDone();
       }
     });
@@ -263,8 +349,14 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
     return false;
   }
   self->UpdateProgress(progress1);
-  if (fast)
+  if (fast && !keepRuns)
   {
+    std::vector<const vtkTypeInt32*>().swap(cache.TileRuns);
+    std::vector<vtkIdType>().swap(cache.TileRunLengths);
+  }
+  else if (fast)
+  {
+    cache.RunSteps = compact ? keepSteps : steps;
     for (vtkIdType t = 0; t < numberOfTiles; ++t)
     {
       if (tileStart[t].first)

@@ -18,7 +18,12 @@ struct vtkOFBLIC::vtkInternals
    * One convolution of `input` into `output` over all samples, tile by tile, with the
    * progress of `self` from `progress0` to `progress1`. With `keep`, each sample's
    * streamline is read from the kept runs of fast LIC, traced first (TraceTile) when
-   * `trace` is true; else every sample traces its own. With `parts` (kept runs, Animate
+   * `trace` is true; else every sample traces its own. Without `keepRuns` the runs
+   * traced are read tile by tile and not kept (only the moments of `parts` are); with
+   * `keepSteps` in [1, NumberOfSteps) they are kept only where a sample's window of
+   * `keepSteps` steps each way reads them (the second pass of an animated EnhancedLIC,
+   * whose first pass reads the moments). With
+   * `parts` (kept runs, Animate
    * on), each sample's vtkOFBLICMoments are gathered into the cache (or, with
    * `recombine`, taken from it without reading the runs) and combined for the phase of
    * `parts`; `weights` is then not used. False when aborted.
@@ -27,6 +32,8 @@ struct vtkOFBLIC::vtkInternals
     const vtkOFBLICTracer& tracer,
     bool keep,
     bool trace,
+    bool keepRuns,
+    int keepSteps,
     const std::vector<double>& weights,
     const vtkOFBLICKernelParts* parts,
     bool recombine,

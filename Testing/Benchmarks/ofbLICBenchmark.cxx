@@ -19,7 +19,10 @@
 // its own streamline, every update), --reuse D (StreamlineReuseDistance D cells),
 // --quality (a line per OFB: the correlation of the LIC, EnhancedLIC on, with the one
 // traced from every sample, and the downstream-neighbour difference across grid switches
-// and tile planes as ratios to that elsewhere, with the per-sample traced LIC's).
+// and tile planes as ratios to that elsewhere, with the per-sample traced LIC's),
+// --cpu-time (the LIC columns time the processor time of the process, user and system of
+// all its threads, instead of the wall clock: on a machine shared with other work the wall
+// clock also counts the waits for a core; the GB/s columns then use that time).
 // Rows, per mesh, resolution and number of threads (medians over the rounds):
 // - first: a new vtkOFBLIC on the sampler's OFB, everything included (packed samples,
 //   tangential field and mask, noise, tracing, convolution, output), EnhancedLIC off
@@ -72,6 +75,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
 
 namespace
 {
@@ -133,6 +138,7 @@ struct Options
   bool PerSample = false;
   double Reuse = -1.0; // StreamlineReuseDistance; negative: the filter's default
   bool Quality = false;
+  bool CPUTime = false;
 };
 
 const char* const PartNames[4] = { "first", "anim", "first+enh", "anim+enh" };
@@ -189,13 +195,15 @@ int ParseOptions(int argc, char* argv[], Options& o)
       o.Reuse = std::max(0.0, std::atof(argv[++i]));
     else if (arg == "--quality")
       o.Quality = true;
+    else if (arg == "--cpu-time")
+      o.CPUTime = true;
     else
     {
       std::cout << "usage: ofbLICBenchmark [--meshes bunny,horse|FILES] [--resolutions LIST] "
                    "[--threads LIST] [--steps N] [--rounds N] [--frames N] [--width W] "
                    "[--height H] [--frames-only] [--offscreen] "
                    "[--parts first,anim,first+enh,anim+enh] [--checksum] [--per-sample] [--reuse "
-                   "D] [--quality]\n";
+                   "D] [--quality] [--cpu-time]\n";
       return arg == "--help" ? 0 : 1;
     }
   }
@@ -300,14 +308,28 @@ std::uint32_t HashLIC(vtkOFBLIC* lic)
   return h;
 }
 
-LICTimes TimeLIC(vtkOFB* ofb, int steps, const bool parts[4], bool perSample, double reuse)
+/// User and system processor seconds of the process so far (all threads).
+double ProcessSeconds()
+{
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+LICTimes TimeLIC(vtkOFB* ofb,
+  int steps,
+  const bool parts[4],
+  bool perSample,
+  double reuse,
+  bool cpuTime)
 {
   LICTimes t;
-  auto update = [](vtkOFBLIC* lic)
+  auto update = [cpuTime](vtkOFBLIC* lic)
   {
+    const double c0 = ProcessSeconds();
     const Clock::time_point t0 = Clock::now();
     lic->Update();
-    return Seconds(t0);
+    return cpuTime ? ProcessSeconds() - c0 : Seconds(t0);
   };
   for (int enhanced = 0; enhanced < 2; ++enhanced)
   {
@@ -423,7 +445,7 @@ void RunLIC(const Options& o,
     LICTimes last;
     for (int r = 0; r < o.Rounds; ++r)
     {
-      last = TimeLIC(ofb, o.Steps, o.Parts, o.PerSample, o.Reuse);
+      last = TimeLIC(ofb, o.Steps, o.Parts, o.PerSample, o.Reuse, o.CPUTime);
       for (int p = 0; p < 4; ++p)
       {
         times[p].push_back(last.Seconds[p]);
@@ -609,7 +631,8 @@ int main(int argc, char* argv[])
   std::cout << "ofbLICBenchmark: 2 x " << o.Steps << " steps a sample, medians of " << o.Rounds
             << " rounds, load " << Load() << "\n"
             << "first: new vtkOFBLIC, everything included; anim: re-convolution with a new "
-               "AnimationPhase; +enh: EnhancedLIC on.\n"
+               "AnimationPhase; +enh: EnhancedLIC on"
+            << (o.CPUTime ? "; times are processor time (all threads)" : "") << ".\n"
             << "Each cell: time, M samples/s, GB/s the LIC moves (model: "
             << BytesPerSample(o.Steps, true, false) << ", " << BytesPerSample(o.Steps, false, false)
             << ", " << BytesPerSample(o.Steps, true, true) << ", "

@@ -580,6 +580,63 @@ TEST(LIC, KeptStreamlinesGiveTheResultOfAFreshComputation)
 }
 
 //------------------------------------------------------------------------------
+TEST(LIC, AnimatedLICWithoutEnhancementKeepsOnlyTheSums)
+{
+  vtkSmartPointer<vtkPolyData> bunny = ReadMesh("stanford-bunny.obj");
+  ASSERT_NE(bunny, nullptr);
+  const double axis[3] = { 0.3, 1.0, 0.2 };
+  vtkSmartPointer<vtkOFB> ofb = BuildWithField(bunny, 128, RotationField(axis));
+  const vtkIdType n = ofb->GetNumberOfSamples();
+  ASSERT_GT(n, 0);
+  // Animate on, EnhancedLIC off: a new phase reads only the kept sums, so the streamlines
+  // are not kept (less memory than the same LIC keeping them, Animate off).
+  vtkNew<vtkOFBLIC> sums;
+  sums->SetNumberOfSteps(8);
+  sums->EnhancedLICOff();
+  sums->AnimateOn();
+  RunLIC(sums, ofb);
+  vtkNew<vtkOFBLIC> runs;
+  runs->SetNumberOfSteps(8);
+  runs->EnhancedLICOff();
+  RunLIC(runs, ofb);
+  EXPECT_GE(runs->GetCacheMemorySize(), sums->GetCacheMemorySize() + n * 8 / 1024);
+  // A new phase: combined from the sums, nothing traced; another kernel: traced again,
+  // the result of a fresh filter.
+  sums->SetAnimationPhase(0.4);
+  vtkSmartPointer<vtkOFB> phase = RunLIC(sums, ofb);
+  EXPECT_EQ(sums->GetLastRecomputed() & vtkOFBLIC::RECOMPUTED_STREAMLINES, 0);
+  sums->SetKernelTypeToHann();
+  vtkSmartPointer<vtkOFB> hann = RunLIC(sums, ofb);
+  EXPECT_NE(sums->GetLastRecomputed() & vtkOFBLIC::RECOMPUTED_STREAMLINES, 0);
+  vtkNew<vtkOFBLIC> fresh;
+  fresh->SetNumberOfSteps(8);
+  fresh->EnhancedLICOff();
+  fresh->AnimateOn();
+  fresh->SetAnimationPhase(0.4);
+  EXPECT_TRUE(SameLIC(phase, RunLIC(fresh, ofb)));
+  fresh->SetKernelTypeToHann();
+  EXPECT_TRUE(SameLIC(hann, RunLIC(fresh, ofb)));
+  // EnhancedLIC turned on: its second pass reads the streamlines, traced again.
+  sums->EnhancedLICOn();
+  vtkSmartPointer<vtkOFB> enhanced = RunLIC(sums, ofb);
+  EXPECT_NE(sums->GetLastRecomputed() & vtkOFBLIC::RECOMPUTED_STREAMLINES, 0);
+  fresh->EnhancedLICOn();
+  EXPECT_TRUE(SameLIC(enhanced, RunLIC(fresh, ofb)));
+  // Its runs are kept only where the second pass's windows read them: a new phase
+  // traces nothing, another kernel traces again; both as a fresh filter.
+  sums->SetAnimationPhase(0.7);
+  fresh->SetAnimationPhase(0.7);
+  vtkSmartPointer<vtkOFB> enhancedPhase = RunLIC(sums, ofb);
+  EXPECT_EQ(sums->GetLastRecomputed() & vtkOFBLIC::RECOMPUTED_STREAMLINES, 0);
+  EXPECT_TRUE(SameLIC(enhancedPhase, RunLIC(fresh, ofb)));
+  sums->SetKernelTypeToGaussian();
+  fresh->SetKernelTypeToGaussian();
+  vtkSmartPointer<vtkOFB> enhancedKernel = RunLIC(sums, ofb);
+  EXPECT_NE(sums->GetLastRecomputed() & vtkOFBLIC::RECOMPUTED_STREAMLINES, 0);
+  EXPECT_TRUE(SameLIC(enhancedKernel, RunLIC(fresh, ofb)));
+}
+
+//------------------------------------------------------------------------------
 TEST(LIC, ChangedFieldOrStepsTraceAgain)
 {
   const double dir[3] = { 1.0, 0.0, 0.0 };

@@ -63,6 +63,7 @@ vtkOFBLIC::vtkOFBLIC()
   , LastRecomputed(0)
   , LastStructureMTime(0)
   , LastExecutionTime(0.0)
+  , Reduction(nullptr)
   , Internals(new vtkInternals)
 {
   this->SetInputArrayToProcess(
@@ -631,7 +632,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   }
   if (enhanced)
   {
-    vtkOFBLICHighPass(input, cache);
+    vtkOFBLICHighPass(input, cache, this->Reduction);
     vtkOFBLICBuffer<float>& pass1 = cache.Scratch;
     pass1.swap(values);
     values.resize(n);
@@ -657,7 +658,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     // The second pass stretched to the full range as the first (its quantiles
     // vtkOFBLICFinalStretchTail and 1 - vtkOFBLICFinalStretchTail to 0 and 1): a LIC
     // averages its input, so without this it would span about half of [0, 1].
-    vtkOFBLICStretchTails(values.data(), n, cache.Mask.data(), vtkOFBLICFinalStretchTail);
+    vtkOFBLICStretchTails(
+      values.data(), n, cache.Mask.data(), vtkOFBLICFinalStretchTail, this->Reduction);
   }
   if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
     this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)
@@ -666,7 +668,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
       n,
       cache.Mask.data(),
       this->LowLICContrastEnhancementFactor,
-      this->HighLICContrastEnhancementFactor);
+      this->HighLICContrastEnhancementFactor,
+      this->Reduction);
   }
 
   this->WriteOutput(input, output, values.data(), cache.Mask.data(), n);

@@ -93,6 +93,7 @@
 #include <vector> // for the prepared field
 
 class vtkDataArray;
+class vtkOFBLICReduction;
 
 class VTKOFBFLOWPATHS_EXPORT vtkOFBLIC : public vtkOFBAlgorithm
 {
@@ -457,6 +458,13 @@ protected:
   int LastRecomputed;
   vtkMTimeType LastStructureMTime;
   double LastExecutionTime;
+
+  /**
+   * Combines the statistics of the contrast stretches with those of other processes
+   * (see vtkOFBLICReduction); null (the default) for one process. A distributed
+   * subclass (vtkOFBPLIC) sets it for the time of its RequestData.
+   */
+  vtkOFBLICReduction* Reduction;
 
 private:
   vtkOFBLIC(const vtkOFBLIC&) = delete;

@@ -64,6 +64,7 @@ vtkOFBLIC::vtkOFBLIC()
   , LastStructureMTime(0)
   , LastExecutionTime(0.0)
   , Reduction(nullptr)
+  , FieldScale(0.0)
   , Internals(new vtkInternals)
 {
   this->SetInputArrayToProcess(
@@ -181,6 +182,7 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
     .Add(normals)
     .Add(static_cast<double>(normals->GetMTime()))
     .Add(this->NormalizeVectors ? 1.0 : 0.0)
+    .Add(this->NormalizeVectors ? 0.0 : this->FieldScale)
     .Add(this->MaskThreshold)
     .Add(this->MaskOnSurface ? 1.0 : 0.0);
   if (input->GetStructureMTime() != this->LastStructureMTime)
@@ -318,6 +320,7 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
   // Scale the field (unit vectors, or relative to the strongest flow) and list the
   // samples in their tiles.
   const bool normalize = this->NormalizeVectors;
+  const double scale = this->FieldScale > 0.0 ? this->FieldScale : maxMag;
   vtkTypeInt32* tileIds = cache.TileIds.data();
   vtkSMPTools::For(0,
     chunks.Count,
@@ -335,7 +338,7 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
           }
           float* f = samples[i].Field;
           glm::dvec3 v = vtkOFBLICTracer::Vec(f);
-          v /= normalize ? glm::length(v) : maxMag;
+          v /= normalize ? glm::length(v) : scale;
           for (int c = 0; c < 3; ++c)
           {
             f[c] = static_cast<float>(v[c]);

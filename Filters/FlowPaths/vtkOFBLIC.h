@@ -466,6 +466,13 @@ protected:
    */
   vtkOFBLICReduction* Reduction;
 
+  /**
+   * With NormalizeVectors off, the magnitude the field is divided by: when positive,
+   * the largest tangential magnitude of every process's samples (set by vtkOFBPLIC);
+   * 0 (the default): the largest of this OFB's samples.
+   */
+  double FieldScale;
+
 private:
   vtkOFBLIC(const vtkOFBLIC&) = delete;
   void operator=(const vtkOFBLIC&) = delete;

@@ -2,6 +2,7 @@
 
 #include "vtkCommunicator.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
@@ -13,6 +14,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -177,11 +179,75 @@ int vtkOFBPLIC::RequestData(vtkInformation* request,
       reduction.Excluded = ghosts->GetPointer(0);
     }
   }
+  if (!this->NormalizeVectors)
+  {
+    // The field's scale: the largest tangential magnitude of every process's samples.
+    const double local = input ? this->LargestFieldMagnitude(input) : 0.0;
+    double global = 0.0;
+    controller->AllReduce(&local, &global, 1, vtkCommunicator::MAX_OP);
+    this->FieldScale = global;
+  }
   this->Reduction = &reduction;
   const int result = this->Superclass::RequestData(request, inputVector, outputVector);
   this->Reduction = nullptr;
   reduction.Finish();
   return result;
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBPLIC::LargestFieldMagnitude(vtkOFB* input)
+{
+  // As vtkOFBLIC packs its samples: the field less its component along the normal (as a
+  // float, as the tracer reads it), samples that it masks left out.
+  const vtkIdType n = input->GetNumberOfSamples();
+  vtkPointData* pd = input->GetSampleData();
+  vtkDataArray* normals =
+    pd->GetNormals() ? pd->GetNormals() : pd->GetArray(vtkOFB::NormalsArrayName());
+  // The field as vtkOFBLIC::FindField chooses it (which reports a bad one).
+  vtkInformation* info = this->GetInputArrayInformation(0);
+  vtkDataArray* vectors = nullptr;
+  if (info && info->Has(vtkDataObject::FIELD_NAME()))
+  {
+    vectors = pd->GetArray(info->Get(vtkDataObject::FIELD_NAME()));
+  }
+  else if (info && info->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
+  {
+    vectors = pd->GetAttribute(info->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()));
+  }
+  if (!normals || !vectors || normals->GetNumberOfComponents() != 3 ||
+    vectors->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() < n ||
+    vectors->GetNumberOfTuples() < n)
+  {
+    return 0.0;
+  }
+  const bool unit = vtkFloatArray::SafeDownCast(normals) != nullptr;
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double nrm[3], v[3];
+    normals->GetTuple(i, nrm);
+    vectors->GetTuple(i, v);
+    const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = unit ? nrm[c] : (len > 0.0 && std::isfinite(len) ? nrm[c] / len : 0.0);
+      nrm[c] = static_cast<double>(static_cast<float>(d));
+    }
+    const double dot = v[0] * nrm[0] + v[1] * nrm[1] + v[2] * nrm[2];
+    double t[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      t[c] = v[c] - dot * nrm[c];
+    }
+    const double mag = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    const double test =
+      this->MaskOnSurface ? mag : std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (mag > 0.0 && std::isfinite(mag) && std::isfinite(test) && test >= this->MaskThreshold)
+    {
+      largest = std::max(largest, mag);
+    }
+  }
+  return largest;
 }
 
 //------------------------------------------------------------------------------

@@ -25,8 +25,8 @@
  * streamline instead of the one it gets on one process (both pass within
  * StreamlineReuseDistance of it): the values agree statistically, not sample by sample.
  * With CacheStreamlines off (every sample traces its own streamline) they agree sample by
- * sample up to float rounding. NormalizeVectors off scales the field by the largest
- * magnitude of each process's samples, not of all.
+ * sample up to float rounding. With NormalizeVectors off, the field is divided by the
+ * largest tangential magnitude of every process's samples (an all-reduce of one double).
  *
  * A process with no samples takes part in the collective calls and outputs its empty
  * input with empty "LIC" and "LICMask" arrays. With no controller, or a single
@@ -43,6 +43,7 @@
 #include "vtkOFBParallelModule.h" // for export macro
 
 class vtkMultiProcessController;
+class vtkOFB;
 
 class VTKOFBPARALLEL_EXPORT vtkOFBPLIC : public vtkOFBLIC
 {
@@ -84,6 +85,9 @@ protected:
 
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /// The largest tangential field magnitude of the input's unmasked samples (0 if none).
+  double LargestFieldMagnitude(vtkOFB* input);
 
   vtkMultiProcessController* Controller;
   int NumberOfGhostLevels;

@@ -6,8 +6,11 @@
 //   mpirun -np N TestOFBPDistributed [--empty-last]
 //
 // --empty-last: the last process has an empty piece (the others share the sphere).
+// --bad-input: a resolution out of range, then a surface without a vector field for the
+// LIC: every process reports the error, outputs nothing, and none waits for another.
 // Exit status 0 when every check holds, on every process.
 #include "vtkCellData.h"
+#include "vtkCommunicator.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkExtractPolyDataPiece.h"
 #include "vtkFloatArray.h"
@@ -117,6 +120,8 @@ struct Pipeline
       lic->SetNumberOfGhostLevels(ghostLevels);
     }
     this->LIC->CacheStreamlinesOff();
+    // The field scaled by its largest magnitude over every process.
+    this->LIC->NormalizeVectorsOff();
     this->Paint->SetController(controller);
     this->Paint->SetInputConnection(this->LIC->GetOutputPort());
     this->Paint->SetStrokesData(stroke);
@@ -295,6 +300,48 @@ bool Compare(std::vector<double> pieces, std::vector<double> whole, int size, bo
 }
 }
 
+/// --bad-input: errors on every process (an empty piece too) give empty outputs, no hang.
+bool RunBadInput(vtkMultiProcessController* controller, int pieces)
+{
+  const int rank = controller->GetLocalProcessId();
+  vtkSmartPointer<vtkPolyData> mesh = MakeSphere();
+  vtkNew<vtkPolyData> noField;
+  noField->ShallowCopy(mesh);
+  noField->GetPointData()->SetVectors(nullptr);
+  noField->GetPointData()->RemoveArray("Field");
+  vtkNew<vtkPolyData> none;
+  bool ok = true;
+  for (int bad = 0; bad < 2; ++bad)
+  {
+    Pipeline pipeline(controller, none, GhostLevels);
+    vtkNew<vtkExtractPolyDataPiece> extract;
+    extract->SetInputData(bad == 0 ? mesh.GetPointer() : noField.GetPointer());
+    if (rank < pieces)
+    {
+      pipeline.Sampler->SetInputConnection(extract->GetOutputPort());
+    }
+    else
+    {
+      pipeline.Sampler->SetInputData(none);
+    }
+    pipeline.Sampler->SetResolution(bad == 0 ? 2 : Resolution);
+    pipeline.Update(std::min(rank, pieces - 1), pieces);
+    const vtkIdType sampled = pipeline.Sampler->GetOutput()->GetNumberOfSamples();
+    const vtkIdType convolved =
+      vtkOFB::SafeDownCast(pipeline.LIC->GetOutputDataObject(0))->GetNumberOfSamples();
+    // A resolution out of range: no samples; no field: samples, but no LIC.
+    const bool expected = convolved == 0 && (bad == 1 || sampled == 0);
+    std::printf("rank %d, %s: %lld samples, %lld with LIC%s\n",
+      rank,
+      bad == 0 ? "resolution 2" : "no field",
+      static_cast<long long>(sampled),
+      static_cast<long long>(convolved),
+      expected ? "" : " FAIL");
+    ok = ok && expected;
+  }
+  return ok;
+}
+
 int main(int argc, char* argv[])
 {
   vtkNew<vtkMPIController> controller;
@@ -303,11 +350,25 @@ int main(int argc, char* argv[])
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
   bool emptyLast = false;
+  bool badInput = false;
   for (int i = 1; i < argc; ++i)
   {
     emptyLast = emptyLast || !std::strcmp(argv[i], "--empty-last");
+    badInput = badInput || !std::strcmp(argv[i], "--bad-input");
   }
   const int pieces = emptyLast && size > 1 ? size - 1 : size;
+  if (badInput)
+  {
+    int ok = RunBadInput(controller, pieces) ? 1 : 0;
+    int all = 0;
+    controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
+    if (rank == 0)
+    {
+      std::printf("%s\n", all ? "PASS" : "FAIL");
+    }
+    controller->Finalize();
+    return all ? 0 : 1;
+  }
 
   vtkSmartPointer<vtkPolyData> mesh = MakeSphere();
   vtkSmartPointer<vtkPolyData> stroke = MakeStroke();

@@ -19,10 +19,13 @@
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBrush.h"
+#include "vtkOFBLIC.h"
 #include "vtkOFBPLIC.h"
 #include "vtkOFBPPaintFilter.h"
 #include "vtkOFBPSampler.h"
+#include "vtkOFBPaintFilter.h"
 #include "vtkOFBPainter.h"
+#include "vtkOFBSampler.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -300,6 +303,52 @@ bool Compare(std::vector<double> pieces, std::vector<double> whole, int size, bo
 }
 }
 
+/**
+ * The distributed classes without a controller against the serial ones with the same
+ * settings: every sample array equal, value for value.
+ */
+bool SameAsSerialClasses(Pipeline& whole, vtkPolyData* mesh, vtkPolyData* stroke)
+{
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetResolution(Resolution);
+  sampler->SetInputData(mesh);
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetInputConnection(sampler->GetOutputPort());
+  lic->SetNumberOfSteps(10);
+  lic->CacheStreamlinesOff();
+  lic->NormalizeVectorsOff();
+  vtkNew<vtkOFBPaintFilter> paint;
+  paint->SetInputConnection(lic->GetOutputPort());
+  paint->SetStrokesData(stroke);
+  paint->GetPainter()->SetFollowSurface(false);
+  paint->GetBrush()->SetRadius(0.06);
+  paint->GetBrush()->SetColor(1.0, 0.1, 0.1);
+  paint->Update();
+  vtkOFB* serial = vtkOFB::SafeDownCast(paint->GetOutputDataObject(0));
+  vtkOFB* distributed = vtkOFB::SafeDownCast(whole.Paint->GetOutputDataObject(0));
+  bool same = serial->GetNumberOfSamples() == distributed->GetNumberOfSamples() &&
+    serial->GetNumberOfSamples() > 0;
+  for (const char* name : { "Height", "Normals", "LIC", "Colors" })
+  {
+    vtkDataArray* a = serial->GetSampleData()->GetArray(name);
+    vtkDataArray* b = distributed->GetSampleData()->GetArray(name);
+    bool equal = same && a && b && a->GetNumberOfComponents() == b->GetNumberOfComponents();
+    for (vtkIdType i = 0; equal && i < a->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+      {
+        equal = equal && a->GetComponent(i, c) == b->GetComponent(i, c);
+      }
+    }
+    if (!equal)
+    {
+      std::printf("FAIL without a controller, \"%s\" differs from the serial classes'\n", name);
+    }
+    same = same && equal;
+  }
+  return same;
+}
+
 /// --bad-input: errors on every process (an empty piece too) give empty outputs, no hang.
 bool RunBadInput(vtkMultiProcessController* controller, int pieces)
 {
@@ -421,6 +470,10 @@ int main(int argc, char* argv[])
     whole.Update(0, 1);
     std::vector<double> reference = whole.Owned(0);
     const std::vector<double> wholeFrame = whole.Frame();
+    if (!SameAsSerialClasses(whole, mesh, stroke))
+    {
+      ok = 0;
+    }
     for (int r = 0; r < size; ++r)
     {
       if (!std::equal(wholeFrame.begin(), wholeFrame.end(), frames.begin() + 7 * r))

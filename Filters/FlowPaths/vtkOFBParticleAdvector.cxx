@@ -488,8 +488,10 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
   // chunks (each batch of particles makes a chunk's steps in a row), about 20 per
   // update.
   const bool painting = in.Target && this->Paint && this->FootprintRadius > 0.0;
+  // A distributed run exchanges the particles after every step.
   const vtkIdType chunk =
-    painting || in.Unsteady ? 1 : std::max<vtkIdType>(1, (target - first) / 20);
+    painting || in.Unsteady || this->Exchange ? 1 : std::max<vtkIdType>(1, (target - first) / 20);
+  system.Active = this->Exchange && !in.Owned.empty() ? in.Owned.data() : nullptr;
   in.AdvectionTime = 0.0;
   in.PaintingTime = 0.0;
   for (vtkIdType step = first; step < target;)
@@ -501,6 +503,10 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
       this->PrepareUnsteadyStep(step - first);
     }
     system.Advance(in.Coloring, count);
+    if (this->Exchange)
+    {
+      this->ExchangeParticles();
+    }
     const auto moved = Clock::now();
     in.AdvectionTime += Milliseconds(moved - start);
     step += count;

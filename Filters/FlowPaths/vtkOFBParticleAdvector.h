@@ -112,11 +112,13 @@
 
 #include <cstdint> // for HashGeometry
 #include <memory>  // for std::unique_ptr
+#include <vector>  // for FindOwnedTriangles
 
 class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkOFB;
 class vtkOFBBrush;
+class vtkOFBParticleExchange;
 class vtkDataSet;
 class vtkPolyData;
 class vtkScalarsToColors;
@@ -473,6 +475,41 @@ protected:
   void FillParticles(vtkPolyData* output);
   void FillTrails(vtkPolyData* output);
   ///@}
+
+  ///@{
+  /**
+   * Distributed runs (vtkOFBParticleAdvectorDistributed.cxx), with Exchange set: the
+   * triangles this process owns (not ghost cells), the seeds located over every
+   * process (each seed's owner: the process whose own triangle is closest), and after
+   * each step the particles' states sent to every process and the particles that left
+   * this process's triangles handed to their new owner. Whether this process outputs
+   * particle i (always without Exchange).
+   */
+  void FindOwnedTriangles(vtkPolyData* surface, const std::vector<vtkIdType>& polygonCells);
+  bool LocateSeedsOverProcesses(vtkDataSet* seeds);
+  void ExchangeParticles();
+  bool OutputsParticle(vtkIdType i) const;
+  /**
+   * Of the triangles through the point `x` (within 1e-9 cells; `cell` is one of them),
+   * the one with the smallest centroid (x, then y, then z), among the owned ones when
+   * `ownedOnly`: a seed on an edge or a vertex starts on the same triangle whatever
+   * the order of the triangles. Its centroid into `centroid`.
+   */
+  vtkIdType CanonicalTriangle(const double x[3],
+    vtkIdType cell,
+    bool ownedOnly,
+    double centroid[3]);
+  ///@}
+
+  /**
+   * The collective calls of a distributed run (see vtkOFBParticleExchange); null (the
+   * default) for one process. Set by vtkOFBPParticleAdvector for its RequestData.
+   */
+  vtkOFBParticleExchange* Exchange = nullptr;
+
+  /// Particles that left their process's triangles (on any process), counted by
+  /// ExchangeParticles.
+  vtkIdType NumberOfHandOffs = 0;
 
   vtkOFB* OFB;
   vtkScalarsToColors* LookupTable;

@@ -24,7 +24,8 @@
  *   is that copy. Alternatively SetOFB() gives an OFB that the application holds:
  *   it is painted in place (and port 0 shares it) and wins over port 1.
  * - port 2 (optional, SetSourceData / SetSourceConnection / SetSeeds): seed points.
- *   Each seed is moved to the closest point of the surface (vtkStaticCellLocator);
+ *   Each seed is moved to the closest point of the surface (vtkStaticCellLocator;
+ *   a point on an edge or a vertex goes onto the triangle of smallest centroid there);
  *   seeds with non-finite coordinates, or farther than MaximumSeedDistance cells
  *   from the surface, are rejected with a warning. Without seeds,
  *   NumberOfParticles seeds are drawn area-uniformly over the surface from

@@ -5,12 +5,16 @@
 // advances them on the whole sphere with no controller, gathers every process's
 // particles, trails and owned samples, and compares.
 //
-//   mpirun -np N TestOFBPParticles
+//   mpirun -np N TestOFBPParticles [--bad-input]
+//
+// --bad-input: a Lifetime (reseeds), then no seeds, then an empty last piece: every
+// process reports the error and outputs no particles, and none waits for another.
 //
 // Exit status 0 when every check holds, on every process.
 #include "vtkCell.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCommunicator.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkExtractPolyDataPiece.h"
 #include "vtkFloatArray.h"
@@ -31,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <vector>
 
@@ -198,6 +203,50 @@ struct Pipeline
 };
 }
 
+/// --bad-input: settings that distributed particles refuse, and an empty piece.
+bool RunBadInput(vtkMultiProcessController* controller, vtkPolyData* mesh, vtkPolyData* seeds)
+{
+  const int rank = controller->GetLocalProcessId();
+  const int size = controller->GetNumberOfProcesses();
+  vtkNew<vtkPolyData> none;
+  bool ok = true;
+  for (int bad = 0; bad < 3; ++bad)
+  {
+    Pipeline pipeline(controller, mesh, seeds);
+    const char* what = "a Lifetime";
+    if (bad == 0)
+    {
+      pipeline.Advector->SetLifetime(5);
+    }
+    else if (bad == 1)
+    {
+      what = "no seeds";
+      pipeline.Advector->SetSeeds(nullptr);
+    }
+    else if (rank == size - 1)
+    {
+      what = "an empty piece";
+      pipeline.Advector->SetInputData(none);
+    }
+    else
+    {
+      what = "an empty piece elsewhere";
+    }
+    pipeline.Advector->UpdateTimeStep(5, rank, size, 0);
+    const vtkIdType particles =
+      vtkPolyData::SafeDownCast(pipeline.Advector->GetOutputDataObject(1))->GetNumberOfPoints();
+    // One process has no reason to refuse: it advances its particles as ever.
+    const bool expected = size == 1 ? (bad == 2 || particles == 0) : particles == 0;
+    std::printf("rank %d, %s: %lld particles%s\n",
+      rank,
+      what,
+      static_cast<long long>(particles),
+      expected ? "" : " FAIL");
+    ok = ok && expected;
+  }
+  return ok;
+}
+
 int main(int argc, char* argv[])
 {
   vtkNew<vtkMPIController> controller;
@@ -207,6 +256,18 @@ int main(int argc, char* argv[])
   const int size = controller->GetNumberOfProcesses();
   vtkSmartPointer<vtkPolyData> mesh = MakeSphere();
   vtkSmartPointer<vtkPolyData> seeds = MakeSeeds(40);
+  if (argc > 1 && !std::strcmp(argv[1], "--bad-input"))
+  {
+    int ok = RunBadInput(controller, mesh, seeds) ? 1 : 0;
+    int all = 0;
+    controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
+    if (rank == 0)
+    {
+      std::printf("%s\n", all ? "PASS" : "FAIL");
+    }
+    controller->Finalize();
+    return all ? 0 : 1;
+  }
 
   Pipeline distributed(controller, mesh, seeds);
   distributed.Advector->UpdateTimeStep(Steps, rank, size, 0);

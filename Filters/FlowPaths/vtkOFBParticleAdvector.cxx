@@ -1,5 +1,6 @@
 #include "vtkOFBParticleAdvector.h"
 #include "vtkOFBParticleAdvectorInternals.h"
+#include "vtkOFBParticleExchange.h"
 
 #include "vtkDataSetAttributes.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -383,7 +384,12 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
   }
   const bool targetChanged = this->PrepareOFB(inputOFB, surface);
   const bool settingsChanged = this->NeedsRestart(seeds); // always: it records them
-  const bool restart = settingsChanged || rebuilt || targetChanged;
+  bool restart = settingsChanged || rebuilt || targetChanged;
+  if (this->Exchange)
+  {
+    // Every process starts again when one does (see ParticipateWithoutPiece).
+    restart = this->Exchange->AllReduceMaximum(restart ? 1.0 : 0.0) > 0.0;
+  }
   if (restart && !this->StartParticles(seeds))
   {
     in.Started = false;
@@ -484,6 +490,12 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
 
   this->PrepareColoring(surface);
   const vtkIdType first = system.CurrentStep;
+  if (this->Exchange)
+  {
+    // The same number of steps (and exchanges) on every process.
+    target = first +
+      static_cast<vtkIdType>(this->Exchange->AllReduceMaximum(static_cast<double>(target - first)));
+  }
   // Without painting, only the last step's footprints are kept: the steps go in
   // chunks (each batch of particles makes a chunk's steps in a row), about 20 per
   // update.

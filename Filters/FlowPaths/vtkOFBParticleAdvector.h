@@ -469,6 +469,9 @@ protected:
   bool NeedsRestart(vtkDataSet* seeds);
   /// False, with an error, when the particles would exceed MemoryLimit.
   bool StartParticles(vtkDataSet* seeds);
+  /// StartParticles' checks (false with an error), then the start once they passed.
+  bool CheckStart(vtkDataSet* seeds);
+  bool StartCheckedParticles(vtkDataSet* seeds);
   void LocateSeeds(vtkDataSet* seeds);
   void PrepareColoring(vtkPolyData* surface);
   void PaintFootprints();
@@ -490,6 +493,12 @@ protected:
   bool LocateSeedsOverProcesses(vtkDataSet* seeds);
   void ExchangeParticles();
   bool OutputsParticle(vtkIdType i) const;
+  /**
+   * The collective calls of one update, for a process whose piece is empty (it has no
+   * particles): the restart agreement, the start (seeds located over every process),
+   * the number of steps and each step's exchange, as the other processes make them.
+   */
+  void ParticipateWithoutPiece(vtkDataSet* seeds, vtkInformationVector* outputVector);
   /**
    * Of the triangles through the point `x` (within 1e-9 cells; `cell` is one of them),
    * the one with the smallest centroid (x, then y, then z), among the owned ones when

@@ -10,11 +10,14 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkGenericCell.h"
 #include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkOFBParticleExchange.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStaticCellLocator.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -424,4 +427,82 @@ void vtkOFBParticleAdvector::ExchangeParticles()
       system.Particles[i].Point = points[k];
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::ParticipateWithoutPiece(vtkDataSet* seeds,
+  vtkInformationVector* outputVector)
+{
+  // The collective calls of RequestData (steady input), with nothing to contribute.
+  vtkInternals& in = *this->Internals;
+  vtkOFBParticleSystem& system = in.System;
+  vtkOFBParticleExchange* exchange = this->Exchange;
+  const vtkIdType n = seeds ? seeds->GetNumberOfPoints() : 0;
+  auto start = [&]()
+  {
+    // StartParticles: its checks agreed on, the largest speed, the seeds located.
+    const bool ok = seeds && this->Lifetime == 0;
+    if (exchange->AllReduceMaximum(ok ? 0.0 : 1.0) > 0.0)
+    {
+      return false;
+    }
+    exchange->AllReduceMaximum(0.0);
+    for (int call = 0; call < 5; ++call)
+    {
+      std::vector<double> none(n, Unclaimed);
+      exchange->AllReduceMinimum(none);
+    }
+    system.CurrentStep = 0;
+    return true;
+  };
+  if (exchange->AllReduceMaximum(0.0) > 0.0 && !start())
+  {
+    in.PendingSteps = 0;
+    return;
+  }
+  vtkIdType target = system.CurrentStep;
+  if (in.PendingSteps > 0)
+  {
+    target += in.PendingSteps;
+  }
+  else
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      vtkInformation* info = outputVector->GetInformationObject(i);
+      if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+      {
+        const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+        target = std::isfinite(t) && t > 0.0
+          ? static_cast<vtkIdType>(std::min(std::floor(t + 1e-9), 9.0e18))
+          : 0;
+        break;
+      }
+    }
+    if (target < system.CurrentStep && !start())
+    {
+      return;
+    }
+  }
+  in.PendingSteps = 0;
+  const vtkIdType steps = static_cast<vtkIdType>(
+    exchange->AllReduceMaximum(static_cast<double>(target - system.CurrentStep)));
+  for (vtkIdType step = 0; step < steps; ++step)
+  {
+    // ExchangeParticles with no particles: the states, then the hand-offs' claims.
+    std::vector<double> all;
+    exchange->AllGather(std::vector<double>(), all);
+    size_t leaving = 0;
+    for (size_t r = 0; r + RecordSize <= all.size(); r += RecordSize)
+    {
+      leaving += all[r + 16] != 0.0 ? 1 : 0;
+    }
+    this->NumberOfHandOffs += static_cast<vtkIdType>(leaving);
+    for (int call = 0; leaving > 0 && call < 2; ++call)
+    {
+      std::vector<double> none(leaving, Unclaimed);
+      exchange->AllReduceMinimum(none);
+    }
+  }
+  system.CurrentStep += steps;
 }

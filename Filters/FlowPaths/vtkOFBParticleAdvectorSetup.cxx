@@ -333,6 +333,25 @@ bool vtkOFBParticleAdvector::NeedsRestart(vtkDataSet* seeds)
 //------------------------------------------------------------------------------
 bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
 {
+  const bool ok = this->CheckStart(seeds);
+  if (this->Exchange && this->Exchange->AllReduceMaximum(ok ? 0.0 : 1.0) > 0.0)
+  {
+    if (ok)
+    {
+      vtkErrorMacro("Another process could not start the particles: no particles.");
+    }
+    return false;
+  }
+  if (!ok)
+  {
+    return false;
+  }
+  return this->StartCheckedParticles(seeds);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::CheckStart(vtkDataSet* seeds)
+{
   // What the particles will hold: per seed its point and colour; per particle (seeds x
   // ChainLength) its state, its trail (TrailLength positions, and as many output points
   // and ids), its footprint and output point. In doubles: the product can exceed 2^63.
@@ -370,6 +389,13 @@ bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
       << " positions), more than MemoryLimit (" << this->MemoryLimit << " MiB): no particles.");
     return false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::StartCheckedParticles(vtkDataSet* seeds)
+{
+  vtkInternals& in = *this->Internals;
   vtkOFBParticleSystem& system = in.System;
   system.Walker = &in.Walker;
   vtkOFBParticleStepper& stepper = system.Stepper;

@@ -1,6 +1,7 @@
 #include "vtkOFBPParticleAdvector.h"
 
 #include "vtkCommunicator.h"
+#include "vtkDataSet.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
@@ -120,15 +121,17 @@ int vtkOFBPParticleAdvector::RequestData(vtkInformation* request,
   {
     return this->Superclass::RequestData(request, inputVector, outputVector);
   }
-  // Every process makes the same collective calls: all or none of them go on.
+  // Every process makes the same collective calls. A process with an empty piece makes
+  // them with nothing to contribute (steady input); with an unsteady input, where it
+  // cannot tell when the others start again, every process stops with an error.
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[0], 0);
   const int local = surface && surface->GetNumberOfPolys() + surface->GetNumberOfStrips() > 0;
   int all = 0;
   controller->AllReduce(&local, &all, 1, vtkCommunicator::MIN_OP);
-  if (!all)
+  if (!all && this->IsUnsteady(inputVector))
   {
-    vtkErrorMacro("A process has no triangles in its piece of the surface: no particles "
-                  "(distributed particles need a non-empty piece on every process).");
+    vtkErrorMacro("A process has no triangles in its piece of an unsteady surface: no "
+                  "particles (pathlines need a non-empty piece on every process).");
     for (int i = 0; i < 3; ++i)
     {
       vtkDataObject::GetData(outputVector, i)->Initialize();
@@ -138,7 +141,22 @@ int vtkOFBPParticleAdvector::RequestData(vtkInformation* request,
   this->NumberOfHandOffs = 0;
   ControllerExchange exchange(controller);
   this->Exchange = &exchange;
-  const int result = this->Superclass::RequestData(request, inputVector, outputVector);
+  int result = 1;
+  if (local)
+  {
+    result = this->Superclass::RequestData(request, inputVector, outputVector);
+  }
+  else
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      vtkDataObject::GetData(outputVector, i)->Initialize();
+    }
+    vtkDataSet* seeds = inputVector[2]->GetNumberOfInformationObjects() > 0
+      ? vtkDataSet::GetData(inputVector[2], 0)
+      : nullptr;
+    this->ParticipateWithoutPiece(seeds, outputVector);
+  }
   this->Exchange = nullptr;
   return result;
 }

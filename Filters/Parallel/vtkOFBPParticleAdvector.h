@@ -19,9 +19,11 @@
  * from each piece's own triangles): otherwise an error on every process. The field's
  * scale with NormalizeVectors off is the largest speed of every process. The cell size
  * (the unit of StepSize) is the OFB's: give the OFB of vtkOFBPSampler, whose frame is
- * common. Every process needs a non-empty piece: if one has none, every process
- * reports an error and outputs nothing. With no controller, or a single process, it
- * is vtkOFBParticleAdvector.
+ * common. A process with an empty piece makes the same collective calls with nothing to
+ * contribute and outputs no particles. With an unsteady surface (pathlines) each
+ * process plans its time steps from its own piece's speeds (not equal to one
+ * process), and an empty piece is an error on every process. With no controller, or a
+ * single process, it is vtkOFBParticleAdvector.
  *
  * @sa vtkOFBParticleAdvector vtkOFBParticleExchange vtkOFBPSampler
  */

@@ -242,7 +242,8 @@ bool vtkOFBSampler::ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBack
     vtkErrorMacro("Resolution must be in [3, 65536], it is " << this->Resolution << ".");
     return false;
   }
-  const double* b = surface.Bounds;
+  double b[6];
+  this->GetFrameBounds(surface.Bounds, b);
   const double longest = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
   if (!std::isfinite(longest))
   {
@@ -265,6 +266,12 @@ bool vtkOFBSampler::ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBack
     job.Origin[a] = 0.5 * (b[2 * a] + b[2 * a + 1]) - 0.5 * job.Dimensions[a] * cellSize;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSampler::GetFrameBounds(const double surfaceBounds[6], double bounds[6])
+{
+  std::copy(surfaceBounds, surfaceBounds + 6, bounds);
 }
 
 //------------------------------------------------------------------------------

@@ -265,6 +265,27 @@ protected:
   /// The backend that built, or failed to build, the current output; null before any build.
   vtkOFBSamplerBackend* GetLastBuildBackend() const { return this->LastBuildBackend; }
 
+  /**
+   * The surface to sample: `input` itself if a vtkPolyData, the merged surface of
+   * its blocks (vtkOFBMergeBlocks) if a composite dataset, else its outer surface
+   * (vtkDataSetSurfaceFilter) with its point and cell arrays; an empty one for no input.
+   * A distributed subclass (vtkOFBPSampler) adjusts its arrays.
+   */
+  virtual vtkSmartPointer<vtkPolyData> GetSurface(vtkDataObject* input);
+
+  /**
+   * The box the frame is computed from: `surfaceBounds` (the bounds of the points of
+   * the surface's triangles) here; a distributed subclass returns the bounds of
+   * every rank's surface, so that all ranks sample on one frame.
+   */
+  virtual void GetFrameBounds(const double surfaceBounds[6], double bounds[6]);
+
+  /**
+   * Compute the frame of a prepared surface at the current resolution into `job`
+   * (from GetFrameBounds). Returns false after reporting an error.
+   */
+  bool ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBackend::Job& job);
+
   int Resolution;
   vtkIdType MemoryLimit;
   unsigned char DefaultColor[4];
@@ -281,13 +302,6 @@ protected:
 private:
   vtkOFBSampler(const vtkOFBSampler&) = delete;
   void operator=(const vtkOFBSampler&) = delete;
-
-  /**
-   * The surface to sample: `input` itself if a vtkPolyData, the merged surface of
-   * its blocks (vtkOFBMergeBlocks) if a composite dataset, else its outer surface
-   * (vtkDataSetSurfaceFilter) with its point and cell arrays; an empty one for no input.
-   */
-  vtkSmartPointer<vtkPolyData> GetSurface(vtkDataObject* input);
 
   /// Whether the build needs the input cell of each triangle (cell arrays to pass).
   bool NeedsTriangleCells(vtkPolyData* input) const;
@@ -328,12 +342,6 @@ private:
   bool SelectVectors(vtkPolyData* input, vtkOFBSurface& surface, vtkDataArray*& vectors);
   vtkDataArray* SelectColors(vtkPolyData* input, vtkOFBSurface& surface);
   ///@}
-
-  /**
-   * Compute the frame of a prepared surface at the current resolution into `job`.
-   * Returns false after reporting an error.
-   */
-  bool ComputeFrame(const vtkOFBSurface& surface, vtkOFBSamplerBackend::Job& job);
 
   /**
    * Run `backend` on `job`; the CPU backend instead, with a warning, when it is

@@ -63,6 +63,8 @@ vtkOFBLIC::vtkOFBLIC()
   , LastRecomputed(0)
   , LastStructureMTime(0)
   , LastExecutionTime(0.0)
+  , Reduction(nullptr)
+  , FieldScale(0.0)
   , Internals(new vtkInternals)
 {
   this->SetInputArrayToProcess(
@@ -180,6 +182,7 @@ bool vtkOFBLIC::Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* norm
     .Add(normals)
     .Add(static_cast<double>(normals->GetMTime()))
     .Add(this->NormalizeVectors ? 1.0 : 0.0)
+    .Add(this->NormalizeVectors ? 0.0 : this->FieldScale)
     .Add(this->MaskThreshold)
     .Add(this->MaskOnSurface ? 1.0 : 0.0);
   if (input->GetStructureMTime() != this->LastStructureMTime)
@@ -317,6 +320,7 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
   // Scale the field (unit vectors, or relative to the strongest flow) and list the
   // samples in their tiles.
   const bool normalize = this->NormalizeVectors;
+  const double scale = this->FieldScale > 0.0 ? this->FieldScale : maxMag;
   vtkTypeInt32* tileIds = cache.TileIds.data();
   vtkSMPTools::For(0,
     chunks.Count,
@@ -334,7 +338,7 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
           }
           float* f = samples[i].Field;
           glm::dvec3 v = vtkOFBLICTracer::Vec(f);
-          v /= normalize ? glm::length(v) : maxMag;
+          v /= normalize ? glm::length(v) : scale;
           for (int c = 0; c < 3; ++c)
           {
             f[c] = static_cast<float>(v[c]);
@@ -638,7 +642,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   }
   if (enhanced)
   {
-    vtkOFBLICHighPass(input, cache);
+    vtkOFBLICHighPass(input, cache, this->Reduction);
     vtkOFBLICBuffer<float>& pass1 = cache.Scratch;
     pass1.swap(values);
     values.resize(n);
@@ -666,7 +670,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     // The second pass stretched to the full range as the first (its quantiles
     // vtkOFBLICFinalStretchTail and 1 - vtkOFBLICFinalStretchTail to 0 and 1): a LIC
     // averages its input, so without this it would span about half of [0, 1].
-    vtkOFBLICStretchTails(values.data(), n, cache.Mask.data(), vtkOFBLICFinalStretchTail);
+    vtkOFBLICStretchTails(
+      values.data(), n, cache.Mask.data(), vtkOFBLICFinalStretchTail, this->Reduction);
   }
   if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
     this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)
@@ -675,7 +680,8 @@ int vtkOFBLIC::RequestData(vtkInformation*,
       n,
       cache.Mask.data(),
       this->LowLICContrastEnhancementFactor,
-      this->HighLICContrastEnhancementFactor);
+      this->HighLICContrastEnhancementFactor,
+      this->Reduction);
   }
 
   this->WriteOutput(input, output, values.data(), cache.Mask.data(), n);

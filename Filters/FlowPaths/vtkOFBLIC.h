@@ -97,6 +97,7 @@
 #include <vector> // for the prepared field
 
 class vtkDataArray;
+class vtkOFBLICReduction;
 
 class VTKOFBFLOWPATHS_EXPORT vtkOFBLIC : public vtkOFBAlgorithm
 {
@@ -461,6 +462,20 @@ protected:
   int LastRecomputed;
   vtkMTimeType LastStructureMTime;
   double LastExecutionTime;
+
+  /**
+   * Combines the statistics of the contrast stretches with those of other processes
+   * (see vtkOFBLICReduction); null (the default) for one process. A distributed
+   * subclass (vtkOFBPLIC) sets it for the time of its RequestData.
+   */
+  vtkOFBLICReduction* Reduction;
+
+  /**
+   * With NormalizeVectors off, the magnitude the field is divided by: when positive,
+   * the largest tangential magnitude of every process's samples (set by vtkOFBPLIC);
+   * 0 (the default): the largest of this OFB's samples.
+   */
+  double FieldScale;
 
 private:
   vtkOFBLIC(const vtkOFBLIC&) = delete;

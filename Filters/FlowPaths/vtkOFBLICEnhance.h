@@ -5,6 +5,7 @@
 
 #include "vtkOFB.h"
 #include "vtkOFBLICCache.h"
+#include "vtkOFBLICReduction.h"
 #include "vtkOFBLICTracer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -16,13 +17,19 @@
 #include <limits>
 #include <vector>
 
-/// The smallest and largest unmasked values into lo and hi; false if there are none.
+/**
+ * The smallest and largest unmasked values into lo and hi; false if there are none.
+ * With a `reduction`, the samples it excludes are left out and lo and hi are those of
+ * every process.
+ */
 inline bool vtkOFBLICRange(const float* values,
   vtkIdType n,
   const unsigned char* mask,
   float& lo,
-  float& hi)
+  float& hi,
+  vtkOFBLICReduction* reduction = nullptr)
 {
+  const unsigned char* excluded = reduction ? reduction->Excluded : nullptr;
   vtkSMPThreadLocal<float> localMin(std::numeric_limits<float>::max());
   vtkSMPThreadLocal<float> localMax(std::numeric_limits<float>::lowest());
   vtkSMPTools::For(0,
@@ -37,7 +44,7 @@ inline bool vtkOFBLICRange(const float* values,
       for (vtkIdType i = begin; i < end; ++i)
       {
         const float v = values[i];
-        const bool use = !mask[i];
+        const bool use = !mask[i] && !(excluded && excluded[i]);
         a = use && v < a ? v : a;
         b = use && v > b ? v : b;
       }
@@ -53,6 +60,10 @@ inline bool vtkOFBLICRange(const float* values,
   for (float v : localMax)
   {
     hi = std::max(hi, v);
+  }
+  if (reduction)
+  {
+    reduction->Range(lo, hi);
   }
   return lo <= hi;
 }
@@ -82,10 +93,11 @@ inline void vtkOFBLICStretch(float* values,
   vtkIdType n,
   const unsigned char* mask,
   double low,
-  double high)
+  double high,
+  vtkOFBLICReduction* reduction = nullptr)
 {
   float lo, hi;
-  if (!vtkOFBLICRange(values, n, mask, lo, hi) || !(hi > lo))
+  if (!vtkOFBLICRange(values, n, mask, lo, hi, reduction) || !(hi > lo))
   {
     return;
   }
@@ -106,10 +118,12 @@ inline void vtkOFBLICStretch(float* values,
 inline void vtkOFBLICStretchTails(float* values,
   vtkIdType n,
   const unsigned char* mask,
-  double tail)
+  double tail,
+  vtkOFBLICReduction* reduction = nullptr)
 {
+  const unsigned char* excluded = reduction ? reduction->Excluded : nullptr;
   float lo, hi;
-  if (!vtkOFBLICRange(values, n, mask, lo, hi) || !(hi > lo))
+  if (!vtkOFBLICRange(values, n, mask, lo, hi, reduction) || !(hi > lo))
   {
     return;
   }
@@ -126,7 +140,7 @@ inline void vtkOFBLICStretchTails(float* values,
       for (vtkIdType i = begin; i < end; ++i)
       {
         const double at = (values[i] - lo) * binScale; // NaN (from a noise array) fails
-        if (!mask[i] && at >= 0.0)
+        if (!mask[i] && !(excluded && excluded[i]) && at >= 0.0)
         {
           ++counts[std::min(Bins - 1, static_cast<int>(at))];
         }
@@ -139,6 +153,10 @@ inline void vtkOFBLICStretchTails(float* values,
     {
       counts[b] += local[b];
     }
+  }
+  if (reduction)
+  {
+    reduction->Counts(counts.data(), Bins);
   }
   vtkIdType total = 0;
   for (vtkIdType c : counts)
@@ -569,7 +587,9 @@ struct vtkOFBLICHighPassWork
  * on the horse) keep their neighbours' ids (vtkOFBLICCache::SearchedSamples and
  * SearchedIds), so that no re-convolution searches again.
  */
-inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
+inline void vtkOFBLICHighPass(vtkOFB* input,
+  vtkOFBLICCache& cache,
+  vtkOFBLICReduction* reduction = nullptr)
 {
   vtkOFBLICBuffer<float>& values = cache.Values;
   const vtkIdType n = static_cast<vtkIdType>(values.size());
@@ -579,7 +599,7 @@ inline void vtkOFBLICHighPass(vtkOFB* input, vtkOFBLICCache& cache)
   // 0.45 with the default noise); the stretch maps its quantiles, not its extremes (see
   // vtkOFBLICStretchTails), so the result does not depend on a few samples. Masked
   // samples' values are never read again (streamlines stop there; the output masks them).
-  vtkOFBLICStretchTails(values.data(), n, cache.Mask.data(), vtkOFBLICStretchTail);
+  vtkOFBLICStretchTails(values.data(), n, cache.Mask.data(), vtkOFBLICStretchTail, reduction);
   cache.Scratch.resize(n);
   const bool build =
     cache.NeighboursKey != cache.SamplesKey || cache.NeighbourCount.size() != values.size();

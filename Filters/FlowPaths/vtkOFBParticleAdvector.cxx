@@ -1,5 +1,6 @@
 #include "vtkOFBParticleAdvector.h"
 #include "vtkOFBParticleAdvectorInternals.h"
+#include "vtkOFBParticleExchange.h"
 
 #include "vtkDataSetAttributes.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -383,7 +384,12 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
   }
   const bool targetChanged = this->PrepareOFB(inputOFB, surface);
   const bool settingsChanged = this->NeedsRestart(seeds); // always: it records them
-  const bool restart = settingsChanged || rebuilt || targetChanged;
+  bool restart = settingsChanged || rebuilt || targetChanged;
+  if (this->Exchange)
+  {
+    // Every process starts again when one does (see ParticipateWithoutPiece).
+    restart = this->Exchange->AllReduceMaximum(restart ? 1.0 : 0.0) > 0.0;
+  }
   if (restart && !this->StartParticles(seeds))
   {
     in.Started = false;
@@ -484,12 +490,20 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
 
   this->PrepareColoring(surface);
   const vtkIdType first = system.CurrentStep;
+  if (this->Exchange)
+  {
+    // The same number of steps (and exchanges) on every process.
+    target = first +
+      static_cast<vtkIdType>(this->Exchange->AllReduceMaximum(static_cast<double>(target - first)));
+  }
   // Without painting, only the last step's footprints are kept: the steps go in
   // chunks (each batch of particles makes a chunk's steps in a row), about 20 per
   // update.
   const bool painting = in.Target && this->Paint && this->FootprintRadius > 0.0;
+  // A distributed run exchanges the particles after every step.
   const vtkIdType chunk =
-    painting || in.Unsteady ? 1 : std::max<vtkIdType>(1, (target - first) / 20);
+    painting || in.Unsteady || this->Exchange ? 1 : std::max<vtkIdType>(1, (target - first) / 20);
+  system.Active = this->Exchange && !in.Owned.empty() ? in.Owned.data() : nullptr;
   in.AdvectionTime = 0.0;
   in.PaintingTime = 0.0;
   for (vtkIdType step = first; step < target;)
@@ -501,6 +515,10 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
       this->PrepareUnsteadyStep(step - first);
     }
     system.Advance(in.Coloring, count);
+    if (this->Exchange)
+    {
+      this->ExchangeParticles();
+    }
     const auto moved = Clock::now();
     in.AdvectionTime += Milliseconds(moved - start);
     step += count;

@@ -24,7 +24,8 @@
  *   is that copy. Alternatively SetOFB() gives an OFB that the application holds:
  *   it is painted in place (and port 0 shares it) and wins over port 1.
  * - port 2 (optional, SetSourceData / SetSourceConnection / SetSeeds): seed points.
- *   Each seed is moved to the closest point of the surface (vtkStaticCellLocator);
+ *   Each seed is moved to the closest point of the surface (vtkStaticCellLocator;
+ *   a point on an edge or a vertex goes onto the triangle of smallest centroid there);
  *   seeds with non-finite coordinates, or farther than MaximumSeedDistance cells
  *   from the surface, are rejected with a warning. Without seeds,
  *   NumberOfParticles seeds are drawn area-uniformly over the surface from
@@ -112,11 +113,13 @@
 
 #include <cstdint> // for HashGeometry
 #include <memory>  // for std::unique_ptr
+#include <vector>  // for FindOwnedTriangles
 
 class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkOFB;
 class vtkOFBBrush;
+class vtkOFBParticleExchange;
 class vtkDataSet;
 class vtkPolyData;
 class vtkScalarsToColors;
@@ -466,6 +469,9 @@ protected:
   bool NeedsRestart(vtkDataSet* seeds);
   /// False, with an error, when the particles would exceed MemoryLimit.
   bool StartParticles(vtkDataSet* seeds);
+  /// StartParticles' checks (false with an error), then the start once they passed.
+  bool CheckStart(vtkDataSet* seeds);
+  bool StartCheckedParticles(vtkDataSet* seeds);
   void LocateSeeds(vtkDataSet* seeds);
   void PrepareColoring(vtkPolyData* surface);
   void PaintFootprints();
@@ -473,6 +479,47 @@ protected:
   void FillParticles(vtkPolyData* output);
   void FillTrails(vtkPolyData* output);
   ///@}
+
+  ///@{
+  /**
+   * Distributed runs (vtkOFBParticleAdvectorDistributed.cxx), with Exchange set: the
+   * triangles this process owns (not ghost cells), the seeds located over every
+   * process (each seed's owner: the process whose own triangle is closest), and after
+   * each step the particles' states sent to every process and the particles that left
+   * this process's triangles handed to their new owner. Whether this process outputs
+   * particle i (always without Exchange).
+   */
+  void FindOwnedTriangles(vtkPolyData* surface, const std::vector<vtkIdType>& polygonCells);
+  bool LocateSeedsOverProcesses(vtkDataSet* seeds);
+  void ExchangeParticles();
+  bool OutputsParticle(vtkIdType i) const;
+  /**
+   * The collective calls of one update, for a process whose piece is empty (it has no
+   * particles): the restart agreement, the start (seeds located over every process),
+   * the number of steps and each step's exchange, as the other processes make them.
+   */
+  void ParticipateWithoutPiece(vtkDataSet* seeds, vtkInformationVector* outputVector);
+  /**
+   * Of the triangles through the point `x` (within 1e-9 cells; `cell` is one of them),
+   * the one with the smallest centroid (x, then y, then z), among the owned ones when
+   * `ownedOnly`: a seed on an edge or a vertex starts on the same triangle whatever
+   * the order of the triangles. Its centroid into `centroid`.
+   */
+  vtkIdType CanonicalTriangle(const double x[3],
+    vtkIdType cell,
+    bool ownedOnly,
+    double centroid[3]);
+  ///@}
+
+  /**
+   * The collective calls of a distributed run (see vtkOFBParticleExchange); null (the
+   * default) for one process. Set by vtkOFBPParticleAdvector for its RequestData.
+   */
+  vtkOFBParticleExchange* Exchange = nullptr;
+
+  /// Particles that left their process's triangles (on any process), counted by
+  /// ExchangeParticles.
+  vtkIdType NumberOfHandOffs = 0;
 
   vtkOFB* OFB;
   vtkScalarsToColors* LookupTable;

@@ -108,6 +108,11 @@ public:
   vtkOFB* LastTarget = nullptr;
   double LastCellSize = 0.0;
   bool TargetChanged = false;
+  // Distributed runs: per walker triangle, 1 where this process owns it; per particle,
+  // 1 where this process advances and outputs it.
+  std::vector<unsigned char> TriangleOwned;
+  std::vector<unsigned char> Owned;
+  std::vector<unsigned char> SeedOwned; // per seed, 1 where this process owns it
   vtkOFBParticleSystem::Coloring Coloring;
   // Wall-clock milliseconds of the last update's parts.
   double AdvectionTime = 0.0;

@@ -179,9 +179,11 @@ void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
   vtkOFBParticleArrays& arrays = this->Internals->Arrays;
   const vtkIdType n = static_cast<vtkIdType>(system.Particles.size());
   vtkIdType count = 0;
-  for (const auto& p : system.Particles)
+  for (vtkIdType i = 0; i < n; ++i)
   {
-    count += p.Status != vtkOFBParticleSystem::WAITING ? 1 : 0;
+    count += system.Particles[i].Status != vtkOFBParticleSystem::WAITING && this->OutputsParticle(i)
+      ? 1
+      : 0;
   }
   double* x = PointsOf(arrays.Points, count);
   double* velocity = ValuesOf(arrays.Velocity.Get(), count);
@@ -198,7 +200,9 @@ void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
   for (vtkIdType i = 0; i < n; ++i)
   {
     slots[i] = k;
-    k += system.Particles[i].Status != vtkOFBParticleSystem::WAITING ? 1 : 0;
+    k += system.Particles[i].Status != vtkOFBParticleSystem::WAITING && this->OutputsParticle(i)
+      ? 1
+      : 0;
   }
   const double opacity = this->Brush->GetStrength();
   vtkSMPTools::For(0,
@@ -208,7 +212,7 @@ void vtkOFBParticleAdvector::FillParticles(vtkPolyData* output)
       for (vtkIdType i = begin; i < end; ++i)
       {
         const auto& p = system.Particles[i];
-        if (p.Status == vtkOFBParticleSystem::WAITING)
+        if (p.Status == vtkOFBParticleSystem::WAITING || !this->OutputsParticle(i))
         {
           continue;
         }
@@ -259,7 +263,8 @@ void vtkOFBParticleAdvector::FillTrails(vtkPolyData* output)
     const int count = system.TrailCount[i];
     slots[2 * i] = numLines;
     slots[2 * i + 1] = numPoints;
-    if (system.Particles[i].Status != vtkOFBParticleSystem::WAITING && count >= 2)
+    if (system.Particles[i].Status != vtkOFBParticleSystem::WAITING && count >= 2 &&
+      this->OutputsParticle(i))
     {
       ++numLines;
       numPoints += count;
@@ -275,7 +280,8 @@ void vtkOFBParticleAdvector::FillTrails(vtkPolyData* output)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        if (system.Particles[i].Status == vtkOFBParticleSystem::WAITING || system.TrailCount[i] < 2)
+        if (system.Particles[i].Status == vtkOFBParticleSystem::WAITING ||
+          system.TrailCount[i] < 2 || !this->OutputsParticle(i))
         {
           continue;
         }

@@ -13,6 +13,7 @@
 #include "vtkOFB.h"
 #include "vtkOFBArrayLength.h"
 #include "vtkOFBInputChecks.h"
+#include "vtkOFBParticleExchange.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
@@ -244,6 +245,7 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
     vtkErrorMacro("The vector field is zero everywhere: no particle can move.");
     return false;
   }
+  this->FindOwnedTriangles(surface, polygonCells);
   in.Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
   in.Locator->SetDataSet(in.Walker.GetTriangles());
   in.Locator->BuildLocator();
@@ -331,10 +333,35 @@ bool vtkOFBParticleAdvector::NeedsRestart(vtkDataSet* seeds)
 //------------------------------------------------------------------------------
 bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
 {
+  const bool ok = this->CheckStart(seeds);
+  if (this->Exchange && this->Exchange->AllReduceMaximum(ok ? 0.0 : 1.0) > 0.0)
+  {
+    if (ok)
+    {
+      vtkErrorMacro("Another process could not start the particles: no particles.");
+    }
+    return false;
+  }
+  if (!ok)
+  {
+    return false;
+  }
+  return this->StartCheckedParticles(seeds);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::CheckStart(vtkDataSet* seeds)
+{
   // What the particles will hold: per seed its point and colour; per particle (seeds x
   // ChainLength) its state, its trail (TrailLength positions, and as many output points
   // and ids), its footprint and output point. In doubles: the product can exceed 2^63.
   vtkInternals& in = *this->Internals;
+  if (this->Exchange && (!seeds || this->Lifetime > 0))
+  {
+    vtkErrorMacro("Distributed particles need seed points (port 2) and no Lifetime: a "
+                  "random seed or reseed is drawn from each process's own piece.");
+    return false;
+  }
   // A step longer than a few times the surface's extent walks the surface over and over
   // (seconds a step for 1e6 cells, without end for 1e300): an error.
   double bounds[6];
@@ -362,6 +389,13 @@ bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
       << " positions), more than MemoryLimit (" << this->MemoryLimit << " MiB): no particles.");
     return false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::StartCheckedParticles(vtkDataSet* seeds)
+{
+  vtkInternals& in = *this->Internals;
   vtkOFBParticleSystem& system = in.System;
   system.Walker = &in.Walker;
   vtkOFBParticleStepper& stepper = system.Stepper;
@@ -369,7 +403,9 @@ bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
   stepper.Integrator = this->Integrator;
   stepper.Normalize = this->NormalizeVectors;
   stepper.Sign = this->Direction == BACKWARD ? -1.0 : 1.0;
-  stepper.Scale = 1.0 / in.Walker.GetMaximumSpeed();
+  stepper.Scale = 1.0 /
+    (this->Exchange ? this->Exchange->AllReduceMaximum(in.Walker.GetMaximumSpeed())
+                    : in.Walker.GetMaximumSpeed());
   stepper.StopSpeed = 1e-12 * in.Walker.GetMaximumSpeed();
   stepper.Length = this->StepSize * in.CellSize;
   stepper.Tolerance = this->ErrorTolerance * in.CellSize;
@@ -379,7 +415,11 @@ bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
   system.Setup.TrailLength = this->TrailLength;
   system.Setup.RandomSeed = this->RandomSeed;
   system.Setup.RandomSeeds = seeds == nullptr;
-  if (seeds)
+  if (seeds && this->Exchange)
+  {
+    this->LocateSeedsOverProcesses(seeds);
+  }
+  else if (seeds)
   {
     this->LocateSeeds(seeds);
   }
@@ -395,6 +435,15 @@ bool vtkOFBParticleAdvector::StartParticles(vtkDataSet* seeds)
     }
   }
   system.Start();
+  in.Owned.clear();
+  if (this->Exchange)
+  {
+    in.Owned.resize(system.Particles.size());
+    for (size_t i = 0; i < system.Particles.size(); ++i)
+    {
+      in.Owned[i] = in.SeedOwned[system.Particles[i].Seed];
+    }
+  }
   in.Started = true;
   in.ResetRequested = false;
   in.SeedObject = seeds;
@@ -450,6 +499,8 @@ void vtkOFBParticleAdvector::LocateSeeds(vtkDataSet* seeds)
       ++far;
       continue;
     }
+    double centroid[3];
+    cell = this->CanonicalTriangle(closest, cell, false, centroid);
     system.Seeds.push_back(in.Walker.Locate(cell, closest));
     float rgba[4] = { static_cast<float>(this->Color[0]),
       static_cast<float>(this->Color[1]),

@@ -228,7 +228,7 @@ void vtkOFBParticleSystem::AdvanceBatch(vtkIdType begin,
   for (vtkIdType i = begin; i < end; ++i)
   {
     // Where the stages of the step may go: fetched for all the batch at once.
-    if (this->Particles[i].Status == MOVING)
+    if (this->Particles[i].Status == MOVING && (!this->Active || this->Active[i]))
     {
       this->Walker->PrefetchNeighbors(this->Particles[i].Point.Triangle);
     }
@@ -237,6 +237,10 @@ void vtkOFBParticleSystem::AdvanceBatch(vtkIdType begin,
   {
     Particle& p = this->Particles[i];
     p.Painted = false;
+    if (this->Active && !this->Active[i])
+    {
+      continue; // another process advances it
+    }
     if (p.Status == WAITING)
     {
       // Released at its seed when the step count reaches its release step.
@@ -280,7 +284,7 @@ void vtkOFBParticleSystem::AdvanceBatch(vtkIdType begin,
   for (vtkIdType i = begin; i < end; ++i)
   {
     Particle& p = this->Particles[i];
-    if (p.Status != WAITING)
+    if (p.Status != WAITING && (!this->Active || this->Active[i]))
     {
       this->ColorParticle(coloring, step + 1, p);
     }

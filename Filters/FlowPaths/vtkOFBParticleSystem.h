@@ -76,6 +76,8 @@ public:
   std::vector<float> SeedColors;
 
   std::vector<Particle> Particles;
+  /// Per particle, 0 where another process advances it (null: every particle here).
+  const unsigned char* Active = nullptr;
   std::vector<glm::dvec3> Trails; // TrailLength per particle, a ring
   std::vector<int> TrailCount;
   std::vector<int> TrailHead;
@@ -109,10 +111,12 @@ public:
   /// A uniform number in [0, 1) of draw `k` of stream (seed, particle, generation).
   static double Random(unsigned int seed, vtkIdType particle, int generation, int k);
 
+  /// Add `x` to the end of particle i's trail.
+  void PushTrail(vtkIdType i, const glm::dvec3& x);
+
 private:
   void Reseed(vtkIdType i, Particle& p);
   void Release(vtkIdType i, Particle& p);
-  void PushTrail(vtkIdType i, const glm::dvec3& x);
   /// One step (`step` to `step + 1`) of particles begin..end-1 (at most a batch).
   void AdvanceBatch(vtkIdType begin, vtkIdType end, vtkIdType step, const Coloring& coloring);
   /// The colour of `p` at `step` (steps since the seeds).

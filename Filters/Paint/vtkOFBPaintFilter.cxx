@@ -197,6 +197,12 @@ int vtkOFBPaintFilter::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::GetStrokes(vtkPolyData* strokes)
+{
+  return strokes;
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, vtkOFB* ofb)
 {
   vtkOFBDabArrays arrays{ strokes, std::string() };
@@ -366,7 +372,7 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
   vtkInformationVector* outInfo)
 {
   vtkOFB* input = vtkOFB::GetData(inInfo[0]);
-  vtkPolyData* strokes = vtkPolyData::GetData(inInfo[1]);
+  vtkSmartPointer<vtkPolyData> strokes = this->GetStrokes(vtkPolyData::GetData(inInfo[1]));
   vtkOFB* output = vtkOFB::GetData(outInfo);
   this->NumberOfChangedSamples = 0;
   if (!output)

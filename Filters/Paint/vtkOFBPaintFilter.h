@@ -94,6 +94,13 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  /**
+   * The strokes to paint, given those of input port 1 (null when it has none): the
+   * same here; a distributed subclass (vtkOFBPPaintFilter) returns every process's.
+   * Called once per execution, before the input is checked.
+   */
+  virtual vtkSmartPointer<vtkPolyData> GetStrokes(vtkPolyData* strokes);
+
   /// The dabs of `strokes` (per-dab point arrays) on `ofb`, or null with an error.
   vtkSmartPointer<vtkPolyData> MakeDabs(vtkPolyData* strokes, vtkOFB* ofb);
 

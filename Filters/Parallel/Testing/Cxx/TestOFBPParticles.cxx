@@ -1,0 +1,351 @@
+// Distributed particles under MPI against one process, in one run: every process holds
+// its piece of a sphere (vtkExtractPolyDataPiece, with the ghost levels the advector asks
+// for) and of its OFB (vtkOFBPSampler), and vtkOFBPParticleAdvector advances the
+// particles on their owners, handing them over at piece borders. The first process also
+// advances them on the whole sphere with no controller, gathers every process's
+// particles, trails and owned samples, and compares.
+//
+//   mpirun -np N TestOFBPParticles [--empty-last] [--bad-input]
+//
+// --empty-last: the last process has an empty piece (the others share the sphere).
+// --bad-input: a Lifetime (reseeds), then no seeds: every process reports the error and
+// outputs no particles, and none waits for another.
+//
+// Exit status 0 when every check holds, on every process.
+#include "vtkCell.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommunicator.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkExtractPolyDataPiece.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMPIController.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOFB.h"
+#include "vtkOFBPParticleAdvector.h"
+#include "vtkOFBPSampler.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSphereSource.h"
+#include "vtkTypeUInt32Array.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <vector>
+
+namespace
+{
+constexpr int Steps = 60;
+
+/// A sphere with a swirl "Field" that carries particles around and across it.
+vtkSmartPointer<vtkPolyData> MakeSphere()
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(24);
+  sphere->SetRadius(0.5);
+  sphere->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(sphere->GetOutput());
+  vtkNew<vtkFloatArray> field;
+  field->SetName("Field");
+  field->SetNumberOfComponents(3);
+  field->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    const double v[3] = {
+      -p[1] + 0.8 * p[2] * p[0], p[0] + 0.8 * p[2] * p[1], -0.8 * (p[0] * p[0] + p[1] * p[1])
+    };
+    field->SetTuple(i, v);
+  }
+  mesh->GetPointData()->SetVectors(field);
+  return mesh;
+}
+
+/// Seeds spread over the sphere (a Fibonacci spiral), the same on every process.
+vtkSmartPointer<vtkPolyData> MakeSeeds(int n)
+{
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < n; ++i)
+  {
+    const double z = 1.0 - (2.0 * i + 1.0) / n;
+    const double r = std::sqrt(1.0 - z * z);
+    const double a = i * vtkMath::Pi() * (3.0 - std::sqrt(5.0));
+    points->InsertNextPoint(0.5 * r * std::cos(a), 0.5 * r * std::sin(a), 0.5 * z);
+  }
+  auto seeds = vtkSmartPointer<vtkPolyData>::New();
+  seeds->SetPoints(points);
+  return seeds;
+}
+
+/// Particles (id, x, y, z, trail length) and owned samples (cell, depth, r, g, b, a).
+struct Result
+{
+  std::vector<double> Particles;
+  std::vector<double> Samples;
+};
+
+Result Collect(vtkOFBPParticleAdvector* advector)
+{
+  Result result;
+  vtkPolyData* particles = vtkPolyData::SafeDownCast(advector->GetOutputDataObject(1));
+  vtkPolyData* trails = vtkPolyData::SafeDownCast(advector->GetOutputDataObject(2));
+  std::map<vtkIdType, vtkIdType> trailLength;
+  vtkDataArray* trailIds = trails->GetCellData()->GetArray("Id");
+  for (vtkIdType c = 0; trailIds && c < trails->GetNumberOfCells(); ++c)
+  {
+    trailLength[static_cast<vtkIdType>(trailIds->GetTuple1(c))] =
+      trails->GetCell(c)->GetNumberOfPoints();
+  }
+  vtkDataArray* ids = particles->GetPointData()->GetArray("Id");
+  for (vtkIdType i = 0; ids && i < particles->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    particles->GetPoint(i, x);
+    const auto id = static_cast<vtkIdType>(ids->GetTuple1(i));
+    const double row[5] = { static_cast<double>(id),
+      x[0],
+      x[1],
+      x[2],
+      static_cast<double>(trailLength.count(id) ? trailLength[id] : 0) };
+    result.Particles.insert(result.Particles.end(), row, row + 5);
+  }
+  vtkOFB* ofb = vtkOFB::SafeDownCast(advector->GetOutputDataObject(0));
+  if (!ofb || ofb->GetNumberOfSamples() == 0)
+  {
+    return result;
+  }
+  auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
+    ofb->GetSampleData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  vtkDataArray* colors = ofb->GetSampleData()->GetArray(vtkOFB::ColorsArrayName());
+  const vtkTypeUInt32* offsets = ofb->GetCellOffsets()->GetPointer(0);
+  const float* depths = ofb->GetDepths()->GetPointer(0);
+  for (vtkIdType c = 0; colors && c < ofb->GetNumberOfCells(); ++c)
+  {
+    for (vtkIdType i = offsets[c]; i < offsets[c + 1]; ++i)
+    {
+      if (ghosts && ghosts->GetValue(i))
+      {
+        continue;
+      }
+      double rgba[4];
+      colors->GetTuple(i, rgba);
+      const double row[6] = {
+        static_cast<double>(c), depths[i], rgba[0], rgba[1], rgba[2], rgba[3]
+      };
+      result.Samples.insert(result.Samples.end(), row, row + 6);
+    }
+  }
+  return result;
+}
+
+/// Every process's `local` rows on the first process.
+std::vector<double> Gather(vtkMultiProcessController* controller, const std::vector<double>& local)
+{
+  const int size = controller->GetNumberOfProcesses();
+  std::vector<vtkIdType> counts(size), offsets(size);
+  const vtkIdType count = static_cast<vtkIdType>(local.size());
+  controller->Gather(&count, counts.data(), 1, 0);
+  vtkIdType total = 0;
+  for (int r = 0; r < size; ++r)
+  {
+    offsets[r] = total;
+    total += counts[r];
+  }
+  std::vector<double> all(std::max<vtkIdType>(total, 1));
+  const double none = 0.0;
+  controller->GatherV(
+    local.empty() ? &none : local.data(), all.data(), count, counts.data(), offsets.data(), 0);
+  all.resize(controller->GetLocalProcessId() == 0 ? total : 0);
+  return all;
+}
+
+/// Rows of `width` values sorted.
+std::vector<std::vector<double>> Rows(const std::vector<double>& values, size_t width)
+{
+  std::vector<std::vector<double>> rows;
+  for (size_t i = 0; i + width <= values.size(); i += width)
+  {
+    rows.emplace_back(values.begin() + i, values.begin() + i + width);
+  }
+  std::sort(rows.begin(), rows.end());
+  return rows;
+}
+
+/// A pipeline: the surface piece, its OFB piece and the advector.
+struct Pipeline
+{
+  vtkNew<vtkExtractPolyDataPiece> Surface;
+  vtkNew<vtkExtractPolyDataPiece> Sampled;
+  vtkNew<vtkOFBPSampler> Sampler;
+  vtkNew<vtkOFBPParticleAdvector> Advector;
+
+  Pipeline(vtkMultiProcessController* controller, vtkPolyData* mesh, vtkPolyData* seeds)
+  {
+    this->Surface->SetInputData(mesh);
+    this->Sampled->SetInputData(mesh);
+    this->Sampler->SetController(controller);
+    this->Sampler->SetResolution(96);
+    this->Sampler->SetInputConnection(this->Sampled->GetOutputPort());
+    this->Advector->SetController(controller);
+    this->Advector->SetInputConnection(this->Surface->GetOutputPort());
+    this->Advector->SetOFBConnection(this->Sampler->GetOutputPort());
+    this->Advector->SetSeeds(seeds);
+    this->Advector->SetIntegrator(vtkOFBParticleAdvector::RK4);
+    this->Advector->SetStepSize(1.5);
+    this->Advector->SetFootprintRadius(2.0);
+    this->Advector->SetTrailLength(8);
+  }
+};
+}
+
+/// --bad-input: settings that distributed particles refuse, and an empty piece.
+bool RunBadInput(vtkMultiProcessController* controller, vtkPolyData* mesh, vtkPolyData* seeds)
+{
+  const int rank = controller->GetLocalProcessId();
+  const int size = controller->GetNumberOfProcesses();
+  bool ok = true;
+  for (int bad = 0; bad < 2; ++bad)
+  {
+    Pipeline pipeline(controller, mesh, seeds);
+    const char* what = "a Lifetime";
+    if (bad == 0)
+    {
+      pipeline.Advector->SetLifetime(5);
+    }
+    else
+    {
+      what = "no seeds";
+      pipeline.Advector->SetSeeds(nullptr);
+    }
+    pipeline.Advector->UpdateTimeStep(5, rank, size, 0);
+    const vtkIdType particles =
+      vtkPolyData::SafeDownCast(pipeline.Advector->GetOutputDataObject(1))->GetNumberOfPoints();
+    // One process has no reason to refuse: it advances its particles as ever.
+    const bool expected = size == 1 || particles == 0;
+    std::printf("rank %d, %s: %lld particles%s\n",
+      rank,
+      what,
+      static_cast<long long>(particles),
+      expected ? "" : " FAIL");
+    ok = ok && expected;
+  }
+  return ok;
+}
+
+int main(int argc, char* argv[])
+{
+  vtkNew<vtkMPIController> controller;
+  controller->Initialize(&argc, &argv);
+  vtkMultiProcessController::SetGlobalController(controller);
+  const int rank = controller->GetLocalProcessId();
+  const int size = controller->GetNumberOfProcesses();
+  vtkSmartPointer<vtkPolyData> mesh = MakeSphere();
+  vtkSmartPointer<vtkPolyData> seeds = MakeSeeds(40);
+  bool emptyLast = false;
+  bool badInput = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    emptyLast = emptyLast || !std::strcmp(argv[i], "--empty-last");
+    badInput = badInput || !std::strcmp(argv[i], "--bad-input");
+  }
+  const int pieces = emptyLast && size > 1 ? size - 1 : size;
+  if (badInput)
+  {
+    int ok = RunBadInput(controller, mesh, seeds) ? 1 : 0;
+    int all = 0;
+    controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
+    if (rank == 0)
+    {
+      std::printf("%s\n", all ? "PASS" : "FAIL");
+    }
+    controller->Finalize();
+    return all ? 0 : 1;
+  }
+
+  Pipeline distributed(controller, mesh, seeds);
+  vtkNew<vtkPolyData> none;
+  if (rank >= pieces)
+  {
+    distributed.Advector->SetInputData(none);
+    distributed.Sampler->SetInputData(none);
+  }
+  distributed.Advector->UpdateTimeStep(Steps, std::min(rank, pieces - 1), pieces, 0);
+  const Result mine = Collect(distributed.Advector);
+  const std::vector<double> particles = Gather(controller, mine.Particles);
+  const std::vector<double> samples = Gather(controller, mine.Samples);
+
+  int ok = 1;
+  if (rank == 0)
+  {
+    Pipeline whole(nullptr, mesh, seeds);
+    whole.Advector->UpdateTimeStep(Steps, 0, 1, 0);
+    const Result reference = Collect(whole.Advector);
+    const auto got = Rows(particles, 5);
+    const auto want = Rows(reference.Particles, 5);
+    size_t duplicates = 0;
+    for (size_t i = 1; i < got.size(); ++i)
+    {
+      duplicates += got[i][0] == got[i - 1][0];
+    }
+    double maxPosition = 0.0;
+    size_t idsDiffer = 0, trailsDiffer = 0;
+    for (size_t i = 0; i < std::min(got.size(), want.size()); ++i)
+    {
+      idsDiffer += got[i][0] != want[i][0];
+      trailsDiffer += got[i][4] != want[i][4];
+      for (int k = 1; k < 4; ++k)
+      {
+        maxPosition = std::max(maxPosition, std::abs(got[i][k] - want[i][k]));
+      }
+    }
+    const auto gotSamples = Rows(samples, 6);
+    const auto wantSamples = Rows(reference.Samples, 6);
+    size_t colorsDiffer = 0, painted = 0;
+    for (size_t i = 0; i < std::min(gotSamples.size(), wantSamples.size()); ++i)
+    {
+      bool differ = gotSamples[i][0] != wantSamples[i][0];
+      for (int k = 2; k < 6; ++k)
+      {
+        differ = differ || std::abs(gotSamples[i][k] - wantSamples[i][k]) > 1.0;
+      }
+      colorsDiffer += differ;
+      painted += wantSamples[i][3] < 255.0; // the default paint is white
+    }
+    const double cell = whole.Sampler->GetOutput()->GetCellSize();
+    const vtkIdType handOffs = distributed.Advector->GetNumberOfHandOffs();
+    std::printf(
+      "%d processes, %d steps: %lld hand-offs, %zu particles (%zu on one process), %zu duplicated, "
+      "%zu ids differ, end points max |diff| %.2g cells, %zu trail lengths differ; "
+      "%zu owned samples (%zu), %zu painted, %zu colours differ by more than 1\n",
+      size,
+      Steps,
+      static_cast<long long>(handOffs),
+      got.size(),
+      want.size(),
+      duplicates,
+      idsDiffer,
+      maxPosition / cell,
+      trailsDiffer,
+      gotSamples.size(),
+      wantSamples.size(),
+      painted,
+      colorsDiffer);
+    ok = got.size() == want.size() && !want.empty() && duplicates == 0 && idsDiffer == 0 &&
+      maxPosition <= 1e-6 * cell && trailsDiffer == 0 && gotSamples.size() == wantSamples.size() &&
+      painted > 0 && colorsDiffer == 0 && (size == 1 || handOffs > 0);
+    std::printf("%s\n", ok ? "PASS" : "FAIL");
+  }
+  controller->Broadcast(&ok, 1, 0);
+  controller->Finalize();
+  return ok ? 0 : 1;
+}

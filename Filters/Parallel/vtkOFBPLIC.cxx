@@ -1,0 +1,259 @@
+#include "vtkOFBPLIC.h"
+
+#include "vtkCommunicator.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
+#include "vtkOFB.h"
+#include "vtkOFBLICReduction.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkOFBPLIC);
+vtkCxxSetObjectMacro(vtkOFBPLIC, Controller, vtkMultiProcessController);
+
+namespace
+{
+/**
+ * The statistics of every process, in a fixed sequence of collective calls: the
+ * sequence that the settings give (per quantile stretch a range, then its histogram
+ * unless the range is empty on every process; per contrast stretch a range). A process
+ * whose vtkOFBLIC returned before a call (no samples, an error) makes the calls it
+ * missed in Finish(), with nothing to contribute, so that every process makes the same
+ * calls in the same order.
+ */
+class CollectiveStatistics : public vtkOFBLICReduction
+{
+public:
+  enum Call
+  {
+    RANGE,
+    COUNTS
+  };
+
+  CollectiveStatistics(vtkMultiProcessController* controller, bool enhanced, bool contrast)
+    : Controller(controller)
+  {
+    for (int i = 0; enhanced && i < 2; ++i)
+    {
+      this->Calls.push_back(RANGE);
+      this->Calls.push_back(COUNTS);
+    }
+    if (contrast)
+    {
+      this->Calls.push_back(RANGE);
+    }
+  }
+
+  void Range(float& lo, float& hi) override
+  {
+    // A histogram that no process counts (the last range was empty everywhere).
+    while (this->Next < this->Calls.size() && this->Calls[this->Next] == COUNTS)
+    {
+      ++this->Next;
+    }
+    ++this->Next;
+    const float local[2] = { -lo, hi };
+    float global[2];
+    this->Controller->AllReduce(local, global, 2, vtkCommunicator::MAX_OP);
+    lo = -global[0];
+    hi = global[1];
+    this->LastRangeCounted = hi > lo;
+  }
+
+  void Counts(vtkIdType* counts, int bins) override
+  {
+    ++this->Next;
+    std::vector<long long> local(counts, counts + bins);
+    std::vector<long long> global(bins);
+    this->Controller->AllReduce(local.data(), global.data(), bins, vtkCommunicator::SUM_OP);
+    std::copy(global.begin(), global.end(), counts);
+  }
+
+  /// The calls this process has not made, with an empty range and zero counts.
+  void Finish()
+  {
+    while (this->Next < this->Calls.size())
+    {
+      if (this->Calls[this->Next] == RANGE)
+      {
+        float lo = std::numeric_limits<float>::max();
+        float hi = std::numeric_limits<float>::lowest();
+        this->Range(lo, hi);
+      }
+      else if (this->LastRangeCounted)
+      {
+        std::vector<vtkIdType> zeros(Bins, 0);
+        this->Counts(zeros.data(), Bins);
+      }
+      else
+      {
+        ++this->Next;
+      }
+    }
+  }
+
+  /// The histogram size of vtkOFBLICStretchTails.
+  static constexpr int Bins = 4096;
+
+private:
+  vtkMultiProcessController* Controller;
+  std::vector<Call> Calls;
+  std::size_t Next = 0;
+  bool LastRangeCounted = false;
+};
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPLIC::vtkOFBPLIC()
+  : Controller(nullptr)
+  , NumberOfGhostLevels(8)
+{
+  this->SetController(vtkMultiProcessController::GetGlobalController());
+}
+
+//------------------------------------------------------------------------------
+vtkOFBPLIC::~vtkOFBPLIC()
+{
+  this->SetController(nullptr);
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBPLIC::GetRequiredGhostDepth(double cellSize)
+{
+  const double steps =
+    this->NumberOfSteps * (this->EnhancedLIC && this->NumberOfSteps > 0 ? 1.5 : 1.0);
+  return (this->StepSize * steps + 3.0) * cellSize;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBPLIC::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (!inInfo)
+  {
+    return 1;
+  }
+  const int downstream =
+    outInfo ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
+    std::max(downstream, this->NumberOfGhostLevels));
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBPLIC::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkMultiProcessController* controller = this->Controller;
+  if (!controller || controller->GetNumberOfProcesses() <= 1)
+  {
+    return this->Superclass::RequestData(request, inputVector, outputVector);
+  }
+  const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
+  const bool contrast =
+    this->EnhanceContrast == ENHANCE_CONTRAST_LIC || this->EnhanceContrast == ENHANCE_CONTRAST_BOTH;
+  CollectiveStatistics reduction(controller, enhanced, contrast);
+  vtkOFB* input = vtkOFB::GetData(inputVector[0]);
+  if (input)
+  {
+    // Ghost samples are read, not counted: their owner counts them.
+    auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
+      input->GetSampleData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+    if (ghosts && ghosts->GetNumberOfComponents() == 1 &&
+      ghosts->GetNumberOfTuples() == input->GetNumberOfSamples())
+    {
+      reduction.Excluded = ghosts->GetPointer(0);
+    }
+  }
+  if (!this->NormalizeVectors)
+  {
+    // The field's scale: the largest tangential magnitude of every process's samples.
+    const double local = input ? this->LargestFieldMagnitude(input) : 0.0;
+    double global = 0.0;
+    controller->AllReduce(&local, &global, 1, vtkCommunicator::MAX_OP);
+    this->FieldScale = global;
+  }
+  this->Reduction = &reduction;
+  const int result = this->Superclass::RequestData(request, inputVector, outputVector);
+  this->Reduction = nullptr;
+  reduction.Finish();
+  return result;
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBPLIC::LargestFieldMagnitude(vtkOFB* input)
+{
+  // As vtkOFBLIC packs its samples: the field less its component along the normal (as a
+  // float, as the tracer reads it), samples that it masks left out.
+  const vtkIdType n = input->GetNumberOfSamples();
+  vtkPointData* pd = input->GetSampleData();
+  vtkDataArray* normals =
+    pd->GetNormals() ? pd->GetNormals() : pd->GetArray(vtkOFB::NormalsArrayName());
+  // The field as vtkOFBLIC::FindField chooses it (which reports a bad one).
+  vtkInformation* info = this->GetInputArrayInformation(0);
+  vtkDataArray* vectors = nullptr;
+  if (info && info->Has(vtkDataObject::FIELD_NAME()))
+  {
+    vectors = pd->GetArray(info->Get(vtkDataObject::FIELD_NAME()));
+  }
+  else if (info && info->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
+  {
+    vectors = pd->GetAttribute(info->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()));
+  }
+  if (!normals || !vectors || normals->GetNumberOfComponents() != 3 ||
+    vectors->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() < n ||
+    vectors->GetNumberOfTuples() < n)
+  {
+    return 0.0;
+  }
+  const bool unit = vtkFloatArray::SafeDownCast(normals) != nullptr;
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double nrm[3], v[3];
+    normals->GetTuple(i, nrm);
+    vectors->GetTuple(i, v);
+    const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = unit ? nrm[c] : (len > 0.0 && std::isfinite(len) ? nrm[c] / len : 0.0);
+      nrm[c] = static_cast<double>(static_cast<float>(d));
+    }
+    const double dot = v[0] * nrm[0] + v[1] * nrm[1] + v[2] * nrm[2];
+    double t[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      t[c] = v[c] - dot * nrm[c];
+    }
+    const double mag = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    const double test =
+      this->MaskOnSurface ? mag : std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (mag > 0.0 && std::isfinite(mag) && std::isfinite(test) && test >= this->MaskThreshold)
+    {
+      largest = std::max(largest, mag);
+    }
+  }
+  return largest;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPLIC::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "NumberOfGhostLevels: " << this->NumberOfGhostLevels << "\n";
+}

@@ -3,12 +3,15 @@
  * @brief   vtkOFBProbeFilter whose output carries the OFB it probed
  *
  * The output is vtkOFBProbeFilter's (the mesh with the OFB's sample arrays on its
- * points) and, in its information (vtkDataObject::GetInformation()), the OFB itself
- * under the key OFB(). Algorithms downstream in the same process find the OFB there:
- * vtkOFBTexturedMeshWriter (ParaView's File > Save Data on this filter's output) bakes
- * it into a texture, a representation can colour the surface from it. The key is not
- * copied by ShallowCopy or DeepCopy: it reaches the algorithms that take this output
- * directly, not the outputs of filters in between.
+ * points), and GetOFB() finds the OFB probed from that output or from any shallow copy
+ * of it, in the same process: vtkOFBTexturedMeshWriter (ParaView's File > Save Data on
+ * this filter's output) bakes it into a texture, a representation can colour the
+ * surface from it. ParaView hands a filter's output to the algorithms downstream as a
+ * shallow copy (its post filter), which keeps the arrays and drops the information
+ * keys, so the OFB is found in two ways: the output's information holds it under the
+ * key OFB(), and the output's "vtkValidPointMask" array (shared by shallow copies) is
+ * registered with it, weakly (an OFB or array deleted is forgotten). A deep copy or a
+ * filter that makes new arrays loses it.
  *
  * @sa vtkOFBProbeFilter vtkOFBTexturedMeshWriter
  */
@@ -36,7 +39,9 @@ public:
   static vtkInformationDataObjectKey* OFB();
 
   /**
-   * The OFB that `data`'s information holds under OFB(), or null.
+   * The OFB probed into `data` or into the output that `data` is a shallow copy of:
+   * the one its information holds under OFB(), else the one registered with its
+   * "vtkValidPointMask" point array; null if none.
    */
   static vtkOFB* GetOFB(vtkDataObject* data);
 

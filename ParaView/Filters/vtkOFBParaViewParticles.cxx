@@ -20,8 +20,11 @@ vtkOFBParaViewParticles::vtkOFBParaViewParticles()
 vtkOFBParaViewParticles::~vtkOFBParaViewParticles() = default;
 
 //------------------------------------------------------------------------------
-void vtkOFBParaViewParticles::SetInputArrayToProcess(
-  int idx, int port, int connection, int fieldAssociation, const char* name)
+void vtkOFBParaViewParticles::SetInputArrayToProcess(int idx,
+  int port,
+  int connection,
+  int fieldAssociation,
+  const char* name)
 {
   if (name && *name != '\0' && std::strcmp(name, "None") != 0)
   {
@@ -41,8 +44,9 @@ void vtkOFBParaViewParticles::SetInputArrayToProcess(
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBParaViewParticles::RequestInformation(
-  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+int vtkOFBParaViewParticles::RequestInformation(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
 {
   if (!this->Superclass::RequestInformation(request, inInfo, outInfo))
   {
@@ -63,8 +67,8 @@ int vtkOFBParaViewParticles::RequestInformation(
   for (int i = 0; i < outInfo->GetNumberOfInformationObjects(); ++i)
   {
     vtkInformation* info = outInfo->GetInformationObject(i);
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(),
-      static_cast<int>(steps.size()));
+    info->Set(
+      vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), static_cast<int>(steps.size()));
     info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   }
   return 1;

@@ -15,8 +15,11 @@ vtkOFBParaViewSampler::vtkOFBParaViewSampler() = default;
 vtkOFBParaViewSampler::~vtkOFBParaViewSampler() = default;
 
 //------------------------------------------------------------------------------
-void vtkOFBParaViewSampler::SetInputArrayToProcess(
-  int idx, int port, int connection, int fieldAssociation, const char* name)
+void vtkOFBParaViewSampler::SetInputArrayToProcess(int idx,
+  int port,
+  int connection,
+  int fieldAssociation,
+  const char* name)
 {
   if (name && *name != '\0' && std::strcmp(name, "None") != 0)
   {

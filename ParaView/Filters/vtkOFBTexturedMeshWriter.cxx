@@ -21,6 +21,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTexture.h"
+#include "vtksys/Directory.hxx"
 #include "vtksys/SystemTools.hxx"
 
 #include <cstdio> // std::rename
@@ -28,6 +29,10 @@
 #include <string>
 #include <vector>
 
+#include <cerrno>
+#include <cstdlib>
+
+#include <signal.h> // kill
 #include <unistd.h> // getpid
 
 vtkStandardNewMacro(vtkOFBTexturedMeshWriter);
@@ -37,7 +42,8 @@ namespace
 using SystemTools = vtksys::SystemTools;
 
 /// A folder beside the target that holds the files until all are complete; removed
-/// (with whatever is left in it) when it goes out of scope.
+/// (with whatever is left in it) when it goes out of scope. Named after the target and
+/// the process, so that the folders that killed writes left are recognized and removed.
 class StagingFolder
 {
 public:
@@ -45,9 +51,27 @@ public:
   {
     std::string dir = SystemTools::GetFilenamePath(SystemTools::CollapseFullPath(target));
     this->Target = dir;
-    this->Path = dir + "/." + SystemTools::GetFilenameName(target) + ".partial-" +
-      std::to_string(static_cast<long>(getpid()));
+    const std::string prefix = "." + SystemTools::GetFilenameName(target) + ".partial-";
+    this->Path = dir + "/" + prefix + std::to_string(static_cast<long>(getpid()));
     SystemTools::RemoveADirectory(this->Path);
+    // Folders of writes whose process was killed: their process no longer exists.
+    vtksys::Directory entries;
+    if (entries.Load(dir))
+    {
+      for (unsigned long i = 0; i < entries.GetNumberOfFiles(); ++i)
+      {
+        const std::string name = entries.GetFile(i);
+        if (name.compare(0, prefix.size(), prefix) != 0)
+        {
+          continue;
+        }
+        const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+        if (pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+        {
+          SystemTools::RemoveADirectory(dir + "/" + name);
+        }
+      }
+    }
     this->Made = SystemTools::MakeDirectory(this->Path).IsSuccess();
   }
   ~StagingFolder()

@@ -19,7 +19,8 @@
  * Files are written into a temporary folder beside the target and renamed into place
  * when all are complete (the texture and material first, the `.obj` last), so a failure
  * or a kill leaves the files that were there before and no partial file under the
- * target's name.
+ * target's name. (The folder a killed write leaves, `.<name>.partial-<process id>`, is
+ * removed by the next write of that name.)
  *
  * Bad input (no OFB, an empty mesh, an unknown extension or array, a folder that cannot
  * be written) gives an error and writes nothing.

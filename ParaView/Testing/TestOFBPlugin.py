@@ -149,7 +149,12 @@ texture.SetFileName(obj[:-4] + ".png")
 texture.Update()
 texels = vtk_to_numpy(texture.GetOutput().GetPointData().GetScalars())
 check(((texels[:, 0] > 200) & (texels[:, 1] < 60)).any(), "writer: red texels in the texture")
+# The folder a killed write left (its process is gone) is removed by the next write.
+stale = os.path.join(out, ".ofb-plugin-sphere.gltf.partial-999999999")
+os.makedirs(stale, exist_ok=True)
+open(os.path.join(stale, "ofb-plugin-sphere.gltf"), "w").write("{")
 SaveData(gltf, proxy=paintprobe, TextureSize=256)  # the only .gltf writer
+check(not os.path.exists(stale), "writer: a killed write's staging folder removed")
 text = open(gltf).read()
 check('"mimeType":"image/png"' in text and ";base64," in text,
       "writer: the glTF embeds its texture")

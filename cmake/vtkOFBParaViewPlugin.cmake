@@ -85,7 +85,12 @@ ExternalProject_Add(vtkofb-paraview-plugin
 
 # The plugin's tests, run from this project's ctest.
 if (VTKOFB_BUILD_TESTING)
-  foreach (vtkofb_test IN ITEMS Filters VersionCheck Example Package)
+  set(vtkofb_paraview_tests Filters VersionCheck Example Package)
+  # pvpython through scripts/paraview-sdk.sh's wrapper, where ParaView is its prefix.
+  if (EXISTS "${VTKOFB_PARAVIEW_DIR}/../../../../../bin/pvpython")
+    list(APPEND vtkofb_paraview_tests PvPython)
+  endif ()
+  foreach (vtkofb_test IN LISTS vtkofb_paraview_tests)
     add_test(
       NAME    "OFB.ParaView.${vtkofb_test}"
       COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
@@ -94,6 +99,12 @@ if (VTKOFB_BUILD_TESTING)
       LABELS  "ParaView"
       TIMEOUT 900)
   endforeach ()
+  # The tests that render share xvfb-run's display with the other display tests
+  # (docs/testing.md, "Tests that open windows"); their scripts keep a connection open.
+  set_property(TEST OFB.ParaView.Filters OFB.ParaView.Example APPEND PROPERTY
+    RESOURCE_LOCK vtkofb_display)
+  set_property(TEST OFB.ParaView.Filters OFB.ParaView.Example APPEND PROPERTY
+    LABELS display)
   set_tests_properties(OFB.ParaView.Package PROPERTIES
     RESOURCE_LOCK "vtkofb-install"
     RUN_SERIAL    TRUE)

@@ -7,7 +7,8 @@
 # package), so installing it would remove python3-vtk9 and libvtk9-dev. This script
 # unpacks it instead (apt-get download + dpkg -x, nothing installed) into
 # BUILD_DIR/paraview-sdk/python, and makes BUILD_DIR/paraview-sdk/usr, a prefix of
-# links to /usr whose lib/python3 is the unpacked one. Both are needed:
+# links to /usr whose lib/python3 is the unpacked one, and BUILD_DIR/paraview-sdk/bin/pvpython
+# and pvbatch, which run ParaView's tools with it. Both are needed:
 # - pvpython and pvbatch run from that prefix's Python packages (PYTHONPATH);
 # - paraview-dev's CMake package names the Python modules of python3-paraview and
 #   fails without them: the plugin is configured with
@@ -32,7 +33,7 @@ if [ -z "$PV_VERSION" ]; then
 fi
 
 # Unpacked once per ParaView version.
-if [ "$(cat "$SDK/version" 2>/dev/null || true)" != "$PV_VERSION" ]; then
+if [ "$(cat "$SDK/version" 2>/dev/null || true)" != "$PV_VERSION" ] || [ ! -x "$SDK/bin/pvpython" ]; then
   rm -rf "$SDK"
   mkdir -p "$SDK/download"
   # apt-get download writes into the working directory; _apt may not write there.
@@ -68,6 +69,20 @@ if [ "$(cat "$SDK/version" 2>/dev/null || true)" != "$PV_VERSION" ]; then
     ln -sfn "$entry" "$local_lib/vtk/hierarchy/"
   done
   ln -s "$SDK/python/usr/lib/python3" "$SDK/usr/lib/python3"
+  # pvpython and pvbatch with ParaView's Python: PYTHONPATH, and the libraries through
+  # the prefix's links, so that pvpython's search for its Python modules (relative to
+  # its libraries) finds the unpacked ones and not python3-vtk9's in /usr.
+  mkdir -p "$SDK/bin"
+  for tool in pvpython pvbatch; do
+    cat > "$SDK/bin/$tool" <<WRAPPER
+#!/bin/sh
+# $tool with ParaView's Python unpacked in $SDK (scripts/paraview-sdk.sh).
+PYTHONPATH="$SDK/python/usr/lib/python3/dist-packages\${PYTHONPATH:+:\$PYTHONPATH}" \\
+LD_LIBRARY_PATH="$SDK/usr/lib/$MULTIARCH\${LD_LIBRARY_PATH:+:\$LD_LIBRARY_PATH}" \\
+  exec "$SDK/usr/bin/$tool" "\$@"
+WRAPPER
+    chmod +x "$SDK/bin/$tool"
+  done
   echo "$PV_VERSION" > "$SDK/version"
 fi
-echo "paraview-sdk.sh: ParaView $PV_VERSION's Python in $SDK/python"
+echo "paraview-sdk.sh: ParaView $PV_VERSION's Python in $SDK/python; run $SDK/bin/pvpython or pvbatch"

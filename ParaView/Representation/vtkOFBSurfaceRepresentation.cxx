@@ -34,6 +34,7 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
   , LIC(vtkOFBLIC::New())
   , OFBLIC(false)
   , VectorsAssociation(vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  , WarnedNoVectors(false)
 {
   // The OFB mapper replaces the superclass's full-resolution mapper; the LOD mapper stays.
   this->Mapper->Delete();
@@ -138,15 +139,72 @@ void vtkOFBSurfaceRepresentation::UpdateColorSource()
 //------------------------------------------------------------------------------
 void vtkOFBSurfaceRepresentation::UpdateLICConnection()
 {
+  const bool lic = this->UpdateVectors();
+  if (this->OFBLIC && !lic && !this->WarnedNoVectors)
+  {
+    vtkWarningMacro("OFB LIC is on but the surface has no such vector field (3 components): "
+                    "showing the colours without LIC.");
+  }
+  this->WarnedNoVectors = this->OFBLIC && !lic;
   vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
-  vtkAlgorithm* source = this->OFBLIC ? static_cast<vtkAlgorithm*>(this->LIC)
-                                      : static_cast<vtkAlgorithm*>(this->Sampler);
+  vtkAlgorithm* source =
+    lic ? static_cast<vtkAlgorithm*>(this->LIC) : static_cast<vtkAlgorithm*>(this->Sampler);
   if (this->OFBMapper->GetInputAlgorithm(1, 0) != source)
   {
     this->OFBMapper->SetOFBConnection(source->GetOutputPort());
   }
-  coloring->SetIntensityModulation(this->OFBLIC);
+  coloring->SetIntensityModulation(lic);
   coloring->SetIntensityArrayName("LIC");
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSurfaceRepresentation::UpdateVectors()
+{
+  // The sampler projects a point field into the tangent planes and makes it the samples'
+  // active vectors; a cell field is a sample array of its name, which the LIC reads (it
+  // removes the normal component of any field). Without the LIC, or without the array in
+  // the surface, the sampler keeps its default (the active point vectors, if any), so
+  // that a missing field never empties the OFB.
+  vtkDataObject* data = this->OFBMapper->GetInputDataObject(0, 0);
+  const bool named = this->OFBLIC && !this->VectorsName.empty() &&
+    vtkOFBSurfaceRepresentation::GetNumberOfComponents(
+      data, this->VectorsAssociation, this->VectorsName.c_str()) == 3;
+  const bool active = this->OFBLIC && !named &&
+    vtkOFBSurfaceRepresentation::GetNumberOfComponents(
+      data, vtkDataObject::FIELD_ASSOCIATION_POINTS, nullptr) == 3;
+  const bool points =
+    named && this->VectorsAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  const std::string samplerVectors = points ? this->VectorsName : std::string();
+  if (samplerVectors != this->SamplerVectors)
+  {
+    this->SamplerVectors = samplerVectors;
+    if (points)
+    {
+      this->Sampler->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, samplerVectors.c_str());
+    }
+    else
+    {
+      this->Sampler->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+    }
+  }
+  const std::string licVectors = named ? this->VectorsName : std::string();
+  if (licVectors != this->LICVectors)
+  {
+    this->LICVectors = licVectors;
+    if (named)
+    {
+      this->LIC->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, licVectors.c_str());
+    }
+    else
+    {
+      this->LIC->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+    }
+  }
+  return named || active;
 }
 
 //------------------------------------------------------------------------------
@@ -159,7 +217,9 @@ int vtkOFBSurfaceRepresentation::GetNumberOfComponents(
       : association == vtkDataObject::FIELD_ASSOCIATION_CELLS
       ? static_cast<vtkFieldData*>(dataSet->GetCellData())
       : static_cast<vtkFieldData*>(dataSet->GetPointData());
-    vtkDataArray* array = fields ? fields->GetArray(name) : nullptr;
+    vtkDataArray* array = !fields ? nullptr
+      : name                      ? fields->GetArray(name)
+                                  : dataSet->GetPointData()->GetVectors();
     return array ? array->GetNumberOfComponents() : 0;
   };
   if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(data))
@@ -220,30 +280,13 @@ void vtkOFBSurfaceRepresentation::SetOFBLIC(bool enable)
 void vtkOFBSurfaceRepresentation::SelectOFBInputVectors(
   int, int, int, int fieldAssociation, const char* name)
 {
-  this->VectorsName = name ? name : "";
-  this->VectorsAssociation = fieldAssociation;
-  // The sampler projects a point field into the tangent planes and makes it the samples'
-  // active vectors; a cell field is a sample array of its name, which the LIC reads (it
-  // removes the normal component of any field).
-  const bool points = fieldAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  if (this->VectorsName.empty())
+  const std::string vectors = name ? name : "";
+  if (vectors != this->VectorsName || fieldAssociation != this->VectorsAssociation)
   {
-    this->Sampler->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
-      vtkDataSetAttributes::VECTORS);
-    this->LIC->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
-      vtkDataSetAttributes::VECTORS);
+    this->VectorsName = vectors;
+    this->VectorsAssociation = fieldAssociation;
+    this->Modified();
   }
-  else
-  {
-    if (points)
-    {
-      this->Sampler->SetInputArrayToProcess(
-        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, this->VectorsName.c_str());
-    }
-    this->LIC->SetInputArrayToProcess(
-      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, this->VectorsName.c_str());
-  }
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------

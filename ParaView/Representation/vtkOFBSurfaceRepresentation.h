@@ -153,15 +153,18 @@ protected:
   /**
    * Steps of UpdateColoringParameters: the colour source from the colour array
    * (UpdateColorSource) and the OFB the mapper reads with the LIC's colouring
-   * (UpdateLICConnection).
+   * (UpdateLICConnection), and the vector field of the sampler and the LIC (UpdateVectors:
+   * the chosen array when the LIC is on and the surface has it; returns whether the LIC
+   * has a field: the chosen array or the active point vectors).
    */
   void UpdateColorSource();
   void UpdateLICConnection();
+  bool UpdateVectors();
   ///@}
 
   /**
-   * Number of components of the array `name` of `association` in the first dataset of
-   * `data` that has it (0 when none).
+   * Number of components of the array `name` of `association` (null: the active point
+   * vectors) in the first dataset of `data` that has it (0 when none).
    */
   static int GetNumberOfComponents(vtkDataObject* data, int association, const char* name);
 
@@ -171,6 +174,9 @@ protected:
   bool OFBLIC;
   std::string VectorsName;
   int VectorsAssociation;
+  std::string SamplerVectors; // the field set on the sampler ("": its default)
+  std::string LICVectors;     // the field set on the LIC ("": its default)
+  bool WarnedNoVectors;       // warned that the LIC has no field, until it has one
 
 private:
   vtkOFBSurfaceRepresentation(const vtkOFBSurfaceRepresentation&) = delete;

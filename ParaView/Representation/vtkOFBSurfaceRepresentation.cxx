@@ -11,14 +11,14 @@
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationRequestKey.h"
-#include "vtkObjectFactory.h"
 #include "vtkOFBColoring.h"
 #include "vtkOFBLIC.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBSampler.h"
-#include "vtkPointData.h"
+#include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkPVView.h"
+#include "vtkPointData.h"
 #include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
 
@@ -61,8 +61,9 @@ vtkOFBSurfaceRepresentation::~vtkOFBSurfaceRepresentation()
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBSurfaceRepresentation::ProcessViewRequest(
-  vtkInformationRequestKey* requestType, vtkInformation* inInfo, vtkInformation* outInfo)
+int vtkOFBSurfaceRepresentation::ProcessViewRequest(vtkInformationRequestKey* requestType,
+  vtkInformation* inInfo,
+  vtkInformation* outInfo)
 {
   if (!this->Superclass::ProcessViewRequest(requestType, inInfo, outInfo))
   {
@@ -119,9 +120,8 @@ void vtkOFBSurfaceRepresentation::UpdateColorSource()
 
   vtkScalarsToColors* lut = this->OFBMapper->GetLookupTable();
   int component = 0;
-  const int components =
-    vtkOFBSurfaceRepresentation::GetNumberOfComponents(this->OFBMapper->GetInputDataObject(0, 0),
-      association, name);
+  const int components = vtkOFBSurfaceRepresentation::GetNumberOfComponents(
+    this->OFBMapper->GetInputDataObject(0, 0), association, name);
   if (components > 1)
   {
     component = lut->GetVectorMode() == vtkScalarsToColors::COMPONENT
@@ -172,8 +172,7 @@ bool vtkOFBSurfaceRepresentation::UpdateVectors()
   const bool active = this->OFBLIC && !named &&
     vtkOFBSurfaceRepresentation::GetNumberOfComponents(
       data, vtkDataObject::FIELD_ASSOCIATION_POINTS, nullptr) == 3;
-  const bool points =
-    named && this->VectorsAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  const bool points = named && this->VectorsAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS;
   const std::string samplerVectors = points ? this->VectorsName : std::string();
   if (samplerVectors != this->SamplerVectors)
   {
@@ -208,10 +207,12 @@ bool vtkOFBSurfaceRepresentation::UpdateVectors()
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBSurfaceRepresentation::GetNumberOfComponents(
-  vtkDataObject* data, int association, const char* name)
+int vtkOFBSurfaceRepresentation::GetNumberOfComponents(vtkDataObject* data,
+  int association,
+  const char* name)
 {
-  auto componentsOf = [association, name](vtkDataObject* object) {
+  auto componentsOf = [association, name](vtkDataObject* object)
+  {
     vtkDataSet* dataSet = vtkDataSet::SafeDownCast(object);
     vtkFieldData* fields = !dataSet ? nullptr
       : association == vtkDataObject::FIELD_ASSOCIATION_CELLS
@@ -277,8 +278,11 @@ void vtkOFBSurfaceRepresentation::SetOFBLIC(bool enable)
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBSurfaceRepresentation::SelectOFBInputVectors(
-  int, int, int, int fieldAssociation, const char* name)
+void vtkOFBSurfaceRepresentation::SelectOFBInputVectors(int,
+  int,
+  int,
+  int fieldAssociation,
+  const char* name)
 {
   const std::string vectors = name ? name : "";
   if (vectors != this->VectorsName || fieldAssociation != this->VectorsAssociation)
@@ -341,9 +345,8 @@ void vtkOFBSurfaceRepresentation::SetOFBMapModeBias(double bias)
 void vtkOFBSurfaceRepresentation::SetDiffuseColor(double r, double g, double b)
 {
   this->Superclass::SetDiffuseColor(r, g, b);
-  auto toByte = [](double v) {
-    return static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, v))));
-  };
+  auto toByte = [](double v)
+  { return static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, v)))); };
   this->Sampler->SetDefaultColor(toByte(r), toByte(g), toByte(b), 255);
 }
 
@@ -355,7 +358,8 @@ void vtkOFBSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OFBLookupMode: "
      << vtkOFBPolyDataMapper::GetLookupModeAsString(this->OFBMapper->GetLookupMode()) << "\n";
   os << indent << "OFBLIC: " << (this->OFBLIC ? "On" : "Off") << "\n";
-  os << indent << "OFBInputVectors: " << (this->VectorsName.empty() ? "(active)" : this->VectorsName)
+  os << indent
+     << "OFBInputVectors: " << (this->VectorsName.empty() ? "(active)" : this->VectorsName)
      << " (association " << this->VectorsAssociation << ")\n";
   os << indent << "OFBNumberOfSteps: " << this->LIC->GetNumberOfSteps() << "\n";
   os << indent << "OFBStepSize: " << this->LIC->GetStepSize() << "\n";
@@ -364,8 +368,9 @@ void vtkOFBSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OFBNormalizeVectors: " << (this->LIC->GetNormalizeVectors() ? "On" : "Off")
      << "\n";
   vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
-  os << indent << "OFBLICColorMode: "
-     << vtkOFBColoring::GetLICColorModeAsString(coloring->GetLICColorMode()) << "\n";
+  os << indent
+     << "OFBLICColorMode: " << vtkOFBColoring::GetLICColorModeAsString(coloring->GetLICColorMode())
+     << "\n";
   os << indent << "OFBLICIntensity: " << coloring->GetLICIntensity() << "\n";
   os << indent << "OFBMapModeBias: " << coloring->GetMapModeBias() << "\n";
 }

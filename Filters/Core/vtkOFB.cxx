@@ -805,3 +805,23 @@ void vtkOFB::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleData:\n";
   this->SampleData->PrintSelf(os, indent.GetNextIndent());
 }
+
+//------------------------------------------------------------------------------
+vtkFieldData* vtkOFB::GetAttributesAsFieldData(int type)
+{
+  if (type == vtkDataObject::POINT)
+  {
+    return this->GetSampleData();
+  }
+  return this->Superclass::GetAttributesAsFieldData(type);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFB::GetNumberOfElements(int type)
+{
+  if (type == vtkDataObject::POINT)
+  {
+    return this->GetNumberOfSamples();
+  }
+  return this->Superclass::GetNumberOfElements(type);
+}

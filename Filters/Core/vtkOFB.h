@@ -357,6 +357,18 @@ public:
 
   ///@{
   /**
+   * The samples as the data object's points: GetAttributesAsFieldData(POINT) is
+   * GetSampleData() and GetNumberOfElements(POINT) the number of samples, so that code
+   * that lists a data object's point arrays (ParaView's information panel and array
+   * menus, vtkAlgorithm::GetInputArrayToProcess on an OFB input) sees the sample arrays.
+   * Other types are vtkDataObject's.
+   */
+  vtkFieldData* GetAttributesAsFieldData(int type) override;
+  vtkIdType GetNumberOfElements(int type) override;
+  ///@}
+
+  ///@{
+  /**
    * Copy another OFB: shallow copies share the arrays, deep copies duplicate them.
    */
   void ShallowCopy(vtkDataObject* src) override;

@@ -1,0 +1,103 @@
+/**
+ * @class   vtkOFBTexturedMeshWriter
+ * @brief   Writes a mesh with an OFB's paint baked into its texture: OBJ or glTF
+ *
+ * The input (port 0) is the mesh, a vtkPolyData; the OFB is the one given with
+ * SetOFB(), else the one the input carries (vtkOFBParaViewProbe's output, which is what
+ * ParaView's File > Save Data hands over from an OFB Probe). The file's extension picks
+ * the format:
+ * - `.obj`: the mesh with texture coordinates, a `.mtl` and the texture as a `.png`
+ *   beside it (the `.mtl` and `.png` named after the `.obj`);
+ * - `.gltf`: glTF 2.0, one file with the texture embedded (vtkGLTFExporter), normals
+ *   written.
+ * The texture: a mesh with texture coordinates keeps them and gets a TextureSize x
+ * TextureSize texture; a mesh without gets the charts of a vtkOFBTextureAtlas (a texel a
+ * cell, at most TextureSize a side). vtkOFBTextureBaker bakes ArrayName (default: the
+ * paint, "Colors") into it; an array other than unsigned char is mapped from [0, 1] to
+ * grey levels 0-255 (a LIC), its first three components.
+ *
+ * Files are written into a temporary folder beside the target and renamed into place
+ * when all are complete (the texture and material first, the `.obj` last), so a failure
+ * or a kill leaves the files that were there before and no partial file under the
+ * target's name.
+ *
+ * Bad input (no OFB, an empty mesh, an unknown extension or array, a folder that cannot
+ * be written) gives an error and writes nothing.
+ *
+ * @sa vtkOFBTextureBaker vtkOFBTextureAtlas vtkOFBParaViewProbe
+ */
+
+#ifndef vtkOFBTexturedMeshWriter_h
+#define vtkOFBTexturedMeshWriter_h
+
+#include "vtkOFBParaViewModule.h" // for export macro
+#include "vtkSmartPointer.h"      // for member
+#include "vtkWriter.h"
+
+class vtkOFB;
+
+class VTKOFBPARAVIEW_EXPORT vtkOFBTexturedMeshWriter : public vtkWriter
+{
+public:
+  static vtkOFBTexturedMeshWriter* New();
+  vtkTypeMacro(vtkOFBTexturedMeshWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The file to write, `.obj` or `.gltf` (default none).
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * The texture's size in texels a side for a mesh with texture coordinates, and the
+   * largest side of an atlas for one without (16 to 16384; default 2048).
+   */
+  vtkSetClampMacro(TextureSize, int, 16, 16384);
+  vtkGetMacro(TextureSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * The sample array baked (default null: the paint, "Colors").
+   */
+  vtkSetStringMacro(ArrayName);
+  vtkGetStringMacro(ArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * The OFB to bake (default null: the one the input carries under
+   * vtkOFBParaViewProbe::OFB()).
+   */
+  void SetOFB(vtkOFB* ofb);
+  vtkOFB* GetOFB() const;
+  ///@}
+
+  /**
+   * The texture's size in texels of the last write (0 0 before one or after a failure).
+   */
+  vtkGetVector2Macro(WrittenTextureSize, int);
+
+protected:
+  vtkOFBTexturedMeshWriter();
+  ~vtkOFBTexturedMeshWriter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  void WriteData() override;
+
+  char* FileName;
+  char* ArrayName;
+  int TextureSize;
+  int WrittenTextureSize[2];
+  vtkSmartPointer<vtkOFB> OFB;
+
+private:
+  vtkOFBTexturedMeshWriter(const vtkOFBTexturedMeshWriter&) = delete;
+  void operator=(const vtkOFBTexturedMeshWriter&) = delete;
+};
+
+#endif

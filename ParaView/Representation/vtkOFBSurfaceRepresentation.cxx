@@ -11,8 +11,11 @@
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationRequestKey.h"
+#include "vtkInformationVector.h"
+#include "vtkOFB.h"
 #include "vtkOFBColoring.h"
 #include "vtkOFBLIC.h"
+#include "vtkOFBParaViewProbe.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBSampler.h"
 #include "vtkObjectFactory.h"
@@ -33,6 +36,7 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
   , Sampler(vtkOFBSampler::New())
   , LIC(vtkOFBLIC::New())
   , OFBLIC(false)
+  , UseInputOFB(true)
   , VectorsAssociation(vtkDataObject::FIELD_ASSOCIATION_POINTS)
   , WarnedNoVectors(false)
 {
@@ -58,6 +62,18 @@ vtkOFBSurfaceRepresentation::~vtkOFBSurfaceRepresentation()
   // this->Mapper (the OFB mapper) is deleted by the superclass.
   this->Sampler->Delete();
   this->LIC->Delete();
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBSurfaceRepresentation::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkDataObject* input = inputVector[0]->GetNumberOfInformationObjects() == 1
+    ? vtkDataObject::GetData(inputVector[0], 0)
+    : nullptr;
+  this->InputOFB = input ? vtkOFBParaViewProbe::GetOFB(input) : nullptr;
+  return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
 //------------------------------------------------------------------------------
@@ -103,7 +119,10 @@ void vtkOFBSurfaceRepresentation::UpdateColorSource()
   const int association = (info && info->Has(vtkDataObject::FIELD_ASSOCIATION()))
     ? info->Get(vtkDataObject::FIELD_ASSOCIATION())
     : vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  const bool scalars = name && name[0] && association != vtkDataObject::FIELD_ASSOCIATION_NONE;
+  // Direct colours (Map Scalars off: the "Colors" of an OFB Probe, RGB(A) bytes) are the
+  // paint, which the samples hold as "Colors".
+  const bool scalars = name && name[0] && association != vtkDataObject::FIELD_ASSOCIATION_NONE &&
+    this->OFBMapper->GetColorMode() != VTK_COLOR_MODE_DIRECT_SCALARS;
 
   // The OFB colours the surface: the mapper's per-vertex scalar colours play no part.
   this->OFBMapper->ScalarVisibilityOff();
@@ -147,6 +166,31 @@ void vtkOFBSurfaceRepresentation::UpdateLICConnection()
   }
   this->WarnedNoVectors = this->OFBLIC && !lic;
   vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
+  vtkOFB* inputOFB = this->UseInputOFB ? this->InputOFB.Get() : nullptr;
+  const bool inputLIC = inputOFB && inputOFB->GetSampleData()->GetArray("LIC");
+  if (inputOFB && (inputLIC || !lic))
+  {
+    // The input's OFB as it is: its paint, its arrays and its own LIC, if any.
+    if (this->OFBMapper->GetOFB() != inputOFB)
+    {
+      this->OFBMapper->SetOFB(inputOFB);
+    }
+    coloring->SetIntensityModulation(this->OFBLIC && inputLIC);
+    coloring->SetIntensityArrayName("LIC");
+    return;
+  }
+  if (inputOFB)
+  {
+    // The LIC computed here on the input's OFB.
+    if (this->LIC->GetInputDataObject(0, 0) != inputOFB)
+    {
+      this->LIC->SetInputData(inputOFB);
+    }
+  }
+  else if (this->LIC->GetInputAlgorithm(0, 0) != this->Sampler)
+  {
+    this->LIC->SetInputConnection(this->Sampler->GetOutputPort());
+  }
   vtkAlgorithm* source =
     lic ? static_cast<vtkAlgorithm*>(this->LIC) : static_cast<vtkAlgorithm*>(this->Sampler);
   if (this->OFBMapper->GetInputAlgorithm(1, 0) != source)
@@ -268,6 +312,22 @@ int vtkOFBSurfaceRepresentation::GetOFBLookupMode()
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetUseInputOFB(bool use)
+{
+  if (use != this->UseInputOFB)
+  {
+    this->UseInputOFB = use;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFB* vtkOFBSurfaceRepresentation::GetRenderedOFB()
+{
+  return this->OFBMapper->GetOFB();
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBSurfaceRepresentation::SetOFBLIC(bool enable)
 {
   if (enable != this->OFBLIC)
@@ -357,6 +417,8 @@ void vtkOFBSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OFBResolution: " << this->Sampler->GetResolution() << "\n";
   os << indent << "OFBLookupMode: "
      << vtkOFBPolyDataMapper::GetLookupModeAsString(this->OFBMapper->GetLookupMode()) << "\n";
+  os << indent << "UseInputOFB: " << (this->UseInputOFB ? "On" : "Off") << "\n";
+  os << indent << "InputOFB: " << this->InputOFB.Get() << "\n";
   os << indent << "OFBLIC: " << (this->OFBLIC ? "On" : "Off") << "\n";
   os << indent
      << "OFBInputVectors: " << (this->VectorsName.empty() ? "(active)" : this->VectorsName)

@@ -7,20 +7,28 @@
  * representation) whose mapper is a vtkOFBPolyDataMapper. It builds the OFB itself, on
  * the process that renders, from the surface the view delivers to it (a vtkOFBSampler,
  * then a vtkOFBLIC when the LIC is on), and colours every fragment from the samples, as
- * the "Surface LIC" representation computes its LIC in its mapper from the same surface:
- * - Colour by Solid Color: the paint, the "Colors" sample array. It holds the surface's
- *   RGB(A) byte colours where its active point scalars are such (a painted mesh, the
- *   colours of an OFB Probe), else the representation's DiffuseColor.
+ * the "Surface LIC" representation computes its LIC in its mapper from the same surface.
+ * Where its input carries an OFB (the output of OFB Probe, vtkOFBParaViewProbe, holds the
+ * OFB it probed: painted by OFB Paint Strokes, OFB Particles, with an OFB LIC's "LIC"),
+ * and UseInputOFB is on (default), that OFB colours the surface instead, at its own
+ * resolution: the paint is the OFB's, not the mesh's vertex colours. This holds where the
+ * data is rendered in the process that computed it (pvpython, pvbatch on any number of
+ * ranks, pvserver rendering remotely); a client that renders a remote server's surface
+ * locally builds its own OFB from the surface it receives.
+ * - Colour by Solid Color, or by an array with Map Scalars off (direct colours, such as
+ *   OFB Probe's "Colors"): the paint, the "Colors" sample array. It holds the input OFB's
+ *   paint, else the surface's RGB(A) byte colours where its active point scalars are such
+ *   (a painted mesh), else the representation's DiffuseColor.
  * - Colour by an array (point or cell): the sample array of that name (the sampler
  *   interpolates every point array into the samples, and gives each sample its cell's
  *   value of every cell array) mapped through ParaView's colour map (the representation's
  *   LookupTable, over the map's own range, component or magnitude as the map's vector
  *   mode says).
  * - OFBLIC on, with the vector array chosen with SelectOFBInputVectors: the LIC of that
- *   field on the samples, combined with the colour (OFBLICColorMode: blend or map,
- *   OFBLICIntensity, OFBMapModeBias; vtkOFBColoring's formulas, those of VTK's surface
- *   LIC). The LIC is computed once per change of the surface or of a LIC setting, not
- *   per frame.
+ *   field on the samples (an input OFB's "LIC" array as it is, where it has one), combined with the
+ * colour (OFBLICColorMode: blend or map, OFBLICIntensity, OFBMapModeBias; vtkOFBColoring's
+ * formulas, those of VTK's surface LIC). The LIC is computed once per change of the surface or of a
+ * LIC setting, not per frame.
  *
  * OFBResolution (cells along the longest side of the surface's bounds) sets the
  * colour resolution, OFBLookupMode how a fragment reads the samples (the mapper's
@@ -44,9 +52,12 @@
 #include "vtkGeometryRepresentationWithFaces.h"
 #include "vtkOFBParaViewRepresentationModule.h" // for export macro
 
+#include "vtkSmartPointer.h" // for InputOFB
+
 #include <string> // for the vector array name
 
 class vtkDataObject;
+class vtkOFB;
 class vtkOFBLIC;
 class vtkOFBPolyDataMapper;
 class vtkOFBSampler;
@@ -84,6 +95,21 @@ public:
   void SetOFBLookupMode(int mode);
   int GetOFBLookupMode();
   ///@}
+
+  ///@{
+  /**
+   * Colour from the OFB that the input carries (vtkOFBParaViewProbe's output), where it
+   * does and this process has it (default on). Off: the OFB is always built here.
+   */
+  void SetUseInputOFB(bool use);
+  vtkGetMacro(UseInputOFB, bool);
+  ///@}
+
+  /**
+   * The OFB the last render coloured from: the input's (UseInputOFB) or the one built
+   * here (null before the first render).
+   */
+  vtkOFB* GetRenderedOFB();
 
   ///@{
   /**
@@ -144,6 +170,14 @@ protected:
   ~vtkOFBSurfaceRepresentation() override;
 
   /**
+   * Also keeps the OFB that the input carries (InputOFB), in the process that has the
+   * input.
+   */
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  /**
    * The superclass's, then the OFB colouring: paint or the colour array through the
    * lookup table, the LIC, and which OFB (sampler or LIC) the mapper reads.
    */
@@ -172,6 +206,8 @@ protected:
   vtkOFBSampler* Sampler;
   vtkOFBLIC* LIC;
   bool OFBLIC;
+  bool UseInputOFB;
+  vtkSmartPointer<vtkOFB> InputOFB; // the OFB the input carries, if any
   std::string VectorsName;
   int VectorsAssociation;
   std::string SamplerVectors; // the field set on the sampler ("": its default)

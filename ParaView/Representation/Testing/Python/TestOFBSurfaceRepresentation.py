@@ -15,7 +15,7 @@ import os
 import sys
 
 import numpy as np
-from paraview.simple import (Calculator, ColorBy, CreateView, Elevation, LoadPlugin,
+from paraview.simple import (Calculator, ColorBy, CreateView, Elevation, Hide, Line, LoadPlugin,
                              PointDatatoCellData, Render, SaveScreenshot, Show, Sphere)
 from paraview.vtk.vtkIOImage import vtkPNGReader
 from vtkmodules.util import numpy_support
@@ -175,6 +175,48 @@ nearest_difference = mean_difference(nearest, mapped, mask)
 check(nearest_energy > 20 * plain_energy and nearest_difference > 1.0,
       "lookup mode Nearest renders the LIC (energy %.1f, mean |difference| to Automatic %.2f)"
       % (nearest_energy, nearest_difference))
+
+# Paint from an OFB upstream: a stroke painted into the OFB by OFB Paint Strokes, carried
+# to the representation by OFB Probe's output. The input OFB shows it at the OFB's
+# resolution; the probed vertex colours (Use Input OFB off, or ParaView's Surface with
+# direct colours) blur it over the mesh's triangles.
+display.Visibility = 0
+coarse_sphere = Sphere(ThetaResolution=24, PhiResolution=24)
+sampled = OFBSampler(Input=coarse_sphere)
+sampled.Resolution = 256
+stroke = Line(Point1=[0, -0.5, -0.15], Point2=[0, -0.5, 0.15], Resolution=30)
+painted = OFBPaintStrokes(Input=sampled, Strokes=stroke)
+painted.BrushRadius = 0.06
+painted.BrushColor = [1.0, 0.8, 0.0, 1.0]
+probed = OFBProbe(Input=coarse_sphere, OFB=painted)
+paint_display = Show(probed, view)
+paint_display.SetRepresentationType("OFB Surface")
+ColorBy(paint_display, None)
+input_paint = screenshot(view, "ofb_input_paint")
+ColorBy(paint_display, ("POINTS", "Colors"))
+paint_display.MapScalars = 0
+input_direct = screenshot(view, "ofb_input_paint_direct")
+paint_display.SetRepresentationType("Surface")
+vertex_paint = screenshot(view, "surface_vertex_paint")
+
+
+def stroke_pixels(image):
+    """Pixels of the stroke (yellow: green well above blue): the core and the blurred edge."""
+    yellow = (image[:, :, 1] - image[:, :, 2])[mask]
+    top = yellow.max()
+    return int((yellow > 0.7 * top).sum()), int(((yellow > 0.15 * top) & (yellow <= 0.7 * top)).sum())
+
+
+core, edge = stroke_pixels(input_paint)
+vertex_core, vertex_edge = stroke_pixels(vertex_paint)
+check(core > 100 and edge < core,
+      "the input OFB's paint shows crisp (stroke core %d pixels, edge %d)" % (core, edge))
+check(vertex_edge > 3 * edge,
+      "the vertex colours blur it (edge %d pixels against %d from the OFB)" % (vertex_edge, edge))
+check(mean_difference(input_direct, input_paint, mask) < 0.5,
+      "direct colours (Map Scalars off) show the paint (mean |difference| %.2f)"
+      % mean_difference(input_direct, input_paint, mask))
+Hide(probed, view)
 
 Render(view)
 if failures:

@@ -85,7 +85,8 @@ ExternalProject_Add(vtkofb-paraview-plugin
 
 # The plugin's tests, run from this project's ctest.
 if (VTKOFB_BUILD_TESTING)
-  foreach (vtkofb_test IN ITEMS Filters VersionCheck Example Package)
+  foreach (vtkofb_test IN ITEMS Filters VersionCheck Example Package
+      SurfaceRepresentation SurfaceRepresentationExample)
     add_test(
       NAME    "OFB.ParaView.${vtkofb_test}"
       COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"

@@ -159,15 +159,16 @@ void vtkOFBSurfaceRepresentation::UpdateColorSource()
 void vtkOFBSurfaceRepresentation::UpdateLICConnection()
 {
   const bool lic = this->UpdateVectors();
-  if (this->OFBLIC && !lic && !this->WarnedNoVectors)
+  vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
+  vtkOFB* inputOFB = this->UseInputOFB ? this->InputOFB.Get() : nullptr;
+  const bool inputLIC = inputOFB && inputOFB->GetSampleData()->GetArray("LIC");
+  const bool noField = this->OFBLIC && !lic && !inputLIC;
+  if (noField && !this->WarnedNoVectors)
   {
     vtkWarningMacro("OFB LIC is on but the surface has no such vector field (3 components): "
                     "showing the colours without LIC.");
   }
-  this->WarnedNoVectors = this->OFBLIC && !lic;
-  vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
-  vtkOFB* inputOFB = this->UseInputOFB ? this->InputOFB.Get() : nullptr;
-  const bool inputLIC = inputOFB && inputOFB->GetSampleData()->GetArray("LIC");
+  this->WarnedNoVectors = noField;
   if (inputOFB && (inputLIC || !lic))
   {
     // The input's OFB as it is: its paint, its arrays and its own LIC, if any.

@@ -16,7 +16,8 @@ import sys
 
 import numpy as np
 from paraview.simple import (Calculator, ColorBy, CreateView, Elevation, Hide, Line, LoadPlugin,
-                             PointDatatoCellData, Render, SaveScreenshot, Show, Sphere)
+                             PointDatatoCellData, Render, SaveScreenshot, Show, Sphere,
+                             Threshold)
 from paraview.vtk.vtkIOImage import vtkPNGReader
 from vtkmodules.util import numpy_support
 
@@ -217,6 +218,31 @@ check(mean_difference(input_direct, input_paint, mask) < 0.5,
       "direct colours (Map Scalars off) show the paint (mean |difference| %.2f)"
       % mean_difference(input_direct, input_paint, mask))
 Hide(probed, view)
+
+# Bad input: the OFB cannot be built (no polygons, no cells) or the LIC has no field. The
+# sampler reports an error, the mapper draws the surface plainly; nothing crashes.
+lines = Show(Line(Resolution=10), view)
+lines.SetRepresentationType("OFB Surface")
+screenshot(view, "ofb_lines")
+Hide(lines.Input, view)
+empty = Show(Threshold(Input=elevation, Scalars=["POINTS", "Elevation"],
+                       LowerThreshold=5.0, UpperThreshold=6.0), view)
+empty.SetRepresentationType("OFB Surface")
+nothing = screenshot(view, "ofb_empty")
+check(np.abs(nothing - background).sum(axis=2).max() < 30,
+      "an empty input renders nothing (max difference to the background %.0f)"
+      % np.abs(nothing - background).sum(axis=2).max())
+Hide(empty.Input, view)
+no_field = Show(Elevation(Input=Sphere(ThetaResolution=48, PhiResolution=48),
+                          LowPoint=[0, 0, -0.5], HighPoint=[0, 0, 0.5]), view)
+no_field.SetRepresentationType("OFB Surface")
+ColorBy(no_field, ("POINTS", "Elevation"))
+no_field.OFBLIC = 1
+no_field.SelectOFBInputVectors = ["POINTS", "V"]
+without_field = screenshot(view, "ofb_lic_without_field")
+difference = mean_difference(without_field, ofb_elevation, mask)
+check(difference < 1.0, "LIC on without a vector field shows the colours (mean |difference| "
+      "to the colours alone %.2f)" % difference)
 
 Render(view)
 if failures:

@@ -12,8 +12,8 @@
  * OFB it probed: painted by OFB Paint Strokes, OFB Particles, with an OFB LIC's "LIC"),
  * and UseInputOFB is on (default), that OFB colours the surface instead, at its own
  * resolution: the paint is the OFB's, not the mesh's vertex colours. This holds where the
- * data is rendered in the process that computed it (pvpython, pvbatch on any number of
- * ranks, pvserver rendering remotely); a client that renders a remote server's surface
+ * data is rendered in the process that computed it (pvpython, pvbatch, pvserver
+ * rendering remotely); a client that renders a remote server's surface
  * locally builds its own OFB from the surface it receives.
  * - Colour by Solid Color, or by an array with Map Scalars off (direct colours, such as
  *   OFB Probe's "Colors"): the paint, the "Colors" sample array. It holds the input OFB's
@@ -25,10 +25,10 @@
  *   LookupTable, over the map's own range, component or magnitude as the map's vector
  *   mode says).
  * - OFBLIC on, with the vector array chosen with SelectOFBInputVectors: the LIC of that
- *   field on the samples (an input OFB's "LIC" array as it is, where it has one), combined with the
- * colour (OFBLICColorMode: blend or map, OFBLICIntensity, OFBMapModeBias; vtkOFBColoring's
- * formulas, those of VTK's surface LIC). The LIC is computed once per change of the surface or of a
- * LIC setting, not per frame.
+ *   field on the samples (an input OFB's "LIC" array as it is, where it has one),
+ *   combined with the colour (OFBLICColorMode: blend or map, OFBLICIntensity,
+ *   OFBMapModeBias; vtkOFBColoring's formulas, those of VTK's surface LIC). The LIC is
+ *   computed once per change of the surface or of a LIC setting, not per frame.
  *
  * OFBResolution (cells along the longest side of the surface's bounds) sets the
  * colour resolution, OFBLookupMode how a fragment reads the samples (the mapper's

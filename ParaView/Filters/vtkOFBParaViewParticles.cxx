@@ -2,10 +2,10 @@
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkOFBParaViewArrayChoice.h"
 #include "vtkObjectFactory.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-#include <cstring>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBParaViewParticles);
@@ -20,29 +20,26 @@ vtkOFBParaViewParticles::vtkOFBParaViewParticles()
 vtkOFBParaViewParticles::~vtkOFBParaViewParticles() = default;
 
 //------------------------------------------------------------------------------
-void vtkOFBParaViewParticles::SetInputArrayToProcess(
-  int idx, int port, int connection, int fieldAssociation, const char* name)
+void vtkOFBParaViewParticles::SetInputArrayToProcess(int idx,
+  int port,
+  int connection,
+  int fieldAssociation,
+  const char* name)
 {
-  if (name && *name != '\0' && std::strcmp(name, "None") != 0)
+  if (!vtkofbparaview::IsNoArray(name))
   {
     this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
-    return;
   }
-  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
-  if (arrays && idx >= 0 && idx < arrays->GetNumberOfInformationObjects())
+  else if (vtkofbparaview::ClearArrayChoice(this, idx))
   {
-    vtkInformation* choice = arrays->GetInformationObject(idx);
-    if (choice->GetNumberOfKeys() > 0)
-    {
-      choice->Clear();
-      this->Modified();
-    }
+    this->Modified();
   }
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBParaViewParticles::RequestInformation(
-  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+int vtkOFBParaViewParticles::RequestInformation(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
 {
   if (!this->Superclass::RequestInformation(request, inInfo, outInfo))
   {
@@ -63,8 +60,8 @@ int vtkOFBParaViewParticles::RequestInformation(
   for (int i = 0; i < outInfo->GetNumberOfInformationObjects(); ++i)
   {
     vtkInformation* info = outInfo->GetInformationObject(i);
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(),
-      static_cast<int>(steps.size()));
+    info->Set(
+      vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), static_cast<int>(steps.size()));
     info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   }
   return 1;

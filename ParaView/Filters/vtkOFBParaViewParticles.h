@@ -44,8 +44,11 @@ public:
    * As vtkAlgorithm's, except that the name "None" or an empty name removes the choice
    * of array `idx` (the active vectors are used).
    */
-  void SetInputArrayToProcess(
-    int idx, int port, int connection, int fieldAssociation, const char* name) override;
+  void SetInputArrayToProcess(int idx,
+    int port,
+    int connection,
+    int fieldAssociation,
+    const char* name) override;
 
 protected:
   vtkOFBParaViewParticles();

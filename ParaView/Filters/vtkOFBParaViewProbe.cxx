@@ -49,8 +49,7 @@ public:
 
 private:
   std::mutex Mutex;
-  std::map<vtkAbstractArray*,
-    std::pair<vtkWeakPointer<vtkAbstractArray>, vtkWeakPointer<vtkOFB>>>
+  std::map<vtkAbstractArray*, std::pair<vtkWeakPointer<vtkAbstractArray>, vtkWeakPointer<vtkOFB>>>
     Entries;
 };
 
@@ -80,8 +79,9 @@ vtkOFB* vtkOFBParaViewProbe::GetOFB(vtkDataObject* data)
 }
 
 //------------------------------------------------------------------------------
-int vtkOFBParaViewProbe::RequestData(
-  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+int vtkOFBParaViewProbe::RequestData(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
 {
   vtkPolyData* output = vtkPolyData::GetData(outInfo, 0);
   const int ok = this->Superclass::RequestData(request, inInfo, outInfo);

@@ -2,9 +2,8 @@
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkOFBParaViewArrayChoice.h"
 #include "vtkObjectFactory.h"
-
-#include <cstring>
 
 vtkStandardNewMacro(vtkOFBParaViewSampler);
 
@@ -15,23 +14,19 @@ vtkOFBParaViewSampler::vtkOFBParaViewSampler() = default;
 vtkOFBParaViewSampler::~vtkOFBParaViewSampler() = default;
 
 //------------------------------------------------------------------------------
-void vtkOFBParaViewSampler::SetInputArrayToProcess(
-  int idx, int port, int connection, int fieldAssociation, const char* name)
+void vtkOFBParaViewSampler::SetInputArrayToProcess(int idx,
+  int port,
+  int connection,
+  int fieldAssociation,
+  const char* name)
 {
-  if (name && *name != '\0' && std::strcmp(name, "None") != 0)
+  if (!vtkofbparaview::IsNoArray(name))
   {
     this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
-    return;
   }
-  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
-  if (arrays && idx >= 0 && idx < arrays->GetNumberOfInformationObjects())
+  else if (vtkofbparaview::ClearArrayChoice(this, idx))
   {
-    vtkInformation* choice = arrays->GetInformationObject(idx);
-    if (choice->GetNumberOfKeys() > 0)
-    {
-      choice->Clear();
-      this->Modified();
-    }
+    this->Modified();
   }
 }
 

@@ -29,8 +29,11 @@ public:
    * As vtkAlgorithm's, except that the name "None" or an empty name removes the choice
    * of array `idx` (no vector field).
    */
-  void SetInputArrayToProcess(
-    int idx, int port, int connection, int fieldAssociation, const char* name) override;
+  void SetInputArrayToProcess(int idx,
+    int port,
+    int connection,
+    int fieldAssociation,
+    const char* name) override;
 
 protected:
   vtkOFBParaViewSampler();

@@ -187,8 +187,8 @@ void vtkOFBTexturedMeshWriter::WriteData()
   const char* arrayName = this->ArrayName && *this->ArrayName ? this->ArrayName : "Colors";
   if (!ofb->GetSampleData()->GetArray(arrayName))
   {
-    vtkErrorMacro("Cannot write '" << path << "': the OFB has no sample array '" << arrayName
-                                   << "'.");
+    vtkErrorMacro(
+      "Cannot write '" << path << "': the OFB has no sample array '" << arrayName << "'.");
     return;
   }
 

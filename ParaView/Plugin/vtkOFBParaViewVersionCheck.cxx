@@ -19,8 +19,7 @@ std::string vtkOFBParaViewVersionMismatch(int builtMajor, int builtMinor, int ma
           << ": plugins work only in the ParaView version they were built against. "
           << "Build it against this ParaView (cmake -S ParaView -B <build> "
           << "-DParaView_DIR=<this ParaView's lib/cmake/paraview-" << major << "." << minor
-          << "> in vtkOFB's sources) or use ParaView " << builtMajor << "." << builtMinor
-          << ".";
+          << "> in vtkOFB's sources) or use ParaView " << builtMajor << "." << builtMinor << ".";
   return message.str();
 }
 
@@ -28,7 +27,8 @@ std::string vtkOFBParaViewVersionMismatch(int builtMajor, int builtMinor, int ma
 void vtkOFBParaViewCheckVersion()
 {
   const std::string message = vtkOFBParaViewVersionMismatch(PARAVIEW_VERSION_MAJOR,
-    PARAVIEW_VERSION_MINOR, vtkSMProxyManager::GetVersionMajor(),
+    PARAVIEW_VERSION_MINOR,
+    vtkSMProxyManager::GetVersionMajor(),
     vtkSMProxyManager::GetVersionMinor());
   if (!message.empty())
   {

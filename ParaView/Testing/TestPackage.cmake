@@ -78,11 +78,16 @@ if (NOT left EQUAL plugin_count)
 endif ()
 message(STATUS "ok: vtkofb and vtkofb-paraview-plugin share no file")
 run(main_extract "${DPKG_DEB}" -x "${main_deb}" "${WORK_DIR}/root")
-run(vtk_python "${CMAKE_COMMAND}" -E env
+# Debian's python3 with nothing but PATH and PYTHONPATH: Examples/Build/ofbInstalled.py
+# imports vtkofb from the folder (the VTK world: python3-vtk9's vtkmodules).
+run(vtk_python env -i PATH=/usr/bin:/bin
   "PYTHONPATH=${WORK_DIR}/root/usr/${MAIN_PYTHON_DESTINATION}"
-  "${PYTHON}" -c
-  "import vtkofb; from vtkmodules.vtkFiltersSources import vtkSphereSource; s = vtkSphereSource(); b = vtkofb.vtkOFBSampler(); b.SetInputConnection(s.GetOutputPort()); b.SetResolution(64); b.Update(); n = b.GetOutput().GetNumberOfSamples(); assert n > 1000; print('vtkofb in Debian VTK Python:', n, 'samples')")
-expect("${vtk_python_output}" "vtkofb in Debian VTK Python" "import vtkofb from the same folder")
+  "${PYTHON}" -B "${SOURCE_DIR}/Examples/Build/ofbInstalled.py")
+file(REAL_PATH "${WORK_DIR}/root/usr/${MAIN_PYTHON_DESTINATION}/vtkofb" package_dir)
+string(REGEX REPLACE "([][+.*()^$?|\\\\])" "\\\\\\1" package_regex "${package_dir}")
+expect("${vtk_python_output}" "from ${package_regex}\n"
+  "import vtkofb in Debian's python3 from the same folder")
+expect("${vtk_python_output}" "[1-9][0-9]* samples" "vtkofb samples a surface")
 run(pvbatch_again "${CMAKE_COMMAND}" -E env "PYTHONPATH=${PARAVIEW_PYTHON}"
   "${PVBATCH}" --force-offscreen-rendering "${SCRIPT}" "${plugin}")
 expect("${pvbatch_again_output}" "the installed OFB plugin works"

@@ -85,7 +85,8 @@ ExternalProject_Add(vtkofb-paraview-plugin
 
 # The plugin's tests, run from this project's ctest.
 if (VTKOFB_BUILD_TESTING)
-  set(vtkofb_paraview_tests Filters VersionCheck Example Package)
+  set(vtkofb_paraview_tests Filters VersionCheck Example Package
+    SurfaceRepresentation SurfaceRepresentationExample)
   # pvpython through scripts/paraview-sdk.sh's wrapper, where ParaView is its prefix.
   if (EXISTS "${VTKOFB_PARAVIEW_DIR}/../../../../../bin/pvpython")
     list(APPEND vtkofb_paraview_tests PvPython)
@@ -101,9 +102,11 @@ if (VTKOFB_BUILD_TESTING)
   endforeach ()
   # The tests that render share xvfb-run's display with the other display tests
   # (docs/testing.md, "Tests that open windows"); their scripts keep a connection open.
-  set_property(TEST OFB.ParaView.Filters OFB.ParaView.Example APPEND PROPERTY
+  set(vtkofb_paraview_render_tests OFB.ParaView.Filters OFB.ParaView.Example
+    OFB.ParaView.SurfaceRepresentation OFB.ParaView.SurfaceRepresentationExample)
+  set_property(TEST ${vtkofb_paraview_render_tests} APPEND PROPERTY
     RESOURCE_LOCK vtkofb_display)
-  set_property(TEST OFB.ParaView.Filters OFB.ParaView.Example APPEND PROPERTY
+  set_property(TEST ${vtkofb_paraview_render_tests} APPEND PROPERTY
     LABELS display)
   set_tests_properties(OFB.ParaView.Package PROPERTIES
     RESOURCE_LOCK "vtkofb-install"

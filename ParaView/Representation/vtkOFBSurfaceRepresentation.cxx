@@ -1,0 +1,439 @@
+#include "vtkOFBSurfaceRepresentation.h"
+
+#include "vtkCellData.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkDataSet.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationRequestKey.h"
+#include "vtkInformationVector.h"
+#include "vtkOFB.h"
+#include "vtkOFBColoring.h"
+#include "vtkOFBLIC.h"
+#include "vtkOFBParaViewProbe.h"
+#include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBSampler.h"
+#include "vtkObjectFactory.h"
+#include "vtkPVRenderView.h"
+#include "vtkPVView.h"
+#include "vtkPointData.h"
+#include "vtkScalarsToColors.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkOFBSurfaceRepresentation);
+
+//------------------------------------------------------------------------------
+vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
+  : OFBMapper(vtkOFBPolyDataMapper::New())
+  , Sampler(vtkOFBSampler::New())
+  , LIC(vtkOFBLIC::New())
+  , OFBLIC(false)
+  , UseInputOFB(true)
+  , VectorsAssociation(vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  , WarnedNoVectors(false)
+{
+  // The OFB mapper replaces the superclass's full-resolution mapper; the LOD mapper stays.
+  this->Mapper->Delete();
+  this->Mapper = this->OFBMapper;
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  this->OFBMapper->SetCompositeDataDisplayAttributes(attributes);
+
+  // A change of the colour array, the solid colour or the time step keeps the structure.
+  this->Sampler->SetStructureReuseToAlways();
+  this->LIC->SetInputConnection(this->Sampler->GetOutputPort());
+  this->OFBMapper->SetOFBConnection(this->Sampler->GetOutputPort());
+  this->OFBMapper->GetColoring()->SetLICIntensity(0.8);
+
+  // Connects the new mapper to the actor, the selection and the backface actor.
+  this->SetupDefaults();
+}
+
+//------------------------------------------------------------------------------
+vtkOFBSurfaceRepresentation::~vtkOFBSurfaceRepresentation()
+{
+  // this->Mapper (the OFB mapper) is deleted by the superclass.
+  this->Sampler->Delete();
+  this->LIC->Delete();
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBSurfaceRepresentation::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkDataObject* input = inputVector[0]->GetNumberOfInformationObjects() == 1
+    ? vtkDataObject::GetData(inputVector[0], 0)
+    : nullptr;
+  this->InputOFB = input ? vtkOFBParaViewProbe::GetOFB(input) : nullptr;
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBSurfaceRepresentation::ProcessViewRequest(vtkInformationRequestKey* requestType,
+  vtkInformation* inInfo,
+  vtkInformation* outInfo)
+{
+  if (!this->Superclass::ProcessViewRequest(requestType, inInfo, outInfo))
+  {
+    return 0;
+  }
+  if (requestType == vtkPVView::REQUEST_RENDER())
+  {
+    // The superclass gave the delivered surface to the mapper; the OFB is built from the
+    // same surface, where it is rendered, when the mapper updates its OFB input.
+    vtkDataObject* data = vtkPVView::GetDeliveredPiece(inInfo, this);
+    if (this->Sampler->GetInputDataObject(0, 0) != data)
+    {
+      this->Sampler->SetInputDataObject(data);
+    }
+    if (data)
+    {
+      this->PopulateBlockAttributes(this->OFBMapper->GetCompositeDataDisplayAttributes(), data);
+    }
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::UpdateColoringParameters()
+{
+  this->Superclass::UpdateColoringParameters();
+  this->UpdateColorSource();
+  this->UpdateLICConnection();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::UpdateColorSource()
+{
+  vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
+  const char* name = this->GetColorArrayName();
+  vtkInformation* info = this->GetInputArrayInformation(0);
+  const int association = (info && info->Has(vtkDataObject::FIELD_ASSOCIATION()))
+    ? info->Get(vtkDataObject::FIELD_ASSOCIATION())
+    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  // Direct colours (Map Scalars off: the "Colors" of an OFB Probe, RGB(A) bytes) are the
+  // paint, which the samples hold as "Colors".
+  const bool scalars = name && name[0] && association != vtkDataObject::FIELD_ASSOCIATION_NONE &&
+    this->OFBMapper->GetColorMode() != VTK_COLOR_MODE_DIRECT_SCALARS;
+
+  // The OFB colours the surface: the mapper's per-vertex scalar colours play no part.
+  this->OFBMapper->ScalarVisibilityOff();
+  if (!scalars)
+  {
+    coloring->SetColorSourceToPaint();
+    return;
+  }
+
+  // A cell array whose name a point array has too: the samples take the cell array.
+  this->Sampler->SetArrayPrecedence(association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+      ? vtkOFBSampler::CELL_ARRAYS_FIRST
+      : vtkOFBSampler::POINT_ARRAYS_FIRST);
+
+  vtkScalarsToColors* lut = this->OFBMapper->GetLookupTable();
+  int component = 0;
+  const int components = vtkOFBSurfaceRepresentation::GetNumberOfComponents(
+    this->OFBMapper->GetInputDataObject(0, 0), association, name);
+  if (components > 1)
+  {
+    component = lut->GetVectorMode() == vtkScalarsToColors::COMPONENT
+      ? std::min(lut->GetVectorComponent(), components - 1)
+      : -1;
+  }
+  coloring->SetColorSourceToScalars();
+  coloring->SetScalarArrayName(name);
+  coloring->SetScalarComponent(component);
+  coloring->SetLookupTable(lut);
+  // ParaView's colour map carries its range (rescaled by the colour map editor).
+  coloring->UseLookupTableScalarRangeOn();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::UpdateLICConnection()
+{
+  const bool lic = this->UpdateVectors();
+  vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
+  vtkOFB* inputOFB = this->UseInputOFB ? this->InputOFB.Get() : nullptr;
+  const bool inputLIC = inputOFB && inputOFB->GetSampleData()->GetArray("LIC");
+  const bool noField = this->OFBLIC && !lic && !inputLIC;
+  if (noField && !this->WarnedNoVectors)
+  {
+    vtkWarningMacro("OFB LIC is on but the surface has no such vector field (3 components): "
+                    "showing the colours without LIC.");
+  }
+  this->WarnedNoVectors = noField;
+  if (inputOFB && (inputLIC || !lic))
+  {
+    // The input's OFB as it is: its paint, its arrays and its own LIC, if any.
+    if (this->OFBMapper->GetOFB() != inputOFB)
+    {
+      this->OFBMapper->SetOFB(inputOFB);
+    }
+    coloring->SetIntensityModulation(this->OFBLIC && inputLIC);
+    coloring->SetIntensityArrayName("LIC");
+    return;
+  }
+  if (inputOFB)
+  {
+    // The LIC computed here on the input's OFB.
+    if (this->LIC->GetInputDataObject(0, 0) != inputOFB)
+    {
+      this->LIC->SetInputData(inputOFB);
+    }
+  }
+  else if (this->LIC->GetInputAlgorithm(0, 0) != this->Sampler)
+  {
+    this->LIC->SetInputConnection(this->Sampler->GetOutputPort());
+  }
+  vtkAlgorithm* source =
+    lic ? static_cast<vtkAlgorithm*>(this->LIC) : static_cast<vtkAlgorithm*>(this->Sampler);
+  if (this->OFBMapper->GetInputAlgorithm(1, 0) != source)
+  {
+    this->OFBMapper->SetOFBConnection(source->GetOutputPort());
+  }
+  coloring->SetIntensityModulation(lic);
+  coloring->SetIntensityArrayName("LIC");
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSurfaceRepresentation::UpdateVectors()
+{
+  // The sampler projects a point field into the tangent planes and makes it the samples'
+  // active vectors; a cell field is a sample array of its name, which the LIC reads (it
+  // removes the normal component of any field). Without the LIC, or without the array in
+  // the surface, the sampler keeps its default (the active point vectors, if any), so
+  // that a missing field never empties the OFB.
+  vtkDataObject* data = this->OFBMapper->GetInputDataObject(0, 0);
+  const bool named = this->OFBLIC && !this->VectorsName.empty() &&
+    vtkOFBSurfaceRepresentation::GetNumberOfComponents(
+      data, this->VectorsAssociation, this->VectorsName.c_str()) == 3;
+  const bool active = this->OFBLIC && !named &&
+    vtkOFBSurfaceRepresentation::GetNumberOfComponents(
+      data, vtkDataObject::FIELD_ASSOCIATION_POINTS, nullptr) == 3;
+  const bool points = named && this->VectorsAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  const std::string samplerVectors = points ? this->VectorsName : std::string();
+  if (samplerVectors != this->SamplerVectors)
+  {
+    this->SamplerVectors = samplerVectors;
+    if (points)
+    {
+      this->Sampler->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, samplerVectors.c_str());
+    }
+    else
+    {
+      this->Sampler->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+    }
+  }
+  const std::string licVectors = named ? this->VectorsName : std::string();
+  if (licVectors != this->LICVectors)
+  {
+    this->LICVectors = licVectors;
+    if (named)
+    {
+      this->LIC->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, licVectors.c_str());
+    }
+    else
+    {
+      this->LIC->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+    }
+  }
+  return named || active;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBSurfaceRepresentation::GetNumberOfComponents(vtkDataObject* data,
+  int association,
+  const char* name)
+{
+  auto componentsOf = [association, name](vtkDataObject* object)
+  {
+    vtkDataSet* dataSet = vtkDataSet::SafeDownCast(object);
+    vtkFieldData* fields = !dataSet ? nullptr
+      : association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+      ? static_cast<vtkFieldData*>(dataSet->GetCellData())
+      : static_cast<vtkFieldData*>(dataSet->GetPointData());
+    vtkDataArray* array = !fields ? nullptr
+      : name                      ? fields->GetArray(name)
+                                  : dataSet->GetPointData()->GetVectors();
+    return array ? array->GetNumberOfComponents() : 0;
+  };
+  if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (const int components = componentsOf(it->GetCurrentDataObject()))
+      {
+        return components;
+      }
+    }
+    return 0;
+  }
+  return componentsOf(data);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBResolution(int resolution)
+{
+  if (resolution != this->Sampler->GetResolution())
+  {
+    this->Sampler->SetResolution(resolution);
+    this->MarkModified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBSurfaceRepresentation::GetOFBResolution()
+{
+  return this->Sampler->GetResolution();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBLookupMode(int mode)
+{
+  this->OFBMapper->SetLookupMode(mode);
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBSurfaceRepresentation::GetOFBLookupMode()
+{
+  return this->OFBMapper->GetLookupMode();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetUseInputOFB(bool use)
+{
+  if (use != this->UseInputOFB)
+  {
+    this->UseInputOFB = use;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFB* vtkOFBSurfaceRepresentation::GetRenderedOFB()
+{
+  return this->OFBMapper->GetOFB();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBLIC(bool enable)
+{
+  if (enable != this->OFBLIC)
+  {
+    this->OFBLIC = enable;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SelectOFBInputVectors(int,
+  int,
+  int,
+  int fieldAssociation,
+  const char* name)
+{
+  const std::string vectors = name ? name : "";
+  if (vectors != this->VectorsName || fieldAssociation != this->VectorsAssociation)
+  {
+    this->VectorsName = vectors;
+    this->VectorsAssociation = fieldAssociation;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBNumberOfSteps(int steps)
+{
+  this->LIC->SetNumberOfSteps(steps);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBStepSize(double size)
+{
+  this->LIC->SetStepSize(size);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBNoiseGrainSize(double size)
+{
+  this->LIC->SetNoiseGrainSize(size);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBEnhancedLIC(bool enhanced)
+{
+  this->LIC->SetEnhancedLIC(enhanced);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBNormalizeVectors(bool normalize)
+{
+  this->LIC->SetNormalizeVectors(normalize);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBLICColorMode(int mode)
+{
+  this->OFBMapper->GetColoring()->SetLICColorMode(mode);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBLICIntensity(double intensity)
+{
+  this->OFBMapper->GetColoring()->SetLICIntensity(intensity);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetOFBMapModeBias(double bias)
+{
+  this->OFBMapper->GetColoring()->SetMapModeBias(bias);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SetDiffuseColor(double r, double g, double b)
+{
+  this->Superclass::SetDiffuseColor(r, g, b);
+  auto toByte = [](double v)
+  { return static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, v)))); };
+  this->Sampler->SetDefaultColor(toByte(r), toByte(g), toByte(b), 255);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "OFBResolution: " << this->Sampler->GetResolution() << "\n";
+  os << indent << "OFBLookupMode: "
+     << vtkOFBPolyDataMapper::GetLookupModeAsString(this->OFBMapper->GetLookupMode()) << "\n";
+  os << indent << "UseInputOFB: " << (this->UseInputOFB ? "On" : "Off") << "\n";
+  os << indent << "InputOFB: " << this->InputOFB.Get() << "\n";
+  os << indent << "OFBLIC: " << (this->OFBLIC ? "On" : "Off") << "\n";
+  os << indent
+     << "OFBInputVectors: " << (this->VectorsName.empty() ? "(active)" : this->VectorsName)
+     << " (association " << this->VectorsAssociation << ")\n";
+  os << indent << "OFBNumberOfSteps: " << this->LIC->GetNumberOfSteps() << "\n";
+  os << indent << "OFBStepSize: " << this->LIC->GetStepSize() << "\n";
+  os << indent << "OFBNoiseGrainSize: " << this->LIC->GetNoiseGrainSize() << "\n";
+  os << indent << "OFBEnhancedLIC: " << (this->LIC->GetEnhancedLIC() ? "On" : "Off") << "\n";
+  os << indent << "OFBNormalizeVectors: " << (this->LIC->GetNormalizeVectors() ? "On" : "Off")
+     << "\n";
+  vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
+  os << indent
+     << "OFBLICColorMode: " << vtkOFBColoring::GetLICColorModeAsString(coloring->GetLICColorMode())
+     << "\n";
+  os << indent << "OFBLICIntensity: " << coloring->GetLICIntensity() << "\n";
+  os << indent << "OFBMapModeBias: " << coloring->GetMapModeBias() << "\n";
+}

@@ -1,0 +1,222 @@
+/**
+ * @class   vtkOFBSurfaceRepresentation
+ * @brief   ParaView's surface representation coloured per fragment from an OFB
+ *
+ * vtkOFBSurfaceRepresentation is the "OFB Surface" representation of ParaView's render
+ * view: a vtkGeometryRepresentationWithFaces (so it has every property of the "Surface"
+ * representation) whose mapper is a vtkOFBPolyDataMapper. It builds the OFB itself, on
+ * the process that renders, from the surface the view delivers to it (a vtkOFBSampler,
+ * then a vtkOFBLIC when the LIC is on), and colours every fragment from the samples, as
+ * the "Surface LIC" representation computes its LIC in its mapper from the same surface.
+ * Where its input carries an OFB (the output of OFB Probe, vtkOFBParaViewProbe, holds the
+ * OFB it probed: painted by OFB Paint Strokes, OFB Particles, with an OFB LIC's "LIC"),
+ * and UseInputOFB is on (default), that OFB colours the surface instead, at its own
+ * resolution: the paint is the OFB's, not the mesh's vertex colours. This holds where the
+ * data is rendered in the process that computed it (pvpython, pvbatch, pvserver
+ * rendering remotely); a client that renders a remote server's surface
+ * locally builds its own OFB from the surface it receives.
+ * - Colour by Solid Color, or by an array with Map Scalars off (direct colours, such as
+ *   OFB Probe's "Colors"): the paint, the "Colors" sample array. It holds the input OFB's
+ *   paint, else the surface's RGB(A) byte colours where its active point scalars are such
+ *   (a painted mesh), else the representation's DiffuseColor.
+ * - Colour by an array (point or cell): the sample array of that name (the sampler
+ *   interpolates every point array into the samples, and gives each sample its cell's
+ *   value of every cell array) mapped through ParaView's colour map (the representation's
+ *   LookupTable, over the map's own range, component or magnitude as the map's vector
+ *   mode says).
+ * - OFBLIC on, with the vector array chosen with SelectOFBInputVectors: the LIC of that
+ *   field on the samples (an input OFB's "LIC" array as it is, where it has one),
+ *   combined with the colour (OFBLICColorMode: blend or map, OFBLICIntensity,
+ *   OFBMapModeBias; vtkOFBColoring's formulas, those of VTK's surface LIC). The LIC is
+ *   computed once per change of the surface or of a LIC setting, not per frame.
+ *
+ * OFBResolution (cells along the longest side of the surface's bounds) sets the
+ * colour resolution, OFBLookupMode how a fragment reads the samples (the mapper's
+ * lookup modes). The OFB is rebuilt only when the surface or a construction setting
+ * changes; a change of the colour array, the solid colour or a time step with the same
+ * geometry re-samples the attributes alone (vtkOFBSampler's STRUCTURE_REUSE_ALWAYS).
+ *
+ * The level-of-detail mapper (ParaView's decimated surface while interacting with a
+ * large surface) is the plain one of the superclass: it shows the same colour array
+ * per vertex, without the OFB.
+ *
+ * The OFB settings are named with an OFB prefix, so that they do not clash with the
+ * "Surface LIC" representation's, which extends the same composite representation.
+ *
+ * @sa vtkOFBPolyDataMapper vtkOFBSampler vtkOFBLIC vtkOFBColoring
+ */
+
+#ifndef vtkOFBSurfaceRepresentation_h
+#define vtkOFBSurfaceRepresentation_h
+
+#include "vtkGeometryRepresentationWithFaces.h"
+#include "vtkOFBParaViewRepresentationModule.h" // for export macro
+
+#include "vtkSmartPointer.h" // for InputOFB
+
+#include <string> // for the vector array name
+
+class vtkDataObject;
+class vtkOFB;
+class vtkOFBLIC;
+class vtkOFBPolyDataMapper;
+class vtkOFBSampler;
+
+class VTKOFBPARAVIEWREPRESENTATION_EXPORT vtkOFBSurfaceRepresentation
+  : public vtkGeometryRepresentationWithFaces
+{
+public:
+  static vtkOFBSurfaceRepresentation* New();
+  vtkTypeMacro(vtkOFBSurfaceRepresentation, vtkGeometryRepresentationWithFaces);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Also hands the delivered surface to the OFB's sampler and the block visibilities to
+   * the OFB mapper before a render.
+   */
+  int ProcessViewRequest(vtkInformationRequestKey* requestType,
+    vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
+  ///@{
+  /**
+   * Cells along the longest side of the surface's bounds (vtkOFBSampler's Resolution,
+   * 3..65536, default 1024): the colour resolution of the surface.
+   */
+  void SetOFBResolution(int resolution);
+  int GetOFBResolution();
+  ///@}
+
+  ///@{
+  /**
+   * How a fragment reads its colour from the samples, a vtkOFBPolyDataMapper::LookupModes
+   * value (default LOOKUP_AUTOMATIC: Smooth for a LIC, else Nearest).
+   */
+  void SetOFBLookupMode(int mode);
+  int GetOFBLookupMode();
+  ///@}
+
+  ///@{
+  /**
+   * Colour from the OFB that the input carries (vtkOFBParaViewProbe's output), where it
+   * does and this process has it (default on). Off: the OFB is always built here.
+   */
+  void SetUseInputOFB(bool use);
+  vtkGetMacro(UseInputOFB, bool);
+  ///@}
+
+  /**
+   * The OFB the last render coloured from: the input's (UseInputOFB) or the one built
+   * here (null before the first render).
+   */
+  vtkOFB* GetRenderedOFB();
+
+  ///@{
+  /**
+   * The LIC on the samples (default off). Without a vector array (SelectOFBInputVectors)
+   * the surface's active point vectors are the field.
+   */
+  void SetOFBLIC(bool enable);
+  vtkGetMacro(OFBLIC, bool);
+  ///@}
+
+  /**
+   * The vector array of the LIC, as the "Surface LIC" representation's
+   * SelectInputVectors (the first three arguments are ignored; a point or a cell array).
+   */
+  void SelectOFBInputVectors(int, int, int, int fieldAssociation, const char* name);
+
+  ///@{
+  /**
+   * vtkOFBLIC's settings: steps each way (default 20), step size in OFB cells (default
+   * 1), noise grain in OFB cells (default 1), the enhanced two-pass LIC (default on),
+   * normalized vectors (default on).
+   */
+  void SetOFBNumberOfSteps(int steps);
+  void SetOFBStepSize(double size);
+  void SetOFBNoiseGrainSize(double size);
+  void SetOFBEnhancedLIC(bool enhanced);
+  void SetOFBNormalizeVectors(bool normalize);
+  ///@}
+
+  ///@{
+  /**
+   * How the LIC combines with the colour (vtkOFBColoring): OFBLICColorMode 0 blend
+   * (default), 1 map; OFBLICIntensity the LIC's share in blend (0..1, default 0.8 here,
+   * as ParaView's Surface LIC, so that the colour map shows under the LIC);
+   * OFBMapModeBias added to the LIC in map (-1..1, default 0).
+   */
+  void SetOFBLICColorMode(int mode);
+  void SetOFBLICIntensity(double intensity);
+  void SetOFBMapModeBias(double bias);
+  ///@}
+
+  ///@{
+  /**
+   * The OFB objects, for tests and scripts that run in the rendering process.
+   */
+  vtkOFBPolyDataMapper* GetOFBMapper() { return this->OFBMapper; }
+  vtkOFBSampler* GetOFBSampler() { return this->Sampler; }
+  vtkOFBLIC* GetOFBLICFilter() { return this->LIC; }
+  ///@}
+
+  /**
+   * Also the paint of a surface without colours of its own (vtkOFBSampler's DefaultColor).
+   */
+  void SetDiffuseColor(double r, double g, double b) override;
+
+protected:
+  vtkOFBSurfaceRepresentation();
+  ~vtkOFBSurfaceRepresentation() override;
+
+  /**
+   * Also keeps the OFB that the input carries (InputOFB), in the process that has the
+   * input.
+   */
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  /**
+   * The superclass's, then the OFB colouring: paint or the colour array through the
+   * lookup table, the LIC, and which OFB (sampler or LIC) the mapper reads.
+   */
+  void UpdateColoringParameters() override;
+
+  ///@{
+  /**
+   * Steps of UpdateColoringParameters: the colour source from the colour array
+   * (UpdateColorSource) and the OFB the mapper reads with the LIC's colouring
+   * (UpdateLICConnection), and the vector field of the sampler and the LIC (UpdateVectors:
+   * the chosen array when the LIC is on and the surface has it; returns whether the LIC
+   * has a field: the chosen array or the active point vectors).
+   */
+  void UpdateColorSource();
+  void UpdateLICConnection();
+  bool UpdateVectors();
+  ///@}
+
+  /**
+   * Number of components of the array `name` of `association` (null: the active point
+   * vectors) in the first dataset of `data` that has it (0 when none).
+   */
+  static int GetNumberOfComponents(vtkDataObject* data, int association, const char* name);
+
+  vtkOFBPolyDataMapper* OFBMapper;
+  vtkOFBSampler* Sampler;
+  vtkOFBLIC* LIC;
+  bool OFBLIC;
+  bool UseInputOFB;
+  vtkSmartPointer<vtkOFB> InputOFB; // the OFB the input carries, if any
+  std::string VectorsName;
+  int VectorsAssociation;
+  std::string SamplerVectors; // the field set on the sampler ("": its default)
+  std::string LICVectors;     // the field set on the LIC ("": its default)
+  bool WarnedNoVectors;       // warned that the LIC has no field, until it has one
+
+private:
+  vtkOFBSurfaceRepresentation(const vtkOFBSurfaceRepresentation&) = delete;
+  void operator=(const vtkOFBSurfaceRepresentation&) = delete;
+};
+
+#endif

@@ -58,6 +58,8 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , Coloring(vtkOFBColoring::New())
   , LightnessRange{ 0.0, 0.0 }
   , UsePaintedNormals(false)
+  , FlowAlignedFiltering(true)
+  , FlowFilterOffset(0.7)
   , LastUploadedSampleCount(0)
   , LastRenderUsedOFB(false)
   , OFBActive(false)
@@ -66,6 +68,7 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , UseNormals(false)
   , DeepCells(false)
   , LevelIntensity(false)
+  , UseFlow(false)
   , IntensityMean(0.5)
   , MeanTime(0)
   , Storage(new vtkStorage)
@@ -238,6 +241,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
   }
   this->ResolveLookupMode();
   this->UpdateAutomaticPyramid();
+  this->SelectFlow(ofb, selection);
   this->CheckSurfaceInFrame(ofb);
   if (!this->UploadOFB(ofb, selection))
   {
@@ -456,7 +460,7 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
     key << this->ResolvedLookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity
         << "|" << this->UseNormals << "|" << this->DeepCells << "|"
         << this->Coloring->GetLICColorMode() << "|" << this->Coloring->GetEnhanceColorContrast()
-        << "|" << this->LevelIntensity;
+        << "|" << this->LevelIntensity << "|" << this->UseFlow;
   }
   if (key.str() != this->ShaderKey)
   {
@@ -548,6 +552,7 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(std::map<vtkShader::Type, vtkShade
       { this->UseNormals, "OFB_USE_NORMALS" },
       { this->DeepCells, "OFB_DEEP_CELLS" },
       { this->LevelIntensity, "OFB_LEVEL_INTENSITY" },
+      { this->UseFlow, "OFB_FLOW_FILTER" },
       { this->Coloring->GetEnhanceColorContrast(), "OFB_ENHANCE_COLOR" } };
     for (const auto& flag : flags)
     {
@@ -681,6 +686,10 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO,
     {
       program->SetUniformf("ofbIntensityMean", static_cast<float>(this->IntensityMean));
     }
+    if (this->UseFlow)
+    {
+      program->SetUniformf("ofbFlowOffset", static_cast<float>(this->FlowFilterOffset));
+    }
   }
   if (coloring->GetEnhanceColorContrast())
   {
@@ -744,6 +753,10 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Coloring:\n";
   this->Coloring->PrintSelf(os, indent.GetNextIndent());
   os << indent << "UsePaintedNormals: " << (this->UsePaintedNormals ? "On" : "Off") << "\n";
+  os << indent << "FlowAlignedFiltering: " << (this->FlowAlignedFiltering ? "On" : "Off") << "\n";
+  os << indent << "FlowFilterOffset: " << this->FlowFilterOffset << " cells\n";
+  os << indent << "FlowArrayName: \"" << this->FlowArrayName << "\"\n";
+  os << indent << "ResolvedFlowArrayName: \"" << this->ResolvedFlowArrayName << "\"\n";
   os << indent << "LastUploadedSampleCount: " << this->LastUploadedSampleCount << "\n";
   os << indent << "LastRenderUsedOFB: " << (this->LastRenderUsedOFB ? "true" : "false") << "\n";
   os << indent << "GPUMemorySize: " << this->Storage->GetMemorySize() << " bytes\n";

@@ -1,5 +1,6 @@
-// vtkOFBPolyDataMapper's pyramid levels: the vtkOFBLICPyramid of the Automatic lookup, and
-// the mean intensity that the blend of levels computed on their own samples keeps.
+// vtkOFBPolyDataMapper's LIC display: the vtkOFBLICPyramid of the Automatic lookup, the mean
+// intensity that the blend of levels computed on their own samples keeps, and the field of
+// the flow-aligned filter.
 #include "vtkOFBPolyDataMapper.h"
 
 #include "vtkDataArray.h"
@@ -12,6 +13,8 @@
 #include "vtkOFBShaderStorage.h"
 #include "vtkOpenGLRenderWindow.h" // for vtkOFBShaderStorage's weak pointers
 #include "vtkPointData.h"
+
+#include "vtkInformation.h"
 
 #include <algorithm>
 
@@ -79,4 +82,61 @@ void vtkOFBPolyDataMapper::UpdateLevelIntensity(vtkOFB* ofb)
   this->IntensityMean = n > 0 ? sum / n : 0.5;
   this->MeanArray = array;
   this->MeanTime = array->GetMTime();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBPolyDataMapper::SelectFlow(vtkOFB* ofb, vtkSelection& selection)
+{
+  selection.FlowName.clear();
+  this->UseFlow = false;
+  this->ResolvedFlowArrayName.clear();
+  if (!this->FlowAlignedFiltering || !this->UseIntensity ||
+    this->ResolvedLookupMode != LOOKUP_SMOOTH || !(this->FlowFilterOffset > 0.0))
+  {
+    return;
+  }
+  vtkPointData* sd = ofb->GetSampleData();
+  vtkDataArray* field = nullptr;
+  if (!this->FlowArrayName.empty())
+  {
+    field = sd->GetArray(this->FlowArrayName.c_str());
+  }
+  else
+  {
+    // The field of the LIC the OFB comes from (its input array to process), else the
+    // active vectors (vtkOFBLIC's default field).
+    vtkOFBLIC* lic = this->GetNumberOfInputConnections(1) > 0
+      ? vtkOFBLIC::SafeDownCast(this->GetInputAlgorithm(1, 0))
+      : nullptr;
+    if (!lic)
+    {
+      auto* pyramid = vtkOFBLICPyramid::SafeDownCast(this->Storage->GetPyramid());
+      lic = pyramid ? pyramid->GetLIC() : nullptr;
+    }
+    vtkInformation* info = lic ? lic->GetInputArrayInformation(0) : nullptr;
+    if (info && info->Has(vtkDataObject::FIELD_NAME()))
+    {
+      field = sd->GetArray(info->Get(vtkDataObject::FIELD_NAME()));
+    }
+    else if (info && info->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
+    {
+      field = sd->GetAttribute(info->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()));
+    }
+    else
+    {
+      field = sd->GetVectors();
+    }
+  }
+  if (!field || !field->GetName() || field->GetNumberOfComponents() != 3)
+  {
+    return;
+  }
+  selection.FlowName = field->GetName();
+  if (!vtkOFBShaderStorage::GetArray(ofb, vtkOFBShaderStorage::BUFFER_FLOW, selection))
+  {
+    selection.FlowName.clear();
+    return;
+  }
+  this->UseFlow = true;
+  this->ResolvedFlowArrayName = selection.FlowName;
 }

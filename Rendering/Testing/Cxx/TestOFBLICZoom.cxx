@@ -15,6 +15,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBColoring.h"
@@ -45,8 +46,8 @@ constexpr int Resolution = 514; // 512 cells on the unit square
 constexpr int MaxLag = 24;      // pixels of the correlation lengths
 constexpr int Margin = 2;       // pixels left out at the window's sides
 
-// The unit square at z = 0 with a uniform field along `direction` (x: 0, y: 1), its OFB
-// and LIC, and a mapper that shows the LIC alone (LICIntensity 1, lighting off).
+// The unit square at z = 0 with a uniform field at `angle` degrees from x (0: x, 90: y),
+// its OFB and LIC, and a mapper that shows the LIC alone (LICIntensity 1, lighting off).
 struct ZoomScene
 {
   vtkSmartPointer<vtkPolyData> Surface;
@@ -58,8 +59,9 @@ struct ZoomScene
   vtkNew<vtkOFBPolyDataMapper> Mapper;
   vtkOFB* OFB = nullptr;
 
-  explicit ZoomScene(int direction)
+  explicit ZoomScene(double angle)
   {
+    const double radians = vtkMath::RadiansFromDegrees(angle);
     vtkNew<vtkPlaneSource> plane;
     plane->SetOrigin(0.0, 0.0, 0.0);
     plane->SetPoint1(1.0, 0.0, 0.0);
@@ -73,7 +75,7 @@ struct ZoomScene
     field->SetNumberOfTuples(this->Surface->GetNumberOfPoints());
     for (vtkIdType i = 0; i < this->Surface->GetNumberOfPoints(); ++i)
     {
-      field->SetTuple3(i, direction == 0 ? 1.0 : 0.0, direction == 0 ? 0.0 : 1.0, 0.0);
+      field->SetTuple3(i, std::cos(radians), std::sin(radians), 0.0);
     }
     this->Surface->GetPointData()->SetVectors(field);
     this->Sampler->SetInputData(this->Surface);
@@ -199,7 +201,7 @@ void Use(ZoomScene& scene, const Variant& variant)
 
 TEST(OFBLICZoom, StreaksAndNoBlocksAtEveryZoom)
 {
-  ZoomScene scene(0); // the field along x: along the window's rows
+  ZoomScene scene(0.0); // the field along x: along the window's rows
   const double zooms[3] = { 0.25, 1.0, 4.0 };
   for (const Variant& variant : Variants)
   {
@@ -273,7 +275,7 @@ TEST(OFBLICZoom, StreaksAndNoBlocksAtEveryZoom)
 
 TEST(OFBLICZoom, NoLineWhereTheMipmapLevelChanges)
 {
-  ZoomScene scene(1); // the field along y: up the window in the grazing view
+  ZoomScene scene(90.0); // the field along y: up the window in the grazing view
   scene.ViewGrazing();
   scene.Window->Render();
   // The footprint of every pixel (log2 of level-0 cells a pixel, as the shader computes it
@@ -383,7 +385,7 @@ TEST(OFBLICZoom, NoLineWhereTheMipmapLevelChanges)
 
 TEST(OFBLICZoom, AutomaticLookupIsSmoothForALICAndNearestForPaint)
 {
-  ZoomScene scene(0);
+  ZoomScene scene(0.0);
   scene.ViewFlat(0.4, 0.41, 4.0);
   EXPECT_EQ(scene.Mapper->GetLookupMode(), vtkOFBPolyDataMapper::LOOKUP_AUTOMATIC);
   const vtkofbzoom::GreyImage automatic = scene.Render();
@@ -398,4 +400,52 @@ TEST(OFBLICZoom, AutomaticLookupIsSmoothForALICAndNearestForPaint)
   scene.Mapper->GetColoring()->IntensityModulationOff();
   scene.Render();
   EXPECT_EQ(scene.Mapper->GetResolvedLookupMode(), vtkOFBPolyDataMapper::LOOKUP_NEAREST);
+}
+
+TEST(OFBLICZoom, NoBeadsAlongDiagonalStreaks)
+{
+  // Streaks at 45 degrees to the grid, close up: the bilinear interpolation of the Smooth
+  // lookup peaks at each cell centre on a streak and dips between them, a period of one
+  // cell along x and y, so `zoom` diagonal pixel steps along the streak. The second
+  // difference at half that period along the streak (beads), over that across it (the
+  // streaks' own detail at that scale): the flow-aligned filter (the default) keeps it at
+  // most 0.1; without the filter it is larger. The filter must not blur across the streaks:
+  // the correlation length across them stays within 10 % of the unfiltered one.
+  ZoomScene scene(45.0);
+  EXPECT_TRUE(scene.Mapper->GetFlowAlignedFiltering());
+  for (const double zoom : { 4.0, 6.0 })
+  {
+    scene.ViewFlat(0.4, 0.41, zoom);
+    const int half = static_cast<int>(zoom / 2.0);
+    double beads[2];
+    double across[2];
+    for (const bool filter : { false, true })
+    {
+      scene.Mapper->SetFlowAlignedFiltering(filter);
+      const vtkofbzoom::GreyImage image = scene.Render();
+      EXPECT_EQ(std::string(scene.Mapper->GetResolvedFlowArrayName()), filter ? "Field" : "");
+      const double powerAlong = vtkofbzoom::SecondDifferencePower(image, 1, 1, half, Margin);
+      const double powerAcross = vtkofbzoom::SecondDifferencePower(image, 1, -1, half, Margin);
+      beads[filter] = powerAlong / std::max(powerAcross, 1.0e-12);
+      across[filter] = vtkofbzoom::CorrelationLength(image, 1, -1, MaxLag / 2, Margin);
+      const double along = vtkofbzoom::CorrelationLength(image, 1, 1, MaxLag / 2, Margin);
+      std::printf("45 degrees, %.0f px/cell, %-13s: second difference at half the bead period "
+                  "along / across %.4f; autocorrelation along at 1/2, 1, 2, 3 cells "
+                  "%.3f %.3f %.3f %.3f; correlation length along %.2f, across %.2f "
+                  "(diagonal steps)\n",
+        zoom,
+        filter ? "flow filter" : "no filter",
+        beads[filter],
+        vtkofbzoom::Autocorrelation(image, 1, 1, half, Margin),
+        vtkofbzoom::Autocorrelation(image, 1, 1, 2 * half, Margin),
+        vtkofbzoom::Autocorrelation(image, 1, 1, 4 * half, Margin),
+        vtkofbzoom::Autocorrelation(image, 1, 1, 6 * half, Margin),
+        along,
+        across[filter]);
+      EXPECT_GE(along / std::max(across[filter], 0.5), 3.0);
+    }
+    EXPECT_GT(beads[0], 0.1) << "the measure does not see the beads of the unfiltered display";
+    EXPECT_LE(beads[1], 0.1) << "beads along diagonal streaks at " << zoom << " px a cell";
+    EXPECT_LE(across[1], 1.1 * across[0]) << "the flow filter blurs across the streaks";
+  }
 }

@@ -38,13 +38,15 @@
  *
  * - Smooth: interpolation along the surface where a level-0 cell covers a pixel or more,
  *   and the two pyramid levels around the footprint blended where cells are smaller than
- *   pixels (the blend of Mipmapped, so no line where the level changes). In each level the
- *   samples within min(InterpolationRadius, 1.5) cells in the 3x3 cells around the point
- *   of all three grids are weighted by the smooth compact kernel (1 - t^2/r^2)^2 of their
- *   distance t and by their agreement with the fragment's tangent plane (full within half a
+ *   pixels (the blend of Mipmapped, so no line where the level changes). In each level and
+ *   each of the three grids, the samples of the 2x2 cells nearest to the point are weighted
+ *   by the tents of their in-plane offsets (bilinear where the surface lies in one grid's
+ *   region) and by their agreement with the fragment's tangent plane (full within half a
  *   cell of it, none from one cell: the other side of a thin sheet does not bleed through).
  *   The weights are continuous, so the colour is continuous across cell borders and grid
- *   changes: close-ups show no cell blocks. The lookup to use for a LIC (with a
+ *   changes: close-ups show no cell blocks. Close up, a LIC is also averaged along its flow
+ *   (FlowAlignedFiltering), which removes the beads that bilinear interpolation makes of
+ *   streaks at an angle to the grid. The lookup to use for a LIC (with a
  *   vtkOFBLICPyramid from OFB::FlowPaths as the pyramid, SetPyramid, streaks stay at every
  *   zoom instead of fading to grey). Where the pyramid computes the intensity on every
  *   level (vtkOFBPyramid::IsComputedArray), the levels are independent textures, whose

@@ -136,6 +136,48 @@ inline double SecondDifferencePower(const GreyImage& image, int di, int dj, int 
   return n ? sum / n : 0.0;
 }
 
+/// The image at (x, y) in pixel units (pixel centres at whole numbers), bilinear.
+inline double Bilinear(const GreyImage& image, double x, double y)
+{
+  const int i = static_cast<int>(std::floor(x));
+  const int j = static_cast<int>(std::floor(y));
+  const double fx = x - i;
+  const double fy = y - j;
+  const int i1 = std::min(i + 1, image.Width - 1);
+  const int j1 = std::min(j + 1, image.Height - 1);
+  return (1.0 - fy) * ((1.0 - fx) * image.At(i, j) + fx * image.At(i1, j)) +
+    fy * ((1.0 - fx) * image.At(i, j1) + fx * image.At(i1, j1));
+}
+
+/// The roughness of the image along the unit direction (dx, dy): the sum over lags
+/// h = 1..maxLag pixels of the mean square of I(p) - (I(p - h d) + I(p + h d)) / 2 (the
+/// image read bilinearly between pixels), over the pixels p whose reads stay `margin`
+/// from the sides. Along a streak it sees any modulation of a period up to 2 maxLag
+/// pixels (beads), which a streak smooth along its length does not have; across it, the
+/// streaks themselves.
+inline double Roughness(const GreyImage& image, double dx, double dy, int maxLag, int margin)
+{
+  double total = 0.0;
+  const int reach = margin + maxLag + 1;
+  for (int h = 1; h <= maxLag; ++h)
+  {
+    double sum = 0.0;
+    long n = 0;
+    for (int j = reach; j < image.Height - reach; ++j)
+    {
+      for (int i = reach; i < image.Width - reach; ++i)
+      {
+        const double d = image.At(i, j) -
+          0.5 * (Bilinear(image, i - h * dx, j - h * dy) + Bilinear(image, i + h * dx, j + h * dy));
+        sum += d * d;
+        ++n;
+      }
+    }
+    total += n ? sum / n : 0.0;
+  }
+  return total;
+}
+
 /// The normalised autocorrelation at lag `lag` along the pixel step (di, dj), over the
 /// pixels at least `margin` from the sides.
 inline double Autocorrelation(const GreyImage& image, int di, int dj, int lag, int margin)

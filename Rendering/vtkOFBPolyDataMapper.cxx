@@ -59,7 +59,7 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , LightnessRange{ 0.0, 0.0 }
   , UsePaintedNormals(false)
   , FlowAlignedFiltering(true)
-  , FlowFilterOffset(0.7)
+  , MaximumFlowFilterOffset(2.0)
   , LastUploadedSampleCount(0)
   , LastRenderUsedOFB(false)
   , OFBActive(false)
@@ -688,7 +688,7 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO,
     }
     if (this->UseFlow)
     {
-      program->SetUniformf("ofbFlowOffset", static_cast<float>(this->FlowFilterOffset));
+      program->SetUniformf("ofbFlowOffsetMax", static_cast<float>(this->MaximumFlowFilterOffset));
     }
   }
   if (coloring->GetEnhanceColorContrast())
@@ -754,7 +754,7 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Coloring->PrintSelf(os, indent.GetNextIndent());
   os << indent << "UsePaintedNormals: " << (this->UsePaintedNormals ? "On" : "Off") << "\n";
   os << indent << "FlowAlignedFiltering: " << (this->FlowAlignedFiltering ? "On" : "Off") << "\n";
-  os << indent << "FlowFilterOffset: " << this->FlowFilterOffset << " cells\n";
+  os << indent << "MaximumFlowFilterOffset: " << this->MaximumFlowFilterOffset << " cells\n";
   os << indent << "FlowArrayName: \"" << this->FlowArrayName << "\"\n";
   os << indent << "ResolvedFlowArrayName: \"" << this->ResolvedFlowArrayName << "\"\n";
   os << indent << "LastUploadedSampleCount: " << this->LastUploadedSampleCount << "\n";

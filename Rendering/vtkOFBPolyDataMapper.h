@@ -275,15 +275,17 @@ public:
    * it, with an intensity). The bilinear interpolation of the Smooth lookup, applied to
    * streaks one cell wide that run at an angle to the grid, peaks at each cell centre on
    * the streak and dips between them: where a cell covers several pixels, the streaks
-   * show as chains of beads. With FlowAlignedFiltering on (default), the intensity is
-   * averaged along the flow, with weights 1/4, 1/2, 1/4 at -FlowFilterOffset, 0 and
-   * +FlowFilterOffset cells (default 0.7: half the bead period of a diagonal streak, which
-   * the average cancels), the direction being the vector field the LIC follows,
-   * interpolated like the intensity and projected onto the fragment's tangent plane. It
-   * leaves the intensity across the streaks as it is, and it fades out where the
-   * neighbouring directions disagree (about a critical point). It acts where a level-0
-   * cell covers more than a pixel, in full from two pixels a cell, so that far views cost
-   * nothing more; close up, it costs two more Smooth lookups a fragment.
+   * show as chains of beads (a period of 1.41 cells on a diagonal), and streaks near an
+   * axis as stair steps (1 / sin of the angle). With FlowAlignedFiltering on (default),
+   * the intensity is averaged along the flow, with weights 1/4, 1/2, 1/4 at -h, 0 and +h
+   * cells, h being half that period, which the average cancels (0.71 on a diagonal, 1 at
+   * 30 degrees), at most MaximumFlowFilterOffset (default 2 cells, reached below 14.5
+   * degrees). The direction is that of the vector field the LIC follows, interpolated like
+   * the intensity and projected onto the fragment's tangent plane. The filter leaves the
+   * intensity across the streaks as it is, and fades out where the neighbouring directions
+   * disagree (about a critical point). It acts where a level-0 cell covers about a pixel or
+   * more (in full from 1.4 pixels a cell, none below 0.7), so that far views cost nothing
+   * more; close up, it costs two more Smooth lookups a fragment.
    *
    * The field: the sample array FlowArrayName of the OFB when set (default empty), else
    * the field of the vtkOFBLIC that the OFB comes from (connected with SetOFBConnection,
@@ -294,8 +296,8 @@ public:
   vtkSetMacro(FlowAlignedFiltering, bool);
   vtkGetMacro(FlowAlignedFiltering, bool);
   vtkBooleanMacro(FlowAlignedFiltering, bool);
-  vtkSetClampMacro(FlowFilterOffset, double, 0.0, 2.0);
-  vtkGetMacro(FlowFilterOffset, double);
+  vtkSetClampMacro(MaximumFlowFilterOffset, double, 0.0, 4.0);
+  vtkGetMacro(MaximumFlowFilterOffset, double);
   vtkSetStdStringFromCharMacro(FlowArrayName);
   vtkGetCharFromStdStringMacro(FlowArrayName);
   /// The field array the last render filtered along ("" when it did not).
@@ -501,7 +503,7 @@ protected:
   vtkTimeStamp LightnessTime; // when it was computed
   bool UsePaintedNormals;
   bool FlowAlignedFiltering;
-  double FlowFilterOffset;
+  double MaximumFlowFilterOffset;
   std::string FlowArrayName;
   std::string ResolvedFlowArrayName;
 

@@ -91,7 +91,7 @@ void vtkOFBPolyDataMapper::SelectFlow(vtkOFB* ofb, vtkSelection& selection)
   this->UseFlow = false;
   this->ResolvedFlowArrayName.clear();
   if (!this->FlowAlignedFiltering || !this->UseIntensity ||
-    this->ResolvedLookupMode != LOOKUP_SMOOTH || !(this->FlowFilterOffset > 0.0))
+    this->ResolvedLookupMode != LOOKUP_SMOOTH || !(this->MaximumFlowFilterOffset > 0.0))
   {
     return;
   }

@@ -69,7 +69,7 @@ uniform float ofbIntensityMean;   // the mean of level 0's intensity
 #endif
 #ifdef OFB_FLOW_FILTER
 layout(std430) readonly buffer ofbFlowBlock { uint ofbFlow[]; };
-uniform float ofbFlowOffset; // cells along the flow of the two side lookups (0.7)
+uniform float ofbFlowOffsetMax; // the longest offset of the side lookups, in cells (2)
 #endif
 #ifdef OFB_ENHANCE_COLOR
 uniform vec2 ofbLightnessStretch; // x: low end m, y: 1 / (M - m), 0: none
@@ -431,12 +431,17 @@ ofbAccum ofbLookupSmooth(int L, vec3 g, vec3 n, bool flow)
 #ifdef OFB_FLOW_FILTER
 // The flow-aligned filter of a LIC close up (level 0): the intensity of `acc` (the Smooth
 // lookup at g, with its flow) replaced by the average of the Smooth lookups at g - d, g and
-// g + d with weights 1/4, 1/2, 1/4, d being ofbFlowOffset cells along the flow projected
-// onto the tangent plane (normal n). The bilinear interpolation of a streak that runs at an
-// angle to the grid beads along it (a period of 1.41 cells on a diagonal); the average
-// cancels a period of 2 |d| and damps the others, along the flow only. `strength` in
-// [0, 1] blends it in; it fades out where the flow directions around g disagree (their
-// mean is short: about a critical point).
+// g + d with weights 1/4, 1/2, 1/4, d along the flow projected onto the tangent plane
+// (normal n). The bilinear interpolation of a streak at an angle to the grid modulates it
+// along its length: a unit step along the streak (tangent t) crosses |t_u| and |t_v| cells
+// of the grid plane (u, v) of the samples, so the modulation has periods 1 / |t_u| and
+// 1 / |t_v| (beads of 1.41 cells on a diagonal, stair steps of 1 / sin of the angle near
+// an axis), the longer one the stronger. The average cancels a period of 2 |d|: |d| is
+// half the longer period, 0.5 / min(|t_u|, |t_v|), at most ofbFlowOffsetMax, blended over
+// the three grids by the normal (so that it is continuous where the grid changes). Along
+// the flow only, the streaks' profile across is kept. `strength` in [0, 1] blends it in;
+// it fades out where the flow directions around g disagree (their mean is short: about a
+// critical point).
 ofbAccum ofbFlowFilter(ofbAccum acc, vec3 g, vec3 n, float strength)
 {
   if (!(acc.weight > 0.0))
@@ -453,7 +458,15 @@ ofbAccum ofbFlowFilter(ofbAccum acc, vec3 g, vec3 n, float strength)
   {
     return acc;
   }
-  vec3 d = t * (ofbFlowOffset / coherence);
+  vec3 at = abs(t) / coherence;
+  // The shorter in-plane component of each grid (X: y z, Y: z x, Z: x y), weighted by how
+  // much each grid holds the surface here.
+  vec3 shortest = vec3(min(at.y, at.z), min(at.z, at.x), min(at.x, at.y));
+  vec3 halfPeriod = min(vec3(0.5) / max(shortest, vec3(1.0e-3)), vec3(ofbFlowOffsetMax));
+  vec3 an2 = nn * nn;
+  vec3 share = an2 * an2;
+  float offset = dot(share, halfPeriod) / max(dot(share, vec3(1.0)), 1.0e-6);
+  vec3 d = t * (offset / coherence);
   ofbAccum ahead = ofbLookupSmooth(0, g + d, n, false);
   ofbAccum behind = ofbLookupSmooth(0, g - d, n, false);
   float centre = acc.intensity / acc.weight;
@@ -498,16 +511,20 @@ ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
   int l0 = int(floor(level));
   int l1 = min(l0 + 1, ofbNumberOfLevels - 1);
   float t = level - float(l0);
+  ofbAccum a0;
 #if OFB_LOOKUP_MODE == OFB_LOOKUP_SMOOTH && defined(OFB_FLOW_FILTER)
-  // Close up (a level-0 cell over more than a pixel; in full from two pixels a cell): the
-  // flow-aligned filter. Far views skip it (lod >= 0 in every fragment of a group).
-  if (lod < 0.0 && lod + ofbMipmapBias <= 0.0)
+  // Close up, the flow-aligned filter on level 0: in full where a level-0 cell covers 1.4
+  // pixels or more, fading out to none at 0.7 pixels. Far views skip it (every fragment of
+  // a group above).
+  if (l0 == 0 && lod < 0.5)
   {
-    ofbAccum near = ofbLookupSmooth(0, g0, n, true);
-    return ofbFlowFilter(near, g0, n, clamp(-lod, 0.0, 1.0));
+    a0 = ofbFlowFilter(ofbLookupSmooth(0, g0, n, true), g0, n, clamp(0.5 - lod, 0.0, 1.0));
   }
+  else
 #endif
-  ofbAccum a0 = ofbLookupLevel(l0, ofbLevelPosition(l0, g0), n);
+  {
+    a0 = ofbLookupLevel(l0, ofbLevelPosition(l0, g0), n);
+  }
   if (t <= 0.0 || l1 == l0)
   {
     return a0;

@@ -405,16 +405,16 @@ TEST(OFBLICZoom, AutomaticLookupIsSmoothForALICAndNearestForPaint)
 TEST(OFBLICZoom, NoBeadsAlongDiagonalStreaks)
 {
   // Streaks at an angle to the grid, close up: the bilinear interpolation of the Smooth
-  // lookup peaks at each cell centre on a streak and dips between them (a period of one
-  // cell along x and y on a diagonal). The roughness along the streaks (the second
-  // difference at lags of 1 pixel to a cell, vtkofbzoom::Roughness) over that across
-  // them (the streaks' own detail): at 45 degrees, the flow-aligned filter (the default)
-  // keeps it at most 0.05; without the filter it is larger. The filter must not blur
-  // across the streaks: at 45 and 0 degrees the roughness across them stays within 10 %
-  // of the unfiltered one. At every angle the filter must not make the streaks rougher
-  // along. (The streaks of a uniform field are straight along it, so an average along the
-  // field changes only what varies along them: at 15 and 30 degrees it also removes the
-  // stair steps of the interpolation, which the roughness across counts too.)
+  // lookup modulates them along their length (beads of one cell along x and y on a
+  // diagonal, stair steps near an axis). The roughness along the streaks (the second
+  // difference at lags of 1 pixel to a cell, vtkofbzoom::Roughness) over that across them
+  // (the streaks' own detail), at 45, 30 and 15 degrees, 4 and 6 pixels a cell: the
+  // flow-aligned filter (the default) keeps it at most 0.05; without the filter it is
+  // larger (the measure sees the defect). The filter must not blur across the streaks: at
+  // 45 and 0 degrees the roughness across them stays within 10 % of the unfiltered one.
+  // (The streaks of a uniform field are straight along it, so an average along the field
+  // changes only what varies along them: at 15 and 30 degrees it also removes the stair
+  // steps, which the roughness across counts too.) At 0 degrees nothing is to be removed.
   for (const double angle : { 45.0, 30.0, 15.0, 0.0 })
   {
     ZoomScene scene(angle);
@@ -450,10 +450,11 @@ TEST(OFBLICZoom, NoBeadsAlongDiagonalStreaks)
         EXPECT_GE(across[1], 0.9 * across[0])
           << "the flow filter blurs across the streaks at " << angle << " degrees";
       }
-      if (angle == 45.0)
+      if (angle > 0.0)
       {
         EXPECT_GT(beads[0], 0.05) << "the measure does not see the beads without the filter";
-        EXPECT_LE(beads[1], 0.05) << "beads along diagonal streaks at " << zoom << " px a cell";
+        EXPECT_LE(beads[1], 0.05) << "beads along streaks at " << angle << " degrees, " << zoom
+                                  << " px a cell";
       }
     }
   }

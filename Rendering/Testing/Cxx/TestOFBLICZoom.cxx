@@ -36,6 +36,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -457,5 +458,45 @@ TEST(OFBLICZoom, NoBeadsAlongDiagonalStreaks)
                                   << " px a cell";
       }
     }
+  }
+}
+
+TEST(OFBLICZoom, FlowFilterFieldChoice)
+{
+  // The field of the flow-aligned filter: the LIC's (here the active vectors "Field"),
+  // else FlowArrayName; a missing or 1-component array, another lookup or no intensity
+  // turn the filter off without an error, and the surface still renders from the OFB.
+  ZoomScene scene(45.0);
+  scene.ViewFlat(0.4, 0.41, 4.0);
+  scene.Render();
+  EXPECT_STREQ(scene.Mapper->GetResolvedFlowArrayName(), "Field");
+  const vtkofbzoom::GreyImage filtered = scene.Render();
+  scene.Mapper->SetFlowArrayName("LIC"); // one component
+  scene.Render();
+  EXPECT_STREQ(scene.Mapper->GetResolvedFlowArrayName(), "");
+  scene.Mapper->SetFlowArrayName("NoSuchArray");
+  const vtkofbzoom::GreyImage unfiltered = scene.Render();
+  EXPECT_STREQ(scene.Mapper->GetResolvedFlowArrayName(), "");
+  EXPECT_NE(filtered.Values, unfiltered.Values);
+  scene.Mapper->SetFlowArrayName("Field");
+  EXPECT_EQ(scene.Render().Values, filtered.Values);
+  EXPECT_STREQ(scene.Mapper->GetResolvedFlowArrayName(), "Field");
+  scene.Mapper->SetMaximumFlowFilterOffset(-1.0); // clamped to 0: off
+  EXPECT_EQ(scene.Mapper->GetMaximumFlowFilterOffset(), 0.0);
+  EXPECT_EQ(scene.Render().Values, unfiltered.Values);
+  scene.Mapper->SetMaximumFlowFilterOffset(2.0);
+  scene.Mapper->SetLookupModeToNearest();
+  scene.Render();
+  EXPECT_STREQ(scene.Mapper->GetResolvedFlowArrayName(), "");
+  scene.Mapper->SetLookupModeToAutomatic();
+  scene.Mapper->GetColoring()->IntensityModulationOff();
+  scene.Render();
+  EXPECT_STREQ(scene.Mapper->GetResolvedFlowArrayName(), "");
+  std::ostringstream printed;
+  scene.Mapper->Print(printed);
+  for (const char* setting :
+    { "FlowAlignedFiltering: On", "MaximumFlowFilterOffset: 2", "FlowArrayName: \"Field\"" })
+  {
+    EXPECT_NE(printed.str().find(setting), std::string::npos) << setting;
   }
 }

@@ -69,6 +69,7 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , DeepCells(false)
   , LevelIntensity(false)
   , UseFlow(false)
+  , FlowInView(false)
   , IntensityMean(0.5)
   , MeanTime(0)
   , Storage(new vtkStorage)
@@ -217,6 +218,7 @@ void vtkOFBPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 {
   this->OFBActive = this->PrepareOFB(ren);
   this->LastRenderUsedOFB = this->OFBActive;
+  this->FlowInView = this->OFBActive && this->UseFlow && this->FlowFilterInView(ren, act);
   this->UpdateShaderKey();
   if (this->OFBActive)
   {
@@ -460,7 +462,7 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
     key << this->ResolvedLookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity
         << "|" << this->UseNormals << "|" << this->DeepCells << "|"
         << this->Coloring->GetLICColorMode() << "|" << this->Coloring->GetEnhanceColorContrast()
-        << "|" << this->LevelIntensity << "|" << this->UseFlow;
+        << "|" << this->LevelIntensity << "|" << this->FlowInView;
   }
   if (key.str() != this->ShaderKey)
   {
@@ -552,7 +554,7 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(std::map<vtkShader::Type, vtkShade
       { this->UseNormals, "OFB_USE_NORMALS" },
       { this->DeepCells, "OFB_DEEP_CELLS" },
       { this->LevelIntensity, "OFB_LEVEL_INTENSITY" },
-      { this->UseFlow, "OFB_FLOW_FILTER" },
+      { this->FlowInView, "OFB_FLOW_FILTER" },
       { this->Coloring->GetEnhanceColorContrast(), "OFB_ENHANCE_COLOR" } };
     for (const auto& flag : flags)
     {
@@ -686,7 +688,7 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO,
     {
       program->SetUniformf("ofbIntensityMean", static_cast<float>(this->IntensityMean));
     }
-    if (this->UseFlow)
+    if (this->FlowInView)
     {
       program->SetUniformf("ofbFlowOffsetMax", static_cast<float>(this->MaximumFlowFilterOffset));
     }

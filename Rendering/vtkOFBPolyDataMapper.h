@@ -284,8 +284,10 @@ public:
    * the intensity and projected onto the fragment's tangent plane. The filter leaves the
    * intensity across the streaks as it is, and fades out where the neighbouring directions
    * disagree (about a critical point). It acts where a level-0 cell covers about a pixel or
-   * more (in full from 1.4 pixels a cell, none below 0.7), so that far views cost nothing
-   * more; close up, it costs two more Smooth lookups a fragment.
+   * more (in full from 1.4 pixels a cell, none below 0.7); where no cell of the surface
+   * can cover 0.7 pixels (the footprint at its bounds' point nearest to the camera), the
+   * shader without the filter is used, so that far views cost nothing more. Close up, it
+   * costs two more Smooth lookups a fragment.
    *
    * The field: the sample array FlowArrayName of the OFB when set (default empty), else
    * the field of the vtkOFBLIC that the OFB comes from (connected with SetOFBConnection,
@@ -300,7 +302,8 @@ public:
   vtkGetMacro(MaximumFlowFilterOffset, double);
   vtkSetStdStringFromCharMacro(FlowArrayName);
   vtkGetCharFromStdStringMacro(FlowArrayName);
-  /// The field array the last render filtered along ("" when it did not).
+  /// The field array of the last render's filter ("" when it had none; from far, where no
+  /// cell covers 0.7 pixels, it is not run).
   const char* GetResolvedFlowArrayName() { return this->ResolvedFlowArrayName.c_str(); }
   ///@}
 
@@ -468,6 +471,11 @@ protected:
   /// The field of the flow-aligned filter (FlowAlignedFiltering): its array name in
   /// selection.FlowName, empty where the filter is off or there is no field.
   void SelectFlow(vtkOFB* ofb, vtkSelection& selection);
+  /// Whether a level-0 cell of the surface may cover 0.7 pixels or more somewhere in the
+  /// view (the footprint at the point of its bounds nearest to the camera): the shader
+  /// with the flow-aligned filter is used then, the one without it otherwise, so that far
+  /// views do not run its code.
+  bool FlowFilterInView(vtkRenderer* ren, vtkActor* act);
   /// Whether the pyramid computes the intensity on every level (LevelIntensity), and the
   /// mean of level 0's intensity (IntensityMean), computed again when the array changes.
   void UpdateLevelIntensity(vtkOFB* ofb);
@@ -517,7 +525,8 @@ protected:
   bool UseNormals;
   bool DeepCells;
   bool LevelIntensity;
-  bool UseFlow;
+  bool UseFlow;    // the flow buffer is uploaded
+  bool FlowInView; // the shader filters along the flow
   double IntensityMean;
   vtkWeakPointer<vtkDataArray> MeanArray; // the array IntensityMean is of, and when
   vtkMTimeType MeanTime;

@@ -14,9 +14,15 @@
 #include "vtkOpenGLRenderWindow.h" // for vtkOFBShaderStorage's weak pointers
 #include "vtkPointData.h"
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkRenderer.h"
 
 #include <algorithm>
+#include <cmath>
 
 //------------------------------------------------------------------------------
 void vtkOFBPolyDataMapper::UpdateAutomaticPyramid()
@@ -139,4 +145,52 @@ void vtkOFBPolyDataMapper::SelectFlow(vtkOFB* ofb, vtkSelection& selection)
   }
   this->UseFlow = true;
   this->ResolvedFlowArrayName = selection.FlowName;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPolyDataMapper::FlowFilterInView(vtkRenderer* ren, vtkActor* act)
+{
+  vtkOFB* ofb = this->Storage->GetUploadedOFB();
+  vtkCamera* camera = ren ? ren->GetActiveCamera() : nullptr;
+  const int* size = ren ? ren->GetSize() : nullptr;
+  if (!ofb || !camera || !act || !size || size[1] <= 0)
+  {
+    return true;
+  }
+  // A level-0 cell in world units (the actor's largest scale).
+  double scale = 1.0;
+  if (!act->GetIsIdentity())
+  {
+    vtkMatrix4x4* m = act->GetMatrix();
+    scale = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      scale = std::max(scale,
+        std::sqrt(m->GetElement(0, c) * m->GetElement(0, c) +
+          m->GetElement(1, c) * m->GetElement(1, c) + m->GetElement(2, c) * m->GetElement(2, c)));
+    }
+  }
+  const double cell = ofb->GetCellSize() * scale;
+  // The smallest world size of a pixel on the surface: at the bounds' nearest point.
+  double perPixel = 0.0;
+  if (camera->GetParallelProjection())
+  {
+    perPixel = 2.0 * camera->GetParallelScale() / size[1];
+  }
+  else
+  {
+    const double* b = act->GetBounds();
+    const double* eye = camera->GetPosition();
+    double d2 = 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      const double out = std::max({ b[2 * i] - eye[i], eye[i] - b[2 * i + 1], 0.0 });
+      d2 += out * out;
+    }
+    const double distance = std::max(std::sqrt(d2), camera->GetClippingRange()[0]);
+    perPixel = 2.0 * distance *
+      std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle())) / size[1];
+  }
+  // The shader filters where log2(cells a pixel) < 0.5 (and level 0 is read).
+  return !(cell > 0.0) || !(perPixel > 0.0) || std::log2(perPixel / cell) < 0.5;
 }

@@ -467,12 +467,14 @@ ofbAccum ofbFlowFilter(ofbAccum acc, vec3 g, vec3 n, float strength)
   vec3 share = an2 * an2;
   float offset = dot(share, halfPeriod) / max(dot(share, vec3(1.0)), 1.0e-6);
   vec3 d = t * (offset / coherence);
-  ofbAccum ahead = ofbLookupSmooth(0, g + d, n, false);
-  ofbAccum behind = ofbLookupSmooth(0, g - d, n, false);
   float centre = acc.intensity / acc.weight;
-  float a = ahead.weight > 0.0 ? ahead.intensity / ahead.weight : centre;
-  float b = behind.weight > 0.0 ? behind.intensity / behind.weight : centre;
-  float filtered = 0.5 * centre + 0.25 * (a + b);
+  float filtered = 0.5 * centre;
+  // One loop over the two sides: one copy of the lookup in the compiled shader.
+  for (int side = 0; side < 2; ++side)
+  {
+    ofbAccum s = ofbLookupSmooth(0, side == 0 ? g + d : g - d, n, false);
+    filtered += 0.25 * (s.weight > 0.0 ? s.intensity / s.weight : centre);
+  }
   acc.intensity = mix(centre, filtered, k) * acc.weight;
   return acc;
 }
@@ -511,20 +513,19 @@ ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
   int l0 = int(floor(level));
   int l1 = min(l0 + 1, ofbNumberOfLevels - 1);
   float t = level - float(l0);
-  ofbAccum a0;
 #if OFB_LOOKUP_MODE == OFB_LOOKUP_SMOOTH && defined(OFB_FLOW_FILTER)
   // Close up, the flow-aligned filter on level 0: in full where a level-0 cell covers 1.4
   // pixels or more, fading out to none at 0.7 pixels. Far views skip it (every fragment of
   // a group above).
-  if (l0 == 0 && lod < 0.5)
+  bool flow = l0 == 0 && lod < 0.5;
+  ofbAccum a0 = ofbLookupSmooth(l0, ofbLevelPosition(l0, g0), n, flow);
+  if (flow)
   {
-    a0 = ofbFlowFilter(ofbLookupSmooth(0, g0, n, true), g0, n, clamp(0.5 - lod, 0.0, 1.0));
+    a0 = ofbFlowFilter(a0, g0, n, clamp(0.5 - lod, 0.0, 1.0));
   }
-  else
+#else
+  ofbAccum a0 = ofbLookupLevel(l0, ofbLevelPosition(l0, g0), n);
 #endif
-  {
-    a0 = ofbLookupLevel(l0, ofbLevelPosition(l0, g0), n);
-  }
   if (t <= 0.0 || l1 == l0)
   {
     return a0;

@@ -492,6 +492,13 @@ TEST(OFBLICZoom, FlowFilterFieldChoice)
   scene.Mapper->GetColoring()->IntensityModulationOff();
   scene.Render();
   EXPECT_STREQ(scene.Mapper->GetResolvedFlowArrayName(), "");
+  // From far (no cell over 0.7 pixels), the shader without the filter: the same picture.
+  scene.Mapper->GetColoring()->IntensityModulationOn();
+  scene.ViewFlat(0.5, 0.51, 0.25);
+  const vtkofbzoom::GreyImage far = scene.Render();
+  scene.Mapper->FlowAlignedFilteringOff();
+  EXPECT_EQ(scene.Render().Values, far.Values);
+  scene.Mapper->FlowAlignedFilteringOn();
   std::ostringstream printed;
   scene.Mapper->Print(printed);
   for (const char* setting :

@@ -3,7 +3,12 @@
 // the flow-aligned filter.
 #include "vtkOFBPolyDataMapper.h"
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkOFB.h"
 #include "vtkOFBColoring.h"
 #include "vtkOFBLIC.h"
@@ -13,12 +18,6 @@
 #include "vtkOFBShaderStorage.h"
 #include "vtkOpenGLRenderWindow.h" // for vtkOFBShaderStorage's weak pointers
 #include "vtkPointData.h"
-
-#include "vtkActor.h"
-#include "vtkCamera.h"
-#include "vtkInformation.h"
-#include "vtkMath.h"
-#include "vtkMatrix4x4.h"
 #include "vtkRenderer.h"
 
 #include <algorithm>

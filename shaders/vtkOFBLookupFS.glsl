@@ -515,8 +515,8 @@ ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
   float t = level - float(l0);
 #if OFB_LOOKUP_MODE == OFB_LOOKUP_SMOOTH && defined(OFB_FLOW_FILTER)
   // Close up, the flow-aligned filter on level 0: in full where a level-0 cell covers 1.4
-  // pixels or more, fading out to none at 0.7 pixels. Far views skip it (every fragment of
-  // a group above).
+  // pixels or more, fading out to none at 0.7 pixels. Views where no cell covers 0.7
+  // pixels use the shader without it (vtkOFBPolyDataMapper::FlowFilterInView).
   bool flow = l0 == 0 && lod < 0.5;
   ofbAccum a0 = ofbLookupSmooth(l0, ofbLevelPosition(l0, g0), n, flow);
   if (flow)

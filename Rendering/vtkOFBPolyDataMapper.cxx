@@ -58,6 +58,8 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , Coloring(vtkOFBColoring::New())
   , LightnessRange{ 0.0, 0.0 }
   , UsePaintedNormals(false)
+  , FlowAlignedFiltering(true)
+  , MaximumFlowFilterOffset(2.0)
   , LastUploadedSampleCount(0)
   , LastRenderUsedOFB(false)
   , OFBActive(false)
@@ -66,6 +68,8 @@ vtkOFBPolyDataMapper::vtkOFBPolyDataMapper()
   , UseNormals(false)
   , DeepCells(false)
   , LevelIntensity(false)
+  , UseFlow(false)
+  , FlowInView(false)
   , IntensityMean(0.5)
   , MeanTime(0)
   , Storage(new vtkStorage)
@@ -214,6 +218,7 @@ void vtkOFBPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 {
   this->OFBActive = this->PrepareOFB(ren);
   this->LastRenderUsedOFB = this->OFBActive;
+  this->FlowInView = this->OFBActive && this->UseFlow && this->FlowFilterInView(ren, act);
   this->UpdateShaderKey();
   if (this->OFBActive)
   {
@@ -238,6 +243,7 @@ bool vtkOFBPolyDataMapper::PrepareOFB(vtkRenderer* ren)
   }
   this->ResolveLookupMode();
   this->UpdateAutomaticPyramid();
+  this->SelectFlow(ofb, selection);
   this->CheckSurfaceInFrame(ofb);
   if (!this->UploadOFB(ofb, selection))
   {
@@ -456,7 +462,7 @@ void vtkOFBPolyDataMapper::UpdateShaderKey()
     key << this->ResolvedLookupMode << "|" << this->SourceScalars << "|" << this->UseIntensity
         << "|" << this->UseNormals << "|" << this->DeepCells << "|"
         << this->Coloring->GetLICColorMode() << "|" << this->Coloring->GetEnhanceColorContrast()
-        << "|" << this->LevelIntensity;
+        << "|" << this->LevelIntensity << "|" << this->FlowInView;
   }
   if (key.str() != this->ShaderKey)
   {
@@ -548,6 +554,7 @@ void vtkOFBPolyDataMapper::ReplaceShaderColor(std::map<vtkShader::Type, vtkShade
       { this->UseNormals, "OFB_USE_NORMALS" },
       { this->DeepCells, "OFB_DEEP_CELLS" },
       { this->LevelIntensity, "OFB_LEVEL_INTENSITY" },
+      { this->FlowInView, "OFB_FLOW_FILTER" },
       { this->Coloring->GetEnhanceColorContrast(), "OFB_ENHANCE_COLOR" } };
     for (const auto& flag : flags)
     {
@@ -681,6 +688,10 @@ void vtkOFBPolyDataMapper::SetMapperShaderParameters(vtkOpenGLHelper& cellBO,
     {
       program->SetUniformf("ofbIntensityMean", static_cast<float>(this->IntensityMean));
     }
+    if (this->FlowInView)
+    {
+      program->SetUniformf("ofbFlowOffsetMax", static_cast<float>(this->MaximumFlowFilterOffset));
+    }
   }
   if (coloring->GetEnhanceColorContrast())
   {
@@ -744,6 +755,10 @@ void vtkOFBPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Coloring:\n";
   this->Coloring->PrintSelf(os, indent.GetNextIndent());
   os << indent << "UsePaintedNormals: " << (this->UsePaintedNormals ? "On" : "Off") << "\n";
+  os << indent << "FlowAlignedFiltering: " << (this->FlowAlignedFiltering ? "On" : "Off") << "\n";
+  os << indent << "MaximumFlowFilterOffset: " << this->MaximumFlowFilterOffset << " cells\n";
+  os << indent << "FlowArrayName: \"" << this->FlowArrayName << "\"\n";
+  os << indent << "ResolvedFlowArrayName: \"" << this->ResolvedFlowArrayName << "\"\n";
   os << indent << "LastUploadedSampleCount: " << this->LastUploadedSampleCount << "\n";
   os << indent << "LastRenderUsedOFB: " << (this->LastRenderUsedOFB ? "true" : "false") << "\n";
   os << indent << "GPUMemorySize: " << this->Storage->GetMemorySize() << " bytes\n";

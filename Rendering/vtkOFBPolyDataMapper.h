@@ -38,13 +38,15 @@
  *
  * - Smooth: interpolation along the surface where a level-0 cell covers a pixel or more,
  *   and the two pyramid levels around the footprint blended where cells are smaller than
- *   pixels (the blend of Mipmapped, so no line where the level changes). In each level the
- *   samples within min(InterpolationRadius, 1.5) cells in the 3x3 cells around the point
- *   of all three grids are weighted by the smooth compact kernel (1 - t^2/r^2)^2 of their
- *   distance t and by their agreement with the fragment's tangent plane (full within half a
+ *   pixels (the blend of Mipmapped, so no line where the level changes). In each level and
+ *   each of the three grids, the samples of the 2x2 cells nearest to the point are weighted
+ *   by the tents of their in-plane offsets (bilinear where the surface lies in one grid's
+ *   region) and by their agreement with the fragment's tangent plane (full within half a
  *   cell of it, none from one cell: the other side of a thin sheet does not bleed through).
  *   The weights are continuous, so the colour is continuous across cell borders and grid
- *   changes: close-ups show no cell blocks. The lookup to use for a LIC (with a
+ *   changes: close-ups show no cell blocks. Close up, a LIC is also averaged along its flow
+ *   (FlowAlignedFiltering), which removes the beads that bilinear interpolation makes of
+ *   streaks at an angle to the grid. The lookup to use for a LIC (with a
  *   vtkOFBLICPyramid from OFB::FlowPaths as the pyramid, SetPyramid, streaks stay at every
  *   zoom instead of fading to grey). Where the pyramid computes the intensity on every
  *   level (vtkOFBPyramid::IsComputedArray), the levels are independent textures, whose
@@ -269,6 +271,44 @@ public:
 
   ///@{
   /**
+   * Flow-aligned filter of a LIC shown close up (LOOKUP_SMOOTH, or Automatic resolved to
+   * it, with an intensity). The bilinear interpolation of the Smooth lookup, applied to
+   * streaks one cell wide that run at an angle to the grid, peaks at each cell centre on
+   * the streak and dips between them: where a cell covers several pixels, the streaks
+   * show as chains of beads (a period of 1.41 cells on a diagonal), and streaks near an
+   * axis as stair steps (1 / sin of the angle). With FlowAlignedFiltering on (default),
+   * the intensity is averaged along the flow, with weights 1/4, 1/2, 1/4 at -h, 0 and +h
+   * cells, h being half that period, which the average cancels (0.71 on a diagonal, 1 at
+   * 30 degrees), at most MaximumFlowFilterOffset (default 2 cells, reached below 14.5
+   * degrees). The direction is that of the vector field the LIC follows, interpolated like
+   * the intensity and projected onto the fragment's tangent plane. The filter leaves the
+   * intensity across the streaks as it is, and fades out where the neighbouring directions
+   * disagree (about a critical point). It acts where a level-0 cell covers about a pixel or
+   * more (in full from 1.4 pixels a cell, none below 0.7); where no cell of the surface
+   * can cover 0.7 pixels (the footprint at its bounds' point nearest to the camera), the
+   * shader without the filter is used, so that far views cost nothing more. Close up, it
+   * costs two more Smooth lookups a fragment.
+   *
+   * The field: the sample array FlowArrayName of the OFB when set (default empty), else
+   * the field of the vtkOFBLIC that the OFB comes from (connected with SetOFBConnection,
+   * or the LIC of a vtkOFBLICPyramid given with SetPyramid), else the OFB's active
+   * vectors. Without a 3-component array of that name, no filter. The mapper uploads its
+   * directions, 4 bytes a level-0 sample.
+   */
+  vtkSetMacro(FlowAlignedFiltering, bool);
+  vtkGetMacro(FlowAlignedFiltering, bool);
+  vtkBooleanMacro(FlowAlignedFiltering, bool);
+  vtkSetClampMacro(MaximumFlowFilterOffset, double, 0.0, 4.0);
+  vtkGetMacro(MaximumFlowFilterOffset, double);
+  vtkSetStdStringFromCharMacro(FlowArrayName);
+  vtkGetCharFromStdStringMacro(FlowArrayName);
+  /// The field array of the last render's filter ("" when it had none; from far, where no
+  /// cell covers 0.7 pixels, it is not run).
+  const char* GetResolvedFlowArrayName() { return this->ResolvedFlowArrayName.c_str(); }
+  ///@}
+
+  ///@{
+  /**
    * The colouring of the OFB's samples (default: a vtkOFBColoring of its own): colour
    * source, lookup table and scalar range, intensity (LIC) and how it combines, colour
    * contrast. Shareable with vtkOFBMapToColors and other mappers; a change to it is seen
@@ -428,6 +468,14 @@ protected:
   /// The pyramid of Automatic (AutomaticLevelLIC): a vtkOFBLICPyramid of the OFB's
   /// producer where it is a vtkOFBLIC, else the storage's own.
   void UpdateAutomaticPyramid();
+  /// The field of the flow-aligned filter (FlowAlignedFiltering): its array name in
+  /// selection.FlowName, empty where the filter is off or there is no field.
+  void SelectFlow(vtkOFB* ofb, vtkSelection& selection);
+  /// Whether a level-0 cell of the surface may cover 0.7 pixels or more somewhere in the
+  /// view (the footprint at the point of its bounds nearest to the camera): the shader
+  /// with the flow-aligned filter is used then, the one without it otherwise, so that far
+  /// views do not run its code.
+  bool FlowFilterInView(vtkRenderer* ren, vtkActor* act);
   /// Whether the pyramid computes the intensity on every level (LevelIntensity), and the
   /// mean of level 0's intensity (IntensityMean), computed again when the array changes.
   void UpdateLevelIntensity(vtkOFB* ofb);
@@ -462,6 +510,10 @@ protected:
   double LightnessRange[2];   // of the colours shown, before the stretch
   vtkTimeStamp LightnessTime; // when it was computed
   bool UsePaintedNormals;
+  bool FlowAlignedFiltering;
+  double MaximumFlowFilterOffset;
+  std::string FlowArrayName;
+  std::string ResolvedFlowArrayName;
 
   vtkIdType LastUploadedSampleCount;
   bool LastRenderUsedOFB;
@@ -473,6 +525,8 @@ protected:
   bool UseNormals;
   bool DeepCells;
   bool LevelIntensity;
+  bool UseFlow;    // the flow buffer is uploaded
+  bool FlowInView; // the shader filters along the flow
   double IntensityMean;
   vtkWeakPointer<vtkDataArray> MeanArray; // the array IntensityMean is of, and when
   vtkMTimeType MeanTime;

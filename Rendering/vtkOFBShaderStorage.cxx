@@ -143,7 +143,8 @@ vtkIdType vtkOFBShaderStorage::UploadChanges(const Selection& selection, std::st
   }
   std::ostringstream key;
   key << this->Levels.size() << "|" << selection.Colors << "|" << selection.ScalarName << "|"
-      << selection.ScalarComponent << "|" << selection.IntensityName << "|" << selection.Normals;
+      << selection.ScalarComponent << "|" << selection.IntensityName << "|" << selection.Normals
+      << "|" << selection.FlowName;
   const bool mipmapped = this->Levels.size() > 1;
   const bool full = ofb != this->UploadedOFB || key.str() != this->UploadKey ||
     ofb->GetStructureMTime() > this->UploadTime.GetMTime() ||
@@ -184,10 +185,12 @@ unsigned int vtkOFBShaderStorage::UploadChangedArrays(const Selection& selection
   vtkOFB* ofb = this->Levels[0];
   const vtkIdType n = ofb->GetNumberOfSamples();
   const int base = this->LevelSampleBase.empty() ? 0 : this->LevelSampleBase[0];
-  const int ids[3] = { BUFFER_SAMPLES, BUFFER_INTENSITY, BUFFER_NORMALS };
-  const bool wanted[3] = { true, !selection.IntensityName.empty(), selection.Normals };
+  const int ids[4] = { BUFFER_SAMPLES, BUFFER_INTENSITY, BUFFER_NORMALS, BUFFER_FLOW };
+  const bool wanted[4] = {
+    true, !selection.IntensityName.empty(), selection.Normals, !selection.FlowName.empty()
+  };
   unsigned int whole = 0;
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < 4; ++k)
   {
     vtkDataArray* array = !wanted[k]
       ? nullptr
@@ -224,6 +227,8 @@ void vtkOFBShaderStorage::RecordArrays(const Selection& selection)
     selection.IntensityName.empty() ? nullptr : GetArray(ofb, BUFFER_INTENSITY, selection);
   this->UploadedArrays[BUFFER_NORMALS] =
     selection.Normals ? GetArray(ofb, BUFFER_NORMALS, selection) : nullptr;
+  this->UploadedArrays[BUFFER_FLOW] =
+    selection.FlowName.empty() ? nullptr : GetArray(ofb, BUFFER_FLOW, selection);
 }
 
 //------------------------------------------------------------------------------
@@ -367,9 +372,12 @@ bool vtkOFBShaderStorage::IsSupported(vtkOpenGLRenderWindow* window, std::string
 //------------------------------------------------------------------------------
 const char* vtkOFBShaderStorage::GetBlockName(int id)
 {
-  static const char* names[NUMBER_OF_BUFFERS] = {
-    "ofbOffsetsBlock", "ofbSamplesBlock", "ofbIntensityBlock", "ofbNormalsBlock", "ofbLUTBlock"
-  };
+  static const char* names[NUMBER_OF_BUFFERS] = { "ofbOffsetsBlock",
+    "ofbSamplesBlock",
+    "ofbIntensityBlock",
+    "ofbNormalsBlock",
+    "ofbFlowBlock",
+    "ofbLUTBlock" };
   return (id >= 0 && id < NUMBER_OF_BUFFERS) ? names[id] : "";
 }
 
@@ -427,6 +435,9 @@ vtkDataArray* vtkOFBShaderStorage::FindArray(vtkPointData* pd, int id, const Sel
       {
         array = pd->GetNormals();
       }
+      return (array && array->GetNumberOfComponents() == 3) ? array : nullptr;
+    case BUFFER_FLOW:
+      array = selection.FlowName.empty() ? nullptr : pd->GetArray(selection.FlowName.c_str());
       return (array && array->GetNumberOfComponents() == 3) ? array : nullptr;
     default:
       return nullptr;

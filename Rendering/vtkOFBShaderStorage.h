@@ -14,7 +14,9 @@
  * 32-bit words per sample: the depth, in cells of its level, and the colour attribute next
  * to it, either the paint colour as packed RGBA8 or a scalar as a float, so that one read
  * gives both and they share a cache line), and optional per-sample arrays (intensity as
- * floats, normals as three floats). Each buffer holds the levels one after the other.
+ * a byte, normals as three floats, and of level 0 alone the direction of a vector field,
+ * the flow a LIC follows, as three 10-bit signed components of its unit vector in a word).
+ * Each buffer holds the levels one after the other.
  * Uploads are whole (structure change) or partial (glBufferSubData of modified sample
  * ranges). Buffers are bound to fixed binding points only around a draw and unbound
  * afterwards. All calls need the owning window's context current.
@@ -53,6 +55,7 @@ struct vtkOFBShaderStorageSelection
   int ScalarComponent = 0;   // -1: magnitude
   std::string IntensityName; // the Intensity buffer's array
   bool Normals = false;      // the Normals buffer
+  std::string FlowName;      // the Flow buffer's array (3 components, level 0 only)
 };
 
 class vtkOFBShaderStorage
@@ -64,6 +67,7 @@ public:
     BUFFER_SAMPLES,
     BUFFER_INTENSITY,
     BUFFER_NORMALS,
+    BUFFER_FLOW,
     BUFFER_LUT,
     NUMBER_OF_BUFFERS
   };
@@ -77,8 +81,8 @@ public:
   };
 
   /// Bit masks of the per-sample buffers that hold attributes (UploadRanges).
-  static constexpr unsigned int AllArrays =
-    (1u << BUFFER_SAMPLES) | (1u << BUFFER_INTENSITY) | (1u << BUFFER_NORMALS);
+  static constexpr unsigned int AllArrays = (1u << BUFFER_SAMPLES) | (1u << BUFFER_INTENSITY) |
+    (1u << BUFFER_NORMALS) | (1u << BUFFER_FLOW);
 
   /// Most levels a storage holds (size of the shader's per-level uniform arrays).
   static constexpr int MaximumNumberOfLevels = 16;
@@ -232,6 +236,7 @@ private:
   void Upload(int id, size_t offset, size_t bytes, const void* data);
   void UploadArray(int id, vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base);
   void UploadIntensity(vtkDataArray* array, vtkIdType first, vtkIdType last, vtkIdType base);
+  void UploadFlow(vtkDataArray* array, vtkIdType first, vtkIdType last);
   void UploadSamples(vtkOFB* ofb,
     vtkDataArray* attribute,
     const Selection& selection,

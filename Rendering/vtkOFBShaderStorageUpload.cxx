@@ -107,6 +107,14 @@ void vtkOFBShaderStorage::UploadArray(int id,
     this->UploadIntensity(array, first, last, base);
     return;
   }
+  if (id == BUFFER_FLOW)
+  {
+    if (base == 0) // level 0 alone
+    {
+      this->UploadFlow(array, first, last);
+    }
+    return;
+  }
   const size_t n = static_cast<size_t>(last - first);
   const size_t bps = BytesPerSample(id);
   const size_t offset = static_cast<size_t>(base + first) * bps;
@@ -155,6 +163,36 @@ void vtkOFBShaderStorage::UploadIntensity(vtkDataArray* array,
     dst[i] = static_cast<unsigned char>(v > 0.0f ? std::min(v, 1.0f) * 255.0f + 0.5f : 0.0f);
   }
   this->Upload(BUFFER_INTENSITY, static_cast<size_t>(base + first), count, dst);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBShaderStorage::UploadFlow(vtkDataArray* array, vtkIdType first, vtkIdType last)
+{
+  // The unit vector of the field, x, y and z rounded to 1/511 as 10-bit two's complement
+  // integers at bits 0, 10 and 20 of a word; 0 where the field vanishes (or is not finite).
+  const size_t n = static_cast<size_t>(last - first);
+  this->Scratch.resize(n * sizeof(vtkTypeUInt32));
+  vtkTypeUInt32* dst = reinterpret_cast<vtkTypeUInt32*>(this->Scratch.data());
+  for (size_t i = 0; i < n; ++i)
+  {
+    double v[3];
+    array->GetTuple(first + static_cast<vtkIdType>(i), v);
+    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    vtkTypeUInt32 word = 0;
+    if (length > 1.0e-30 && std::isfinite(length))
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const long q = std::lround(511.0 * std::max(-1.0, std::min(1.0, v[c] / length)));
+        word |= (static_cast<vtkTypeUInt32>(q) & 0x3FFu) << (10 * c);
+      }
+    }
+    dst[i] = word;
+  }
+  this->Upload(BUFFER_FLOW,
+    static_cast<size_t>(first) * sizeof(vtkTypeUInt32),
+    n * sizeof(vtkTypeUInt32),
+    dst);
 }
 
 //------------------------------------------------------------------------------
@@ -242,13 +280,18 @@ vtkIdType vtkOFBShaderStorage::UploadAll(const std::vector<vtkOFB*>& levels,
   const size_t ns = static_cast<size_t>(totalSamples);
   bool ok = this->Allocate(BUFFER_OFFSETS, static_cast<size_t>(totalCells) * 4) &&
     this->Allocate(BUFFER_SAMPLES, ns * BytesPerSample(BUFFER_SAMPLES));
-  const int arrays[2] = { BUFFER_INTENSITY, BUFFER_NORMALS };
-  const bool wanted[2] = { !selection.IntensityName.empty(), selection.Normals };
-  for (int k = 0; k < 2 && ok; ++k)
+  const int arrays[3] = { BUFFER_INTENSITY, BUFFER_NORMALS, BUFFER_FLOW };
+  const bool wanted[3] = {
+    !selection.IntensityName.empty(), selection.Normals, !selection.FlowName.empty()
+  };
+  for (int k = 0; k < 3 && ok; ++k)
   {
     if (wanted[k])
     {
-      ok = this->Allocate(arrays[k], ns * BytesPerSample(arrays[k]));
+      // The flow of level 0 alone (the flow-aligned filter reads level 0 only).
+      const size_t count =
+        arrays[k] == BUFFER_FLOW ? static_cast<size_t>(levels[0]->GetNumberOfSamples()) : ns;
+      ok = this->Allocate(arrays[k], count * BytesPerSample(arrays[k]));
     }
     else if (this->Handles[arrays[k]])
     {
@@ -288,9 +331,9 @@ vtkIdType vtkOFBShaderStorage::UploadAll(const std::vector<vtkOFB*>& levels,
       0,
       n,
       this->LevelSampleBase[l]);
-    for (int k = 0; k < 2; ++k)
+    for (int k = 0; k < 3; ++k)
     {
-      if (wanted[k])
+      if (wanted[k] && (arrays[k] != BUFFER_FLOW || l == 0))
       {
         this->UploadArray(
           arrays[k], GetArray(ofb, arrays[k], selection), 0, n, this->LevelSampleBase[l]);
@@ -321,11 +364,12 @@ vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels,
   const bool samples = (buffers & (1u << BUFFER_SAMPLES)) != 0;
   vtkDataArray* attribute =
     GetArray(ofb, selection.Colors ? ATTRIBUTE_COLORS : ATTRIBUTE_SCALARS, selection);
-  const int arrays[2] = { BUFFER_INTENSITY, BUFFER_NORMALS };
-  const bool wanted[2] = { !selection.IntensityName.empty() && (buffers & (1u << BUFFER_INTENSITY)),
-    selection.Normals && (buffers & (1u << BUFFER_NORMALS)) };
-  vtkDataArray* sources[2];
-  for (int k = 0; k < 2; ++k)
+  const int arrays[3] = { BUFFER_INTENSITY, BUFFER_NORMALS, BUFFER_FLOW };
+  const bool wanted[3] = { !selection.IntensityName.empty() && (buffers & (1u << BUFFER_INTENSITY)),
+    selection.Normals && (buffers & (1u << BUFFER_NORMALS)),
+    !selection.FlowName.empty() && level == 0 && (buffers & (1u << BUFFER_FLOW)) };
+  vtkDataArray* sources[3];
+  for (int k = 0; k < 3; ++k)
   {
     sources[k] = wanted[k] ? GetArray(ofb, arrays[k], selection) : nullptr;
   }
@@ -343,7 +387,7 @@ vtkIdType vtkOFBShaderStorage::UploadRanges(const std::vector<vtkOFB*>& levels,
     {
       this->UploadSamples(ofb, attribute, selection, first, last, this->LevelSampleBase[level]);
     }
-    for (int k = 0; k < 2; ++k)
+    for (int k = 0; k < 3; ++k)
     {
       this->UploadArray(arrays[k], sources[k], first, last, this->LevelSampleBase[level]);
     }

@@ -20,6 +20,8 @@
 //   OFB_DEEP_CELLS      some cell holds many samples: binary searches before the linear scans
 //   OFB_LEVEL_INTENSITY the intensity of every level is computed on that level (a LIC per
 //                       level): independent textures, blended keeping their contrast
+//   OFB_FLOW_FILTER     (Smooth, with OFB_USE_INTENSITY) level 0's flow directions are
+//                       uploaded: close up, the intensity is averaged along the flow
 // and enables GL_ARB_shader_bit_encoding and (where offered) GL_ARB_ES3_1_compatibility.
 //
 // Units: every position here is in cells of the level being read, measured from the
@@ -33,6 +35,9 @@
 //               OFB_SOURCE_SCALARS the scalar (float bits)
 //   ofbIntensity per sample a byte (the value in [0, 1] times 255, four to a uint; each
 //               level starts at a multiple of 4 samples); ofbNormals three floats per sample
+//   ofbFlow     of level 0 only, per sample the unit vector of the field the LIC follows:
+//               x, y, z times 511 as 10-bit two's complement integers at bits 0, 10, 20
+//               (0: no field there)
 //   ofbLUT      the lookup table sampled at equal steps over the scalar range
 //
 // Performance notes (Mesa llvmpipe, where these shaders run on the CPU): a fragment shader
@@ -61,6 +66,10 @@ uniform float ofbMapModeBias;     // map mode: added to the LIC
 #ifdef OFB_LEVEL_INTENSITY
 uniform float ofbIntensityMean;   // the mean of level 0's intensity
 #endif
+#endif
+#ifdef OFB_FLOW_FILTER
+layout(std430) readonly buffer ofbFlowBlock { uint ofbFlow[]; };
+uniform float ofbFlowOffsetMax; // the longest offset of the side lookups, in cells (2)
 #endif
 #ifdef OFB_ENHANCE_COLOR
 uniform vec2 ofbLightnessStretch; // x: low end m, y: 1 / (M - m), 0: none
@@ -118,6 +127,9 @@ struct ofbAccum
   float intensity;
   vec3 normal;
   float weight;
+#ifdef OFB_FLOW_FILTER
+  vec3 flow; // the weighted flow directions (the centre lookup of level 0 only)
+#endif
 };
 
 ofbAccum ofbAccumInit()
@@ -128,6 +140,9 @@ ofbAccum ofbAccumInit()
   acc.intensity = 0.0;
   acc.normal = vec3(0.0);
   acc.weight = 0.0;
+#ifdef OFB_FLOW_FILTER
+  acc.flow = vec3(0.0);
+#endif
   return acc;
 }
 
@@ -359,8 +374,9 @@ ofbAccum ofbLookupIDW(int L, vec3 g)
 // two cells in depth. Every weight is continuous in g and vanishes before its cell leaves
 // the 2x2, so the values are continuous across cell borders and across the borders
 // between the grids' regions (no cell blocks where a cell covers many pixels). Where no
-// sample has weight, the nearest sample.
-ofbAccum ofbLookupSmooth(int L, vec3 g, vec3 n)
+// sample has weight, the nearest sample. With `flow` (level 0, OFB_FLOW_FILTER), the
+// samples' flow directions are accumulated with the same weights.
+ofbAccum ofbLookupSmooth(int L, vec3 g, vec3 n, bool flow)
 {
   ofbAccum acc = ofbAccumInit();
   float nl = length(n);
@@ -394,6 +410,14 @@ ofbAccum ofbLookupSmooth(int L, vec3 g, vec3 n)
       if (w > 0.0)
       {
         ofbAccumulate(acc, i, s.y, w);
+#ifdef OFB_FLOW_FILTER
+        if (flow)
+        {
+          uint f = ofbFlow[i];
+          acc.flow += w *
+            vec3(ivec3(int(f << 22u), int(f << 12u), int(f << 2u)) >> 22) * (1.0 / 511.0);
+        }
+#endif
       }
     }
   }
@@ -404,11 +428,63 @@ ofbAccum ofbLookupSmooth(int L, vec3 g, vec3 n)
   return acc;
 }
 
+#ifdef OFB_FLOW_FILTER
+// The flow-aligned filter of a LIC close up (level 0): the intensity of `acc` (the Smooth
+// lookup at g, with its flow) replaced by the average of the Smooth lookups at g - d, g and
+// g + d with weights 1/4, 1/2, 1/4, d along the flow projected onto the tangent plane
+// (normal n). The bilinear interpolation of a streak at an angle to the grid modulates it
+// along its length: a unit step along the streak (tangent t) crosses |t_u| and |t_v| cells
+// of the grid plane (u, v) of the samples, so the modulation has periods 1 / |t_u| and
+// 1 / |t_v| (beads of 1.41 cells on a diagonal, stair steps of 1 / sin of the angle near
+// an axis), the longer one the stronger. The average cancels a period of 2 |d|: |d| is
+// half the longer period, 0.5 / min(|t_u|, |t_v|), at most ofbFlowOffsetMax, blended over
+// the three grids by the normal (so that it is continuous where the grid changes). Along
+// the flow only, the streaks' profile across is kept. `strength` in [0, 1] blends it in;
+// it fades out where the flow directions around g disagree (their mean is short: about a
+// critical point).
+ofbAccum ofbFlowFilter(ofbAccum acc, vec3 g, vec3 n, float strength)
+{
+  if (!(acc.weight > 0.0))
+  {
+    return acc;
+  }
+  float nl = length(n);
+  vec3 nn = nl > 0.0 ? n / nl : vec3(0.0);
+  vec3 m = acc.flow / acc.weight;
+  vec3 t = m - dot(m, nn) * nn;
+  float coherence = length(t);
+  float k = strength * smoothstep(0.25, 0.5, coherence);
+  if (!(k > 0.0))
+  {
+    return acc;
+  }
+  vec3 at = abs(t) / coherence;
+  // The shorter in-plane component of each grid (X: y z, Y: z x, Z: x y), weighted by how
+  // much each grid holds the surface here.
+  vec3 shortest = vec3(min(at.y, at.z), min(at.z, at.x), min(at.x, at.y));
+  vec3 halfPeriod = min(vec3(0.5) / max(shortest, vec3(1.0e-3)), vec3(ofbFlowOffsetMax));
+  vec3 an2 = nn * nn;
+  vec3 share = an2 * an2;
+  float offset = dot(share, halfPeriod) / max(dot(share, vec3(1.0)), 1.0e-6);
+  vec3 d = t * (offset / coherence);
+  float centre = acc.intensity / acc.weight;
+  float filtered = 0.5 * centre;
+  // One loop over the two sides: one copy of the lookup in the compiled shader.
+  for (int side = 0; side < 2; ++side)
+  {
+    ofbAccum s = ofbLookupSmooth(0, side == 0 ? g + d : g - d, n, false);
+    filtered += 0.25 * (s.weight > 0.0 ? s.intensity / s.weight : centre);
+  }
+  acc.intensity = mix(centre, filtered, k) * acc.weight;
+  return acc;
+}
+#endif
+
 // The filtered lookup of one level of the blended modes: smooth, else inverse distance.
 ofbAccum ofbLookupLevel(int L, vec3 g, vec3 n)
 {
 #if OFB_LOOKUP_MODE == OFB_LOOKUP_SMOOTH
-  return ofbLookupSmooth(L, g, n);
+  return ofbLookupSmooth(L, g, n, false);
 #else
   return ofbLookupIDW(L, g);
 #endif
@@ -437,7 +513,19 @@ ofbAccum ofbLookup(vec3 g0, vec3 n, float lod)
   int l0 = int(floor(level));
   int l1 = min(l0 + 1, ofbNumberOfLevels - 1);
   float t = level - float(l0);
+#if OFB_LOOKUP_MODE == OFB_LOOKUP_SMOOTH && defined(OFB_FLOW_FILTER)
+  // Close up, the flow-aligned filter on level 0: in full where a level-0 cell covers 1.4
+  // pixels or more, fading out to none at 0.7 pixels. Views where no cell covers 0.7
+  // pixels use the shader without it (vtkOFBPolyDataMapper::FlowFilterInView).
+  bool flow = l0 == 0 && lod < 0.5;
+  ofbAccum a0 = ofbLookupSmooth(l0, ofbLevelPosition(l0, g0), n, flow);
+  if (flow)
+  {
+    a0 = ofbFlowFilter(a0, g0, n, clamp(0.5 - lod, 0.0, 1.0));
+  }
+#else
   ofbAccum a0 = ofbLookupLevel(l0, ofbLevelPosition(l0, g0), n);
+#endif
   if (t <= 0.0 || l1 == l0)
   {
     return a0;

@@ -11,7 +11,10 @@
 // mapper), --offscreen (render off screen: the frame is not copied to the X server),
 // --painted-normals (each mode also with UsePaintedNormals, the sample normals shading),
 // --egl [N] (an OpenGL context of EGL device N, default 0, instead of an X window: for a
-// Linux machine with a GPU driver and no X display; the frames render off screen).
+// Linux machine with a GPU driver and no X display; the frames render off screen),
+// --lic (the OFB mappers show a LIC, vtkOFBLIC's defaults, of a rotation about a tilted
+// axis, instead of the paint; Smooth is timed with and without FlowAlignedFiltering),
+// --zoom F (the camera zoomed by F: 4 shows about 4 pixels a cell of the default bunny).
 // Fairness: one window, renderer, actor, property and headlight for every mapper; each
 // timing starts from the same camera and turns it once around the surface; the mappers
 // take turns within every round (so that a change of machine load hits all of them), and
@@ -22,9 +25,12 @@
 // less.
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBColoring.h"
+#include "vtkOFBLIC.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBReadMesh.h"
 #include "vtkOFBSampler.h"
@@ -169,6 +175,8 @@ struct Options
   bool OffScreen = false;
   int EGLDevice = -1;          // --egl: the EGL device whose context renders
   bool PaintedNormals = false; // each mode also with UsePaintedNormals
+  bool LIC = false;            // show a LIC; Smooth also without the flow-aligned filter
+  double Zoom = 1.0;           // camera zoom factor
   std::vector<int> Modes = { vtkOFBPolyDataMapper::LOOKUP_NEAREST,
     vtkOFBPolyDataMapper::LOOKUP_INVERSE_DISTANCE,
     vtkOFBPolyDataMapper::LOOKUP_MIPMAPPED,
@@ -253,6 +261,16 @@ int ParseOptions(int argc, char* argv[], Options& o)
       o.PaintedNormals = true;
       continue;
     }
+    if (arg == "--lic")
+    {
+      o.LIC = true;
+      continue;
+    }
+    if (arg == "--zoom" && hasValue)
+    {
+      o.Zoom = std::max(0.01, std::atof(argv[++i]));
+      continue;
+    }
     if (arg == "--modes" && hasValue)
     {
       if (!ParseModes(argv[++i], o.Modes))
@@ -299,7 +317,7 @@ int ParseOptions(int argc, char* argv[], Options& o)
     std::cout
       << "usage: ofbMapperBenchmark [--mesh FILE] [--resolution N] [--frames N] "
          "[--rounds N] [--warmup N] [--modes nearest,idw,mipmapped,nearestmipmapped,smooth] "
-         "[--painted-normals] [--width W] "
+         "[--painted-normals] [--lic] [--zoom F] [--width W] "
          "[--height H] [--images PREFIX] [--offscreen] [--egl [N]]\n";
     return arg == "--help" ? 0 : 1;
   }
@@ -325,6 +343,36 @@ vtkSmartPointer<vtkPolyData> ColorVertices(vtkPolyData* surface)
   }
   colored->GetPointData()->SetScalars(vertexColors);
   return colored;
+}
+
+// The surface with a rotation about a tilted axis through its centre as its point vectors
+// (the field of --lic).
+void AddRotation(vtkPolyData* surface)
+{
+  double b[6];
+  surface->GetBounds(b);
+  const double c[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
+  const double a[3] = { 0.36, 0.89, 0.27 };
+  vtkNew<vtkFloatArray> flow;
+  flow->SetName("Flow");
+  flow->SetNumberOfComponents(3);
+  for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
+  {
+    const double* x = surface->GetPoint(p);
+    const double r[3] = { x[0] - c[0], x[1] - c[1], x[2] - c[2] };
+    flow->InsertNextTuple3(
+      a[1] * r[2] - a[2] * r[1], a[2] * r[0] - a[0] * r[2], a[0] * r[1] - a[1] * r[0]);
+  }
+  surface->GetPointData()->SetVectors(flow);
+}
+
+// The LIC of `ofb` (vtkOFBLIC's defaults, the field its active vectors).
+vtkSmartPointer<vtkOFB> ComputeLIC(vtkOFB* ofb)
+{
+  vtkNew<vtkOFBLIC> lic;
+  lic->SetInputData(ofb);
+  lic->Update();
+  return lic->GetOutput();
 }
 
 // The OFB of the surface, with the same colours per sample (null on failure).
@@ -365,6 +413,7 @@ struct Bench
   vtkNew<vtkCamera> Start;
   std::vector<vtkSmartPointer<vtkMapper>> Mappers;
   std::vector<std::string> Names;
+  std::vector<int> Modes; // of the OFB mappers, from Mappers[1] on
   std::vector<std::vector<double>> Wall;
   std::vector<std::vector<double>> CPU;
   std::vector<std::vector<double>> RoundRatios;
@@ -383,11 +432,15 @@ bool SetUp(Bench& b, const Options& o, vtkPolyData* surface, vtkPolyData* colore
   peer->SetInputData(colored);
   b.Mappers.assign(1, peer.Get());
   b.Names.assign(1, "vtkPolyDataMapper, vertex colours");
+  b.Modes.clear();
   for (int mode : o.Modes)
   {
-    for (bool normals : { false, true })
+    for (int variant = 0; variant < 4; ++variant)
     {
-      if (normals && !o.PaintedNormals)
+      const bool normals = (variant & 1) != 0;
+      const bool noFlow = (variant & 2) != 0; // Smooth of a LIC without the flow filter
+      if ((normals && !o.PaintedNormals) ||
+        (noFlow && !(o.LIC && mode == vtkOFBPolyDataMapper::LOOKUP_SMOOTH)))
       {
         continue;
       }
@@ -396,13 +449,24 @@ bool SetUp(Bench& b, const Options& o, vtkPolyData* surface, vtkPolyData* colore
       mapper->SetOFB(ofb);
       mapper->SetLookupMode(mode);
       mapper->SetUsePaintedNormals(normals);
+      mapper->SetFlowAlignedFiltering(!noFlow);
+      if (o.LIC)
+      {
+        mapper->GetColoring()->SetIntensityArrayName("LIC");
+        mapper->GetColoring()->IntensityModulationOn();
+        mapper->GetColoring()->SetLICIntensity(1.0);
+      }
       b.Mappers.emplace_back(mapper.Get());
+      b.Modes.push_back(mode);
       b.Names.push_back(std::string("vtkOFBPolyDataMapper, ") +
-        vtkOFBPolyDataMapper::GetLookupModeAsString(mode) + (normals ? ", painted normals" : ""));
+        vtkOFBPolyDataMapper::GetLookupModeAsString(mode) + (o.LIC ? ", LIC" : "") +
+        (noFlow ? ", no flow filter" : "") + (normals ? ", painted normals" : ""));
     }
   }
   b.Actor->SetMapper(peer);
   b.Renderer->ResetCamera();
+  b.Renderer->GetActiveCamera()->Zoom(o.Zoom);
+  b.Renderer->ResetCameraClippingRange();
   b.Window->Render();
   b.Start->DeepCopy(b.Renderer->GetActiveCamera());
   for (size_t m = 1; m < b.Mappers.size(); ++m)
@@ -426,8 +490,8 @@ void PrintHeader(Bench& b, const Options& o, vtkPolyData* surface, vtkOFB* ofb)
             << "  triangles " << surface->GetNumberOfPolys() << ", OFB resolution " << o.Resolution
             << ", samples " << ofb->GetNumberOfSamples() << ", depth complexity "
             << ofb->GetDepthComplexity() << ", window " << o.Width << "x" << o.Height
-            << (o.OffScreen ? " off screen" : "") << ", " << o.Frames
-            << " frames per mapper and round, " << o.Rounds << " rounds\n";
+            << (o.OffScreen ? " off screen" : "") << (o.LIC ? ", LIC" : "") << ", zoom " << o.Zoom
+            << ", " << o.Frames << " frames per mapper and round, " << o.Rounds << " rounds\n";
   const std::string::size_type at = capabilities.find("OpenGL renderer string:");
   if (at != std::string::npos)
   {
@@ -475,7 +539,7 @@ double PrintMedians(const Bench& b, const Options& o)
   {
     const double ms = Median(b.Wall[m]);
     const double ratio = ms / peerMs;
-    if (o.Modes[m - 1] == vtkOFBPolyDataMapper::LOOKUP_NEAREST)
+    if (b.Modes[m - 1] == vtkOFBPolyDataMapper::LOOKUP_NEAREST && nearestRatio < 0.0)
     {
       nearestRatio = ratio;
     }
@@ -502,6 +566,7 @@ void WriteImages(Bench& b, const Options& o)
         file.begin(),
         [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
       file += mapper->GetUsePaintedNormals() ? "-normals" : "";
+      file += o.LIC && !mapper->GetFlowAlignedFiltering() ? "-noflow" : "";
     }
     b.Actor->SetMapper(b.Mappers[m]);
     b.Renderer->GetActiveCamera()->DeepCopy(b.Start);
@@ -532,11 +597,19 @@ int main(int argc, char* argv[])
     return 1;
   }
   vtkSmartPointer<vtkPolyData> colored = ColorVertices(surface);
+  if (options.LIC)
+  {
+    AddRotation(surface);
+  }
   vtkSmartPointer<vtkOFB> ofb = BuildColoredOFB(surface, options.Resolution);
   if (!ofb)
   {
     std::cerr << "The OFB build failed.\n";
     return 1;
+  }
+  if (options.LIC)
+  {
+    ofb = ComputeLIC(ofb);
   }
   Bench bench;
   if (options.EGLDevice >= 0)

@@ -69,8 +69,8 @@ inline double Contrast(const GreyImage& image, int margin)
   return n ? std::sqrt(std::max(0.0, sum2 / n - mean * mean)) : 0.0;
 }
 
-/// The integral scale in pixels along the direction (di, dj) (a unit step: one of the
-/// axes): 1 + the sum over lags d = 1..maxLag of the normalised autocorrelation at lag d,
+/// The integral scale in pixel steps along the direction (di, dj) (a unit step: an axis
+/// or a diagonal): 1 + the sum over lags d = 1..maxLag of the normalised autocorrelation at lag d,
 /// over the pixels at least `margin` from the sides. Long for streaks along the
 /// direction, about the grain's width across them, about 1 for uncorrelated noise.
 inline double CorrelationLength(const GreyImage& image, int di, int dj, int maxLag, int margin)
@@ -98,9 +98,11 @@ inline double CorrelationLength(const GreyImage& image, int di, int dj, int maxL
   {
     double c = 0.0;
     int m = 0;
-    for (int j = margin; j < image.Height - margin - d * dj; ++j)
+    for (int j = margin + std::max(0, -d * dj); j < image.Height - margin - std::max(0, d * dj);
+         ++j)
     {
-      for (int i = margin; i < image.Width - margin - d * di; ++i)
+      for (int i = margin + std::max(0, -d * di); i < image.Width - margin - std::max(0, d * di);
+           ++i)
       {
         c += (image.At(i, j) - mean) * (image.At(i + d * di, j + d * dj) - mean);
         ++m;
@@ -109,6 +111,103 @@ inline double CorrelationLength(const GreyImage& image, int di, int dj, int maxL
     length += m ? c / (m * variance) : 0.0;
   }
   return length;
+}
+
+/// The mean square of the second difference at lag `lag` along the pixel step (di, dj)
+/// (an axis or a diagonal): I(p) - (I(p - lag d) + I(p + lag d)) / 2, over the pixels at
+/// least `margin` from the sides, both ends included. A band-pass along the direction that
+/// passes most a period of 2 lag steps: along a streak it sees beads of that period, which
+/// a streak smooth along its length does not have.
+inline double SecondDifferencePower(const GreyImage& image, int di, int dj, int lag, int margin)
+{
+  double sum = 0.0;
+  long n = 0;
+  const int reach = margin + lag * std::max(std::abs(di), std::abs(dj));
+  for (int j = reach; j < image.Height - reach; ++j)
+  {
+    for (int i = reach; i < image.Width - reach; ++i)
+    {
+      const double d = image.At(i, j) -
+        0.5 * (image.At(i - lag * di, j - lag * dj) + image.At(i + lag * di, j + lag * dj));
+      sum += d * d;
+      ++n;
+    }
+  }
+  return n ? sum / n : 0.0;
+}
+
+/// The image at (x, y) in pixel units (pixel centres at whole numbers), bilinear.
+inline double Bilinear(const GreyImage& image, double x, double y)
+{
+  const int i = static_cast<int>(std::floor(x));
+  const int j = static_cast<int>(std::floor(y));
+  const double fx = x - i;
+  const double fy = y - j;
+  const int i1 = std::min(i + 1, image.Width - 1);
+  const int j1 = std::min(j + 1, image.Height - 1);
+  return (1.0 - fy) * ((1.0 - fx) * image.At(i, j) + fx * image.At(i1, j)) +
+    fy * ((1.0 - fx) * image.At(i, j1) + fx * image.At(i1, j1));
+}
+
+/// The roughness of the image along the unit direction (dx, dy): the sum over lags
+/// h = 1..maxLag pixels of the mean square of I(p) - (I(p - h d) + I(p + h d)) / 2 (the
+/// image read bilinearly between pixels), over the pixels p whose reads stay `margin`
+/// from the sides. Along a streak it sees any modulation of a period up to 2 maxLag
+/// pixels (beads), which a streak smooth along its length does not have; across it, the
+/// streaks themselves.
+inline double Roughness(const GreyImage& image, double dx, double dy, int maxLag, int margin)
+{
+  double total = 0.0;
+  const int reach = margin + maxLag + 1;
+  for (int h = 1; h <= maxLag; ++h)
+  {
+    double sum = 0.0;
+    long n = 0;
+    for (int j = reach; j < image.Height - reach; ++j)
+    {
+      for (int i = reach; i < image.Width - reach; ++i)
+      {
+        const double d = image.At(i, j) -
+          0.5 * (Bilinear(image, i - h * dx, j - h * dy) + Bilinear(image, i + h * dx, j + h * dy));
+        sum += d * d;
+        ++n;
+      }
+    }
+    total += n ? sum / n : 0.0;
+  }
+  return total;
+}
+
+/// The normalised autocorrelation at lag `lag` along the pixel step (di, dj), over the
+/// pixels at least `margin` from the sides.
+inline double Autocorrelation(const GreyImage& image, int di, int dj, int lag, int margin)
+{
+  double sum = 0.0;
+  double sum2 = 0.0;
+  long n = 0;
+  for (int j = margin; j < image.Height - margin; ++j)
+  {
+    for (int i = margin; i < image.Width - margin; ++i)
+    {
+      sum += image.At(i, j);
+      sum2 += image.At(i, j) * image.At(i, j);
+      ++n;
+    }
+  }
+  const double mean = sum / std::max(n, 1L);
+  const double variance = sum2 / std::max(n, 1L) - mean * mean;
+  const int reach = margin + lag * std::max(std::abs(di), std::abs(dj));
+  double c = 0.0;
+  long m = 0;
+  for (int j = reach; j < image.Height - reach; ++j)
+  {
+    for (int i = reach; i < image.Width - reach; ++i)
+    {
+      c += (image.At(i, j) - mean) * (image.At(i + lag * di, j + lag * dj) - mean);
+      ++m;
+    }
+  }
+  return m && variance > 1.0e-12 ? c / (m * variance) : 0.0;
 }
 
 /// Mean absolute difference of neighbouring pixels (horizontal and vertical pairs) whose

@@ -47,6 +47,13 @@ namespace vtkofb
 /// Samples per block: each job runs over a block in turn while its sources are in cache.
 constexpr vtkIdType ResampleBlock = 128;
 
+/**
+ * Triangles per chunk of the parallel loops that fill the tables: small enough that
+ * the tables of a mesh of a few thousand triangles (with a few million samples at
+ * 1024) are filled on every thread, not on the calling thread alone.
+ */
+constexpr vtkIdType TableChunk = 512;
+
 /// The memory of a table (kept by vtkOFBSampleSources between re-samplings).
 template<typename T>
 struct ResampleTable
@@ -135,7 +142,7 @@ struct ColorJob : ResampleJob
     const int nc = this->NC;
     vtkSMPTools::For(0,
       nTriangles,
-      16384,
+      TableChunk,
       [&](vtkIdType t0, vtkIdType t1)
       {
         for (vtkIdType t = t0; t < t1; ++t)
@@ -405,7 +412,7 @@ struct VectorJob : ResampleJob
     this->Table = ResampleTable<float>::Reserve(store, static_cast<size_t>(12 * nTriangles));
     vtkSMPTools::For(0,
       nTriangles,
-      16384,
+      TableChunk,
       [&](vtkIdType t0, vtkIdType t1)
       {
         for (vtkIdType t = t0; t < t1; ++t)
@@ -593,7 +600,7 @@ struct TupleJob : ResampleJob
     this->Table = ResampleTable<T>::Reserve(store, static_cast<size_t>(record * nTriangles));
     vtkSMPTools::For(0,
       nTriangles,
-      16384,
+      TableChunk,
       [&](vtkIdType t0, vtkIdType t1)
       {
         for (vtkIdType t = t0; t < t1; ++t)

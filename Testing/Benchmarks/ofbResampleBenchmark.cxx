@@ -59,12 +59,23 @@ double ThreadMilliseconds()
   return 1000.0 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
 }
 
+/// Processor time of the whole process, all threads (ms).
+double ProcessMilliseconds()
+{
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return 1000.0 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+
 /**
  * Median update time (ms) of `reps` updates after one warm-up, the field changed
  * before each, and the median processor time of the calling thread (ms) in `cpu`:
  * with vtkSMPTools' Sequential backend (VTK_SMP_BACKEND_IN_USE=Sequential) that is
  * all the work of an update, which a loaded machine does not inflate as it does
- * the wall-clock time.
+ * the wall-clock time. `process` gets the median processor time of all threads
+ * over an update: with several threads, that time over the wall-clock time is the
+ * number of threads that worked on average, and beside the Sequential thread time it
+ * shows what the threads add.
  */
 /// Median time (ms) of copying `bytes` bytes between two buffers on one thread.
 double CopyFloor(size_t bytes, int reps)
@@ -90,15 +101,22 @@ double CopyFloor(size_t bytes, int reps)
   return times[times.size() / 2];
 }
 
-double Time(vtkOFBSampler* sampler, vtkPolyData* mesh, int reps, bool expectResampled, double& cpu)
+double Time(vtkOFBSampler* sampler,
+  vtkPolyData* mesh,
+  int reps,
+  bool expectResampled,
+  double& cpu,
+  double& process)
 {
-  std::vector<double> times, cpus;
+  std::vector<double> times, cpus, processes;
   for (int r = 0; r <= reps; ++r)
   {
     SetField(mesh, 0.1 * r);
     const double start = ThreadMilliseconds();
+    const double processStart = ProcessMilliseconds();
     sampler->Update();
     const double used = ThreadMilliseconds() - start;
+    const double processUsed = ProcessMilliseconds() - processStart;
     if (r > 0)
     {
       if (sampler->GetLastUpdateResampled() != expectResampled)
@@ -108,10 +126,13 @@ double Time(vtkOFBSampler* sampler, vtkPolyData* mesh, int reps, bool expectResa
       }
       times.push_back(sampler->GetLastBuildTime());
       cpus.push_back(used);
+      processes.push_back(processUsed);
     }
   }
   std::sort(cpus.begin(), cpus.end());
   cpu = cpus[cpus.size() / 2];
+  std::sort(processes.begin(), processes.end());
+  process = processes[processes.size() / 2];
   std::sort(times.begin(), times.end());
   return times[times.size() / 2];
 }
@@ -165,8 +186,9 @@ int main(int argc, char* argv[])
     "threads: %d (%s)\n", vtkSMPTools::GetEstimatedNumberOfThreads(), vtkSMPTools::GetBackend());
   std::printf("| mesh | cells | samples | full build ms | re-sampling ms | full / re-sampling | "
               "full build thread CPU ms | re-sampling thread CPU ms | full / re-sampling (CPU) "
+              "| full build process CPU ms | re-sampling process CPU ms "
               "| copy floor ms | re-sampling GB/s | re-sampling / floor |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& path : meshes)
   {
     vtkSmartPointer<vtkPolyData> read = vtkofbtest::ReadMeshFile(path);
@@ -193,8 +215,8 @@ int main(int argc, char* argv[])
       full->SetStructureReuseToOff();
       full->SetResolution(resolution);
       full->SetInputData(mesh);
-      double fullCpu = 0.0, resampleCpu = 0.0;
-      const double fullMs = Time(full, mesh, reps, false, fullCpu);
+      double fullCpu = 0.0, resampleCpu = 0.0, fullProcess = 0.0, resampleProcess = 0.0;
+      const double fullMs = Time(full, mesh, reps, false, fullCpu, fullProcess);
       const vtkIdType samples = full->GetOutput()->GetNumberOfSamples();
       full->ReleaseBuffers();
       full->SetInputData(nullptr);
@@ -202,7 +224,7 @@ int main(int argc, char* argv[])
       reuse->SetStructureReuseToAlways();
       reuse->SetResolution(resolution);
       reuse->SetInputData(mesh);
-      const double resampleMs = Time(reuse, mesh, reps, true, resampleCpu);
+      const double resampleMs = Time(reuse, mesh, reps, true, resampleCpu, resampleProcess);
       if (fullMs < 0.0 || resampleMs < 0.0)
       {
         return 1;
@@ -210,7 +232,8 @@ int main(int argc, char* argv[])
       const double floorMs = CopyFloor(24 * static_cast<size_t>(samples), reps);
       const double gbs = 48.0 * static_cast<double>(samples) / (1.0e6 * resampleCpu);
       std::printf(
-        "| %s | %d | %lld | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f |\n",
+        "| %s | %d | %lld | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | "
+        "%.2f |\n",
         name.c_str(),
         resolution,
         static_cast<long long>(samples),
@@ -220,6 +243,8 @@ int main(int argc, char* argv[])
         fullCpu,
         resampleCpu,
         fullCpu / resampleCpu,
+        fullProcess,
+        resampleProcess,
         floorMs,
         gbs,
         resampleCpu / floorMs);

@@ -26,8 +26,8 @@
 #ifndef vtkOFBParaViewParticles_h
 #define vtkOFBParaViewParticles_h
 
-#include "vtkOFBParaViewModule.h" // for export macro
 #include "vtkOFBPParticleAdvector.h"
+#include "vtkOFBParaViewModule.h" // for export macro
 
 class VTKOFBPARAVIEW_EXPORT vtkOFBParaViewParticles : public vtkOFBPParticleAdvector
 {

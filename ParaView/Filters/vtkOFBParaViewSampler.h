@@ -22,7 +22,7 @@
 
 #include "vtkOFBBuilder.h"
 #include "vtkOFBParaViewModule.h" // for export macro
-#include "vtkSmartPointer.h"       // for Pieces
+#include "vtkSmartPointer.h"      // for Pieces
 
 class VTKOFBPARAVIEW_EXPORT vtkOFBParaViewSampler : public vtkOFBBuilder
 {

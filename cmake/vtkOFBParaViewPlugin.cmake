@@ -100,10 +100,26 @@ if (VTKOFB_BUILD_TESTING)
       LABELS  "ParaView"
       TIMEOUT 900)
   endforeach ()
+  # The distributed tests (1, 2 and 3 processes under mpiexec): one test here, as the
+  # runs on 2 and 3 processes compare with the one-process run.
+  find_package(MPI QUIET COMPONENTS C)
+  if (MPIEXEC_EXECUTABLE)
+    add_test(
+      NAME    "OFB.ParaView.Distributed"
+      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
+        -R "^OFBPlugin\\.Distributed\\." --output-on-failure --no-tests=error)
+    set_tests_properties("OFB.ParaView.Distributed" PROPERTIES
+      LABELS  "ParaView;MPI"
+      PROCESSORS 2
+      TIMEOUT 900)
+  endif ()
   # The tests that render share xvfb-run's display with the other display tests
   # (docs/testing.md, "Tests that open windows"); their scripts keep a connection open.
   set(vtkofb_paraview_render_tests OFB.ParaView.Filters OFB.ParaView.Example
     OFB.ParaView.SurfaceRepresentation OFB.ParaView.SurfaceRepresentationExample)
+  if (TEST OFB.ParaView.Distributed)
+    list(APPEND vtkofb_paraview_render_tests OFB.ParaView.Distributed)
+  endif ()
   set_property(TEST ${vtkofb_paraview_render_tests} APPEND PROPERTY
     RESOURCE_LOCK vtkofb_display)
   set_property(TEST ${vtkofb_paraview_render_tests} APPEND PROPERTY

@@ -68,6 +68,26 @@ int vtkOFBParaViewParticles::RequestInformation(vtkInformation* request,
 }
 
 //------------------------------------------------------------------------------
+int vtkOFBParaViewParticles::RequestUpdateExtent(vtkInformation* request,
+  vtkInformationVector** inInfo,
+  vtkInformationVector* outInfo)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inInfo, outInfo))
+  {
+    return 0;
+  }
+  // The whole set of seeds on every process.
+  vtkInformation* seeds = inInfo[2]->GetInformationObject(0);
+  if (seeds)
+  {
+    seeds->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    seeds->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    seeds->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBParaViewParticles::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

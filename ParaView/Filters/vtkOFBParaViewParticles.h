@@ -14,20 +14,26 @@
  * SetInputArrayToProcess, where the name "None" or an empty name means the surface's
  * active vectors.
  *
- * @sa vtkOFBParticleAdvector
+ * Under MPI it is vtkOFBPParticleAdvector: each process advances the particles on its
+ * piece of the surface and hands those that leave it to the process that owns where they
+ * go. The seeds (port 2) are asked for whole on every process (piece 0 of 1), as
+ * vtkOFBPParticleAdvector needs the same seeds everywhere. With one process, or no
+ * controller, it is vtkOFBParticleAdvector.
+ *
+ * @sa vtkOFBParticleAdvector vtkOFBPParticleAdvector
  */
 
 #ifndef vtkOFBParaViewParticles_h
 #define vtkOFBParaViewParticles_h
 
+#include "vtkOFBPParticleAdvector.h"
 #include "vtkOFBParaViewModule.h" // for export macro
-#include "vtkOFBParticleAdvector.h"
 
-class VTKOFBPARAVIEW_EXPORT vtkOFBParaViewParticles : public vtkOFBParticleAdvector
+class VTKOFBPARAVIEW_EXPORT vtkOFBParaViewParticles : public vtkOFBPParticleAdvector
 {
 public:
   static vtkOFBParaViewParticles* New();
-  vtkTypeMacro(vtkOFBParaViewParticles, vtkOFBParticleAdvector);
+  vtkTypeMacro(vtkOFBParaViewParticles, vtkOFBPParticleAdvector);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -55,6 +61,9 @@ protected:
   ~vtkOFBParaViewParticles() override;
 
   int RequestInformation(vtkInformation* request,
+    vtkInformationVector** inInfo,
+    vtkInformationVector* outInfo) override;
+  int RequestUpdateExtent(vtkInformation* request,
     vtkInformationVector** inInfo,
     vtkInformationVector* outInfo) override;
 

@@ -8,7 +8,13 @@
  * "None" and the empty name as "no vector field" (the samples get no active vectors),
  * and passes every other choice on unchanged.
  *
- * @sa vtkOFBBuilder vtkOFBSampler
+ * Under MPI (pvbatch or pvserver on several processes, each with its piece of the
+ * surface), the pieces are sampled by vtkOFBPSampler with the same settings: one frame
+ * for the whole surface (an all-reduce of the pieces' bounds), ghost cells sampled and
+ * flagged in the sample array "vtkGhostType". There the CPU builds the samples whatever
+ * the Backend. With one process, or no controller, it is vtkOFBBuilder.
+ *
+ * @sa vtkOFBBuilder vtkOFBSampler vtkOFBPSampler
  */
 
 #ifndef vtkOFBParaViewSampler_h
@@ -16,6 +22,7 @@
 
 #include "vtkOFBBuilder.h"
 #include "vtkOFBParaViewModule.h" // for export macro
+#include "vtkSmartPointer.h"      // for Pieces
 
 class VTKOFBPARAVIEW_EXPORT vtkOFBParaViewSampler : public vtkOFBBuilder
 {
@@ -38,6 +45,11 @@ public:
 protected:
   vtkOFBParaViewSampler();
   ~vtkOFBParaViewSampler() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /// The distributed sampler that samples this process's piece under MPI.
+  vtkSmartPointer<vtkAlgorithm> Pieces;
 
 private:
   vtkOFBParaViewSampler(const vtkOFBParaViewSampler&) = delete;

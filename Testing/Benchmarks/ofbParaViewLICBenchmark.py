@@ -268,6 +268,11 @@ def measure(source, camera, kind, name, folder):
     configure(display, kind)
     render(view)
     first = time.perf_counter() - start
+    names = (("NumberOfSteps", "StepSize", "EnhancedLIC", "NormalizeVectors")
+             if kind == "paraview" else ("OFBResolution", "OFBNumberOfSteps", "OFBStepSize",
+                                         "OFBEnhancedLIC", "OFBLookupMode"))
+    print("%-6s %-9s %s" % (name, kind, ", ".join(
+        "%s %s" % (n, display.GetPropertyValue(n)) for n in names)))
     frames = []
     for _ in range(args.frames):
         view.GetActiveCamera().Azimuth(360.0 / args.frames)
@@ -290,8 +295,8 @@ renderer = [line for line in probe.GetRenderWindow().ReportCapabilities().splitl
             if "renderer string" in line]
 Delete(probe)
 print("ranks %d, %d x %d pixels, %d orbit frames, pan %d px, OFB resolution %d, lookup %s, %s"
-      % (RANKS, args.size, args.size, args.frames, args.pan, args.ofb_resolution, args.ofb_lookup,
-         renderer[0].strip() if renderer else "OpenGL renderer unknown"))
+      % (RANKS, args.size, args.size, args.frames, args.pan, args.ofb_resolution,
+         args.ofb_lookup, renderer[0].strip() if renderer else "OpenGL renderer unknown"))
 rows = []
 for name in args.meshes.split(","):
     source, camera, cells = surface(name)
@@ -311,7 +316,7 @@ print("| mesh | triangles | ranks | first image s (ParaView / OFB) | OFB / ParaV
 print("|---|---|---|---|---|---|---|---|---|")
 for name, cells, pv, ofb in rows:
     # A correlation near 0 makes the ratio meaningless: printed as such.
-    pan_ratio = ("%.2f" % (ofb["pan"] / pv["pan"]) if abs(pv["pan"]) >= 0.05
+    pan_ratio = ("%.2f" % (ofb["pan"] / pv["pan"]) if abs(pv["pan"]) >= 0.1
                  else "n/a (ParaView's is ~0)")
     print("| %s | %d | %d | %.2f / %.2f | %.2f | %.1f / %.1f | %.2f | %.3f / %.3f | %s |"
           % (name, cells, RANKS, pv["first"], ofb["first"], ofb["first"] / pv["first"],

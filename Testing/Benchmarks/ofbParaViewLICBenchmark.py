@@ -16,6 +16,8 @@ PLUGIN is the plugin's OFB.so. Options:
   --ofb-lookup MODE   the OFB Surface's OFB Lookup Mode (default Automatic: Smooth
                       for a LIC)
   --images DIR        also write the pan pairs as PNGs there
+  --min-ofb-pan R     exit with an error when the OFB's pan correlation is under R
+                      (default: no check; the ctest smoke run uses it)
 
 For each mesh and representation, in a view of its own (created and rendered empty
 first, so the OpenGL context exists before the clock starts):
@@ -78,6 +80,7 @@ parser.add_argument("--pan", type=int, default=40)
 parser.add_argument("--ofb-resolution", type=int, default=1024)
 parser.add_argument("--ofb-lookup", default="Automatic")
 parser.add_argument("--images", default=None)
+parser.add_argument("--min-ofb-pan", type=float, default=None)
 args = parser.parse_args()
 LoadPlugin(args.plugin, remote=False)
 RANKS = servermanager.ActiveConnection.GetNumberOfDataPartitions()
@@ -322,4 +325,9 @@ for name, cells, pv, ofb in rows:
           % (name, cells, RANKS, pv["first"], ofb["first"], ofb["first"] / pv["first"],
              1e3 * pv["orbit"], 1e3 * ofb["orbit"], ofb["orbit"] / pv["orbit"], pv["pan"],
              ofb["pan"], pan_ratio))
+if args.min_ofb_pan is not None:
+    for name, _, _, ofb in rows:
+        if not ofb["pan"] >= args.min_ofb_pan:
+            raise SystemExit("the OFB's pan correlation on the %s is %.3f, under %.3f"
+                             % (name, ofb["pan"], args.min_ofb_pan))
 print("ofbParaViewLICBenchmark done")

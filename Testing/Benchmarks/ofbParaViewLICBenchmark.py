@@ -41,7 +41,8 @@ WaitForCompletion, so the GPU's work is inside the measured time.
 Under MPI the sources are made on rank 0 and spread over the ranks by
 RedistributeDataSet; ParaView composites the images (IceT). The script runs on rank 0;
 nothing in it depends on the number of ranks.
-Not a test: run it by hand (docs/benchmarks.md).
+Not a test: run it by hand (docs/benchmarks.md); ctest runs it at tiny sizes
+(OFB.ParaView.LICBenchmark) with --min-ofb-pan.
 """
 
 import argparse

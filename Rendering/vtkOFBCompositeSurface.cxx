@@ -54,6 +54,22 @@ vtkPolyData* vtkOFBCompositeSurface::GetSurface(vtkCompositeDataSet* input)
       changed = std::max(changed, iter->GetCurrentDataObject()->GetMTime());
     }
   }
+  if (input == this->LastInput && changed <= this->BuildTime && this->DisplayAttributes &&
+    this->DisplayAttributes->GetMTime() > this->BuildTime)
+  {
+    // Only the display attributes changed (a view may set them again before every
+    // render): the same surface unless a block's visibility changed, so that what is
+    // built from the surface (the OFB, its levels) is not built again.
+    const std::vector<char> previous = this->Visible;
+    this->Visible.clear();
+    unsigned int index = 0;
+    this->ComputeVisibility(input, true, index);
+    if (this->Visible == previous)
+    {
+      this->BuildTime.Modified();
+      return this->Surface;
+    }
+  }
   if (this->DisplayAttributes)
   {
     changed = std::max(changed, this->DisplayAttributes->GetMTime());

@@ -252,6 +252,32 @@ TEST(OFBCompositeMapper, HiddenBlocksAreNotDrawnAndLeaveTheBounds)
   EXPECT_EQ(At(one, 35, 85), (Pixel{ 0, 0, 0 }));
 }
 
+TEST(OFBCompositeMapper, DisplayAttributesSetAgainKeepTheSurface)
+{
+  // A view that sets the same block visibilities again before every render (as ParaView's
+  // does) keeps the merged surface, and so the OFB and its levels built from it; a
+  // visibility that changes gives a new surface.
+  vtkSmartPointer<vtkMultiBlockDataSet> blocks = CutSphere(vtkofbtest::MakeSphere(1.0, 24));
+  vtkSmartPointer<vtkOFB> ofb = Build(blocks, vtkOFBBuilder::BACKEND_CPU, nullptr);
+  vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+  vtkNew<vtkOFBPolyDataMapper> mapper;
+  mapper->SetInputDataObject(blocks);
+  mapper->SetOFB(ofb);
+  mapper->SetCompositeDataDisplayAttributes(attributes);
+  attributes->SetBlockVisibility(blocks->GetBlock(0), true);
+  // Held, so that a new surface cannot take the old one's address.
+  vtkSmartPointer<vtkPolyData> first = mapper->GetRenderedSurface();
+  ASSERT_NE(first, nullptr);
+  const vtkIdType cells = first->GetNumberOfCells();
+  attributes->RemoveBlockVisibilities();
+  attributes->SetBlockVisibility(blocks->GetBlock(0), true); // the same, set again
+  EXPECT_EQ(mapper->GetRenderedSurface(), first);
+  attributes->SetBlockVisibility(blocks->GetBlock(0), false);
+  vtkSmartPointer<vtkPolyData> second = mapper->GetRenderedSurface();
+  EXPECT_NE(second, first);
+  EXPECT_LT(second->GetNumberOfCells(), cells);
+}
+
 TEST(OFBCompositeMapper, CellPickerGivesTheBlockIndex)
 {
   vtkSmartPointer<vtkMultiBlockDataSet> blocks = CutSphere(vtkofbtest::MakeSphere(1.0, 48));

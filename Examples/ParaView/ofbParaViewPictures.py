@@ -22,21 +22,6 @@ from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 
-def keep_display_open():
-    """A connection to the X display for the whole run, so that the server does not reset
-    between two windows (docs/testing.md, "Tests that open windows"); none without X."""
-    import ctypes
-    import ctypes.util
-    try:
-        xlib = ctypes.CDLL(ctypes.util.find_library("X11") or "libX11.so.6")
-        xlib.XOpenDisplay.restype = ctypes.c_void_p
-        return xlib.XOpenDisplay(None)
-    except OSError:
-        return None
-
-
-_display = keep_display_open()
-
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--plugin", default="OFB", help="the plugin's file, or its name")
 parser.add_argument("--data", default="Testing/Data", help="folder with stanford-bunny.obj")

@@ -15,21 +15,6 @@ from paraview.simple import *
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 
-def keep_display_open():
-    """A connection to the X display for the whole run, so that the server does not reset
-    between two windows (docs/testing.md, "Tests that open windows"); none without X."""
-    import ctypes
-    import ctypes.util
-    try:
-        xlib = ctypes.CDLL(ctypes.util.find_library("X11") or "libX11.so.6")
-        xlib.XOpenDisplay.restype = ctypes.c_void_p
-        return xlib.XOpenDisplay(None)
-    except OSError:
-        return None
-
-
-_display = keep_display_open()
-
 plugin, out = sys.argv[1], sys.argv[2]
 LoadPlugin(plugin, ns=globals())
 

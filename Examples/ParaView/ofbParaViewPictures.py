@@ -13,13 +13,16 @@ than the mesh's points).
 import argparse
 import math
 import os
+import sys
 
 import numpy as np
 from paraview import servermanager
 from paraview.simple import *
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+# The pipe of the Python examples (Examples/Python/ofb_pipe.py).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from ofb_pipe import pipe_with_bump  # noqa: E402
 
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -29,36 +32,6 @@ parser.add_argument("--output", default=".", help="folder for the pictures")
 parser.add_argument("--size", type=int, default=600, help="picture width and height")
 args = parser.parse_args()
 LoadPlugin(args.plugin, ns=globals())
-
-
-def pipe_with_bump(around=384, along=384):
-    """A pipe of radius 1 and length 4 along z with an outward bump at mid-length on the
-    +x side, and a flow ("Flow") along the axis that turns about it."""
-    z = np.linspace(-2.0, 2.0, along + 1)[:, None]
-    theta = 2.0 * np.pi * np.arange(around)[None, :] / around
-    d_theta = np.remainder(theta + np.pi, 2.0 * np.pi) - np.pi
-    r = 1.0 + 0.35 * np.exp(-(z * z + d_theta * d_theta) / 0.25)
-    x = np.stack(np.broadcast_arrays(r * np.cos(theta), r * np.sin(theta), z), axis=-1)
-    omega = 1.2 + 0.6 * np.sin(1.5 * z)
-    v = np.stack(np.broadcast_arrays(-omega * x[..., 1], omega * x[..., 0], 1.0), axis=-1)
-    points = vtkPoints()
-    points.SetData(numpy_support.numpy_to_vtk(x.reshape(-1, 3), deep=True))
-    flow = numpy_support.numpy_to_vtk(v.reshape(-1, 3).astype(np.float32), deep=True)
-    flow.SetName("Flow")
-    j, i = np.meshgrid(np.arange(along), np.arange(around), indexing="ij")
-    a = j * around + i
-    b = j * around + (i + 1) % around
-    c, d = a + around, b + around
-    triangles = np.stack([np.stack([a, b, d], -1), np.stack([a, d, c], -1)], axis=2)
-    cells = np.hstack([np.full((triangles.size // 3, 1), 3), triangles.reshape(-1, 3)])
-    polys = vtkCellArray()
-    polys.SetCells(cells.shape[0], numpy_support.numpy_to_vtkIdTypeArray(
-        cells.astype(np.int64).ravel(), deep=True))
-    pipe = vtkPolyData()
-    pipe.SetPoints(points)
-    pipe.SetPolys(polys)
-    pipe.GetPointData().SetVectors(flow)
-    return pipe
 
 
 def source_of(data):
@@ -95,7 +68,7 @@ def picture(view, path):
 os.makedirs(args.output, exist_ok=True)
 
 # --- The pipe: surface LIC of its flow, in grey.
-pipe = source_of(pipe_with_bump())
+pipe = source_of(pipe_with_bump(384, 384))
 sampler = OFBSampler(Input=pipe, Resolution=512)
 sampler.Vectors = ["POINTS", "Flow"]
 lic = OFBLIC(Input=sampler)

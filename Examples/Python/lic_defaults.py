@@ -34,8 +34,6 @@ import sys
 
 import numpy as np
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
 from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderWindow
@@ -43,6 +41,7 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations
 
 import vtkofb
 from ofb_example_view import save_png
+from ofb_pipe import pipe_with_bump
 
 BACKGROUND = (0.1, 0.1, 0.15)
 
@@ -63,34 +62,8 @@ args = parser.parse_args()
 
 
 def make_pipe_with_bump(around, along):
-    """The pipe of the LIC tests (vtkOFBLICTestHelpers.h, MakePipeWithBump): a wall of
-    radius 1 and length 4 along z with an outward bump of height 0.35 on the +x side at
-    mid-length, a flow ("Flow") along the axis at speed 1 that turns about it at
-    1.2 + 0.6 sin(1.5 z) radians per unit, tilted 30 degrees about x and 20 about y."""
-    z = np.linspace(-2.0, 2.0, along + 1)[:, None]
-    theta = 2.0 * np.pi * np.arange(around)[None, :] / around
-    d_theta = np.remainder(theta + np.pi, 2.0 * np.pi) - np.pi
-    r = 1.0 + 0.35 * np.exp(-(z * z + d_theta * d_theta) / 0.25)
-    x = np.stack(np.broadcast_arrays(r * np.cos(theta), r * np.sin(theta), z), axis=-1)
-    omega = 1.2 + 0.6 * np.sin(1.5 * z)
-    v = np.stack(np.broadcast_arrays(-omega * x[..., 1], omega * x[..., 0], 1.0), axis=-1)
-    points = vtkPoints()
-    points.SetData(numpy_support.numpy_to_vtk(x.reshape(-1, 3), deep=True))
-    flow = numpy_support.numpy_to_vtk(v.reshape(-1, 3).astype(np.float32), deep=True)
-    flow.SetName("Flow")
-    j, i = np.meshgrid(np.arange(along), np.arange(around), indexing="ij")
-    a = j * around + i
-    b = j * around + (i + 1) % around
-    c, d = a + around, b + around
-    triangles = np.stack([np.stack([a, b, d], -1), np.stack([a, d, c], -1)], axis=2)
-    cells = np.hstack([np.full((triangles.size // 3, 1), 3), triangles.reshape(-1, 3)])
-    polys = vtkCellArray()
-    polys.SetCells(cells.shape[0], numpy_support.numpy_to_vtkIdTypeArray(
-        cells.astype(np.int64).ravel(), deep=True))
-    pipe = vtkPolyData()
-    pipe.SetPoints(points)
-    pipe.SetPolys(polys)
-    pipe.GetPointData().SetVectors(flow)
+    """The pipe of the LIC tests (ofb_pipe.py) tilted 30 degrees about x and 20 about y."""
+    pipe = pipe_with_bump(around, along)
     tilt = vtkTransform()
     tilt.RotateY(20.0)
     tilt.RotateX(30.0)

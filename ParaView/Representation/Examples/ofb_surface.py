@@ -29,38 +29,14 @@ args = parser.parse_args()
 os.makedirs(args.output, exist_ok=True)
 LoadPlugin(args.plugin, remote=False, ns=globals())
 
-# The pipe of the LIC tests: radius 1, length 4 along z, a bump on +x at mid-length, a flow
-# along the axis at speed 1 turning about it at 1.2 + 0.6 sin(1.5 z) radians per unit.
+# The pipe of the LIC tests (Examples/Python/ofb_pipe.py), made where the source runs.
 PIPE = """
-import numpy as np
-from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray
-around, along = 256, 256
-z = np.linspace(-2.0, 2.0, along + 1)[:, None]
-theta = 2.0 * np.pi * np.arange(around)[None, :] / around
-d_theta = np.remainder(theta + np.pi, 2.0 * np.pi) - np.pi
-r = 1.0 + 0.35 * np.exp(-(z * z + d_theta * d_theta) / 0.25)
-x = np.stack(np.broadcast_arrays(r * np.cos(theta), r * np.sin(theta), z), axis=-1)
-omega = 1.2 + 0.6 * np.sin(1.5 * z)
-v = np.stack(np.broadcast_arrays(-omega * x[..., 1], omega * x[..., 0], 1.0), axis=-1)
-points = vtkPoints()
-points.SetData(numpy_support.numpy_to_vtk(x.reshape(-1, 3), deep=True))
-flow = numpy_support.numpy_to_vtk(v.reshape(-1, 3).astype(np.float32), deep=True)
-flow.SetName("Flow")
-j, i = np.meshgrid(np.arange(along), np.arange(around), indexing="ij")
-a = j * around + i
-b = j * around + (i + 1) % around
-c, d = a + around, b + around
-triangles = np.stack([np.stack([a, b, d], -1), np.stack([a, d, c], -1)], axis=2)
-cells = np.hstack([np.full((triangles.size // 3, 1), 3), triangles.reshape(-1, 3)])
-polys = vtkCellArray()
-polys.SetCells(cells.shape[0], numpy_support.numpy_to_vtkIdTypeArray(
-    cells.astype(np.int64).ravel(), deep=True))
-output.SetPoints(points)
-output.SetPolys(polys)
-output.GetPointData().SetVectors(flow)
-"""
+import sys
+sys.path.insert(0, %r)
+from ofb_pipe import pipe_with_bump
+output.ShallowCopy(pipe_with_bump(256, 256))
+""" % os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Examples",
+                   "Python")
 
 
 def render_view(size):

@@ -108,7 +108,11 @@ if (VTKOFB_BUILD_TESTING)
       NAME    "OFB.ParaView.Distributed"
       COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
         -R "^OFBPlugin\\.Distributed\\." --output-on-failure --no-tests=error)
-    set_tests_properties("OFB.ParaView.Distributed" PROPERTIES
+    add_test(
+      NAME    "OFB.ParaView.SurfaceDistributed"
+      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
+        -R "^OFBPlugin\\.SurfaceDistributed\\." --output-on-failure --no-tests=error)
+    set_tests_properties("OFB.ParaView.Distributed" "OFB.ParaView.SurfaceDistributed" PROPERTIES
       LABELS  "ParaView;MPI"
       PROCESSORS 2
       TIMEOUT 900)
@@ -119,7 +123,8 @@ if (VTKOFB_BUILD_TESTING)
     OFB.ParaView.SurfaceRepresentation OFB.ParaView.SurfaceRepresentationExample
     OFB.ParaView.LICBenchmark)
   if (TEST OFB.ParaView.Distributed)
-    list(APPEND vtkofb_paraview_render_tests OFB.ParaView.Distributed)
+    list(APPEND vtkofb_paraview_render_tests OFB.ParaView.Distributed
+      OFB.ParaView.SurfaceDistributed)
   endif ()
   set_property(TEST ${vtkofb_paraview_render_tests} APPEND PROPERTY
     RESOURCE_LOCK vtkofb_display)

@@ -40,6 +40,34 @@ void vtkOFBPSampler::GetGlobalBounds(double bounds[6]) const
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBPSampler::AllReduceBounds(vtkMultiProcessController* controller,
+  const double local[6],
+  double global[6])
+{
+  if (!controller || controller->GetNumberOfProcesses() <= 1)
+  {
+    std::copy(local, local + 6, global);
+    return;
+  }
+  // The minimum as the maximum of its negative: one MAX reduction of six doubles. An
+  // invalid box on an axis (min > max) takes no part.
+  double send[6];
+  double received[6];
+  for (int k = 0; k < 3; ++k)
+  {
+    const bool valid = local[2 * k] <= local[2 * k + 1];
+    send[2 * k] = valid ? -local[2 * k] : -VTK_DOUBLE_MAX;
+    send[2 * k + 1] = valid ? local[2 * k + 1] : -VTK_DOUBLE_MAX;
+  }
+  controller->AllReduce(send, received, 6, vtkCommunicator::MAX_OP);
+  for (int k = 0; k < 3; ++k)
+  {
+    global[2 * k] = -received[2 * k];
+    global[2 * k + 1] = received[2 * k + 1];
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> vtkOFBPSampler::GetSurface(vtkDataObject* input)
 {
   vtkSmartPointer<vtkPolyData> surface = this->Superclass::GetSurface(input);
@@ -95,30 +123,13 @@ int vtkOFBPSampler::RequestData(vtkInformation* request,
   // follows.
   const bool empty = surface->GetNumberOfPoints() == 0 ||
     surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0;
-  double local[6] = { -VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX };
+  double local[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   if (!empty)
   {
-    double b[6];
-    surface->GetBounds(b);
-    for (int k = 0; k < 3; ++k)
-    {
-      local[2 * k] = -b[2 * k]; // the minimum as the maximum of its negative
-      local[2 * k + 1] = b[2 * k + 1];
-    }
+    surface->GetBounds(local);
   }
-  double global[6];
-  controller->AllReduce(local, global, 6, vtkCommunicator::MAX_OP);
   double bounds[6];
-  for (int k = 0; k < 3; ++k)
-  {
-    bounds[2 * k] = -global[2 * k];
-    bounds[2 * k + 1] = global[2 * k + 1];
-  }
+  vtkOFBPSampler::AllReduceBounds(controller, local, bounds);
   if (!std::equal(bounds, bounds + 6, this->GlobalBounds))
   {
     // Another frame: the structure kept for re-sampling attributes does not fit it.

@@ -58,6 +58,20 @@ public:
    */
   void GetGlobalBounds(double bounds[6]) const;
 
+  /**
+   * The frame bounds of a surface distributed over `controller`'s processes: the box of
+   * every process's `local` bounds (an all-reduce of six doubles). A process without
+   * cells passes an invalid box (min > max, as vtkMath::UninitializeBounds or
+   * vtkBoundingBox make it), which adds nothing; where no process has cells, `global` is
+   * invalid (min > max). A collective call: every process of `controller` must make
+   * it. Null or a single process: `global` is `local`. This is the frame rule of
+   * vtkOFBPSampler, for others that build a piece's OFB on the whole surface's frame
+   * (the OFB Surface representation of the ParaView plugin).
+   */
+  static void AllReduceBounds(vtkMultiProcessController* controller,
+    const double local[6],
+    double global[6]);
+
 protected:
   vtkOFBPSampler();
   ~vtkOFBPSampler() override;

@@ -1,6 +1,7 @@
 #include "vtkOFBSurfaceRepresentation.h"
 
 #include "vtkCellData.h"
+#include "vtkCommunicator.h"
 #include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
@@ -12,9 +13,12 @@
 #include "vtkInformation.h"
 #include "vtkInformationRequestKey.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkOFB.h"
 #include "vtkOFBColoring.h"
 #include "vtkOFBLIC.h"
+#include "vtkOFBPLIC.h"
+#include "vtkOFBPSampler.h"
 #include "vtkOFBParaViewProbe.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBSampler.h"
@@ -22,6 +26,7 @@
 #include "vtkPVRenderView.h"
 #include "vtkPVView.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
 
@@ -33,13 +38,19 @@ vtkStandardNewMacro(vtkOFBSurfaceRepresentation);
 //------------------------------------------------------------------------------
 vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
   : OFBMapper(vtkOFBPolyDataMapper::New())
-  , Sampler(vtkOFBSampler::New())
-  , LIC(vtkOFBLIC::New())
+  , Sampler(vtkOFBPSampler::New())
+  , LIC(vtkOFBPLIC::New())
   , OFBLIC(false)
   , UseInputOFB(true)
   , VectorsAssociation(vtkDataObject::FIELD_ASSOCIATION_POINTS)
   , WarnedNoVectors(false)
+  , AnyLICField(false)
+  , AnyInputOFB(false)
+  , AnyInputLIC(false)
+  , EmptyPiece(vtkSmartPointer<vtkPolyData>::New())
+  , EmptyOFB(vtkSmartPointer<vtkOFB>::New())
 {
+  std::fill(this->OFBFrame, this->OFBFrame + 7, 0.0);
   // The OFB mapper replaces the superclass's full-resolution mapper; the LOD mapper stays.
   this->Mapper->Delete();
   this->Mapper = this->OFBMapper;
@@ -48,6 +59,9 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
 
   // A change of the colour array, the solid colour or the time step keeps the structure.
   this->Sampler->SetStructureReuseToAlways();
+  // The representation cannot ask the delivered surface for ghost cells: the LIC reads
+  // those the surface has (a request would make the pipeline execute at every update).
+  this->LIC->SetNumberOfGhostLevels(0);
   this->LIC->SetInputConnection(this->Sampler->GetOutputPort());
   this->OFBMapper->SetOFBConnection(this->Sampler->GetOutputPort());
   this->OFBMapper->GetColoring()->SetLICIntensity(0.8);
@@ -73,6 +87,17 @@ int vtkOFBSurfaceRepresentation::RequestData(vtkInformation* request,
     ? vtkDataObject::GetData(inputVector[0], 0)
     : nullptr;
   this->InputOFB = input ? vtkOFBParaViewProbe::GetOFB(input) : nullptr;
+  // Under MPI, a surface with ghost cells is sampled as it is: ParaView's geometry filter
+  // removes the ghost cells from the surface it delivers, and the LIC reads their samples
+  // across the piece borders.
+  vtkMultiProcessController* controller = this->Sampler->GetController();
+  this->GhostedInput = nullptr;
+  if (controller && controller->GetNumberOfProcesses() > 1 &&
+    vtkOFBSurfaceRepresentation::HasGhostCells(input))
+  {
+    this->GhostedInput.TakeReference(input->NewInstance());
+    this->GhostedInput->ShallowCopy(input);
+  }
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
@@ -89,17 +114,134 @@ int vtkOFBSurfaceRepresentation::ProcessViewRequest(vtkInformationRequestKey* re
   {
     // The superclass gave the delivered surface to the mapper; the OFB is built from the
     // same surface, where it is rendered, when the mapper updates its OFB input.
+    // A process without a piece samples an empty surface (it still takes part in the
+    // collective calls under MPI).
     vtkDataObject* data = vtkPVView::GetDeliveredPiece(inInfo, this);
-    if (this->Sampler->GetInputDataObject(0, 0) != data)
+    vtkDataObject* samplerInput = this->GhostedInput ? this->GhostedInput.Get()
+      : data                                         ? data
+                                                     : this->EmptyPiece.Get();
+    if (this->Sampler->GetInputDataObject(0, 0) != samplerInput)
     {
-      this->Sampler->SetInputDataObject(data);
+      this->Sampler->SetInputDataObject(samplerInput);
     }
     if (data)
     {
       this->PopulateBlockAttributes(this->OFBMapper->GetCompositeDataDisplayAttributes(), data);
     }
+    this->SynchronizeOFB();
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SynchronizeOFB()
+{
+  vtkMultiProcessController* controller = this->Sampler->GetController();
+  if (!controller || controller->GetNumberOfProcesses() <= 1)
+  {
+    return;
+  }
+  // What the pieces have, agreed by all processes: the LIC runs, and reads an input OFB,
+  // on every process or on none.
+  vtkOFB* inputOFB = this->InputOFB.Get();
+  int local[3] = { this->OFBLIC && this->UpdateVectors() ? 1 : 0,
+    inputOFB ? 1 : 0,
+    inputOFB && inputOFB->GetSampleData()->GetArray("LIC") ? 1 : 0 };
+  int global[3] = { 0, 0, 0 };
+  controller->AllReduce(local, global, 3, vtkCommunicator::MAX_OP);
+  if ((global[0] != 0) != this->AnyLICField || (global[1] != 0) != this->AnyInputOFB ||
+    (global[2] != 0) != this->AnyInputLIC)
+  {
+    this->AnyLICField = global[0] != 0;
+    this->AnyInputOFB = global[1] != 0;
+    this->AnyInputLIC = global[2] != 0;
+    this->UpdateLICConnection();
+  }
+
+  // The OFB the mapper reads is brought up to date here, by every process together,
+  // whenever one of them needs it: the mapper's own update then finds it up to date.
+  vtkAlgorithm* source = this->OFBMapper->GetNumberOfInputConnections(1) > 0
+    ? this->OFBMapper->GetInputAlgorithm(1, 0)
+    : nullptr;
+  const bool collective = source == this->Sampler || source == this->LIC;
+  int stale = collective && vtkOFBSurfaceRepresentation::NeedsUpdate(source) ? 1 : 0;
+  int anyStale = 0;
+  controller->AllReduce(&stale, &anyStale, 1, vtkCommunicator::MAX_OP);
+  if (anyStale && collective)
+  {
+    // The first algorithm of the chain, so that every process runs all of it.
+    vtkAlgorithm* first =
+      this->LIC->GetInputAlgorithm(0, 0) == this->Sampler || source == this->Sampler
+      ? static_cast<vtkAlgorithm*>(this->Sampler)
+      : static_cast<vtkAlgorithm*>(this->LIC);
+    first->Modified();
+    source->Update();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSurfaceRepresentation::NeedsUpdate(vtkAlgorithm* algorithm)
+{
+  vtkDataObject* output = algorithm->GetOutputDataObject(0);
+  if (!output || output->GetUpdateTime() < algorithm->GetMTime())
+  {
+    return true;
+  }
+  const vtkMTimeType updated = output->GetUpdateTime();
+  for (int port = 0; port < algorithm->GetNumberOfInputPorts(); ++port)
+  {
+    for (int c = 0; c < algorithm->GetNumberOfInputConnections(port); ++c)
+    {
+      vtkDataObject* input = algorithm->GetInputDataObject(port, c);
+      vtkAlgorithm* producer = algorithm->GetInputAlgorithm(port, c);
+      if ((input && input->GetMTime() > updated) ||
+        (producer && producer->GetNumberOfInputPorts() > 0 &&
+          vtkOFBSurfaceRepresentation::NeedsUpdate(producer)))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+double* vtkOFBSurfaceRepresentation::GetOFBFrame()
+{
+  std::fill(this->OFBFrame, this->OFBFrame + 7, 0.0);
+  vtkOFB* ofb = this->OFBMapper->GetOFB();
+  if ((!ofb || !(ofb->GetCellSize() > 0.0)) &&
+    this->OFBMapper->GetNumberOfInputConnections(1) > 0 &&
+    this->OFBMapper->GetInputAlgorithm(1, 0) == this->LIC)
+  {
+    // The LIC of an empty piece outputs no frame: the frame of the OFB it reads.
+    ofb = vtkOFB::SafeDownCast(this->LIC->GetInputDataObject(0, 0));
+  }
+  if (!ofb || !(ofb->GetCellSize() > 0.0))
+  {
+    return this->OFBFrame;
+  }
+  const double* origin = ofb->GetOrigin();
+  const vtkIdType* dimensions = ofb->GetDimensions();
+  for (int a = 0; a < 3; ++a)
+  {
+    this->OFBFrame[a] = origin[a];
+    this->OFBFrame[4 + a] = static_cast<double>(dimensions[a]);
+  }
+  this->OFBFrame[3] = ofb->GetCellSize();
+  return this->OFBFrame;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBSampler* vtkOFBSurfaceRepresentation::GetOFBSampler()
+{
+  return this->Sampler;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBLIC* vtkOFBSurfaceRepresentation::GetOFBLICFilter()
+{
+  return this->LIC;
 }
 
 //------------------------------------------------------------------------------
@@ -158,10 +300,18 @@ void vtkOFBSurfaceRepresentation::UpdateColorSource()
 //------------------------------------------------------------------------------
 void vtkOFBSurfaceRepresentation::UpdateLICConnection()
 {
-  const bool lic = this->UpdateVectors();
+  // Under MPI, what any process's piece has (SynchronizeOFB): a process whose piece is
+  // empty runs the LIC too, on an empty OFB where it has no input OFB.
+  vtkMultiProcessController* controller = this->Sampler->GetController();
+  const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
+  const bool lic = this->UpdateVectors() || (parallel && this->OFBLIC && this->AnyLICField);
+  vtkOFB* inputOFB = !this->UseInputOFB ? nullptr
+    : this->InputOFB                    ? this->InputOFB.Get()
+    : parallel && this->AnyInputOFB     ? this->EmptyOFB.Get()
+                                        : nullptr;
   vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
-  vtkOFB* inputOFB = this->UseInputOFB ? this->InputOFB.Get() : nullptr;
-  const bool inputLIC = inputOFB && inputOFB->GetSampleData()->GetArray("LIC");
+  const bool inputLIC =
+    inputOFB && (inputOFB->GetSampleData()->GetArray("LIC") || (parallel && this->AnyInputLIC));
   const bool noField = this->OFBLIC && !lic && !inputLIC;
   if (noField && !this->WarnedNoVectors)
   {
@@ -249,6 +399,36 @@ bool vtkOFBSurfaceRepresentation::UpdateVectors()
     }
   }
   return named || active;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBSurfaceRepresentation::HasGhostCells(vtkDataObject* data)
+{
+  // Polygonal data only: the delivered surface of other data is not made of its cells.
+  bool ghosts = false;
+  bool polygonal = true;
+  auto visit = [&ghosts, &polygonal](vtkDataObject* object)
+  {
+    vtkPolyData* polyData = vtkPolyData::SafeDownCast(object);
+    polygonal = polygonal && polyData;
+    ghosts = ghosts ||
+      (polyData &&
+        polyData->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()) != nullptr);
+  };
+  if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      visit(it->GetCurrentDataObject());
+    }
+  }
+  else if (data)
+  {
+    visit(data);
+  }
+  return ghosts && polygonal;
 }
 
 //------------------------------------------------------------------------------
@@ -420,6 +600,7 @@ void vtkOFBSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
      << vtkOFBPolyDataMapper::GetLookupModeAsString(this->OFBMapper->GetLookupMode()) << "\n";
   os << indent << "UseInputOFB: " << (this->UseInputOFB ? "On" : "Off") << "\n";
   os << indent << "InputOFB: " << this->InputOFB.Get() << "\n";
+  os << indent << "Controller: " << this->Sampler->GetController() << "\n";
   os << indent << "OFBLIC: " << (this->OFBLIC ? "On" : "Off") << "\n";
   os << indent
      << "OFBInputVectors: " << (this->VectorsName.empty() ? "(active)" : this->VectorsName)

@@ -36,6 +36,20 @@
  * changes; a change of the colour array, the solid colour or a time step with the same
  * geometry re-samples the attributes alone (vtkOFBSampler's STRUCTURE_REUSE_ALWAYS).
  *
+ * Under MPI (the global controller has more than one process: pvbatch or pvserver
+ * under mpiexec, where ParaView distributes the surface), each process builds the OFB of
+ * its piece on the frame of the whole surface: the sampler is a vtkOFBPSampler (an
+ * all-reduce of the pieces' bounds, vtkOFBPSampler::AllReduceBounds) and the LIC a
+ * vtkOFBPLIC (the contrast stretches from every piece's samples), so that the pieces'
+ * samples lie on the same three grids as one process's and no seam shows where the
+ * pieces meet in the composited image. An input OFB (OFB Probe's) is already on the
+ * whole surface's frame (OFB Sampler is a vtkOFBPSampler) and is used as it is. Every
+ * process takes part in the collective calls at every render, also one whose piece is
+ * empty: the representation updates its OFB before the render, on every process at once,
+ * whenever any process needs it (SynchronizeOFB). The LIC reads the ghost cells that the
+ * surface has (GhostCellsGenerator upstream); the representation does not ask for them.
+ * GetOFBFrame() (the information property OFBFrame) gives the frame of the OFB rendered.
+ *
  * The level-of-detail mapper (ParaView's decimated surface while interacting with a
  * large surface) is the plain one of the superclass: it shows the same colour array
  * per vertex, without the OFB.
@@ -56,11 +70,15 @@
 
 #include <string> // for the vector array name
 
+class vtkAlgorithm;
 class vtkDataObject;
 class vtkOFB;
 class vtkOFBLIC;
+class vtkOFBPLIC;
+class vtkOFBPSampler;
 class vtkOFBPolyDataMapper;
 class vtkOFBSampler;
+class vtkPolyData;
 
 class VTKOFBPARAVIEWREPRESENTATION_EXPORT vtkOFBSurfaceRepresentation
   : public vtkGeometryRepresentationWithFaces
@@ -111,6 +129,15 @@ public:
    */
   vtkOFB* GetRenderedOFB();
 
+  /**
+   * The frame of the OFB the last render coloured from, as 7 numbers: origin (x, y, z),
+   * cell size, dimensions (cells along x, y, z); zeros before the first render or without
+   * an OFB. Where that OFB is a LIC without a frame (a process whose piece is empty), the
+   * frame of the OFB the LIC reads. Under MPI every process gives the frame of the whole
+   * surface.
+   */
+  double* GetOFBFrame() VTK_SIZEHINT(7);
+
   ///@{
   /**
    * The LIC on the samples (default off). Without a vector array (SelectOFBInputVectors)
@@ -156,8 +183,8 @@ public:
    * The OFB objects, for tests and scripts that run in the rendering process.
    */
   vtkOFBPolyDataMapper* GetOFBMapper() { return this->OFBMapper; }
-  vtkOFBSampler* GetOFBSampler() { return this->Sampler; }
-  vtkOFBLIC* GetOFBLICFilter() { return this->LIC; }
+  vtkOFBSampler* GetOFBSampler();
+  vtkOFBLIC* GetOFBLICFilter();
   ///@}
 
   /**
@@ -202,9 +229,30 @@ protected:
    */
   static int GetNumberOfComponents(vtkDataObject* data, int association, const char* name);
 
+  /**
+   * Whether `data` is polygonal (a vtkPolyData, or a composite dataset of them) with a
+   * ghost cell array ("vtkGhostType") in some block.
+   */
+  static bool HasGhostCells(vtkDataObject* data);
+
+  /**
+   * Under MPI, at every render on every process: agrees with the other processes on
+   * whether the LIC runs and which OFB it reads (a process whose piece is empty has no
+   * field), then updates the OFB the mapper reads on every process where any process needs
+   * it, so that the collective calls of vtkOFBPSampler and vtkOFBPLIC are made by all
+   * processes together, never by the mapper of one alone.
+   */
+  void SynchronizeOFB();
+
+  /**
+   * Whether `algorithm`'s output is older than the algorithm or its inputs (the update
+   * that the mapper's would run), following its inputs upstream.
+   */
+  static bool NeedsUpdate(vtkAlgorithm* algorithm);
+
   vtkOFBPolyDataMapper* OFBMapper;
-  vtkOFBSampler* Sampler;
-  vtkOFBLIC* LIC;
+  vtkOFBPSampler* Sampler;
+  vtkOFBPLIC* LIC;
   bool OFBLIC;
   bool UseInputOFB;
   vtkSmartPointer<vtkOFB> InputOFB; // the OFB the input carries, if any
@@ -213,6 +261,15 @@ protected:
   std::string SamplerVectors; // the field set on the sampler ("": its default)
   std::string LICVectors;     // the field set on the LIC ("": its default)
   bool WarnedNoVectors;       // warned that the LIC has no field, until it has one
+  // Under MPI: whether some process's piece has the LIC's field, an input OFB, an input
+  // OFB with a LIC (SynchronizeOFB); the stand-ins of a process without piece or OFB.
+  bool AnyLICField;
+  bool AnyInputOFB;
+  bool AnyInputLIC;
+  vtkSmartPointer<vtkPolyData> EmptyPiece;
+  vtkSmartPointer<vtkDataObject> GhostedInput; // under MPI, the input with its ghost cells
+  vtkSmartPointer<vtkOFB> EmptyOFB;
+  double OFBFrame[7];
 
 private:
   vtkOFBSurfaceRepresentation(const vtkOFBSurfaceRepresentation&) = delete;

@@ -1,0 +1,309 @@
+"""The OFB Surface representation on a surface that ParaView distributes, against one process.
+
+    python3 TestOFBSurfaceDistributed.py N MPIEXEC PVBATCH PARAVIEW_PYTHON KEEP_OPEN PLUGIN DIR
+        [--empty-last]
+
+runs (with Debian's python3 and vtkOFB's Python package on PYTHONPATH, for the image
+comparison) `MPIEXEC -np N PVBATCH --symmetric` on this script, which then renders:
+
+    pvbatch --symmetric TestOFBSurfaceDistributed.py PLUGIN DIR [--empty-last]
+
+Every process runs the pvbatch part. A sphere with a tangent field is distributed by
+RedistributeDataSet, GhostCellsGenerator adds ghost cells, and the surface is shown with
+the "OFB Surface" representation and its LIC (blended with the solid colour). ParaView
+composites the pieces' images (IceT). Written to DIR: surface-N.png (the LIC), pieces-N.png
+(the pieces, each in its own colour) and surface-N.json (every process's OFB frame).
+
+The one-process run is the reference; on N > 1 processes the driver checks:
+
+- (a) every process's OFB frame (origin, cell size, cells) is the one-process frame;
+- (b) the composited image passes vtkOFBImageComparison (the LIC-aware comparison of the
+  LIC image tests) against the one-process image;
+- (c) no seam: the mean |difference| from the one-process image within SEAM_BAND pixels
+  of the piece borders is at most SEAM_TOLERANCE levels (of 255) above that elsewhere on
+  the surface.
+
+With --empty-last the last process's piece is emptied after the distribution (a
+programmable filter): the run must not hang (every process takes part in the collective
+calls at every render), every process has the same valid frame, and the other pieces
+show their LIC (surface-N-empty.png, surface-N-empty.json).
+"""
+import json
+import os
+import subprocess
+import sys
+
+SIZE = 300
+RESOLUTION = 96
+STEPS = 10
+GHOST_LAYERS = 8
+SEAM_BAND = 3
+SEAM_TOLERANCE = 2.0
+
+
+def render(plugin, out_dir, empty_last):
+    """The pvbatch part, on every process."""
+    from paraview.simple import (Calculator, ColorBy, CreateView, ExtractSurface,
+                                 GetColorTransferFunction, GhostCellsGenerator, Hide,
+                                 LoadPlugin, ProcessIdScalars, ProgrammableFilter,
+                                 RedistributeDataSet,
+                                 SaveScreenshot, Show, Sphere)
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    from vtkmodules.vtkParallelCore import vtkCommunicator, vtkMultiProcessController
+
+    LoadPlugin(plugin, ns=globals())
+    controller = vtkMultiProcessController.GetGlobalController()
+    rank = controller.GetLocalProcessId()
+    ranks = controller.GetNumberOfProcesses()
+
+    # The sphere and the field of TestOFBPluginDistributed.py: streamlines cross the piece
+    # borders in every direction.
+    sphere = Sphere(ThetaResolution=128, PhiResolution=64, Radius=0.5)
+    field = Calculator(Input=sphere, ResultArrayName="Field",
+                       Function="(-coordsY+0.3*coordsZ)*iHat+coordsX*jHat-0.3*coordsX*kHat")
+    pieces = RedistributeDataSet(Input=field)
+    surface = ExtractSurface(Input=pieces)
+    ghosted = GhostCellsGenerator(Input=surface, BuildIfRequired=0,
+                                  MinimumNumberOfGhosts=GHOST_LAYERS)
+    name = "surface-%d" % ranks
+    if empty_last:
+        name += "-empty"
+        ghosted = ProgrammableFilter(Input=ghosted, Script="""
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+controller = vtkMultiProcessController.GetGlobalController()
+if controller.GetLocalProcessId() != controller.GetNumberOfProcesses() - 1:
+    self.GetOutputDataObject(0).ShallowCopy(self.GetInputDataObject(0, 0))
+""")
+
+    view = CreateView("RenderView")
+    view.ViewSize = [SIZE, SIZE]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.0, 0.0, 0.0]
+    view.CameraPosition = [1.2, -2.2, 1.0]
+    view.CameraFocalPoint = [0, 0, 0]
+    view.CameraViewUp = [0, 0, 1]
+
+    display = Show(ghosted, view)
+    display.SetRepresentationType("OFB Surface")
+    display.ColorArrayName = ["POINTS", ""]
+    display.DiffuseColor = [0.9, 0.8, 0.6]
+    display.OFBResolution = RESOLUTION
+    display.OFBLIC = 1
+    display.SelectOFBInputVectors = ["POINTS", "Field"]
+    display.OFBNumberOfSteps = STEPS
+    SaveScreenshot(os.path.join(out_dir, name + ".png"), view, ImageResolution=[SIZE, SIZE])
+
+    # This process's frame, gathered on every process (each fills its own row).
+    display.SMProxy.UpdatePropertyInformation()
+    information = display.SMProxy.GetProperty("OFBFrame")
+    frame = [information.GetElement(i) for i in range(7)]
+    local = vtkDoubleArray()
+    local.SetNumberOfTuples(7 * ranks)
+    local.Fill(0.0)
+    for i, value in enumerate(frame):
+        local.SetValue(7 * rank + i, value)
+    frames = vtkDoubleArray()
+    controller.AllReduce(local, frames, vtkCommunicator.SUM_OP)
+    frames = [[frames.GetValue(7 * r + i) for i in range(7)] for r in range(ranks)]
+
+    if rank == 0:
+        with open(os.path.join(out_dir, name + ".json"), "w") as stream:
+            json.dump({"ranks": ranks, "frames": frames}, stream)
+        print("rendered on %d ranks, frames %s" % (ranks, frames), flush=True)
+    if empty_last:
+        return
+
+    # The pieces, each process's in its colour, unlit: where they meet is the border.
+    Hide(ghosted, view)
+    ids = ProcessIdScalars(Input=surface)
+    piece_display = Show(ids, view)
+    piece_display.SetRepresentationType("Surface")
+    ColorBy(piece_display, ("POINTS", "ProcessId"))
+    lut = GetColorTransferFunction("ProcessId")
+    lut.ApplyPreset("Rainbow Uniform", True)
+    lut.RescaleTransferFunction(0.0, 2.0)
+    piece_display.Ambient = 1.0
+    piece_display.Diffuse = 0.0
+    piece_display.Interpolation = "Flat"
+    SaveScreenshot(os.path.join(out_dir, "pieces-%d.png" % ranks), view,
+                   ImageResolution=[SIZE, SIZE])
+
+
+def read_png(path):
+    from vtkmodules.vtkIOImage import vtkPNGReader
+
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    if image.GetNumberOfPoints() == 0:
+        raise SystemExit("cannot read %s" % path)
+    return image
+
+
+def pixels(image):
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    width, height, _ = image.GetDimensions()
+    data = vtk_to_numpy(image.GetPointData().GetScalars())
+    return data.reshape(height, width, -1)[:, :, :3].astype(np.float64)
+
+
+def borders(pieces, mask):
+    """The pixels of the surface within SEAM_BAND pixels of a change of piece colour."""
+    import numpy as np
+
+    edge = np.zeros(mask.shape, dtype=bool)
+    for axis in (0, 1):
+        change = np.abs(np.diff(pieces, axis=axis)).max(axis=2) > 40
+        inside = mask[1:, :] & mask[:-1, :] if axis == 0 else mask[:, 1:] & mask[:, :-1]
+        change &= inside
+        if axis == 0:
+            edge[1:, :] |= change
+            edge[:-1, :] |= change
+        else:
+            edge[:, 1:] |= change
+            edge[:, :-1] |= change
+    band = edge.copy()
+    for _ in range(SEAM_BAND):
+        grown = band.copy()
+        grown[1:, :] |= band[:-1, :]
+        grown[:-1, :] |= band[1:, :]
+        grown[:, 1:] |= band[:, :-1]
+        grown[:, :-1] |= band[:, 1:]
+        band = grown
+    return band & mask
+
+
+def check_empty_last(count, out_dir, mine, check):
+    """--empty-last: one valid frame on every process, the other pieces' LIC shown."""
+    import numpy as np
+
+    frames = np.array(mine["frames"])
+    check(frames[0][3] > 0 and (frames[0][4:] > 2).all(),
+          "rank 0 has a frame: %s" % frames[0].tolist())
+    for rank, frame in enumerate(frames):
+        check((frame == frames[0]).all(), "(a) rank %d's OFB frame %s is rank 0's%s"
+              % (rank, frame.tolist(), " (its piece is empty)" if rank == count - 1 else ""))
+    lic = pixels(read_png(os.path.join(out_dir, "surface-%d-empty.png" % count))).mean(axis=2)
+    mask = lic > 2
+    padded = np.pad(lic, 1, mode="edge")
+    local = sum(padded[1 + dy:1 + dy + lic.shape[0], 1 + dx:1 + dx + lic.shape[1]]
+                for dy in (-1, 0, 1) for dx in (-1, 0, 1)) / 9.0
+    energy = float(((lic - local)[mask] ** 2).mean()) if mask.any() else 0.0
+    check(mask.mean() > 0.2 and energy > 20.0, "the other pieces show their LIC: %.2f of the "
+          "image, high-pass energy %.1f" % (mask.mean(), energy))
+
+
+def drive(argv):
+    """The driver, run by Debian's python3 with vtkOFB's package: runs pvbatch, checks."""
+    import numpy as np
+
+    empty_last = argv[-1] == "--empty-last"
+    if empty_last:
+        argv = argv[:-1]
+    count, mpiexec, pvbatch, paraview_python, keep_open, plugin, out_dir = argv
+    count = int(count)
+    os.makedirs(out_dir, exist_ok=True)
+    # pvbatch with ParaView's Python, and without the main build's libraries on the
+    # library path (the plugin's libraries of the same names are found through its RUNPATH).
+    env = dict(os.environ, PYTHONPATH=paraview_python)
+    env.pop("LD_LIBRARY_PATH", None)
+    command = [mpiexec, "-np", str(count), pvbatch, "--symmetric",
+               "--force-offscreen-rendering", keep_open, os.path.abspath(__file__),
+               plugin, out_dir] + (["--empty-last"] if empty_last else [])
+    print(" ".join(command), flush=True)
+    run = subprocess.run(command, env=env, timeout=540)
+    if run.returncode != 0:
+        raise SystemExit("pvbatch on %d ranks exited with %d" % (count, run.returncode))
+    if count == 1 and not empty_last:
+        print("wrote the one-process reference in %s" % out_dir)
+        return
+
+    failures = []
+
+    def check(condition, what):
+        print(("ok     " if condition else "FAILED ") + what, flush=True)
+        if not condition:
+            failures.append(what)
+
+    def load(name):
+        with open(os.path.join(out_dir, name)) as stream:
+            return json.load(stream)
+
+    if empty_last:
+        check_empty_last(count, out_dir, load("surface-%d-empty.json" % count), check)
+        if failures:
+            raise SystemExit("%d check(s) failed on %d ranks" % (len(failures), count))
+        print("all surface checks passed on %d ranks with an empty piece" % count)
+        return
+
+    one, mine = load("surface-1.json"), load("surface-%d.json" % count)
+    reference = np.array(one["frames"][0])
+    check(reference[3] > 0, "the one-process OFB has a frame: %s" % reference.tolist())
+    for rank, frame in enumerate(mine["frames"]):
+        frame = np.array(frame)
+        same = (np.abs(frame[:4] - reference[:4]) <= 1e-9 * max(1.0, reference[3])).all() and \
+            (frame[4:] == reference[4:]).all()
+        check(same, "(a) rank %d's OFB frame %s is the one-process frame %s"
+              % (rank, frame.tolist(), reference.tolist()))
+
+    import vtkofb
+
+    image = read_png(os.path.join(out_dir, "surface-%d.png" % count))
+    baseline = read_png(os.path.join(out_dir, "surface-1.png"))
+    comparison = vtkofb.vtkOFBImageComparison()
+    comparison.SetImage(image)
+    comparison.SetBaseline(baseline)
+    passed = comparison.Compare()
+    difference = comparison.GetDifferenceImage()
+    if difference is not None:
+        from vtkmodules.vtkIOImage import vtkPNGWriter
+
+        writer = vtkPNGWriter()
+        writer.SetFileName(os.path.join(out_dir, "surface-%d.diff.png" % count))
+        writer.SetInputData(difference)
+        writer.Write()
+    check(passed, "(b) the composited image against one process's (vtkOFBImageComparison): "
+          "correlation %.4f (at least %.2f), low-pass difference %.2f (at most %.1f), "
+          "outside %.4f %s" % (comparison.GetCorrelation(), comparison.GetCorrelationThreshold(),
+                               comparison.GetLowPassDifference(),
+                               comparison.GetLowPassThreshold(),
+                               comparison.GetImageDifferenceError(),
+                               comparison.GetErrorText()))
+
+    lic, lic_one = pixels(image), pixels(baseline)
+    mask = (lic.max(axis=2) > 2) & (lic_one.max(axis=2) > 2)
+    # Off the silhouette (the anti-aliased ring).
+    for _ in range(3):
+        inner = mask.copy()
+        inner[1:, :] &= mask[:-1, :]
+        inner[:-1, :] &= mask[1:, :]
+        inner[:, 1:] &= mask[:, :-1]
+        inner[:, :-1] &= mask[:, 1:]
+        mask = inner
+    band = borders(pixels(read_png(os.path.join(out_dir, "pieces-%d.png" % count))), mask)
+    rest = mask & ~band
+    check(band.sum() > 100 and rest.sum() > 1000, "the piece borders cross the view: %d border "
+          "pixels, %d others" % (band.sum(), rest.sum()))
+    grey = np.abs(lic.mean(axis=2) - lic_one.mean(axis=2))
+    band_mean = grey[band].mean() if band.any() else 0.0
+    rest_mean = grey[rest].mean() if rest.any() else 0.0
+    check(band_mean <= rest_mean + SEAM_TOLERANCE,
+          "(c) no seam: mean |difference| from one process %.2f at the piece borders, %.2f "
+          "elsewhere (at most %.1f more at the borders)" % (band_mean, rest_mean,
+                                                          SEAM_TOLERANCE))
+    if failures:
+        raise SystemExit("%d check(s) failed on %d ranks" % (len(failures), count))
+    print("all surface checks passed on %d ranks" % count)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) in (3, 4) and sys.argv[3:] in ([], ["--empty-last"]):
+        render(sys.argv[1], sys.argv[2], len(sys.argv) == 4)
+    elif len(sys.argv) in (8, 9):
+        drive(sys.argv[1:])
+    else:
+        raise SystemExit(__doc__)

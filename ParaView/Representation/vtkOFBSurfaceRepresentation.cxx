@@ -17,6 +17,7 @@
 #include "vtkOFB.h"
 #include "vtkOFBColoring.h"
 #include "vtkOFBLIC.h"
+#include "vtkOFBLICPyramid.h"
 #include "vtkOFBPLIC.h"
 #include "vtkOFBPSampler.h"
 #include "vtkOFBParaViewProbe.h"
@@ -49,6 +50,9 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
   , AnyInputLIC(false)
   , EmptyPiece(vtkSmartPointer<vtkPolyData>::New())
   , EmptyOFB(vtkSmartPointer<vtkOFB>::New())
+  , LICPyramid(vtkSmartPointer<vtkOFBLICPyramid>::New())
+  , OFBSource(nullptr)
+  , GhostedCells(0)
 {
   std::fill(this->OFBFrame, this->OFBFrame + 7, 0.0);
   // The OFB mapper replaces the superclass's full-resolution mapper; the LOD mapper stays.
@@ -63,7 +67,17 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
   // those the surface has (a request would make the pipeline execute at every update).
   this->LIC->SetNumberOfGhostLevels(0);
   this->LIC->SetInputConnection(this->Sampler->GetOutputPort());
-  this->OFBMapper->SetOFBConnection(this->Sampler->GetOutputPort());
+  // Under MPI the mapper is handed the OFB's data (SynchronizeOFB), never the pipeline:
+  // it would update it in its own time, on one process alone.
+  vtkMultiProcessController* controller = this->Sampler->GetController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    this->OFBSource = this->Sampler;
+  }
+  else
+  {
+    this->OFBMapper->SetOFBConnection(this->Sampler->GetOutputPort());
+  }
   this->OFBMapper->GetColoring()->SetLICIntensity(0.8);
 
   // Connects the new mapper to the actor, the selection and the backface actor.
@@ -97,6 +111,7 @@ int vtkOFBSurfaceRepresentation::RequestData(vtkInformation* request,
   {
     this->GhostedInput.TakeReference(input->NewInstance());
     this->GhostedInput->ShallowCopy(input);
+    this->GhostedCells = vtkOFBSurfaceRepresentation::CountCells(input, true);
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
@@ -117,9 +132,13 @@ int vtkOFBSurfaceRepresentation::ProcessViewRequest(vtkInformationRequestKey* re
     // A process without a piece samples an empty surface (it still takes part in the
     // collective calls under MPI).
     vtkDataObject* data = vtkPVView::GetDeliveredPiece(inInfo, this);
-    vtkDataObject* samplerInput = this->GhostedInput ? this->GhostedInput.Get()
-      : data                                         ? data
-                                                     : this->EmptyPiece.Get();
+    // The input with its ghost cells where the view renders it as it is (not where the
+    // view moved the surface between processes, for ordered compositing).
+    const bool ghosted = this->GhostedInput &&
+      vtkOFBSurfaceRepresentation::CountCells(data, false) == this->GhostedCells;
+    vtkDataObject* samplerInput = ghosted ? this->GhostedInput.Get()
+      : data                              ? data
+                                          : this->EmptyPiece.Get();
     if (this->Sampler->GetInputDataObject(0, 0) != samplerInput)
     {
       this->Sampler->SetInputDataObject(samplerInput);
@@ -159,23 +178,44 @@ void vtkOFBSurfaceRepresentation::SynchronizeOFB()
   }
 
   // The OFB the mapper reads is brought up to date here, by every process together,
-  // whenever one of them needs it: the mapper's own update then finds it up to date.
-  vtkAlgorithm* source = this->OFBMapper->GetNumberOfInputConnections(1) > 0
-    ? this->OFBMapper->GetInputAlgorithm(1, 0)
-    : nullptr;
-  const bool collective = source == this->Sampler || source == this->LIC;
-  int stale = collective && vtkOFBSurfaceRepresentation::NeedsUpdate(source) ? 1 : 0;
+  // whenever one of them needs it, and handed to the mapper as data.
+  vtkAlgorithm* source = this->OFBSource;
+  int stale = source && vtkOFBSurfaceRepresentation::NeedsUpdate(source) ? 1 : 0;
   int anyStale = 0;
   controller->AllReduce(&stale, &anyStale, 1, vtkCommunicator::MAX_OP);
-  if (anyStale && collective)
+  if (!source)
+  {
+    return;
+  }
+  if (anyStale)
   {
     // The first algorithm of the chain, so that every process runs all of it.
     vtkAlgorithm* first =
-      this->LIC->GetInputAlgorithm(0, 0) == this->Sampler || source == this->Sampler
+      source == this->Sampler || this->LIC->GetInputAlgorithm(0, 0) == this->Sampler
       ? static_cast<vtkAlgorithm*>(this->Sampler)
       : static_cast<vtkAlgorithm*>(this->LIC);
     first->Modified();
     source->Update();
+  }
+  vtkOFB* ofb = vtkOFB::SafeDownCast(source->GetOutputDataObject(0));
+  if (this->OFBMapper->GetOFB() != ofb)
+  {
+    this->OFBMapper->SetOFB(ofb);
+  }
+  // The mapper's automatic LIC pyramid (AutomaticLevelLIC) follows a LIC connected to it:
+  // here the LIC is given.
+  vtkOFBPyramid* pyramid = source == this->LIC &&
+      this->OFBMapper->GetLookupMode() == vtkOFBPolyDataMapper::LOOKUP_AUTOMATIC &&
+      this->OFBMapper->GetAutomaticLevelLIC()
+    ? this->LICPyramid.Get()
+    : nullptr;
+  if (pyramid && this->LICPyramid->GetLIC() != this->LIC)
+  {
+    this->LICPyramid->SetLIC(this->LIC);
+  }
+  if ((this->OFBMapper->GetPyramid() == this->LICPyramid) != (pyramid != nullptr))
+  {
+    this->OFBMapper->SetPyramid(pyramid);
   }
 }
 
@@ -210,9 +250,10 @@ double* vtkOFBSurfaceRepresentation::GetOFBFrame()
 {
   std::fill(this->OFBFrame, this->OFBFrame + 7, 0.0);
   vtkOFB* ofb = this->OFBMapper->GetOFB();
-  if ((!ofb || !(ofb->GetCellSize() > 0.0)) &&
-    this->OFBMapper->GetNumberOfInputConnections(1) > 0 &&
-    this->OFBMapper->GetInputAlgorithm(1, 0) == this->LIC)
+  const bool fromLIC = this->OFBSource == this->LIC ||
+    (this->OFBMapper->GetNumberOfInputConnections(1) > 0 &&
+      this->OFBMapper->GetInputAlgorithm(1, 0) == this->LIC);
+  if ((!ofb || !(ofb->GetCellSize() > 0.0)) && fromLIC)
   {
     // The LIC of an empty piece outputs no frame: the frame of the OFB it reads.
     ofb = vtkOFB::SafeDownCast(this->LIC->GetInputDataObject(0, 0));
@@ -322,6 +363,7 @@ void vtkOFBSurfaceRepresentation::UpdateLICConnection()
   if (inputOFB && (inputLIC || !lic))
   {
     // The input's OFB as it is: its paint, its arrays and its own LIC, if any.
+    this->OFBSource = nullptr;
     if (this->OFBMapper->GetOFB() != inputOFB)
     {
       this->OFBMapper->SetOFB(inputOFB);
@@ -344,7 +386,11 @@ void vtkOFBSurfaceRepresentation::UpdateLICConnection()
   }
   vtkAlgorithm* source =
     lic ? static_cast<vtkAlgorithm*>(this->LIC) : static_cast<vtkAlgorithm*>(this->Sampler);
-  if (this->OFBMapper->GetInputAlgorithm(1, 0) != source)
+  if (parallel)
+  {
+    this->OFBSource = source;
+  }
+  else if (this->OFBMapper->GetInputAlgorithm(1, 0) != source)
   {
     this->OFBMapper->SetOFBConnection(source->GetOutputPort());
   }
@@ -399,6 +445,46 @@ bool vtkOFBSurfaceRepresentation::UpdateVectors()
     }
   }
   return named || active;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBSurfaceRepresentation::CountCells(vtkDataObject* data, bool ownedOnly)
+{
+  vtkIdType count = 0;
+  auto visit = [&count, ownedOnly](vtkDataObject* object)
+  {
+    vtkDataSet* dataSet = vtkDataSet::SafeDownCast(object);
+    if (!dataSet)
+    {
+      return;
+    }
+    vtkDataArray* ghosts = ownedOnly
+      ? dataSet->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName())
+      : nullptr;
+    if (!ghosts)
+    {
+      count += dataSet->GetNumberOfCells();
+      return;
+    }
+    for (vtkIdType i = 0; i < ghosts->GetNumberOfTuples(); ++i)
+    {
+      count += ghosts->GetComponent(i, 0) == 0.0 ? 1 : 0;
+    }
+  };
+  if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      visit(it->GetCurrentDataObject());
+    }
+  }
+  else
+  {
+    visit(data);
+  }
+  return count;
 }
 
 //------------------------------------------------------------------------------

@@ -74,6 +74,7 @@ class vtkAlgorithm;
 class vtkDataObject;
 class vtkOFB;
 class vtkOFBLIC;
+class vtkOFBLICPyramid;
 class vtkOFBPLIC;
 class vtkOFBPSampler;
 class vtkOFBPolyDataMapper;
@@ -236,6 +237,12 @@ protected:
   static bool HasGhostCells(vtkDataObject* data);
 
   /**
+   * Cells of `data` (a dataset or the datasets of a composite one); with `ownedOnly`, those
+   * whose "vtkGhostType" is 0.
+   */
+  static vtkIdType CountCells(vtkDataObject* data, bool ownedOnly);
+
+  /**
    * Under MPI, at every render on every process: agrees with the other processes on
    * whether the LIC runs and which OFB it reads (a process whose piece is empty has no
    * field), then updates the OFB the mapper reads on every process where any process needs
@@ -267,7 +274,10 @@ protected:
   bool AnyInputOFB;
   bool AnyInputLIC;
   vtkSmartPointer<vtkPolyData> EmptyPiece;
-  vtkSmartPointer<vtkDataObject> GhostedInput; // under MPI, the input with its ghost cells
+  vtkSmartPointer<vtkDataObject> GhostedInput;  // under MPI, the input with its ghost cells
+  vtkSmartPointer<vtkOFBLICPyramid> LICPyramid; // under MPI, the mapper's LIC pyramid
+  vtkAlgorithm* OFBSource; // under MPI, the algorithm whose output the mapper is handed
+  vtkIdType GhostedCells;  // the owned cells of GhostedInput
   vtkSmartPointer<vtkOFB> EmptyOFB;
   double OFBFrame[7];
 

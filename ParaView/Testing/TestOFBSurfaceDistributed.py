@@ -70,9 +70,16 @@ def render(plugin, out_dir, empty_last):
         name += "-empty"
         ghosted = ProgrammableFilter(Input=ghosted, Script="""
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
+from vtkmodules.vtkCommonCore import vtkPoints
 controller = vtkMultiProcessController.GetGlobalController()
+source, output = self.GetInputDataObject(0, 0), self.GetOutputDataObject(0)
 if controller.GetLocalProcessId() != controller.GetNumberOfProcesses() - 1:
-    self.GetOutputDataObject(0).ShallowCopy(self.GetInputDataObject(0, 0))
+    output.ShallowCopy(source)
+else:
+    # No cells, the arrays kept (as a Threshold that selects nothing here).
+    output.SetPoints(vtkPoints())
+    output.GetPointData().CopyAllocate(source.GetPointData(), 0)
+    output.GetCellData().CopyAllocate(source.GetCellData(), 0)
 """)
 
     view = CreateView("RenderView")

@@ -46,9 +46,15 @@
  * whole surface's frame (OFB Sampler is a vtkOFBPSampler) and is used as it is. Every
  * process takes part in the collective calls at every render, also one whose piece is
  * empty: the representation updates its OFB before the render, on every process at once,
- * whenever any process needs it (SynchronizeOFB). The LIC reads the ghost cells that the
- * surface has (GhostCellsGenerator upstream); the representation does not ask for them.
- * GetOFBFrame() (the information property OFBFrame) gives the frame of the OFB rendered.
+ * whenever any process needs it, and hands the mapper the result as data (SetOFB, and
+ * the LIC pyramid with SetPyramid), so that the mapper never updates the pipeline on one
+ * process alone (SynchronizeOFB). ParaView's geometry filter removes ghost cells from the
+ * surface it delivers: where the input is polygonal with ghost cells (GhostCellsGenerator
+ * upstream) and the delivered surface has the input's owned cells, the input itself is
+ * sampled, ghost cells included, so that the LIC reads across the piece borders; the
+ * representation does not ask for ghost cells. The coarser levels of the mapper's pyramid
+ * are still sampled from each process's rendered piece. GetOFBFrame() (the information
+ * property OFBFrame) gives the frame of the OFB rendered.
  *
  * The level-of-detail mapper (ParaView's decimated surface while interacting with a
  * large surface) is the plain one of the superclass: it shows the same colour array

@@ -11,14 +11,18 @@ comparison) `MPIEXEC -np N PVBATCH --symmetric` on this script, which then rende
 Every process runs the pvbatch part. A sphere with a tangent field is distributed by
 RedistributeDataSet, GhostCellsGenerator adds ghost cells, and the surface is shown with
 the "OFB Surface" representation and its LIC (blended with the solid colour). ParaView
-composites the pieces' images (IceT). Written to DIR: surface-N.png (the LIC), pieces-N.png
-(the pieces, each in its own colour) and surface-N.json (every process's OFB frame).
+composites the pieces' images (IceT). Then the same surface carries an OFB: OFB Probe's,
+of OFB Sampler and OFB LIC (the distributed filters), shown as it is by the
+representation. Written to DIR: surface-N.png (the LIC), probe-N.png (the input OFB's
+LIC), pieces-N.png (the pieces, each in its own colour) and surface-N.json (every
+process's OFB frames).
 
 The one-process run is the reference; on N > 1 processes the driver checks:
 
-- (a) every process's OFB frame (origin, cell size, cells) is the one-process frame;
-- (b) the composited image passes vtkOFBImageComparison (the LIC-aware comparison of the
-  LIC image tests) against the one-process image;
+- (a) every process's OFB frame (origin, cell size, cells) is the one-process frame, for
+  the OFB the representation builds and for the input's;
+- (b) both composited images pass vtkOFBImageComparison (the LIC-aware comparison of the
+  LIC image tests) against the one-process images;
 - (c) no seam: the mean |difference| from the one-process image within SEAM_BAND pixels
   of the piece borders is at most SEAM_TOLERANCE levels (of 255) above that elsewhere on
   the surface.
@@ -52,6 +56,7 @@ def render(plugin, out_dir, empty_last):
     from vtkmodules.vtkParallelCore import vtkCommunicator, vtkMultiProcessController
 
     LoadPlugin(plugin, ns=globals())
+    ofb = globals()  # the plugin's filters, added by LoadPlugin
     controller = vtkMultiProcessController.GetGlobalController()
     rank = controller.GetLocalProcessId()
     ranks = controller.GetNumberOfProcesses()
@@ -101,28 +106,45 @@ else:
     display.OFBNumberOfSteps = STEPS
     SaveScreenshot(os.path.join(out_dir, name + ".png"), view, ImageResolution=[SIZE, SIZE])
 
-    # This process's frame, gathered on every process (each fills its own row).
-    display.SMProxy.UpdatePropertyInformation()
-    information = display.SMProxy.GetProperty("OFBFrame")
-    frame = [information.GetElement(i) for i in range(7)]
-    local = vtkDoubleArray()
-    local.SetNumberOfTuples(7 * ranks)
-    local.Fill(0.0)
-    for i, value in enumerate(frame):
-        local.SetValue(7 * rank + i, value)
-    frames = vtkDoubleArray()
-    controller.AllReduce(local, frames, vtkCommunicator.SUM_OP)
-    frames = [[frames.GetValue(7 * r + i) for i in range(7)] for r in range(ranks)]
+    def frames_of(shown):
+        """Every process's OFB frame of `shown`, on every process (each fills its row)."""
+        shown.SMProxy.UpdatePropertyInformation()
+        information = shown.SMProxy.GetProperty("OFBFrame")
+        local = vtkDoubleArray()
+        local.SetNumberOfTuples(7 * ranks)
+        local.Fill(0.0)
+        for i in range(7):
+            local.SetValue(7 * rank + i, information.GetElement(i))
+        gathered = vtkDoubleArray()
+        controller.AllReduce(local, gathered, vtkCommunicator.SUM_OP)
+        return [[gathered.GetValue(7 * r + i) for i in range(7)] for r in range(ranks)]
 
+    result = {"ranks": ranks, "frames": frames_of(display)}
+    if not empty_last:
+        # An OFB that the input carries: OFB Probe's, of OFB Sampler and OFB LIC (the
+        # distributed filters), shown as it is.
+        Hide(ghosted, view)
+        sampler = ofb["OFBSampler"](Input=ghosted, Resolution=RESOLUTION)
+        sampler.Vectors = ["POINTS", "Field"]
+        lic = ofb["OFBLIC"](Input=sampler, NumberOfSteps=STEPS, NumberOfGhostLevels=GHOST_LAYERS)
+        probe = ofb["OFBProbe"](Input=ghosted, OFB=lic)
+        probe_display = Show(probe, view)
+        probe_display.SetRepresentationType("OFB Surface")
+        probe_display.ColorArrayName = ["POINTS", ""]
+        probe_display.DiffuseColor = [0.9, 0.8, 0.6]
+        probe_display.OFBLIC = 1
+        SaveScreenshot(os.path.join(out_dir, "probe-%d.png" % ranks), view,
+                       ImageResolution=[SIZE, SIZE])
+        result["probe_frames"] = frames_of(probe_display)
+        Hide(probe, view)
     if rank == 0:
         with open(os.path.join(out_dir, name + ".json"), "w") as stream:
-            json.dump({"ranks": ranks, "frames": frames}, stream)
-        print("rendered on %d ranks, frames %s" % (ranks, frames), flush=True)
+            json.dump(result, stream)
+        print("rendered on %d ranks, frames %s" % (ranks, result["frames"]), flush=True)
     if empty_last:
         return
 
     # The pieces, each process's in its colour, unlit: where they meet is the border.
-    Hide(ghosted, view)
     ids = ProcessIdScalars(Input=surface)
     piece_display = Show(ids, view)
     piece_display.SetRepresentationType("Surface")
@@ -248,38 +270,39 @@ def drive(argv):
         return
 
     one, mine = load("surface-1.json"), load("surface-%d.json" % count)
-    reference = np.array(one["frames"][0])
-    check(reference[3] > 0, "the one-process OFB has a frame: %s" % reference.tolist())
-    for rank, frame in enumerate(mine["frames"]):
-        frame = np.array(frame)
-        same = (np.abs(frame[:4] - reference[:4]) <= 1e-9 * max(1.0, reference[3])).all() and \
-            (frame[4:] == reference[4:]).all()
-        check(same, "(a) rank %d's OFB frame %s is the one-process frame %s"
-              % (rank, frame.tolist(), reference.tolist()))
+    for key, what in (("frames", "OFB frame"), ("probe_frames", "input OFB's frame (OFB Probe)")):
+        reference = np.array(one[key][0])
+        check(reference[3] > 0, "the one-process %s: %s" % (what, reference.tolist()))
+        for rank, frame in enumerate(mine[key]):
+            frame = np.array(frame)
+            same = (np.abs(frame[:4] - reference[:4]) <= 1e-9 * max(1.0, reference[3])).all() \
+                and (frame[4:] == reference[4:]).all()
+            check(same, "(a) rank %d's %s %s is the one-process frame"
+                  % (rank, what, frame.tolist()))
 
     import vtkofb
+    from vtkmodules.vtkIOImage import vtkPNGWriter
 
+    def compare(name, what):
+        comparison = vtkofb.vtkOFBImageComparison()
+        comparison.SetImage(read_png(os.path.join(out_dir, "%s-%d.png" % (name, count))))
+        comparison.SetBaseline(read_png(os.path.join(out_dir, "%s-1.png" % name)))
+        passed = comparison.Compare()
+        if comparison.GetDifferenceImage() is not None:
+            writer = vtkPNGWriter()
+            writer.SetFileName(os.path.join(out_dir, "%s-%d.diff.png" % (name, count)))
+            writer.SetInputData(comparison.GetDifferenceImage())
+            writer.Write()
+        check(passed, "(b) %s against one process's (vtkOFBImageComparison): correlation %.4f "
+              "(at least %.2f), low-pass difference %.2f (at most %.1f), outside %.4f %s"
+              % (what, comparison.GetCorrelation(), comparison.GetCorrelationThreshold(),
+                 comparison.GetLowPassDifference(), comparison.GetLowPassThreshold(),
+                 comparison.GetImageDifferenceError(), comparison.GetErrorText()))
+
+    compare("surface", "the composited image")
+    compare("probe", "the composited image of the input OFB")
     image = read_png(os.path.join(out_dir, "surface-%d.png" % count))
     baseline = read_png(os.path.join(out_dir, "surface-1.png"))
-    comparison = vtkofb.vtkOFBImageComparison()
-    comparison.SetImage(image)
-    comparison.SetBaseline(baseline)
-    passed = comparison.Compare()
-    difference = comparison.GetDifferenceImage()
-    if difference is not None:
-        from vtkmodules.vtkIOImage import vtkPNGWriter
-
-        writer = vtkPNGWriter()
-        writer.SetFileName(os.path.join(out_dir, "surface-%d.diff.png" % count))
-        writer.SetInputData(difference)
-        writer.Write()
-    check(passed, "(b) the composited image against one process's (vtkOFBImageComparison): "
-          "correlation %.4f (at least %.2f), low-pass difference %.2f (at most %.1f), "
-          "outside %.4f %s" % (comparison.GetCorrelation(), comparison.GetCorrelationThreshold(),
-                               comparison.GetLowPassDifference(),
-                               comparison.GetLowPassThreshold(),
-                               comparison.GetImageDifferenceError(),
-                               comparison.GetErrorText()))
 
     lic, lic_one = pixels(image), pixels(baseline)
     mask = (lic.max(axis=2) > 2) & (lic_one.max(axis=2) > 2)

@@ -128,9 +128,9 @@ int vtkOFBSurfaceRepresentation::ProcessViewRequest(vtkInformationRequestKey* re
   if (requestType == vtkPVView::REQUEST_RENDER())
   {
     // The superclass gave the delivered surface to the mapper; the OFB is built from the
-    // same surface, where it is rendered, when the mapper updates its OFB input.
-    // A process without a piece samples an empty surface (it still takes part in the
-    // collective calls under MPI).
+    // same surface, where it is rendered: when the mapper updates its OFB input, or under
+    // MPI here (SynchronizeOFB). A process without a piece samples an empty surface (it
+    // still takes part in the collective calls).
     vtkDataObject* data = vtkPVView::GetDeliveredPiece(inInfo, this);
     // The input with its ghost cells where the view renders it as it is (not where the
     // view moved the surface between processes, for ordered compositing).
@@ -183,9 +183,24 @@ void vtkOFBSurfaceRepresentation::SynchronizeOFB()
   int stale = source && vtkOFBSurfaceRepresentation::NeedsUpdate(source) ? 1 : 0;
   int anyStale = 0;
   controller->AllReduce(&stale, &anyStale, 1, vtkCommunicator::MAX_OP);
+  // The mapper's automatic LIC pyramid (AutomaticLevelLIC) follows a LIC connected to it:
+  // here the LIC is given.
+  vtkOFBPyramid* pyramid = source == this->LIC &&
+      this->OFBMapper->GetLookupMode() == vtkOFBPolyDataMapper::LOOKUP_AUTOMATIC &&
+      this->OFBMapper->GetAutomaticLevelLIC()
+    ? this->LICPyramid.Get()
+    : nullptr;
+  if (pyramid && this->LICPyramid->GetLIC() != this->LIC)
+  {
+    this->LICPyramid->SetLIC(this->LIC);
+  }
+  if ((this->OFBMapper->GetPyramid() == this->LICPyramid) != (pyramid != nullptr))
+  {
+    this->OFBMapper->SetPyramid(pyramid);
+  }
   if (!source)
   {
-    return;
+    return; // the input's OFB, as it is (UpdateLICConnection)
   }
   if (anyStale)
   {
@@ -201,21 +216,6 @@ void vtkOFBSurfaceRepresentation::SynchronizeOFB()
   if (this->OFBMapper->GetOFB() != ofb)
   {
     this->OFBMapper->SetOFB(ofb);
-  }
-  // The mapper's automatic LIC pyramid (AutomaticLevelLIC) follows a LIC connected to it:
-  // here the LIC is given.
-  vtkOFBPyramid* pyramid = source == this->LIC &&
-      this->OFBMapper->GetLookupMode() == vtkOFBPolyDataMapper::LOOKUP_AUTOMATIC &&
-      this->OFBMapper->GetAutomaticLevelLIC()
-    ? this->LICPyramid.Get()
-    : nullptr;
-  if (pyramid && this->LICPyramid->GetLIC() != this->LIC)
-  {
-    this->LICPyramid->SetLIC(this->LIC);
-  }
-  if ((this->OFBMapper->GetPyramid() == this->LICPyramid) != (pyramid != nullptr))
-  {
-    this->OFBMapper->SetPyramid(pyramid);
   }
 }
 
@@ -255,7 +255,7 @@ double* vtkOFBSurfaceRepresentation::GetOFBFrame()
       this->OFBMapper->GetInputAlgorithm(1, 0) == this->LIC);
   if ((!ofb || !(ofb->GetCellSize() > 0.0)) && fromLIC)
   {
-    // The LIC of an empty piece outputs no frame: the frame of the OFB it reads.
+    // A LIC that output nothing (a piece without the field): the frame of the OFB it reads.
     ofb = vtkOFB::SafeDownCast(this->LIC->GetInputDataObject(0, 0));
   }
   if (!ofb || !(ofb->GetCellSize() > 0.0))

@@ -383,6 +383,10 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
     return 1;
   }
   const bool targetChanged = this->PrepareOFB(inputOFB, surface);
+  if (this->Exchange && this->AskForDeeperGhostCells(request, inputVector, true))
+  {
+    return 1; // executes again on deeper ghost cells, with no output this time
+  }
   const bool settingsChanged = this->NeedsRestart(seeds); // always: it records them
   bool restart = settingsChanged || rebuilt || targetChanged;
   if (this->Exchange)

@@ -465,6 +465,8 @@ protected:
   void PrepareUnsteadyStep(vtkIdType k);
   ///@}
   bool PrepareSurface(vtkPolyData* surface, vtkInformationVector** inputVector, bool& rebuilt);
+  /// The distance (world units) under which points are one point of the surface.
+  static double MergeTolerance(vtkPolyData* surface);
   bool PrepareOFB(vtkOFB* inputOFB, vtkPolyData* surface);
   bool NeedsRestart(vtkDataSet* seeds);
   /// False, with an error, when the particles would exceed MemoryLimit.
@@ -494,6 +496,20 @@ protected:
   void ExchangeParticles();
   bool OutputsParticle(vtkIdType i) const;
   /**
+   * Whether the ghost cells of every process's piece reach a step beyond its own
+   * triangles: when they do not, and a piece can grow, RequiredGhostLevels is raised
+   * and the pipeline asked to execute again (CONTINUE_EXECUTING), and true is
+   * returned (the caller outputs nothing this time). A collective call: `hasPiece`
+   * false for a process with an empty piece.
+   */
+  bool AskForDeeperGhostCells(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    bool hasPiece);
+  /// The edges where this process's piece ends (PieceBorder), after FindOwnedTriangles.
+  void FindPieceBorder();
+  /// Whether no triangle this process owns is within `reach` of where its piece ends.
+  bool GhostCellsCover(double reach);
+  /**
    * The collective calls of one update, for a process whose piece is empty (it has no
    * particles): the restart agreement, the start (seeds located over every process),
    * the number of steps and each step's exchange, as the other processes make them.
@@ -520,6 +536,10 @@ protected:
   /// Particles that left their process's triangles (on any process), counted by
   /// ExchangeParticles.
   vtkIdType NumberOfHandOffs = 0;
+
+  /// Distributed runs: the ghost levels of the surface that a step needs, at least (0
+  /// until a piece's ghost cells were found shallower than a step; never lowered).
+  int RequiredGhostLevels = 0;
 
   vtkOFB* OFB;
   vtkScalarsToColors* LookupTable;

@@ -226,7 +226,11 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
     }
   }
   in.FieldPerCell = perCell;
-  if (!in.Walker.Build(triangles, perCell ? nullptr : vectors, error, polygonCells.data()))
+  if (!in.Walker.Build(triangles,
+        perCell ? nullptr : vectors,
+        error,
+        polygonCells.data(),
+        vtkOFBParticleAdvector::MergeTolerance(surface)))
   {
     vtkErrorMacro("The input surface cannot carry particles: " << error << ".");
     return false;
@@ -261,6 +265,27 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
   }
   rebuilt = true;
   return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBParticleAdvector::MergeTolerance(vtkPolyData* surface)
+{
+  // Points a rounding error apart are one point of the surface: the pieces of a surface
+  // made apart (a source's pieces under MPI, each computing its seam points) repeat
+  // their seam points a few units in the last place apart, and a seam that is not one
+  // would be a boundary where particles stop. 1e-9 of the coordinates' scale is far
+  // above such rounding and far below any triangle.
+  double bounds[6];
+  surface->GetBounds(bounds);
+  double scale = 0.0;
+  for (int j = 0; j < 3; ++j)
+  {
+    scale = std::max({ scale,
+      bounds[2 * j + 1] - bounds[2 * j],
+      std::abs(bounds[2 * j]),
+      std::abs(bounds[2 * j + 1]) });
+  }
+  return std::isfinite(scale) ? 1e-9 * scale : 0.0;
 }
 
 //------------------------------------------------------------------------------

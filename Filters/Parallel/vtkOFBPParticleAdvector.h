@@ -54,11 +54,20 @@ public:
 
   ///@{
   /**
-   * Ghost levels asked of the surface (port 0), at least (default 2).
+   * Ghost levels asked of the surface (port 0), at least (default 2). When a piece's
+   * ghost cells end less than a step from its own triangles (a walk of a step could
+   * reach their end), every process asks for twice as many levels and executes again,
+   * up to 64 levels (GetRequiredGhostLevels).
    */
   vtkSetClampMacro(NumberOfGhostLevels, int, 0, 1024);
   vtkGetMacro(NumberOfGhostLevels, int);
   ///@}
+
+  /**
+   * The ghost levels that the steps needed, found by the updates so far (0 when
+   * NumberOfGhostLevels was enough; never lowered).
+   */
+  int GetRequiredGhostLevels() const { return this->RequiredGhostLevels; }
 
   /**
    * The particles handed from one process to another during the last update (the same

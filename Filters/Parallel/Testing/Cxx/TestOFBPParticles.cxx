@@ -20,7 +20,6 @@
 #include "vtkCell.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCommunicator.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkExtractPolyDataPiece.h"
 #include "vtkFloatArray.h"
@@ -31,10 +30,10 @@
 #include "vtkOFB.h"
 #include "vtkOFBPParticleAdvector.h"
 #include "vtkOFBPSampler.h"
+#include "vtkOFBPTestSupport.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSphereSource.h"
 #include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -51,33 +50,6 @@ namespace
 constexpr int Steps = 60;
 /// --border: the step (cells), beyond one ring of ghost triangles near the poles.
 constexpr double BorderStep = 4.0;
-
-/// A sphere with a swirl "Field" that carries particles around and across it.
-vtkSmartPointer<vtkPolyData> MakeSphere()
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(24);
-  sphere->SetRadius(0.5);
-  sphere->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(sphere->GetOutput());
-  vtkNew<vtkFloatArray> field;
-  field->SetName("Field");
-  field->SetNumberOfComponents(3);
-  field->SetNumberOfTuples(mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    const double v[3] = {
-      -p[1] + 0.8 * p[2] * p[0], p[0] + 0.8 * p[2] * p[1], -0.8 * (p[0] * p[0] + p[1] * p[1])
-    };
-    field->SetTuple(i, v);
-  }
-  mesh->GetPointData()->SetVectors(field);
-  return mesh;
-}
 
 /// Seeds spread over the sphere (a Fibonacci spiral), the same on every process.
 vtkSmartPointer<vtkPolyData> MakeSeeds(int n)
@@ -154,27 +126,6 @@ Result Collect(vtkOFBPParticleAdvector* advector)
     }
   }
   return result;
-}
-
-/// Every process's `local` rows on the first process.
-std::vector<double> Gather(vtkMultiProcessController* controller, const std::vector<double>& local)
-{
-  const int size = controller->GetNumberOfProcesses();
-  std::vector<vtkIdType> counts(size), offsets(size);
-  const vtkIdType count = static_cast<vtkIdType>(local.size());
-  controller->Gather(&count, counts.data(), 1, 0);
-  vtkIdType total = 0;
-  for (int r = 0; r < size; ++r)
-  {
-    offsets[r] = total;
-    total += counts[r];
-  }
-  std::vector<double> all(std::max<vtkIdType>(total, 1));
-  const double none = 0.0;
-  controller->GatherV(
-    local.empty() ? &none : local.data(), all.data(), count, counts.data(), offsets.data(), 0);
-  all.resize(controller->GetLocalProcessId() == 0 ? total : 0);
-  return all;
 }
 
 /// Rows of `width` values sorted.
@@ -310,8 +261,8 @@ int Compare(vtkMultiProcessController* controller,
   }
   distributed.Advector->UpdateTimeStep(Steps, std::min(rank, pieces - 1), pieces, 0);
   const Result mine = Collect(distributed.Advector);
-  const std::vector<double> particles = Gather(controller, mine.Particles);
-  const std::vector<double> samples = Gather(controller, mine.Samples);
+  const std::vector<double> particles = vtkofbtest::GatherOnFirst(controller, mine.Particles);
+  const std::vector<double> samples = vtkofbtest::GatherOnFirst(controller, mine.Samples);
 
   int ok = 1;
   if (rank == 0)
@@ -390,7 +341,7 @@ int main(int argc, char* argv[])
   vtkMultiProcessController::SetGlobalController(controller);
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
-  vtkSmartPointer<vtkPolyData> mesh = MakeSphere();
+  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::MakeSwirlSphere(true);
   vtkSmartPointer<vtkPolyData> seeds = MakeSeeds(40);
   bool emptyLast = false;
   bool badInput = false;
@@ -404,15 +355,7 @@ int main(int argc, char* argv[])
   const int pieces = emptyLast && size > 1 ? size - 1 : size;
   if (badInput)
   {
-    int ok = RunBadInput(controller, mesh, seeds) ? 1 : 0;
-    int all = 0;
-    controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
-    if (rank == 0)
-    {
-      std::printf("%s\n", all ? "PASS" : "FAIL");
-    }
-    controller->Finalize();
-    return all ? 0 : 1;
+    return vtkofbtest::FinishAll(controller, RunBadInput(controller, mesh, seeds));
   }
 
   int ok = 1;
@@ -447,7 +390,5 @@ int main(int argc, char* argv[])
   {
     ok = Compare(controller, mesh, seeds, pieces, 1.5, 2, false);
   }
-  controller->Broadcast(&ok, 1, 0);
-  controller->Finalize();
-  return ok ? 0 : 1;
+  return vtkofbtest::FinishFirst(controller, ok);
 }

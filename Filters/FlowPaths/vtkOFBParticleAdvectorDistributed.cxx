@@ -517,10 +517,22 @@ void vtkOFBParticleAdvector::ExchangeParticles()
   }
   std::vector<double> all;
   this->Exchange->AllGather(local, all);
-
-  // Every other process's particles: their states, and their trails as they grew.
-  const size_t count = all.size() / RecordSize;
   std::vector<vtkIdType> leaving;
+  this->ReceiveStates(all, leaving);
+  if (!leaving.empty())
+  {
+    this->HandOff(all, leaving);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::ReceiveStates(const std::vector<double>& all,
+  std::vector<vtkIdType>& leaving)
+{
+  // Every other process's particles: their states, and their trails as they grew.
+  vtkOFBParticleSystem& system = this->Internals->System;
+  const double rank = static_cast<double>(this->Exchange->GetRank());
+  const size_t count = all.size() / RecordSize;
   for (size_t r = 0; r < count; ++r)
   {
     const double* record = all.data() + r * RecordSize;
@@ -559,17 +571,22 @@ void vtkOFBParticleAdvector::ExchangeParticles()
       system.PushTrail(i, p.Position);
     }
   }
-  if (leaving.empty())
-  {
-    return;
-  }
+}
 
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::HandOff(const std::vector<double>& all,
+  const std::vector<vtkIdType>& leaving)
+{
   // Particles whose step ended on a ghost triangle of their process: to the process
   // that owns that triangle (the one with the same centroid), where they take the same
   // barycentric coordinates, so that they go on as on one process. Failing that (no
   // such triangle), to the process whose own triangle is closest to their position
   // (the lowest rank of equal ones); kept where they were if no process owns a
   // triangle there.
+  vtkInternals& in = *this->Internals;
+  vtkOFBParticleSystem& system = in.System;
+  std::vector<unsigned char>& owned = in.Owned;
+  const double rank = static_cast<double>(this->Exchange->GetRank());
   const size_t m = leaving.size();
   this->NumberOfHandOffs += static_cast<vtkIdType>(m);
   std::vector<double> claims(m, Unclaimed);
@@ -677,18 +694,7 @@ void vtkOFBParticleAdvector::ParticipateWithoutPiece(vtkDataSet* seeds,
   }
   else
   {
-    for (int i = 0; i < 3; ++i)
-    {
-      vtkInformation* info = outputVector->GetInformationObject(i);
-      if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-      {
-        const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-        target = std::isfinite(t) && t > 0.0
-          ? static_cast<vtkIdType>(std::min(std::floor(t + 1e-9), 9.0e18))
-          : 0;
-        break;
-      }
-    }
+    target = vtkOFBParticleAdvector::RequestedStep(outputVector, target);
     if (target < system.CurrentStep && !start())
     {
       return;

@@ -6,15 +6,16 @@
  * NumberOfGhostLevels levels, and more when they do not cover one step: StepSize cells,
  * and the stages of the integrator within it) and paints its piece of the OFB (port 1,
  * from vtkOFBPSampler). Points a rounding error apart are one point of the surface, so
- * the seams of pieces made apart join. The seeds (port 2) are the same on every process: each seed goes
- * to the process whose own (non-ghost) triangle is closest to it. Each process
- * advances the particles it owns; after every step the states of all particles are sent
- * to every process (an all-gather of 23 doubles a particle), so that every process
- * paints every footprint into its own samples in particle order, and a particle whose
- * step ended on a ghost triangle goes to the process that owns that triangle, found by
- * the particle's position (two all-reduces over the particles that left). No particle
- * is lost or duplicated: one not claimed stays where it was. Each process outputs the
- * particles (port 1) and trails (port 2) it owns; together they are one process's.
+ * the seams of pieces made apart join. The seeds (port 2) are the same on every
+ * process: each seed goes to the process whose own (non-ghost) triangle is closest to
+ * it. Each process advances the particles it owns; after every step the states of all
+ * particles are sent to every process (an all-gather of 23 doubles a particle), so that
+ * every process paints every footprint into its own samples in particle order, and a
+ * particle whose step ended on a ghost triangle goes to the process that owns that
+ * triangle, found by the particle's position (two all-reduces over the particles that
+ * left). No particle is lost or duplicated: one not claimed stays where it was. Each
+ * process outputs the particles (port 1) and trails (port 2) it owns; together they are
+ * one process's.
  *
  * Limits: seeds are required and Lifetime must be 0 (random seeds and reseeds are drawn
  * from each piece's own triangles): otherwise an error on every process. The field's

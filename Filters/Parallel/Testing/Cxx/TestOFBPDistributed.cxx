@@ -381,15 +381,9 @@ int main(int argc, char* argv[])
   vtkMultiProcessController::SetGlobalController(controller);
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
-  bool emptyLast = false;
-  bool badInput = false;
-  for (int i = 1; i < argc; ++i)
-  {
-    emptyLast = emptyLast || !std::strcmp(argv[i], "--empty-last");
-    badInput = badInput || !std::strcmp(argv[i], "--bad-input");
-  }
-  const int pieces = emptyLast && size > 1 ? size - 1 : size;
-  if (badInput)
+  const int pieces =
+    vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));
+  if (vtkofbtest::HasFlag(argc, argv, "--bad-input"))
   {
     return vtkofbtest::FinishAll(controller, RunBadInput(controller, pieces));
   }

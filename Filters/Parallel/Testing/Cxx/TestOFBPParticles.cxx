@@ -340,20 +340,12 @@ int main(int argc, char* argv[])
   controller->Initialize(&argc, &argv);
   vtkMultiProcessController::SetGlobalController(controller);
   const int rank = controller->GetLocalProcessId();
-  const int size = controller->GetNumberOfProcesses();
   vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::MakeSwirlSphere(true);
   vtkSmartPointer<vtkPolyData> seeds = MakeSeeds(40);
-  bool emptyLast = false;
-  bool badInput = false;
-  bool border = false;
-  for (int i = 1; i < argc; ++i)
-  {
-    border = border || !std::strcmp(argv[i], "--border");
-    emptyLast = emptyLast || !std::strcmp(argv[i], "--empty-last");
-    badInput = badInput || !std::strcmp(argv[i], "--bad-input");
-  }
-  const int pieces = emptyLast && size > 1 ? size - 1 : size;
-  if (badInput)
+  const bool border = vtkofbtest::HasFlag(argc, argv, "--border");
+  const int pieces =
+    vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));
+  if (vtkofbtest::HasFlag(argc, argv, "--bad-input"))
   {
     return vtkofbtest::FinishAll(controller, RunBadInput(controller, mesh, seeds));
   }

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace vtkofbtest
@@ -47,6 +48,20 @@ inline vtkSmartPointer<vtkPolyData> MakeSwirlSphere(bool normals)
   }
   mesh->GetPointData()->SetVectors(field);
   return mesh;
+}
+
+/// Whether the command line has `flag`.
+inline bool HasFlag(int argc, char* argv[], const char* flag)
+{
+  return std::any_of(
+    argv + 1, argv + argc, [flag](const char* a) { return !std::strcmp(a, flag); });
+}
+
+/// The number of pieces: one a process, but the last process's is empty with `emptyLast`.
+inline int NumberOfPieces(vtkMultiProcessController* controller, bool emptyLast)
+{
+  const int size = controller->GetNumberOfProcesses();
+  return emptyLast && size > 1 ? size - 1 : size;
 }
 
 /// Every process's `local` values, in the order of the processes, on the first process

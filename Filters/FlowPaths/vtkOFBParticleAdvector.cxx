@@ -352,39 +352,68 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  for (int i = 0; i < 3; ++i)
+  {
+    vtkDataObject::GetData(outputVector, i)->Initialize();
+  }
+  vtkDataSet* seeds = inputVector[2]->GetNumberOfInformationObjects() > 0
+    ? vtkDataSet::GetData(inputVector[2], 0)
+    : nullptr;
+  bool restart = false;
+  vtkIdType target = 0;
+  if (!this->PrepareUpdate(request, inputVector, seeds, restart) ||
+    !this->PlanSteps(request, inputVector, outputVector, seeds, restart, target))
+  {
+    return 1;
+  }
+  this->PrepareColoring(vtkPolyData::GetData(inputVector[0], 0));
+  this->AdvanceTo(target);
+  this->WriteOutputs(outputVector);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::StopParticles()
+{
+  vtkInternals& in = *this->Internals;
+  in.Started = false;
+  this->ClearFootprints();
+  in.PendingSteps = 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::PrepareUpdate(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkDataSet* seeds,
+  bool& restart)
+{
+  // The surface, its field and the OFB; the particles started again when what places or
+  // moves them changed (on every process when one does).
   vtkInternals& in = *this->Internals;
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[0], 0);
   vtkOFB* inputOFB = inputVector[1]->GetNumberOfInformationObjects() > 0
     ? vtkOFB::GetData(inputVector[1], 0)
     : nullptr;
-  vtkDataSet* seeds = inputVector[2]->GetNumberOfInformationObjects() > 0
-    ? vtkDataSet::GetData(inputVector[2], 0)
-    : nullptr;
-  vtkOFB* outOFB = vtkOFB::GetData(outputVector, 0);
-  vtkPolyData* outParticles = vtkPolyData::GetData(outputVector, 1);
-  vtkPolyData* outTrails = vtkPolyData::GetData(outputVector, 2);
-  outOFB->Initialize();
-  outParticles->Initialize();
-  outTrails->Initialize();
   const bool unsteady = this->IsUnsteady(inputVector);
   if (unsteady != in.Unsteady)
   {
     in.Unsteady = unsteady;
     in.SurfaceObject = nullptr; // rebuilt: restart
   }
-
   bool rebuilt = false;
   if (!this->CheckSettings() || !this->PrepareSurface(surface, inputVector, rebuilt))
   {
-    in.Started = false;
-    this->ClearFootprints();
+    this->StopParticles();
     in.SurfaceObject = nullptr;
-    in.PendingSteps = 0;
-    return 1;
+    return false;
   }
   const bool targetChanged = this->PrepareOFB(inputOFB, surface);
+  if (this->Exchange && this->AskForDeeperGhostCells(request, inputVector, true))
+  {
+    return false; // executes again on deeper ghost cells, with no output this time
+  }
   const bool settingsChanged = this->NeedsRestart(seeds); // always: it records them
-  bool restart = settingsChanged || rebuilt || targetChanged;
+  restart = settingsChanged || rebuilt || targetChanged;
   if (this->Exchange)
   {
     // Every process starts again when one does (see ParticipateWithoutPiece).
@@ -392,71 +421,30 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
   }
   if (restart && !this->StartParticles(seeds))
   {
-    in.Started = false;
-    this->ClearFootprints();
-    in.PendingSteps = 0;
-    return 1;
+    this->StopParticles();
+    return false;
   }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::PlanSteps(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector,
+  vtkDataSet* seeds,
+  bool restart,
+  vtkIdType& target)
+{
   // How far to go: the steps asked for by Step(), else the requested time.
+  vtkInternals& in = *this->Internals;
   vtkOFBParticleSystem& system = in.System;
-  vtkIdType target = system.CurrentStep;
-  double requested = in.TimeNew; // an unsteady input's time, without a request
+  target = system.CurrentStep;
   if (in.Unsteady)
   {
-    // Pathlines: from the particles' time to the requested one (time backwards: a
-    // restart there); Step() has no effect.
-    for (int i = 0; i < 3; ++i)
+    if (!this->PlanPathlineSteps(request, inputVector, outputVector, seeds, restart))
     {
-      vtkInformation* info = outputVector->GetInformationObject(i);
-      if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-      {
-        requested = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-        break;
-      }
-    }
-    if (!std::isfinite(requested))
-    {
-      vtkErrorMacro("The requested time is not finite: no particles.");
-      in.Started = false;
-      this->ClearFootprints();
-      in.PendingSteps = 0;
-      return 1;
-    }
-    if (!restart && requested < in.ParticleTime && !this->StartParticles(seeds))
-    {
-      in.Started = false;
-      this->ClearFootprints();
-      in.PendingSteps = 0;
-      return 1;
-    }
-    if (restart || requested < in.ParticleTime)
-    {
-      // From the seeds at the requested time, with the field of the step just read.
-      in.ParticleTime = requested;
-      in.FieldOld = in.FieldNew;
-      in.TimeOld = in.TimeNew;
-      in.SpeedOld = in.SpeedNew;
-    }
-    // One input step at a time: up to the step just read when the requested time is
-    // beyond it and the input has more, and then again (CONTINUE_EXECUTING, as
-    // vtkParticleTracer does) with the next one.
-    in.Goal = requested;
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-    const double* steps = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-    const int numSteps = inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-    if (in.TimeNew < requested && in.TimeNew > in.ParticleTime &&
-      std::upper_bound(steps, steps + numSteps, in.TimeNew) != steps + numSteps)
-    {
-      in.Goal = in.TimeNew;
-    }
-    if (in.Goal < requested)
-    {
-      request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
-    }
-    else
-    {
-      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+      this->StopParticles();
+      return false;
     }
     target = system.CurrentStep + this->PlanUnsteadySteps(in.Goal);
   }
@@ -466,29 +454,82 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
   }
   else
   {
-    for (int i = 0; i < 3; ++i)
-    {
-      vtkInformation* info = outputVector->GetInformationObject(i);
-      if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-      {
-        const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-        // Clamped before the conversion, which overflows (undefined) beyond 2^63.
-        target = std::isfinite(t) && t > 0.0
-          ? static_cast<vtkIdType>(std::min(std::floor(t + 1e-9), 9.0e18))
-          : 0;
-        break;
-      }
-    }
+    target = vtkOFBParticleAdvector::RequestedStep(outputVector, target);
     if (target < system.CurrentStep && !this->StartParticles(seeds))
     {
-      in.Started = false;
-      this->ClearFootprints();
-      return 1;
+      this->StopParticles();
+      return false;
     }
   }
   in.PendingSteps = 0;
+  return true;
+}
 
-  this->PrepareColoring(surface);
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::PlanPathlineSteps(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector,
+  vtkDataSet* seeds,
+  bool restart)
+{
+  // Pathlines: from the particles' time to the requested one (time backwards: a
+  // restart there); Step() has no effect.
+  vtkInternals& in = *this->Internals;
+  double requested = in.TimeNew; // an unsteady input's time, without a request
+  for (int i = 0; i < 3; ++i)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(i);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    {
+      requested = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      break;
+    }
+  }
+  if (!std::isfinite(requested))
+  {
+    vtkErrorMacro("The requested time is not finite: no particles.");
+    return false;
+  }
+  if (!restart && requested < in.ParticleTime && !this->StartParticles(seeds))
+  {
+    return false;
+  }
+  if (restart || requested < in.ParticleTime)
+  {
+    // From the seeds at the requested time, with the field of the step just read.
+    in.ParticleTime = requested;
+    in.FieldOld = in.FieldNew;
+    in.TimeOld = in.TimeNew;
+    in.SpeedOld = in.SpeedNew;
+  }
+  // One input step at a time: up to the step just read when the requested time is
+  // beyond it and the input has more, and then again (CONTINUE_EXECUTING, as
+  // vtkParticleTracer does) with the next one.
+  in.Goal = requested;
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  const double* steps = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  const int numSteps = inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  if (in.TimeNew < requested && in.TimeNew > in.ParticleTime &&
+    std::upper_bound(steps, steps + numSteps, in.TimeNew) != steps + numSteps)
+  {
+    in.Goal = in.TimeNew;
+  }
+  if (in.Goal < requested)
+  {
+    request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+  }
+  else
+  {
+    request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::AdvanceTo(vtkIdType target)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOFBParticleSystem& system = in.System;
   const vtkIdType first = system.CurrentStep;
   if (this->Exchange)
   {
@@ -532,26 +573,51 @@ int vtkOFBParticleAdvector::RequestData(vtkInformation* request,
       this->UpdateProgress(static_cast<double>(step - first) / (target - first));
     }
   }
+}
 
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::WriteOutputs(vtkInformationVector* outputVector)
+{
+  vtkInternals& in = *this->Internals;
   const auto outputStart = Clock::now();
   if (in.Target)
   {
-    outOFB->ShallowCopy(in.Target);
+    vtkOFB::GetData(outputVector, 0)->ShallowCopy(in.Target);
   }
-  this->FillParticles(outParticles);
-  this->FillTrails(outTrails);
+  this->FillParticles(vtkPolyData::GetData(outputVector, 1));
+  this->FillTrails(vtkPolyData::GetData(outputVector, 2));
   in.OutputTime = Milliseconds(Clock::now() - outputStart);
   if (in.Unsteady)
   {
     in.ParticleTime = in.Goal;
   }
-  const double time = in.Unsteady ? in.ParticleTime : static_cast<double>(system.CurrentStep);
+  const double time = in.Unsteady ? in.ParticleTime : static_cast<double>(in.System.CurrentStep);
   for (int i = 0; i < 3; ++i)
   {
     vtkDataObject* output = vtkDataObject::GetData(outputVector, i);
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
   }
-  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBParticleAdvector::RequestedStep(vtkInformationVector* outputVector,
+  vtkIdType otherwise)
+{
+  // The first output that has a time request: its time in whole steps (a time of
+  // steady particles is their number of steps from the seeds).
+  for (int i = 0; i < 3; ++i)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(i);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    {
+      const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      // Clamped before the conversion, which overflows (undefined) beyond 2^63.
+      return std::isfinite(t) && t > 0.0
+        ? static_cast<vtkIdType>(std::min(std::floor(t + 1e-9), 9.0e18))
+        : 0;
+    }
+  }
+  return otherwise;
 }
 
 //------------------------------------------------------------------------------

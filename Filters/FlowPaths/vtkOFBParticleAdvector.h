@@ -450,6 +450,31 @@ protected:
    * The steps of RequestData (see the .cxx).
    */
   bool CheckSettings();
+  /// The surface, field and OFB prepared, the particles started when needed (false:
+  /// no output this time).
+  bool PrepareUpdate(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkDataSet* seeds,
+    bool& restart);
+  /// The step to go to (false, particles stopped: no output).
+  bool PlanSteps(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector,
+    vtkDataSet* seeds,
+    bool restart,
+    vtkIdType& target);
+  /// Pathlines: the time this execution goes to (Goal), the next one asked for.
+  bool PlanPathlineSteps(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector,
+    vtkDataSet* seeds,
+    bool restart);
+  /// The steps up to `target` (every process's most), the footprints painted.
+  void AdvanceTo(vtkIdType target);
+  /// The painted OFB, the particles and trails, and their time.
+  void WriteOutputs(vtkInformationVector* outputVector);
+  /// No particles until they start again.
+  void StopParticles();
   ///@{
   /**
    * Pathlines through an unsteady input (vtkOFBParticleAdvectorTime.cxx): whether
@@ -465,6 +490,14 @@ protected:
   void PrepareUnsteadyStep(vtkIdType k);
   ///@}
   bool PrepareSurface(vtkPolyData* surface, vtkInformationVector** inputVector, bool& rebuilt);
+  /// The surface's vector field and its association, checked (null, with an error, if none).
+  vtkDataArray* FindSurfaceVectors(vtkPolyData* surface,
+    vtkInformationVector** inputVector,
+    int& association);
+  /// The walker, owned triangles and locator of the surface's triangles.
+  bool BuildWalker(vtkPolyData* surface, vtkDataArray* vectors, bool perCell);
+  /// The distance (world units) under which points are one point of the surface.
+  static double MergeTolerance(vtkPolyData* surface);
   bool PrepareOFB(vtkOFB* inputOFB, vtkPolyData* surface);
   bool NeedsRestart(vtkDataSet* seeds);
   /// False, with an error, when the particles would exceed MemoryLimit.
@@ -480,6 +513,9 @@ protected:
   void FillTrails(vtkPolyData* output);
   ///@}
 
+  /// The step that the outputs' time request asks for (steady particles), else `otherwise`.
+  static vtkIdType RequestedStep(vtkInformationVector* outputVector, vtkIdType otherwise);
+
   ///@{
   /**
    * Distributed runs (vtkOFBParticleAdvectorDistributed.cxx), with Exchange set: the
@@ -492,7 +528,26 @@ protected:
   void FindOwnedTriangles(vtkPolyData* surface, const std::vector<vtkIdType>& polygonCells);
   bool LocateSeedsOverProcesses(vtkDataSet* seeds);
   void ExchangeParticles();
+  /// ExchangeParticles' steps: the states of the other processes' particles taken from
+  /// `all` (every process's records), the records of those that left their process's
+  /// triangles into `leaving`; those handed to the processes that own where they are.
+  void ReceiveStates(const std::vector<double>& all, std::vector<vtkIdType>& leaving);
+  void HandOff(const std::vector<double>& all, const std::vector<vtkIdType>& leaving);
   bool OutputsParticle(vtkIdType i) const;
+  /**
+   * Whether the ghost cells of every process's piece reach a step beyond its own
+   * triangles: when they do not, and a piece can grow, RequiredGhostLevels is raised
+   * and the pipeline asked to execute again (CONTINUE_EXECUTING), and true is
+   * returned (the caller outputs nothing this time). A collective call: `hasPiece`
+   * false for a process with an empty piece.
+   */
+  bool AskForDeeperGhostCells(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    bool hasPiece);
+  /// The edges where this process's piece ends (PieceBorder), after FindOwnedTriangles.
+  void FindPieceBorder();
+  /// Whether no triangle this process owns is within `reach` of where its piece ends.
+  bool GhostCellsCover(double reach);
   /**
    * The collective calls of one update, for a process whose piece is empty (it has no
    * particles): the restart agreement, the start (seeds located over every process),
@@ -520,6 +575,10 @@ protected:
   /// Particles that left their process's triangles (on any process), counted by
   /// ExchangeParticles.
   vtkIdType NumberOfHandOffs = 0;
+
+  /// Distributed runs: the ghost levels of the surface that a step needs, at least (0
+  /// until a piece's ghost cells were found shallower than a step; never lowered).
+  int RequiredGhostLevels = 0;
 
   vtkOFB* OFB;
   vtkScalarsToColors* LookupTable;

@@ -12,6 +12,7 @@
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLine.h"
 #include "vtkNew.h"
 #include "vtkOFBParticleExchange.h"
 #include "vtkPointData.h"
@@ -64,15 +65,216 @@ void vtkOFBParticleAdvector::FindOwnedTriangles(vtkPolyData* surface,
   const vtkIdType n = this->Internals->Walker.GetTriangles()->GetNumberOfCells();
   owned.assign(n, 1);
   vtkDataArray* ghosts = surface->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName());
-  if (!ghosts || static_cast<vtkIdType>(polygonCells.size()) != n)
-  {
-    return;
-  }
-  for (vtkIdType t = 0; t < n; ++t)
+  for (vtkIdType t = 0; ghosts && static_cast<vtkIdType>(polygonCells.size()) == n && t < n; ++t)
   {
     const vtkIdType cell = polygonCells[t];
     owned[t] = cell >= 0 && cell < ghosts->GetNumberOfTuples() && ghosts->GetTuple1(cell) == 0.0;
   }
+  this->FindPieceBorder();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::FindPieceBorder()
+{
+  // Ghost levels are rings of triangles that share a point with the ring inside them
+  // (vtkExtractPolyDataPiece's and ParaView's GhostCellsGenerator's): every triangle of
+  // the inner rings has its neighbours in the piece, so a boundary edge there is a
+  // boundary of the surface, and the piece ends at the boundary edges of the outermost
+  // ring. The rings are found again here, from the owned triangles out through the
+  // points (points that are one point of the surface are one).
+  vtkInternals& in = *this->Internals;
+  in.PieceBorder.clear();
+  in.CheckedReach = -1.0;
+  const std::vector<unsigned char>& owned = in.TriangleOwned;
+  const vtkOFBTriangleWalker& walker = in.Walker;
+  const vtkIdType n = walker.GetNumberOfTriangles();
+  if (owned.empty() || std::all_of(owned.begin(), owned.end(), [](unsigned char o) { return o; }))
+  {
+    return;
+  }
+  // The triangles of each point (by its key), in compressed rows.
+  const vtkIdType numPoints = walker.GetTriangles()->GetNumberOfPoints();
+  std::vector<vtkIdType> start(static_cast<size_t>(numPoints) + 1, 0);
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      ++start[walker.GetPointKey(walker.GetCorner(t, i)) + 1];
+    }
+  }
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    start[p + 1] += start[p];
+  }
+  std::vector<vtkIdType> fill(start.begin(), start.end() - 1);
+  std::vector<vtkIdType> triangles(static_cast<size_t>(start.back()));
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      triangles[fill[walker.GetPointKey(walker.GetCorner(t, i))]++] = t;
+    }
+  }
+  // The rings: 0 for the owned triangles, then outwards.
+  std::vector<int> ring(static_cast<size_t>(n), -1);
+  std::vector<vtkIdType> front;
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    if (owned[t])
+    {
+      ring[t] = 0;
+      front.push_back(t);
+    }
+  }
+  int outermost = 0;
+  std::vector<vtkIdType> next;
+  while (!front.empty())
+  {
+    next.clear();
+    for (vtkIdType t : front)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        const vtkIdType key = walker.GetPointKey(walker.GetCorner(t, i));
+        for (vtkIdType k = start[key]; k < start[key + 1]; ++k)
+        {
+          const vtkIdType u = triangles[k];
+          if (ring[u] < 0)
+          {
+            ring[u] = ring[t] + 1;
+            next.push_back(u);
+          }
+        }
+      }
+    }
+    if (!next.empty())
+    {
+      outermost = ring[next.front()];
+    }
+    front.swap(next);
+  }
+  for (vtkIdType t = 0; outermost > 0 && t < n; ++t)
+  {
+    for (int i = 0; ring[t] == outermost && i < 3; ++i)
+    {
+      if (walker.GetRecord(t).Next[i] < 0)
+      {
+        in.PieceBorder.emplace_back(t, i);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::GhostCellsCover(double reach)
+{
+  // A walk from a triangle this process owns goes at most `reach` (its length) from
+  // it: the ghost cells cover it when no owned triangle is within `reach` of an edge
+  // where the piece ends (the distance between the edge and the triangle's edges or
+  // the edge's ends and the triangle).
+  vtkInternals& in = *this->Internals;
+  if (reach == in.CheckedReach)
+  {
+    return in.CoversReach;
+  }
+  in.CheckedReach = reach;
+  in.CoversReach = true;
+  vtkPolyData* triangles = in.Walker.GetTriangles();
+  vtkNew<vtkIdList> candidates;
+  vtkNew<vtkGenericCell> triangle;
+  const double reach2 = reach * reach;
+  for (const auto& border : in.PieceBorder)
+  {
+    double a[3], b[3];
+    triangles->GetPoint(in.Walker.GetCorner(border.first, (border.second + 1) % 3), a);
+    triangles->GetPoint(in.Walker.GetCorner(border.first, (border.second + 2) % 3), b);
+    double box[6];
+    for (int j = 0; j < 3; ++j)
+    {
+      box[2 * j] = std::min(a[j], b[j]) - reach;
+      box[2 * j + 1] = std::max(a[j], b[j]) + reach;
+    }
+    in.Locator->FindCellsWithinBounds(box, candidates);
+    for (vtkIdType k = 0; k < candidates->GetNumberOfIds(); ++k)
+    {
+      const vtkIdType t = candidates->GetId(k);
+      if (!in.TriangleOwned[t])
+      {
+        continue;
+      }
+      triangles->GetCell(t, triangle);
+      double closest[3], pcoords[3], weights[3], dist2 = 0.0;
+      int subId = 0;
+      double nearest = VTK_DOUBLE_MAX;
+      for (const double* x : { a, b })
+      {
+        triangle->EvaluatePosition(x, closest, subId, pcoords, dist2, weights);
+        nearest = std::min(nearest, dist2);
+      }
+      for (int i = 0; i < 3; ++i)
+      {
+        double p[3], q[3], u = 0.0, v = 0.0;
+        triangles->GetPoint(in.Walker.GetCorner(t, i), p);
+        triangles->GetPoint(in.Walker.GetCorner(t, (i + 1) % 3), q);
+        double c1[3], c2[3];
+        nearest = std::min(nearest, vtkLine::DistanceBetweenLineSegments(a, b, p, q, c1, c2, u, v));
+      }
+      if (nearest < reach2)
+      {
+        in.CoversReach = false;
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::AskForDeeperGhostCells(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  bool hasPiece)
+{
+  // The length of a walk of one step: each stage and the final walk go at most the
+  // step's length (the slopes are at most 1); Cash-Karp's stages combine up to 6.6
+  // sub-steps, within a step of sub-steps.
+  vtkInternals& in = *this->Internals;
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  const int current =
+    inInfo && inInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    ? inInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS())
+    : 0;
+  constexpr int MaximumGhostLevels = 64;
+  int wanted = 0;
+  if (hasPiece)
+  {
+    const double reach = this->StepSize * in.CellSize * (this->Integrator == RK45 ? 8.0 : 1.0);
+    const vtkIdType count = in.Walker.GetNumberOfTriangles();
+    const bool covered = this->GhostCellsCover(reach);
+    // A piece that did not grow with more levels cannot (its producer gives no more).
+    const bool stuck =
+      in.CheckedLevels >= 0 && current > in.CheckedLevels && count == in.CheckedTriangles;
+    if (!covered && !stuck && current < MaximumGhostLevels)
+    {
+      wanted = std::min(MaximumGhostLevels, std::max(current + 1, 2 * current));
+    }
+    else if (!covered && current != in.CheckedLevels)
+    {
+      vtkWarningMacro("The ghost cells of this process's piece ("
+        << current << " levels) end less than a step (" << reach
+        << ") from its own triangles: particles that reach their end stop there.");
+    }
+    in.CheckedLevels = current;
+    in.CheckedTriangles = count;
+  }
+  const int all = static_cast<int>(this->Exchange->AllReduceMaximum(static_cast<double>(wanted)));
+  if (all > 0)
+  {
+    this->RequiredGhostLevels = std::max(this->RequiredGhostLevels, all);
+    request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+    return true;
+  }
+  request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -315,10 +517,22 @@ void vtkOFBParticleAdvector::ExchangeParticles()
   }
   std::vector<double> all;
   this->Exchange->AllGather(local, all);
-
-  // Every other process's particles: their states, and their trails as they grew.
-  const size_t count = all.size() / RecordSize;
   std::vector<vtkIdType> leaving;
+  this->ReceiveStates(all, leaving);
+  if (!leaving.empty())
+  {
+    this->HandOff(all, leaving);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::ReceiveStates(const std::vector<double>& all,
+  std::vector<vtkIdType>& leaving)
+{
+  // Every other process's particles: their states, and their trails as they grew.
+  vtkOFBParticleSystem& system = this->Internals->System;
+  const double rank = static_cast<double>(this->Exchange->GetRank());
+  const size_t count = all.size() / RecordSize;
   for (size_t r = 0; r < count; ++r)
   {
     const double* record = all.data() + r * RecordSize;
@@ -357,17 +571,22 @@ void vtkOFBParticleAdvector::ExchangeParticles()
       system.PushTrail(i, p.Position);
     }
   }
-  if (leaving.empty())
-  {
-    return;
-  }
+}
 
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::HandOff(const std::vector<double>& all,
+  const std::vector<vtkIdType>& leaving)
+{
   // Particles whose step ended on a ghost triangle of their process: to the process
   // that owns that triangle (the one with the same centroid), where they take the same
   // barycentric coordinates, so that they go on as on one process. Failing that (no
   // such triangle), to the process whose own triangle is closest to their position
   // (the lowest rank of equal ones); kept where they were if no process owns a
   // triangle there.
+  vtkInternals& in = *this->Internals;
+  vtkOFBParticleSystem& system = in.System;
+  std::vector<unsigned char>& owned = in.Owned;
+  const double rank = static_cast<double>(this->Exchange->GetRank());
   const size_t m = leaving.size();
   this->NumberOfHandOffs += static_cast<vtkIdType>(m);
   std::vector<double> claims(m, Unclaimed);
@@ -378,7 +597,15 @@ void vtkOFBParticleAdvector::ExchangeParticles()
   {
     const double* record = all.data() + leaving[k] * RecordSize;
     double x[3] = { record[2], record[3], record[4] };
-    double box[6] = { x[0], x[0], x[1], x[1], x[2], x[2] };
+    // A particle on an edge or a corner (a step that ended exactly on a piece border)
+    // may be a rounding error outside its triangle's bounds.
+    const double tolerance = 1e-9 * in.CellSize;
+    double box[6] = { x[0] - tolerance,
+      x[0] + tolerance,
+      x[1] - tolerance,
+      x[1] + tolerance,
+      x[2] - tolerance,
+      x[2] + tolerance };
     in.Locator->FindCellsWithinBounds(box, candidates);
     for (vtkIdType j = 0; j < candidates->GetNumberOfIds(); ++j)
     {
@@ -467,18 +694,7 @@ void vtkOFBParticleAdvector::ParticipateWithoutPiece(vtkDataSet* seeds,
   }
   else
   {
-    for (int i = 0; i < 3; ++i)
-    {
-      vtkInformation* info = outputVector->GetInformationObject(i);
-      if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-      {
-        const double t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-        target = std::isfinite(t) && t > 0.0
-          ? static_cast<vtkIdType>(std::min(std::floor(t + 1e-9), 9.0e18))
-          : 0;
-        break;
-      }
-    }
+    target = vtkOFBParticleAdvector::RequestedStep(outputVector, target);
     if (target < system.CurrentStep && !start())
     {
       return;

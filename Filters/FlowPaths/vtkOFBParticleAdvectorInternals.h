@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkCellArray;
@@ -113,6 +114,15 @@ public:
   std::vector<unsigned char> TriangleOwned;
   std::vector<unsigned char> Owned;
   std::vector<unsigned char> SeedOwned; // per seed, 1 where this process owns it
+  // The edges where this process's piece ends (walker triangle, edge): the boundary
+  // edges of its outermost ring of ghost triangles. The reach (world units) last
+  // checked against them, and whether the ghost cells cover it; the ghost levels and
+  // triangles of the piece at that check.
+  std::vector<std::pair<vtkIdType, int>> PieceBorder;
+  double CheckedReach = -1.0;
+  bool CoversReach = true;
+  int CheckedLevels = -1;
+  vtkIdType CheckedTriangles = -1;
   vtkOFBParticleSystem::Coloring Coloring;
   // Wall-clock milliseconds of the last update's parts.
   double AdvectionTime = 0.0;

@@ -93,48 +93,10 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
   bool& rebuilt)
 {
   vtkInternals& in = *this->Internals;
-  if (!surface || surface->GetNumberOfPoints() == 0 ||
-    surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
-  {
-    vtkErrorMacro("The input surface has no polygons: no particles.");
-    return false;
-  }
-  // Before the cell vectors are averaged or the surface triangulated: both read the
-  // cells' points.
-  std::string error;
-  if (!vtkOFBCheckCellPointIds(surface, error))
-  {
-    vtkErrorMacro("The input surface (port 0) is invalid: " << error << ".");
-    return false;
-  }
   int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  vtkDataArray* vectors = this->GetInputArrayToProcess(0, inputVector, association);
-  if (!vectors && surface->GetCellData()->GetVectors() && !surface->GetPointData()->GetVectors())
-  {
-    vectors = surface->GetCellData()->GetVectors();
-    association = vtkDataObject::FIELD_ASSOCIATION_CELLS;
-  }
+  vtkDataArray* vectors = this->FindSurfaceVectors(surface, inputVector, association);
   if (!vectors)
   {
-    vtkErrorMacro("The input surface has no vector field (the array chosen with "
-                  "SetInputArrayToProcess, by default the active point vectors).");
-    return false;
-  }
-  if (vectors->GetNumberOfComponents() != 3)
-  {
-    vtkErrorMacro("The vector field '" << (vectors->GetName() ? vectors->GetName() : "") << "' has "
-                                       << vectors->GetNumberOfComponents()
-                                       << " components, not 3.");
-    return false;
-  }
-  const vtkIdType needed = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
-    ? surface->GetNumberOfCells()
-    : surface->GetNumberOfPoints();
-  if (vectors->GetNumberOfTuples() < needed)
-  {
-    vtkErrorMacro("The vector field " << vtkOFBArrayLength(vectors,
-                    needed,
-                    association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? "cells." : "points."));
     return false;
   }
   if (surface == in.SurfaceObject && ContentTime(surface) == in.SurfaceTime &&
@@ -176,7 +138,79 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
     in.VectorTime = vectors->GetMTime();
     return true;
   }
+  if (!this->BuildWalker(surface, vectors, perCell))
+  {
+    return false;
+  }
+  in.SurfaceObject = surface;
+  in.SurfaceTime = ContentTime(surface);
+  in.VectorArray = vectors;
+  in.VectorTime = vectors->GetMTime();
+  if (in.Unsteady)
+  {
+    in.GeometryHash = vtkOFBParticleAdvector::HashGeometry(surface);
+    this->KeepField(surface, vectors, true);
+  }
+  rebuilt = true;
+  return true;
+}
 
+//------------------------------------------------------------------------------
+vtkDataArray* vtkOFBParticleAdvector::FindSurfaceVectors(vtkPolyData* surface,
+  vtkInformationVector** inputVector,
+  int& association)
+{
+  if (!surface || surface->GetNumberOfPoints() == 0 ||
+    surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("The input surface has no polygons: no particles.");
+    return nullptr;
+  }
+  // Before the cell vectors are averaged or the surface triangulated: both read the
+  // cells' points.
+  std::string error;
+  if (!vtkOFBCheckCellPointIds(surface, error))
+  {
+    vtkErrorMacro("The input surface (port 0) is invalid: " << error << ".");
+    return nullptr;
+  }
+  association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  vtkDataArray* vectors = this->GetInputArrayToProcess(0, inputVector, association);
+  if (!vectors && surface->GetCellData()->GetVectors() && !surface->GetPointData()->GetVectors())
+  {
+    vectors = surface->GetCellData()->GetVectors();
+    association = vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  }
+  if (!vectors)
+  {
+    vtkErrorMacro("The input surface has no vector field (the array chosen with "
+                  "SetInputArrayToProcess, by default the active point vectors).");
+    return nullptr;
+  }
+  if (vectors->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro("The vector field '" << (vectors->GetName() ? vectors->GetName() : "") << "' has "
+                                       << vectors->GetNumberOfComponents()
+                                       << " components, not 3.");
+    return nullptr;
+  }
+  const vtkIdType needed = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+    ? surface->GetNumberOfCells()
+    : surface->GetNumberOfPoints();
+  if (vectors->GetNumberOfTuples() < needed)
+  {
+    vtkErrorMacro("The vector field " << vtkOFBArrayLength(vectors,
+                    needed,
+                    association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? "cells." : "points."));
+    return nullptr;
+  }
+  return vectors;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::BuildWalker(vtkPolyData* surface, vtkDataArray* vectors, bool perCell)
+{
+  vtkInternals& in = *this->Internals;
   vtkSmartPointer<vtkPolyData> triangles = surface;
   // The input cell of each polygon given to the walker, for a cell field: polygons
   // follow the vertices and lines in vtkPolyData's cell ids, and the triangle filter
@@ -226,13 +260,19 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
     }
   }
   in.FieldPerCell = perCell;
-  if (!in.Walker.Build(triangles, perCell ? nullptr : vectors, error, polygonCells.data()))
+  std::string error;
+  if (!in.Walker.Build(triangles,
+        perCell ? nullptr : vectors,
+        error,
+        polygonCells.data(),
+        vtkOFBParticleAdvector::MergeTolerance(surface)))
   {
     vtkErrorMacro("The input surface cannot carry particles: " << error << ".");
     return false;
   }
   if (perCell)
   {
+    const vtkIdType numValues = surface->GetNumberOfCells();
     std::vector<double> field(3 * static_cast<size_t>(numValues));
     for (vtkIdType c = 0; c < numValues; ++c)
     {
@@ -250,17 +290,28 @@ bool vtkOFBParticleAdvector::PrepareSurface(vtkPolyData* surface,
   in.Locator->SetDataSet(in.Walker.GetTriangles());
   in.Locator->BuildLocator();
   in.Surface = triangles;
-  in.SurfaceObject = surface;
-  in.SurfaceTime = ContentTime(surface);
-  in.VectorArray = vectors;
-  in.VectorTime = vectors->GetMTime();
-  if (in.Unsteady)
-  {
-    in.GeometryHash = vtkOFBParticleAdvector::HashGeometry(surface);
-    this->KeepField(surface, vectors, true);
-  }
-  rebuilt = true;
   return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBParticleAdvector::MergeTolerance(vtkPolyData* surface)
+{
+  // Points a rounding error apart are one point of the surface: the pieces of a surface
+  // made apart (a source's pieces under MPI, each computing its seam points) repeat
+  // their seam points a few units in the last place apart, and a seam that is not one
+  // would be a boundary where particles stop. 1e-9 of the coordinates' scale is far
+  // above such rounding and far below any triangle.
+  double bounds[6];
+  surface->GetBounds(bounds);
+  double scale = 0.0;
+  for (int j = 0; j < 3; ++j)
+  {
+    scale = std::max({ scale,
+      bounds[2 * j + 1] - bounds[2 * j],
+      std::abs(bounds[2 * j]),
+      std::abs(bounds[2 * j + 1]) });
+  }
+  return std::isfinite(scale) ? 1e-9 * scale : 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -4,9 +4,11 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
+#include "vtkNew.h"
 #include "vtkOFBInputChecks.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStaticPointLocator.h"
 
 #include <algorithm>
 #include <array>
@@ -33,7 +35,8 @@ inline void Normalize(glm::dvec3& b)
 bool vtkOFBTriangleWalker::Build(vtkPolyData* surface,
   vtkDataArray* vectors,
   std::string& error,
-  const vtkIdType* polygonCells)
+  const vtkIdType* polygonCells,
+  double mergeTolerance)
 {
   const vtkIdType numPoints = surface ? surface->GetNumberOfPoints() : 0;
   // The callers check their input first; the walker, shared between modules, does not
@@ -108,7 +111,7 @@ bool vtkOFBTriangleWalker::Build(vtkPolyData* surface,
     return false;
   }
   this->BuildGeometry();
-  this->BuildAdjacency();
+  this->BuildAdjacency(mergeTolerance);
 
   this->Triangles = vtkSmartPointer<vtkPolyData>::New();
   this->Triangles->SetPoints(surface->GetPoints());
@@ -214,7 +217,7 @@ void vtkOFBTriangleWalker::BuildGeometry()
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBTriangleWalker::BuildAdjacency()
+void vtkOFBTriangleWalker::BuildAdjacency(double mergeTolerance)
 {
   const vtkIdType numTriangles = this->GetNumberOfTriangles();
   // Points at the same position are one point of the surface (a mesh may repeat its points
@@ -238,6 +241,10 @@ void vtkOFBTriangleWalker::BuildAdjacency()
   {
     const bool same = k > 0 && this->Points[order[k]] == this->Points[order[k - 1]];
     this->Canonical[order[k]] = same ? this->Canonical[order[k - 1]] : order[k];
+  }
+  if (mergeTolerance > 0.0)
+  {
+    this->MergeClosePoints(mergeTolerance);
   }
   // Half-edges keyed by their sorted point ids; equal keys share an edge.
   struct HalfEdge
@@ -272,6 +279,63 @@ void vtkOFBTriangleWalker::BuildAdjacency()
       this->Link(edges[i + 1].Triangle, edges[i + 1].Corner, edges[i].Triangle, edges[i].Corner);
     }
     i = j;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTriangleWalker::MergeClosePoints(double tolerance)
+{
+  // The points of the triangles within `tolerance` of each other, joined (union-find
+  // over the canonical ids), each group named by its smallest id.
+  const vtkIdType numPoints = static_cast<vtkIdType>(this->Points.size());
+  std::vector<vtkIdType> parent(this->Canonical);
+  auto root = [&parent](vtkIdType i)
+  {
+    while (parent[i] != i)
+    {
+      parent[i] = parent[parent[i]];
+      i = parent[i];
+    }
+    return i;
+  };
+  std::vector<unsigned char> used(static_cast<size_t>(numPoints), 0);
+  for (vtkIdType c : this->Corners)
+  {
+    used[c] = 1;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  std::vector<vtkIdType> ids;
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    if (used[i] && this->Canonical[i] == i)
+    {
+      points->InsertNextPoint(&this->Points[i][0]);
+      ids.push_back(i);
+    }
+  }
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(points);
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(cloud);
+  locator->BuildLocator();
+  vtkNew<vtkIdList> close;
+  for (vtkIdType k = 0; k < static_cast<vtkIdType>(ids.size()); ++k)
+  {
+    locator->FindPointsWithinRadius(tolerance, &this->Points[ids[k]][0], close);
+    for (vtkIdType j = 0; j < close->GetNumberOfIds(); ++j)
+    {
+      const vtkIdType a = root(ids[k]);
+      const vtkIdType b = root(ids[close->GetId(j)]);
+      if (a != b)
+      {
+        parent[std::max(a, b)] = std::min(a, b);
+      }
+    }
+  }
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    this->Canonical[i] = root(this->Canonical[i]);
   }
 }
 

@@ -24,10 +24,12 @@
  *
  * Points at the same position are one point (a mesh may repeat its points per face, as
  * an OBJ with texture coordinates does): triangles that share an edge's positions are
- * neighbours, whatever the point ids. Edges with one triangle (the boundary of an open
- * surface), edges shared by more
- * than two triangles and edges of triangles of zero area are boundaries: a walk
- * that reaches one stops there.
+ * neighbours, whatever the point ids. With a merge tolerance (Build's `mergeTolerance`),
+ * points closer than it are one point too (pieces of a surface made apart, such as those
+ * of vtkSphereSource, repeat their seam points a rounding error apart); each triangle
+ * keeps its own corners' positions. Edges with one triangle (the boundary of an open
+ * surface), edges shared by more than two triangles and edges of triangles of zero area
+ * are boundaries: a walk that reaches one stops there.
  */
 
 #ifndef vtkOFBTriangleWalker_h
@@ -159,12 +161,14 @@ public:
    * zero field, else at least a tuple a point). Returns false with `error` set when a
    * cell names a point that does not exist, the vectors are short, or there is no
    * triangle of non-zero area. Triangles of zero area are left out; the others keep
-   * their order.
+   * their order. Points closer than `mergeTolerance` (world units; default 0: only
+   * points at exactly the same position) are one point for the triangles' adjacency.
    */
   bool Build(vtkPolyData* surface,
     vtkDataArray* vectors,
     std::string& error,
-    const vtkIdType* polygonCells = nullptr);
+    const vtkIdType* polygonCells = nullptr,
+    double mergeTolerance = 0.0);
 
   /**
    * Replace the field by cell vectors `vectors` (3 doubles per cell of the
@@ -201,6 +205,9 @@ public:
 
   /// Point id of corner `i` (0..2) of triangle `t`.
   vtkIdType GetCorner(vtkIdType t, int i) const { return this->Corners[3 * t + i]; }
+
+  /// The smallest id of the points that are one point of the surface with point `i`.
+  vtkIdType GetPointKey(vtkIdType i) const { return this->Canonical[i]; }
 
   /// Unit normal of triangle `t`.
   const glm::dvec3& GetNormal(vtkIdType t) const { return this->Normals[t]; }
@@ -328,7 +335,9 @@ private:
   /// One round of Walk's loop for lane `j`; true when its walk ended.
   bool CrossLane(vtkOFBWalkLanes& lanes, int j, bool withFrame) const;
   void BuildGeometry();
-  void BuildAdjacency();
+  void BuildAdjacency(double mergeTolerance);
+  /// Joins the canonical ids of points closer than `tolerance` (the smallest id names each).
+  void MergeClosePoints(double tolerance);
   /// Edge `edge` of `t` is shared with edge `opposite` of `next`.
   void Link(vtkIdType t, int edge, vtkIdType next, int opposite);
 

@@ -106,7 +106,7 @@ int vtkOFBPParticleAdvector::RequestUpdateExtent(vtkInformation* request,
     const int downstream =
       outInfo ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
-      std::max(downstream, this->NumberOfGhostLevels));
+      std::max({ downstream, this->NumberOfGhostLevels, this->RequiredGhostLevels }));
   }
   return 1;
 }
@@ -155,7 +155,10 @@ int vtkOFBPParticleAdvector::RequestData(vtkInformation* request,
     vtkDataSet* seeds = inputVector[2]->GetNumberOfInformationObjects() > 0
       ? vtkDataSet::GetData(inputVector[2], 0)
       : nullptr;
-    this->ParticipateWithoutPiece(seeds, outputVector);
+    if (!this->AskForDeeperGhostCells(request, inputVector, false))
+    {
+      this->ParticipateWithoutPiece(seeds, outputVector);
+    }
   }
   this->Exchange = nullptr;
   return result;
@@ -167,4 +170,5 @@ void vtkOFBPParticleAdvector::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "NumberOfGhostLevels: " << this->NumberOfGhostLevels << "\n";
+  os << indent << "RequiredGhostLevels: " << this->RequiredGhostLevels << "\n";
 }

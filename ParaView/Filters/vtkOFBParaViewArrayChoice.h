@@ -36,6 +36,24 @@ inline bool ClearArrayChoice(vtkAlgorithm* algorithm, int idx)
   choice->Clear();
   return true;
 }
+
+/**
+ * For an override of SetInputArrayToProcess: when `name` is "no array", removes the
+ * choice of input array `idx` of `algorithm` (Modified when there was one) and returns
+ * true; otherwise returns false, and the caller sets the choice.
+ */
+inline bool ChooseNoArray(vtkAlgorithm* algorithm, int idx, const char* name)
+{
+  if (!IsNoArray(name))
+  {
+    return false;
+  }
+  if (ClearArrayChoice(algorithm, idx))
+  {
+    algorithm->Modified();
+  }
+  return true;
+}
 }
 
 #endif

@@ -26,13 +26,9 @@ void vtkOFBParaViewParticles::SetInputArrayToProcess(int idx,
   int fieldAssociation,
   const char* name)
 {
-  if (!vtkofbparaview::IsNoArray(name))
+  if (!vtkofbparaview::ChooseNoArray(this, idx, name))
   {
     this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
-  }
-  else if (vtkofbparaview::ClearArrayChoice(this, idx))
-  {
-    this->Modified();
   }
 }
 

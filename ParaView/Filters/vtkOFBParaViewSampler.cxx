@@ -47,13 +47,9 @@ void vtkOFBParaViewSampler::SetInputArrayToProcess(int idx,
   int fieldAssociation,
   const char* name)
 {
-  if (!vtkofbparaview::IsNoArray(name))
+  if (!vtkofbparaview::ChooseNoArray(this, idx, name))
   {
     this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
-  }
-  else if (vtkofbparaview::ClearArrayChoice(this, idx))
-  {
-    this->Modified();
   }
 }
 

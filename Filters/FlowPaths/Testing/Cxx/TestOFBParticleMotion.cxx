@@ -10,6 +10,7 @@
 #include "vtkMath.h"
 #include "vtkPlaneSource.h"
 #include "vtkSMPTools.h"
+#include "vtkSphereSource.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleFilter.h"
 
@@ -325,6 +326,74 @@ TEST(Particles, CrossEdgesOfPointsRepeatedPerFace)
   advector->GetParticles()->GetPoint(0, x);
   EXPECT_NEAR(x[0], 0.5, 1e-9); // across all 20 columns of triangles, not at the first edge
   EXPECT_NEAR(x[1], 0.013, 1e-9);
+}
+
+// A sphere whose two halves have each their own copy of the points, one copy a unit in
+// the last place from the other (as pieces of a surface made apart repeat their seam
+// points a rounding error apart). Particles cross the seams and end where they end on
+// the sphere in one piece.
+TEST(Particles, CrossSeamsOfPiecesMadeApart)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(48);
+  source->SetPhiResolution(24);
+  source->SetRadius(0.5);
+  source->Update();
+  vtkPolyData* whole = source->GetOutput();
+  const vtkIdType n = whole->GetNumberOfPoints();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(2 * n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    whole->GetPoint(i, x);
+    points->SetPoint(i, x);
+    for (double& c : x)
+    {
+      c = std::nextafter(c, 1.0);
+    }
+    points->SetPoint(n + i, x);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (vtkIdType c = 0; c < whole->GetNumberOfCells(); ++c)
+  {
+    vtkCell* cell = whole->GetCell(c);
+    double center = 0.0;
+    vtkIdType ids[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      ids[k] = cell->GetPointId(k);
+      center += whole->GetPoint(ids[k])[0];
+    }
+    for (int k = 0; center < 0.0 && k < 3; ++k)
+    {
+      ids[k] += n; // the half x < 0 on the second copy
+    }
+    polys->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> halves;
+  halves->SetPoints(points);
+  halves->SetPolys(polys);
+
+  double ends[2][3];
+  vtkPolyData* surfaces[2] = { whole, halves };
+  for (int k = 0; k < 2; ++k)
+  {
+    vtkNew<vtkPolyData> mesh;
+    mesh->ShallowCopy(surfaces[k]);
+    SetRotationField(mesh, ZAxis, Origin);
+    vtkNew<vtkOFBParticleAdvector> advector;
+    advector->SetInputData(mesh);
+    advector->SetSeeds(MakeSeeds({ { 0.3, 0.05, 0.39 } }));
+    advector->SetStepSize(2.0);
+    advector->SetStepsPerUpdate(500); // about half a turn: across the seam at x = 0
+    advector->Step();
+    ASSERT_EQ(advector->GetParticles()->GetNumberOfPoints(), 1);
+    advector->GetParticles()->GetPoint(0, ends[k]);
+  }
+  EXPECT_LT(ends[0][0], -0.2); // on the other half
+  EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(ends[0], ends[1])), 1e-9);
 }
 
 // A zero region of the field stops the particles that reach it.

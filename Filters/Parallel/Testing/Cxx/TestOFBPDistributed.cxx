@@ -10,7 +10,6 @@
 // LIC: every process reports the error, outputs nothing, and none waits for another.
 // Exit status 0 when every check holds, on every process.
 #include "vtkCellData.h"
-#include "vtkCommunicator.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkExtractPolyDataPiece.h"
 #include "vtkFloatArray.h"
@@ -23,13 +22,13 @@
 #include "vtkOFBPLIC.h"
 #include "vtkOFBPPaintFilter.h"
 #include "vtkOFBPSampler.h"
+#include "vtkOFBPTestSupport.h"
 #include "vtkOFBPaintFilter.h"
 #include "vtkOFBPainter.h"
 #include "vtkOFBSampler.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSphereSource.h"
 #include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -49,19 +48,8 @@ constexpr int GhostLevels = 6;
 /// the ghost cells), with a tangential swirl "Field" and a scalar "Height".
 vtkSmartPointer<vtkPolyData> MakeSphere()
 {
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(24);
-  sphere->SetRadius(0.5);
-  sphere->GenerateNormalsOff();
-  sphere->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(sphere->GetOutput());
+  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::MakeSwirlSphere(false);
   const vtkIdType n = mesh->GetNumberOfPoints();
-  vtkNew<vtkFloatArray> field;
-  field->SetName("Field");
-  field->SetNumberOfComponents(3);
-  field->SetNumberOfTuples(n);
   vtkNew<vtkFloatArray> height;
   height->SetName("Height");
   height->SetNumberOfTuples(n);
@@ -69,13 +57,8 @@ vtkSmartPointer<vtkPolyData> MakeSphere()
   {
     double p[3];
     mesh->GetPoint(i, p);
-    const double v[3] = {
-      -p[1] + 0.8 * p[2] * p[0], p[0] + 0.8 * p[2] * p[1], -0.8 * (p[0] * p[0] + p[1] * p[1])
-    };
-    field->SetTuple(i, v);
     height->SetValue(i, static_cast<float>(p[2] + 0.5 * p[0] * p[1]));
   }
-  mesh->GetPointData()->SetVectors(field);
   mesh->GetPointData()->AddArray(height);
   return mesh;
 }
@@ -398,25 +381,11 @@ int main(int argc, char* argv[])
   vtkMultiProcessController::SetGlobalController(controller);
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
-  bool emptyLast = false;
-  bool badInput = false;
-  for (int i = 1; i < argc; ++i)
+  const int pieces =
+    vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));
+  if (vtkofbtest::HasFlag(argc, argv, "--bad-input"))
   {
-    emptyLast = emptyLast || !std::strcmp(argv[i], "--empty-last");
-    badInput = badInput || !std::strcmp(argv[i], "--bad-input");
-  }
-  const int pieces = emptyLast && size > 1 ? size - 1 : size;
-  if (badInput)
-  {
-    int ok = RunBadInput(controller, pieces) ? 1 : 0;
-    int all = 0;
-    controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
-    if (rank == 0)
-    {
-      std::printf("%s\n", all ? "PASS" : "FAIL");
-    }
-    controller->Finalize();
-    return all ? 0 : 1;
+    return vtkofbtest::FinishAll(controller, RunBadInput(controller, pieces));
   }
 
   vtkSmartPointer<vtkPolyData> mesh = MakeSphere();
@@ -442,21 +411,9 @@ int main(int argc, char* argv[])
       distributed.Sampler->SetInputData(none);
     }
     distributed.Update(std::min(rank, pieces - 1), pieces);
-    std::vector<double> owned = distributed.Owned(rank);
+    std::vector<double> gathered = vtkofbtest::GatherOnFirst(controller, distributed.Owned(rank));
     std::vector<double> frame = distributed.Frame();
-    std::vector<vtkIdType> counts(size), offsets(size);
-    const vtkIdType count = static_cast<vtkIdType>(owned.size());
-    controller->Gather(&count, counts.data(), 1, 0);
-    vtkIdType total = 0;
-    for (int r = 0; r < size; ++r)
-    {
-      offsets[r] = total;
-      total += counts[r];
-    }
-    std::vector<double> gathered(rank == 0 ? std::max<vtkIdType>(total, 1) : 1);
-    controller->GatherV(owned.data(), gathered.data(), count, counts.data(), offsets.data(), 0);
     controller->Gather(frame.data(), frames.data(), 7, 0);
-    gathered.resize(rank == 0 ? total : 0);
     return gathered;
   };
   std::vector<double> gathered = runPieces(GhostLevels);
@@ -491,7 +448,5 @@ int main(int argc, char* argv[])
     }
     std::printf("%s\n", ok ? "PASS" : "FAIL");
   }
-  controller->Broadcast(&ok, 1, 0);
-  controller->Finalize();
-  return ok ? 0 : 1;
+  return vtkofbtest::FinishFirst(controller, ok);
 }

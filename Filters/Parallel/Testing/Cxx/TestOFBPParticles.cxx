@@ -5,9 +5,14 @@
 // advances them on the whole sphere with no controller, gathers every process's
 // particles, trails and owned samples, and compares.
 //
-//   mpirun -np N TestOFBPParticles [--empty-last] [--bad-input]
+//   mpirun -np N TestOFBPParticles [--empty-last] [--bad-input] [--border]
 //
 // --empty-last: the last process has an empty piece (the others share the sphere).
+// --border: the seeds are where one step (of 4 cells) ends on the points shared by two
+// pieces (found by a step backwards from those points), and the advector asks for 1
+// ghost level only: the particles reach the piece borders at the end of their first
+// step, and a step goes beyond one ring of ghost triangles near the poles, so the
+// advector must ask for more itself (on more than one process).
 // --bad-input: a Lifetime (reseeds), then no seeds: every process reports the error and
 // outputs no particles, and none waits for another.
 //
@@ -15,7 +20,6 @@
 #include "vtkCell.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCommunicator.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkExtractPolyDataPiece.h"
 #include "vtkFloatArray.h"
@@ -26,14 +30,15 @@
 #include "vtkOFB.h"
 #include "vtkOFBPParticleAdvector.h"
 #include "vtkOFBPSampler.h"
+#include "vtkOFBPTestSupport.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSphereSource.h"
 #include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -43,33 +48,8 @@
 namespace
 {
 constexpr int Steps = 60;
-
-/// A sphere with a swirl "Field" that carries particles around and across it.
-vtkSmartPointer<vtkPolyData> MakeSphere()
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(24);
-  sphere->SetRadius(0.5);
-  sphere->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(sphere->GetOutput());
-  vtkNew<vtkFloatArray> field;
-  field->SetName("Field");
-  field->SetNumberOfComponents(3);
-  field->SetNumberOfTuples(mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    const double v[3] = {
-      -p[1] + 0.8 * p[2] * p[0], p[0] + 0.8 * p[2] * p[1], -0.8 * (p[0] * p[0] + p[1] * p[1])
-    };
-    field->SetTuple(i, v);
-  }
-  mesh->GetPointData()->SetVectors(field);
-  return mesh;
-}
+/// --border: the step (cells), beyond one ring of ghost triangles near the poles.
+constexpr double BorderStep = 4.0;
 
 /// Seeds spread over the sphere (a Fibonacci spiral), the same on every process.
 vtkSmartPointer<vtkPolyData> MakeSeeds(int n)
@@ -148,27 +128,6 @@ Result Collect(vtkOFBPParticleAdvector* advector)
   return result;
 }
 
-/// Every process's `local` rows on the first process.
-std::vector<double> Gather(vtkMultiProcessController* controller, const std::vector<double>& local)
-{
-  const int size = controller->GetNumberOfProcesses();
-  std::vector<vtkIdType> counts(size), offsets(size);
-  const vtkIdType count = static_cast<vtkIdType>(local.size());
-  controller->Gather(&count, counts.data(), 1, 0);
-  vtkIdType total = 0;
-  for (int r = 0; r < size; ++r)
-  {
-    offsets[r] = total;
-    total += counts[r];
-  }
-  std::vector<double> all(std::max<vtkIdType>(total, 1));
-  const double none = 0.0;
-  controller->GatherV(
-    local.empty() ? &none : local.data(), all.data(), count, counts.data(), offsets.data(), 0);
-  all.resize(controller->GetLocalProcessId() == 0 ? total : 0);
-  return all;
-}
-
 /// Rows of `width` values sorted.
 std::vector<std::vector<double>> Rows(const std::vector<double>& values, size_t width)
 {
@@ -208,6 +167,40 @@ struct Pipeline
 };
 }
 
+/// The points of `mesh` shared by two or more of its `pieces` (vtkExtractPolyDataPiece).
+vtkSmartPointer<vtkPolyData> BorderPoints(vtkPolyData* mesh, int pieces)
+{
+  std::map<std::array<double, 3>, unsigned> owners;
+  for (int piece = 0; piece < pieces; ++piece)
+  {
+    vtkNew<vtkExtractPolyDataPiece> extract;
+    extract->SetInputData(mesh);
+    extract->UpdatePiece(piece, pieces, 0);
+    vtkPolyData* part = extract->GetOutput();
+    for (vtkIdType c = 0; c < part->GetNumberOfCells(); ++c)
+    {
+      vtkCell* cell = part->GetCell(c);
+      for (vtkIdType k = 0; k < cell->GetNumberOfPoints(); ++k)
+      {
+        std::array<double, 3> x;
+        part->GetPoint(cell->GetPointId(k), x.data());
+        owners[x] |= 1u << piece;
+      }
+    }
+  }
+  vtkNew<vtkPoints> points;
+  for (const auto& entry : owners)
+  {
+    if (entry.second & (entry.second - 1)) // two bits or more
+    {
+      points->InsertNextPoint(entry.first.data());
+    }
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->SetPoints(points);
+  return result;
+}
+
 /// --bad-input: settings that distributed particles refuse, and an empty piece.
 bool RunBadInput(vtkMultiProcessController* controller, vtkPolyData* mesh, vtkPolyData* seeds)
 {
@@ -242,37 +235,24 @@ bool RunBadInput(vtkMultiProcessController* controller, vtkPolyData* mesh, vtkPo
   return ok;
 }
 
-int main(int argc, char* argv[])
+/// Advances `seeds` on the pieces of `mesh` (the last process's piece empty when
+/// `pieces` < processes) and, on the first process, on the whole mesh with no
+/// controller; compares them there, with steps of `step` cells and `ghostLevels` asked
+/// for; `needsMoreGhostLevels`: the advector must have asked for more itself. 1 when
+/// every check holds (on the first process; the others return 1).
+int Compare(vtkMultiProcessController* controller,
+  vtkPolyData* mesh,
+  vtkPolyData* seeds,
+  int pieces,
+  double step,
+  int ghostLevels,
+  bool needsMoreGhostLevels)
 {
-  vtkNew<vtkMPIController> controller;
-  controller->Initialize(&argc, &argv);
-  vtkMultiProcessController::SetGlobalController(controller);
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
-  vtkSmartPointer<vtkPolyData> mesh = MakeSphere();
-  vtkSmartPointer<vtkPolyData> seeds = MakeSeeds(40);
-  bool emptyLast = false;
-  bool badInput = false;
-  for (int i = 1; i < argc; ++i)
-  {
-    emptyLast = emptyLast || !std::strcmp(argv[i], "--empty-last");
-    badInput = badInput || !std::strcmp(argv[i], "--bad-input");
-  }
-  const int pieces = emptyLast && size > 1 ? size - 1 : size;
-  if (badInput)
-  {
-    int ok = RunBadInput(controller, mesh, seeds) ? 1 : 0;
-    int all = 0;
-    controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
-    if (rank == 0)
-    {
-      std::printf("%s\n", all ? "PASS" : "FAIL");
-    }
-    controller->Finalize();
-    return all ? 0 : 1;
-  }
-
   Pipeline distributed(controller, mesh, seeds);
+  distributed.Advector->SetStepSize(step);
+  distributed.Advector->SetNumberOfGhostLevels(ghostLevels);
   vtkNew<vtkPolyData> none;
   if (rank >= pieces)
   {
@@ -281,13 +261,14 @@ int main(int argc, char* argv[])
   }
   distributed.Advector->UpdateTimeStep(Steps, std::min(rank, pieces - 1), pieces, 0);
   const Result mine = Collect(distributed.Advector);
-  const std::vector<double> particles = Gather(controller, mine.Particles);
-  const std::vector<double> samples = Gather(controller, mine.Samples);
+  const std::vector<double> particles = vtkofbtest::GatherOnFirst(controller, mine.Particles);
+  const std::vector<double> samples = vtkofbtest::GatherOnFirst(controller, mine.Samples);
 
   int ok = 1;
   if (rank == 0)
   {
     Pipeline whole(nullptr, mesh, seeds);
+    whole.Advector->SetStepSize(step);
     whole.Advector->UpdateTimeStep(Steps, 0, 1, 0);
     const Result reference = Collect(whole.Advector);
     const auto got = Rows(particles, 5);
@@ -323,10 +304,12 @@ int main(int argc, char* argv[])
     }
     const double cell = whole.Sampler->GetOutput()->GetCellSize();
     const vtkIdType handOffs = distributed.Advector->GetNumberOfHandOffs();
+    const int required = distributed.Advector->GetRequiredGhostLevels();
     std::printf(
       "%d processes, %d steps: %lld hand-offs, %zu particles (%zu on one process), %zu duplicated, "
       "%zu ids differ, end points max |diff| %.2g cells, %zu trail lengths differ; "
-      "%zu owned samples (%zu), %zu painted, %zu colours differ by more than 1\n",
+      "%zu owned samples (%zu), %zu painted, %zu colours differ by more than 1; ghost levels "
+      "asked %d, found needed %d\n",
       size,
       Steps,
       static_cast<long long>(handOffs),
@@ -339,13 +322,65 @@ int main(int argc, char* argv[])
       gotSamples.size(),
       wantSamples.size(),
       painted,
-      colorsDiffer);
+      colorsDiffer,
+      ghostLevels,
+      required);
     ok = got.size() == want.size() && !want.empty() && duplicates == 0 && idsDiffer == 0 &&
       maxPosition <= 1e-6 * cell && trailsDiffer == 0 && gotSamples.size() == wantSamples.size() &&
-      painted > 0 && colorsDiffer == 0 && (size == 1 || handOffs > 0);
+      painted > 0 && colorsDiffer == 0 && (size == 1 || handOffs > 0) &&
+      (size == 1 || !needsMoreGhostLevels || required > ghostLevels);
     std::printf("%s\n", ok ? "PASS" : "FAIL");
   }
-  controller->Broadcast(&ok, 1, 0);
-  controller->Finalize();
-  return ok ? 0 : 1;
+  return ok;
+}
+
+int main(int argc, char* argv[])
+{
+  vtkNew<vtkMPIController> controller;
+  controller->Initialize(&argc, &argv);
+  vtkMultiProcessController::SetGlobalController(controller);
+  const int rank = controller->GetLocalProcessId();
+  vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::MakeSwirlSphere(true);
+  vtkSmartPointer<vtkPolyData> seeds = MakeSeeds(40);
+  const bool border = vtkofbtest::HasFlag(argc, argv, "--border");
+  const int pieces =
+    vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));
+  if (vtkofbtest::HasFlag(argc, argv, "--bad-input"))
+  {
+    return vtkofbtest::FinishAll(controller, RunBadInput(controller, mesh, seeds));
+  }
+
+  int ok = 1;
+  if (border)
+  {
+    // One step backwards from the points that pieces share: the seeds whose first step
+    // ends there (to the integrator's error).
+    vtkSmartPointer<vtkPolyData> shared = BorderPoints(mesh, pieces);
+    Pipeline back(nullptr, mesh, shared);
+    back.Advector->SetStepSize(BorderStep);
+    back.Advector->SetDirectionToBackward();
+    back.Advector->UpdateTimeStep(1, 0, 1, 0);
+    vtkPolyData* ends = back.Advector->GetParticles();
+    vtkDataArray* ids = ends->GetPointData()->GetArray("Id");
+    vtkNew<vtkPoints> starts;
+    starts->SetNumberOfPoints(ends->GetNumberOfPoints());
+    for (vtkIdType i = 0; ids && i < ends->GetNumberOfPoints(); ++i)
+    {
+      starts->SetPoint(static_cast<vtkIdType>(ids->GetTuple1(i)), ends->GetPoint(i));
+    }
+    vtkNew<vtkPolyData> borderSeeds;
+    borderSeeds->SetPoints(starts);
+    if (rank == 0)
+    {
+      std::printf("%lld points shared by pieces, %lld seeds a step before them\n",
+        static_cast<long long>(shared->GetNumberOfPoints()),
+        static_cast<long long>(starts->GetNumberOfPoints()));
+    }
+    ok = Compare(controller, mesh, borderSeeds, pieces, BorderStep, 1, true);
+  }
+  else
+  {
+    ok = Compare(controller, mesh, seeds, pieces, 1.5, 2, false);
+  }
+  return vtkofbtest::FinishFirst(controller, ok);
 }

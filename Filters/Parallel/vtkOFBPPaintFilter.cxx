@@ -35,7 +35,10 @@ public:
       static_cast<vtkIdType>(values.size()),
       vtkCommunicator::MIN_OP);
     values.swap(reduced);
+    ++this->Calls;
   }
+
+  vtkIdType Calls = 0;
 
 private:
   vtkMultiProcessController* Controller;
@@ -48,6 +51,7 @@ vtkCxxSetObjectMacro(vtkOFBPPaintFilter, Controller, vtkMultiProcessController);
 //------------------------------------------------------------------------------
 vtkOFBPPaintFilter::vtkOFBPPaintFilter()
   : Controller(nullptr)
+  , NumberOfStrokeReductions(0)
 {
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
@@ -105,6 +109,7 @@ int vtkOFBPPaintFilter::RequestData(vtkInformation* request,
   vtkInformationVector* outputVector)
 {
   vtkMultiProcessController* controller = this->Controller;
+  this->NumberOfStrokeReductions = 0;
   if (!controller || controller->GetNumberOfProcesses() <= 1)
   {
     return this->Superclass::RequestData(request, inputVector, outputVector);
@@ -122,6 +127,7 @@ int vtkOFBPPaintFilter::RequestData(vtkInformation* request,
   this->Exchange = &exchange;
   const int result = this->Superclass::RequestData(request, inputVector, outputVector);
   this->Exchange = nullptr;
+  this->NumberOfStrokeReductions = exchange.Calls;
   return result;
 }
 
@@ -130,4 +136,5 @@ void vtkOFBPPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "NumberOfStrokeReductions: " << this->NumberOfStrokeReductions << "\n";
 }

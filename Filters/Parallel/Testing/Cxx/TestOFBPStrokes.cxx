@@ -9,9 +9,12 @@
 // paints the whole pipe with no controller, gathers every piece's owned samples and
 // compares their colours, which must be equal.
 //
-//   mpirun -np N TestOFBPStrokes [--empty-last]
+//   mpirun -np N TestOFBPStrokes [--empty-last] [--bad-input]
 //
 // --empty-last: the last process has an empty piece (the others share the pipe).
+// --bad-input: no process has samples (a resolution out of range), then a stroke point
+// that is not finite: every process reports the error and outputs an empty OFB, and none
+// waits for another.
 // Exit status 0 when every check holds, on every process.
 #include "vtkCellArray.h"
 #include "vtkCommunicator.h"
@@ -280,6 +283,44 @@ bool Compare(const std::vector<double>& gathered,
 }
 }
 
+/// --bad-input: errors on every process (an empty piece too) give empty outputs, no hang.
+bool RunBadInput(vtkMultiProcessController* controller, int pieces, vtkPolyData* pipe)
+{
+  const int rank = controller->GetLocalProcessId();
+  vtkNew<vtkPolyData> none;
+  vtkSmartPointer<vtkPolyData> strokes = MakeStrokes();
+  vtkNew<vtkPolyData> notFinite;
+  notFinite->DeepCopy(strokes);
+  notFinite->GetPoints()->SetPoint(3, std::nan(""), 0.0, 0.0);
+  bool ok = true;
+  for (int bad = 0; bad < 2; ++bad)
+  {
+    vtkPolyData* given = bad == 0 ? strokes.GetPointer() : notFinite.GetPointer();
+    Pipeline pipeline(controller, rank == 0 ? given : none.GetPointer());
+    pipeline.Sampler->SetResolution(bad == 0 ? 2 : Resolution);
+    vtkNew<vtkExtractPolyDataPiece> extract;
+    extract->SetInputData(pipe);
+    if (rank < pieces)
+    {
+      pipeline.Sampler->SetInputConnection(extract->GetOutputPort());
+    }
+    else
+    {
+      pipeline.Sampler->SetInputData(none);
+    }
+    pipeline.Paint->UpdatePiece(std::min(rank, pieces - 1), pieces, GhostLevels);
+    const vtkIdType painted =
+      vtkOFB::SafeDownCast(pipeline.Paint->GetOutputDataObject(0))->GetNumberOfSamples();
+    std::printf("rank %d, %s: %lld samples out%s\n",
+      rank,
+      bad == 0 ? "resolution 2" : "a stroke point not finite",
+      static_cast<long long>(painted),
+      painted == 0 ? "" : " FAIL");
+    ok = ok && painted == 0;
+  }
+  return ok;
+}
+
 int main(int argc, char* argv[])
 {
   vtkNew<vtkMPIController> controller;
@@ -288,12 +329,26 @@ int main(int argc, char* argv[])
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
   bool emptyLast = false;
+  bool badInput = false;
   for (int i = 1; i < argc; ++i)
   {
     emptyLast = emptyLast || !std::strcmp(argv[i], "--empty-last");
+    badInput = badInput || !std::strcmp(argv[i], "--bad-input");
   }
   const int pieces = emptyLast && size > 1 ? size - 1 : size;
   vtkSmartPointer<vtkPolyData> pipe = MakePipe();
+  if (badInput)
+  {
+    int ok = RunBadInput(controller, pieces, pipe) ? 1 : 0;
+    int all = 0;
+    controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
+    if (rank == 0)
+    {
+      std::printf("%s\n", all ? "PASS" : "FAIL");
+    }
+    controller->Finalize();
+    return all ? 0 : 1;
+  }
   vtkSmartPointer<vtkPolyData> strokes = MakeStrokes();
   vtkNew<vtkPolyData> none;
 
@@ -311,10 +366,18 @@ int main(int argc, char* argv[])
   }
   distributed.Paint->UpdatePiece(std::min(rank, pieces - 1), pieces, GhostLevels);
   const std::vector<double> owned = distributed.Owned(rank);
-  std::printf("rank %d: %zu owned samples, %lld changed\n",
+  const vtkIdType reductions = distributed.Paint->GetNumberOfStrokeReductions();
+  std::printf("rank %d: %zu owned samples, %lld changed, %lld all-reduces for the paths\n",
     rank,
     owned.size() / Fields,
-    static_cast<long long>(distributed.Paint->GetNumberOfChangedSamples()));
+    static_cast<long long>(distributed.Paint->GetNumberOfChangedSamples()),
+    static_cast<long long>(reductions));
+  // On more than one process the paths are walked together (the frame, the points, then
+  // a round of steps at least): 9 all-reduces or more, the same number on every process.
+  vtkIdType fewest = 0, most = 0;
+  controller->AllReduce(&reductions, &fewest, 1, vtkCommunicator::MIN_OP);
+  controller->AllReduce(&reductions, &most, 1, vtkCommunicator::MAX_OP);
+  const bool walked = fewest == most && (size == 1 ? most == 0 : most >= 9);
 
   std::vector<vtkIdType> counts(size), offsets(size);
   const vtkIdType count = static_cast<vtkIdType>(owned.size());
@@ -329,13 +392,19 @@ int main(int argc, char* argv[])
   controller->GatherV(owned.data(), gathered.data(), count, counts.data(), offsets.data(), 0);
   gathered.resize(rank == 0 ? total : 0);
 
-  int ok = 1;
+  int ok = walked ? 1 : 0;
+  if (!walked && rank == 0)
+  {
+    std::printf("FAIL all-reduces for the paths: %lld to %lld\n",
+      static_cast<long long>(fewest),
+      static_cast<long long>(most));
+  }
   if (rank == 0)
   {
     Pipeline whole(nullptr, strokes);
     whole.Sampler->SetInputData(pipe);
     whole.Paint->Update();
-    ok = Compare(gathered, whole.Owned(0), size, pieces) ? 1 : 0;
+    ok = Compare(gathered, whole.Owned(0), size, pieces) && ok ? 1 : 0;
     std::printf("%s\n", ok ? "PASS" : "FAIL");
   }
   controller->Broadcast(&ok, 1, 0);

@@ -112,6 +112,14 @@ if (VTKOFB_BUILD_TESTING)
       LABELS  "ParaView;MPI"
       PROCESSORS 2
       TIMEOUT 900)
+    add_test(
+      NAME    "OFB.ParaView.DistributedStrokes"
+      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
+        -R "^OFBPlugin\\.DistributedStrokes\\." --output-on-failure --no-tests=error)
+    set_tests_properties("OFB.ParaView.DistributedStrokes" PROPERTIES
+      LABELS  "ParaView;MPI"
+      PROCESSORS 2
+      TIMEOUT 900)
   endif ()
   # The tests that render share xvfb-run's display with the other display tests
   # (docs/testing.md, "Tests that open windows"); their scripts keep a connection open.

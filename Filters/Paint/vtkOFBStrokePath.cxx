@@ -143,11 +143,28 @@ vtkIdType vtkOFBStrokePath::Snap(const double x[3], double onSurface[3]) const
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBStrokePath::ClosestSample(const double x[3], double& d2) const
 {
+  d2 = Infinity;
   if (!this->Valid || !std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
   {
     return -1;
   }
   // Search spheres of growing radius: the first one with a sample holds the closest.
+  for (int level = 0;; ++level)
+  {
+    const double r = this->SearchRadius(x, level);
+    const vtkIdType id = this->ClosestWithin(x, r, d2);
+    if (id >= 0 || !(r < Infinity))
+    {
+      return id;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBStrokePath::SearchRadius(const double x[3], int level) const
+{
+  // sqrt(3) cells (a point on the surface has a sample that close), 4 times larger at
+  // each level, then infinite once the sphere would reach past the frame.
   double b[6];
   this->OFB->GetBounds(b);
   double outside = 0.0;
@@ -157,29 +174,28 @@ vtkIdType vtkOFBStrokePath::ClosestSample(const double x[3], double& d2) const
     outside += d * d;
   }
   const double farthest = std::sqrt(outside) + this->Diagonal;
+  const double r = std::ldexp(std::sqrt(3.0) * this->OFB->GetCellSize(), 2 * level);
+  return r < farthest ? r : Infinity;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBStrokePath::ClosestWithin(const double x[3], double radius, double& d2) const
+{
+  // As vtkOFB::FindClosestSample, over the owned samples.
   vtkIdType id = -1;
   double best = std::numeric_limits<double>::max();
-  for (double r = std::sqrt(3.0) * this->OFB->GetCellSize(); id < 0; r *= 4.0)
-  {
-    const bool last = !(r < farthest);
-    // As vtkOFB::FindClosestSample, over the owned samples.
-    this->OFB->ForEachSampleInSphere(x,
-      last ? Infinity : r,
-      [&](vtkIdType sample, double s2)
-      {
-        if ((s2 < best || (s2 == best && sample < id)) &&
-          !(this->Ghosts && this->Ghosts->GetValue(sample)))
-        {
-          best = s2;
-          id = sample;
-        }
-      });
-    if (last)
+  this->OFB->ForEachSampleInSphere(x,
+    radius,
+    [&](vtkIdType sample, double s2)
     {
-      break;
-    }
-  }
-  d2 = best;
+      if ((s2 < best || (s2 == best && sample < id)) &&
+        !(this->Ghosts && this->Ghosts->GetValue(sample)))
+      {
+        best = s2;
+        id = sample;
+      }
+    });
+  d2 = id >= 0 ? best : Infinity;
   return id;
 }
 
@@ -348,14 +364,43 @@ void vtkOFBStrokePath::PlaceDistributed(const std::vector<glm::dvec3>& points,
   this->Step = -frame[0];
   this->Diagonal = -frame[1];
 
-  // Every point onto the closest owned sample of every process.
+  // Every point onto the closest owned sample of every process: the spheres of Snap,
+  // level by level on every process, until some process has a sample in a point's
+  // sphere (then that sphere holds the closest of all, as on one process), or every
+  // process has searched everywhere.
   std::vector<Candidate> onSurface(points.size());
+  std::vector<size_t> open(points.size());
   for (size_t i = 0; i < points.size(); ++i)
   {
-    const double x[3] = { points[i].x, points[i].y, points[i].z };
-    double d2 = Infinity;
-    const vtkIdType id = this->ClosestSample(x, d2);
-    onSurface[i] = this->MakeCandidate(id, d2);
+    open[i] = i;
+  }
+  std::vector<double> found;
+  for (int level = 0; !open.empty(); ++level)
+  {
+    found.assign(open.size() + 1, Infinity);
+    bool searchedEverywhere = true;
+    for (size_t j = 0; this->Valid && j < open.size(); ++j)
+    {
+      const double x[3] = { points[open[j]].x, points[open[j]].y, points[open[j]].z };
+      const double r = this->SearchRadius(x, level);
+      searchedEverywhere = searchedEverywhere && !(r < Infinity);
+      double d2 = Infinity;
+      const vtkIdType id = this->ClosestWithin(x, r, d2);
+      onSurface[open[j]] = this->MakeCandidate(id, d2);
+      found[j] = d2;
+    }
+    found.back() = searchedEverywhere ? 0.0 : -1.0;
+    exchange->AllReduceMinimum(found);
+    const bool last = found.back() == 0.0;
+    size_t kept = 0;
+    for (size_t j = 0; j < open.size(); ++j)
+    {
+      if (!(found[j] < Infinity) && !last)
+      {
+        open[kept++] = open[j];
+      }
+    }
+    open.resize(kept);
   }
   Reduce(onSurface, exchange);
   at.resize(points.size());

@@ -72,7 +72,8 @@ public:
    * `segments[k].first` to point `segments[k].second`, as Trace gives it (a chord when an
    * end did not move onto a sample). Every process calls it with the same points and
    * segments; each call of `exchange` is collective, and every process makes the same
-   * calls (the number of steps of the longest path, four all-reduces each).
+   * calls: one for the frame, one per level of Snap's growing spheres (one level for
+   * points on the surface), four for the points, then four per step of the longest path.
    */
   void PlaceDistributed(const std::vector<glm::dvec3>& points,
     const std::vector<std::pair<vtkIdType, vtkIdType>>& segments,
@@ -96,6 +97,10 @@ private:
   Candidate MakeCandidate(vtkIdType id, double distance) const;
   /// The closest (owned) sample to `x` and its squared distance `d2`, or -1.
   vtkIdType ClosestSample(const double x[3], double& d2) const;
+  /// The radius of Snap's search sphere number `level` (from 0) around `x`.
+  double SearchRadius(const double x[3], int level) const;
+  /// The closest (owned) sample within `radius` of `x` and its squared distance, or -1.
+  vtkIdType ClosestWithin(const double x[3], double radius, double& d2) const;
   /// Start walking from `from` to `to`: the first point of `path`.
   Walk Begin(const Candidate& from, const Candidate& to, std::vector<glm::dvec3>& path) const;
   /// False when the walk is over (the target, or the chord to it, then ends `path`).

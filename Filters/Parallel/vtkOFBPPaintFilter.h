@@ -56,8 +56,9 @@ public:
 
   /**
    * The all-reduces the last update made to place the strokes on the surface (with
-   * FollowSurface, on more than one process): 1 for the frame, 4 for the points, then 4
-   * per round of steps. 0 otherwise.
+   * FollowSurface, on more than one process): 1 for the frame, 1 per level of the
+   * growing search spheres and 4 more for the points, then 4 per round of steps. 0
+   * otherwise.
    */
   vtkGetMacro(NumberOfStrokeReductions, vtkIdType);
 

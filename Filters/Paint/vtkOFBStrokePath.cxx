@@ -351,19 +351,10 @@ void vtkOFBStrokePath::Reduce(std::vector<Candidate>& c, vtkOFBStrokeExchange* e
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBStrokePath::PlaceDistributed(const std::vector<glm::dvec3>& points,
-  const std::vector<std::pair<vtkIdType, vtkIdType>>& segments,
-  vtkOFBStrokeExchange* exchange,
-  std::vector<glm::dvec3>& at,
-  std::vector<std::vector<glm::dvec3>>& paths)
+std::vector<vtkOFBStrokePath::Candidate> vtkOFBStrokePath::SnapDistributed(
+  const std::vector<glm::dvec3>& points,
+  vtkOFBStrokeExchange* exchange) const
 {
-  // The step and the frame's diagonal of the processes that have samples (a piece
-  // without samples may have no frame).
-  std::vector<double> frame = { -this->Step, -this->Diagonal };
-  exchange->AllReduceMinimum(frame);
-  this->Step = -frame[0];
-  this->Diagonal = -frame[1];
-
   // Every point onto the closest owned sample of every process: the spheres of Snap,
   // level by level on every process, until some process has a sample in a point's
   // sphere (then that sphere holds the closest of all, as on one process), or every
@@ -403,6 +394,24 @@ void vtkOFBStrokePath::PlaceDistributed(const std::vector<glm::dvec3>& points,
     open.resize(kept);
   }
   Reduce(onSurface, exchange);
+  return onSurface;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBStrokePath::PlaceDistributed(const std::vector<glm::dvec3>& points,
+  const std::vector<std::pair<vtkIdType, vtkIdType>>& segments,
+  vtkOFBStrokeExchange* exchange,
+  std::vector<glm::dvec3>& at,
+  std::vector<std::vector<glm::dvec3>>& paths)
+{
+  // The step and the frame's diagonal of the processes that have samples (a piece
+  // without samples may have no frame).
+  std::vector<double> frame = { -this->Step, -this->Diagonal };
+  exchange->AllReduceMinimum(frame);
+  this->Step = -frame[0];
+  this->Diagonal = -frame[1];
+
+  const std::vector<Candidate> onSurface = this->SnapDistributed(points, exchange);
   at.resize(points.size());
   for (size_t i = 0; i < points.size(); ++i)
   {

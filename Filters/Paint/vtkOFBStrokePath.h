@@ -109,6 +109,9 @@ private:
   Candidate Next(const Walk& walk) const;
   /// Step to `next` (the walk is over when it is none).
   void Take(Walk& walk, const Candidate& next, std::vector<glm::dvec3>& path) const;
+  /// Every point on the closest owned sample of every process (collective).
+  std::vector<Candidate> SnapDistributed(const std::vector<glm::dvec3>& points,
+    vtkOFBStrokeExchange* exchange) const;
   /// Keep the best candidate of every process, for each of `candidates`.
   static void Reduce(std::vector<Candidate>& candidates, vtkOFBStrokeExchange* exchange);
 

@@ -116,6 +116,14 @@ if (VTKOFB_BUILD_TESTING)
       LABELS  "ParaView;MPI"
       PROCESSORS 2
       TIMEOUT 900)
+    add_test(
+      NAME    "OFB.ParaView.DistributedStrokes"
+      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
+        -R "^OFBPlugin\\.DistributedStrokes\\." --output-on-failure --no-tests=error)
+    set_tests_properties("OFB.ParaView.DistributedStrokes" PROPERTIES
+      LABELS  "ParaView;MPI"
+      PROCESSORS 2
+      TIMEOUT 900)
   endif ()
   # The tests that render share xvfb-run's display with the other display tests
   # (docs/testing.md, "Tests that open windows"); their scripts keep a connection open.
@@ -124,7 +132,7 @@ if (VTKOFB_BUILD_TESTING)
     OFB.ParaView.LICBenchmark)
   if (TEST OFB.ParaView.Distributed)
     list(APPEND vtkofb_paraview_render_tests OFB.ParaView.Distributed
-      OFB.ParaView.SurfaceDistributed)
+      OFB.ParaView.SurfaceDistributed OFB.ParaView.DistributedStrokes)
   endif ()
   set_property(TEST ${vtkofb_paraview_render_tests} APPEND PROPERTY
     RESOURCE_LOCK vtkofb_display)

@@ -14,6 +14,7 @@
 #include "vtkOFBDabArrays.h"
 #include "vtkOFBInputChecks.h"
 #include "vtkOFBPainter.h"
+#include "vtkOFBStrokeExchange.h"
 #include "vtkOFBStrokePath.h"
 #include "vtkOFBStrokeSampler.h"
 #include "vtkObjectFactory.h"
@@ -25,7 +26,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBPaintFilter);
@@ -115,6 +118,195 @@ struct DabArrays
     this->Previous->InsertNextTuple(previous);
   }
 };
+
+/// The segments of the strokes' polylines, in order: pairs of point ids.
+std::vector<std::pair<vtkIdType, vtkIdType>> Segments(vtkPolyData* strokes)
+{
+  std::vector<std::pair<vtkIdType, vtkIdType>> segments;
+  const vtkIdType* ids = nullptr;
+  vtkIdType n = 0;
+  vtkCellArray* lines = strokes->GetLines();
+  for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
+  {
+    for (vtkIdType k = 1; k < n; ++k)
+    {
+      segments.emplace_back(ids[k - 1], ids[k]);
+    }
+  }
+  return segments;
+}
+
+/// An empty string when every stroke point is finite with a positive, finite radius.
+std::string CheckPoints(vtkPolyData* strokes, const StrokeValues& v)
+{
+  std::ostringstream error;
+  for (vtkIdType i = 0; i < strokes->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    strokes->GetPoint(i, p);
+    const double r = v.RadiusAt(i);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      error << "Stroke point " << i << " is not finite (NaN or infinite).";
+      break;
+    }
+    if (!(r > 0.0) || !std::isfinite(r))
+    {
+      error << "Stroke point " << i << " has radius " << r << ", not positive and finite.";
+      break;
+    }
+  }
+  return error.str();
+}
+
+/**
+ * The stroke points on the surface (`at`) and the path of every segment (`paths`): with
+ * `followSurface`, every point moves onto the closest sample and each segment becomes a
+ * path over the surface; otherwise the points and chords. With `exchange`, `ofb` is this
+ * process's piece and the points and paths are those of every process's owned samples.
+ */
+void PlaceOnSurface(vtkPolyData* strokes,
+  const std::vector<std::pair<vtkIdType, vtkIdType>>& segments,
+  vtkOFB* ofb,
+  bool followSurface,
+  vtkOFBStrokeExchange* exchange,
+  std::vector<glm::dvec3>& at,
+  std::vector<std::vector<glm::dvec3>>& paths)
+{
+  const vtkIdType numberOfPoints = strokes->GetNumberOfPoints();
+  std::vector<glm::dvec3> points(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double p[3];
+    strokes->GetPoint(i, p);
+    points[i] = glm::dvec3(p[0], p[1], p[2]);
+  }
+  if (followSurface && exchange)
+  {
+    vtkOFBStrokePath surface(ofb, true);
+    surface.PlaceDistributed(points, segments, exchange, at, paths);
+    return;
+  }
+  const vtkOFBStrokePath surface(followSurface ? ofb : nullptr);
+  at.resize(numberOfPoints);
+  std::vector<vtkIdType> sampleOf(numberOfPoints, -1);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const double p[3] = { points[i].x, points[i].y, points[i].z };
+    double q[3];
+    sampleOf[i] = surface.IsValid() ? surface.Snap(p, q) : -1;
+    at[i] = sampleOf[i] >= 0 ? glm::dvec3(q[0], q[1], q[2]) : points[i];
+  }
+  paths.assign(segments.size(), std::vector<glm::dvec3>());
+  for (size_t k = 0; k < segments.size(); ++k)
+  {
+    const vtkIdType a = segments[k].first, b = segments[k].second;
+    if (sampleOf[a] >= 0 && sampleOf[b] >= 0)
+    {
+      surface.Trace(sampleOf[a], sampleOf[b], paths[k]);
+    }
+    else
+    {
+      paths[k] = { at[a], at[b] };
+    }
+  }
+}
+
+/// The spacing of the dabs and how their radius is read.
+struct DabSpacing
+{
+  double Spacing;
+  double CellSize;
+  bool ByPressure; // the radius is scaled by the pressure
+
+  double RadiusAt(const StrokeValues& v, vtkIdType i) const
+  {
+    return v.RadiusAt(i) * (this->ByPressure ? v.PressureAt(i) : 1.0);
+  }
+};
+
+/// The dabs the strokes will place, at most (each segment at its smaller radius).
+double MostDabs(const StrokeValues& v,
+  const DabSpacing& s,
+  const std::vector<std::pair<vtkIdType, vtkIdType>>& segments,
+  const std::vector<std::vector<glm::dvec3>>& paths)
+{
+  double expected = 0.0;
+  for (size_t k = 0; k < segments.size(); ++k)
+  {
+    expected +=
+      vtkOFBStrokeSampler::MostDabs(vtkOFBStrokePath::Length(paths[k], 0, paths[k].size() - 1),
+        s.Spacing,
+        std::min(s.RadiusAt(v, segments[k].first), s.RadiusAt(v, segments[k].second)),
+        s.CellSize);
+  }
+  return expected;
+}
+
+/**
+ * The dabs: one per vertex cell's point, then along each polyline the first dab at its
+ * first point and the painter's walk along each path, the values interpolated by the
+ * length walked.
+ */
+void PlaceDabs(vtkPolyData* strokes,
+  const StrokeValues& v,
+  const DabSpacing& s,
+  const std::vector<glm::dvec3>& at,
+  const std::vector<std::vector<glm::dvec3>>& paths,
+  DabArrays& out)
+{
+  const double none[3] = { std::nan(""), std::nan(""), std::nan("") };
+  const vtkIdType* ids = nullptr;
+  vtkIdType n = 0;
+  vtkCellArray* verts = strokes->GetVerts();
+  for (verts->InitTraversal(); verts->GetNextCell(n, ids);)
+  {
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const glm::dvec3& c = at[ids[k]];
+      const double cc[3] = { c.x, c.y, c.z };
+      out.Add(v, ids[k], ids[k], 0.0, cc, none);
+    }
+  }
+  size_t segment = 0;
+  vtkCellArray* lines = strokes->GetLines();
+  for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
+  {
+    if (n == 0)
+    {
+      continue;
+    }
+    double last[3] = { at[ids[0]].x, at[ids[0]].y, at[ids[0]].z };
+    out.Add(v, ids[0], ids[0], 0.0, last, none);
+    vtkOFBStrokeSampler sampler;
+    sampler.Start(s.RadiusAt(v, ids[0]));
+    for (vtkIdType k = 1; k < n; ++k, ++segment)
+    {
+      const std::vector<glm::dvec3>& path = paths[segment];
+      std::vector<double> walked(path.size(), 0.0);
+      for (size_t i = 1; i < path.size(); ++i)
+      {
+        walked[i] = walked[i - 1] + glm::length(path[i] - path[i - 1]);
+      }
+      const double length = walked.back();
+      sampler.WalkPath(path,
+        s.Spacing,
+        s.CellSize,
+        [&](size_t i, double t)
+        {
+          const glm::dvec3 c = path[i] + t * (path[i + 1] - path[i]);
+          const double cc[3] = { c.x, c.y, c.z };
+          const double f = length > 0.0
+            ? std::min(1.0, (walked[i] + t * (walked[i + 1] - walked[i])) / length)
+            : 1.0;
+          out.Add(v, ids[k - 1], ids[k], f, cc, last);
+          std::copy(cc, cc + 3, last);
+          const vtkIdType added = out.Points->GetNumberOfPoints() - 1;
+          return out.Radius->GetValue(added) * (s.ByPressure ? out.Pressure->GetValue(added) : 1.0);
+        });
+    }
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -222,72 +414,22 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, v
   {
     v.ColorScale = 1.0 / 255.0;
   }
-  for (vtkIdType i = 0; i < strokes->GetNumberOfPoints(); ++i)
+  const std::string error = CheckPoints(strokes, v);
+  if (!error.empty())
   {
-    double p[3];
-    strokes->GetPoint(i, p);
-    const double r = v.RadiusAt(i);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      vtkErrorMacro("Stroke point " << i << " is not finite (NaN or infinite).");
-      return nullptr;
-    }
-    if (!(r > 0.0) || !std::isfinite(r))
-    {
-      vtkErrorMacro("Stroke point " << i << " has radius " << r << ", not positive and finite.");
-      return nullptr;
-    }
+    vtkErrorMacro(<< error);
+    return nullptr;
   }
 
-  // With the painter's FollowSurface every point moves onto the surface (the closest
-  // sample) and each segment becomes a path over it; otherwise the points and chords.
-  const vtkOFBStrokePath surface(this->Painter->GetFollowSurface() ? ofb : nullptr);
-  const vtkIdType numberOfPoints = strokes->GetNumberOfPoints();
-  std::vector<glm::dvec3> at(numberOfPoints);
-  std::vector<vtkIdType> sampleOf(numberOfPoints, -1);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    double p[3], q[3];
-    strokes->GetPoint(i, p);
-    sampleOf[i] = surface.IsValid() ? surface.Snap(p, q) : -1;
-    at[i] = sampleOf[i] >= 0 ? glm::dvec3(q[0], q[1], q[2]) : glm::dvec3(p[0], p[1], p[2]);
-  }
-  auto pathOf = [&](vtkIdType a, vtkIdType b)
-  {
-    std::vector<glm::dvec3> path;
-    if (sampleOf[a] >= 0 && sampleOf[b] >= 0)
-    {
-      surface.Trace(sampleOf[a], sampleOf[b], path);
-    }
-    else
-    {
-      path = { at[a], at[b] };
-    }
-    return path;
-  };
-
-  // The dabs the strokes will place, at most (each segment at its smaller radius).
-  const double spacing = this->Painter->GetSpacing();
-  const double cellSize = ofb->GetCellSize();
-  const bool byPressure = this->Brush->GetPressureAffectsRadius();
-  auto radiusAt = [&](vtkIdType i) { return v.RadiusAt(i) * (byPressure ? v.PressureAt(i) : 1.0); };
-  double expected = 0.0;
-  const vtkIdType* ids = nullptr;
-  vtkIdType n = 0;
+  const std::vector<std::pair<vtkIdType, vtkIdType>> segments = Segments(strokes);
+  std::vector<glm::dvec3> at;
   std::vector<std::vector<glm::dvec3>> paths; // per segment of the polylines, in order
-  vtkCellArray* lines = strokes->GetLines();
-  for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
-  {
-    for (vtkIdType k = 1; k < n; ++k)
-    {
-      paths.push_back(pathOf(ids[k - 1], ids[k]));
-      expected += vtkOFBStrokeSampler::MostDabs(
-        vtkOFBStrokePath::Length(paths.back(), 0, paths.back().size() - 1),
-        spacing,
-        std::min(radiusAt(ids[k - 1]), radiusAt(ids[k])),
-        cellSize);
-    }
-  }
+  PlaceOnSurface(
+    strokes, segments, ofb, this->Painter->GetFollowSurface(), this->Exchange, at, paths);
+  const DabSpacing spacing{
+    this->Painter->GetSpacing(), ofb->GetCellSize(), this->Brush->GetPressureAffectsRadius()
+  };
+  const double expected = MostDabs(v, spacing, segments, paths);
   if (expected > vtkOFBMaximumStrokeDabs)
   {
     vtkErrorMacro("The strokes would place about " << expected << " dabs, more than "
@@ -297,58 +439,7 @@ vtkSmartPointer<vtkPolyData> vtkOFBPaintFilter::MakeDabs(vtkPolyData* strokes, v
   }
 
   DabArrays out;
-  const double none[3] = { std::nan(""), std::nan(""), std::nan("") };
-  // Single dabs: vertex cells.
-  vtkCellArray* verts = strokes->GetVerts();
-  for (verts->InitTraversal(); verts->GetNextCell(n, ids);)
-  {
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const glm::dvec3& c = at[ids[k]];
-      const double cc[3] = { c.x, c.y, c.z };
-      out.Add(v, ids[k], ids[k], 0.0, cc, none);
-    }
-  }
-  // Strokes: the first dab at the first point, then the painter's walk along each path,
-  // the values interpolated by the length walked.
-  size_t segment = 0;
-  for (lines->InitTraversal(); lines->GetNextCell(n, ids);)
-  {
-    if (n == 0)
-    {
-      continue;
-    }
-    double last[3] = { at[ids[0]].x, at[ids[0]].y, at[ids[0]].z };
-    out.Add(v, ids[0], ids[0], 0.0, last, none);
-    vtkOFBStrokeSampler sampler;
-    sampler.Start(radiusAt(ids[0]));
-    for (vtkIdType k = 1; k < n; ++k, ++segment)
-    {
-      const std::vector<glm::dvec3>& path = paths[segment];
-      std::vector<double> walked(path.size(), 0.0);
-      for (size_t i = 1; i < path.size(); ++i)
-      {
-        walked[i] = walked[i - 1] + glm::length(path[i] - path[i - 1]);
-      }
-      const double length = walked.back();
-      sampler.WalkPath(path,
-        spacing,
-        cellSize,
-        [&](size_t i, double t)
-        {
-          const glm::dvec3 c = path[i] + t * (path[i + 1] - path[i]);
-          const double cc[3] = { c.x, c.y, c.z };
-          const double f = length > 0.0
-            ? std::min(1.0, (walked[i] + t * (walked[i + 1] - walked[i])) / length)
-            : 1.0;
-          out.Add(v, ids[k - 1], ids[k], f, cc, last);
-          std::copy(cc, cc + 3, last);
-          const vtkIdType added = out.Points->GetNumberOfPoints() - 1;
-          return out.Radius->GetValue(added) * (byPressure ? out.Pressure->GetValue(added) : 1.0);
-        });
-    }
-  }
-
+  PlaceDabs(strokes, v, spacing, at, paths, out);
   auto dabs = vtkSmartPointer<vtkPolyData>::New();
   dabs->SetPoints(out.Points);
   vtkPointData* dpd = dabs->GetPointData();
@@ -380,7 +471,9 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
     return 0;
   }
   output->Initialize();
-  if (!input || input->GetNumberOfSamples() == 0)
+  // A distributed OFB's piece may have no samples: it takes part in the walks.
+  const bool emptyPiece = !input || input->GetNumberOfSamples() == 0;
+  if (emptyPiece && !this->Exchange)
   {
     vtkErrorMacro("The input OFB is missing or has no samples: empty output.");
     return 1;
@@ -401,11 +494,20 @@ int vtkOFBPaintFilter::RequestData(vtkInformation*,
   vtkSmartPointer<vtkPolyData> dabs;
   if (strokes && strokes->GetNumberOfPoints() > 0)
   {
-    dabs = this->MakeDabs(strokes, input);
+    vtkNew<vtkOFB> none;
+    dabs = this->MakeDabs(strokes, input ? input : none.Get());
     if (!dabs)
     {
       return 1; // the error is reported
     }
+  }
+  if (emptyPiece)
+  {
+    if (input)
+    {
+      output->ShallowCopy(input);
+    }
+    return 1;
   }
 
   // A painted copy: the painted array deep, the rest shared.

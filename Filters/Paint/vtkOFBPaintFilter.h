@@ -38,6 +38,7 @@
 
 class vtkOFB;
 class vtkOFBBrush;
+class vtkOFBStrokeExchange;
 class vtkOFBPainter;
 class vtkPolyData;
 
@@ -107,6 +108,14 @@ protected:
   vtkSmartPointer<vtkOFBBrush> Brush;
   vtkSmartPointer<vtkOFBPainter> Painter;
   vtkIdType NumberOfChangedSamples;
+
+  /**
+   * The collective calls of a distributed run (see vtkOFBStrokeExchange), set by a
+   * distributed subclass for the time of its RequestData; null (the default): one
+   * process. With it, the input may have no samples (an empty piece): its output is the
+   * input, and it still takes part in placing the strokes on the surface.
+   */
+  vtkOFBStrokeExchange* Exchange = nullptr;
 
 private:
   vtkOFBPaintFilter(const vtkOFBPaintFilter&) = delete;

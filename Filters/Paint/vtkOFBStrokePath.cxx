@@ -1,8 +1,12 @@
 #include "vtkOFBStrokePath.h"
 
+#include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
+#include "vtkOFBStrokeExchange.h"
 #include "vtkPointData.h"
+#include "vtkTypeUInt32Array.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,10 +18,44 @@ namespace
 constexpr double StepCells = 2.0;
 /// The cosine of the largest turn between the normals of two consecutive samples.
 constexpr double LargestTurnCosine = -0.5;
+constexpr double Infinity = std::numeric_limits<double>::infinity();
 }
 
+/**
+ * A sample offered by a query, with what every process needs to compare it and to walk
+ * on from it: the measure compared (`Distance`), its key (`Cell`, the global cell index,
+ * then `Depth`: the order of sample ids in any OFB of the common frame), its position and
+ * normal (zero without normals). None: an infinite distance.
+ */
+struct vtkOFBStrokePath::Candidate
+{
+  double Distance = Infinity;
+  double Cell = Infinity;
+  double Depth = Infinity;
+  double Position[3] = { 0.0, 0.0, 0.0 };
+  double Normal[3] = { 0.0, 0.0, 0.0 };
+
+  bool Found() const { return this->Distance < Infinity; }
+  bool SameSample(const Candidate& other) const
+  {
+    return this->Cell == other.Cell && this->Depth == other.Depth;
+  }
+};
+
+/// A path being walked: where it is, the normal there, and the target.
+struct vtkOFBStrokePath::Walk
+{
+  glm::dvec3 At;
+  glm::dvec3 Target;
+  double Normal[3] = { 0.0, 0.0, 0.0 };
+  double Distance = 0.0; // from At to Target
+  double Most = 0.0;     // the bound on the steps
+  double Steps = 0.0;
+  bool Done = false;
+};
+
 //------------------------------------------------------------------------------
-vtkOFBStrokePath::vtkOFBStrokePath(vtkOFB* ofb)
+vtkOFBStrokePath::vtkOFBStrokePath(vtkOFB* ofb, bool ownedOnly)
   : OFB(ofb)
 {
   if (!ofb || ofb->GetNumberOfSamples() == 0 || !(ofb->GetCellSize() > 0.0))
@@ -37,6 +75,13 @@ vtkOFBStrokePath::vtkOFBStrokePath(vtkOFB* ofb)
   {
     this->Normals = normals;
   }
+  auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
+    ofb->GetSampleData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  if (ownedOnly && ghosts && ghosts->GetNumberOfComponents() == 1 &&
+    ghosts->GetNumberOfTuples() >= ofb->GetNumberOfSamples())
+  {
+    this->Ghosts = ghosts;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -48,30 +93,78 @@ glm::dvec3 vtkOFBStrokePath::Position(vtkIdType id) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkOFBStrokePath::Facing(vtkIdType a, vtkIdType b) const
+bool vtkOFBStrokePath::Facing(const double na[3], vtkIdType b) const
 {
   if (!this->Normals)
   {
     return true;
   }
-  const float* na = this->Normals->GetPointer(3 * a);
   const float* nb = this->Normals->GetPointer(3 * b);
-  const double dot = double(na[0]) * nb[0] + double(na[1]) * nb[1] + double(na[2]) * nb[2];
-  const double la = double(na[0]) * na[0] + double(na[1]) * na[1] + double(na[2]) * na[2];
+  const double dot = na[0] * nb[0] + na[1] * nb[1] + na[2] * nb[2];
+  const double la = na[0] * na[0] + na[1] * na[1] + na[2] * na[2];
   const double lb = double(nb[0]) * nb[0] + double(nb[1]) * nb[1] + double(nb[2]) * nb[2];
   // Samples without a normal (zero length) face every way.
   return !(dot < LargestTurnCosine * std::sqrt(la * lb));
 }
 
 //------------------------------------------------------------------------------
+vtkOFBStrokePath::Candidate vtkOFBStrokePath::MakeCandidate(vtkIdType id, double distance) const
+{
+  Candidate c;
+  if (id < 0)
+  {
+    return c;
+  }
+  c.Distance = distance;
+  c.Cell = static_cast<double>(this->OFB->GetCellIndex()->GetValue(id));
+  c.Depth = static_cast<double>(this->OFB->GetDepths()->GetValue(id));
+  this->OFB->GetSamplePosition(id, c.Position);
+  if (this->Normals)
+  {
+    const float* n = this->Normals->GetPointer(3 * id);
+    std::copy(n, n + 3, c.Normal);
+  }
+  return c;
+}
+
+//------------------------------------------------------------------------------
 vtkIdType vtkOFBStrokePath::Snap(const double x[3], double onSurface[3]) const
 {
+  double d2 = Infinity;
+  const vtkIdType id = this->ClosestSample(x, d2);
   std::copy(x, x + 3, onSurface);
-  if (!this->Valid)
+  if (id >= 0)
+  {
+    this->OFB->GetSamplePosition(id, onSurface);
+  }
+  return id;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBStrokePath::ClosestSample(const double x[3], double& d2) const
+{
+  d2 = Infinity;
+  if (!this->Valid || !std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
   {
     return -1;
   }
   // Search spheres of growing radius: the first one with a sample holds the closest.
+  for (int level = 0;; ++level)
+  {
+    const double r = this->SearchRadius(x, level);
+    const vtkIdType id = this->ClosestWithin(x, r, d2);
+    if (id >= 0 || !(r < Infinity))
+    {
+      return id;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBStrokePath::SearchRadius(const double x[3], int level) const
+{
+  // sqrt(3) cells (a point on the surface has a sample that close), 4 times larger at
+  // each level, then infinite once the sphere would reach past the frame.
   double b[6];
   this->OFB->GetBounds(b);
   double outside = 0.0;
@@ -81,71 +174,296 @@ vtkIdType vtkOFBStrokePath::Snap(const double x[3], double onSurface[3]) const
     outside += d * d;
   }
   const double farthest = std::sqrt(outside) + this->Diagonal;
+  const double r = std::ldexp(std::sqrt(3.0) * this->OFB->GetCellSize(), 2 * level);
+  return r < farthest ? r : Infinity;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkOFBStrokePath::ClosestWithin(const double x[3], double radius, double& d2) const
+{
+  // As vtkOFB::FindClosestSample, over the owned samples.
   vtkIdType id = -1;
-  for (double r = std::sqrt(3.0) * this->OFB->GetCellSize(); id < 0; r *= 4.0)
-  {
-    const bool last = !(r < farthest);
-    id = this->OFB->FindClosestSample(x, last ? std::numeric_limits<double>::infinity() : r);
-    if (last)
+  double best = std::numeric_limits<double>::max();
+  this->OFB->ForEachSampleInSphere(x,
+    radius,
+    [&](vtkIdType sample, double s2)
     {
-      break;
-    }
-  }
-  if (id >= 0)
-  {
-    this->OFB->GetSamplePosition(id, onSurface);
-  }
+      if ((s2 < best || (s2 == best && sample < id)) &&
+        !(this->Ghosts && this->Ghosts->GetValue(sample)))
+      {
+        best = s2;
+        id = sample;
+      }
+    });
+  d2 = id >= 0 ? best : Infinity;
   return id;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBStrokePath::Walk vtkOFBStrokePath::Begin(const Candidate& from,
+  const Candidate& to,
+  std::vector<glm::dvec3>& path) const
+{
+  Walk w;
+  w.At = glm::dvec3(from.Position[0], from.Position[1], from.Position[2]);
+  w.Target = glm::dvec3(to.Position[0], to.Position[1], to.Position[2]);
+  std::copy(from.Normal, from.Normal + 3, w.Normal);
+  path.push_back(w.At);
+  w.Done = from.SameSample(to);
+  // Each step gets closer to the target by at least a thousandth of a step, so a walk
+  // ends; the bound on the steps is far above any path that does.
+  w.Distance = glm::length(w.Target - w.At);
+  w.Most = 64.0 + 16.0 * (w.Distance + this->Diagonal) / this->Step;
+  return w;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBStrokePath::Continue(Walk& w, std::vector<glm::dvec3>& path) const
+{
+  if (w.Done)
+  {
+    return false;
+  }
+  if (!(w.Steps < w.Most) || w.Distance <= this->Step)
+  {
+    path.push_back(w.Target);
+    w.Done = true;
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBStrokePath::Candidate vtkOFBStrokePath::Next(const Walk& w) const
+{
+  if (!this->Valid)
+  {
+    return Candidate();
+  }
+  vtkIdType best = -1;
+  double bestDistance = w.Distance - 1e-3 * this->Step;
+  const double c[3] = { w.At.x, w.At.y, w.At.z };
+  this->OFB->ForEachSampleInSphere(c,
+    this->Step,
+    [&](vtkIdType id, double)
+    {
+      if (this->Ghosts && this->Ghosts->GetValue(id))
+      {
+        return;
+      }
+      const double d = glm::length(w.Target - this->Position(id));
+      if (d < bestDistance && this->Facing(w.Normal, id))
+      {
+        bestDistance = d;
+        best = id;
+      }
+    });
+  return this->MakeCandidate(best, bestDistance);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBStrokePath::Take(Walk& w, const Candidate& next, std::vector<glm::dvec3>& path) const
+{
+  if (!next.Found())
+  {
+    // No nearby sample gets closer: the chord to the target.
+    path.push_back(w.Target);
+    w.Done = true;
+    return;
+  }
+  w.At = glm::dvec3(next.Position[0], next.Position[1], next.Position[2]);
+  std::copy(next.Normal, next.Normal + 3, w.Normal);
+  w.Distance = next.Distance;
+  w.Steps += 1.0;
+  path.push_back(w.At);
 }
 
 //------------------------------------------------------------------------------
 bool vtkOFBStrokePath::Trace(vtkIdType from, vtkIdType to, std::vector<glm::dvec3>& path) const
 {
-  glm::dvec3 p = this->Position(from);
-  const glm::dvec3 target = this->Position(to);
-  path.push_back(p);
-  if (from == to)
+  Walk w = this->Begin(this->MakeCandidate(from, 0.0), this->MakeCandidate(to, 0.0), path);
+  if (w.Done)
   {
     return true;
   }
-  // Each step gets closer to the target by at least a thousandth of a step, so a walk
-  // ends; the bound on the steps is far above any path that does.
-  const double h = this->Step;
-  double distance = glm::length(target - p);
-  const double most = 64.0 + 16.0 * (distance + this->Diagonal) / h;
-  vtkIdType current = from;
-  for (double steps = 0.0; steps < most; ++steps)
+  while (this->Continue(w, path))
   {
-    if (distance <= h)
+    this->Take(w, this->Next(w), path);
+  }
+  return w.Distance <= this->Step;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBStrokePath::Reduce(std::vector<Candidate>& c, vtkOFBStrokeExchange* exchange)
+{
+  // The smallest distance, then among those the smallest cell, then depth: one winner
+  // (owned samples are on one process only), whose position and normal every process
+  // then takes (a minimum of their negatives against the others' infinities: exact).
+  const size_t n = c.size();
+  std::vector<double> v(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    v[i] = c[i].Distance;
+  }
+  exchange->AllReduceMinimum(v);
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (!(c[i].Distance == v[i]))
     {
-      path.push_back(target);
-      return true;
+      c[i].Cell = c[i].Depth = Infinity;
     }
-    vtkIdType best = -1;
-    double bestDistance = distance - 1e-3 * h;
-    const double c[3] = { p.x, p.y, p.z };
-    this->OFB->ForEachSampleInSphere(c,
-      h,
-      [&](vtkIdType id, double)
+    c[i].Distance = v[i];
+    v[i] = c[i].Cell;
+  }
+  exchange->AllReduceMinimum(v);
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (!(c[i].Cell == v[i]))
+    {
+      c[i].Depth = Infinity;
+    }
+    c[i].Cell = v[i];
+    v[i] = c[i].Depth;
+  }
+  exchange->AllReduceMinimum(v);
+  std::vector<double> payload(6 * n, Infinity);
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (c[i].Depth == v[i] && c[i].Found())
+    {
+      for (int k = 0; k < 3; ++k)
       {
-        const double d = glm::length(target - this->Position(id));
-        if (d < bestDistance && this->Facing(current, id))
-        {
-          bestDistance = d;
-          best = id;
-        }
-      });
-    if (best < 0)
+        payload[6 * i + k] = -c[i].Position[k];
+        payload[6 * i + 3 + k] = -c[i].Normal[k];
+      }
+    }
+    c[i].Depth = v[i];
+  }
+  exchange->AllReduceMinimum(payload);
+  for (size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      c[i].Position[k] = -payload[6 * i + k];
+      c[i].Normal[k] = -payload[6 * i + 3 + k];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkOFBStrokePath::Candidate> vtkOFBStrokePath::SnapDistributed(
+  const std::vector<glm::dvec3>& points,
+  vtkOFBStrokeExchange* exchange) const
+{
+  // Every point onto the closest owned sample of every process: the spheres of Snap,
+  // level by level on every process, until some process has a sample in a point's
+  // sphere (then that sphere holds the closest of all, as on one process), or every
+  // process has searched everywhere.
+  std::vector<Candidate> onSurface(points.size());
+  std::vector<size_t> open(points.size());
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    open[i] = i;
+  }
+  std::vector<double> found;
+  for (int level = 0; !open.empty(); ++level)
+  {
+    found.assign(open.size() + 1, Infinity);
+    bool searchedEverywhere = true;
+    for (size_t j = 0; this->Valid && j < open.size(); ++j)
+    {
+      const double x[3] = { points[open[j]].x, points[open[j]].y, points[open[j]].z };
+      const double r = this->SearchRadius(x, level);
+      searchedEverywhere = searchedEverywhere && !(r < Infinity);
+      double d2 = Infinity;
+      const vtkIdType id = this->ClosestWithin(x, r, d2);
+      onSurface[open[j]] = this->MakeCandidate(id, d2);
+      found[j] = d2;
+    }
+    found.back() = searchedEverywhere ? 0.0 : -1.0;
+    exchange->AllReduceMinimum(found);
+    const bool last = found.back() == 0.0;
+    size_t kept = 0;
+    for (size_t j = 0; j < open.size(); ++j)
+    {
+      if (!(found[j] < Infinity) && !last)
+      {
+        open[kept++] = open[j];
+      }
+    }
+    open.resize(kept);
+  }
+  Reduce(onSurface, exchange);
+  return onSurface;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBStrokePath::PlaceDistributed(const std::vector<glm::dvec3>& points,
+  const std::vector<std::pair<vtkIdType, vtkIdType>>& segments,
+  vtkOFBStrokeExchange* exchange,
+  std::vector<glm::dvec3>& at,
+  std::vector<std::vector<glm::dvec3>>& paths)
+{
+  // The step and the frame's diagonal of the processes that have samples (a piece
+  // without samples may have no frame).
+  std::vector<double> frame = { -this->Step, -this->Diagonal };
+  exchange->AllReduceMinimum(frame);
+  this->Step = -frame[0];
+  this->Diagonal = -frame[1];
+
+  const std::vector<Candidate> onSurface = this->SnapDistributed(points, exchange);
+  at.resize(points.size());
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    const double* p = onSurface[i].Position;
+    at[i] = onSurface[i].Found() ? glm::dvec3(p[0], p[1], p[2]) : points[i];
+  }
+
+  // Every path walked at once, a step of each in every round: the candidates of every
+  // process for each walk's next sample, reduced to the best.
+  paths.assign(segments.size(), std::vector<glm::dvec3>());
+  std::vector<Walk> walks(segments.size());
+  for (size_t k = 0; k < segments.size(); ++k)
+  {
+    const Candidate& a = onSurface[segments[k].first];
+    const Candidate& b = onSurface[segments[k].second];
+    if (a.Found() && b.Found() && this->Step > 0.0)
+    {
+      walks[k] = this->Begin(a, b, paths[k]);
+    }
+    else
+    {
+      paths[k] = { at[segments[k].first], at[segments[k].second] };
+      walks[k].Done = true;
+    }
+  }
+  std::vector<size_t> active;
+  std::vector<Candidate> next;
+  for (;;)
+  {
+    active.clear();
+    for (size_t k = 0; k < walks.size(); ++k)
+    {
+      if (this->Continue(walks[k], paths[k]))
+      {
+        active.push_back(k);
+      }
+    }
+    if (active.empty())
     {
       break;
     }
-    current = best;
-    p = this->Position(best);
-    distance = bestDistance;
-    path.push_back(p);
+    next.resize(active.size());
+    for (size_t j = 0; j < active.size(); ++j)
+    {
+      next[j] = this->Next(walks[active[j]]);
+    }
+    Reduce(next, exchange);
+    for (size_t j = 0; j < active.size(); ++j)
+    {
+      this->Take(walks[active[j]], next[j], paths[active[j]]);
+    }
   }
-  path.push_back(target);
-  return false;
 }
 
 //------------------------------------------------------------------------------

@@ -1,14 +1,49 @@
 #include "vtkOFBPPaintFilter.h"
 
 #include "vtkAppendPolyData.h"
+#include "vtkCommunicator.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBStrokeExchange.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 
 #include <vector>
+
+namespace
+{
+/// The collective calls of the paint filter, through the controller.
+class ControllerExchange : public vtkOFBStrokeExchange
+{
+public:
+  explicit ControllerExchange(vtkMultiProcessController* controller)
+    : Controller(controller)
+  {
+  }
+
+  void AllReduceMinimum(std::vector<double>& values) override
+  {
+    if (values.empty())
+    {
+      return; // empty on every process
+    }
+    std::vector<double> reduced(values.size());
+    this->Controller->AllReduce(values.data(),
+      reduced.data(),
+      static_cast<vtkIdType>(values.size()),
+      vtkCommunicator::MIN_OP);
+    values.swap(reduced);
+    ++this->Calls;
+  }
+
+  vtkIdType Calls = 0;
+
+private:
+  vtkMultiProcessController* Controller;
+};
+}
 
 vtkStandardNewMacro(vtkOFBPPaintFilter);
 vtkCxxSetObjectMacro(vtkOFBPPaintFilter, Controller, vtkMultiProcessController);
@@ -16,6 +51,7 @@ vtkCxxSetObjectMacro(vtkOFBPPaintFilter, Controller, vtkMultiProcessController);
 //------------------------------------------------------------------------------
 vtkOFBPPaintFilter::vtkOFBPPaintFilter()
   : Controller(nullptr)
+  , NumberOfStrokeReductions(0)
 {
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
@@ -73,18 +109,26 @@ int vtkOFBPPaintFilter::RequestData(vtkInformation* request,
   vtkInformationVector* outputVector)
 {
   vtkMultiProcessController* controller = this->Controller;
-  vtkOFB* input = vtkOFB::GetData(inputVector[0]);
-  if (controller && controller->GetNumberOfProcesses() > 1 && input &&
-    input->GetNumberOfSamples() == 0)
+  this->NumberOfStrokeReductions = 0;
+  if (!controller || controller->GetNumberOfProcesses() <= 1)
   {
-    // An empty piece: nothing to paint, but the gather is collective.
-    this->GetStrokes(vtkPolyData::GetData(inputVector[1]));
-    this->NumberOfChangedSamples = 0;
-    vtkOFB* output = vtkOFB::GetData(outputVector);
-    output->ShallowCopy(input);
-    return 1;
+    return this->Superclass::RequestData(request, inputVector, outputVector);
   }
-  return this->Superclass::RequestData(request, inputVector, outputVector);
+  // Whether any process has samples: if none has, every process reports the error.
+  vtkOFB* input = vtkOFB::GetData(inputVector[0]);
+  const vtkIdType local = input ? input->GetNumberOfSamples() : 0;
+  vtkIdType global = 0;
+  controller->AllReduce(&local, &global, 1, vtkCommunicator::SUM_OP);
+  if (global == 0)
+  {
+    return this->Superclass::RequestData(request, inputVector, outputVector);
+  }
+  ControllerExchange exchange(controller);
+  this->Exchange = &exchange;
+  const int result = this->Superclass::RequestData(request, inputVector, outputVector);
+  this->Exchange = nullptr;
+  this->NumberOfStrokeReductions = exchange.Calls;
+  return result;
 }
 
 //------------------------------------------------------------------------------
@@ -92,4 +136,5 @@ void vtkOFBPPaintFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "NumberOfStrokeReductions: " << this->NumberOfStrokeReductions << "\n";
 }

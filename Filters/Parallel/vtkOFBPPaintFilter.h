@@ -10,15 +10,22 @@
  * on one process only: a stroke given on two is painted twice.
  *
  * With the painter's FollowSurface off, dabs are spaced along the strokes' straight
- * segments and every sample is painted as by one process painting the whole OFB. With
- * FollowSurface on (the default), stroke points are moved onto the closest sample and
- * the dabs follow the surface between them, on each process's own samples: a stroke that
- * leaves a piece (beyond its ghost samples) is placed on that piece's samples alone, so
- * its dabs there can differ from one process's.
+ * segments. With FollowSurface on (the default), stroke points move onto the closest
+ * sample and the dabs follow a path over the surface between them (vtkOFBPaintFilter),
+ * here over the owned samples of every process: every process walks every path, and at
+ * each step every process offers the best of its own samples and all keep the best of
+ * all (four all-reduces a step; all paths advance together, so the number of steps is
+ * that of the longest path). Ties go to the sample of smallest (cell, depth), as sample
+ * ids on one process. Every process thus places the same dabs as one process holding
+ * the whole OFB, and each paints its own samples (owned and ghost): the owned samples of
+ * all processes are painted as by one process, value for value, whatever the ghost
+ * levels, provided the processes share the frame (vtkOFBPSampler) and their owned
+ * samples, normals included, are those of one process.
  *
- * A process whose OFB has no samples takes part in the gather and outputs its empty
- * input without error. With no controller, or a single process, it is
- * vtkOFBPaintFilter. Every process must update the filter the same number of times.
+ * A process whose OFB has no samples takes part in the gather and the walks and outputs
+ * its empty input without error; if no process has samples, every process reports the
+ * error. With no controller, or a single process, it is vtkOFBPaintFilter. Every process
+ * must update the filter the same number of times with the same settings.
  *
  * @sa vtkOFBPaintFilter vtkOFBPSampler
  */
@@ -47,6 +54,14 @@ public:
   vtkGetObjectMacro(Controller, vtkMultiProcessController);
   ///@}
 
+  /**
+   * The all-reduces the last update made to place the strokes on the surface (with
+   * FollowSurface, on more than one process): 1 for the frame, 1 per level of the
+   * growing search spheres and 4 more for the points, then 4 per round of steps. 0
+   * otherwise.
+   */
+  vtkGetMacro(NumberOfStrokeReductions, vtkIdType);
+
 protected:
   vtkOFBPPaintFilter();
   ~vtkOFBPPaintFilter() override;
@@ -55,6 +70,7 @@ protected:
   vtkSmartPointer<vtkPolyData> GetStrokes(vtkPolyData* strokes) override;
 
   vtkMultiProcessController* Controller;
+  vtkIdType NumberOfStrokeReductions;
 
 private:
   vtkOFBPPaintFilter(const vtkOFBPPaintFilter&) = delete;

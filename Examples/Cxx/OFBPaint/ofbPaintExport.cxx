@@ -5,12 +5,10 @@
 #include "ofbExampleImage.h"
 #include "ofbExampleMesh.h"
 
-#include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkErrorCode.h"
 #include "vtkFloatArray.h"
-#include "vtkGLTFExporter.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkNew.h"
@@ -19,16 +17,14 @@
 #include "vtkOFBImageReader.h"
 #include "vtkOFBImageWriter.h"
 #include "vtkOFBProbeFilter.h"
+#include "vtkOFBStagedFiles.h"
 #include "vtkOFBTextureAtlas.h"
 #include "vtkOFBTextureBaker.h"
 #include "vtkOFBTextureProjector.h"
+#include "vtkOFBTexturedGLTF.h"
 #include "vtkPLYWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkTexture.h"
 #include "vtkXMLPolyDataWriter.h"
 #include "vtksys/SystemTools.hxx"
 
@@ -74,7 +70,7 @@ long long ExpectedFaces(vtkPolyData* surface)
 /// The float texture `lic` as the 32-bit float OpenEXR staged as `name` (vtkOFBImageWriter),
 /// read back (vtkOFBImageReader) and compared bit for bit.
 bool WriteFloatTexture(vtkImageData* lic,
-  ofbexample::StagedFiles& files,
+  vtkOFBStagedFiles& files,
   const std::string& name,
   std::string& message)
 {
@@ -127,7 +123,7 @@ bool WriteOBJ(vtkPolyData* surface,
   {
     names.insert(names.begin(), exr);
   }
-  ofbexample::StagedFiles files(path);
+  vtkOFBStagedFiles files(path);
   std::string bytes;
   if (!files.Begin(names, message) || !ofbexample::EncodePNG(texels, bytes, message) ||
     !files.Write(png, bytes, message) || (lic && !WriteFloatTexture(lic, files, exr, message)))
@@ -167,7 +163,7 @@ bool WriteOBJ(vtkPolyData* surface,
 bool WriteBytes(const std::string& bytes, const std::string& path, std::string& message)
 {
   const std::string name = SystemTools::GetFilenameName(path);
-  ofbexample::StagedFiles files(path);
+  vtkOFBStagedFiles files(path);
   return files.Begin({ name }, message) && files.Write(name, bytes, message) &&
     files.Commit({ name }, message);
 }
@@ -180,7 +176,7 @@ bool WriteBytes(const std::string& bytes, const std::string& path, std::string& 
 bool WritePLY(vtkPolyData* probed, const std::string& path, std::string& message)
 {
   const std::string name = SystemTools::GetFilenameName(path);
-  ofbexample::StagedFiles files(path);
+  vtkOFBStagedFiles files(path);
   if (!files.Begin({ name }, message))
   {
     return false;
@@ -226,34 +222,14 @@ bool WriteVTP(vtkPolyData* probed, const std::string& path, std::string& message
   return WriteBytes(bytes, path, message);
 }
 
-/// glTF 2.0 through vtkGLTFExporter, which writes a scene: the surface as the one actor of
-/// a renderer (never rendered), the image as its texture; the text (the image embedded)
-/// written as above.
+/// glTF 2.0 (vtkOFBTexturedGLTF: the image embedded), written as above.
 bool WriteGLTF(vtkPolyData* surface,
   vtkImageData* texels,
   const std::string& path,
   std::string& message)
 {
-  vtkNew<vtkTexture> texture;
-  texture->SetInputData(texels);
-  texture->InterpolateOn();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(surface);
-  mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->SetTexture(texture);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  vtkNew<vtkRenderWindow> window;
-  window->AddRenderer(renderer);
   vtkNew<FirstError> errors;
-  vtkNew<vtkGLTFExporter> exporter;
-  exporter->AddObserver(vtkCommand::ErrorEvent, errors);
-  exporter->SetRenderWindow(window);
-  exporter->InlineDataOn();
-  exporter->SaveNormalOn();
-  const std::string text = exporter->WriteToString();
+  const std::string text = vtkOFBTexturedGLTF::WriteToString(surface, texels, errors);
   if (errors->Count > 0 || text.empty())
   {
     message = "cannot write '" + path + "'" + errors->Suffix();
@@ -277,7 +253,7 @@ bool ExportPainting(vtkPolyData* surface,
   std::string& message)
 {
   const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
-  const std::string why = ofbexample::WhyNotWritable(path);
+  const std::string why = vtkOFBStagedFiles::WhyNotWritable(path);
   if (!why.empty())
   {
     message = "cannot write '" + path + "': " + why; // before the work of baking

@@ -31,7 +31,6 @@
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
 #include "ofbExampleData.h"
@@ -415,12 +414,8 @@ struct Scene
 bool WritePicture(vtkRenderWindow* window, const Options& options)
 {
   const std::string& path = options.OutputPath;
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
   std::string message;
-  if (!ofbexample::WritePNG(grab, path, message))
+  if (!ofbexample::WriteWindowPNG(window, path, message))
   {
     std::cerr << "OFBDemo: " << message << "\n";
     return false;

@@ -50,7 +50,6 @@
 #include "vtkRenderer.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include "ofbExampleData.h"
 #include "ofbExampleErrors.h"
@@ -293,18 +292,14 @@ int WriteImage(App& app, const std::string& path)
     std::cerr << "OFBLIC: the LIC was not drawn" << app.Errors->Suffix() << "\n";
     return 1;
   }
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(app.Window);
-  grab->ReadFrontBufferOff();
   std::string message;
-  if (!ofbexample::WritePNG(grab, path, message))
+  if (!ofbexample::WriteWindowPNG(app.Window, path, message))
   {
     std::cerr << "OFBLIC: " << message << "\n";
     return 1;
   }
   std::cout << "wrote " << path << "\n";
   return 0;
-}
 }
 
 /// The application's pipeline: sampler -> LIC -> mapper coloured by speed and modulated by
@@ -344,15 +339,24 @@ void BuildPipeline(App& app, vtkPolyData* mesh, int resolution, int steps, doubl
   app.Window->SetWindowName("OFBLIC: surface LIC on the OFB");
 }
 
-int main(int argc, char* argv[])
+/// The command line, with its defaults.
+struct Options
 {
-  std::string meshPath = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
-  std::string image;
-  std::string keys;
-  std::string exportPath;
-  int resolution = 512, steps = 20, size = 800;
-  double grain = 1.0;
-  ofbexample::DataOptions dataOptions;
+  std::string MeshPath = std::string(VTKOFB_DATA_DIR) + "/stanford-bunny.obj";
+  std::string Image;
+  std::string Keys;
+  std::string ExportPath;
+  int Resolution = 512;
+  int Steps = 20;
+  int Size = 800;
+  double Grain = 1.0;
+  ofbexample::DataOptions Data;
+};
+
+/// Parse the command line into `o`: -1 to go on, or the exit status (after the usage or a
+/// message).
+int ParseOptions(int argc, char* argv[], Options& o)
+{
   bool ok = true; // false once a value is not a number in its range
   for (int i = 1; i < argc && ok; ++i)
   {
@@ -360,38 +364,38 @@ int main(int argc, char* argv[])
     const bool value = i + 1 < argc;
     if (arg == "--resolution" && value)
     {
-      ok = ofbexample::ParseInt(argv[++i], 8, 16384, resolution);
+      ok = ofbexample::ParseInt(argv[++i], 8, 16384, o.Resolution);
     }
     else if (arg == "--steps" && value)
     {
-      ok = ofbexample::ParseInt(argv[++i], 0, 1000, steps);
+      ok = ofbexample::ParseInt(argv[++i], 0, 1000, o.Steps);
     }
     else if (arg == "--grain" && value)
     {
-      ok = ofbexample::ParseDouble(argv[++i], 0.01, 100.0, grain);
+      ok = ofbexample::ParseDouble(argv[++i], 0.01, 100.0, o.Grain);
     }
     else if (arg == "--image" && value)
     {
-      image = argv[++i];
+      o.Image = argv[++i];
     }
     else if (arg == "--keys" && value)
     {
-      keys = argv[++i];
-    }
-    else if (arg == "--size" && value)
-    {
-      ok = ofbexample::ParseInt(argv[++i], 64, 8192, size);
+      o.Keys = argv[++i];
     }
     else if (arg == "--export" && value)
     {
-      exportPath = argv[++i];
+      o.ExportPath = argv[++i];
     }
-    else if (ofbexample::ParseDataOption(argc, argv, i, dataOptions, ok))
+    else if (arg == "--size" && value)
+    {
+      ok = ofbexample::ParseInt(argv[++i], 64, 8192, o.Size);
+    }
+    else if (ofbexample::ParseDataOption(argc, argv, i, o.Data, ok))
     {
     }
     else if (!arg.empty() && arg[0] != '-')
     {
-      meshPath = arg;
+      o.MeshPath = arg;
     }
     else
     {
@@ -408,67 +412,61 @@ int main(int argc, char* argv[])
     }
   }
   // The OBJ writer names the texture after the OBJ: it would replace the image.
-  const std::string::size_type dot = exportPath.rfind('.');
-  if (!image.empty() && dot != std::string::npos && exportPath.substr(dot) == ".obj" &&
-    exportPath.substr(0, dot) + ".png" == image)
+  const std::string::size_type dot = o.ExportPath.rfind('.');
+  if (!o.Image.empty() && dot != std::string::npos && o.ExportPath.substr(dot) == ".obj" &&
+    o.ExportPath.substr(0, dot) + ".png" == o.Image)
   {
-    std::cerr << "OFBLIC: --export " << exportPath << " would write its texture over --image "
-              << image << ": give them different names.\n";
+    std::cerr << "OFBLIC: --export " << o.ExportPath << " would write its texture over --image "
+              << o.Image << ": give them different names.\n";
     return 1;
   }
-  std::string readError;
+  return -1;
+}
+
+/// The surface of o.MeshPath with its field (the file's, or AddField's) as the active
+/// vectors and its speed; null after a message.
+vtkSmartPointer<vtkPolyData> ReadMesh(const Options& o, double speedRange[2])
+{
   ofbexample::DataSurface data;
-  if (!ofbexample::ReadDataSurface(meshPath, dataOptions, true, data, readError))
+  if (!ofbexample::ReadDataReported("OFBLIC", o.MeshPath, o.Data, true, false, data))
   {
-    std::cerr << "OFBLIC: " << readError << "\n";
-    return 1;
+    return nullptr;
   }
-  vtkSmartPointer<vtkPolyData> mesh = data.Surface;
-  double speedRange[2];
   if (data.Field)
   {
     ofbexample::UseFieldAsVectors(data, speedRange);
   }
   else
   {
-    AddField(mesh, speedRange);
+    AddField(data.Surface, speedRange);
   }
-  std::cout << "read " << meshPath << ": " << data.Summary << "\n";
+  return data.Surface;
+}
 
-  App app;
-  app.Mesh = mesh;
-  app.ExportPath = !exportPath.empty() ? exportPath : ofbpaint::DefaultExportPath(meshPath, "lic");
-  BuildPipeline(app, mesh, resolution, steps, grain, size);
-  app.Mapper->GetColoring()->SetScalarRange(speedRange);
-  app.LIC->Update();
-  if (app.Errors->Count > 0 || app.LIC->GetOutput()->GetNumberOfSamples() == 0)
+/// Headless: the keys of o.Keys, one animation frame, the PNG o.Image, then the export
+/// when asked for; the exit status.
+int RunHeadless(App& app, const Options& o)
+{
+  app.Window->SetOffScreenRendering(1);
+  app.Deferred = true;
+  std::istringstream list(o.Keys);
+  for (std::string key; std::getline(list, key, ',');)
   {
-    std::cerr << "OFBLIC: no LIC of " << meshPath << " (its OFB could not be built)"
-              << app.Errors->Suffix() << "\n";
-    return 1;
-  }
-  app.Renderer->ResetCamera();
-  app.Renderer->GetActiveCamera()->Dolly(1.3);
-  app.Renderer->ResetCameraClippingRange();
-
-  if (!image.empty())
-  {
-    app.Window->SetOffScreenRendering(1);
-    app.Deferred = true;
-    std::istringstream list(keys);
-    for (std::string key; std::getline(list, key, ',');)
+    if (!app.Key(key))
     {
-      if (!app.Key(key))
-      {
-        std::cerr << "OFBLIC: unknown key '" << key << "'\n";
-        return 1;
-      }
+      std::cerr << "OFBLIC: unknown key '" << key << "'\n";
+      return 1;
     }
-    app.Tick();
-    app.Deferred = false;
-    const int written = WriteImage(app, image);
-    return written != 0 || exportPath.empty() || app.Export() ? written : 1;
   }
+  app.Tick();
+  app.Deferred = false;
+  const int written = WriteImage(app, o.Image);
+  return written != 0 || o.ExportPath.empty() || app.Export() ? written : 1;
+}
+
+/// The window with the keys (KeyStyle) and the animation timer, until it closes.
+void Interact(App& app)
+{
   vtkNew<vtkRenderWindowInteractor> interactor;
   vtkNew<KeyStyle> style;
   style->Application = &app;
@@ -483,5 +481,43 @@ int main(int argc, char* argv[])
   interactor->CreateRepeatingTimer(40);
   app.Refresh();
   interactor->Start();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  const int status = ParseOptions(argc, argv, o);
+  if (status >= 0)
+  {
+    return status;
+  }
+  double speedRange[2];
+  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(o, speedRange);
+  if (!mesh)
+  {
+    return 1;
+  }
+  App app;
+  app.Mesh = mesh;
+  app.ExportPath =
+    !o.ExportPath.empty() ? o.ExportPath : ofbpaint::DefaultExportPath(o.MeshPath, "lic");
+  BuildPipeline(app, mesh, o.Resolution, o.Steps, o.Grain, o.Size);
+  app.Mapper->GetColoring()->SetScalarRange(speedRange);
+  app.LIC->Update();
+  if (app.Errors->Count > 0 || app.LIC->GetOutput()->GetNumberOfSamples() == 0)
+  {
+    std::cerr << "OFBLIC: no LIC of " << o.MeshPath << " (its OFB could not be built)"
+              << app.Errors->Suffix() << "\n";
+    return 1;
+  }
+  app.Renderer->ResetCamera();
+  app.Renderer->GetActiveCamera()->Dolly(1.3);
+  app.Renderer->ResetCameraClippingRange();
+  if (!o.Image.empty())
+  {
+    return RunHeadless(app, o);
+  }
+  Interact(app);
   return 0;
 }

@@ -22,8 +22,6 @@
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkCellData.h"
-#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -33,8 +31,6 @@
 #include "vtkOFBSampler.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
@@ -42,13 +38,13 @@
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkWindowToImageFilter.h"
 
 #include "ofbExampleData.h"
 #include "ofbExampleErrors.h"
 #include "ofbExampleFiles.h"
 #include "ofbExampleOptions.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -221,12 +217,18 @@ void ResetPaint(vtkOFB* ofb, bool reveal)
   ofb->Modified();
 }
 
+/// The application: the mesh, its OFB (painted in place), the particles and the window;
+/// every filter's errors counted in Errors (one makes the run fail).
 struct App
 {
-  vtkOFBParticleAdvector* Advector;
-  vtkOFB* OFB;
-  vtkRenderWindow* Window;
-  vtkTextActor* Text;
+  vtkSmartPointer<vtkPolyData> Mesh;
+  vtkNew<ofbexample::FirstError> Errors;
+  vtkNew<vtkOFB> OFB;
+  vtkNew<vtkOFBParticleAdvector> Advector;
+  vtkNew<vtkOFBPolyDataMapper> Mapper;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkTextActor> Text;
   bool Paused = false;
   bool Reveal = false;
   int Mode = 3;
@@ -276,53 +278,41 @@ void OnKey(vtkObject* caller, unsigned long, void* data, void*)
   app->Status();
   app->Window->Render();
 }
+
+void Usage()
+{
+  std::cerr << "Usage: OFBParticles [data file] [--field rotation|height|mesh|NAME] "
+               "[--block I|NAME[,...]] [--time T | --time-step N] [--particles N] [--resolution "
+               "N] [--radius CELLS] [--lifetime STEPS] "
+               "[--color constant|seeds|scalar|periodic] [--reveal] [--image out.png "
+               "--steps N] [--width W] [--height H] [--view-up X Y Z]\n"
+               "  N: particles 1-1e8, resolution 8-16384, steps 1-1e6, lifetime 0-1e6;\n"
+               "  CELLS 0.01-1000; W and H 64-8192; the view-up not zero\n";
 }
 
-int main(int argc, char* argv[])
+/// The surface of o.Mesh with its field as the active vectors and a "Height" point array
+/// along the view-up (for the scalar colour mode); null after a message.
+vtkSmartPointer<vtkPolyData> ReadMesh(const Options& o)
 {
-  Options o;
-  if (!Parse(argc, argv, o))
-  {
-    std::cerr << "Usage: OFBParticles [data file] [--field rotation|height|mesh|NAME] "
-                 "[--block I|NAME[,...]] [--time T | --time-step N] [--particles N] [--resolution "
-                 "N] [--radius CELLS] [--lifetime STEPS] "
-                 "[--color constant|seeds|scalar|periodic] [--reveal] [--image out.png "
-                 "--steps N] [--width W] [--height H] [--view-up X Y Z]\n"
-                 "  N: particles 1-1e8, resolution 8-16384, steps 1-1e6, lifetime 0-1e6;\n"
-                 "  CELLS 0.01-1000; W and H 64-8192; the view-up not zero\n";
-    return 1;
-  }
-  std::string readError;
   ofbexample::DataSurface data;
-  if (!ofbexample::ReadDataSurface(o.Mesh, o.Data, true, data, readError))
+  if (!ofbexample::ReadDataReported("OFBParticles", o.Mesh, o.Data, true, false, data))
   {
-    std::cerr << "OFBParticles: " << readError << "\n";
-    return 1;
+    return nullptr;
   }
   vtkSmartPointer<vtkPolyData> mesh = data.Surface;
-  std::cout << "read " << o.Mesh << ": " << data.Summary << "\n";
   if (data.Field)
   {
-    if (data.FieldOnCells)
-    {
-      // A cell field holds on its cells' triangles (the advector reads the active cell
-      // vectors where there are no active point vectors).
-      mesh->GetPointData()->SetActiveAttribute(-1, vtkDataSetAttributes::VECTORS);
-      mesh->GetCellData()->SetVectors(data.Field);
-    }
-    else
-    {
-      mesh->GetPointData()->SetVectors(data.Field);
-    }
+    // A cell field holds on its cells' triangles (the advector reads the active cell
+    // vectors where there are no active point vectors).
+    ofbexample::SetFieldAsVectors(data);
   }
   else if (!MakeField(mesh, o.Field, o.ViewUp))
   {
     std::cerr << "OFBParticles: '" << o.Mesh
               << "' has no active point vectors for --field mesh; its arrays: "
               << ofbexample::DescribeArrays(mesh) << "\n";
-    return 1;
+    return nullptr;
   }
-  // A height array for the scalar colour mode.
   vtkNew<vtkDoubleArray> height;
   height->SetName("Height");
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
@@ -330,54 +320,59 @@ int main(int argc, char* argv[])
     height->InsertNextValue(vtkMath::Dot(mesh->GetPoint(i), o.ViewUp));
   }
   mesh->GetPointData()->AddArray(height);
+  return mesh;
+}
 
-  // The errors of every filter it runs: one makes the run fail.
-  vtkNew<ofbexample::FirstError> errors;
+/// The OFB of app.Mesh in app.OFB, its paint reset, and the advector on it; false after
+/// a message.
+bool BuildParticles(App& app, const Options& o)
+{
   vtkNew<vtkOFBSampler> sampler;
-  sampler->AddObserver(vtkCommand::ErrorEvent, errors);
-  sampler->SetInputData(mesh);
+  sampler->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  sampler->SetInputData(app.Mesh);
   sampler->SetResolution(o.Resolution);
   sampler->Update();
-  if (errors->Count > 0 || sampler->GetOutput()->GetNumberOfSamples() == 0)
+  if (app.Errors->Count > 0 || sampler->GetOutput()->GetNumberOfSamples() == 0)
   {
-    std::cerr << "OFBParticles: the OFB of " << o.Mesh << " could not be built" << errors->Suffix()
-              << "\n";
-    return 1;
+    std::cerr << "OFBParticles: the OFB of " << o.Mesh << " could not be built"
+              << app.Errors->Suffix() << "\n";
+    return false;
   }
-  vtkNew<vtkOFB> ofb; // held by the application, painted in place
-  ofb->ShallowCopy(sampler->GetOutput());
-  ResetPaint(ofb, o.Reveal);
-
-  vtkNew<vtkOFBParticleAdvector> advector;
-  advector->AddObserver(vtkCommand::ErrorEvent, errors);
-  advector->SetInputData(mesh);
-  advector->SetOFB(ofb);
+  app.OFB->ShallowCopy(sampler->GetOutput());
+  ResetPaint(app.OFB, o.Reveal);
+  vtkOFBParticleAdvector* advector = app.Advector;
+  advector->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  advector->SetInputData(app.Mesh);
+  advector->SetOFB(app.OFB);
   advector->SetNumberOfParticles(o.Particles);
   advector->SetFootprintRadius(o.Radius);
   advector->SetLifetime(o.Lifetime);
   advector->SetColorMode(ColorMode(o.Color));
   advector->SetScalarArrayName("Height");
   advector->SetColorPeriod(90);
+  return true;
+}
 
-  vtkNew<vtkOFBPolyDataMapper> mapper;
-  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
-  mapper->SetInputData(mesh);
-  mapper->SetOFB(ofb);
+/// The mapper drawing app.Mesh from the OFB, in a window of o.Width x o.Height looking at
+/// a side of the view-up axis.
+void BuildScene(App& app, const Options& o)
+{
+  app.Mapper->AddObserver(vtkCommand::ErrorEvent, app.Errors);
+  app.Mapper->SetInputData(app.Mesh);
+  app.Mapper->SetOFB(app.OFB);
   vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
+  actor->SetMapper(app.Mapper);
   actor->GetProperty()->SetSpecular(0.2);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->SetBackground(0.1, 0.12, 0.16);
-  renderer->SetBackground2(0.32, 0.34, 0.4);
-  renderer->GradientBackgroundOn();
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(o.Width, o.Height);
-  window->AddRenderer(renderer);
+  app.Renderer->AddActor(actor);
+  app.Renderer->SetBackground(0.1, 0.12, 0.16);
+  app.Renderer->SetBackground2(0.32, 0.34, 0.4);
+  app.Renderer->GradientBackgroundOn();
+  app.Window->SetSize(o.Width, o.Height);
+  app.Window->AddRenderer(app.Renderer);
   // Look from a side of the view-up axis, then fit the mesh.
-  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkCamera* camera = app.Renderer->GetActiveCamera();
   double center[3], side[3];
-  mesh->GetCenter(center);
+  app.Mesh->GetCenter(center);
   const double other[3] = {
     0.0, std::abs(o.ViewUp[1]) > 0.9 ? 0.0 : 1.0, std::abs(o.ViewUp[1]) > 0.9 ? 1.0 : 0.0
   };
@@ -386,47 +381,48 @@ int main(int argc, char* argv[])
   camera->SetFocalPoint(center);
   camera->SetPosition(center[0] + side[0], center[1] + side[1], center[2] + side[2]);
   camera->SetViewUp(o.ViewUp);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Azimuth(30);
-  renderer->GetActiveCamera()->Elevation(15);
-  renderer->GetActiveCamera()->Zoom(1.3);
+  app.Renderer->ResetCamera();
+  camera->Azimuth(30);
+  camera->Elevation(15);
+  camera->Zoom(1.3);
+}
 
-  if (!o.Image.empty())
+/// Headless: o.Steps steps, then the window as the PNG o.Image; the exit status.
+int WriteImage(App& app, const Options& o)
+{
+  app.Window->SetOffScreenRendering(1);
+  app.Advector->SetStepsPerUpdate(std::max(1, o.Steps));
+  app.Advector->Step();
+  app.Window->Render();
+  if (app.Errors->Count > 0 || !app.Mapper->GetLastRenderUsedOFB())
   {
-    window->SetOffScreenRendering(1);
-    advector->SetStepsPerUpdate(std::max(1, o.Steps));
-    advector->Step();
-    window->Render();
-    if (errors->Count > 0 || !mapper->GetLastRenderUsedOFB())
-    {
-      std::cerr << "OFBParticles: the particles were not drawn" << errors->Suffix() << "\n";
-      return 1;
-    }
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    std::string message;
-    if (!ofbexample::WritePNG(grab, o.Image, message))
-    {
-      std::cerr << "OFBParticles: " << message << "\n";
-      return 1;
-    }
-    std::cout << "Wrote " << o.Image << " after " << advector->GetCurrentStep() << " steps of "
-              << advector->GetParticles()->GetNumberOfPoints() << " particles on "
-              << mesh->GetNumberOfPolys() << " triangles (" << ofb->GetNumberOfSamples()
-              << " samples)\n";
-    return 0;
+    std::cerr << "OFBParticles: the particles were not drawn" << app.Errors->Suffix() << "\n";
+    return 1;
   }
+  std::string message; // the front buffer: the frame drawn after the steps
+  if (!ofbexample::WriteWindowPNG(app.Window, o.Image, message, true))
+  {
+    std::cerr << "OFBParticles: " << message << "\n";
+    return 1;
+  }
+  std::cout << "Wrote " << o.Image << " after " << app.Advector->GetCurrentStep() << " steps of "
+            << app.Advector->GetParticles()->GetNumberOfPoints() << " particles on "
+            << app.Mesh->GetNumberOfPolys() << " triangles (" << app.OFB->GetNumberOfSamples()
+            << " samples)\n";
+  return 0;
+}
 
-  vtkNew<vtkTextActor> text;
-  text->GetTextProperty()->SetFontSize(14);
-  text->SetPosition(10, 10);
-  renderer->AddActor2D(text);
-  App app{ advector, ofb, window, text };
+/// The animation in a window, with the keys, until q.
+void Interact(App& app, const Options& o)
+{
+  app.Text->GetTextProperty()->SetFontSize(14);
+  app.Text->SetPosition(10, 10);
+  app.Renderer->AddActor2D(app.Text);
   app.Reveal = o.Reveal;
-  app.Mode = advector->GetColorMode();
+  app.Mode = app.Advector->GetColorMode();
   app.Status();
   vtkNew<vtkRenderWindowInteractor> interactor;
-  interactor->SetRenderWindow(window);
+  interactor->SetRenderWindow(app.Window);
   interactor->Initialize();
   vtkNew<vtkCallbackCommand> timer;
   timer->SetCallback(OnTimer);
@@ -437,7 +433,30 @@ int main(int argc, char* argv[])
   keys->SetClientData(&app);
   interactor->AddObserver(vtkCommand::KeyPressEvent, keys);
   interactor->CreateRepeatingTimer(30);
-  window->Render();
+  app.Window->Render();
   interactor->Start();
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  if (!Parse(argc, argv, o))
+  {
+    Usage();
+    return 1;
+  }
+  App app;
+  app.Mesh = ReadMesh(o);
+  if (!app.Mesh || !BuildParticles(app, o))
+  {
+    return 1;
+  }
+  BuildScene(app, o);
+  if (!o.Image.empty())
+  {
+    return WriteImage(app, o);
+  }
+  Interact(app, o);
   return 0;
 }

@@ -38,6 +38,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 namespace
@@ -417,16 +418,39 @@ bool ReadDataTriangles(const std::string& path,
   return true;
 }
 
+bool ReadDataReported(const char* application,
+  const std::string& path,
+  const DataOptions& options,
+  bool vectors,
+  bool triangles,
+  DataSurface& data)
+{
+  std::string message;
+  const bool ok = triangles ? ReadDataTriangles(path, options, vectors, data, message)
+                            : ReadDataSurface(path, options, vectors, data, message);
+  if (!ok)
+  {
+    std::cerr << application << ": " << message << "\n";
+    return false;
+  }
+  std::cout << "read " << path << ": " << data.Summary << "\n";
+  return true;
+}
+
+void SetFieldAsVectors(DataSurface& data)
+{
+  vtkDataSetAttributes* points = data.Surface->GetPointData();
+  vtkDataSetAttributes* cells = data.Surface->GetCellData();
+  (data.FieldOnCells ? points : cells)->SetActiveAttribute(-1, vtkDataSetAttributes::VECTORS);
+  (data.FieldOnCells ? cells : points)->SetVectors(data.Field);
+}
+
 void UseFieldAsVectors(DataSurface& data, double range[2])
 {
+  SetFieldAsVectors(data);
   vtkDataSetAttributes* on = data.FieldOnCells
     ? static_cast<vtkDataSetAttributes*>(data.Surface->GetCellData())
     : static_cast<vtkDataSetAttributes*>(data.Surface->GetPointData());
-  vtkDataSetAttributes* off = data.FieldOnCells
-    ? static_cast<vtkDataSetAttributes*>(data.Surface->GetPointData())
-    : static_cast<vtkDataSetAttributes*>(data.Surface->GetCellData());
-  off->SetActiveAttribute(-1, vtkDataSetAttributes::VECTORS);
-  on->SetVectors(data.Field);
   vtkNew<vtkFloatArray> speed;
   speed->SetName("Speed");
   speed->SetNumberOfTuples(data.Field->GetNumberOfTuples());

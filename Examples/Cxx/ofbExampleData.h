@@ -85,13 +85,29 @@ bool ReadDataTriangles(const std::string& path,
   DataSurface& data,
   std::string& message);
 
+/**
+ * ReadDataSurface (with `triangles`, ReadDataTriangles) as the applications report it:
+ * "read PATH: SUMMARY" on the standard output, or false after "APPLICATION: REASON" on
+ * the standard error.
+ */
+bool ReadDataReported(const char* application,
+  const std::string& path,
+  const DataOptions& options,
+  bool vectors,
+  bool triangles,
+  DataSurface& data);
+
 /// The arrays of `surface` for a message: "point vectors: A, B; cell vectors: C; other
 /// point arrays: D; other cell arrays: E" (or "no point or cell arrays").
 std::string DescribeArrays(vtkPolyData* surface);
 
 /// Make data.Field (3 components) the surface's active vectors where it lives (points or
-/// cells; the other's active vectors unset, so vtkOFBSampler takes it) and add its
-/// magnitude beside it as "Speed"; `range` the magnitude's range.
+/// cells; the other's active vectors unset, so vtkOFBSampler and vtkOFBParticleAdvector
+/// take it).
+void SetFieldAsVectors(DataSurface& data);
+
+/// SetFieldAsVectors, and the field's magnitude added beside it as "Speed"; `range` the
+/// magnitude's range.
 void UseFieldAsVectors(DataSurface& data, double range[2]);
 }
 

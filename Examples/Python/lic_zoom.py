@@ -26,13 +26,11 @@ import argparse
 
 import numpy as np
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderer, vtkRenderWindow,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer, vtkRenderWindow
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations)
 
 import vtkofb
-from ofb_example_view import read_surface
+from ofb_example_view import read_surface, save_png
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("mesh", help="surface (.obj, .ply, .stl or .vtp)")
@@ -114,17 +112,6 @@ def window_of(actors, zoom):
     return window
 
 
-def save(window, path):
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    writer = vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-    print("wrote", path)
-
-
 sampler, lic = make_lic(args.resolution, 1.0)
 print(f"{lic.GetOutput().GetNumberOfSamples()} samples at {args.resolution} cells, LIC in "
       f"{lic.GetLastExecutionTime():.0f} ms")
@@ -135,7 +122,7 @@ far = window_of([make_actor(lic, "NearestMipmapped"), level_lic], 1.0)
 pyramid = level_lic.GetMapper().GetPyramid()
 print(f"{pyramid.GetNumberOfLevels()} levels, their LICs in "
       f"{1000 * pyramid.GetLastLevelLICTime():.0f} ms")
-save(far, args.far)
+save_png(far, args.far)
 
 # Close up: the same OFB read nearest and smooth, and an OFB computed for the view.
 near = window_of([make_actor(lic, "Nearest"), make_actor(lic, "Smooth")], args.zoom)
@@ -149,4 +136,4 @@ print(f"{lic2.GetOutput().GetNumberOfSamples()} samples, LIC in "
       f"{lic2.GetLastExecutionTime():.0f} ms")
 near = window_of([make_actor(lic, "Nearest"), make_actor(lic, "Smooth"),
                   make_actor(lic2, "Smooth")], args.zoom)
-save(near, args.near)
+save_png(near, args.near)

@@ -215,14 +215,49 @@ inline bool HasAVX()
   return avx;
 }
 
+/**
+ * The barycentrics of the samples from `i` (eight in floats, four in doubles): b1 and b2
+ * the recorded ones, b0 = (1 - b1) - b2 (the scalar loops' order).
+ */
+__attribute__((target("avx"))) inline void LoadBarycentrics(const float* w1,
+  const float* w2,
+  vtkIdType i,
+  __m256 b[3])
+{
+  b[1] = _mm256_loadu_ps(w1 + i);
+  b[2] = _mm256_loadu_ps(w2 + i);
+  b[0] = _mm256_sub_ps(_mm256_sub_ps(_mm256_set1_ps(1.0f), b[1]), b[2]);
+}
+__attribute__((target("avx"))) inline void LoadBarycentrics(const float* w1,
+  const float* w2,
+  vtkIdType i,
+  __m256d b[3])
+{
+  b[1] = _mm256_cvtps_pd(_mm_loadu_ps(w1 + i));
+  b[2] = _mm256_cvtps_pd(_mm_loadu_ps(w2 + i));
+  b[0] = _mm256_sub_pd(_mm256_sub_pd(_mm256_set1_pd(1.0), b[1]), b[2]);
+}
+
 /// (b0 v0 + b1 v1) + b2 v2, lane by lane.
-__attribute__((target("avx"))) inline __m256 Barycentric(__m256 b0,
-  __m256 b1,
-  __m256 b2,
-  const __m256* v)
+__attribute__((target("avx"))) inline __m256 Barycentric(const __m256* b, const __m256* v)
 {
   return _mm256_add_ps(
-    _mm256_add_ps(_mm256_mul_ps(b0, v[0]), _mm256_mul_ps(b1, v[1])), _mm256_mul_ps(b2, v[2]));
+    _mm256_add_ps(_mm256_mul_ps(b[0], v[0]), _mm256_mul_ps(b[1], v[1])), _mm256_mul_ps(b[2], v[2]));
+}
+__attribute__((target("avx"))) inline __m256d Barycentric(const __m256d* b, const __m256d* v)
+{
+  return _mm256_add_pd(
+    _mm256_add_pd(_mm256_mul_pd(b[0], v[0]), _mm256_mul_pd(b[1], v[1])), _mm256_mul_pd(b[2], v[2]));
+}
+
+/// Four floats at `lo` and four at `hi` as the two halves of one register (Aligned: both
+/// addresses 16-byte aligned, as the table's records are).
+template<bool Aligned>
+__attribute__((target("avx"))) inline __m256 LoadHalves(const float* lo, const float* hi)
+{
+  const __m128 l = Aligned ? _mm_load_ps(lo) : _mm_loadu_ps(lo);
+  const __m128 h = Aligned ? _mm_load_ps(hi) : _mm_loadu_ps(hi);
+  return _mm256_insertf128_ps(_mm256_castps128_ps256(l), h, 1);
 }
 
 /**
@@ -244,12 +279,10 @@ __attribute__((target("avx"))) vtkIdType InterpolateVectorsAVX(vtkIdType i,
   const float* VTK_OFB_RESTRICT normals,
   float* VTK_OFB_RESTRICT out)
 {
-  const __m256 one = _mm256_set1_ps(1.0f);
   for (; i + 8 <= end; i += 8)
   {
-    const __m256 b1 = _mm256_loadu_ps(w1 + i);
-    const __m256 b2 = _mm256_loadu_ps(w2 + i);
-    const __m256 b0 = _mm256_sub_ps(_mm256_sub_ps(one, b1), b2);
+    __m256 b[3];
+    LoadBarycentrics(w1, w2, i, b);
     const float* c[4];
     const float* d[4];
     for (int k = 0; k < 4; ++k)
@@ -264,8 +297,7 @@ __attribute__((target("avx"))) vtkIdType InterpolateVectorsAVX(vtkIdType i,
       __m256 r[4];
       for (int k = 0; k < 4; ++k)
       {
-        r[k] = _mm256_insertf128_ps(
-          _mm256_castps128_ps256(_mm_load_ps(c[k] + 4 * j)), _mm_load_ps(d[k] + 4 * j), 1);
+        r[k] = LoadHalves<true>(c[k] + 4 * j, d[k] + 4 * j);
       }
       const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]); // x0 x1 y0 y1
       const __m256 t1 = _mm256_unpacklo_ps(r[2], r[3]); // x2 x3 y2 y3
@@ -275,18 +307,14 @@ __attribute__((target("avx"))) vtkIdType InterpolateVectorsAVX(vtkIdType i,
       y[j] = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(3, 2, 3, 2));
       z[j] = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(1, 0, 1, 0));
     }
-    __m256 ox = Barycentric(b0, b1, b2, x), oy = Barycentric(b0, b1, b2, y),
-           oz = Barycentric(b0, b1, b2, z);
+    __m256 ox = Barycentric(b, x), oy = Barycentric(b, y), oz = Barycentric(b, z);
     if (Projected)
     {
       // n0x n0y n0z n1x | n1y n1z n2x n2y | n2z n3x n3y n3z in each half.
       const float* p = normals + 3 * i;
-      const __m256 na =
-        _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p)), _mm_loadu_ps(p + 12), 1);
-      const __m256 nb =
-        _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 4)), _mm_loadu_ps(p + 16), 1);
-      const __m256 nc =
-        _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 8)), _mm_loadu_ps(p + 20), 1);
+      const __m256 na = LoadHalves<false>(p, p + 12);
+      const __m256 nb = LoadHalves<false>(p + 4, p + 16);
+      const __m256 nc = LoadHalves<false>(p + 8, p + 20);
       const __m256 a = _mm256_shuffle_ps(na, nb, _MM_SHUFFLE(3, 2, 3, 0)); // n0x n1x n2x .
       const __m256 b = _mm256_shuffle_ps(nb, nc, _MM_SHUFFLE(1, 1, 2, 2)); // n2x . n3x .
       const __m256 nx = _mm256_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 1, 0));
@@ -358,12 +386,10 @@ __attribute__((target("avx"))) vtkIdType InterpolateScalarsAVX(vtkIdType i,
   const T* VTK_OFB_RESTRICT table,
   T* VTK_OFB_RESTRICT out)
 {
-  const __m256d one = _mm256_set1_pd(1.0);
   for (; i + 4 <= end; i += 4)
   {
-    const __m256d b1 = _mm256_cvtps_pd(_mm_loadu_ps(w1 + i));
-    const __m256d b2 = _mm256_cvtps_pd(_mm_loadu_ps(w2 + i));
-    const __m256d b0 = _mm256_sub_pd(_mm256_sub_pd(one, b1), b2);
+    __m256d b[3];
+    LoadBarycentrics(w1, w2, i, b);
     __m256d r[4];
     for (int k = 0; k < 4; ++k)
     {
@@ -374,12 +400,10 @@ __attribute__((target("avx"))) vtkIdType InterpolateScalarsAVX(vtkIdType i,
     const __m256d t1 = _mm256_unpackhi_pd(r[0], r[1]); // c1 c1 | 0 0
     const __m256d t2 = _mm256_unpacklo_pd(r[2], r[3]);
     const __m256d t3 = _mm256_unpackhi_pd(r[2], r[3]);
-    const __m256d c0 = _mm256_permute2f128_pd(t0, t2, 0x20);
-    const __m256d c1 = _mm256_permute2f128_pd(t1, t3, 0x20);
-    const __m256d c2 = _mm256_permute2f128_pd(t0, t2, 0x31);
-    StreamScalars(out + i,
-      _mm256_add_pd(
-        _mm256_add_pd(_mm256_mul_pd(b0, c0), _mm256_mul_pd(b1, c1)), _mm256_mul_pd(b2, c2)));
+    const __m256d c[3] = { _mm256_permute2f128_pd(t0, t2, 0x20),
+      _mm256_permute2f128_pd(t1, t3, 0x20),
+      _mm256_permute2f128_pd(t0, t2, 0x31) };
+    StreamScalars(out + i, Barycentric(b, c));
   }
   return i;
 }

@@ -15,9 +15,11 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <thread>
 
 using vtkofbbrush::Blend;
@@ -53,6 +55,37 @@ inline double FalloffOf(const vtkOFBPaintSettings& s, double x)
   const vtkOFBBrush::FalloffType kind =
     Kind >= 0 ? static_cast<vtkOFBBrush::FalloffType>(Kind) : s.Falloff;
   return vtkofbbrush::Falloff(kind, x, CustomTableCurve{ s.CustomTable });
+}
+
+/**
+ * A copy of `count` tuples of `components` values of `source`, made once by the first
+ * thread that asks (`state`: 0 none, 1 copying, 2 done; the others wait for it) into
+ * `copy`; `made` is called by the thread that made it.
+ */
+template<typename T, typename Made>
+const T* CopyOnce(std::atomic<unsigned char>& state,
+  std::unique_ptr<T[]>& copy,
+  const T* source,
+  vtkIdType count,
+  int components,
+  Made made)
+{
+  if (state.load(std::memory_order_acquire) != 2)
+  {
+    unsigned char expected = 0;
+    if (state.compare_exchange_strong(expected, 1, std::memory_order_acq_rel))
+    {
+      copy.reset(new T[components * count]);
+      std::memcpy(copy.get(), source, components * count * sizeof(T));
+      made();
+      state.store(2, std::memory_order_release);
+    }
+    while (state.load(std::memory_order_acquire) != 2)
+    {
+      std::this_thread::yield();
+    }
+  }
+  return copy.get();
 }
 
 // Progress is reported every this many visited samples (serial dabs only).
@@ -139,53 +172,30 @@ vtkIdType vtkOFBPaintKernel::GetMemory() const
 //------------------------------------------------------------------------------
 const unsigned char* vtkOFBPaintKernel::InitialColorBlock(vtkIdType b)
 {
-  std::atomic<unsigned char>& state = this->InitialColorState[b];
-  if (state.load(std::memory_order_acquire) != 2)
-  {
-    unsigned char expected = 0;
-    if (state.compare_exchange_strong(expected, 1, std::memory_order_acq_rel))
-    {
-      const vtkIdType first = b << InitialBlockShift;
-      const vtkIdType count =
-        std::min(vtkIdType(1) << InitialBlockShift, this->NumberOfSamples - first);
-      this->InitialColors[b].reset(new unsigned char[4 * count]);
-      std::memcpy(this->InitialColors[b].get(), this->Colors->GetPointer(4 * first), 4 * count);
-      ++this->InitialBlocksHeld;
-      state.store(2, std::memory_order_release);
-    }
-    while (state.load(std::memory_order_acquire) != 2)
-    {
-      std::this_thread::yield();
-    }
-  }
-  return this->InitialColors[b].get();
+  const vtkIdType first = b << InitialBlockShift;
+  const vtkIdType count =
+    std::min(vtkIdType(1) << InitialBlockShift, this->NumberOfSamples - first);
+  return CopyOnce(this->InitialColorState[b],
+    this->InitialColors[b],
+    this->Colors->GetPointer(4 * first),
+    count,
+    4,
+    [this] { ++this->InitialBlocksHeld; });
 }
 
 //------------------------------------------------------------------------------
 const float* vtkOFBPaintKernel::InitialNormalBlock(vtkIdType b)
 {
-  std::atomic<unsigned char>& state = this->InitialNormalState[b];
-  if (state.load(std::memory_order_acquire) != 2)
-  {
-    unsigned char expected = 0;
-    if (state.compare_exchange_strong(expected, 1, std::memory_order_acq_rel))
-    {
-      const vtkIdType first = b << InitialBlockShift;
-      const vtkIdType count =
-        std::min(vtkIdType(1) << InitialBlockShift, this->NumberOfSamples - first);
-      this->InitialNormals[b].reset(new float[3 * count]);
-      std::memcpy(this->InitialNormals[b].get(),
-        this->Normals->GetPointer(3 * first),
-        3 * count * sizeof(float));
-      this->InitialBlocksHeld += 3; // three times the bytes of a colour block
-      state.store(2, std::memory_order_release);
-    }
-    while (state.load(std::memory_order_acquire) != 2)
-    {
-      std::this_thread::yield();
-    }
-  }
-  return this->InitialNormals[b].get();
+  const vtkIdType first = b << InitialBlockShift;
+  const vtkIdType count =
+    std::min(vtkIdType(1) << InitialBlockShift, this->NumberOfSamples - first);
+  // Three times the bytes of a colour block.
+  return CopyOnce(this->InitialNormalState[b],
+    this->InitialNormals[b],
+    this->Normals->GetPointer(3 * first),
+    count,
+    3,
+    [this] { this->InitialBlocksHeld += 3; });
 }
 
 //------------------------------------------------------------------------------

@@ -1,8 +1,6 @@
 #include "vtkOFBTexturedMeshWriter.h"
 
-#include "vtkActor.h"
 #include "vtkDataArray.h"
-#include "vtkGLTFExporter.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkImageShiftScale.h"
@@ -11,98 +9,25 @@
 #include "vtkOBJWriter.h"
 #include "vtkOFB.h"
 #include "vtkOFBParaViewProbe.h"
+#include "vtkOFBStagedFiles.h"
 #include "vtkOFBTextureAtlas.h"
 #include "vtkOFBTextureBaker.h"
+#include "vtkOFBTexturedGLTF.h"
 #include "vtkObjectFactory.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkTexture.h"
-#include "vtksys/Directory.hxx"
 #include "vtksys/SystemTools.hxx"
 
-#include <cstdio> // std::rename
-#include <fstream>
+#include <cctype>
 #include <string>
 #include <vector>
-
-#include <cerrno>
-#include <cstdlib>
-
-#include <signal.h> // kill
-#include <unistd.h> // getpid
 
 vtkStandardNewMacro(vtkOFBTexturedMeshWriter);
 
 namespace
 {
 using SystemTools = vtksys::SystemTools;
-
-/// A folder beside the target that holds the files until all are complete; removed
-/// (with whatever is left in it) when it goes out of scope. Named after the target and
-/// the process, so that the folders that killed writes left are recognized and removed.
-class StagingFolder
-{
-public:
-  explicit StagingFolder(const std::string& target)
-  {
-    std::string dir = SystemTools::GetFilenamePath(SystemTools::CollapseFullPath(target));
-    this->Target = dir;
-    const std::string prefix = "." + SystemTools::GetFilenameName(target) + ".partial-";
-    this->Path = dir + "/" + prefix + std::to_string(static_cast<long>(getpid()));
-    SystemTools::RemoveADirectory(this->Path);
-    // Folders of writes whose process was killed: their process no longer exists.
-    vtksys::Directory entries;
-    if (entries.Load(dir))
-    {
-      for (unsigned long i = 0; i < entries.GetNumberOfFiles(); ++i)
-      {
-        const std::string name = entries.GetFile(i);
-        if (name.compare(0, prefix.size(), prefix) != 0)
-        {
-          continue;
-        }
-        const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
-        if (pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
-        {
-          SystemTools::RemoveADirectory(dir + "/" + name);
-        }
-      }
-    }
-    this->Made = SystemTools::MakeDirectory(this->Path).IsSuccess();
-  }
-  ~StagingFolder()
-  {
-    if (this->Made)
-    {
-      SystemTools::RemoveADirectory(this->Path);
-    }
-  }
-  bool Ok() const { return this->Made; }
-  std::string Staged(const std::string& name) const { return this->Path + "/" + name; }
-  std::string Final(const std::string& name) const { return this->Target + "/" + name; }
-  /// Renames `names`, in order, from the folder to the target's folder.
-  bool Commit(const std::vector<std::string>& names) const
-  {
-    for (const std::string& name : names)
-    {
-      if (!SystemTools::FileExists(this->Staged(name)) ||
-        std::rename(this->Staged(name).c_str(), this->Final(name).c_str()) != 0)
-      {
-        return false;
-      }
-    }
-    return true;
-  }
-
-private:
-  std::string Target;
-  std::string Path;
-  bool Made = false;
-};
 
 /// `image` as RGB unsigned char: unsigned char arrays keep their values, others are
 /// mapped from [0, 1] to 0-255; one or two components become grey.
@@ -136,6 +61,63 @@ vtkSmartPointer<vtkImageData> ToRGB(vtkImageData* image)
   }
   rgb->Update();
   return rgb->GetOutput();
+}
+
+/// `textured` as the OBJ `path` with its material (<stem>.mtl) and the texture `texels`
+/// (<stem>.png) beside it: staged, checked, then renamed into place (the texture and the
+/// material first, the .obj last); false with `message` the reason.
+bool WriteOBJ(vtkPolyData* textured,
+  vtkImageData* texels,
+  const std::string& path,
+  std::string& message)
+{
+  const std::string name = SystemTools::GetFilenameName(path);
+  const std::string stem = SystemTools::GetFilenameWithoutLastExtension(name);
+  const std::vector<std::string> names = { stem + ".png", stem + ".mtl", name };
+  vtkOFBStagedFiles files(path);
+  if (!files.Begin(names, message))
+  {
+    return false;
+  }
+  vtkNew<vtkPNGWriter> image;
+  image->SetInputData(texels);
+  image->SetFileName(files.Staged(names[0]).c_str());
+  image->Write();
+  vtkNew<vtkOBJWriter> obj;
+  obj->SetInputData(0, textured);
+  obj->SetTextureFileName(names[0].c_str());
+  obj->SetFileName(files.Staged(name).c_str());
+  obj->Write();
+  if (image->GetErrorCode() != 0 || obj->GetErrorCode() != 0)
+  {
+    message = "cannot write '" + path + "'";
+    return false;
+  }
+  return files.Check(names[0], message) && files.Check(names[1], message) &&
+    files.Check(name, message) && files.Commit(names, message);
+}
+
+/// `textured` with the texture `texels` as the glTF 2.0 `path` (vtkGLTFExporter, the
+/// texture embedded, normals written): staged, then renamed into place; false with
+/// `message` the reason.
+bool WriteGLTF(vtkPolyData* textured,
+  vtkImageData* texels,
+  const std::string& path,
+  std::string& message)
+{
+  const std::string name = SystemTools::GetFilenameName(path);
+  vtkOFBStagedFiles files(path);
+  if (!files.Begin({ name }, message))
+  {
+    return false;
+  }
+  const std::string text = vtkOFBTexturedGLTF::WriteToString(textured, texels);
+  if (text.empty())
+  {
+    message = "cannot write '" + path + "': the glTF exporter gave nothing";
+    return false;
+  }
+  return files.Write(name, text, message) && files.Commit({ name }, message);
 }
 }
 
@@ -249,67 +231,12 @@ void vtkOFBTexturedMeshWriter::WriteData()
   }
   this->UpdateProgress(0.7);
 
-  StagingFolder staging(path);
-  if (!staging.Ok())
+  std::string message;
+  if (!(ext == ".obj" ? WriteOBJ(textured, texels, path, message)
+                      : WriteGLTF(textured, texels, path, message)))
   {
-    vtkErrorMacro("Cannot write '" << path << "': its folder cannot be written.");
-    return;
-  }
-  const std::string name = SystemTools::GetFilenameName(path);
-  const std::string stem = SystemTools::GetFilenameWithoutLastExtension(name);
-  std::vector<std::string> names;
-  if (ext == ".obj")
-  {
-    const std::string png = stem + ".png";
-    vtkNew<vtkPNGWriter> image;
-    image->SetInputData(texels);
-    image->SetFileName(staging.Staged(png).c_str());
-    image->Write();
-    vtkNew<vtkOBJWriter> obj;
-    obj->SetInputData(0, textured);
-    obj->SetTextureFileName(png.c_str());
-    obj->SetFileName(staging.Staged(name).c_str());
-    obj->Write();
-    if (image->GetErrorCode() != 0 || obj->GetErrorCode() != 0)
-    {
-      vtkErrorMacro("Cannot write '" << path << "'.");
-      return;
-    }
-    names = { png, stem + ".mtl", name };
-  }
-  else
-  {
-    vtkNew<vtkTexture> texture;
-    texture->SetInputData(texels);
-    texture->InterpolateOn();
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(textured);
-    mapper->ScalarVisibilityOff();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->SetTexture(texture);
-    vtkNew<vtkRenderer> renderer;
-    renderer->AddActor(actor);
-    vtkNew<vtkRenderWindow> window;
-    window->AddRenderer(renderer);
-    vtkNew<vtkGLTFExporter> exporter;
-    exporter->SetRenderWindow(window);
-    exporter->InlineDataOn();
-    exporter->SaveNormalOn();
-    const std::string text = exporter->WriteToString();
-    std::ofstream out(staging.Staged(name), std::ios::binary);
-    out << text;
-    out.close();
-    if (text.empty() || !out)
-    {
-      vtkErrorMacro("Cannot write '" << path << "'.");
-      return;
-    }
-    names = { name };
-  }
-  if (!staging.Commit(names))
-  {
-    vtkErrorMacro("Cannot write '" << path << "': renaming the files into place failed.");
+    message[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(message[0])));
+    vtkErrorMacro(<< message << ".");
     return;
   }
   this->WrittenTextureSize[0] = size[0];

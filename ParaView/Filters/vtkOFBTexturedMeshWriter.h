@@ -19,13 +19,13 @@
  * Files are written into a temporary folder beside the target and renamed into place
  * when all are complete (the texture and material first, the `.obj` last), so a failure
  * or a kill leaves the files that were there before and no partial file under the
- * target's name. (The folder a killed write leaves, `.<name>.partial-<process id>`, is
- * removed by the next write of that name.)
+ * target's name (vtkOFBStagedFiles: the folder a killed write leaves,
+ * `.<name>.tmp-<process id>-<n>`, is removed by the next write into that folder).
  *
  * Bad input (no OFB, an empty mesh, an unknown extension or array, a folder that cannot
  * be written) gives an error and writes nothing.
  *
- * @sa vtkOFBTextureBaker vtkOFBTextureAtlas vtkOFBParaViewProbe
+ * @sa vtkOFBTextureBaker vtkOFBTextureAtlas vtkOFBParaViewProbe vtkOFBStagedFiles
  */
 
 #ifndef vtkOFBTexturedMeshWriter_h

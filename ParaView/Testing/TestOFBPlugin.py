@@ -143,7 +143,7 @@ mtl = open(obj[:-4] + ".mtl").read()
 check("map_Kd ofb-plugin-sphere.png" in mtl, "writer: the material names the texture")
 faces = sum(1 for line in open(obj) if line.startswith("f "))
 check(faces == sphere.GetDataInformation().GetNumberOfCells(), "writer: %d faces" % faces)
-check(not [n for n in os.listdir(out) if ".partial-" in n], "writer: no staging left")
+check(not [n for n in os.listdir(out) if ".tmp-" in n], "writer: no staging left")
 from vtkmodules.vtkIOImage import vtkPNGReader
 texture = vtkPNGReader()
 texture.SetFileName(obj[:-4] + ".png")
@@ -151,7 +151,7 @@ texture.Update()
 texels = vtk_to_numpy(texture.GetOutput().GetPointData().GetScalars())
 check(((texels[:, 0] > 200) & (texels[:, 1] < 60)).any(), "writer: red texels in the texture")
 # The folder a killed write left (its process is gone) is removed by the next write.
-stale = os.path.join(out, ".ofb-plugin-sphere.gltf.partial-999999999")
+stale = os.path.join(out, ".ofb-plugin-sphere.gltf.tmp-999999999-0")
 os.makedirs(stale, exist_ok=True)
 open(os.path.join(stale, "ofb-plugin-sphere.gltf"), "w").write("{")
 SaveData(gltf, proxy=paintprobe, TextureSize=256)  # the only .gltf writer

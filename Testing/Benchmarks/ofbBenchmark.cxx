@@ -485,155 +485,76 @@ bool RunPeerProcess(const std::string& self, int repetitions, int nThreads, Row&
   return pclose(pipe) == 0 && found;
 }
 #endif
+
+/// The OFB build of `mesh` (named `name`) at `resolution`: one untimed warm-up, then
+/// options.Repetitions timed rebuilds; with `self`, its OpenVDB peer in a process of its
+/// own. False after a message.
+bool MeasureRow(const std::string& name,
+  vtkPolyData* mesh,
+  int resolution,
+  const Options& options,
+  const std::string& self,
+  int nThreads,
+  Row& row)
+{
+  vtkNew<vtkOFBSampler> sampler;
+  sampler->SetInputData(mesh);
+  sampler->SetResolution(resolution);
+  // The geometry and the default arrays only, as the peer stores: not the cell arrays
+  // that a mesh reader adds (the OBJ reader's GroupIds).
+  sampler->PassCellArraysOff();
+  std::vector<double> times;
+  double first = 0.0;
+  for (int r = -1; r < options.Repetitions; ++r)
+  {
+    sampler->Modified();
+    const double start = Now();
+    sampler->Update();
+    const double seconds = Now() - start;
+    if (r >= 0)
+    {
+      times.push_back(seconds);
+    }
+    else
+    {
+      first = seconds;
+    }
+  }
+  vtkOFB* ofb = sampler->GetOutput();
+  if (ofb->GetNumberOfSamples() == 0)
+  {
+    std::fprintf(stderr, "%s at %d: the build failed\n", name.c_str(), resolution);
+    return false;
+  }
+  row.Mesh = name;
+  row.Resolution = resolution;
+  row.Samples = ofb->GetNumberOfSamples();
+  row.OFB = Summarize(times);
+  row.First = first;
+  row.BytesPerSample = ofb->GetBytesPerSample();
+  row.OFBBytes = 1024.0 * ofb->GetActualMemorySize();
+#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
+  if (!self.empty())
+  {
+    sampler->RemoveAllInputs(); // its memory back before the peer runs
+    ofb->Initialize();
+    row.HasVDB = RunPeerProcess(self, options.Repetitions, nThreads, row);
+    if (!row.HasVDB)
+    {
+      std::fprintf(stderr, "%s at %d: the OpenVDB peer failed\n", name.c_str(), resolution);
+      return false;
+    }
+  }
+#else
+  (void)self;
+  (void)nThreads;
+#endif
+  return true;
 }
 
-//------------------------------------------------------------------------------
-int main(int argc, char* argv[])
+/// Table 1: the OFB build, its rates and its output bandwidth against `bw`'s triad.
+void PrintBuildTable(const std::vector<Row>& rows, const Bandwidth& bw, int nThreads)
 {
-  Options options;
-  if (!ParseOptions(argc, argv, options))
-  {
-    Usage(argv[0]);
-    return 1;
-  }
-  if (options.Threads > 0)
-  {
-    vtkSMPTools::Initialize(options.Threads);
-  }
-  const int nThreads = vtkSMPTools::GetEstimatedNumberOfThreads();
-#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
-  if (!options.PeerMesh.empty())
-  {
-    openvdb::initialize();
-    return RunPeer(options.PeerMesh, options.PeerResolution, options.Repetitions, nThreads);
-  }
-  // This program, for its OpenVDB peer.
-  std::string self = argv[0];
-  char exe[4096];
-  const ssize_t length = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
-  if (length > 0)
-  {
-    self.assign(exe, static_cast<size_t>(length));
-  }
-#else
-  if (!options.PeerMesh.empty())
-  {
-    std::fprintf(stderr, "--openvdb-peer: OpenVDB was not found at configure time\n");
-    return 1;
-  }
-#endif
-  std::printf("ofbBenchmark: VTK %s, SMP backend %s, %d threads (hardware: %u), %d "
-              "repetitions after one warm-up\n",
-    vtkVersion::GetVTKVersion(),
-    vtkSMPTools::GetBackend(),
-    nThreads,
-    std::thread::hardware_concurrency(),
-    options.Repetitions);
-#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
-  const bool useVDB = options.OpenVDB;
-  if (useVDB)
-  {
-    openvdb::initialize();
-    std::printf("OpenVDB %s peer: Vec3SGrid normals + Int32Grid packed RGBA, voxel = OFB cell, "
-                "setValue through accessors\n",
-      openvdb::getLibraryAbiVersionString());
-  }
-#else
-  const bool useVDB = false;
-  std::printf("OpenVDB was not found at configure time: the benchmark runs without the "
-              "OpenVDB peer.\n");
-#endif
-
-  // Memory bandwidth of the machine, measured now (3 arrays of 128 MiB).
-  const Bandwidth bw = MeasureBandwidth(nThreads, size_t(16) << 20, 5);
-  std::printf("Memory bandwidth (STREAM-like, %d threads, 3 x %.0f MB arrays, best of 5): "
-              "copy %.2f GB/s, triad %.2f GB/s\n\n",
-    nThreads,
-    bw.ArrayBytes / 1e6,
-    bw.Copy / 1e9,
-    bw.Triad / 1e9);
-  std::fflush(stdout);
-
-  std::vector<Row> rows;
-  for (const std::string& name : options.Meshes)
-  {
-    const std::string path = MeshPath(name);
-    vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(path);
-    if (!mesh)
-    {
-      std::fprintf(stderr, "cannot read a mesh with polygons from '%s'\n", path.c_str());
-      return 1;
-    }
-    std::printf("%s: %lld points, %lld polygons (%s)\n",
-      name.c_str(),
-      static_cast<long long>(mesh->GetNumberOfPoints()),
-      static_cast<long long>(mesh->GetNumberOfPolys()),
-      path.c_str());
-    std::fflush(stdout);
-    for (const int resolution : options.Resolutions)
-    {
-      vtkNew<vtkOFBSampler> sampler;
-      sampler->SetInputData(mesh);
-      sampler->SetResolution(resolution);
-      // The geometry and the default arrays only, as the peer stores: not the cell arrays
-      // that a mesh reader adds (the OBJ reader's GroupIds).
-      sampler->PassCellArraysOff();
-      std::vector<double> times;
-      double first = 0.0;
-      for (int r = -1; r < options.Repetitions; ++r)
-      {
-        sampler->Modified();
-        const double start = Now();
-        sampler->Update();
-        const double seconds = Now() - start;
-        if (r >= 0)
-        {
-          times.push_back(seconds);
-        }
-        else
-        {
-          first = seconds;
-        }
-      }
-      vtkOFB* ofb = sampler->GetOutput();
-      if (ofb->GetNumberOfSamples() == 0)
-      {
-        std::fprintf(stderr, "%s at %d: the build failed\n", name.c_str(), resolution);
-        return 1;
-      }
-      Row row;
-      row.Mesh = name;
-      row.Resolution = resolution;
-      row.Samples = ofb->GetNumberOfSamples();
-      row.OFB = Summarize(times);
-      row.First = first;
-      row.BytesPerSample = ofb->GetBytesPerSample();
-      row.OFBBytes = 1024.0 * ofb->GetActualMemorySize();
-#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
-      if (useVDB)
-      {
-        sampler->RemoveAllInputs(); // its memory back before the peer runs
-        ofb->Initialize();
-        row.HasVDB = RunPeerProcess(self, options.Repetitions, nThreads, row);
-        if (!row.HasVDB)
-        {
-          std::fprintf(stderr, "%s at %d: the OpenVDB peer failed\n", name.c_str(), resolution);
-          return 1;
-        }
-      }
-#endif
-      std::printf("  resolution %5d: %lld samples, OFB best %.1f ms, median %.1f ms%s\n",
-        resolution,
-        static_cast<long long>(row.Samples),
-        1e3 * row.OFB.Best,
-        1e3 * row.OFB.Median,
-        row.HasVDB ? ", OpenVDB done" : "");
-      std::fflush(stdout);
-      rows.push_back(row);
-    }
-  }
-
-  // Table 1: the OFB build.
   std::printf(
     "\nOFB build (vtkOFBSampler::Update, CPU backend, %d threads); MB = 10^6 bytes\n", nThreads);
   std::printf("%-8s %5s %11s %9s %9s %10s %10s %9s %10s %7s %8s %9s %7s\n",
@@ -688,49 +609,52 @@ int main(int argc, char* argv[])
               "into new memory. out GB/s: the OFB's bytes (GetActualMemorySize) / best\n"
               "build time; %% bw: of the measured triad bandwidth %.2f GB/s\n",
     bw.Triad / 1e9);
+}
 
-  // Table 2: against OpenVDB.
-  if (useVDB)
+/// Table 2: the OFB against OpenVDB storing the same samples.
+void PrintOpenVDBTable(const std::vector<Row>& rows, int nThreads)
+{
+  std::printf("\nOpenVDB storing the same samples (normals + RGBA); time = best, ratio = "
+              "OFB / OpenVDB\n");
+  std::printf("%-8s %5s %11s %11s %9s %9s %9s %8s %8s %8s %8s\n",
+    "mesh",
+    "res",
+    "samples",
+    "vdb voxels",
+    "OFB ms",
+    "VDB1 ms",
+    ("VDB" + std::to_string(nThreads) + " ms").c_str(),
+    "OFB MB",
+    "VDB MB",
+    "t/VDB1",
+    "mem");
+  for (const Row& r : rows)
   {
-    std::printf("\nOpenVDB storing the same samples (normals + RGBA); time = best, ratio = "
-                "OFB / OpenVDB\n");
-    std::printf("%-8s %5s %11s %11s %9s %9s %9s %8s %8s %8s %8s\n",
-      "mesh",
-      "res",
-      "samples",
-      "vdb voxels",
-      "OFB ms",
-      "VDB1 ms",
-      ("VDB" + std::to_string(nThreads) + " ms").c_str(),
-      "OFB MB",
-      "VDB MB",
-      "t/VDB1",
-      "mem");
-    for (const Row& r : rows)
-    {
-      std::printf("%-8s %5d %11lld %11llu %9.1f %9.1f %9.1f %8.1f %8.1f %8.2f %8.2f\n",
-        r.Mesh.c_str(),
-        r.Resolution,
-        static_cast<long long>(r.Samples),
-        static_cast<unsigned long long>(r.VDBVoxels),
-        1e3 * r.OFB.Best,
-        1e3 * r.VDB1.Best,
-        1e3 * r.VDBN.Best,
-        r.OFBBytes / 1e6,
-        r.VDBBytes / 1e6,
-        r.OFB.Best / r.VDB1.Best,
-        r.OFBBytes / r.VDBBytes);
-    }
-    std::printf("VDB1: one thread; VDB%d: %d threads filling their own grids (disjoint leaf "
-                "slabs), then merged. "
-                "OpenVDB times cover only\nthe insertion of the already computed samples; the "
-                "OFB times cover the whole build from the mesh.\nvdb voxels < samples where "
-                "two samples fall in one voxel.\n",
-      nThreads,
-      nThreads);
+    std::printf("%-8s %5d %11lld %11llu %9.1f %9.1f %9.1f %8.1f %8.1f %8.2f %8.2f\n",
+      r.Mesh.c_str(),
+      r.Resolution,
+      static_cast<long long>(r.Samples),
+      static_cast<unsigned long long>(r.VDBVoxels),
+      1e3 * r.OFB.Best,
+      1e3 * r.VDB1.Best,
+      1e3 * r.VDBN.Best,
+      r.OFBBytes / 1e6,
+      r.VDBBytes / 1e6,
+      r.OFB.Best / r.VDB1.Best,
+      r.OFBBytes / r.VDBBytes);
   }
+  std::printf("VDB1: one thread; VDB%d: %d threads filling their own grids (disjoint leaf "
+              "slabs), then merged. "
+              "OpenVDB times cover only\nthe insertion of the already computed samples; the "
+              "OFB times cover the whole build from the mesh.\nvdb voxels < samples where "
+              "two samples fall in one voxel.\n",
+    nThreads,
+    nThreads);
+}
 
-  // Goals.
+/// The goals at resolution 2048: the build rate, and the memory against OpenVDB's.
+void PrintGoals(const std::vector<Row>& rows, int nThreads)
+{
   std::printf("\nGoals (this machine, %d threads):\n", nThreads);
   for (const Row& r : rows)
   {
@@ -752,5 +676,125 @@ int main(int argc, char* argv[])
     }
     std::printf("\n");
   }
+}
+
+/// The path of this program (for its OpenVDB peer): /proc/self/exe, else argv0.
+std::string ThisProgram(const char* argv0)
+{
+  std::string self = argv0;
+#if defined(__unix__)
+  char exe[4096];
+  const ssize_t length = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
+  if (length > 0)
+  {
+    self.assign(exe, static_cast<size_t>(length));
+  }
+#endif
+  return self;
+}
+
+/// The first lines: versions, threads, the OpenVDB peer; whether the peer runs.
+bool PrintHeader(const Options& options, int nThreads)
+{
+  std::printf("ofbBenchmark: VTK %s, SMP backend %s, %d threads (hardware: %u), %d "
+              "repetitions after one warm-up\n",
+    vtkVersion::GetVTKVersion(),
+    vtkSMPTools::GetBackend(),
+    nThreads,
+    std::thread::hardware_concurrency(),
+    options.Repetitions);
+#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
+  if (options.OpenVDB)
+  {
+    openvdb::initialize();
+    std::printf("OpenVDB %s peer: Vec3SGrid normals + Int32Grid packed RGBA, voxel = OFB cell, "
+                "setValue through accessors\n",
+      openvdb::getLibraryAbiVersionString());
+  }
+  return options.OpenVDB;
+#else
+  std::printf("OpenVDB was not found at configure time: the benchmark runs without the "
+              "OpenVDB peer.\n");
+  return false;
+#endif
+}
+}
+
+//------------------------------------------------------------------------------
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!ParseOptions(argc, argv, options))
+  {
+    Usage(argv[0]);
+    return 1;
+  }
+  if (options.Threads > 0)
+  {
+    vtkSMPTools::Initialize(options.Threads);
+  }
+  const int nThreads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  if (!options.PeerMesh.empty())
+  {
+#ifdef VTKOFB_BENCHMARK_HAVE_OPENVDB
+    openvdb::initialize();
+    return RunPeer(options.PeerMesh, options.PeerResolution, options.Repetitions, nThreads);
+#else
+    std::fprintf(stderr, "--openvdb-peer: OpenVDB was not found at configure time\n");
+    return 1;
+#endif
+  }
+  const bool useVDB = PrintHeader(options, nThreads);
+  const std::string self = useVDB ? ThisProgram(argv[0]) : std::string();
+
+  // Memory bandwidth of the machine, measured now (3 arrays of 128 MiB).
+  const Bandwidth bw = MeasureBandwidth(nThreads, size_t(16) << 20, 5);
+  std::printf("Memory bandwidth (STREAM-like, %d threads, 3 x %.0f MB arrays, best of 5): "
+              "copy %.2f GB/s, triad %.2f GB/s\n\n",
+    nThreads,
+    bw.ArrayBytes / 1e6,
+    bw.Copy / 1e9,
+    bw.Triad / 1e9);
+  std::fflush(stdout);
+
+  std::vector<Row> rows;
+  for (const std::string& name : options.Meshes)
+  {
+    const std::string path = MeshPath(name);
+    vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::ReadMeshFile(path);
+    if (!mesh)
+    {
+      std::fprintf(stderr, "cannot read a mesh with polygons from '%s'\n", path.c_str());
+      return 1;
+    }
+    std::printf("%s: %lld points, %lld polygons (%s)\n",
+      name.c_str(),
+      static_cast<long long>(mesh->GetNumberOfPoints()),
+      static_cast<long long>(mesh->GetNumberOfPolys()),
+      path.c_str());
+    std::fflush(stdout);
+    for (const int resolution : options.Resolutions)
+    {
+      Row row;
+      if (!MeasureRow(name, mesh, resolution, options, self, nThreads, row))
+      {
+        return 1;
+      }
+      std::printf("  resolution %5d: %lld samples, OFB best %.1f ms, median %.1f ms%s\n",
+        resolution,
+        static_cast<long long>(row.Samples),
+        1e3 * row.OFB.Best,
+        1e3 * row.OFB.Median,
+        row.HasVDB ? ", OpenVDB done" : "");
+      std::fflush(stdout);
+      rows.push_back(row);
+    }
+  }
+  PrintBuildTable(rows, bw, nThreads);
+  if (useVDB)
+  {
+    PrintOpenVDBTable(rows, nThreads);
+  }
+  PrintGoals(rows, nThreads);
   return 0;
 }

@@ -9,6 +9,7 @@
 // --egl it takes its OpenGL context from EGL device N (default 0) and needs no X
 // display: for a Linux machine with a GPU driver and no X server. --phases adds, after
 // the timed builds, one OpenGL build that times its phases (each ended by a glFinish).
+#include "ofbBenchmarkOptions.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBBuilder.h"
@@ -28,7 +29,6 @@
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -88,13 +88,7 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--resolutions" && i + 1 < argc)
     {
-      resolutions.clear();
-      std::stringstream list(argv[++i]);
-      std::string item;
-      while (std::getline(list, item, ','))
-      {
-        resolutions.push_back(std::atoi(item.c_str()));
-      }
+      resolutions = ofbbench::ParseIntList(argv[++i]);
     }
     else
     {

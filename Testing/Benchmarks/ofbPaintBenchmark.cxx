@@ -18,6 +18,7 @@
 // --dabs5 N (default 20000), --dabs25 N (default 2000), --repetitions N (default 3,
 // the median is printed), --no-openvdb, --no-render, --lookup MODE (the stroke's display:
 // nearest, the default, idw, mipmapped or nearestmipmapped).
+#include "ofbBenchmarkOptions.h"
 #include "vtkOFBMemoryFloor.h"
 #include "vtkOFBReadMesh.h"
 
@@ -53,7 +54,6 @@
 #include <functional>
 #include <iostream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -107,13 +107,7 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     }
     else if (arg == "--resolutions" && hasValue)
     {
-      o.Resolutions.clear();
-      std::stringstream list(argv[++i]);
-      std::string item;
-      while (std::getline(list, item, ','))
-      {
-        o.Resolutions.push_back(std::atoi(item.c_str()));
-      }
+      o.Resolutions = ofbbench::ParseIntList(argv[++i]);
     }
     else if (arg == "--dabs5" && hasValue)
     {

@@ -19,9 +19,9 @@
 // that number of threads only).
 #include "vtkOFBMemoryFloor.h"
 #include "vtkOFBReadMesh.h"
+#include "vtkOFBTestUtilities.h"
 
 #include "vtkCellArray.h"
-#include "vtkCleanPolyData.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -33,7 +33,6 @@
 #include "vtkPolyData.h"
 #include "vtkRungeKutta4.h"
 #include "vtkSMPTools.h"
-#include "vtkSphereSource.h"
 #include "vtkStreamTracer.h"
 #include "vtkTimerLog.h"
 
@@ -69,20 +68,6 @@ void SetRotationField(vtkPolyData* mesh, const double w[3], const double c[3])
   mesh->GetPointData()->SetVectors(field);
 }
 
-vtkSmartPointer<vtkPolyData> Sphere(int resolution)
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(1.0);
-  sphere->SetThetaResolution(2 * resolution);
-  sphere->SetPhiResolution(resolution);
-  sphere->LatLongTessellationOn();
-  vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputConnection(sphere->GetOutputPort());
-  clean->Update();
-  vtkSmartPointer<vtkPolyData> out = clean->GetOutput();
-  return out;
-}
-
 double CircleError(const double a[3], const double b[3])
 {
   return std::hypot(std::hypot(b[0], b[1]) - std::hypot(a[0], a[1]), b[2] - a[2]);
@@ -91,7 +76,7 @@ double CircleError(const double a[3], const double b[3])
 // 1. One revolution on the sphere.
 void Accuracy(int steps, int numSeeds)
 {
-  vtkSmartPointer<vtkPolyData> sphere = Sphere(256);
+  vtkSmartPointer<vtkPolyData> sphere = vtkofbtest::MakeSphere(1.0, 256);
   const double z[3] = { 0, 0, 1 }, o[3] = { 0, 0, 0 };
   SetRotationField(sphere, z, o);
   vtkNew<vtkPoints> seedPoints;

@@ -12,6 +12,7 @@
 // sample's triangle and two barycentrics, 12 bytes; its normal, 12, to project the
 // vectors) and writes 24 (colour 4, vector 12, pressure 8); the floor copies 24 bytes a
 // sample from one buffer to another.
+#include "ofbBenchmarkOptions.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
@@ -28,7 +29,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
-#include <sstream>
 #include <string>
 #include <time.h>
 #include <vector>
@@ -152,13 +152,7 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--resolutions" && i + 1 < argc)
     {
-      resolutions.clear();
-      std::stringstream list(argv[++i]);
-      std::string item;
-      while (std::getline(list, item, ','))
-      {
-        resolutions.push_back(std::atoi(item.c_str()));
-      }
+      resolutions = ofbbench::ParseIntList(argv[++i]);
     }
     else if (arg == "--help")
     {

@@ -142,8 +142,9 @@ inline vtkSmartPointer<vtkPolyData> MakeTexturedTrianglePlane()
 /// past it, and negative (for WithBadPointId).
 constexpr vtkIdType BadPlanePointIds[] = { 25, 99999, -1 };
 
-/// Add a float sample array `name` holding coordinate `axis` of each sample's position.
-inline void AddCoordinateArray(vtkOFB* ofb, const char* name, int axis)
+/// Add a float sample array `name` holding value(x) at each sample's position x.
+template<typename F>
+inline void AddSampleArray(vtkOFB* ofb, const char* name, F value)
 {
   vtkNew<vtkFloatArray> values;
   values->SetName(name);
@@ -152,9 +153,15 @@ inline void AddCoordinateArray(vtkOFB* ofb, const char* name, int axis)
   {
     double x[3];
     ofb->GetSamplePosition(i, x);
-    values->SetValue(i, static_cast<float>(x[axis]));
+    values->SetValue(i, static_cast<float>(value(x)));
   }
   ofb->GetSampleData()->AddArray(values);
+}
+
+/// Add a float sample array `name` holding coordinate `axis` of each sample's position.
+inline void AddCoordinateArray(vtkOFB* ofb, const char* name, int axis)
+{
+  AddSampleArray(ofb, name, [axis](const double x[3]) { return x[axis]; });
 }
 
 /// Build an OFB of `mesh` on the CPU at `resolution`.

@@ -47,7 +47,6 @@
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkWindowToImageFilter.h"
 #include "vtksys/SystemTools.hxx"
 
 #include "ofbExampleData.h"
@@ -306,12 +305,8 @@ bool PaintApp::SaveOFB(const std::string& path)
 bool PaintApp::Screenshot(const std::string& path)
 {
   // The window as it shows (hide the help with 'h' first for the picture alone).
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(this->Window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
   std::string message;
-  const bool ok = ofbexample::WritePNG(grab, path, message);
+  const bool ok = ofbexample::WriteWindowPNG(this->Window, path, message);
   if (!ok)
   {
     std::cerr << "OFBPaint: " << message << "\n";
@@ -504,7 +499,6 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
   bool headless)
 {
   this->MeshPath = meshPath;
-  std::string error;
   ofbexample::DataOptions dataOptions;
   dataOptions.Field = options.at("--field");
   dataOptions.Blocks = options.at("--block");
@@ -518,14 +512,12 @@ bool PaintApp::Setup(const std::map<std::string, std::string>& options,
     return false;
   }
   ofbexample::DataSurface data;
-  if (!ofbexample::ReadDataTriangles(meshPath, dataOptions, false, data, error))
+  if (!ofbexample::ReadDataReported("OFBPaint", meshPath, dataOptions, false, true, data))
   {
-    std::cerr << "OFBPaint: " << error << "\n";
     return false;
   }
   this->Surface = data.Surface;
   this->FieldName = dataOptions.Field;
-  std::cout << "read " << meshPath << ": " << data.Summary << "\n";
   int resolution = 0, width = 0, height = 0;
   if (!ofbexample::ParseInt(options.at("--resolution"), 8, 8192, resolution) ||
     !ofbexample::ParseInt(options.at("--width"), 64, 8192, width) ||

@@ -5,12 +5,10 @@
 #include "ofbExampleImage.h"
 #include "ofbExampleMesh.h"
 
-#include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkErrorCode.h"
 #include "vtkFloatArray.h"
-#include "vtkGLTFExporter.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkNew.h"
@@ -19,16 +17,14 @@
 #include "vtkOFBImageReader.h"
 #include "vtkOFBImageWriter.h"
 #include "vtkOFBProbeFilter.h"
+#include "vtkOFBStagedFiles.h"
 #include "vtkOFBTextureAtlas.h"
 #include "vtkOFBTextureBaker.h"
 #include "vtkOFBTextureProjector.h"
+#include "vtkOFBTexturedGLTF.h"
 #include "vtkPLYWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkTexture.h"
 #include "vtkXMLPolyDataWriter.h"
 #include "vtksys/SystemTools.hxx"
 
@@ -74,7 +70,7 @@ long long ExpectedFaces(vtkPolyData* surface)
 /// The float texture `lic` as the 32-bit float OpenEXR staged as `name` (vtkOFBImageWriter),
 /// read back (vtkOFBImageReader) and compared bit for bit.
 bool WriteFloatTexture(vtkImageData* lic,
-  ofbexample::StagedFiles& files,
+  vtkOFBStagedFiles& files,
   const std::string& name,
   std::string& message)
 {
@@ -127,7 +123,7 @@ bool WriteOBJ(vtkPolyData* surface,
   {
     names.insert(names.begin(), exr);
   }
-  ofbexample::StagedFiles files(path);
+  vtkOFBStagedFiles files(path);
   std::string bytes;
   if (!files.Begin(names, message) || !ofbexample::EncodePNG(texels, bytes, message) ||
     !files.Write(png, bytes, message) || (lic && !WriteFloatTexture(lic, files, exr, message)))
@@ -167,7 +163,7 @@ bool WriteOBJ(vtkPolyData* surface,
 bool WriteBytes(const std::string& bytes, const std::string& path, std::string& message)
 {
   const std::string name = SystemTools::GetFilenameName(path);
-  ofbexample::StagedFiles files(path);
+  vtkOFBStagedFiles files(path);
   return files.Begin({ name }, message) && files.Write(name, bytes, message) &&
     files.Commit({ name }, message);
 }
@@ -180,7 +176,7 @@ bool WriteBytes(const std::string& bytes, const std::string& path, std::string& 
 bool WritePLY(vtkPolyData* probed, const std::string& path, std::string& message)
 {
   const std::string name = SystemTools::GetFilenameName(path);
-  ofbexample::StagedFiles files(path);
+  vtkOFBStagedFiles files(path);
   if (!files.Begin({ name }, message))
   {
     return false;
@@ -226,40 +222,147 @@ bool WriteVTP(vtkPolyData* probed, const std::string& path, std::string& message
   return WriteBytes(bytes, path, message);
 }
 
-/// glTF 2.0 through vtkGLTFExporter, which writes a scene: the surface as the one actor of
-/// a renderer (never rendered), the image as its texture; the text (the image embedded)
-/// written as above.
+/// glTF 2.0 (vtkOFBTexturedGLTF: the image embedded), written as above.
 bool WriteGLTF(vtkPolyData* surface,
   vtkImageData* texels,
   const std::string& path,
   std::string& message)
 {
-  vtkNew<vtkTexture> texture;
-  texture->SetInputData(texels);
-  texture->InterpolateOn();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(surface);
-  mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->SetTexture(texture);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  vtkNew<vtkRenderWindow> window;
-  window->AddRenderer(renderer);
   vtkNew<FirstError> errors;
-  vtkNew<vtkGLTFExporter> exporter;
-  exporter->AddObserver(vtkCommand::ErrorEvent, errors);
-  exporter->SetRenderWindow(window);
-  exporter->InlineDataOn();
-  exporter->SaveNormalOn();
-  const std::string text = exporter->WriteToString();
+  const std::string text = vtkOFBTexturedGLTF::WriteToString(surface, texels, errors);
   if (errors->Count > 0 || text.empty())
   {
     message = "cannot write '" + path + "'" + errors->Suffix();
     return false;
   }
   return WriteBytes(text, path, message);
+}
+
+/**
+ * The textured OBJ (with the LIC as an OpenEXR where the OFB has one) or glTF: the surface
+ * with its texture coordinates, or those of an atlas, and the paint baked into an RGB
+ * texture; `message` says what was written.
+ */
+bool ExportTextured(vtkPolyData* surface,
+  vtkOFB* ofb,
+  const std::string& path,
+  const std::string& ext,
+  int textureSize,
+  std::string& message)
+{
+  vtkNew<FirstError> errors;
+  // A mesh without texture coordinates gets an atlas of charts on the OFB's grids, a
+  // texel a cell where textureSize allows.
+  vtkSmartPointer<vtkPolyData> textured = surface;
+  int size[2] = { textureSize, textureSize };
+  vtkNew<vtkOFBTextureAtlas> atlas;
+  const bool generated = !surface->GetPointData()->GetTCoords();
+  if (generated)
+  {
+    atlas->AddObserver(vtkCommand::ErrorEvent, errors);
+    atlas->SetInputData(surface);
+    atlas->SetOFBData(ofb);
+    atlas->SetMaximumTextureSize(std::max(16, textureSize));
+    atlas->Update();
+    textured = atlas->GetOutput();
+    atlas->GetAtlasSize(size);
+    if (!errors->Text.empty() || size[0] == 0)
+    {
+      message = "cannot lay out a texture for '" + path + "': " + errors->Text;
+      return false;
+    }
+  }
+  // The paint as an RGB texture (opaque: an alpha channel makes viewers sort the mesh as
+  // translucent), written by the OBJ writer beside the .obj with its .mtl, or into the
+  // .gltf (a textured mesh with its normals, the image embedded).
+  vtkNew<vtkOFBTextureBaker> baker;
+  baker->AddObserver(vtkCommand::ErrorEvent, errors);
+  baker->SetInputData(textured);
+  baker->SetOFBData(ofb);
+  baker->SetTextureSize(size);
+  vtkNew<vtkImageExtractComponents> rgb;
+  rgb->AddObserver(vtkCommand::ErrorEvent, errors);
+  rgb->SetInputConnection(baker->GetOutputPort());
+  rgb->SetComponents(0, 1, 2);
+  rgb->Update();
+  vtkImageData* texels = rgb->GetOutput();
+  if (errors->Count > 0 || texels->GetNumberOfPoints() == 0)
+  {
+    message = "cannot export '" + path + "': baking the texture failed" + errors->Suffix();
+    return false;
+  }
+  // An OBJ also gets the LIC's intensity, where the OFB has one, as a 32-bit float
+  // OpenEXR over the same texture coordinates: exact, for renderers and compositors.
+  auto* licArray = vtkFloatArray::SafeDownCast(ofb->GetSampleData()->GetArray("LIC"));
+  vtkNew<vtkOFBTextureBaker> licBaker;
+  vtkImageData* lic = nullptr;
+  if (ext == ".obj" && licArray && licArray->GetNumberOfComponents() == 1)
+  {
+    licBaker->AddObserver(vtkCommand::ErrorEvent, errors);
+    licBaker->SetInputData(textured);
+    licBaker->SetOFBData(ofb);
+    licBaker->SetArrayName("LIC");
+    licBaker->SetTextureSize(size);
+    licBaker->Update();
+    lic = licBaker->GetOutput();
+    if (errors->Count > 0 || lic->GetNumberOfPoints() == 0)
+    {
+      message = "cannot export '" + path + "': baking the LIC failed" + errors->Suffix();
+      return false;
+    }
+  }
+  if (!(ext == ".obj" ? WriteOBJ(textured, texels, lic, path, message)
+                      : WriteGLTF(textured, texels, path, message)))
+  {
+    return false;
+  }
+  std::ostringstream done;
+  done << "wrote " << path << " with a " << size[0] << " x " << size[1] << " texture ("
+       << baker->GetNumberOfBakedTexels() << " texels baked";
+  if (generated)
+  {
+    done << ", texture coordinates made: " << atlas->GetNumberOfCharts()
+         << " charts on the OFB's grids";
+  }
+  done << ")";
+  if (lic)
+  {
+    done << " and the LIC as " << SystemTools::GetFilenameWithoutLastExtension(path)
+         << "_LIC.exr (32-bit float, read back bit for bit)";
+  }
+  message = done.str();
+  return true;
+}
+
+/// The PLY with vertex colours or the VTP with every sample array, through
+/// vtkOFBProbeFilter; `message` says what was written.
+bool ExportProbed(vtkPolyData* surface,
+  vtkOFB* ofb,
+  const std::string& path,
+  const std::string& ext,
+  std::string& message)
+{
+  vtkNew<FirstError> errors;
+  vtkNew<vtkOFBProbeFilter> probe;
+  probe->AddObserver(vtkCommand::ErrorEvent, errors);
+  probe->SetInputData(surface);
+  probe->SetOFBData(ofb);
+  probe->Update();
+  if (errors->Count > 0)
+  {
+    message = "cannot export '" + path + "'" + errors->Suffix();
+    return false;
+  }
+  if (!(ext == ".ply" ? WritePLY(probe->GetOutput(), path, message)
+                      : WriteVTP(probe->GetOutput(), path, message)))
+  {
+    return false;
+  }
+  std::ostringstream done;
+  done << "wrote " << path << " (" << probe->GetOutput()->GetNumberOfPoints() << " points with "
+       << (ext == ".ply" ? "vertex colours" : "the sample arrays") << ")";
+  message = done.str();
+  return true;
 }
 }
 
@@ -277,121 +380,22 @@ bool ExportPainting(vtkPolyData* surface,
   std::string& message)
 {
   const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
-  const std::string why = ofbexample::WhyNotWritable(path);
+  const std::string why = vtkOFBStagedFiles::WhyNotWritable(path);
   if (!why.empty())
   {
     message = "cannot write '" + path + "': " + why; // before the work of baking
     return false;
   }
-  vtkNew<FirstError> errors;
-  std::ostringstream done;
   if (ext == ".obj" || ext == ".gltf")
   {
-    // A mesh without texture coordinates gets an atlas of charts on the OFB's grids, a
-    // texel a cell where textureSize allows.
-    vtkSmartPointer<vtkPolyData> textured = surface;
-    int size[2] = { textureSize, textureSize };
-    vtkNew<vtkOFBTextureAtlas> atlas;
-    const bool generated = !surface->GetPointData()->GetTCoords();
-    if (generated)
-    {
-      atlas->AddObserver(vtkCommand::ErrorEvent, errors);
-      atlas->SetInputData(surface);
-      atlas->SetOFBData(ofb);
-      atlas->SetMaximumTextureSize(std::max(16, textureSize));
-      atlas->Update();
-      textured = atlas->GetOutput();
-      atlas->GetAtlasSize(size);
-      if (!errors->Text.empty() || size[0] == 0)
-      {
-        message = "cannot lay out a texture for '" + path + "': " + errors->Text;
-        return false;
-      }
-    }
-    // The paint as an RGB texture (opaque: an alpha channel makes viewers sort the mesh as
-    // translucent), written by the OBJ writer beside the .obj with its .mtl, or into the
-    // .gltf (a textured mesh with its normals, the image embedded).
-    vtkNew<vtkOFBTextureBaker> baker;
-    baker->AddObserver(vtkCommand::ErrorEvent, errors);
-    baker->SetInputData(textured);
-    baker->SetOFBData(ofb);
-    baker->SetTextureSize(size);
-    vtkNew<vtkImageExtractComponents> rgb;
-    rgb->AddObserver(vtkCommand::ErrorEvent, errors);
-    rgb->SetInputConnection(baker->GetOutputPort());
-    rgb->SetComponents(0, 1, 2);
-    rgb->Update();
-    vtkImageData* texels = rgb->GetOutput();
-    if (errors->Count > 0 || texels->GetNumberOfPoints() == 0)
-    {
-      message = "cannot export '" + path + "': baking the texture failed" + errors->Suffix();
-      return false;
-    }
-    // An OBJ also gets the LIC's intensity, where the OFB has one, as a 32-bit float
-    // OpenEXR over the same texture coordinates: exact, for renderers and compositors.
-    auto* licArray = vtkFloatArray::SafeDownCast(ofb->GetSampleData()->GetArray("LIC"));
-    vtkNew<vtkOFBTextureBaker> licBaker;
-    vtkImageData* lic = nullptr;
-    if (ext == ".obj" && licArray && licArray->GetNumberOfComponents() == 1)
-    {
-      licBaker->AddObserver(vtkCommand::ErrorEvent, errors);
-      licBaker->SetInputData(textured);
-      licBaker->SetOFBData(ofb);
-      licBaker->SetArrayName("LIC");
-      licBaker->SetTextureSize(size);
-      licBaker->Update();
-      lic = licBaker->GetOutput();
-      if (errors->Count > 0 || lic->GetNumberOfPoints() == 0)
-      {
-        message = "cannot export '" + path + "': baking the LIC failed" + errors->Suffix();
-        return false;
-      }
-    }
-    if (!(ext == ".obj" ? WriteOBJ(textured, texels, lic, path, message)
-                        : WriteGLTF(textured, texels, path, message)))
-    {
-      return false;
-    }
-    done << "wrote " << path << " with a " << size[0] << " x " << size[1] << " texture ("
-         << baker->GetNumberOfBakedTexels() << " texels baked";
-    if (generated)
-    {
-      done << ", texture coordinates made: " << atlas->GetNumberOfCharts()
-           << " charts on the OFB's grids";
-    }
-    done << ")";
-    if (lic)
-    {
-      done << " and the LIC as " << SystemTools::GetFilenameWithoutLastExtension(path)
-           << "_LIC.exr (32-bit float, read back bit for bit)";
-    }
-    message = done.str();
-    return true;
+    return ExportTextured(surface, ofb, path, ext, textureSize, message);
   }
   if (ext != ".ply" && ext != ".vtp")
   {
     message = "cannot export to '" + ext + "' files (use .obj, .gltf, .ply or .vtp)";
     return false;
   }
-  vtkNew<vtkOFBProbeFilter> probe;
-  probe->AddObserver(vtkCommand::ErrorEvent, errors);
-  probe->SetInputData(surface);
-  probe->SetOFBData(ofb);
-  probe->Update();
-  if (errors->Count > 0)
-  {
-    message = "cannot export '" + path + "'" + errors->Suffix();
-    return false;
-  }
-  if (!(ext == ".ply" ? WritePLY(probe->GetOutput(), path, message)
-                      : WriteVTP(probe->GetOutput(), path, message)))
-  {
-    return false;
-  }
-  done << "wrote " << path << " (" << probe->GetOutput()->GetNumberOfPoints() << " points with "
-       << (ext == ".ply" ? "vertex colours" : "the sample arrays") << ")";
-  message = done.str();
-  return true;
+  return ExportProbed(surface, ofb, path, ext, message);
 }
 
 vtkSmartPointer<vtkOFB> ImportTexture(vtkPolyData* surface,

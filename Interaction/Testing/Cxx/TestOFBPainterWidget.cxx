@@ -307,10 +307,24 @@ TEST(PainterWidget, RecordedStrokePaintsAlongThePathAndUndoRestores)
   EXPECT_LT(scene.Mapper->GetLastUploadedSampleCount(), n / 4);
 }
 
-TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
+namespace
 {
-  PaintScene scene;
-  ASSERT_TRUE(scene.Setup());
+/// A short stroke on the bunny: onto (150, 150), press, drag to (160, 152), release; the
+/// colours it left in `painted`.
+void PaintShortStroke(PaintScene& scene, std::vector<unsigned char>& painted)
+{
+  scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
+  ASSERT_EQ(scene.Widget->GetPainterRepresentation()->GetInteractionState(),
+    vtkOFBPainterRepresentation::ON_SURFACE);
+  scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
+  scene.Event(vtkCommand::MouseMoveEvent, 160, 152);
+  scene.Event(vtkCommand::LeftButtonReleaseEvent, 160, 152);
+  painted = CopyColors(scene.OFB);
+}
+
+/// + and - scale the radius, which stays between a quarter of a cell and the OFB's diagonal.
+void CheckRadiusKeys(PaintScene& scene)
+{
   vtkOFBPainterRepresentation* rep = scene.Widget->GetPainterRepresentation();
   vtkOFBBrush* brush = rep->GetBrush();
   const double r0 = brush->GetRadius();
@@ -336,7 +350,13 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   EXPECT_TRUE(std::isfinite(largest) && largest > ofb->GetCellSize() * ofb->GetDimensions()[0])
     << largest;
   brush->SetRadius(r0);
+}
 
+/// [ and ] the strength, f the falloff, t the target, b the blend mode.
+void CheckBrushKeys(PaintScene& scene)
+{
+  vtkOFBPainterRepresentation* rep = scene.Widget->GetPainterRepresentation();
+  vtkOFBBrush* brush = rep->GetBrush();
   brush->SetStrength(0.5);
   scene.Key(']', "bracketright");
   EXPECT_NEAR(brush->GetStrength(), 0.6, 1e-12);
@@ -374,7 +394,12 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   scene.Key('b', "b");
   EXPECT_EQ(brush->GetBlendMode(), vtkOFBBrush::BLEND_ADD);
   brush->SetBlendMode(vtkOFBBrush::BLEND_MIX);
+}
 
+/// m cycles the mirror plane; the cursor shows the reflection.
+void CheckMirrorKeys(PaintScene& scene)
+{
+  vtkOFBPainterRepresentation* rep = scene.Widget->GetPainterRepresentation();
   // Mirror: none, x, y, z, none (one axis at a time).
   vtkOFBPainter* painter = rep->GetPainter();
   ASSERT_NE(painter, nullptr);
@@ -409,7 +434,13 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   scene.Key('m', "m");
   scene.Key('m', "m");
   ASSERT_FALSE(painter->GetMirrorX() || painter->GetMirrorY() || painter->GetMirrorZ());
+}
 
+/// Digits choose a palette colour, c the next one.
+void CheckPaletteKeys(PaintScene& scene)
+{
+  vtkOFBPainterRepresentation* rep = scene.Widget->GetPainterRepresentation();
+  vtkOFBBrush* brush = rep->GetBrush();
   double rgba[4];
   scene.Key('6', "6");
   ASSERT_TRUE(rep->GetPaletteColor(5, rgba));
@@ -437,19 +468,21 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   ASSERT_TRUE(rep->GetPaletteColor(10, rgba));
   EXPECT_DOUBLE_EQ(rgba[0], 1.0); // new entries opaque white
   rep->SetNumberOfPaletteColors(9);
+}
 
+/// Keys left to the style, undo and redo, and no key with the shortcuts off.
+void CheckUndoKeysAndShortcutsOff(PaintScene& scene)
+{
+  vtkOFBPainterRepresentation* rep = scene.Widget->GetPainterRepresentation();
+  vtkOFBBrush* brush = rep->GetBrush();
   const int modifiedBefore = scene.Log.Modified;
   scene.Key('r', "r"); // not a painting key: left to the interactor style
   EXPECT_EQ(scene.Log.Modified, modifiedBefore);
 
   // Undo with Ctrl+Z (X11's control character 26), redo with Shift+U and Ctrl+Y.
   const std::vector<unsigned char> before = CopyColors(scene.OFB);
-  scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
-  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::ON_SURFACE);
-  scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
-  scene.Event(vtkCommand::MouseMoveEvent, 160, 152);
-  scene.Event(vtkCommand::LeftButtonReleaseEvent, 160, 152);
-  const std::vector<unsigned char> painted = CopyColors(scene.OFB);
+  std::vector<unsigned char> painted;
+  ASSERT_NO_FATAL_FAILURE(PaintShortStroke(scene, painted));
   ASSERT_NE(painted, before);
   scene.Key(26, "z", true);
   EXPECT_EQ(CopyColors(scene.OFB), before);
@@ -465,6 +498,18 @@ TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
   const double r1 = brush->GetRadius();
   scene.Key('+', "plus");
   EXPECT_EQ(brush->GetRadius(), r1);
+}
+}
+
+TEST(PainterWidget, KeysChangeTheBrushAndAreTakenFromTheStyle)
+{
+  PaintScene scene;
+  ASSERT_TRUE(scene.Setup());
+  ASSERT_NO_FATAL_FAILURE(CheckRadiusKeys(scene));
+  ASSERT_NO_FATAL_FAILURE(CheckBrushKeys(scene));
+  ASSERT_NO_FATAL_FAILURE(CheckMirrorKeys(scene));
+  ASSERT_NO_FATAL_FAILURE(CheckPaletteKeys(scene));
+  ASSERT_NO_FATAL_FAILURE(CheckUndoKeysAndShortcutsOff(scene));
 }
 
 TEST(PainterWidget, OneKeyReboundThroughTheEventTranslator)
@@ -482,12 +527,8 @@ TEST(PainterWidget, OneKeyReboundThroughTheEventTranslator)
     vtkCommand::CharEvent, vtkEvent::AnyModifier, 'z', 0, nullptr, vtkOFBPainterWidget::UNDO);
 
   const std::vector<unsigned char> before = CopyColors(scene.OFB);
-  scene.Event(vtkCommand::MouseMoveEvent, 150, 150);
-  ASSERT_EQ(rep->GetInteractionState(), vtkOFBPainterRepresentation::ON_SURFACE);
-  scene.Event(vtkCommand::LeftButtonPressEvent, 150, 150);
-  scene.Event(vtkCommand::MouseMoveEvent, 160, 152);
-  scene.Event(vtkCommand::LeftButtonReleaseEvent, 160, 152);
-  const std::vector<unsigned char> painted = CopyColors(scene.OFB);
+  std::vector<unsigned char> painted;
+  ASSERT_NO_FATAL_FAILURE(PaintShortStroke(scene, painted));
   ASSERT_NE(painted, before);
 
   const int modifiedBefore = scene.Log.Modified;

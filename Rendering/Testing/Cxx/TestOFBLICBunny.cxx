@@ -26,11 +26,5 @@ int TestOFBLICBunny(int argc, char* argv[])
   scene.Renderer->ResetCamera();
   scene.Renderer->GetActiveCamera()->Dolly(1.4);
   scene.Renderer->ResetCameraClippingRange();
-  scene.Window->Render();
-  if (!scene.Mapper->GetLastRenderUsedOFB())
-  {
-    std::cerr << "The mapper did not colour from the OFB." << std::endl;
-    return 1;
-  }
-  return vtkofbtest::CompareLICWithBaseline(argc, argv, scene.Window);
+  return vtkofbtest::RenderAndCompare(argc, argv, scene.Window, scene.Mapper, true);
 }

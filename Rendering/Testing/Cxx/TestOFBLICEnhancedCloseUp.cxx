@@ -34,11 +34,5 @@ int TestOFBLICEnhancedCloseUp(int argc, char* argv[])
   camera->SetViewUp(0.0, 1.0, 0.0);
   camera->SetViewAngle(20.0);
   scene.Renderer->ResetCameraClippingRange();
-  scene.Window->Render();
-  if (!scene.Mapper->GetLastRenderUsedOFB())
-  {
-    std::cerr << "The mapper did not colour from the OFB." << std::endl;
-    return 1;
-  }
-  return vtkofbtest::CompareLICWithBaseline(argc, argv, scene.Window);
+  return vtkofbtest::RenderAndCompare(argc, argv, scene.Window, scene.Mapper, true);
 }

@@ -36,12 +36,5 @@ int TestOFBMapperChecker(int argc, char* argv[])
   renderer->GetActiveCamera()->Elevation(20);
   renderer->GetActiveCamera()->Azimuth(30);
   renderer->ResetCamera();
-  renWin->Render();
-  if (!mapper->GetLastRenderUsedOFB())
-  {
-    std::cerr << "The mapper did not colour from the OFB." << std::endl;
-    return 1;
-  }
-
-  return vtkofbtest::CompareWithBaseline(argc, argv, renWin);
+  return vtkofbtest::RenderAndCompare(argc, argv, renWin, mapper);
 }

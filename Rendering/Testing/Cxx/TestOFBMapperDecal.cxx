@@ -92,11 +92,5 @@ int TestOFBMapperDecal(int argc, char* argv[])
   camera->SetFocalPoint(0.0, 0.1, 0.0);
   camera->SetViewUp(0.0, 1.0, 0.0);
   renderer->ResetCamera();
-  renWin->Render();
-  if (!mapper->GetLastRenderUsedOFB())
-  {
-    std::cerr << "The mapper did not colour from the OFB." << std::endl;
-    return 1;
-  }
-  return vtkofbtest::CompareWithBaseline(argc, argv, renWin);
+  return vtkofbtest::RenderAndCompare(argc, argv, renWin, mapper);
 }

@@ -73,11 +73,5 @@ int TestOFBMapperLIC(int argc, char* argv[])
   renderer->GetActiveCamera()->OrthogonalizeViewUp();
   renderer->ResetCamera();
   renderer->GetActiveCamera()->Zoom(1.3);
-  renWin->Render();
-  if (!mapper->GetLastRenderUsedOFB())
-  {
-    std::cerr << "The mapper did not colour from the OFB." << std::endl;
-    return 1;
-  }
-  return vtkofbtest::CompareLICWithBaseline(argc, argv, renWin);
+  return vtkofbtest::RenderAndCompare(argc, argv, renWin, mapper, true);
 }

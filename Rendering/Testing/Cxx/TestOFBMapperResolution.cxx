@@ -82,12 +82,5 @@ int TestOFBMapperResolution(int argc, char* argv[])
   renderer->GetActiveCamera()->Azimuth(35);
   renderer->ResetCamera();
   renderer->GetActiveCamera()->Zoom(3.0);
-  renWin->Render();
-  if (!mapper->GetLastRenderUsedOFB())
-  {
-    std::cerr << "The mapper did not colour from the OFB." << std::endl;
-    return 1;
-  }
-
-  return vtkofbtest::CompareWithBaseline(argc, argv, renWin);
+  return vtkofbtest::RenderAndCompare(argc, argv, renWin, mapper);
 }

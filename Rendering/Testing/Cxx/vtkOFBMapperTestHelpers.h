@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <functional>
+#include <iostream>
 
 namespace vtkofbtest
 {
@@ -129,6 +130,27 @@ inline int CompareLICWithBaseline(int argc, char* argv[], vtkRenderWindow* renWi
     iren->Start();
   }
   return retVal == vtkOFBImageComparison::FAILED ? 1 : 0;
+}
+
+/**
+ * Render `window`, then compare it with the test's baseline (CompareLICWithBaseline where
+ * `lic`, else CompareWithBaseline); 1 (after a message) where `mapper` did not colour from
+ * the OFB.
+ */
+inline int RenderAndCompare(int argc,
+  char* argv[],
+  vtkRenderWindow* window,
+  vtkOFBPolyDataMapper* mapper,
+  bool lic = false)
+{
+  window->Render();
+  if (!mapper->GetLastRenderUsedOFB())
+  {
+    std::cerr << "The mapper did not colour from the OFB." << std::endl;
+    return 1;
+  }
+  return lic ? CompareLICWithBaseline(argc, argv, window)
+             : CompareWithBaseline(argc, argv, window);
 }
 
 /**

@@ -50,12 +50,19 @@ inline GreyImage Grab(vtkRenderWindow* window)
   return out;
 }
 
-/// Standard deviation of the image over the pixels at least `margin` from its sides.
-inline double Contrast(const GreyImage& image, int margin)
+/// Mean and variance of the grey levels over the pixels at least `margin` from the image's
+/// sides (0 and 0 where there are none).
+struct Moments
+{
+  double Mean = 0.0;
+  double Variance = 0.0;
+};
+
+inline Moments MeanAndVariance(const GreyImage& image, int margin)
 {
   double sum = 0.0;
   double sum2 = 0.0;
-  int n = 0;
+  long n = 0;
   for (int j = margin; j < image.Height - margin; ++j)
   {
     for (int i = margin; i < image.Width - margin; ++i)
@@ -65,8 +72,19 @@ inline double Contrast(const GreyImage& image, int margin)
       ++n;
     }
   }
-  const double mean = n ? sum / n : 0.0;
-  return n ? std::sqrt(std::max(0.0, sum2 / n - mean * mean)) : 0.0;
+  Moments m;
+  if (n > 0)
+  {
+    m.Mean = sum / n;
+    m.Variance = sum2 / n - m.Mean * m.Mean;
+  }
+  return m;
+}
+
+/// Standard deviation of the image over the pixels at least `margin` from its sides.
+inline double Contrast(const GreyImage& image, int margin)
+{
+  return std::sqrt(std::max(0.0, MeanAndVariance(image, margin).Variance));
 }
 
 /// The integral scale in pixel steps along the direction (di, dj) (a unit step: an axis
@@ -75,20 +93,9 @@ inline double Contrast(const GreyImage& image, int margin)
 /// direction, about the grain's width across them, about 1 for uncorrelated noise.
 inline double CorrelationLength(const GreyImage& image, int di, int dj, int maxLag, int margin)
 {
-  double sum = 0.0;
-  double sum2 = 0.0;
-  int n = 0;
-  for (int j = margin; j < image.Height - margin; ++j)
-  {
-    for (int i = margin; i < image.Width - margin; ++i)
-    {
-      sum += image.At(i, j);
-      sum2 += image.At(i, j) * image.At(i, j);
-      ++n;
-    }
-  }
-  const double mean = sum / std::max(n, 1);
-  const double variance = sum2 / std::max(n, 1) - mean * mean;
+  const Moments moments = MeanAndVariance(image, margin);
+  const double mean = moments.Mean;
+  const double variance = moments.Variance;
   if (!(variance > 1.0e-12))
   {
     return 0.0;
@@ -182,20 +189,9 @@ inline double Roughness(const GreyImage& image, double dx, double dy, int maxLag
 /// pixels at least `margin` from the sides.
 inline double Autocorrelation(const GreyImage& image, int di, int dj, int lag, int margin)
 {
-  double sum = 0.0;
-  double sum2 = 0.0;
-  long n = 0;
-  for (int j = margin; j < image.Height - margin; ++j)
-  {
-    for (int i = margin; i < image.Width - margin; ++i)
-    {
-      sum += image.At(i, j);
-      sum2 += image.At(i, j) * image.At(i, j);
-      ++n;
-    }
-  }
-  const double mean = sum / std::max(n, 1L);
-  const double variance = sum2 / std::max(n, 1L) - mean * mean;
+  const Moments moments = MeanAndVariance(image, margin);
+  const double mean = moments.Mean;
+  const double variance = moments.Variance;
   const int reach = margin + lag * std::max(std::abs(di), std::abs(dj));
   double c = 0.0;
   long m = 0;

@@ -3,6 +3,7 @@
 #ifndef vtkOFBIOTestHelpers_h
 #define vtkOFBIOTestHelpers_h
 
+#include "vtkOFBTempDirectory.h"
 #include "vtkOFBTestUtilities.h"
 
 #include "vtkDoubleArray.h"
@@ -13,7 +14,6 @@
 #include "vtkPointData.h"
 #include "vtkTypeUInt32Array.h"
 
-#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <gtest/gtest.h>
@@ -25,56 +25,9 @@
 #include <string>
 #include <vector>
 
-#if defined(_WIN32)
-#include <process.h>
-#define getpid _getpid
-#else
-#include <unistd.h>
-#endif
-
 namespace vtkofbtest
 {
 using Bytes = std::vector<unsigned char>;
-
-/// A fresh directory for one test, removed at the end of the test.
-class TempDirectory
-{
-public:
-  TempDirectory()
-  {
-    static int counter = 0;
-    std::string base = testing::TempDir();
-    if (base.empty())
-    {
-      base = "/tmp/";
-    }
-    if (base.back() != '/')
-    {
-      base += '/';
-    }
-    this->Path = base + "vtkofb-io-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
-    vtksys::SystemTools::RemoveADirectory(this->Path);
-    vtksys::SystemTools::MakeDirectory(this->Path);
-  }
-  ~TempDirectory() { vtksys::SystemTools::RemoveADirectory(this->Path); }
-  std::string File(const std::string& name) const { return this->Path + "/" + name; }
-  std::vector<std::string> List() const
-  {
-    std::vector<std::string> names;
-    vtksys::Directory dir;
-    dir.Load(this->Path);
-    for (unsigned long i = 0; i < dir.GetNumberOfFiles(); ++i)
-    {
-      const std::string name = dir.GetFile(i);
-      if (name != "." && name != "..")
-      {
-        names.push_back(name);
-      }
-    }
-    return names;
-  }
-  std::string Path;
-};
 
 inline Bytes Load(const std::string& path)
 {

@@ -59,6 +59,23 @@ vtkSmartPointer<vtkPolyData> SheetsFacingTheSameWay()
   vtkSmartPointer<vtkPolyData> out = sheets->GetOutput();
   return out;
 }
+
+/// A copy of `base` with one red dab of radius `r` at `c` (linear falloff; with
+/// `normalAware`, samples whose normal is over 60 degrees from the dab's are left).
+vtkSmartPointer<vtkOFB> DabRed(vtkOFB* base, double r, const double c[3], bool normalAware)
+{
+  auto ofb = vtkSmartPointer<vtkOFB>::New();
+  ofb->DeepCopy(base);
+  vtkNew<vtkOFBPainter> painter;
+  painter->SetOFB(ofb);
+  painter->GetBrush()->SetRadius(r);
+  painter->GetBrush()->SetColor(1, 0, 0);
+  painter->GetBrush()->SetFalloffToLinear();
+  painter->GetBrush()->SetNormalAware(normalAware);
+  painter->GetBrush()->SetMaxNormalAngle(60.0);
+  painter->Dab(c);
+  return ofb;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -72,16 +89,7 @@ TEST(Painter, NormalAwareLimitsLeakageThroughAThinWall)
   double share[2];
   for (int aware = 0; aware < 2; ++aware)
   {
-    vtkNew<vtkOFB> ofb;
-    ofb->DeepCopy(base);
-    vtkNew<vtkOFBPainter> painter;
-    painter->SetOFB(ofb);
-    painter->GetBrush()->SetRadius(r);
-    painter->GetBrush()->SetColor(1, 0, 0);
-    painter->GetBrush()->SetFalloffToLinear();
-    painter->GetBrush()->SetNormalAware(aware == 1);
-    painter->GetBrush()->SetMaxNormalAngle(60.0);
-    painter->Dab(c);
+    vtkSmartPointer<vtkOFB> ofb = DabRed(base, r, c, aware == 1);
     vtkIdType far = 0, farPainted = 0, near = 0, nearPainted = 0;
     for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
     {
@@ -127,16 +135,7 @@ TEST(Painter, NormalAwareCannotSeparateSheetsFacingTheSameWay)
   const double c[3] = { 0.1, 0.05, 0.0 };
   for (int aware = 0; aware < 2; ++aware)
   {
-    vtkNew<vtkOFB> ofb;
-    ofb->DeepCopy(base);
-    vtkNew<vtkOFBPainter> painter;
-    painter->SetOFB(ofb);
-    painter->GetBrush()->SetRadius(r);
-    painter->GetBrush()->SetColor(1, 0, 0);
-    painter->GetBrush()->SetFalloffToLinear();
-    painter->GetBrush()->SetNormalAware(aware == 1);
-    painter->GetBrush()->SetMaxNormalAngle(60.0);
-    painter->Dab(c);
+    vtkSmartPointer<vtkOFB> ofb = DabRed(base, r, c, aware == 1);
     vtkIdType far = 0, farPainted = 0;
     for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
     {

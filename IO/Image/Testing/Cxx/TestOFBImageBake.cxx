@@ -25,16 +25,8 @@ namespace
 /// multiples of 1/255): sin(37 x) * 1000 + y / 3 at each sample.
 void AddFineArray(vtkOFB* ofb, const char* name)
 {
-  vtkNew<vtkFloatArray> values;
-  values->SetName(name);
-  values->SetNumberOfValues(ofb->GetNumberOfSamples());
-  for (vtkIdType i = 0; i < ofb->GetNumberOfSamples(); ++i)
-  {
-    double x[3];
-    ofb->GetSamplePosition(i, x);
-    values->SetValue(i, static_cast<float>(std::sin(37.0 * x[0]) * 1000.0 + x[1] / 3.0));
-  }
-  ofb->GetSampleData()->AddArray(values);
+  AddSampleArray(
+    ofb, name, [](const double x[3]) { return std::sin(37.0 * x[0]) * 1000.0 + x[1] / 3.0; });
 }
 }
 

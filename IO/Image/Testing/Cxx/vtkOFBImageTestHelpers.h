@@ -3,6 +3,7 @@
 #ifndef vtkOFBImageTestHelpers_h
 #define vtkOFBImageTestHelpers_h
 
+#include "vtkOFBTempDirectory.h"
 #include "vtkOFBTestUtilities.h"
 
 #include "vtkDataArray.h"
@@ -16,34 +17,17 @@
 #include <gtest/gtest.h>
 
 #include <string>
-#include <unistd.h>
 
 namespace vtkofbtest
 {
-/// A fresh directory for one test, removed at the end of the test.
-class ImageDirectory
+/// A fresh directory for one image test, removed at the end of the test.
+class ImageDirectory : public TempDirectory
 {
 public:
   ImageDirectory()
+    : TempDirectory("vtkofb-image-")
   {
-    static int counter = 0;
-    std::string base = testing::TempDir();
-    if (base.empty())
-    {
-      base = "/tmp/";
-    }
-    if (base.back() != '/')
-    {
-      base += '/';
-    }
-    this->Path =
-      base + "vtkofb-image-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
-    vtksys::SystemTools::RemoveADirectory(this->Path);
-    vtksys::SystemTools::MakeDirectory(this->Path);
   }
-  ~ImageDirectory() { vtksys::SystemTools::RemoveADirectory(this->Path); }
-  std::string File(const std::string& name) const { return this->Path + "/" + name; }
-  std::string Path;
 };
 
 /// A w x h image of `type` scalars with `nc` components, texel (i, j) component c set by

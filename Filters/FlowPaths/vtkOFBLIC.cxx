@@ -257,7 +257,9 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
     floatVectors ? floatVectors->GetPointer(0) : nullptr,
     vectors,
     this->MaskThreshold,
-    this->MaskOnSurface != 0 };
+    this->MaskOnSurface != 0,
+    input->GetOrigin(),
+    1.0 / input->GetCellSize() };
   vtkSMPThreadLocal<double> localMax(0.0);
   vtkSMPThreadLocal<vtkIdType> localMasked(0);
   // Position, normal, grid and tile, the tangential part of the field, the mask, and the
@@ -388,6 +390,8 @@ bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
   s.ImpulseBackground = this->ImpulseNoiseBackgroundValue;
   s.Seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->NoiseGeneratorSeed));
   const vtkOFBLICNoise generator(s);
+  vtkOFBLICTracer frame;
+  frame.SetOFB(input);
   vtkSMPTools::For(0,
     n,
     4096,
@@ -395,7 +399,7 @@ bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        noise[i] = generator.Evaluate(vtkOFBLICTracer::Vec(samples[i].Position));
+        noise[i] = generator.Evaluate(frame.World(samples[i].Position));
       }
     });
   return true;
@@ -553,11 +557,11 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   tracer.SetOFB(input);
   tracer.Samples = cache.Samples.data();
   tracer.NumberOfSteps = this->NumberOfSteps;
-  tracer.Step = this->StepSize * input->GetCellSize();
+  tracer.Step = static_cast<float>(this->StepSize);
   tracer.SearchRadius = std::sqrt(3.0) * input->GetCellSize();
   tracer.FieldRadius =
     this->FieldInterpolation == FIELD_INVERSE_DISTANCE ? 1.5 * input->GetCellSize() : 0.0;
-  tracer.ReuseDistance = this->StreamlineReuseDistance * input->GetCellSize();
+  tracer.ReuseDistance = static_cast<float>(this->StreamlineReuseDistance);
   const std::vector<double> weights = this->ComputeKernel(this->NumberOfSteps);
   // The kept streamlines, traced during the first pass when they are not valid.
   vtkOFBLICCacheKey linesKey = cache.SamplesKey;

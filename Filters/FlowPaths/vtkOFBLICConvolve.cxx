@@ -384,7 +384,7 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
   const std::size_t start = store.size();
   // A window of a streamline that passes a sample farther aside than ReuseDistance reads
   // other samples than the sample's own streamline (dashes, seams at the tile planes).
-  const double reach2 = tracer.ReuseDistance * tracer.ReuseDistance;
+  const float reach2 = tracer.ReuseDistance * tracer.ReuseDistance;
   // Per step of the run: whether it passed a sample it can give a window to (forward
   // steps, backward steps, then the run in its order).
   std::vector<unsigned char> nearBuffer(4 * m + 4);
@@ -441,16 +441,16 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
         i,
         m,
         std::max(n, 1),
-        [&](vtkIdType k, const glm::dvec3& p, int dir, int step)
+        [&](vtkIdType k, const glm::vec3& p, int dir, int step)
         {
           const vtkOFBLICSample& sk = samples[k];
           bool useful = sk.Tile() == tile && !covered[k];
           if (useful)
           {
-            const glm::dvec3 d = p - vtkOFBLICTracer::Vec(sk.Position);
-            const glm::dvec3 f = vtkOFBLICTracer::Vec(sk.Field);
-            const double ff = glm::dot(f, f);
-            const double along = glm::dot(d, f);
+            const glm::vec3 d = p - vtkOFBLICTracer::Vec3(sk.Position);
+            const glm::vec3 f = vtkOFBLICTracer::Vec3(sk.Field);
+            const float ff = glm::dot(f, f);
+            const float along = glm::dot(d, f);
             useful = glm::dot(d, d) * ff - along * along < reach2 * ff;
           }
           (dir > 0 ? nearAhead : nearBack)[step] = useful;

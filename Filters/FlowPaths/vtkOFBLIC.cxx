@@ -257,7 +257,9 @@ vtkIdType vtkOFBLIC::PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDat
     floatVectors ? floatVectors->GetPointer(0) : nullptr,
     vectors,
     this->MaskThreshold,
-    this->MaskOnSurface != 0 };
+    this->MaskOnSurface != 0,
+    input->GetOrigin(),
+    1.0 / input->GetCellSize() };
   vtkSMPThreadLocal<double> localMax(0.0);
   vtkSMPThreadLocal<vtkIdType> localMasked(0);
   // Position, normal, grid and tile, the tangential part of the field, the mask, and the
@@ -388,6 +390,8 @@ bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
   s.ImpulseBackground = this->ImpulseNoiseBackgroundValue;
   s.Seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(this->NoiseGeneratorSeed));
   const vtkOFBLICNoise generator(s);
+  vtkOFBLICTracer frame;
+  frame.SetOFB(input);
   vtkSMPTools::For(0,
     n,
     4096,
@@ -395,7 +399,7 @@ bool vtkOFBLIC::PrepareNoise(vtkOFB* input)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        noise[i] = generator.Evaluate(vtkOFBLICTracer::Vec(samples[i].Position));
+        noise[i] = generator.Evaluate(frame.World(samples[i].Position));
       }
     });
   return true;
@@ -522,42 +526,69 @@ int vtkOFBLIC::RequestData(vtkInformation*,
     this->WriteOutput(input, output, nullptr, nullptr, 0);
     return 1;
   }
-  vtkDataArray* vectors = this->FindField(input);
-  vtkDataArray* normalsIn = input->GetSampleData()->GetNormals();
-  if (!normalsIn)
-  {
-    normalsIn = input->GetSampleData()->GetArray(vtkOFB::NormalsArrayName());
-  }
-  if (!vectors)
-  {
-    output->Initialize();
-    return 1;
-  }
-  if (!normalsIn || normalsIn->GetNumberOfComponents() != 3)
-  {
-    vtkErrorMacro("The input OFB has no 3-component \"Normals\" sample array.");
-    output->Initialize();
-    return 1;
-  }
-
-  if (!this->Prepare(input, vectors, normalsIn))
+  vtkDataArray* normals = nullptr;
+  vtkDataArray* vectors = this->FindFieldAndNormals(input, normals);
+  if (!vectors || !this->Prepare(input, vectors, normals))
   {
     output->Initialize();
     return 1;
   }
   this->UpdateProgress(0.05);
-
-  // Convolve (Eq. 4), then the enhanced pass and the contrast stretch.
+  if (!this->ComputeLIC(input))
+  {
+    output->Initialize();
+    return 1;
+  }
   vtkOFBLICCache& cache = this->Internals->Cache;
-  vtkOFBLICTracer tracer;
+  this->WriteOutput(input, output, cache.Values.data(), cache.Mask.data(), n);
+  this->UpdateProgress(1.0);
+  timer->StopTimer();
+  this->LastExecutionTime = 1000.0 * timer->GetElapsedTime();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkOFBLIC::FindFieldAndNormals(vtkOFB* input, vtkDataArray*& normals)
+{
+  vtkDataArray* vectors = this->FindField(input);
+  normals = input->GetSampleData()->GetNormals();
+  if (!normals)
+  {
+    normals = input->GetSampleData()->GetArray(vtkOFB::NormalsArrayName());
+  }
+  if (!vectors)
+  {
+    return nullptr;
+  }
+  if (!normals || normals->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro("The input OFB has no 3-component \"Normals\" sample array.");
+    return nullptr;
+  }
+  return vectors;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::SetUpTracer(vtkOFB* input, vtkOFBLICTracer& tracer)
+{
   tracer.SetOFB(input);
-  tracer.Samples = cache.Samples.data();
+  tracer.Samples = this->Internals->Cache.Samples.data();
   tracer.NumberOfSteps = this->NumberOfSteps;
-  tracer.Step = this->StepSize * input->GetCellSize();
+  tracer.Step = static_cast<float>(this->StepSize);
   tracer.SearchRadius = std::sqrt(3.0) * input->GetCellSize();
   tracer.FieldRadius =
     this->FieldInterpolation == FIELD_INVERSE_DISTANCE ? 1.5 * input->GetCellSize() : 0.0;
-  tracer.ReuseDistance = this->StreamlineReuseDistance * input->GetCellSize();
+  tracer.ReuseDistance = static_cast<float>(this->StreamlineReuseDistance);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBLIC::ComputeLIC(vtkOFB* input)
+{
+  // Convolve (Eq. 4), then the enhanced pass and the contrast stretch.
+  const vtkIdType n = input->GetNumberOfSamples();
+  vtkOFBLICCache& cache = this->Internals->Cache;
+  vtkOFBLICTracer tracer;
+  this->SetUpTracer(input, tracer);
   const std::vector<double> weights = this->ComputeKernel(this->NumberOfSteps);
   // The kept streamlines, traced during the first pass when they are not valid.
   vtkOFBLICCacheKey linesKey = cache.SamplesKey;
@@ -629,8 +660,7 @@ int vtkOFBLIC::RequestData(vtkInformation*,
         0.05,
         enhanced ? 0.5 : 0.95))
   {
-    output->Initialize();
-    return 1;
+    return false;
   }
   if (keep)
   {
@@ -640,38 +670,9 @@ int vtkOFBLIC::RequestData(vtkInformation*,
   {
     cache.MomentsKey = momentsKey;
   }
-  if (enhanced)
+  if (enhanced && !this->ComputeEnhancedPass(input, tracer, keep, secondSteps))
   {
-    vtkOFBLICHighPass(input, cache, this->Reduction);
-    vtkOFBLICBuffer<float>& pass1 = cache.Scratch;
-    pass1.swap(values);
-    values.resize(n);
-    // Half the steps each way, as VTK's second pass (its input is smooth along the flow).
-    vtkOFBLICTracer second = tracer;
-    second.NumberOfSteps = secondSteps;
-    const std::vector<double> weights2 = this->ComputeKernel(second.NumberOfSteps);
-    if (!this->Internals->Convolve(this,
-          second,
-          keep,
-          false,
-          true,
-          0,
-          weights2,
-          nullptr,
-          false,
-          pass1.data(),
-          values.data(),
-          0.5,
-          0.95))
-    {
-      output->Initialize();
-      return 1;
-    }
-    // The second pass stretched to the full range as the first (its quantiles
-    // vtkOFBLICFinalStretchTail and 1 - vtkOFBLICFinalStretchTail to 0 and 1): a LIC
-    // averages its input, so without this it would span about half of [0, 1].
-    vtkOFBLICStretchTails(
-      values.data(), n, cache.Mask.data(), vtkOFBLICFinalStretchTail, this->Reduction);
+    return false;
   }
   if (this->EnhanceContrast == ENHANCE_CONTRAST_LIC ||
     this->EnhanceContrast == ENHANCE_CONTRAST_BOTH)
@@ -684,11 +685,48 @@ int vtkOFBLIC::RequestData(vtkInformation*,
       this->Reduction);
   }
 
-  this->WriteOutput(input, output, values.data(), cache.Mask.data(), n);
-  this->UpdateProgress(1.0);
-  timer->StopTimer();
-  this->LastExecutionTime = 1000.0 * timer->GetElapsedTime();
-  return 1;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBLIC::ComputeEnhancedPass(vtkOFB* input,
+  const vtkOFBLICTracer& tracer,
+  bool keep,
+  int secondSteps)
+{
+  const vtkIdType n = input->GetNumberOfSamples();
+  vtkOFBLICCache& cache = this->Internals->Cache;
+  vtkOFBLICBuffer<float>& values = cache.Values;
+  vtkOFBLICHighPass(input, cache, this->Reduction);
+  vtkOFBLICBuffer<float>& pass1 = cache.Scratch;
+  pass1.swap(values);
+  values.resize(n);
+  // Half the steps each way, as VTK's second pass (its input is smooth along the flow).
+  vtkOFBLICTracer second = tracer;
+  second.NumberOfSteps = secondSteps;
+  const std::vector<double> weights2 = this->ComputeKernel(second.NumberOfSteps);
+  if (!this->Internals->Convolve(this,
+        second,
+        keep,
+        false,
+        true,
+        0,
+        weights2,
+        nullptr,
+        false,
+        pass1.data(),
+        values.data(),
+        0.5,
+        0.95))
+  {
+    return false;
+  }
+  // The second pass stretched to the full range as the first (its quantiles
+  // vtkOFBLICFinalStretchTail and 1 - vtkOFBLICFinalStretchTail to 0 and 1): a LIC
+  // averages its input, so without this it would span about half of [0, 1].
+  vtkOFBLICStretchTails(
+    values.data(), n, cache.Mask.data(), vtkOFBLICFinalStretchTail, this->Reduction);
+  return true;
 }
 
 //------------------------------------------------------------------------------

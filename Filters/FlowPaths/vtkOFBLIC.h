@@ -98,6 +98,7 @@
 
 class vtkDataArray;
 class vtkOFBLICReduction;
+class vtkOFBLICTracer;
 
 class VTKOFBFLOWPATHS_EXPORT vtkOFBLIC : public vtkOFBAlgorithm
 {
@@ -402,6 +403,30 @@ protected:
   /// The field array chosen with SetInputArrayToProcess (error and null if bad).
   vtkDataArray* FindField(vtkOFB* input);
 
+  /// FindField, and the sample normals into `normals`: null, with an error, if either
+  /// is missing or bad.
+  vtkDataArray* FindFieldAndNormals(vtkOFB* input, vtkDataArray*& normals);
+
+  /// The tracer of this filter's settings over the prepared samples of `input`.
+  void SetUpTracer(vtkOFB* input, vtkOFBLICTracer& tracer);
+
+  /**
+   * The LIC of the prepared cache into its Values: the first pass (Eq. 4, tracing or
+   * re-convolving the kept streamlines), then ComputeEnhancedPass and the contrast
+   * stretch. False when aborted.
+   */
+  bool ComputeLIC(vtkOFB* input);
+
+  /**
+   * EnhancedLIC's second pass over the first pass in the cache's Values: high-pass,
+   * convolution with `secondSteps` steps each way along the kept streamlines (`keep`)
+   * or traced ones, stretch to the full range. False when aborted.
+   */
+  bool ComputeEnhancedPass(vtkOFB* input,
+    const vtkOFBLICTracer& tracer,
+    bool keep,
+    int secondSteps);
+
   /**
    * The packed samples, mask and noise in the cache, computed again only where what
    * they depend on changed. False on error.
@@ -409,9 +434,9 @@ protected:
   bool Prepare(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normals);
 
   /**
-   * The packed samples (position, unit normal, tangential field scaled to the step,
-   * grid and mask flags) and the mask, into the cache. Returns the number of masked
-   * samples.
+   * The packed samples (position in cells from the origin, unit normal, tangential
+   * field, grid and mask flags) and the mask, into the cache. Returns the number of
+   * masked samples.
    */
   vtkIdType PrepareSamples(vtkOFB* input, vtkDataArray* vectors, vtkDataArray* normals);
 

@@ -135,6 +135,26 @@ vtkIdType CompactRuns(const vtkOFBLICTiles& tiles,
     });
   return out;
 }
+/**
+ * The input values of a tile's `length` run ids copied in the runs' order into `values`
+ * (0 at the -1 between runs), so that each window is read contiguously: for runs traced
+ * just now (their ids were just written, the values not yet read). Kept runs (a second
+ * pass, a re-convolution) are read through the ids instead: the tile's input stays in
+ * the cache, and a copy would read and write every id of the runs, most of them more
+ * than once.
+ */
+const float* CopyRunValues(const vtkTypeInt32* runs,
+  vtkIdType length,
+  const float* input,
+  std::vector<float>& values)
+{
+  values.resize(std::max<std::size_t>(values.size(), length));
+  for (vtkIdType k = 0; k < length; ++k)
+  {
+    values[k] = runs[k] >= 0 ? input[runs[k]] : 0.0f;
+  }
+  return values.data();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -162,25 +182,7 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
   vtkOFBLICMoments* moments = parts ? cache.Moments.data() : nullptr;
   if (recombine)
   {
-    // Another phase: the kept moments combined in the order of the samples, no run read.
-    const vtkIdType n = static_cast<vtkIdType>(cache.Mask.size());
-    const unsigned char* masked = cache.Mask.data();
-    vtkSMPTools::For(0,
-      n,
-      1 << 16,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          output[i] = masked[i] ? input[i] : parts->Combine(moments[i], input[i]);
-        }
-      });
-    if (self->GetAbortExecute())
-    {
-      return false;
-    }
-    self->UpdateProgress(progress1);
-    return true;
+    return this->Recombine(self, *parts, input, output, progress1);
   }
   const unsigned char* mask = cache.Mask.data();
   const int steps = tracer.NumberOfSteps;
@@ -200,19 +202,21 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
   std::mutex storesMutex;
   if (fast)
   {
-    cache.Covered.resize(cache.Mask.size());
-    cache.Where.resize(cache.Mask.size());
-    cache.TileRuns.assign(numberOfTiles, nullptr);
-    cache.TileRunLengths.assign(numberOfTiles, 0);
+    this->ResetRuns(numberOfTiles, freeStores);
     tileStart.assign(numberOfTiles, { nullptr, 0 });
-    for (auto& store : cache.Runs)
-    {
-      store->Ids.resize(0);
-      freeStores.push_back(store.get());
-    }
   }
-  unsigned char* covered = cache.Covered.data();
-  vtkTypeInt32* where = cache.Where.data();
+  const vtkOFBLICPass pass = { &tracer,
+    &tiles,
+    keep,
+    parts,
+    moments,
+    w,
+    inverseTotal,
+    steps,
+    mask,
+    cache.Where.data(),
+    input,
+    output };
   vtkSMPThreadLocal<vtkOFBLICRunStore*> localStore(nullptr);
   vtkSMPThreadLocal<std::vector<vtkTypeInt32>> localLine;
   vtkSMPThreadLocal<std::vector<float>> localValues; // a tile's run values
@@ -232,114 +236,24 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
       vtkOFBLICRunStore*& store = localStore.Local();
       if (fast && !store)
       {
-        std::lock_guard<std::mutex> lock(storesMutex);
-        if (freeStores.empty())
-        {
-          // Room for the runs of all samples at NumberOfSteps + 8 ids a sample (the
-          // horse and the bunny need about 1.05 NumberOfSteps + 1): mapped, not
-          // touched, so growing never copies in practice and only the pages used are
-          // faulted in.
-          cache.Runs.emplace_back(new vtkOFBLICRunStore);
-          cache.Runs.back()->Ids.reserve((steps + 8) * cache.Mask.size() + 4096);
-          freeStores.push_back(cache.Runs.back().get());
-        }
-        store = freeStores.back();
-        freeStores.pop_back();
+        store = this->TakeStore(freeStores, storesMutex, steps);
       }
       for (vtkIdType t = begin; t < end && !progress.Aborted(); ++t)
       {
         const vtkTypeInt32* runs = keep ? cache.TileRuns[t] : nullptr;
         if (fast && tiles.First[t] < tiles.First[t + 1])
         {
-          if (!keepRuns)
-          {
-            // The tile's runs are read right away and then dropped: the store is this
-            // thread's scratch, the same pages (in the cache) for every tile.
-            store->Ids.resize(0);
-          }
-          const std::size_t start = store->size();
-          this->TraceTile(tracer, tiles, t, *store, covered, where, local.data());
-          tileStart[t] = { store, start };
-          cache.TileRunLengths[t] = static_cast<vtkIdType>(store->size() - start);
-          runs = store->Ids.data() + start;
+          runs = this->TraceTileRuns(tracer, tiles, t, *store, keepRuns, local, tileStart[t]);
         }
-        // The tile's input values first (tracing did not touch them); with kept runs,
-        // copied in the runs' order so that each window is read contiguously.
+        // The tile's input values first (tracing did not touch them).
         tiles.ForEachSample(t, [&](vtkIdType i) { VTKOFB_PREFETCH(input + i); });
-        std::vector<float>& values = localValues.Local();
         const vtkIdType length = runs ? cache.TileRunLengths[t] : 0;
-        // Runs traced just now are copied (their ids were just written, the values not
-        // yet read); kept runs (a second pass, a re-convolution) are read through the ids
-        // (the tile's input stays in the cache; a copy would read and write every id of
-        // the runs, most of them more than once).
-        const bool copy = runs && trace;
-        if (copy)
-        {
-          values.resize(std::max<std::size_t>(values.size(), length));
-          for (vtkIdType k = 0; k < length; ++k)
-          {
-            values[k] = runs[k] >= 0 ? input[runs[k]] : 0.0f;
-          }
-        }
-        tiles.ForEachSample(t,
-          [&](vtkIdType i)
-          {
-            if (mask[i])
-            {
-              output[i] = input[i];
-            }
-            else if (parts)
-            {
-              const vtkIdType at = where[i];
-              if (copy)
-              {
-                parts->Gather(runs + at, values.data() + at, moments[i]);
-              }
-              else
-              {
-                parts->Gather(
-                  runs + at, vtkOFBLICTracer::ThroughIds{ runs + at, input }, moments[i]);
-              }
-              output[i] = parts->Combine(moments[i], input[i]);
-            }
-            else if (keep && !copy)
-            {
-              const vtkIdType at = where[i];
-              const bool inside = at >= steps && at + steps < length;
-              const vtkOFBLICTracer::ThroughIds v{ runs + at, input };
-              if (!inside ||
-                !vtkOFBLICTracer::GatherWhole(runs + at, v, steps, w, inverseTotal, output[i]))
-              {
-                output[i] = vtkOFBLICTracer::GatherRun(runs + at, v, steps, w, inverseTotal);
-              }
-            }
-            else if (keep)
-            {
-              const vtkIdType at = where[i];
-              const bool inside = at >= steps && at + steps < length;
-              const float* v = values.data() + at;
-              if (!inside ||
-                !vtkOFBLICTracer::GatherWhole(runs + at, v, steps, w, inverseTotal, output[i]))
-              {
-                output[i] = vtkOFBLICTracer::GatherRun(runs + at, v, steps, w, inverseTotal);
-              }
-            }
-            else
-            {
-              tracer.Trace(i, local.data());
-              output[i] = vtkOFBLICTracer::Gather(i, local.data(), steps, w, inverseTotal, input);
-            }
-          });
+        const float* values =
+          runs && trace ? CopyRunValues(runs, length, input, localValues.Local()) : nullptr;
+        this->GatherTile(pass, t, runs, length, values, local.data());
         if (compact && runs)
         {
-          // The runs' ids that no window of keepSteps steps reads are dropped, in place:
-          // the tile's next runs go right after (fewer pages touched), and a later pass
-          // reads fewer ids.
-          vtkTypeInt32* ids = store->Ids.data() + tileStart[t].second;
-          const vtkIdType kept =
-            CompactRuns(tiles, t, mask, keepSteps, ids, length, where, localPlaces.Local());
-          cache.TileRunLengths[t] = kept;
-          store->Ids.resize(tileStart[t].second + kept);
+          this->CompactTileRuns(tiles, t, keepSteps, length, tileStart[t], localPlaces.Local());
         }
         progress.TileDone();
       }
@@ -349,23 +263,202 @@ bool vtkOFBLIC::vtkInternals::Convolve(vtkOFBLIC* self,
     return false;
   }
   self->UpdateProgress(progress1);
-  if (fast && !keepRuns)
+  if (fast)
+  {
+    this->KeepRuns(keepRuns, compact ? keepSteps : steps, tileStart);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+const vtkTypeInt32* vtkOFBLIC::vtkInternals::TraceTileRuns(const vtkOFBLICTracer& tracer,
+  const vtkOFBLICTiles& tiles,
+  vtkIdType t,
+  vtkOFBLICRunStore& store,
+  bool keepRuns,
+  std::vector<vtkTypeInt32>& line,
+  std::pair<vtkOFBLICRunStore*, std::size_t>& start)
+{
+  if (!keepRuns)
+  {
+    // The tile's runs are read right away and then dropped: the store is this thread's
+    // scratch, the same pages (in the cache) for every tile.
+    store.Ids.resize(0);
+  }
+  start = { &store, store.size() };
+  this->TraceTile(
+    tracer, tiles, t, store, this->Cache.Covered.data(), this->Cache.Where.data(), line.data());
+  this->Cache.TileRunLengths[t] = static_cast<vtkIdType>(store.size() - start.second);
+  return store.Ids.data() + start.second;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::vtkInternals::CompactTileRuns(const vtkOFBLICTiles& tiles,
+  vtkIdType t,
+  int keepSteps,
+  vtkIdType length,
+  const std::pair<vtkOFBLICRunStore*, std::size_t>& start,
+  std::vector<vtkTypeInt32>& places)
+{
+  // The runs' ids that no window of keepSteps steps reads are dropped, in place: the
+  // tile's next runs go right after (fewer pages touched), and a later pass reads fewer
+  // ids.
+  vtkOFBLICCache& cache = this->Cache;
+  vtkOFBLICRunStore& store = *start.first;
+  vtkTypeInt32* ids = store.Ids.data() + start.second;
+  const vtkIdType kept =
+    CompactRuns(tiles, t, cache.Mask.data(), keepSteps, ids, length, cache.Where.data(), places);
+  cache.TileRunLengths[t] = kept;
+  store.Ids.resize(start.second + kept);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBLIC::vtkInternals::Recombine(vtkOFBLIC* self,
+  const vtkOFBLICKernelParts& parts,
+  const float* input,
+  float* output,
+  double progress1)
+{
+  // Another phase: the kept moments combined in the order of the samples, no run read.
+  const vtkOFBLICCache& cache = this->Cache;
+  const vtkIdType n = static_cast<vtkIdType>(cache.Mask.size());
+  const unsigned char* masked = cache.Mask.data();
+  const vtkOFBLICMoments* moments = cache.Moments.data();
+  vtkSMPTools::For(0,
+    n,
+    1 << 16,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        output[i] = masked[i] ? input[i] : parts.Combine(moments[i], input[i]);
+      }
+    });
+  if (self->GetAbortExecute())
+  {
+    return false;
+  }
+  self->UpdateProgress(progress1);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::vtkInternals::ResetRuns(vtkIdType numberOfTiles,
+  std::vector<vtkOFBLICRunStore*>& freeStores)
+{
+  vtkOFBLICCache& cache = this->Cache;
+  cache.Covered.resize(cache.Mask.size());
+  cache.Where.resize(cache.Mask.size());
+  cache.TileRuns.assign(numberOfTiles, nullptr);
+  cache.TileRunLengths.assign(numberOfTiles, 0);
+  for (auto& store : cache.Runs)
+  {
+    store->Ids.resize(0);
+    freeStores.push_back(store.get());
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkOFBLICRunStore* vtkOFBLIC::vtkInternals::TakeStore(std::vector<vtkOFBLICRunStore*>& freeStores,
+  std::mutex& storesMutex,
+  int steps)
+{
+  vtkOFBLICCache& cache = this->Cache;
+  std::lock_guard<std::mutex> lock(storesMutex);
+  if (freeStores.empty())
+  {
+    // Room for the runs of all samples at NumberOfSteps + 8 ids a sample (the horse and
+    // the bunny need about 1.05 NumberOfSteps + 1): mapped, not touched, so growing
+    // never copies in practice and only the pages used are faulted in.
+    cache.Runs.emplace_back(new vtkOFBLICRunStore);
+    cache.Runs.back()->Ids.reserve((steps + 8) * cache.Mask.size() + 4096);
+    freeStores.push_back(cache.Runs.back().get());
+  }
+  vtkOFBLICRunStore* store = freeStores.back();
+  freeStores.pop_back();
+  return store;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::vtkInternals::GatherTile(const vtkOFBLICPass& pass,
+  vtkIdType t,
+  const vtkTypeInt32* runs,
+  vtkIdType length,
+  const float* values,
+  vtkTypeInt32* line)
+{
+  const int steps = pass.Steps;
+  const double* w = pass.Weights;
+  const double inverseTotal = pass.InverseTotal;
+  const float* input = pass.Input;
+  float* output = pass.Output;
+  pass.Tiles->ForEachSample(t,
+    [&](vtkIdType i)
+    {
+      if (pass.Mask[i])
+      {
+        output[i] = input[i];
+        return;
+      }
+      if (!pass.Keep)
+      {
+        pass.Tracer->Trace(i, line);
+        output[i] = vtkOFBLICTracer::Gather(i, line, steps, w, inverseTotal, input);
+        return;
+      }
+      const vtkIdType at = pass.Where[i];
+      const vtkOFBLICTracer::ThroughIds ids{ runs + at, input };
+      if (pass.Parts)
+      {
+        if (values)
+        {
+          pass.Parts->Gather(runs + at, values + at, pass.Moments[i]);
+        }
+        else
+        {
+          pass.Parts->Gather(runs + at, ids, pass.Moments[i]);
+        }
+        output[i] = pass.Parts->Combine(pass.Moments[i], input[i]);
+        return;
+      }
+      const bool inside = at >= steps && at + steps < length;
+      if (values)
+      {
+        const float* v = values + at;
+        if (!inside ||
+          !vtkOFBLICTracer::GatherWhole(runs + at, v, steps, w, inverseTotal, output[i]))
+        {
+          output[i] = vtkOFBLICTracer::GatherRun(runs + at, v, steps, w, inverseTotal);
+        }
+      }
+      else if (!inside ||
+        !vtkOFBLICTracer::GatherWhole(runs + at, ids, steps, w, inverseTotal, output[i]))
+      {
+        output[i] = vtkOFBLICTracer::GatherRun(runs + at, ids, steps, w, inverseTotal);
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLIC::vtkInternals::KeepRuns(bool keepRuns,
+  int runSteps,
+  const std::vector<std::pair<vtkOFBLICRunStore*, std::size_t>>& tileStart)
+{
+  vtkOFBLICCache& cache = this->Cache;
+  if (!keepRuns)
   {
     std::vector<const vtkTypeInt32*>().swap(cache.TileRuns);
     std::vector<vtkIdType>().swap(cache.TileRunLengths);
+    return;
   }
-  else if (fast)
+  cache.RunSteps = runSteps;
+  for (std::size_t t = 0; t < tileStart.size(); ++t)
   {
-    cache.RunSteps = compact ? keepSteps : steps;
-    for (vtkIdType t = 0; t < numberOfTiles; ++t)
+    if (tileStart[t].first)
     {
-      if (tileStart[t].first)
-      {
-        cache.TileRuns[t] = tileStart[t].first->Ids.data() + tileStart[t].second;
-      }
+      cache.TileRuns[t] = tileStart[t].first->Ids.data() + tileStart[t].second;
     }
   }
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -384,7 +477,7 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
   const std::size_t start = store.size();
   // A window of a streamline that passes a sample farther aside than ReuseDistance reads
   // other samples than the sample's own streamline (dashes, seams at the tile planes).
-  const double reach2 = tracer.ReuseDistance * tracer.ReuseDistance;
+  const float reach2 = tracer.ReuseDistance * tracer.ReuseDistance;
   // Per step of the run: whether it passed a sample it can give a window to (forward
   // steps, backward steps, then the run in its order).
   std::vector<unsigned char> nearBuffer(4 * m + 4);
@@ -441,16 +534,16 @@ void vtkOFBLIC::vtkInternals::TraceTile(const vtkOFBLICTracer& tracer,
         i,
         m,
         std::max(n, 1),
-        [&](vtkIdType k, const glm::dvec3& p, int dir, int step)
+        [&](vtkIdType k, const glm::vec3& p, int dir, int step)
         {
           const vtkOFBLICSample& sk = samples[k];
           bool useful = sk.Tile() == tile && !covered[k];
           if (useful)
           {
-            const glm::dvec3 d = p - vtkOFBLICTracer::Vec(sk.Position);
-            const glm::dvec3 f = vtkOFBLICTracer::Vec(sk.Field);
-            const double ff = glm::dot(f, f);
-            const double along = glm::dot(d, f);
+            const glm::vec3 d = p - vtkOFBLICTracer::Vec3(sk.Position);
+            const glm::vec3 f = vtkOFBLICTracer::Vec3(sk.Field);
+            const float ff = glm::dot(f, f);
+            const float along = glm::dot(d, f);
             useful = glm::dot(d, d) * ff - along * along < reach2 * ff;
           }
           (dir > 0 ? nearAhead : nearBack)[step] = useful;

@@ -329,7 +329,10 @@ struct vtkOFBLICHighPassWork
   /// The neighbours of sample i in all three grids (into `ids`, replacing them).
   void SearchAllGrids(vtkIdType i, double& sum, int& count, std::vector<vtkTypeInt32>& ids) const
   {
-    const glm::dvec3 c = vtkOFBLICTracer::Vec(this->Samples[i].Position);
+    const double* o = this->Input->GetOrigin();
+    const double h = this->Input->GetCellSize();
+    const float* x = this->Samples[i].Position;
+    const glm::dvec3 c(o[0] + h * x[0], o[1] + h * x[1], o[2] + h * x[2]);
     sum = 0.0;
     count = 0;
     ids.clear();

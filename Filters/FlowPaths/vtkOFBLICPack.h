@@ -29,6 +29,8 @@ struct vtkOFBLICPacker
   vtkDataArray* VectorsArray; // the field of any type
   double Threshold;
   bool OnSurface;
+  const double* Origin;   // the OFB's origin and cell size: the record's position is
+  double InverseCellSize; // in cells from the origin (vtkOFBLICSample)
 
   vtkIdType Pack(vtkOFBLICSample& s,
     vtkIdType i,
@@ -51,7 +53,7 @@ struct vtkOFBLICPacker
     }
     for (int c = 0; c < 3; ++c)
     {
-      s.Position[c] = static_cast<float>(x[c]);
+      s.Position[c] = static_cast<float>((x[c] - this->Origin[c]) * this->InverseCellSize);
       s.Normal[c] = static_cast<float>(nrm[c]);
       s.Field[c] = 0.0f;
     }

@@ -23,9 +23,10 @@
 
 /**
  * What a streamline step reads of a sample, packed in 40 bytes so that one step touches
- * one place: the position (world coordinates), the unit normal, the tangent field
- * (scaled to the step, zero where masked) and the flags (grid axis in bits 0-1,
- * masked in bit 2, the tile of vtkOFBLICTiles from bit 3).
+ * one place: the position (in cells from the OFB's origin: the tracer's frame, in which
+ * a cell's index is the integer part of a coordinate), the unit normal, the tangent field
+ * (unit or relative to the strongest flow, zero where masked) and the flags (grid axis in
+ * bits 0-1, masked in bit 2, the tile of vtkOFBLICTiles from bit 3).
  */
 struct vtkOFBLICSample
 {
@@ -175,10 +176,10 @@ public:
   const vtkOFB* OFB = nullptr;
   const vtkOFBLICSample* Samples = nullptr;
   int NumberOfSteps = 0;
-  double Step = 0.0;          // world units
+  float Step = 0.0f;          // cells
   double SearchRadius = 0.0;  // world units
   double FieldRadius = 0.0;   // world units; > 0: inverse-distance field, else nearest
-  double ReuseDistance = 0.0; // world units; fast LIC: see vtkOFBLIC::TraceTile
+  float ReuseDistance = 0.0f; // cells; fast LIC: see vtkOFBLIC::TraceTile
 
   // The OFB's frame and storage, read directly in the inner loop.
   const vtkTypeUInt32* Offsets = nullptr;
@@ -188,6 +189,17 @@ public:
   double InverseCellSize = 0.0;
   vtkIdType Dimensions[3] = { 0, 0, 0 };
   vtkIdType CellBase[4] = { 0, 0, 0, 0 };
+  // Per grid, what FindInGrid reads: the axes across it, their cells, the first cell.
+  struct Grid
+  {
+    int U;
+    int V;
+    vtkTypeUInt32 CellsU;
+    vtkTypeUInt32 CellsV;
+    vtkIdType Base;
+  };
+  Grid Grids[3];
+  float CellSizeF = 0.0f;
 
   /// Take the frame and storage of `ofb` (which the tracer then only reads).
   void SetOFB(vtkOFB* ofb)
@@ -203,43 +215,58 @@ public:
     {
       this->CellBase[a] = ofb->GetGridCellBase(a);
     }
+    for (int a = 0; a < 3; ++a)
+    {
+      Grid& g = this->Grids[a];
+      g.U = (a + 1) % 3;
+      g.V = (a + 2) % 3;
+      g.CellsU = static_cast<vtkTypeUInt32>(this->Dimensions[g.U]);
+      g.CellsV = static_cast<vtkTypeUInt32>(this->Dimensions[g.V]);
+      g.Base = this->CellBase[a];
+    }
+    this->CellSizeF = static_cast<float>(this->CellSize);
+  }
+
+  /// A position of the tracer's frame (cells from the origin) in world coordinates.
+  glm::dvec3 World(const float* x) const
+  {
+    return glm::dvec3(this->Origin[0] + this->CellSize * x[0],
+      this->Origin[1] + this->CellSize * x[1],
+      this->Origin[2] + this->CellSize * x[2]);
   }
 
   /**
-   * The sample of grid `a` closest in depth to q in the cell under q, within one cell
-   * (vtkOFB::FindSample for a known grid, with a linear scan: cells hold few samples).
-   * Coordinates are taken by pointer (glm's operator[] branches on the index), and a
-   * cell coordinate known to be non-negative is floored by truncation.
+   * The sample of grid `a` closest in depth to q (in cells from the origin) in the cell
+   * under q, within one cell (vtkOFB::FindSample for a known grid, with a linear scan:
+   * cells hold few samples). A coordinate in [-1, 0) must not truncate to cell 0: the
+   * cell index is that of the coordinate plus one, less one, unsigned (below 0 it wraps
+   * to a large number, as does a NaN's or an infinity's conversion).
    */
-  VTKOFB_LIC_INLINE vtkIdType FindInGrid(int a, const glm::dvec3& q) const
+  VTKOFB_LIC_INLINE vtkIdType FindInGrid(int a, const float q[3]) const
   {
-    static constexpr int Next[5] = { 0, 1, 2, 0, 1 };
-    const int u = Next[a + 1];
-    const int v = Next[a + 2];
-    const double* x = &q.x;
-    const double fu = (x[u] - this->Origin[u]) * this->InverseCellSize;
-    const double fv = (x[v] - this->Origin[v]) * this->InverseCellSize;
-    if (!(fu >= 0.0 && fv >= 0.0 && fu < this->Dimensions[u] && fv < this->Dimensions[v]))
+    const Grid& g = this->Grids[a];
+    const vtkTypeUInt32 iu = static_cast<vtkTypeUInt32>(static_cast<int>(q[g.U] + 1.0f)) - 1u;
+    const vtkTypeUInt32 iv = static_cast<vtkTypeUInt32>(static_cast<int>(q[g.V] + 1.0f)) - 1u;
+    if (!(iu < g.CellsU && iv < g.CellsV))
     {
       return -1;
     }
-    const vtkIdType cell = this->CellBase[a] + static_cast<vtkIdType>(fv) * this->Dimensions[u] +
-      static_cast<vtkIdType>(fu);
-    const double d = x[a] - this->Origin[a];
+    const vtkIdType cell = g.Base + static_cast<vtkIdType>(iv) * g.CellsU + iu;
+    // The depth of q in world units from the origin, as the OFB keeps depths.
+    const float d = q[a] * this->CellSizeF;
     const vtkIdType begin = this->Offsets[cell];
+    const vtkIdType end = this->Offsets[cell + 1];
     // The record of the cell's first sample, the likely answer, is fetched while the
     // depths are compared: the two misses of the step's chain overlap.
     VTKOFB_PREFETCH(this->Samples + begin);
     vtkIdType best = -1;
-    double bestDistance = this->CellSize;
-    for (vtkIdType i = begin, end = this->Offsets[cell + 1]; i < end; ++i)
+    float bestDistance = this->CellSizeF;
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      const double distance = std::fabs(this->Depths[i] - d);
-      if (distance <= bestDistance)
-      {
-        bestDistance = distance;
-        best = i;
-      }
+      const float distance = std::fabs(this->Depths[i] - d);
+      const bool take = distance <= bestDistance;
+      best = take ? i : best;
+      bestDistance = take ? distance : bestDistance;
     }
     return best;
   }
@@ -336,8 +363,8 @@ public:
     int& nBack,
     bool& backEnded) const
   {
-    glm::dvec3 pf = Vec(this->Samples[i].Position);
-    glm::dvec3 pb = pf;
+    glm::vec3 pf = Vec3(this->Samples[i].Position);
+    glm::vec3 pb = pf;
     vtkIdType jf = i;
     vtkIdType jb = i;
     nAhead = 0;
@@ -358,7 +385,7 @@ public:
         if (forward)
         {
           ahead[nAhead++] = static_cast<vtkTypeInt32>(jf);
-          idleAhead = useful(jf, pf, 1, nAhead - 1) ? 0 : idleAhead + 1;
+          idleAhead = (idleAhead + 1) * !useful(jf, pf, 1, nAhead - 1);
           forward = nAhead < steps && idleAhead < idle;
         }
       }
@@ -370,7 +397,7 @@ public:
         if (backward)
         {
           back[nBack++] = static_cast<vtkTypeInt32>(jb);
-          idleBack = useful(jb, pb, -1, nBack - 1) ? 0 : idleBack + 1;
+          idleBack = (idleBack + 1) * !useful(jb, pb, -1, nBack - 1);
           backward = nBack < steps && idleBack < idle;
         }
       }
@@ -387,7 +414,7 @@ public:
       i,
       n,
       n + 1,
-      [](vtkIdType, const glm::dvec3&, int, int) { return true; },
+      [](vtkIdType, const glm::vec3&, int, int) { return true; },
       line,
       ahead,
       aheadEnded,
@@ -545,13 +572,17 @@ public:
    * p becomes the new position on the surface; returns the new sample, or -1 where
    * the streamline stops.
    */
-  VTKOFB_LIC_INLINE vtkIdType Advance(glm::dvec3& p, vtkIdType j, int dir) const
+  VTKOFB_LIC_INLINE vtkIdType Advance(glm::vec3& p, vtkIdType j, int dir) const
   {
     const vtkOFBLICSample& sj = this->Samples[j];
-    const glm::dvec3 nj = Vec(sj.Normal);
     // The nearest field (the default) inline: the sample's own vector.
-    glm::dvec3 q =
-      p + (dir * this->Step) * (this->FieldRadius > 0.0 ? this->FieldAt(p, j) : Vec(sj.Field));
+    const glm::vec3 v = this->FieldRadius > 0.0 ? this->FieldAt(p, j) : Vec3(sj.Field);
+    float q[3];
+    const float step = dir > 0 ? this->Step : -this->Step;
+    for (int c = 0; c < 3; ++c)
+    {
+      q[c] = p[c] + step * v[c];
+    }
     // The grid of sample j first (the surface mostly goes on in the same grid), then the
     // other two in the order of the normal's components (where the surface goes on in
     // another grid, the cell under q mostly holds its sample), then all three within
@@ -562,29 +593,29 @@ public:
     {
       const int b = (axis + 1) % 3;
       const int c = (axis + 2) % 3;
-      const bool bFirst = std::fabs(nj[b]) >= std::fabs(nj[c]);
+      const bool bFirst = std::fabs(sj.Normal[b]) >= std::fabs(sj.Normal[c]);
       k = this->FindInGrid(bFirst ? b : c, q);
       if (k < 0)
       {
         k = this->FindInGrid(bFirst ? c : b, q);
       }
-    }
-    if (k < 0)
-    {
-      k = this->FindClosest(q);
+      if (k < 0)
+      {
+        k = this->FindClosest(this->World(q));
+      }
     }
     if (k < 0 || this->Samples[k].Masked())
     {
       return -1;
     }
     const vtkOFBLICSample& sk = this->Samples[k];
-    const glm::dvec3 nk = Vec(sk.Normal);
-    if (glm::dot(nj, nk) < -0.5)
+    const glm::vec3 nk = Vec3(sk.Normal);
+    if (glm::dot(Vec3(sj.Normal), nk) < -0.5f)
     {
       return -1;
     }
-    q -= glm::dot(q - Vec(sk.Position), nk) * nk;
-    p = q;
+    const glm::vec3 qv(q[0], q[1], q[2]);
+    p = qv - glm::dot(qv - Vec3(sk.Position), nk) * nk;
     return k;
   }
 
@@ -594,17 +625,18 @@ public:
    * whose normal is within 60 degrees of j's, projected into j's tangent plane and given
    * the length of j's vector.
    */
-  glm::dvec3 FieldAt(const glm::dvec3& p, vtkIdType j) const
+  glm::vec3 FieldAt(const glm::vec3& p, vtkIdType j) const
   {
     const glm::dvec3 vj = Vec(this->Samples[j].Field);
     if (this->FieldRadius <= 0.0)
     {
-      return vj;
+      return glm::vec3(vj);
     }
     const glm::dvec3 nj = Vec(this->Samples[j].Normal);
     const double eps = 1e-4 * this->CellSize * this->CellSize;
+    const glm::dvec3 x = this->World(&p.x);
     glm::dvec3 sum(0.0);
-    this->OFB->ForEachSampleInSphere(&p.x,
+    this->OFB->ForEachSampleInSphere(&x.x,
       this->FieldRadius,
       [&](vtkIdType k, double d2)
       {
@@ -616,7 +648,7 @@ public:
       });
     sum -= glm::dot(sum, nj) * nj;
     const double length = glm::length(sum);
-    return length > 0.0 ? sum * (glm::length(vj) / length) : vj;
+    return glm::vec3(length > 0.0 ? sum * (glm::length(vj) / length) : vj);
   }
 
   /// The axis of the largest component of n (the grid vtkOFB::FindSample searches).
@@ -627,6 +659,8 @@ public:
   }
 
   static glm::dvec3 Vec(const float* a) { return glm::dvec3(a[0], a[1], a[2]); }
+
+  static glm::vec3 Vec3(const float* a) { return glm::vec3(a[0], a[1], a[2]); }
 
   static glm::dvec3 Vec(const float* a, vtkIdType i)
   {

@@ -1,0 +1,359 @@
+"""The OFB plugin in ParaView's client-server mode: a pvserver of N MPI processes and a
+pvpython client, against pvbatch runs of the same script.
+
+    python3 TestOFBClientServer.py --ranks N --mpiexec MPIEXEC --pvserver PVSERVER
+        --pvpython PVPYTHON --pipeline ofbClientServerPipeline.py --plugin OFB.so
+        --reference DIR --whole-reference DIR --output DIR [--compare-python PYTHON]
+        [--vtkofb-build MAIN_BUILD --vtkofb-python-destination DEST]
+
+1. Starts `MPIEXEC -np N PVSERVER --server-port=0 --force-offscreen-rendering` (port 0:
+   the system chooses a free port, which pvserver prints in its "Accepting connection(s):
+   HOST:PORT" line) and waits for that line.
+2. Runs `PVPYTHON ofbClientServerPipeline.py PLUGIN OUTPUT --url cs://localhost:PORT`:
+   the client connects, loads the plugin on the server and on the client, builds the
+   pipeline on the server, renders remotely (the server's N processes, composited by IceT)
+   and locally (the client, from the delivered surface), saves the screenshots, and saves
+   the data through the OFB writer (written by the server).
+3. Waits for the client and the server to end; whatever still runs after its time (or
+   when this script fails or is stopped) is ended with its whole process group (SIGTERM,
+   then SIGKILL), and the test fails if a process of either group is left.
+4. Compares with the pvbatch runs of the same script (ctest's fixtures: `mpiexec -np N
+   pvbatch` into --reference, one process into --whole-reference):
+   - the values computed on the server and fetched by the client (sample, particle, trail,
+     point and cell counts, LIC mean and standard deviation, painted points, the sum of
+     the colours, the particles' end points): equal;
+   - the remote rendering was remote, the local one local;
+   - the screenshots, by vtkOFBImageComparison (the LIC-aware comparison of
+     OFB::TestingImage, run in Debian's Python with vtkofb): the remote one against
+     pvbatch's of N processes, the local one against pvbatch's whole surface in one process;
+   - the written files: on one process the .obj, .mtl, .png and .gltf exist, equal pvbatch's
+     byte for byte, the .obj has a face per cell, the .mtl names the .png, the .gltf embeds
+     its texture, and no staging folder is left; on more processes ParaView offers no OFB
+     writer (it is not a parallel writer) and nothing is written.
+
+`TestOFBClientServer.py compare IMAGE BASELINE` is the image comparison alone (run by the
+test in PYTHON with vtkofb on its path).
+"""
+import argparse
+import glob
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+START_TIMEOUT = 120  # seconds for pvserver to accept connections
+EXIT_TIMEOUT = 60  # seconds for the server to end once the client has disconnected
+FLOAT_TOLERANCE = 1e-9  # relative, for the values (the same computation in both runs)
+END_TOLERANCE = 1e-6  # particle end points (rounded to 6 digits by the pipeline)
+IMAGES = {"ofb-surface.png": "reference", "ofb-surface-local.png": "whole"}
+WRITTEN = ["ofb-cs-sphere.obj", "ofb-cs-sphere.mtl", "ofb-cs-sphere.png", "ofb-cs-sphere.gltf"]
+
+
+def compare_images(image_path, baseline_path):
+    """The LIC-aware comparison of two PNGs; prints its measures, returns success."""
+    import vtkofb
+    from vtkmodules.vtkIOImage import vtkPNGReader
+
+    def read(path):
+        reader = vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        return reader.GetOutput()
+
+    comparison = vtkofb.vtkOFBImageComparison()
+    comparison.SetImage(read(image_path))
+    comparison.SetBaseline(read(baseline_path))
+    passed = comparison.Compare()
+    print("%s against %s: correlation %.5f, low-pass difference %.3f, VTK's error %.4f, "
+          "%d mask pixels, %s" % (os.path.basename(image_path), baseline_path,
+                                  comparison.GetCorrelation(), comparison.GetLowPassDifference(),
+                                  comparison.GetImageDifferenceError(),
+                                  comparison.GetNumberOfMaskPixels(),
+                                  "passed" if passed else "FAILED " + comparison.GetErrorText()))
+    return bool(passed)
+
+
+if len(sys.argv) == 4 and sys.argv[1] == "compare":
+    sys.exit(0 if compare_images(sys.argv[2], sys.argv[3]) else 1)
+
+parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+parser.add_argument("--ranks", type=int, required=True)
+parser.add_argument("--mpiexec", required=True)
+parser.add_argument("--mpiexec-numproc-flag", default="-np")
+parser.add_argument("--pvserver", required=True)
+parser.add_argument("--pvpython", required=True)
+parser.add_argument("--pipeline", required=True)
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--reference", required=True)
+parser.add_argument("--whole-reference", required=True)
+parser.add_argument("--output", required=True)
+parser.add_argument("--compare-python", default="/usr/bin/python3")
+parser.add_argument("--vtkofb-build", help="the main build, whose vtkofb compares the images")
+parser.add_argument("--vtkofb-python-destination", default="lib/python3/dist-packages")
+parser.add_argument("--client-timeout", type=float, default=400.0,
+                    help="seconds for the client's whole script (default 400)")
+args = parser.parse_args()
+
+failures = []
+
+
+def check(condition, what):
+    print("ok:" if condition else "FAILED:", what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+# One connection to the X display for the whole run, so that the display does not reset
+# between the processes' windows (as ofbKeepDisplayOpen.py does for a pvbatch script).
+try:
+    import ctypes
+    import ctypes.util
+
+    _xlib = ctypes.CDLL(ctypes.util.find_library("X11") or "libX11.so.6")
+    _xlib.XOpenDisplay.restype = ctypes.c_void_p
+    _display = _xlib.XOpenDisplay(None)
+except OSError:
+    _display = None
+
+
+# ctest's timeout or ^C: end the processes started here before leaving.
+def _stop(signum, frame):
+    raise SystemExit("stopped by signal %d" % signum)
+
+
+signal.signal(signal.SIGTERM, _stop)
+signal.signal(signal.SIGINT, _stop)
+
+
+class Process:
+    """A process in a process group of its own, its output echoed with a prefix."""
+
+    def __init__(self, name, command, watch=None):
+        self.name = name
+        self.lines = []
+        self.matched = threading.Event()
+        self.match = None
+        self.watch = re.compile(watch) if watch else None
+        print("[%s] %s" % (name, " ".join(command)), flush=True)
+        self.popen = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                      stdin=subprocess.DEVNULL, start_new_session=True,
+                                      text=True, errors="replace")
+        self.pgid = self.popen.pid  # start_new_session: the group of the process's own id
+        self.known = set()
+        self.reader = threading.Thread(target=self._read, daemon=True)
+        self.reader.start()
+
+    def _read(self):
+        for line in self.popen.stdout:
+            line = line.rstrip("\n")
+            self.lines.append(line)
+            # ParaView's deprecation and replacement warnings are noise here.
+            if "WARN|" not in line:
+                print("[%s] %s" % (self.name, line), flush=True)
+            if self.watch and not self.matched.is_set():
+                found = self.watch.search(line)
+                if found:
+                    self.match = found
+                    self.matched.set()
+        self.matched.set()
+
+    def wait(self, timeout):
+        """The exit status, or None if it still runs after `timeout` seconds."""
+        try:
+            return self.popen.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            return None
+
+    def descendants(self):
+        """The ids of the running processes below this one (mpiexec puts its ranks in
+        process groups of their own)."""
+        children = {}
+        for entry in os.listdir("/proc"):
+            if not entry.isdigit():
+                continue
+            try:
+                with open("/proc/%s/stat" % entry) as stream:
+                    fields = stream.read().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if fields[0] != "Z":  # zombies are gone, waiting for their parent
+                children.setdefault(int(fields[1]), []).append(int(entry))
+        found, todo = [], [self.popen.pid]
+        while todo:
+            for child in children.get(todo.pop(), []):
+                found.append(child)
+                todo.append(child)
+        return found
+
+    def alive(self):
+        """The process ids left: the group's leader, its group, its descendants."""
+        left = set(self.known)
+        if self.popen.poll() is None:
+            left.add(self.popen.pid)
+        try:
+            os.killpg(self.pgid, 0)
+            left.add(-self.pgid)
+        except (ProcessLookupError, PermissionError):
+            pass
+        for pid in list(left):
+            if pid > 0:
+                try:
+                    with open("/proc/%d/stat" % pid) as stream:
+                        if stream.read().rsplit(")", 1)[1].split()[0] == "Z":
+                            left.discard(pid)
+                except OSError:
+                    left.discard(pid)
+        return sorted(left)
+
+    def stop(self):
+        """Ends the process, its group and every process below it."""
+        self.known = set(self.descendants()) if self.popen.poll() is None else set()
+        for sig, grace in ((signal.SIGTERM, 10.0), (signal.SIGKILL, 5.0)):
+            if not self.alive():
+                break
+            for target in [-self.pgid] + [pid for pid in self.known]:
+                try:
+                    if target < 0:
+                        os.killpg(-target, sig)
+                    else:
+                        os.kill(target, sig)
+                except (ProcessLookupError, PermissionError):
+                    pass
+            deadline = time.monotonic() + grace
+            while time.monotonic() < deadline and self.alive():
+                self.popen.poll()
+                time.sleep(0.1)
+        self.popen.poll()
+        self.reader.join(timeout=5)
+
+
+def child_environment():
+    # ParaView's Python for the children (ctest sets PYTHONPATH to it), nothing of vtkofb's.
+    return dict(os.environ)
+
+
+shutil.rmtree(args.output, ignore_errors=True)
+os.makedirs(args.output)
+processes = []
+try:
+    server = Process("pvserver", [args.mpiexec, args.mpiexec_numproc_flag, str(args.ranks),
+                                  args.pvserver, "--server-port=0",
+                                  "--force-offscreen-rendering"],
+                     watch=r"Accepting connection\(s\): (\S+):(\d+)")
+    processes.append(server)
+    server.matched.wait(timeout=START_TIMEOUT)
+    if server.match is None:
+        raise AssertionError("pvserver did not accept connections within %d s (exit status %s)"
+                             % (START_TIMEOUT, server.popen.poll()))
+    port = int(server.match.group(2))
+    check(port > 0, "pvserver on %d processes accepts connections on port %d"
+          % (args.ranks, port))
+
+    client = Process("pvpython", [args.pvpython, "--force-offscreen-rendering", args.pipeline,
+                                  args.plugin, args.output,
+                                  "--url", "cs://localhost:%d" % port])
+    processes.append(client)
+    status = client.wait(args.client_timeout)
+    if status is None:
+        raise AssertionError("the client did not finish within %g s" % args.client_timeout)
+    check(status == 0, "the client's script ran to its end (exit status %d)" % status)
+    status = server.wait(EXIT_TIMEOUT)
+    check(status is not None, "pvserver ended when the client disconnected (exit status %s)"
+          % status)
+finally:
+    for process in reversed(processes):
+        process.stop()
+    left = {process.name: process.alive() for process in processes if process.alive()}
+    check(not left, "no process of pvserver or the client left (left: %s)" % left)
+
+# The values: the client's (computed on the server) against pvbatch's.
+with open(os.path.join(args.output, "values.json")) as stream:
+    values = json.load(stream)
+with open(os.path.join(args.reference, "values.json")) as stream:
+    reference = json.load(stream)
+check(values["ranks"] == args.ranks and reference["ranks"] == args.ranks,
+      "the server and pvbatch ran on %d processes (%d, %d)"
+      % (args.ranks, values["ranks"], reference["ranks"]))
+check(values.get("remote_render") is True, "the first picture was rendered by the server")
+check(values.get("local_remote_render") is False,
+      "the second picture was rendered by the client")
+for key, expected in sorted(reference.items()):
+    if key in ("remote_render", "local_remote_render", "particle_ends"):
+        continue
+    got = values.get(key)
+    if isinstance(expected, float):
+        same = got is not None and abs(got - expected) <= FLOAT_TOLERANCE * max(1.0, abs(expected))
+    else:
+        same = got == expected
+    check(same, "%s: client-server %s, pvbatch %s" % (key, got, expected))
+ends, reference_ends = values["particle_ends"], reference["particle_ends"]
+check(len(ends) == len(reference_ends) and all(
+    abs(a - b) <= END_TOLERANCE for p, q in zip(ends, reference_ends) for a, b in zip(p, q)),
+    "particle end points: %d, as pvbatch's %d" % (len(ends), len(reference_ends)))
+check(values["samples"] > 0 and values["particles"] > 0 and values["red_points"] > 0 and
+      values["lic_std"] > 0.1, "the pipeline made samples, particles, paint and a LIC")
+
+# The pictures, by the LIC-aware comparison in Debian's Python with vtkofb.
+compare_environment = dict(os.environ)
+compare_environment.pop("PYTHONPATH", None)
+if args.vtkofb_build:
+    compare_environment["PYTHONPATH"] = os.path.join(args.vtkofb_build,
+                                                     args.vtkofb_python_destination)
+    libraries = sorted({os.path.dirname(path) for path in glob.glob(
+        os.path.join(args.vtkofb_build, "lib*", "**", "libvtkOFBTestingImage*.so*"),
+        recursive=True)})
+    compare_environment["LD_LIBRARY_PATH"] = os.pathsep.join(
+        libraries + [p for p in [os.environ.get("LD_LIBRARY_PATH")] if p])
+for image, which in IMAGES.items():
+    baseline_dir = args.reference if which == "reference" else args.whole_reference
+    baseline = os.path.join(baseline_dir, "ofb-surface.png" if which == "reference"
+                            else "ofb-surface-whole.png")
+    result = subprocess.run([args.compare_python, os.path.abspath(__file__), "compare",
+                             os.path.join(args.output, image), baseline],
+                            env=compare_environment, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, timeout=120)
+    print(result.stdout.strip(), flush=True)
+    check(result.returncode == 0, "%s equals pvbatch's %s" % (image, os.path.basename(baseline)))
+
+# The files the server wrote.
+staging = [name for name in os.listdir(args.output) if ".partial-" in name]
+check(not staging, "no staging folder left: %s" % staging)
+if args.ranks == 1:
+    check(values["writer"] == "SaveData", "Save Data offers the OFB writer (%s)" % values["writer"])
+    for name in WRITTEN:
+        path = os.path.join(args.output, name)
+        size = os.path.getsize(path) if os.path.exists(path) else -1
+        with open(os.path.join(args.reference, name), "rb") as stream:
+            expected = stream.read()
+        same = size > 0 and open(path, "rb").read() == expected
+        check(same, "%s written by the server: %d bytes, equal to pvbatch's (%d bytes)"
+              % (name, size, len(expected)))
+    with open(os.path.join(args.output, "ofb-cs-sphere.obj")) as stream:
+        faces = sum(1 for line in stream if line.startswith("f "))
+    check(faces == values["mesh_cells"], "the .obj has a face per cell: %d of %d"
+          % (faces, values["mesh_cells"]))
+    with open(os.path.join(args.output, "ofb-cs-sphere.mtl")) as stream:
+        check("map_Kd ofb-cs-sphere.png" in stream.read(), "the .mtl names the texture")
+    with open(os.path.join(args.output, "ofb-cs-sphere.png"), "rb") as stream:
+        check(stream.read(8) == b"\x89PNG\r\n\x1a\n", "the texture is a PNG")
+    with open(os.path.join(args.output, "ofb-cs-sphere.gltf")) as stream:
+        gltf = json.load(stream)
+    check(len(gltf.get("meshes", [])) == 1 and
+          any(image.get("uri", "").startswith("data:image/png;base64,") or
+              image.get("mimeType") == "image/png" for image in gltf.get("images", [])),
+          "the .gltf is complete JSON with a mesh and its texture embedded")
+else:
+    check(values["writer"] == "refused",
+          "on %d processes Save Data offers no OFB writer (%s)" % (args.ranks, values["writer"]))
+    written = [name for name in WRITTEN if os.path.exists(os.path.join(args.output, name))]
+    check(not written, "nothing written on %d processes: %s" % (args.ranks, written))
+
+if failures:
+    print("%d client-server checks failed on %d processes" % (len(failures), args.ranks))
+    sys.exit(1)
+print("all client-server checks passed on %d processes" % args.ranks)

@@ -113,14 +113,14 @@ if (VTKOFB_BUILD_TESTING)
       PROCESSORS 2
       TIMEOUT 900)
   endif ()
-  # The client-server tests (a pvserver of 1 and 2 processes and a pvpython client, against
-  # pvbatch runs): one test here, as the client-server runs compare with the pvbatch ones.
+  # The client tests (a pvserver of 1 and 2 processes with a pvpython client, and the
+  # paraview GUI, against pvbatch runs): one test here, as the clients compare with pvbatch.
   if (MPIEXEC_EXECUTABLE)
     add_test(
-      NAME    "OFB.ParaView.ClientServer"
+      NAME    "OFB.ParaView.Clients"
       COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
-        -R "^OFBPlugin\\.ClientServer\\." --output-on-failure --no-tests=error)
-    set_tests_properties("OFB.ParaView.ClientServer" PROPERTIES
+        -R "^OFBPlugin\\.Clients\\." --output-on-failure --no-tests=error)
+    set_tests_properties("OFB.ParaView.Clients" PROPERTIES
       LABELS  "ParaView;MPI"
       PROCESSORS 2
       TIMEOUT 1200)
@@ -130,7 +130,7 @@ if (VTKOFB_BUILD_TESTING)
   set(vtkofb_paraview_render_tests OFB.ParaView.Filters OFB.ParaView.Example
     OFB.ParaView.SurfaceRepresentation OFB.ParaView.SurfaceRepresentationExample
     OFB.ParaView.LICBenchmark)
-  foreach (vtkofb_test IN ITEMS Distributed ClientServer)
+  foreach (vtkofb_test IN ITEMS Distributed Clients)
     if (TEST OFB.ParaView.${vtkofb_test})
       list(APPEND vtkofb_paraview_render_tests OFB.ParaView.${vtkofb_test})
     endif ()

@@ -1,44 +1,58 @@
-"""The OFB plugin in ParaView's client-server mode: a pvserver of N MPI processes and a
-pvpython client, against pvbatch runs of the same script.
+"""The OFB plugin in ParaView's clients, against pvbatch runs of the same script: a pvpython
+client of a pvserver of N MPI processes, and the paraview GUI.
 
-    python3 TestOFBClientServer.py --ranks N --mpiexec MPIEXEC --pvserver PVSERVER
-        --pvpython PVPYTHON --pipeline ofbClientServerPipeline.py --plugin OFB.so
-        --reference DIR --whole-reference DIR --output DIR [--compare-python PYTHON]
-        [--vtkofb-build MAIN_BUILD --vtkofb-python-destination DEST]
+    python3 TestOFBClients.py --client pvpython --ranks N --mpiexec MPIEXEC
+        --pvserver PVSERVER --pvpython PVPYTHON --pipeline ofbClientPipeline.py
+        --plugin OFB.so --reference DIR --whole-reference DIR --output DIR
+        [--compare-python PYTHON] [--vtkofb-build MAIN_BUILD --vtkofb-python-destination DEST]
+    python3 TestOFBClients.py --client gui --paraview PARAVIEW --pipeline ... --plugin ...
+        --reference DIR --whole-reference DIR --output DIR [...]
 
+pvpython (client-server):
 1. Starts `MPIEXEC -np N PVSERVER --server-port=0 --force-offscreen-rendering` (port 0:
    the system chooses a free port, which pvserver prints in its "Accepting connection(s):
    HOST:PORT" line) and waits for that line.
-2. Runs `PVPYTHON ofbClientServerPipeline.py PLUGIN OUTPUT --url cs://localhost:PORT`:
-   the client connects, loads the plugin on the server and on the client, builds the
-   pipeline on the server, renders remotely (the server's N processes, composited by IceT)
-   and locally (the client, from the delivered surface), saves the screenshots, and saves
-   the data through the OFB writer (written by the server).
-3. Waits for the client and the server to end; whatever still runs after its time (or
-   when this script fails or is stopped) is ended with its whole process group (SIGTERM,
-   then SIGKILL), and the test fails if a process of either group is left.
-4. Compares with the pvbatch runs of the same script (ctest's fixtures: `mpiexec -np N
-   pvbatch` into --reference, one process into --whole-reference):
-   - the values computed on the server and fetched by the client (sample, particle, trail,
-     point and cell counts, LIC mean and standard deviation, painted points, the sum of
-     the colours, the particles' end points): equal;
-   - the remote rendering was remote, the local one local;
-   - the screenshots, by vtkOFBImageComparison (the LIC-aware comparison of
-     OFB::TestingImage, run in Debian's Python with vtkofb): the remote one against
-     pvbatch's of N processes, the local one against pvbatch's whole surface in one process;
-   - the written files: on one process the .obj, .mtl, .png and .gltf exist, equal pvbatch's
-     byte for byte, the .obj has a face per cell, the .mtl names the .png, the .gltf embeds
-     its texture, and no staging folder is left; on more processes ParaView offers no OFB
-     writer (it is not a parallel writer) and nothing is written.
+2. Runs `PVPYTHON ofbClientPipeline.py PLUGIN OUTPUT --url cs://localhost:PORT`: the
+   client connects, loads the plugin on the server and on the client, builds the pipeline
+   on the server, renders remotely (the server's N processes, composited by IceT) and
+   locally (the client, from the delivered surface), saves the screenshots, and saves the
+   data through the OFB writer (written by the server).
+3. Waits for the client and the server to end.
 
-`TestOFBClientServer.py compare IMAGE BASELINE` is the image comparison alone (run by the
-test in PYTHON with vtkofb on its path).
+gui: runs `PARAVIEW --dr --plugin-search-paths=PLUGIN_DIR --plugins=OFB
+--script=ofbClientPipeline.py --exit` (the pipeline's arguments in OFB_PIPELINE_ARGS): the
+GUI loads the plugin at startup, runs the pipeline in its Python shell with its own render
+view, and exits.
+
+Whatever still runs after its time (or when this script fails or is stopped) is ended with
+its process group and every process below it (SIGTERM, then SIGKILL); the test fails if a
+process is left. Then the results are compared with the pvbatch runs of the same script
+(ctest's fixtures: `mpiexec -np N pvbatch` into --reference, one process into
+--whole-reference):
+- the values computed where the data is and fetched by the client (sample, particle,
+  trail, point and cell counts, LIC mean and standard deviation, painted points, the sum
+  of the colours, the particles' end points): equal;
+- client-server: the remote rendering was remote, the local one local; the GUI: the plugin
+  it loaded, its filters in paraview.simple and under Filters > OFB, the five filters
+  registered (the Pipeline Browser's list) and "OFB Surface" among the representations;
+- the screenshots, by vtkOFBImageComparison (the LIC-aware comparison of
+  OFB::TestingImage, run in Debian's Python with vtkofb): the one rendered where the data
+  is against pvbatch's of N processes, the whole surface of one process (the client's
+  local rendering, the GUI's) against pvbatch's of one process;
+- the written files: on one process the .obj, .mtl, .png and .gltf exist, equal pvbatch's
+  byte for byte, the .obj has a face per cell, the .mtl names the .png, the .gltf embeds
+  its texture, and no staging folder is left; on more processes ParaView offers no OFB
+  writer (it is not a parallel writer) and nothing is written.
+
+`TestOFBClients.py compare IMAGE BASELINE` is the image comparison alone (run by the test
+in PYTHON with vtkofb on its path).
 """
 import argparse
 import glob
 import json
 import os
 import re
+import shlex
 import shutil
 import signal
 import subprocess
@@ -50,7 +64,7 @@ START_TIMEOUT = 120  # seconds for pvserver to accept connections
 EXIT_TIMEOUT = 60  # seconds for the server to end once the client has disconnected
 FLOAT_TOLERANCE = 1e-9  # relative, for the values (the same computation in both runs)
 END_TOLERANCE = 1e-6  # particle end points (rounded to 6 digits by the pipeline)
-IMAGES = {"ofb-surface.png": "reference", "ofb-surface-local.png": "whole"}
+OFB_FILTERS = ["OFBSampler", "OFBLIC", "OFBPaintStrokes", "OFBParticles", "OFBProbe"]
 WRITTEN = ["ofb-cs-sphere.obj", "ofb-cs-sphere.mtl", "ofb-cs-sphere.png", "ofb-cs-sphere.gltf"]
 
 
@@ -82,11 +96,13 @@ if len(sys.argv) == 4 and sys.argv[1] == "compare":
     sys.exit(0 if compare_images(sys.argv[2], sys.argv[3]) else 1)
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-parser.add_argument("--ranks", type=int, required=True)
-parser.add_argument("--mpiexec", required=True)
+parser.add_argument("--client", choices=["pvpython", "gui"], required=True)
+parser.add_argument("--ranks", type=int, default=1, help="pvserver's MPI processes")
+parser.add_argument("--mpiexec")
 parser.add_argument("--mpiexec-numproc-flag", default="-np")
-parser.add_argument("--pvserver", required=True)
-parser.add_argument("--pvpython", required=True)
+parser.add_argument("--pvserver")
+parser.add_argument("--pvpython")
+parser.add_argument("--paraview", help="the paraview GUI")
 parser.add_argument("--pipeline", required=True)
 parser.add_argument("--plugin", required=True)
 parser.add_argument("--reference", required=True)
@@ -98,6 +114,9 @@ parser.add_argument("--vtkofb-python-destination", default="lib/python3/dist-pac
 parser.add_argument("--client-timeout", type=float, default=400.0,
                     help="seconds for the client's whole script (default 400)")
 args = parser.parse_args()
+gui = args.client == "gui"
+if gui:
+    args.ranks = 1
 
 failures = []
 
@@ -232,15 +251,7 @@ class Process:
         self.reader.join(timeout=5)
 
 
-def child_environment():
-    # ParaView's Python for the children (ctest sets PYTHONPATH to it), nothing of vtkofb's.
-    return dict(os.environ)
-
-
-shutil.rmtree(args.output, ignore_errors=True)
-os.makedirs(args.output)
-processes = []
-try:
+def run_client_server():
     server = Process("pvserver", [args.mpiexec, args.mpiexec_numproc_flag, str(args.ranks),
                                   args.pvserver, "--server-port=0",
                                   "--force-offscreen-rendering"],
@@ -265,11 +276,40 @@ try:
     status = server.wait(EXIT_TIMEOUT)
     check(status is not None, "pvserver ended when the client disconnected (exit status %s)"
           % status)
+
+
+def run_gui():
+    # The pipeline's arguments (the GUI's --script takes none) and a settings folder of the
+    # test's own (--dr reads no user settings; the GUI may still write them when it exits).
+    os.environ["OFB_PIPELINE_ARGS"] = " ".join(
+        shlex.quote(a) for a in [args.plugin, args.output, "--gui"])
+    os.environ["XDG_CONFIG_HOME"] = os.path.join(args.output, "config")
+    client = Process("paraview", [args.paraview, "--dr",
+                                  "--plugin-search-paths=" + os.path.dirname(args.plugin),
+                                  "--plugins=OFB", "--script=" + args.pipeline, "--exit"])
+    processes.append(client)
+    status = client.wait(args.client_timeout)
+    if status is None:
+        raise AssertionError("the GUI did not finish within %g s" % args.client_timeout)
+    check(status == 0, "the GUI ran the script and exited (exit status %d)" % status)
+    check(any("ofbClientPipeline done: the paraview GUI" in line for line in client.lines),
+          "the GUI's Python ran the pipeline to its end")
+
+
+shutil.rmtree(args.output, ignore_errors=True)
+os.makedirs(args.output)
+processes = []
+try:
+    if gui:
+        run_gui()
+    else:
+        run_client_server()
 finally:
     for process in reversed(processes):
         process.stop()
     left = {process.name: process.alive() for process in processes if process.alive()}
-    check(not left, "no process of pvserver or the client left (left: %s)" % left)
+    check(not left, "no process of %s left (left: %s)"
+          % (" or ".join(process.name for process in processes), left))
 
 # The values: the client's (computed on the server) against pvbatch's.
 with open(os.path.join(args.output, "values.json")) as stream:
@@ -277,11 +317,25 @@ with open(os.path.join(args.output, "values.json")) as stream:
 with open(os.path.join(args.reference, "values.json")) as stream:
     reference = json.load(stream)
 check(values["ranks"] == args.ranks and reference["ranks"] == args.ranks,
-      "the server and pvbatch ran on %d processes (%d, %d)"
-      % (args.ranks, values["ranks"], reference["ranks"]))
-check(values.get("remote_render") is True, "the first picture was rendered by the server")
-check(values.get("local_remote_render") is False,
-      "the second picture was rendered by the client")
+      "the %s and pvbatch ran on %d processes (%d, %d)"
+      % ("GUI" if gui else "server", args.ranks, values["ranks"], reference["ranks"]))
+if gui:
+    check(values.get("gui_plugins") == [os.path.realpath(args.plugin)] or
+          values.get("gui_plugins") == [args.plugin],
+          "the GUI loaded the plugin at startup: %s" % values.get("gui_plugins"))
+    check(values.get("gui_simple_functions") == OFB_FILTERS,
+          "the GUI's paraview.simple has the OFB filters: %s" % values.get("gui_simple_functions"))
+    check(values.get("gui_menu_categories") == {name: "OFB" for name in OFB_FILTERS},
+          "the filters are in the menu Filters > OFB: %s" % values.get("gui_menu_categories"))
+    check(values.get("gui_sources") == sorted(name + "1" for name in OFB_FILTERS),
+          "the Pipeline Browser lists the filters: %s" % values.get("gui_sources"))
+    check("OFB Surface" in values.get("gui_representation_types", []),
+          "the GUI offers the OFB Surface representation: %s"
+          % values.get("gui_representation_types"))
+else:
+    check(values.get("remote_render") is True, "the first picture was rendered by the server")
+    check(values.get("local_remote_render") is False,
+          "the second picture was rendered by the client")
 for key, expected in sorted(reference.items()):
     if key in ("remote_render", "local_remote_render", "particle_ends"):
         continue
@@ -309,10 +363,10 @@ if args.vtkofb_build:
         recursive=True)})
     compare_environment["LD_LIBRARY_PATH"] = os.pathsep.join(
         libraries + [p for p in [os.environ.get("LD_LIBRARY_PATH")] if p])
-for image, which in IMAGES.items():
-    baseline_dir = args.reference if which == "reference" else args.whole_reference
-    baseline = os.path.join(baseline_dir, "ofb-surface.png" if which == "reference"
-                            else "ofb-surface-whole.png")
+images = {"ofb-surface.png": os.path.join(args.reference, "ofb-surface.png"),
+          "ofb-surface-whole.png" if gui else "ofb-surface-local.png":
+          os.path.join(args.whole_reference, "ofb-surface-whole.png")}
+for image, baseline in images.items():
     result = subprocess.run([args.compare_python, os.path.abspath(__file__), "compare",
                              os.path.join(args.output, image), baseline],
                             env=compare_environment, stdout=subprocess.PIPE,
@@ -331,7 +385,7 @@ if args.ranks == 1:
         with open(os.path.join(args.reference, name), "rb") as stream:
             expected = stream.read()
         same = size > 0 and open(path, "rb").read() == expected
-        check(same, "%s written by the server: %d bytes, equal to pvbatch's (%d bytes)"
+        check(same, "%s written where the data is: %d bytes, equal to pvbatch's (%d bytes)"
               % (name, size, len(expected)))
     with open(os.path.join(args.output, "ofb-cs-sphere.obj")) as stream:
         faces = sum(1 for line in stream if line.startswith("f "))
@@ -353,7 +407,8 @@ else:
     written = [name for name in WRITTEN if os.path.exists(os.path.join(args.output, name))]
     check(not written, "nothing written on %d processes: %s" % (args.ranks, written))
 
+what = "paraview GUI" if gui else "client-server mode on %d processes" % args.ranks
 if failures:
-    print("%d client-server checks failed on %d processes" % (len(failures), args.ranks))
+    print("%d checks of the %s failed" % (len(failures), what))
     sys.exit(1)
-print("all client-server checks passed on %d processes" % args.ranks)
+print("all checks of the %s passed" % what)

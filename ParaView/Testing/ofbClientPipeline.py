@@ -1,32 +1,41 @@
-"""The OFB plugin's pipeline for the client-server test, run the same way in both worlds:
+"""The OFB plugin's pipeline for the client tests, run the same way in every ParaView:
 
-    pvbatch ofbClientServerPipeline.py PLUGIN OUTPUT_DIR
-    pvpython ofbClientServerPipeline.py PLUGIN OUTPUT_DIR --url cs://localhost:PORT
+    pvbatch ofbClientPipeline.py PLUGIN OUTPUT_DIR
+    pvpython ofbClientPipeline.py PLUGIN OUTPUT_DIR --url cs://localhost:PORT
+    OFB_PIPELINE_ARGS="PLUGIN OUTPUT_DIR --gui" paraview --plugin-search-paths=PLUGIN_DIR \
+        --plugins=OFB --script=ofbClientPipeline.py --exit
 
-Without --url the script runs in pvbatch (builtin session, or the first rank of
-`mpiexec -np N pvbatch`). With --url it is a client: it connects to that pvserver and loads
-the plugin on the server (remote=True: the filters, the writer and the representation run
-there) and in this process (remote=False: the representation for the client's own
-rendering). The pipeline, on a sphere with a tangent field distributed by ParaView:
+- pvbatch (no --url, no --gui): the builtin session, or the first rank of
+  `mpiexec -np N pvbatch`; the plugin is loaded with LoadPlugin.
+- A client of a pvserver (--url): it connects, and loads the plugin on the server
+  (remote=True: the filters, the writer and the representation run there) and in this
+  process (remote=False: the representation for the client's own rendering).
+- The paraview GUI (--gui; its --script passes no arguments, so they come from
+  OFB_PIPELINE_ARGS): the plugin is the one the GUI loaded at startup (--plugins), the
+  view is the GUI's own render view, and the filters are registered where the Pipeline
+  Browser lists them.
+
+The pipeline, on a sphere with a tangent field distributed by ParaView:
 
     Sphere -> Calculator (Field) -> RedistributeDataSet -> ExtractSurface
            -> GhostCellsGenerator -> OFB Sampler -> OFB LIC -> OFB Paint Strokes (a band)
            -> OFB Particles (its OFB input: the painted OFB) -> OFB Probe (onto the mesh)
            -> shown as "OFB Surface" (the probe's input OFB: LIC, paint and footprints)
 
-It writes OUTPUT_DIR/values.json (what the server computed, fetched to this process),
-OUTPUT_DIR/ofb-surface.png (the view rendered where the data is: by the server in
-client-server mode) and, where the OFB writer is offered (one process), OUTPUT_DIR/
-ofb-cs-sphere.obj (+ .mtl, .png) and ofb-cs-sphere.gltf, written by the server. As a client
-it also renders the view on the client (local rendering: the server delivers the surface)
-and writes OUTPUT_DIR/ofb-surface-local.png, with the OFB Surface representation building
-its OFB and LIC from the delivered surface; pvbatch writes the same picture of the whole
-surface in one process as OUTPUT_DIR/ofb-surface-whole.png (on one process only).
-TestOFBClientServer.py runs both and compares.
+It writes OUTPUT_DIR/values.json (what was computed where the data is, fetched to this
+process), OUTPUT_DIR/ofb-surface.png (the view rendered where the data is: by the server
+in client-server mode) and, where the OFB writer is offered (one process), OUTPUT_DIR/
+ofb-cs-sphere.obj (+ .mtl, .png) and ofb-cs-sphere.gltf, written where the data is. As a
+client it also renders the view on the client (local rendering: the server delivers the
+surface) and writes OUTPUT_DIR/ofb-surface-local.png, with the OFB Surface representation
+building its OFB and LIC from the delivered surface; pvbatch and the GUI write the same
+picture of the whole surface in one process as OUTPUT_DIR/ofb-surface-whole.png (on one
+process only). TestOFBClients.py runs them and compares.
 """
 import argparse
 import json
 import os
+import shlex
 import sys
 
 import numpy as np
@@ -35,12 +44,15 @@ from paraview.simple import *
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 SIZE = 300
+OFB_FILTERS = ["OFBSampler", "OFBLIC", "OFBPaintStrokes", "OFBParticles", "OFBProbe"]
 
-parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+parser = argparse.ArgumentParser(description="The OFB plugin's pipeline for the client tests")
 parser.add_argument("plugin")
 parser.add_argument("output")
 parser.add_argument("--url", help="the pvserver to connect to (client-server mode)")
-args = parser.parse_args()
+parser.add_argument("--gui", action="store_true", help="run in the paraview GUI (--script)")
+argv = [a for a in sys.argv[1:] if a]
+args = parser.parse_args(argv if argv else shlex.split(os.environ.get("OFB_PIPELINE_ARGS", "")))
 os.makedirs(args.output, exist_ok=True)
 client = args.url is not None
 
@@ -49,6 +61,7 @@ def say(*what):
     print(*what, flush=True)
 
 
+values = {}
 if client:
     # cs://HOST:PORT: paraview.simple.Connect takes the host and the port.
     host, port = args.url.split("://", 1)[-1].rsplit(":", 1)
@@ -58,10 +71,25 @@ if client:
         "server processes")
     LoadPlugin(args.plugin, remote=True, ns=globals())
     LoadPlugin(args.plugin, remote=False, ns=globals())
+elif args.gui:
+    # What the GUI loaded at startup (--plugins) and shows under Filters > OFB.
+    plugins = servermanager.vtkSMProxyManager.GetProxyManager().GetPluginManager() \
+        .GetLocalInformation()
+    values["gui_plugins"] = sorted(
+        plugins.GetPluginFileName(i) for i in range(plugins.GetNumberOfPlugins())
+        if plugins.GetPluginLoaded(i) and plugins.GetPluginName(i) == "OFB")
+    values["gui_simple_functions"] = [name for name in OFB_FILTERS if name in globals()]
+    categories = {}
+    for name in OFB_FILTERS:
+        prototype = servermanager.ProxyManager().SMProxyManager.GetPrototypeProxy("filters", name)
+        hints = prototype.GetHints() if prototype else None
+        menu = hints.FindNestedElementByName("ShowInMenu") if hints else None
+        categories[name] = menu.GetAttribute("category") if menu else None
+    values["gui_menu_categories"] = categories
 else:
     LoadPlugin(args.plugin, ns=globals())
 ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
-values = {"ranks": ranks}
+values["ranks"] = ranks
 
 sphere = Sphere(ThetaResolution=128, PhiResolution=64, Radius=0.5)
 field = Calculator(Input=sphere, ResultArrayName="Field",
@@ -119,8 +147,9 @@ say("values:", json.dumps({key: value for key, value in values.items()
                            if key != "particle_ends"}))
 
 # The view: the probed mesh as OFB Surface, its colours from the OFB it carries.
-view = CreateView("RenderView")
-view.ViewSize = [SIZE, SIZE]
+view = GetActiveViewOrCreate("RenderView") if args.gui else CreateView("RenderView")
+if not args.gui:
+    view.ViewSize = [SIZE, SIZE]
 view.OrientationAxesVisibility = 0
 view.UseColorPaletteForBackground = 0
 view.Background = [0.0, 0.0, 0.0]
@@ -164,6 +193,13 @@ if client:
                    ImageResolution=[SIZE, SIZE])
 elif ranks == 1:
     Render(view)
+    if args.gui:
+        values["gui_representation_types"] = [
+            t for t in whole.GetProperty("RepresentationTypesInfo")[:] if t.startswith("OFB")]
+        # What the Pipeline Browser lists: the proxies registered as sources.
+        values["gui_sources"] = sorted(
+            name for (name, _), proxy in GetSources().items()
+            if proxy.GetXMLName() in OFB_FILTERS)
     SaveScreenshot(os.path.join(args.output, "ofb-surface-whole.png"), view,
                    ImageResolution=[SIZE, SIZE])
 
@@ -185,5 +221,5 @@ say("writer:", values["writer"])
 
 with open(os.path.join(args.output, "values.json"), "w") as stream:
     json.dump(values, stream, indent=1)
-say("ofbClientServerPipeline done:", "client of %s" % args.url if client else "pvbatch",
-    "on %d server processes" % ranks)
+say("ofbClientPipeline done:", "client of %s" % args.url if client else
+    "the paraview GUI" if args.gui else "pvbatch", "on %d server processes" % ranks)

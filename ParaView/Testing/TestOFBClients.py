@@ -311,6 +311,14 @@ finally:
     check(not left, "no process of %s left (left: %s)"
           % (" or ".join(process.name for process in processes), left))
 
+# No error from the server, the client or the GUI, but the one expected: on more than one
+# process ParaView's writer factory finds no writer for the .gltf (the OFB writer is not a
+# parallel writer).
+expected_error = "No matching writer found for extension: gltf"
+errors = [line for process in processes for line in process.lines
+          if "ERR|" in line and not (args.ranks > 1 and expected_error in line)]
+check(not errors, "no error printed: %s" % errors)
+
 # The values: the client's (computed on the server) against pvbatch's.
 with open(os.path.join(args.output, "values.json")) as stream:
     values = json.load(stream)

@@ -25,8 +25,11 @@ GUI loads the plugin at startup, runs the pipeline in its Python shell with its 
 view, and exits.
 
 Whatever still runs after its time (or when this script fails or is stopped) is ended with
-its process group and every process below it (SIGTERM, then SIGKILL); the test fails if a
-process is left. Then the results are compared with the pvbatch runs of the same script
+its process group and every process below it (SIGTERM, then SIGKILL). This script is the
+child subreaper of what it starts, so that processes orphaned below it (MPI ranks, Open
+MPI's daemon) stay in its view; what is still below it 10 s after the end is ended, and
+the test fails if anything was left. OFBPlugin.Clients.Stop checks this with a client that
+hangs (ofbHangingClient.py). Then the results are compared with the pvbatch runs of the same script
 (ctest's fixtures: `mpiexec -np N pvbatch` into --reference, one process into
 --whole-reference):
 - the values computed where the data is and fetched by the client (sample, particle,
@@ -148,6 +151,48 @@ def _stop(signum, frame):
 signal.signal(signal.SIGTERM, _stop)
 signal.signal(signal.SIGINT, _stop)
 
+# Processes orphaned below this one (an MPI rank whose mpiexec ended first) become its
+# children, so that they are found, ended and collected here (Linux's child subreaper).
+try:
+    import ctypes
+
+    PR_SET_CHILD_SUBREAPER = 36
+    ctypes.CDLL(None, use_errno=True).prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0)
+except (OSError, AttributeError):
+    pass
+
+
+def below(pid):
+    """The ids of the running processes below process `pid` (zombies are gone)."""
+    children = {}
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open("/proc/%s/stat" % entry) as stream:
+                fields = stream.read().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if fields[0] != "Z":
+            children.setdefault(int(fields[1]), []).append(int(entry))
+    found, todo = [], [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            found.append(child)
+            todo.append(child)
+    return found
+
+
+def collect_children():
+    """Collects the exit status of every ended child (the orphans adopted above)."""
+    while True:
+        try:
+            pid, _ = os.waitpid(-1, os.WNOHANG)
+        except ChildProcessError:
+            return
+        if pid == 0:
+            return
+
 
 class Process:
     """A process in a process group of its own, its output echoed with a prefix."""
@@ -191,23 +236,7 @@ class Process:
     def descendants(self):
         """The ids of the running processes below this one (mpiexec puts its ranks in
         process groups of their own)."""
-        children = {}
-        for entry in os.listdir("/proc"):
-            if not entry.isdigit():
-                continue
-            try:
-                with open("/proc/%s/stat" % entry) as stream:
-                    fields = stream.read().rsplit(")", 1)[1].split()
-            except OSError:
-                continue
-            if fields[0] != "Z":  # zombies are gone, waiting for their parent
-                children.setdefault(int(fields[1]), []).append(int(entry))
-        found, todo = [], [self.popen.pid]
-        while todo:
-            for child in children.get(todo.pop(), []):
-                found.append(child)
-                todo.append(child)
-        return found
+        return below(self.popen.pid)
 
     def alive(self):
         """The process ids left: the group's leader, its group, its descendants."""
@@ -230,12 +259,16 @@ class Process:
         return sorted(left)
 
     def stop(self):
-        """Ends the process, its group and every process below it."""
+        """Ends the process, its group and every process below it: first SIGTERM to the
+        group (mpiexec passes it on to its ranks and collects them), then SIGTERM to what is
+        left below it, then SIGKILL to all."""
         self.known = set(self.descendants()) if self.popen.poll() is None else set()
-        for sig, grace in ((signal.SIGTERM, 10.0), (signal.SIGKILL, 5.0)):
+        for sig, group_only, grace in ((signal.SIGTERM, True, 10.0),
+                                       (signal.SIGTERM, False, 5.0),
+                                       (signal.SIGKILL, False, 5.0)):
             if not self.alive():
                 break
-            for target in [-self.pgid] + [pid for pid in self.known]:
+            for target in [-self.pgid] + ([] if group_only else sorted(self.known)):
                 try:
                     if target < 0:
                         os.killpg(-target, sig)
@@ -265,7 +298,9 @@ def run_client_server():
     check(port > 0, "pvserver on %d processes accepts connections on port %d"
           % (args.ranks, port))
 
-    client = Process("pvpython", [args.pvpython, "--force-offscreen-rendering", args.pipeline,
+    # --no-mpi: a client needs no MPI (with it, Open MPI starts a daemon of its own).
+    client = Process("pvpython", [args.pvpython, "--no-mpi", "--force-offscreen-rendering",
+                                  args.pipeline,
                                   args.plugin, args.output,
                                   "--url", "cs://localhost:%d" % port])
     processes.append(client)
@@ -284,7 +319,7 @@ def run_gui():
     os.environ["OFB_PIPELINE_ARGS"] = " ".join(
         shlex.quote(a) for a in [args.plugin, args.output, "--gui"])
     os.environ["XDG_CONFIG_HOME"] = os.path.join(args.output, "config")
-    client = Process("paraview", [args.paraview, "--dr",
+    client = Process("paraview", [args.paraview, "--dr", "--no-mpi",
                                   "--plugin-search-paths=" + os.path.dirname(args.plugin),
                                   "--plugins=OFB", "--script=" + args.pipeline, "--exit"])
     processes.append(client)
@@ -307,9 +342,30 @@ try:
 finally:
     for process in reversed(processes):
         process.stop()
+    # What is still below this script (adopted orphans included) after a few seconds to end
+    # by itself is left over: ended too.
+    deadline = time.monotonic() + 10.0
+    while below(os.getpid()) and time.monotonic() < deadline:
+        collect_children()
+        time.sleep(0.2)
+    stray = below(os.getpid())
+    stray_names = {}
+    for pid in stray:
+        try:
+            with open("/proc/%d/cmdline" % pid, "rb") as stream:
+                stray_names[pid] = stream.read().replace(b"\0", b" ").decode(errors="replace")
+        except OSError:
+            stray_names[pid] = "?"
+    for pid in stray:
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+    time.sleep(0.5 if stray else 0.0)
+    collect_children()
     left = {process.name: process.alive() for process in processes if process.alive()}
-    check(not left, "no process of %s left (left: %s)"
-          % (" or ".join(process.name for process in processes), left))
+    check(not left and not stray, "no process of %s left (left: %s, below this script: %s)"
+          % (" or ".join(process.name for process in processes), left, stray_names or []))
 
 # No error from the server, the client or the GUI, but the one expected: on more than one
 # process ParaView's writer factory finds no writer for the .gltf (the OFB writer is not a

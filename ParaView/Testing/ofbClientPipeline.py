@@ -67,8 +67,8 @@ if client:
     host, port = args.url.split("://", 1)[-1].rsplit(":", 1)
     if Connect(host, int(port), timeout=30) is None:
         raise RuntimeError("no connection to the server at %s" % args.url)
-    say("connected to", args.url, "with", servermanager.ActiveConnection.GetNumberOfDataPartitions(),
-        "server processes")
+    say("connected to", args.url, "with",
+        servermanager.ActiveConnection.GetNumberOfDataPartitions(), "server processes")
     LoadPlugin(args.plugin, remote=True, ns=globals())
     LoadPlugin(args.plugin, remote=False, ns=globals())
 elif args.gui:

@@ -81,8 +81,10 @@ vtkPolyData* vtkOFBCompositeSurface::GetSurface(vtkCompositeDataSet* input)
   this->LastInput = input;
   this->BuildTime.Modified();
   this->Surface = vtkSmartPointer<vtkPolyData>::New();
-  if (!input)
+  if (!input || input->GetNumberOfCells() == 0)
   {
+    // Nothing to draw, and not an error: a piece without cells (a ParaView client that
+    // renders remotely holds empty blocks; a process of a distributed surface may).
     return this->Surface;
   }
   this->Merge->SetInputData(input);

@@ -125,15 +125,28 @@ if (VTKOFB_BUILD_TESTING)
       PROCESSORS 2
       TIMEOUT 900)
   endif ()
+  # The client tests (a pvserver of 1 and 2 processes with a pvpython client, and the
+  # paraview GUI, against pvbatch runs): one test here, as the clients compare with pvbatch.
+  if (MPIEXEC_EXECUTABLE)
+    add_test(
+      NAME    "OFB.ParaView.Clients"
+      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
+        -R "^OFBPlugin\\.Clients\\." --output-on-failure --no-tests=error)
+    set_tests_properties("OFB.ParaView.Clients" PROPERTIES
+      LABELS  "ParaView;MPI"
+      PROCESSORS 2
+      TIMEOUT 1200)
+  endif ()
   # The tests that render share xvfb-run's display with the other display tests
   # (docs/testing.md, "Tests that open windows"); their scripts keep a connection open.
   set(vtkofb_paraview_render_tests OFB.ParaView.Filters OFB.ParaView.Example
     OFB.ParaView.SurfaceRepresentation OFB.ParaView.SurfaceRepresentationExample
     OFB.ParaView.LICBenchmark)
-  if (TEST OFB.ParaView.Distributed)
-    list(APPEND vtkofb_paraview_render_tests OFB.ParaView.Distributed
-      OFB.ParaView.SurfaceDistributed OFB.ParaView.DistributedStrokes)
-  endif ()
+  foreach (vtkofb_test IN ITEMS Distributed SurfaceDistributed DistributedStrokes Clients)
+    if (TEST OFB.ParaView.${vtkofb_test})
+      list(APPEND vtkofb_paraview_render_tests OFB.ParaView.${vtkofb_test})
+    endif ()
+  endforeach ()
   set_property(TEST ${vtkofb_paraview_render_tests} APPEND PROPERTY
     RESOURCE_LOCK vtkofb_display)
   set_property(TEST ${vtkofb_paraview_render_tests} APPEND PROPERTY

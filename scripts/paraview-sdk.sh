@@ -69,20 +69,22 @@ if [ "$(cat "$SDK/version" 2>/dev/null || true)" != "$PV_VERSION" ] || [ ! -x "$
     ln -sfn "$entry" "$local_lib/vtk/hierarchy/"
   done
   ln -s "$SDK/python/usr/lib/python3" "$SDK/usr/lib/python3"
-  # pvpython and pvbatch with ParaView's Python: PYTHONPATH, and the libraries through
-  # the prefix's links, so that pvpython's search for its Python modules (relative to
-  # its libraries) finds the unpacked ones and not python3-vtk9's in /usr.
-  mkdir -p "$SDK/bin"
-  for tool in pvpython pvbatch; do
-    cat > "$SDK/bin/$tool" <<WRAPPER
+  echo "$PV_VERSION" > "$SDK/version"
+fi
+# pvpython, pvbatch and the paraview GUI with ParaView's Python: PYTHONPATH, and the
+# libraries through the prefix's links, so that their search for the Python modules
+# (relative to their libraries) finds the unpacked ones and not python3-vtk9's in /usr.
+# Written on every run (cheap), so that an unpacked prefix gets new wrappers too.
+mkdir -p "$SDK/bin"
+for tool in pvpython pvbatch paraview; do
+  [ -e "$SDK/usr/bin/$tool" ] || continue
+  cat > "$SDK/bin/$tool" <<WRAPPER
 #!/bin/sh
 # $tool with ParaView's Python unpacked in $SDK (scripts/paraview-sdk.sh).
 PYTHONPATH="$SDK/python/usr/lib/python3/dist-packages\${PYTHONPATH:+:\$PYTHONPATH}" \\
 LD_LIBRARY_PATH="$SDK/usr/lib/$MULTIARCH\${LD_LIBRARY_PATH:+:\$LD_LIBRARY_PATH}" \\
   exec "$SDK/usr/bin/$tool" "\$@"
 WRAPPER
-    chmod +x "$SDK/bin/$tool"
-  done
-  echo "$PV_VERSION" > "$SDK/version"
-fi
-echo "paraview-sdk.sh: ParaView $PV_VERSION's Python in $SDK/python; run $SDK/bin/pvpython or pvbatch"
+  chmod +x "$SDK/bin/$tool"
+done
+echo "paraview-sdk.sh: ParaView $PV_VERSION's Python in $SDK/python; run $SDK/bin/pvpython, pvbatch or paraview"

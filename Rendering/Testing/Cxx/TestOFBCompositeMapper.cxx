@@ -18,6 +18,7 @@
 #include "vtkOFBMapperTestHelpers.h"
 #include "vtkOFBPolyDataMapper.h"
 #include "vtkOFBTestUtilities.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -297,4 +298,22 @@ TEST(OFBCompositeMapper, CellPickerGivesTheBlockIndex)
     EXPECT_GT(p[2], 0.0);
     EXPECT_EQ(Patch(p), q + 1);
   }
+}
+
+TEST(OFBCompositeMapper, BlocksWithoutCellsGiveAnEmptySurfaceWithoutError)
+{
+  // A ParaView client that lets the server render holds the composite structure with empty
+  // blocks (and a process of a distributed surface may): nothing to draw, no error.
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(2);
+  blocks->SetBlock(0, vtkNew<vtkPolyData>());
+  vtkNew<vtkOFBPolyDataMapper> mapper;
+  mapper->SetInputDataObject(blocks);
+  vtkNew<vtkofbtest::MessageObserver> messages;
+  vtkOutputWindow::GetInstance()->AddObserver(vtkCommand::ErrorEvent, messages);
+  vtkPolyData* surface = mapper->GetRenderedSurface();
+  vtkOutputWindow::GetInstance()->RemoveObserver(messages);
+  ASSERT_NE(surface, nullptr);
+  EXPECT_EQ(surface->GetNumberOfCells(), 0);
+  EXPECT_EQ(messages->Errors, "");
 }

@@ -67,6 +67,7 @@ public:
    * update makes collective calls), whose levels' LICs must be computed on every process
    * at once: the caller updates the levels on every process, then calls
    * ComputeLevelLICs() on every process together (vtkOFBSurfaceRepresentation under MPI).
+   * Use it with FilterCacheSize 0: the cache would keep, and give back, the filtered LIC.
    * Default off: the levels' LICs are computed with the levels' arrays.
    */
   vtkSetMacro(DeferLevelLICs, bool);

@@ -237,6 +237,85 @@ vtkTypeUInt64 HashValues(vtkDataArray* array)
   return h ^ (h >> 29);
 }
 
+/**
+ * The sampler of the coarser levels: the box their frames are computed from is the one
+ * level 0's frame was computed from. That is the surface's bounds where they give level
+ * 0's frame (an OFB sampled from this surface); otherwise (a piece of a distributed
+ * surface sampled on the whole surface's frame, vtkOFBPSampler) the box is recovered from
+ * level 0's origin, dimensions and cell size, so that every piece's levels have the same
+ * frames when their level 0 has.
+ */
+class vtkOFBPyramidLevelSampler : public vtkOFBSampler
+{
+public:
+  static vtkOFBPyramidLevelSampler* New();
+  vtkTypeMacro(vtkOFBPyramidLevelSampler, vtkOFBSampler);
+
+  vtkOFB* Finest = nullptr;
+
+  /// The frame (origin, cell size, dimensions) that `b` gives at `resolution`, as
+  /// vtkOFBSampler::ComputeFrame computes it.
+  static void FrameOf(const double b[6],
+    int resolution,
+    double origin[3],
+    double& cellSize,
+    vtkIdType dims[3])
+  {
+    const double longest = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
+    cellSize = longest / (resolution - 2);
+    for (int a = 0; a < 3; ++a)
+    {
+      const double cells = std::ceil((b[2 * a + 1] - b[2 * a]) / cellSize - 1e-9);
+      dims[a] = std::max<vtkIdType>(1, static_cast<vtkIdType>(cells)) + 2;
+      origin[a] = 0.5 * (b[2 * a] + b[2 * a + 1]) - 0.5 * dims[a] * cellSize;
+    }
+  }
+
+protected:
+  vtkOFBPyramidLevelSampler() = default;
+  ~vtkOFBPyramidLevelSampler() override = default;
+
+  void GetFrameBounds(const double surfaceBounds[6], double bounds[6]) override
+  {
+    std::copy(surfaceBounds, surfaceBounds + 6, bounds);
+    if (!this->Finest || !(this->Finest->GetCellSize() > 0.0))
+    {
+      return;
+    }
+    const vtkIdType* d0 = this->Finest->GetDimensions();
+    const double* o0 = this->Finest->GetOrigin();
+    const double h0 = this->Finest->GetCellSize();
+    const vtkIdType finest = std::max({ d0[0], d0[1], d0[2] }) - 2;
+    double origin[3];
+    double h = 0.0;
+    vtkIdType dims[3];
+    FrameOf(surfaceBounds, static_cast<int>(finest) + 2, origin, h, dims);
+    bool same = std::abs(h - h0) <= 1e-9 * h0;
+    for (int a = 0; a < 3 && same; ++a)
+    {
+      same = dims[a] == d0[a] && std::abs(origin[a] - o0[a]) <= 1e-6 * h0;
+    }
+    if (same)
+    {
+      return;
+    }
+    // Level 0's box: its frame less the padding cell on each side, the longest side
+    // `finest` cells long.
+    for (int a = 0; a < 3; ++a)
+    {
+      const double centre = o0[a] + 0.5 * static_cast<double>(d0[a]) * h0;
+      const double half = 0.5 * static_cast<double>(d0[a] == finest + 2 ? finest : d0[a] - 2) * h0;
+      bounds[2 * a] = centre - half;
+      bounds[2 * a + 1] = centre + half;
+    }
+  }
+
+private:
+  vtkOFBPyramidLevelSampler(const vtkOFBPyramidLevelSampler&) = delete;
+  void operator=(const vtkOFBPyramidLevelSampler&) = delete;
+};
+vtkStandardNewMacro(vtkOFBPyramidLevelSampler);
+
 /// Mark the sorted samples `ids` of `ofb` modified, as at most 128 ranges (runs joined
 /// across their smallest gaps first), and the OFB Modified().
 void MarkRuns(vtkOFB* ofb, const std::vector<vtkIdType>& ids)
@@ -268,11 +347,13 @@ void MarkRuns(vtkOFB* ofb, const std::vector<vtkIdType>& ids)
 vtkStandardNewMacro(vtkOFBPyramid);
 vtkCxxSetObjectMacro(vtkOFBPyramid, InputOFB, vtkOFB);
 vtkCxxSetObjectMacro(vtkOFBPyramid, Surface, vtkPolyData);
+vtkCxxSetObjectMacro(vtkOFBPyramid, LevelSurface, vtkPolyData);
 
 //------------------------------------------------------------------------------
 vtkOFBPyramid::vtkOFBPyramid()
   : InputOFB(nullptr)
   , Surface(nullptr)
+  , LevelSurface(nullptr)
   , MaximumNumberOfLevels(8)
   , MinimumResolution(8)
   , FilterRadius(1.5)
@@ -286,6 +367,7 @@ vtkOFBPyramid::~vtkOFBPyramid()
 {
   this->SetInputOFB(nullptr);
   this->SetSurface(nullptr);
+  this->SetLevelSurface(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -320,14 +402,16 @@ bool vtkOFBPyramid::UpdateLevels()
   const bool rebuild = this->InputOFB != this->LastInputOFB ||
     this->InputOFB->GetStructureMTime() > this->StructureTime.GetMTime() ||
     this->GetMTime() > this->StructureTime.GetMTime() ||
-    (this->Surface && this->Surface->GetMTime() > this->StructureTime.GetMTime());
+    (this->Surface && this->Surface->GetMTime() > this->StructureTime.GetMTime()) ||
+    (this->LevelSurface && this->LevelSurface->GetMTime() > this->StructureTime.GetMTime());
   if (rebuild)
   {
     this->Levels.clear();
     this->States.clear();
     this->LastInputOFB = this->InputOFB;
     this->StructureTime.Modified();
-    if (this->MaximumNumberOfLevels > 1 && !this->Surface)
+    vtkPolyData* surface = this->LevelSurface ? this->LevelSurface : this->Surface;
+    if (this->MaximumNumberOfLevels > 1 && !surface)
     {
       vtkErrorMacro("UpdateLevels: no surface to sample the coarser levels from.");
       return false;
@@ -336,8 +420,9 @@ bool vtkOFBPyramid::UpdateLevels()
     // The sampler pads the frame by one cell on each side: halve the unpadded cells so
     // that the cell size doubles from level to level.
     const int finest = static_cast<int>(std::max({ dims[0], dims[1], dims[2] })) - 2;
-    vtkNew<vtkOFBSampler> sampler;
-    sampler->SetInputData(this->Surface);
+    vtkNew<vtkOFBPyramidLevelSampler> sampler;
+    sampler->Finest = this->InputOFB;
+    sampler->SetInputData(surface);
     sampler->UseInputColorsOff();
     sampler->PassPointArraysOff();
     for (int k = 1; k < this->MaximumNumberOfLevels; ++k)
@@ -641,6 +726,7 @@ void vtkOFBPyramid::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "InputOFB: " << this->InputOFB << "\n";
   os << indent << "Surface: " << this->Surface << "\n";
+  os << indent << "LevelSurface: " << this->LevelSurface << "\n";
   os << indent << "MaximumNumberOfLevels: " << this->MaximumNumberOfLevels << "\n";
   os << indent << "MinimumResolution: " << this->MinimumResolution << "\n";
   os << indent << "FilterRadius: " << this->FilterRadius << " cells\n";

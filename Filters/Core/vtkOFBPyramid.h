@@ -4,11 +4,13 @@
  *
  * vtkOFBPyramid builds the OFB mipmap hierarchy of the paper "Sample-based Surface
  * Coloring" (section 4.2). Level 0 is the OFB given with SetInputOFB (not copied).
- * Level k (k >= 1) samples the surface given with SetSurface with vtkOFBSampler at half
- * the resolution of level k-1, and every sample array of level k is computed from the
- * samples of level k-1 by distance-weighted averaging (Resample), so that colours are
- * low-pass filtered level by level. Levels stop at MinimumResolution cells on the longest
- * side or at MaximumNumberOfLevels.
+ * Level k (k >= 1) samples the surface given with SetSurface (or SetLevelSurface) with
+ * vtkOFBSampler at half the resolution of level k-1, on a frame derived from level 0's
+ * (the box level 0's frame was computed from: the same on every process where level 0's
+ * frame is, as for pieces sampled on the whole surface's frame by vtkOFBPSampler), and every sample
+ * array of level k is computed from the samples of level k-1 by distance-weighted averaging
+ * (Resample), so that colours are low-pass filtered level by level. Levels stop at
+ * MinimumResolution cells on the longest side or at MaximumNumberOfLevels.
  *
  * UpdateLevels() rebuilds the levels when the surface, the structure of level 0 or a
  * setting changed, and recomputes their arrays when level 0 was modified (its MTime)
@@ -65,6 +67,17 @@ public:
    */
   void SetSurface(vtkPolyData* surface);
   vtkGetObjectMacro(Surface, vtkPolyData);
+  ///@}
+
+  ///@{
+  /**
+   * The surface that the coarser levels sample instead of Surface, where set (default
+   * none): a piece of a distributed surface with its ghost cells, so that the levels have
+   * ghost samples as level 0 has, while a renderer sets Surface to the piece it draws
+   * (vtkOFBPolyDataMapper sets Surface at every render).
+   */
+  void SetLevelSurface(vtkPolyData* surface);
+  vtkGetObjectMacro(LevelSurface, vtkPolyData);
   ///@}
 
   ///@{
@@ -192,6 +205,7 @@ protected:
 
   vtkOFB* InputOFB;
   vtkPolyData* Surface;
+  vtkPolyData* LevelSurface;
   int MaximumNumberOfLevels;
   int MinimumResolution;
   double FilterRadius;

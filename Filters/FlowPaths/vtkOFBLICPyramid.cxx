@@ -2,12 +2,15 @@
 
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
+#include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBLIC.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkTimerLog.h"
 
+#include <algorithm>
+#include <cstring>
 #include <string>
 
 namespace
@@ -22,6 +25,8 @@ vtkCxxSetObjectMacro(vtkOFBLICPyramid, LIC, vtkOFBLIC);
 //------------------------------------------------------------------------------
 vtkOFBLICPyramid::vtkOFBLICPyramid()
   : LIC(nullptr)
+  , DeferLevelLICs(false)
+  , LevelLICsPending(false)
   , NumberOfLevelLICComputations(0)
   , LastLevelLICTime(0.0)
 {
@@ -88,20 +93,55 @@ void vtkOFBLICPyramid::ComputeLevelArrays(const std::set<std::string>* names)
   {
     return;
   }
+  if (this->DeferLevelLICs)
+  {
+    this->LevelLICsPending = true;
+    return;
+  }
+  this->RunLevelLICs(this->GetNumberOfLevels());
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLICPyramid::ComputeLevelLICs(int numberOfLevels)
+{
+  this->RunLevelLICs(numberOfLevels < 0 ? this->GetNumberOfLevels() : numberOfLevels);
+  // Outside the arrays' update: the levels' arrays changed now (all of them, for a
+  // renderer that uploads what changed).
+  this->ArraysTime.Modified();
+  this->AllArraysTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLICPyramid::RunLevelLICs(int levels)
+{
+  this->LevelLICsPending = false;
+  if (!this->LIC)
+  {
+    return;
+  }
   const double start = vtkTimerLog::GetUniversalTime();
-  const int levels = this->GetNumberOfLevels();
-  this->LevelLICs.resize(static_cast<size_t>(levels > 1 ? levels - 1 : 0));
+  const int own = this->GetNumberOfLevels();
+  vtkOFB* input = this->GetInputOFB();
+  // Where level 0 has no LIC (nor samples) this process only takes part.
+  const bool computed = input && input->GetSampleData()->GetArray(LICArrayNames[0]);
+  this->LevelLICs.resize(static_cast<size_t>(std::max(levels - 1, 0)));
+  vtkNew<vtkOFB> empty;
   for (int k = 1; k < levels; ++k)
   {
-    vtkOFB* level = this->GetLevel(k);
+    vtkOFB* level = computed && k < own ? this->GetLevel(k) : nullptr;
     vtkSmartPointer<vtkOFBLIC>& lic = this->LevelLICs[k - 1];
-    if (!lic)
+    if (!lic || strcmp(lic->GetClassName(), this->LIC->GetClassName()) != 0)
     {
-      lic = vtkSmartPointer<vtkOFBLIC>::New();
+      // The LIC's class: a distributed LIC gives distributed levels.
+      lic.TakeReference(this->LIC->NewInstance());
     }
     CopySettings(this->LIC, lic);
-    lic->SetInputData(level);
+    lic->SetInputData(level ? level : empty.Get());
     lic->Update();
+    if (!level)
+    {
+      continue;
+    }
     vtkOFB* out = lic->GetOutput();
     for (const char* name : LICArrayNames)
     {
@@ -130,6 +170,8 @@ void vtkOFBLICPyramid::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LIC: " << this->LIC << "\n";
+  os << indent << "DeferLevelLICs: " << (this->DeferLevelLICs ? "On" : "Off") << "\n";
+  os << indent << "LevelLICsPending: " << (this->LevelLICsPending ? "yes" : "no") << "\n";
   os << indent << "NumberOfLevelLICComputations: " << this->NumberOfLevelLICComputations << "\n";
   os << indent << "LastLevelLICTime: " << this->LastLevelLICTime << " s\n";
 }

@@ -11,9 +11,11 @@
  * LOOKUP_MIPMAPPED): seen from far, the display shows streaks about a pixel wide at any
  * zoom, as an image-space LIC does, and no line where the level changes.
  *
- * The LIC of every level runs a vtkOFBLIC with the settings of the one given with SetLIC
- * (normally the filter that computed level 0's LIC; it is not run here, its settings are
- * read at every computation), on the level's samples, whose field, normals and other
+ * The LIC of every level runs a LIC of the class of the one given with SetLIC (a
+ * vtkOFBPLIC gives vtkOFBPLIC levels: contrast stretches over every process's samples),
+ * with its settings (normally the filter that computed level 0's LIC; it is not run
+ * here, its settings are read at every computation; a vtkOFBPLIC level uses its default
+ * controller, the global one), on the level's samples, whose field, normals and other
  * arrays are level 0's filtered down (vtkOFBPyramid). Its "LIC" and "LICMask" replace the
  * filtered ones. They are computed when the levels' arrays are: when the levels are
  * rebuilt, and when level 0's "LIC" array changes (a new LIC, another AnimationPhase). Each
@@ -57,6 +59,38 @@ public:
   vtkGetObjectMacro(LIC, vtkOFBLIC);
   ///@}
 
+  ///@{
+  /**
+   * When on, the levels' LICs are left to ComputeLevelLICs(): UpdateLevels() and the
+   * arrays' updates filter the LIC down like any array and only record that the levels'
+   * LICs are pending (GetLevelLICsPending()). For a distributed LIC (vtkOFBPLIC, whose
+   * update makes collective calls), whose levels' LICs must be computed on every process
+   * at once: the caller updates the levels on every process, then calls
+   * ComputeLevelLICs() on every process together (vtkOFBSurfaceRepresentation under MPI).
+   * Use it with FilterCacheSize 0: the cache would keep, and give back, the filtered LIC.
+   * Default off: the levels' LICs are computed with the levels' arrays.
+   */
+  vtkSetMacro(DeferLevelLICs, bool);
+  vtkGetMacro(DeferLevelLICs, bool);
+  vtkBooleanMacro(DeferLevelLICs, bool);
+  ///@}
+
+  /**
+   * Whether the levels' LICs wait for ComputeLevelLICs() (DeferLevelLICs on, the levels'
+   * arrays computed since the last ComputeLevelLICs()).
+   */
+  vtkGetMacro(LevelLICsPending, bool);
+
+  /**
+   * Compute the LICs of levels 1 .. `numberOfLevels` - 1 now (-1: this pyramid's levels).
+   * A level that this pyramid lacks (a process whose piece is empty, or whose levels
+   * could not be built) runs its LIC on an empty OFB, so that a distributed LIC makes the
+   * same collective calls on every process: every process calls it with the same
+   * `numberOfLevels` (the largest of the processes' GetNumberOfLevels()). Clears
+   * LevelLICsPending; the levels' arrays count as recomputed (GetArraysTime()).
+   */
+  void ComputeLevelLICs(int numberOfLevels = -1);
+
   /**
    * How many times the LICs of the levels were computed since creation (each time all
    * coarser levels), for tests and benchmarks.
@@ -79,10 +113,15 @@ protected:
 
   void ComputeLevelArrays(const std::set<std::string>* names) override;
 
+  /// The LICs of levels 1 .. levels - 1 (ComputeLevelLICs without the arrays' times).
+  void RunLevelLICs(int levels);
+
   /// Copy the settings of `from` that compute a LIC into `to`.
   static void CopySettings(vtkOFBLIC* from, vtkOFBLIC* to);
 
   vtkOFBLIC* LIC;
+  bool DeferLevelLICs;
+  bool LevelLICsPending;
   std::vector<vtkSmartPointer<vtkOFBLIC>> LevelLICs; // levels 1..
   vtkIdType NumberOfLevelLICComputations;
   double LastLevelLICTime;

@@ -79,6 +79,13 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
     this->OFBMapper->SetOFBConnection(this->Sampler->GetOutputPort());
   }
   this->OFBMapper->GetColoring()->SetLICIntensity(0.8);
+  // Under MPI the levels' LICs are computed by every process together (SynchronizePyramid),
+  // and each process's levels are its own: no filter cache, whose hits differ per process.
+  if (this->OFBSource)
+  {
+    this->LICPyramid->DeferLevelLICsOn();
+    this->LICPyramid->SetFilterCacheSize(0);
+  }
 
   // Connects the new mapper to the actor, the selection and the backface actor.
   this->SetupDefaults();
@@ -216,6 +223,44 @@ void vtkOFBSurfaceRepresentation::SynchronizeOFB()
   if (this->OFBMapper->GetOFB() != ofb)
   {
     this->OFBMapper->SetOFB(ofb);
+  }
+  if (pyramid)
+  {
+    this->SynchronizePyramid(ofb);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::SynchronizePyramid(vtkOFB* ofb)
+{
+  // The levels as the mapper sets them at its render (vtkOFBShaderStorage::UpdateLevels),
+  // so that its render finds them up to date; their LICs (vtkOFBPLIC, deferred: collective
+  // calls) computed here by every process together, also one whose piece or levels are
+  // empty, whenever one of them needs them.
+  vtkOFBLICPyramid* pyramid = this->LICPyramid;
+  int local[2] = { 0, 0 };
+  if (ofb && ofb->GetNumberOfSamples() > 0 && this->OFBMapper->GetRenderedSurface())
+  {
+    pyramid->SetInputOFB(ofb);
+    pyramid->SetSurface(this->OFBMapper->GetRenderedSurface());
+    // The levels sample what level 0 sampled: the input with its ghost cells where the
+    // sampler reads it, so that their LICs read across the piece borders too.
+    vtkPolyData* ghosted = vtkPolyData::SafeDownCast(this->GhostedInput);
+    pyramid->SetLevelSurface(
+      ghosted && this->Sampler->GetInputDataObject(0, 0) == ghosted ? ghosted : nullptr);
+    pyramid->SetMaximumNumberOfLevels(this->OFBMapper->GetMaximumNumberOfMipmapLevels());
+    pyramid->SetMinimumResolution(this->OFBMapper->GetMinimumMipmapResolution());
+    if (pyramid->UpdateLevels())
+    {
+      local[0] = pyramid->GetLevelLICsPending() ? 1 : 0;
+      local[1] = pyramid->GetNumberOfLevels();
+    }
+  }
+  int global[2] = { 0, 0 };
+  this->Sampler->GetController()->AllReduce(local, global, 2, vtkCommunicator::MAX_OP);
+  if (global[0])
+  {
+    pyramid->ComputeLevelLICs(global[1]);
   }
 }
 

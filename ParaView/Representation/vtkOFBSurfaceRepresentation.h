@@ -52,8 +52,11 @@
  * surface it delivers: where the input is polygonal with ghost cells (GhostCellsGenerator
  * upstream) and the delivered surface has the input's owned cells, the input itself is
  * sampled, ghost cells included, so that the LIC reads across the piece borders; the
- * representation does not ask for ghost cells. The coarser levels of the mapper's pyramid
- * are still sampled from each process's rendered piece. GetOFBFrame() (the information
+ * representation does not ask for ghost cells. The coarser levels of the mapper's LIC
+ * pyramid (the Automatic lookup's) are sampled from each process's rendered piece on
+ * frames derived from level 0's, the same on every process, and their LICs are
+ * vtkOFBPLIC runs (global contrast stretches) computed here on every process together
+ * (SynchronizePyramid), not by the mapper. GetOFBFrame() (the information
  * property OFBFrame) gives the frame of the OFB rendered.
  *
  * The level-of-detail mapper (ParaView's decimated surface while interacting with a
@@ -256,6 +259,14 @@ protected:
    * processes together, never by the mapper of one alone.
    */
   void SynchronizeOFB();
+
+  /**
+   * Under MPI, with the LIC pyramid: brings the pyramid's levels of `ofb` up to date as the
+   * mapper's render would, then computes the levels' LICs (vtkOFBPLIC, collective calls)
+   * on every process together, with the largest number of levels of any process, where
+   * any process needs them (vtkOFBLICPyramid::DeferLevelLICs).
+   */
+  void SynchronizePyramid(vtkOFB* ofb);
 
   /**
    * Whether `algorithm`'s output is older than the algorithm or its inputs (the update

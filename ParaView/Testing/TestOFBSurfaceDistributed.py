@@ -13,9 +13,9 @@ RedistributeDataSet, GhostCellsGenerator adds ghost cells, and the surface is sh
 the "OFB Surface" representation and its LIC (blended with the solid colour). ParaView
 composites the pieces' images (IceT). Then the same surface carries an OFB: OFB Probe's,
 of OFB Sampler and OFB LIC (the distributed filters), shown as it is by the
-representation. Written to DIR: surface-N.png (the LIC), probe-N.png (the input OFB's
-LIC), pieces-N.png (the pieces, each in its own colour) and surface-N.json (every
-process's OFB frames).
+representation. Written to DIR: surface-N.png (the LIC), far-N.png (the same from
+farther), probe-N.png (the input OFB's LIC), pieces-N.png (the pieces, each in its own
+colour) and surface-N.json (every process's OFB frames).
 
 The one-process run is the reference; on N > 1 processes the driver checks:
 
@@ -25,7 +25,11 @@ The one-process run is the reference; on N > 1 processes the driver checks:
   LIC image tests) against the one-process images;
 - (c) no seam: the mean |difference| from the one-process image within SEAM_BAND pixels
   of the piece borders is at most SEAM_TOLERANCE levels (of 255) above that elsewhere on
-  the surface.
+  the surface;
+- (d) the pyramid's coarser levels, which the default lookup (Automatic: Smooth for a LIC)
+  reads where a pixel covers more than a cell: the mean |difference| from the one-process
+  image on the silhouette ring that (c) leaves out, and over the whole surface in a view
+  FAR_SCALE times farther (far-N.png), are at most LEVELS_TOLERANCE levels (of 255).
 
 With --empty-last the last process's piece is emptied after the distribution (a
 programmable filter): the run must not hang (every process takes part in the collective
@@ -43,6 +47,8 @@ STEPS = 10
 GHOST_LAYERS = 8
 SEAM_BAND = 3
 SEAM_TOLERANCE = 2.0
+FAR_SCALE = 4.0
+LEVELS_TOLERANCE = 9.0
 
 
 def render(plugin, out_dir, empty_last):
@@ -105,6 +111,13 @@ else:
     display.SelectOFBInputVectors = ["POINTS", "Field"]
     display.OFBNumberOfSteps = STEPS
     SaveScreenshot(os.path.join(out_dir, name + ".png"), view, ImageResolution=[SIZE, SIZE])
+    # Far: the sphere FAR_SCALE times smaller, where the Smooth lookup reads the pyramid's
+    # coarser levels everywhere.
+    near = list(view.CameraPosition)
+    view.CameraPosition = [FAR_SCALE * c for c in near]
+    SaveScreenshot(os.path.join(out_dir, "far-" + name[len("surface-"):] + ".png"), view,
+                   ImageResolution=[SIZE, SIZE])
+    view.CameraPosition = near
 
     def frames_of(shown):
         """Every process's OFB frame of `shown`, on every process (each fills its row)."""
@@ -325,6 +338,22 @@ def drive(argv):
           "(c) no seam: mean |difference| from one process %.2f at the piece borders, %.2f "
           "elsewhere (at most %.1f more at the borders)" % (band_mean, rest_mean,
                                                           SEAM_TOLERANCE))
+
+    # (d) The coarser levels (the Smooth lookup of the default Automatic one): the ring of
+    # the silhouette that (c) leaves out, and the far view, where every pixel reads them.
+    whole = (lic.max(axis=2) > 2) | (lic_one.max(axis=2) > 2)
+    ring = whole & ~mask
+    far = pixels(read_png(os.path.join(out_dir, "far-%d.png" % count))).mean(axis=2)
+    far_one = pixels(read_png(os.path.join(out_dir, "far-1.png"))).mean(axis=2)
+    far_mask = (far > 2) | (far_one > 2)
+    ring_mean = grey[ring].mean() if ring.any() else 0.0
+    far_mean = np.abs(far - far_one)[far_mask].mean() if far_mask.any() else 0.0
+    check(ring.sum() > 100 and far_mask.sum() > 100, "the silhouette ring has %d pixels, the "
+          "far view %d" % (ring.sum(), far_mask.sum()))
+    check(ring_mean <= LEVELS_TOLERANCE and far_mean <= LEVELS_TOLERANCE,
+          "(d) the pyramid's levels: mean |difference| from one process %.2f on the "
+          "silhouette ring, %.2f in the far view (at most %.1f)"
+          % (ring_mean, far_mean, LEVELS_TOLERANCE))
     if failures:
         raise SystemExit("%d check(s) failed on %d ranks" % (len(failures), count))
     print("all surface checks passed on %d ranks" % count)

@@ -1,13 +1,16 @@
 // GoogleTest units of vtkOFBLICPyramid: the coarser levels hold a LIC computed on their own
 // samples (streaks as wide as their cells, full contrast) instead of level 0's filtered
 // down (grey), with the LIC's settings; a new phase computes them again; values painted in
-// place leave them as they are; without a LIC it is a plain vtkOFBPyramid.
+// place leave them as they are; without a LIC it is a plain vtkOFBPyramid; deferred
+// (DeferLevelLICs) they are the direct ones; the levels' frames follow level 0's.
 #include "vtkOFB.h"
 #include "vtkOFBLIC.h"
 #include "vtkOFBLICPyramid.h"
 #include "vtkOFBLICTestHelpers.h"
 #include "vtkOFBPyramid.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
@@ -185,5 +188,91 @@ TEST(OFBLICPyramid, WithoutALICItFilters)
   for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
   {
     ASSERT_EQ(a->GetComponent(i, 0), b->GetComponent(i, 0));
+  }
+}
+
+TEST(OFBLICPyramid, DeferredLevelLICsAreTheDirectOnes)
+{
+  Square square;
+  vtkOFB* level0 = square.LIC->GetOutput();
+  vtkNew<vtkOFBLICPyramid> direct;
+  vtkNew<vtkOFBLICPyramid> deferred;
+  deferred->DeferLevelLICsOn();
+  for (vtkOFBLICPyramid* p : { direct.GetPointer(), deferred.GetPointer() })
+  {
+    p->SetInputOFB(level0);
+    p->SetSurface(square.Surface);
+    p->SetMaximumNumberOfLevels(3);
+    p->SetLIC(square.LIC);
+    ASSERT_TRUE(p->UpdateLevels());
+  }
+  EXPECT_EQ(direct->GetNumberOfLevelLICComputations(), 1);
+  EXPECT_FALSE(direct->GetLevelLICsPending());
+  // Deferred: the levels hold the filtered LIC until ComputeLevelLICs.
+  EXPECT_EQ(deferred->GetNumberOfLevelLICComputations(), 0);
+  EXPECT_TRUE(deferred->GetLevelLICsPending());
+  const vtkMTimeType before = deferred->GetArraysTime();
+  // More levels than it has (another process's count): the extra ones run on nothing.
+  deferred->ComputeLevelLICs(5);
+  EXPECT_FALSE(deferred->GetLevelLICsPending());
+  EXPECT_EQ(deferred->GetNumberOfLevelLICComputations(), 1);
+  EXPECT_GT(deferred->GetArraysTime(), before);
+  EXPECT_GT(deferred->GetAllArraysTime(), before);
+  ASSERT_EQ(deferred->GetNumberOfLevels(), 3);
+  for (int k = 1; k < 3; ++k)
+  {
+    vtkDataArray* a = direct->GetLevel(k)->GetSampleData()->GetArray("LIC");
+    vtkDataArray* b = deferred->GetLevel(k)->GetSampleData()->GetArray("LIC");
+    ASSERT_NE(b, nullptr);
+    ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+    {
+      ASSERT_EQ(a->GetComponent(i, 0), b->GetComponent(i, 0)) << "level " << k << " sample " << i;
+    }
+  }
+  // Nothing pending after an update without change.
+  ASSERT_TRUE(deferred->UpdateLevels());
+  EXPECT_FALSE(deferred->GetLevelLICsPending());
+}
+
+TEST(OFBLICPyramid, LevelFramesFollowLevelZerosFrame)
+{
+  // Level 0 sampled on the whole square; the levels sample its left half (a piece of a
+  // distributed surface): their frames are those of the whole square's levels.
+  Square square;
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-1.0, -1.0, 0.0);
+  plane->SetPoint1(0.0, -1.0, 0.0);
+  plane->SetPoint2(-1.0, 1.0, 0.0);
+  plane->SetResolution(100, 200);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(plane->GetOutputPort());
+  triangles->Update();
+  const double x[3] = { 1.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkPolyData> half =
+    vtkofbtest::WithField(triangles->GetOutput(), vtkofbtest::UniformField(x));
+  vtkNew<vtkOFBPyramid> whole;
+  vtkNew<vtkOFBPyramid> piece;
+  for (vtkOFBPyramid* p : { whole.GetPointer(), piece.GetPointer() })
+  {
+    p->SetInputOFB(square.OFB);
+    p->SetSurface(p == whole.GetPointer() ? square.Surface.Get() : half.Get());
+    p->SetMaximumNumberOfLevels(4);
+    ASSERT_TRUE(p->UpdateLevels());
+  }
+  ASSERT_EQ(piece->GetNumberOfLevels(), whole->GetNumberOfLevels());
+  for (int k = 1; k < whole->GetNumberOfLevels(); ++k)
+  {
+    vtkOFB* a = whole->GetLevel(k);
+    vtkOFB* b = piece->GetLevel(k);
+    EXPECT_NEAR(b->GetCellSize(), a->GetCellSize(), 1e-12 * a->GetCellSize()) << "level " << k;
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(b->GetOrigin()[c], a->GetOrigin()[c], 1e-9 * a->GetCellSize()) << "level " << k;
+      EXPECT_EQ(b->GetDimensions()[c], a->GetDimensions()[c]) << "level " << k;
+    }
+    // The piece's samples are the whole's on the left half.
+    EXPECT_GT(b->GetNumberOfSamples(), a->GetNumberOfSamples() / 3) << "level " << k;
+    EXPECT_LT(b->GetNumberOfSamples(), 2 * a->GetNumberOfSamples() / 3) << "level " << k;
   }
 }

@@ -133,8 +133,6 @@ struct Pipeline
       return out;
     }
     vtkPointData* pd = painted->GetSampleData();
-    auto* ghosts =
-      vtkUnsignedCharArray::SafeDownCast(pd->GetArray(vtkDataSetAttributes::GhostArrayName()));
     vtkDataArray* height = pd->GetArray("Height");
     vtkDataArray* normals = pd->GetArray(vtkOFB::NormalsArrayName());
     vtkDataArray* lic = pd->GetArray("LIC");
@@ -145,21 +143,14 @@ struct Pipeline
       std::printf("rank %d: a sample array is missing\n", rank);
       return out;
     }
-    const vtkTypeUInt32* offsets = painted->GetCellOffsets()->GetPointer(0);
-    const float* depths = painted->GetDepths()->GetPointer(0);
-    for (vtkIdType c = 0; c < painted->GetNumberOfCells(); ++c)
-    {
-      for (vtkIdType i = offsets[c]; i < offsets[c + 1]; ++i)
+    vtkofbtest::ForEachOwnedSample(painted,
+      [&](vtkIdType c, vtkIdType i, float depth)
       {
-        if (ghosts && ghosts->GetValue(i))
-        {
-          continue;
-        }
         double nrm[3], rgba[4];
         normals->GetTuple(i, nrm);
         colors->GetTuple(i, rgba);
         const double row[Fields] = { static_cast<double>(c),
-          depths[i],
+          depth,
           height->GetTuple1(i),
           nrm[0],
           nrm[1],
@@ -172,8 +163,7 @@ struct Pipeline
           rgba[3],
           static_cast<double>(rank) };
         out.insert(out.end(), row, row + Fields);
-      }
-    }
+      });
     return out;
   }
 
@@ -376,9 +366,7 @@ bool RunBadInput(vtkMultiProcessController* controller, int pieces)
 
 int main(int argc, char* argv[])
 {
-  vtkNew<vtkMPIController> controller;
-  controller->Initialize(&argc, &argv);
-  vtkMultiProcessController::SetGlobalController(controller);
+  vtkSmartPointer<vtkMPIController> controller = vtkofbtest::StartMPI(&argc, &argv);
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
   const int pieces =

@@ -104,27 +104,19 @@ Result Collect(vtkOFBPParticleAdvector* advector)
   {
     return result;
   }
-  auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
-    ofb->GetSampleData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
   vtkDataArray* colors = ofb->GetSampleData()->GetArray(vtkOFB::ColorsArrayName());
-  const vtkTypeUInt32* offsets = ofb->GetCellOffsets()->GetPointer(0);
-  const float* depths = ofb->GetDepths()->GetPointer(0);
-  for (vtkIdType c = 0; colors && c < ofb->GetNumberOfCells(); ++c)
+  if (!colors)
   {
-    for (vtkIdType i = offsets[c]; i < offsets[c + 1]; ++i)
+    return result;
+  }
+  vtkofbtest::ForEachOwnedSample(ofb,
+    [&](vtkIdType c, vtkIdType i, float depth)
     {
-      if (ghosts && ghosts->GetValue(i))
-      {
-        continue;
-      }
       double rgba[4];
       colors->GetTuple(i, rgba);
-      const double row[6] = {
-        static_cast<double>(c), depths[i], rgba[0], rgba[1], rgba[2], rgba[3]
-      };
+      const double row[6] = { static_cast<double>(c), depth, rgba[0], rgba[1], rgba[2], rgba[3] };
       result.Samples.insert(result.Samples.end(), row, row + 6);
-    }
-  }
+    });
   return result;
 }
 
@@ -336,9 +328,7 @@ int Compare(vtkMultiProcessController* controller,
 
 int main(int argc, char* argv[])
 {
-  vtkNew<vtkMPIController> controller;
-  controller->Initialize(&argc, &argv);
-  vtkMultiProcessController::SetGlobalController(controller);
+  vtkSmartPointer<vtkMPIController> controller = vtkofbtest::StartMPI(&argc, &argv);
   const int rank = controller->GetLocalProcessId();
   vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::MakeSwirlSphere(true);
   vtkSmartPointer<vtkPolyData> seeds = MakeSeeds(40);

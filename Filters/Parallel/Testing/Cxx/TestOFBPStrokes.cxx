@@ -28,6 +28,7 @@
 #include "vtkOFBBrush.h"
 #include "vtkOFBPPaintFilter.h"
 #include "vtkOFBPSampler.h"
+#include "vtkOFBPTestSupport.h"
 #include "vtkOFBPainter.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -170,8 +171,6 @@ struct Pipeline
       return out;
     }
     vtkPointData* pd = painted->GetSampleData();
-    auto* ghosts =
-      vtkUnsignedCharArray::SafeDownCast(pd->GetArray(vtkDataSetAttributes::GhostArrayName()));
     vtkDataArray* colors = pd->GetArray(vtkOFB::ColorsArrayName());
     vtkDataArray* before =
       this->Sampler->GetOutput()->GetSampleData()->GetArray(vtkOFB::ColorsArrayName());
@@ -180,31 +179,23 @@ struct Pipeline
       std::printf("rank %d: no colours\n", rank);
       return out;
     }
-    const vtkTypeUInt32* offsets = painted->GetCellOffsets()->GetPointer(0);
-    const float* depths = painted->GetDepths()->GetPointer(0);
-    for (vtkIdType c = 0; c < painted->GetNumberOfCells(); ++c)
-    {
-      for (vtkIdType i = offsets[c]; i < offsets[c + 1]; ++i)
+    vtkofbtest::ForEachOwnedSample(painted,
+      [&](vtkIdType c, vtkIdType i, float depth)
       {
-        if (ghosts && ghosts->GetValue(i))
-        {
-          continue;
-        }
         double rgba[4], unpainted[4];
         colors->GetTuple(i, rgba);
         before->GetTuple(i, unpainted);
-        const bool painted = !std::equal(rgba, rgba + 4, unpainted);
+        const bool changed = !std::equal(rgba, rgba + 4, unpainted);
         const double row[Fields] = { static_cast<double>(c),
-          depths[i],
+          depth,
           rgba[0],
           rgba[1],
           rgba[2],
           rgba[3],
-          painted ? 1.0 : 0.0,
+          changed ? 1.0 : 0.0,
           static_cast<double>(rank) };
         out.insert(out.end(), row, row + Fields);
-      }
-    }
+      });
     return out;
   }
 };
@@ -323,31 +314,15 @@ bool RunBadInput(vtkMultiProcessController* controller, int pieces, vtkPolyData*
 
 int main(int argc, char* argv[])
 {
-  vtkNew<vtkMPIController> controller;
-  controller->Initialize(&argc, &argv);
-  vtkMultiProcessController::SetGlobalController(controller);
+  vtkSmartPointer<vtkMPIController> controller = vtkofbtest::StartMPI(&argc, &argv);
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
-  bool emptyLast = false;
-  bool badInput = false;
-  for (int i = 1; i < argc; ++i)
-  {
-    emptyLast = emptyLast || !std::strcmp(argv[i], "--empty-last");
-    badInput = badInput || !std::strcmp(argv[i], "--bad-input");
-  }
-  const int pieces = emptyLast && size > 1 ? size - 1 : size;
+  const int pieces =
+    vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));
   vtkSmartPointer<vtkPolyData> pipe = MakePipe();
-  if (badInput)
+  if (vtkofbtest::HasFlag(argc, argv, "--bad-input"))
   {
-    int ok = RunBadInput(controller, pieces, pipe) ? 1 : 0;
-    int all = 0;
-    controller->AllReduce(&ok, &all, 1, vtkCommunicator::MIN_OP);
-    if (rank == 0)
-    {
-      std::printf("%s\n", all ? "PASS" : "FAIL");
-    }
-    controller->Finalize();
-    return all ? 0 : 1;
+    return vtkofbtest::FinishAll(controller, RunBadInput(controller, pieces, pipe));
   }
   vtkSmartPointer<vtkPolyData> strokes = MakeStrokes();
   vtkNew<vtkPolyData> none;
@@ -379,18 +354,7 @@ int main(int argc, char* argv[])
   controller->AllReduce(&reductions, &most, 1, vtkCommunicator::MAX_OP);
   const bool walked = fewest == most && (size == 1 ? most == 0 : most >= 9);
 
-  std::vector<vtkIdType> counts(size), offsets(size);
-  const vtkIdType count = static_cast<vtkIdType>(owned.size());
-  controller->Gather(&count, counts.data(), 1, 0);
-  vtkIdType total = 0;
-  for (int r = 0; r < size; ++r)
-  {
-    offsets[r] = total;
-    total += counts[r];
-  }
-  std::vector<double> gathered(rank == 0 ? std::max<vtkIdType>(total, 1) : 1);
-  controller->GatherV(owned.data(), gathered.data(), count, counts.data(), offsets.data(), 0);
-  gathered.resize(rank == 0 ? total : 0);
+  const std::vector<double> gathered = vtkofbtest::GatherOnFirst(controller, owned);
 
   int ok = walked ? 1 : 0;
   if (!walked && rank == 0)
@@ -407,7 +371,5 @@ int main(int argc, char* argv[])
     ok = Compare(gathered, whole.Owned(0), size, pieces) && ok ? 1 : 0;
     std::printf("%s\n", ok ? "PASS" : "FAIL");
   }
-  controller->Broadcast(&ok, 1, 0);
-  controller->Finalize();
-  return ok ? 0 : 1;
+  return vtkofbtest::FinishFirst(controller, ok);
 }

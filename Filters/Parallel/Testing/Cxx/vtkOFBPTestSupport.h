@@ -5,13 +5,18 @@
 #define vtkOFBPTestSupport_h
 
 #include "vtkCommunicator.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
+#include "vtkMPIController.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
+#include "vtkOFB.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkTypeUInt32Array.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -48,6 +53,36 @@ inline vtkSmartPointer<vtkPolyData> MakeSwirlSphere(bool normals)
   }
   mesh->GetPointData()->SetVectors(field);
   return mesh;
+}
+
+/// The MPI controller of a test's main, initialized and made the global one.
+inline vtkSmartPointer<vtkMPIController> StartMPI(int* argc, char*** argv)
+{
+  auto controller = vtkSmartPointer<vtkMPIController>::New();
+  controller->Initialize(argc, argv);
+  vtkMultiProcessController::SetGlobalController(controller);
+  return controller;
+}
+
+/// Calls visit(cell, sample, depth) for every sample of `ofb` that is not a ghost, cell by
+/// cell and in each cell in depth order.
+template<typename Visit>
+void ForEachOwnedSample(vtkOFB* ofb, Visit&& visit)
+{
+  auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
+    ofb->GetSampleData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  const vtkTypeUInt32* offsets = ofb->GetCellOffsets()->GetPointer(0);
+  const float* depths = ofb->GetDepths()->GetPointer(0);
+  for (vtkIdType c = 0; c < ofb->GetNumberOfCells(); ++c)
+  {
+    for (vtkIdType i = offsets[c]; i < offsets[c + 1]; ++i)
+    {
+      if (!ghosts || !ghosts->GetValue(i))
+      {
+        visit(c, i, depths[i]);
+      }
+    }
+  }
 }
 
 /// Whether the command line has `flag`.

@@ -1,8 +1,6 @@
 #include "vtkOFBTexturedMeshWriter.h"
 
-#include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
-#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
@@ -13,10 +11,12 @@
 #include "vtkImageShiftScale.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkOBJWriter.h"
 #include "vtkOFB.h"
+#include "vtkOFBMergeBlocks.h"
 #include "vtkOFBParaViewProbe.h"
 #include "vtkOFBStagedFiles.h"
 #include "vtkOFBTextureAtlas.h"
@@ -211,11 +211,13 @@ vtkSmartPointer<vtkPolyData> MakeShare(vtkPolyData* input, vtkOFB* ofb)
   return share;
 }
 
-/// The pieces of every process's share as one mesh: appended, points at exactly the same
-/// coordinates merged, without field data.
+/// The pieces of every process's share as one mesh, in the order of the processes: the
+/// points of a piece at exactly the coordinates of a point of an earlier piece merged with
+/// it (vtkOFBMergeBlocks; points of one piece are never merged with each other), without
+/// field data.
 vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkDataObject>>& shares)
 {
-  vtkNew<vtkAppendPolyData> append;
+  vtkNew<vtkMultiBlockDataSet> blocks;
   for (const auto& object : shares)
   {
     auto piece = vtkPolyData::SafeDownCast(object);
@@ -224,24 +226,20 @@ vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkDa
       auto mesh = vtkSmartPointer<vtkPolyData>::New();
       mesh->ShallowCopy(piece);
       mesh->SetFieldData(nullptr);
-      append->AddInputData(mesh);
+      blocks->SetBlock(blocks->GetNumberOfBlocks(), mesh);
     }
   }
   auto merged = vtkSmartPointer<vtkPolyData>::New();
-  if (append->GetNumberOfInputConnections(0) == 0)
+  if (blocks->GetNumberOfBlocks() == 0)
   {
     return merged;
   }
-  vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputConnection(append->GetOutputPort());
-  clean->PointMergingOn();
-  clean->ToleranceIsAbsoluteOn();
-  clean->SetAbsoluteTolerance(0.0);
-  clean->ConvertLinesToPointsOff();
-  clean->ConvertPolysToLinesOff();
-  clean->ConvertStripsToPolysOff();
-  clean->Update();
-  merged->ShallowCopy(clean->GetOutput());
+  vtkNew<vtkOFBMergeBlocks> merge;
+  merge->SetInputData(blocks);
+  merge->MergePointsOn();
+  merge->Update();
+  merged->ShallowCopy(merge->GetOutput());
+  merged->GetCellData()->RemoveArray(vtkOFBMergeBlocks::BlockIndexArrayName());
   return merged;
 }
 

@@ -30,14 +30,16 @@
  * OFB with that piece's samples on the frame common to all pieces, vtkOFBPSampler):
  * every process sends its piece without ghost cells, and its OFB's owned samples (those
  * with a zero "vtkGhostType" sample value), to the first process (one gather). There the
- * pieces are appended and the points at exactly the same coordinates merged
- * (vtkCleanPolyData, tolerance 0), the samples put together cell by cell in order of
- * depth (the order one process has them), and the file set is baked and written as one
- * process writes it; the other processes write nothing. Every process takes part, also
- * with an empty piece, and every process ends with the same result: the same error code
- * and WrittenTextureSize. The mesh's cells come in the order of the pieces, so the atlas
- * (and with it the texture's layout) may differ from one process's, while the mesh and
- * the colour each cell gets are the same.
+ * pieces are appended and the points of a piece at exactly the coordinates of a point of
+ * an earlier piece merged with it (vtkOFBMergeBlocks), the samples put together cell by
+ * cell in order of depth (the order one process has them), and the file set is baked and
+ * written as one process writes it; the other processes write nothing. Every process
+ * takes part, also with an empty piece, and every process ends with the same result: the
+ * same error code and WrittenTextureSize. The mesh's cells come in the order of the
+ * pieces, so the files list them in another order than one process's; the mesh and the
+ * colour each cell gets are the same. Pieces whose border points are not at exactly the
+ * same coordinates keep them apart (no tolerance; points of one piece are never merged
+ * with each other, so a mesh's own seams stay).
  *
  * @sa vtkOFBTextureBaker vtkOFBTextureAtlas vtkOFBParaViewProbe vtkOFBStagedFiles
  */

@@ -26,8 +26,8 @@ process compares its files with them:
 - the .mtl: one process's, byte for byte;
 - the .gltf: one mesh, the same number of vertices and indices as one process's, the
   texture embedded as a PNG.
-The bytes themselves may differ: the pieces' cells come in another order than one
-process's, and the atlas of charts (the texture's layout) follows the order of the cells.
+The .obj and .gltf bytes differ from one process's: they list the cells in the order of
+the pieces. The script prints which files are byte-equal.
 """
 import base64
 import json

@@ -244,8 +244,10 @@ vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkDa
 }
 
 /// Every process's owned samples as one OFB on their common frame, the samples of each
-/// grid cell in order of depth (ties in the order of the processes); null without a frame.
-vtkSmartPointer<vtkOFB> MergeSamples(const std::vector<vtkSmartPointer<vtkDataObject>>& shares)
+/// grid cell in order of depth (ties in the order of the processes); null without a frame,
+/// and null with `problem` set when the processes' frames differ.
+vtkSmartPointer<vtkOFB> MergeSamples(const std::vector<vtkSmartPointer<vtkDataObject>>& shares,
+  std::string& problem)
 {
   double origin[3] = { 0, 0, 0 };
   double cellSize = 0.0;
@@ -275,6 +277,18 @@ vtkSmartPointer<vtkOFB> MergeSamples(const std::vector<vtkSmartPointer<vtkDataOb
         dims[i] = static_cast<vtkIdType>(frame->GetComponent(4 + i, 0));
       }
       cellSize = frame->GetComponent(3, 0);
+    }
+    bool same = frame->GetComponent(3, 0) == cellSize;
+    for (int i = 0; i < 3; ++i)
+    {
+      same = same && frame->GetComponent(i, 0) == origin[i] &&
+        static_cast<vtkIdType>(frame->GetComponent(4 + i, 0)) == dims[i];
+    }
+    if (!same)
+    {
+      problem = "the processes' OFBs have different frames (sample them with one frame: "
+                "vtkOFBPSampler, OFB Sampler)";
+      return nullptr;
     }
     // The legacy format the controller sends reads vtkTypeUInt32 back as unsigned int.
     auto cells = vtkUnsignedIntArray::SafeDownCast(fields->GetAbstractArray(SampleCellName));
@@ -567,9 +581,14 @@ void vtkOFBTexturedMeshWriter::WriteDistributed(vtkPolyData* input, vtkOFB* ofb)
   {
     this->UpdateProgress(0.1);
     vtkSmartPointer<vtkPolyData> mesh = MergeMeshes(shares);
-    vtkSmartPointer<vtkOFB> merged = MergeSamples(shares);
+    std::string problem;
+    vtkSmartPointer<vtkOFB> merged = MergeSamples(shares, problem);
     shares.clear();
-    if (this->WriteMesh(mesh, merged))
+    if (!problem.empty())
+    {
+      vtkErrorMacro("Cannot write '" << this->FileName << "': " << problem << ".");
+    }
+    else if (this->WriteMesh(mesh, merged))
     {
       result[0] = 1;
       result[1] = this->WrittenTextureSize[0];

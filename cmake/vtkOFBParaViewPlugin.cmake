@@ -120,7 +120,11 @@ if (VTKOFB_BUILD_TESTING)
       NAME    "OFB.ParaView.DistributedStrokes"
       COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
         -R "^OFBPlugin\\.DistributedStrokes\\." --output-on-failure --no-tests=error)
-    set_tests_properties("OFB.ParaView.DistributedStrokes" PROPERTIES
+    add_test(
+      NAME    "OFB.ParaView.WriterDistributed"
+      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
+        -R "^OFBPlugin\\.WriterDistributed\\." --output-on-failure --no-tests=error)
+    set_tests_properties("OFB.ParaView.DistributedStrokes" "OFB.ParaView.WriterDistributed" PROPERTIES
       LABELS  "ParaView;MPI"
       PROCESSORS 2
       TIMEOUT 900)

@@ -1,13 +1,22 @@
 #include "vtkOFBTexturedMeshWriter.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkImageShiftScale.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkOBJWriter.h"
 #include "vtkOFB.h"
+#include "vtkOFBMergeBlocks.h"
 #include "vtkOFBParaViewProbe.h"
 #include "vtkOFBStagedFiles.h"
 #include "vtkOFBTextureAtlas.h"
@@ -17,13 +26,20 @@
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnsignedIntArray.h"
 #include "vtksys/SystemTools.hxx"
 
+#include <algorithm>
+#include <array>
 #include <cctype>
+#include <numeric>
 #include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFBTexturedMeshWriter);
+vtkCxxSetObjectMacro(vtkOFBTexturedMeshWriter, Controller, vtkMultiProcessController);
 
 namespace
 {
@@ -119,6 +135,264 @@ bool WriteGLTF(vtkPolyData* textured,
   }
   return files.Write(name, text, message) && files.Commit({ name }, message);
 }
+
+// A process's share of a distributed write, as one vtkPolyData sent to the first process:
+// its piece without ghost cells, and in its field data the frame of its OFB and its owned
+// samples (their global cell index, depth and sample arrays).
+const char* const FrameName = "vtkOFBWriterFrame";       // origin, cell size, dims
+const char* const SampleCellName = "vtkOFBWriterCell";   // a sample's global cell
+const char* const SampleDepthName = "vtkOFBWriterDepth"; // a sample's depth
+const char* const SamplePrefix = "vtkOFBWriterSample_";  // + a sample array's name
+const char* const GhostName = "vtkGhostType";
+
+vtkSmartPointer<vtkPolyData> MakeShare(vtkPolyData* input, vtkOFB* ofb)
+{
+  auto share = vtkSmartPointer<vtkPolyData>::New();
+  if (input)
+  {
+    share->DeepCopy(input);
+    share->RemoveGhostCells();
+    share->GetCellData()->RemoveArray(GhostName);
+    share->GetPointData()->RemoveArray(GhostName);
+  }
+  vtkNew<vtkFieldData> fields;
+  share->SetFieldData(fields);
+  if (!ofb || !(ofb->GetCellSize() > 0.0))
+  {
+    return share;
+  }
+  vtkNew<vtkDoubleArray> frame;
+  frame->SetName(FrameName);
+  frame->SetNumberOfValues(7);
+  for (int i = 0; i < 3; ++i)
+  {
+    frame->SetValue(i, ofb->GetOrigin()[i]);
+    frame->SetValue(4 + i, static_cast<double>(ofb->GetDimensions()[i]));
+  }
+  frame->SetValue(3, ofb->GetCellSize());
+  fields->AddArray(frame);
+
+  // The owned samples: a zero (or no) ghost value.
+  vtkPointData* data = ofb->GetSampleData();
+  vtkDataArray* ghosts = data->GetArray(GhostName);
+  auto bytes = vtkUnsignedCharArray::SafeDownCast(ghosts);
+  vtkNew<vtkIdList> owned;
+  for (vtkIdType i = 0, n = ofb->GetNumberOfSamples(); i < n; ++i)
+  {
+    if (!ghosts || (bytes ? bytes->GetValue(i) == 0 : ghosts->GetComponent(i, 0) == 0.0))
+    {
+      owned->InsertNextId(i);
+    }
+  }
+  if (owned->GetNumberOfIds() == 0)
+  {
+    return share;
+  }
+  auto take = [&](vtkAbstractArray* source, const std::string& name)
+  {
+    vtkSmartPointer<vtkAbstractArray> copy;
+    copy.TakeReference(source->NewInstance());
+    copy->SetNumberOfComponents(source->GetNumberOfComponents());
+    copy->SetName(name.c_str());
+    copy->SetNumberOfTuples(owned->GetNumberOfIds());
+    source->GetTuples(owned, copy);
+    fields->AddArray(copy);
+  };
+  take(ofb->GetCellIndex(), SampleCellName);
+  take(ofb->GetDepths(), SampleDepthName);
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = data->GetArray(a);
+    if (array && array->GetName() && std::string(array->GetName()) != GhostName)
+    {
+      take(array, SamplePrefix + std::string(array->GetName()));
+    }
+  }
+  return share;
+}
+
+/// The pieces of every process's share as one mesh, in the order of the processes: the
+/// points of a piece at exactly the coordinates of a point of an earlier piece merged with
+/// it (vtkOFBMergeBlocks; points of one piece are never merged with each other), without
+/// field data.
+vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkDataObject>>& shares)
+{
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  for (const auto& object : shares)
+  {
+    auto piece = vtkPolyData::SafeDownCast(object);
+    if (piece && piece->GetNumberOfCells() > 0)
+    {
+      auto mesh = vtkSmartPointer<vtkPolyData>::New();
+      mesh->ShallowCopy(piece);
+      mesh->SetFieldData(nullptr);
+      blocks->SetBlock(blocks->GetNumberOfBlocks(), mesh);
+    }
+  }
+  auto merged = vtkSmartPointer<vtkPolyData>::New();
+  if (blocks->GetNumberOfBlocks() == 0)
+  {
+    return merged;
+  }
+  vtkNew<vtkOFBMergeBlocks> merge;
+  merge->SetInputData(blocks);
+  merge->MergePointsOn();
+  merge->Update();
+  merged->ShallowCopy(merge->GetOutput());
+  merged->GetCellData()->RemoveArray(vtkOFBMergeBlocks::BlockIndexArrayName());
+  return merged;
+}
+
+/// Every process's owned samples as one OFB on their common frame, the samples of each
+/// grid cell in order of depth (ties in the order of the processes); null without a frame,
+/// and null with `problem` set when the processes' frames differ.
+vtkSmartPointer<vtkOFB> MergeSamples(const std::vector<vtkSmartPointer<vtkDataObject>>& shares,
+  std::string& problem)
+{
+  double origin[3] = { 0, 0, 0 };
+  double cellSize = 0.0;
+  vtkIdType dims[3] = { 0, 0, 0 };
+  struct Sample
+  {
+    vtkTypeUInt32 Cell;
+    float Depth;
+    int Share;
+    vtkIdType Index;
+  };
+  std::vector<Sample> samples;
+  vtkFieldData* first = nullptr; // the first share with samples: the arrays to merge
+  for (size_t r = 0; r < shares.size(); ++r)
+  {
+    vtkFieldData* fields = shares[r] ? shares[r]->GetFieldData() : nullptr;
+    vtkDataArray* frame = fields ? fields->GetArray(FrameName) : nullptr;
+    if (!frame || frame->GetNumberOfTuples() != 7)
+    {
+      continue;
+    }
+    if (!(cellSize > 0.0))
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        origin[i] = frame->GetComponent(i, 0);
+        dims[i] = static_cast<vtkIdType>(frame->GetComponent(4 + i, 0));
+      }
+      cellSize = frame->GetComponent(3, 0);
+    }
+    bool same = frame->GetComponent(3, 0) == cellSize;
+    for (int i = 0; i < 3; ++i)
+    {
+      same = same && frame->GetComponent(i, 0) == origin[i] &&
+        static_cast<vtkIdType>(frame->GetComponent(4 + i, 0)) == dims[i];
+    }
+    if (!same)
+    {
+      problem = "the processes' OFBs have different frames (sample them with one frame: "
+                "vtkOFBPSampler, OFB Sampler)";
+      return nullptr;
+    }
+    // The legacy format the controller sends reads vtkTypeUInt32 back as unsigned int.
+    auto cells = vtkUnsignedIntArray::SafeDownCast(fields->GetAbstractArray(SampleCellName));
+    auto depths = vtkFloatArray::SafeDownCast(fields->GetAbstractArray(SampleDepthName));
+    if (!cells || !depths || cells->GetNumberOfTuples() != depths->GetNumberOfTuples())
+    {
+      continue;
+    }
+    first = first ? first : fields;
+    for (vtkIdType i = 0; i < cells->GetNumberOfTuples(); ++i)
+    {
+      samples.push_back({ cells->GetValue(i), depths->GetValue(i), static_cast<int>(r), i });
+    }
+  }
+  auto ofb = vtkSmartPointer<vtkOFB>::New();
+  if (!(cellSize > 0.0) || !ofb->SetFrame(origin, cellSize, dims))
+  {
+    return nullptr;
+  }
+  std::stable_sort(samples.begin(),
+    samples.end(),
+    [](const Sample& a, const Sample& b)
+    { return a.Cell != b.Cell ? a.Cell < b.Cell : a.Depth < b.Depth; });
+  const vtkIdType n = static_cast<vtkIdType>(samples.size());
+  vtkTypeUInt32Array* offsets = ofb->GetCellOffsets();
+  const vtkIdType cells = ofb->GetNumberOfCells();
+  if (!samples.empty() && static_cast<vtkIdType>(samples.back().Cell) >= cells)
+  {
+    return nullptr;
+  }
+  std::vector<vtkTypeUInt32> counts(cells + 1, 0);
+  for (const Sample& sample : samples)
+  {
+    ++counts[sample.Cell + 1];
+  }
+  std::partial_sum(counts.begin(), counts.end(), counts.begin());
+  std::copy(counts.begin(), counts.end(), offsets->GetPointer(0));
+  if (!ofb->AllocateSamples(n))
+  {
+    return nullptr;
+  }
+  float* depths = ofb->GetDepths()->GetPointer(0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    depths[i] = samples[i].Depth;
+  }
+  if (!ofb->BuildCellIndex())
+  {
+    return nullptr;
+  }
+  if (!first)
+  {
+    return ofb;
+  }
+  // The sample arrays of the first share with samples, filled share by share.
+  std::vector<vtkSmartPointer<vtkIdList>> from(shares.size()), to(shares.size());
+  for (size_t r = 0; r < shares.size(); ++r)
+  {
+    from[r] = vtkSmartPointer<vtkIdList>::New();
+    to[r] = vtkSmartPointer<vtkIdList>::New();
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    from[samples[i].Share]->InsertNextId(samples[i].Index);
+    to[samples[i].Share]->InsertNextId(i);
+  }
+  const std::string prefix = SamplePrefix;
+  for (int a = 0; a < first->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* model = first->GetAbstractArray(a);
+    const std::string name = model && model->GetName() ? model->GetName() : "";
+    if (name.compare(0, prefix.size(), prefix) != 0 || !vtkDataArray::SafeDownCast(model))
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkDataArray> merged;
+    merged.TakeReference(vtkDataArray::SafeDownCast(model->NewInstance()));
+    merged->SetName(name.substr(prefix.size()).c_str());
+    merged->SetNumberOfComponents(model->GetNumberOfComponents());
+    merged->SetNumberOfTuples(n);
+    merged->Fill(0.0);
+    for (size_t r = 0; r < shares.size(); ++r)
+    {
+      vtkAbstractArray* source = to[r]->GetNumberOfIds()
+        ? shares[r]->GetFieldData()->GetAbstractArray(name.c_str())
+        : nullptr;
+      if (source && source->GetNumberOfComponents() == merged->GetNumberOfComponents())
+      {
+        merged->InsertTuples(to[r], from[r], source);
+      }
+    }
+    vtkPointData* data = ofb->GetSampleData();
+    data->AddArray(merged);
+    if (merged->GetName() == std::string(vtkOFB::ColorsArrayName()))
+    {
+      data->SetActiveScalars(merged->GetName());
+    }
+    else if (merged->GetName() == std::string(vtkOFB::NormalsArrayName()))
+    {
+      data->SetActiveNormals(merged->GetName());
+    }
+  }
+  return ofb;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -127,7 +401,9 @@ vtkOFBTexturedMeshWriter::vtkOFBTexturedMeshWriter()
   , ArrayName(nullptr)
   , TextureSize(2048)
   , WrittenTextureSize{ 0, 0 }
+  , Controller(nullptr)
 {
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
 //------------------------------------------------------------------------------
@@ -135,6 +411,7 @@ vtkOFBTexturedMeshWriter::~vtkOFBTexturedMeshWriter()
 {
   this->SetFileName(nullptr);
   this->SetArrayName(nullptr);
+  this->SetController(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -161,6 +438,29 @@ int vtkOFBTexturedMeshWriter::FillInputPortInformation(int, vtkInformation* info
 }
 
 //------------------------------------------------------------------------------
+vtkTypeBool vtkOFBTexturedMeshWriter::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  // A writer has no output to copy a piece request from: under several processes each
+  // asks for its own piece, as ParaView's parallel writers do (else every process would
+  // ask for the whole data, piece 0 of 1).
+  vtkMultiProcessController* controller = this->Controller;
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()) && controller &&
+    controller->GetNumberOfProcesses() > 1 && inputVector[0]->GetNumberOfInformationObjects() > 0)
+  {
+    vtkInformation* in = inputVector[0]->GetInformationObject(0);
+    in->Set(
+      vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), controller->GetLocalProcessId());
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+      controller->GetNumberOfProcesses());
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    return 1;
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBTexturedMeshWriter::WriteData()
 {
   this->WrittenTextureSize[0] = this->WrittenTextureSize[1] = 0;
@@ -168,34 +468,52 @@ void vtkOFBTexturedMeshWriter::WriteData()
   vtkOFB* ofb = this->OFB ? this->OFB.Get() : vtkOFBParaViewProbe::GetOFB(input);
   const std::string path = this->FileName ? this->FileName : "";
   const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
+  // The same on every process: no collective call yet.
   if (path.empty())
   {
     vtkErrorMacro("No file name to write.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
     return;
   }
   if (ext != ".obj" && ext != ".gltf")
   {
     vtkErrorMacro("Cannot write '" << path << "': the extension must be .obj or .gltf.");
+    this->SetErrorCode(vtkErrorCode::UserError);
     return;
   }
+  if (this->Controller && this->Controller->GetNumberOfProcesses() > 1)
+  {
+    this->WriteDistributed(input, ofb);
+  }
+  else if (!this->WriteMesh(input, ofb))
+  {
+    this->SetErrorCode(vtkErrorCode::UserError);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBTexturedMeshWriter::WriteMesh(vtkPolyData* input, vtkOFB* ofb)
+{
+  const std::string path = this->FileName ? this->FileName : "";
+  const std::string ext = SystemTools::LowerCase(SystemTools::GetFilenameLastExtension(path));
   if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     vtkErrorMacro("Cannot write '" << path << "': the input has no polygons.");
-    return;
+    return false;
   }
   if (!ofb || ofb->GetNumberOfSamples() == 0)
   {
     vtkErrorMacro("Cannot write '" << path
                                    << "': no OFB, or an empty one (write the output of OFB "
                                       "Probe, or give one with SetOFB).");
-    return;
+    return false;
   }
   const char* arrayName = this->ArrayName && *this->ArrayName ? this->ArrayName : "Colors";
   if (!ofb->GetSampleData()->GetArray(arrayName))
   {
     vtkErrorMacro(
       "Cannot write '" << path << "': the OFB has no sample array '" << arrayName << "'.");
-    return;
+    return false;
   }
 
   // The mesh with texture coordinates: its own, or an atlas's charts.
@@ -213,7 +531,7 @@ void vtkOFBTexturedMeshWriter::WriteData()
     if (size[0] <= 0 || size[1] <= 0 || textured->GetNumberOfPoints() == 0)
     {
       vtkErrorMacro("Cannot write '" << path << "': no texture atlas for the mesh.");
-      return;
+      return false;
     }
   }
   this->UpdateProgress(0.2);
@@ -227,7 +545,7 @@ void vtkOFBTexturedMeshWriter::WriteData()
   if (!texels || texels->GetNumberOfPoints() == 0)
   {
     vtkErrorMacro("Cannot write '" << path << "': baking the texture failed.");
-    return;
+    return false;
   }
   this->UpdateProgress(0.7);
 
@@ -237,11 +555,53 @@ void vtkOFBTexturedMeshWriter::WriteData()
   {
     message[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(message[0])));
     vtkErrorMacro(<< message << ".");
-    return;
+    return false;
   }
   this->WrittenTextureSize[0] = size[0];
   this->WrittenTextureSize[1] = size[1];
   this->UpdateProgress(1.0);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBTexturedMeshWriter::WriteDistributed(vtkPolyData* input, vtkOFB* ofb)
+{
+  // One gather of every process's share on the first process, which writes; then one
+  // broadcast of the result. Every process makes both calls, whatever its piece.
+  vtkMultiProcessController* controller = this->Controller;
+  const int rank = controller->GetLocalProcessId();
+  vtkSmartPointer<vtkPolyData> share = MakeShare(input, ofb);
+  std::vector<vtkSmartPointer<vtkDataObject>> shares;
+  int result[3] = { 0, 0, 0 }; // success, written texture size
+  if (!controller->Gather(share.Get(), shares, 0))
+  {
+    vtkErrorMacro("Cannot write '" << this->FileName << "': gathering the pieces failed.");
+  }
+  else if (rank == 0)
+  {
+    this->UpdateProgress(0.1);
+    vtkSmartPointer<vtkPolyData> mesh = MergeMeshes(shares);
+    std::string problem;
+    vtkSmartPointer<vtkOFB> merged = MergeSamples(shares, problem);
+    shares.clear();
+    if (!problem.empty())
+    {
+      vtkErrorMacro("Cannot write '" << this->FileName << "': " << problem << ".");
+    }
+    else if (this->WriteMesh(mesh, merged))
+    {
+      result[0] = 1;
+      result[1] = this->WrittenTextureSize[0];
+      result[2] = this->WrittenTextureSize[1];
+    }
+  }
+  controller->Broadcast(result, 3, 0);
+  this->WrittenTextureSize[0] = result[1];
+  this->WrittenTextureSize[1] = result[2];
+  if (!result[0])
+  {
+    this->SetErrorCode(vtkErrorCode::UserError);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -252,4 +612,7 @@ void vtkOFBTexturedMeshWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
   os << indent << "TextureSize: " << this->TextureSize << "\n";
   os << indent << "OFB: " << this->OFB.Get() << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "WrittenTextureSize: " << this->WrittenTextureSize[0] << " "
+     << this->WrittenTextureSize[1] << "\n";
 }

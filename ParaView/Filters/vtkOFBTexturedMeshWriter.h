@@ -25,6 +25,22 @@
  * Bad input (no OFB, an empty mesh, an unknown extension or array, a folder that cannot
  * be written) gives an error and writes nothing.
  *
+ * Distributed input (a Controller of more than one process, as under `mpiexec pvbatch`
+ * or a pvserver of several ranks, where each process has its piece of the mesh and an
+ * OFB with that piece's samples on the frame common to all pieces, vtkOFBPSampler):
+ * every process sends its piece without ghost cells, and its OFB's owned samples (those
+ * with a zero "vtkGhostType" sample value), to the first process (one gather). There the
+ * pieces are appended and the points of a piece at exactly the coordinates of a point of
+ * an earlier piece merged with it (vtkOFBMergeBlocks), the samples put together cell by
+ * cell in order of depth (the order one process has them), and the file set is baked and
+ * written as one process writes it; the other processes write nothing. Every process
+ * takes part, also with an empty piece, and every process ends with the same result: the
+ * same error code and WrittenTextureSize. The mesh's cells come in the order of the
+ * pieces, so the files list them in another order than one process's; the mesh and the
+ * colour each cell gets are the same. Pieces whose border points are not at exactly the
+ * same coordinates keep them apart (no tolerance; points of one piece are never merged
+ * with each other, so a mesh's own seams stay).
+ *
  * @sa vtkOFBTextureBaker vtkOFBTextureAtlas vtkOFBParaViewProbe vtkOFBStagedFiles
  */
 
@@ -35,7 +51,9 @@
 #include "vtkSmartPointer.h"      // for member
 #include "vtkWriter.h"
 
+class vtkMultiProcessController;
 class vtkOFB;
+class vtkPolyData;
 
 class VTKOFBPARAVIEW_EXPORT vtkOFBTexturedMeshWriter : public vtkWriter
 {
@@ -83,18 +101,38 @@ public:
    */
   vtkGetVector2Macro(WrittenTextureSize, int);
 
+  ///@{
+  /**
+   * The processes that share the mesh (default: the global controller at construction).
+   * Null or a single process: each process writes its own input. More processes: a
+   * collective write (see the class documentation); every process must call Write().
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkOFBTexturedMeshWriter();
   ~vtkOFBTexturedMeshWriter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// Asks for this process's piece (of the Controller's processes) when there are more.
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   void WriteData() override;
+
+  /// Bakes `mesh` with `ofb` into the file; false (with an error) on a failure.
+  bool WriteMesh(vtkPolyData* mesh, vtkOFB* ofb);
+  /// The collective write over the Controller's processes.
+  void WriteDistributed(vtkPolyData* input, vtkOFB* ofb);
 
   char* FileName;
   char* ArrayName;
   int TextureSize;
   int WrittenTextureSize[2];
   vtkSmartPointer<vtkOFB> OFB;
+  vtkMultiProcessController* Controller;
 
 private:
   vtkOFBTexturedMeshWriter(const vtkOFBTexturedMeshWriter&) = delete;

@@ -24,8 +24,9 @@ The pipeline, on a sphere with a tangent field distributed by ParaView:
 
 It writes OUTPUT_DIR/values.json (what was computed where the data is, fetched to this
 process), OUTPUT_DIR/ofb-surface.png (the view rendered where the data is: by the server
-in client-server mode) and, where the OFB writer is offered (one process), OUTPUT_DIR/
-ofb-cs-sphere.obj (+ .mtl, .png) and ofb-cs-sphere.gltf, written where the data is. As a
+in client-server mode) and, through the OFB writer (Save Data, on any number of
+processes: the first one writes the gathered mesh), OUTPUT_DIR/ofb-cs-sphere.obj (+ .mtl,
+.png) and ofb-cs-sphere.gltf, written where the data is. As a
 client it also renders the view on the client (local rendering: the server delivers the
 surface) and writes OUTPUT_DIR/ofb-surface-local.png, with the OFB Surface representation
 building its OFB and LIC from the delivered surface; pvbatch and the GUI write the same

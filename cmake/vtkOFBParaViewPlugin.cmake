@@ -146,7 +146,8 @@ if (VTKOFB_BUILD_TESTING)
   set(vtkofb_paraview_render_tests OFB.ParaView.Filters OFB.ParaView.Example
     OFB.ParaView.SurfaceRepresentation OFB.ParaView.SurfaceRepresentationExample
     OFB.ParaView.LICBenchmark)
-  foreach (vtkofb_test IN ITEMS Distributed SurfaceDistributed DistributedStrokes Clients)
+  foreach (vtkofb_test IN ITEMS Distributed SurfaceDistributed DistributedStrokes WriterDistributed
+      Clients)
     if (TEST OFB.ParaView.${vtkofb_test})
       list(APPEND vtkofb_paraview_render_tests OFB.ParaView.${vtkofb_test})
     endif ()

@@ -56,23 +56,6 @@ vtkSmartPointer<vtkPolyData> MakeMesh()
   return mesh;
 }
 
-/// Seeds spread over the sphere (a Fibonacci spiral), the same everywhere.
-vtkSmartPointer<vtkPolyData> MakeSeeds(int n)
-{
-  vtkNew<vtkPoints> points;
-  for (int i = 0; i < n; ++i)
-  {
-    const double z = 1.0 - (2.0 * i + 1.0) / n;
-    const double r = std::sqrt(1.0 - z * z);
-    const double a = i * vtkMath::Pi() * (3.0 - std::sqrt(5.0));
-    points->InsertNextPoint(
-      Centre[0] + 0.5 * r * std::cos(a), Centre[1] + 0.5 * r * std::sin(a), Centre[2] + 0.5 * z);
-  }
-  auto seeds = vtkSmartPointer<vtkPolyData>::New();
-  seeds->SetPoints(points);
-  return seeds;
-}
-
 /// The time series, its piece, the piece's OFB and the advector.
 struct Pipeline
 {
@@ -101,7 +84,7 @@ struct Pipeline
   }
 };
 
-/// Particles (id, x, y, z) and owned samples (cell, depth, r, g, b, a), as rows.
+/// Particles (id, x, y, z), as rows.
 std::vector<double> Particles(vtkOFBPParticleAdvector* advector)
 {
   std::vector<double> rows;
@@ -116,38 +99,6 @@ std::vector<double> Particles(vtkOFBPParticleAdvector* advector)
   return rows;
 }
 
-std::vector<double> Samples(vtkOFBPParticleAdvector* advector)
-{
-  std::vector<double> rows;
-  vtkOFB* ofb = vtkOFB::SafeDownCast(advector->GetOutputDataObject(0));
-  vtkDataArray* colors = ofb ? ofb->GetSampleData()->GetArray(vtkOFB::ColorsArrayName()) : nullptr;
-  if (!colors)
-  {
-    return rows;
-  }
-  vtkofbtest::ForEachOwnedSample(ofb,
-    [&](vtkIdType c, vtkIdType i, float depth)
-    {
-      double rgba[4];
-      colors->GetTuple(i, rgba);
-      rows.insert(rows.end(),
-        { static_cast<double>(c), static_cast<double>(depth), rgba[0], rgba[1], rgba[2], rgba[3] });
-    });
-  return rows;
-}
-
-/// Rows of `width` values, sorted.
-std::vector<std::vector<double>> Rows(const std::vector<double>& values, size_t width)
-{
-  std::vector<std::vector<double>> rows;
-  for (size_t i = 0; i + width <= values.size(); i += width)
-  {
-    rows.emplace_back(values.begin() + i, values.begin() + i + width);
-  }
-  std::sort(rows.begin(), rows.end());
-  return rows;
-}
-
 /// Compares the gathered rows with one process's on the first process; prints a line.
 bool Same(const char* what,
   double time,
@@ -156,8 +107,8 @@ bool Same(const char* what,
   size_t width,
   double tolerance)
 {
-  const auto got = Rows(gathered, width);
-  const auto want = Rows(reference, width);
+  const auto got = vtkofbtest::SortedRows(gathered, width);
+  const auto want = vtkofbtest::SortedRows(reference, width);
   double worst = 0.0;
   size_t keysDiffer = 0;
   for (size_t i = 0; i < std::min(got.size(), want.size()); ++i)
@@ -200,7 +151,7 @@ int main(int argc, char* argv[])
   const int pieces =
     vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));
   vtkSmartPointer<vtkPolyData> mesh = MakeMesh();
-  vtkSmartPointer<vtkPolyData> seeds = MakeSeeds(40);
+  vtkSmartPointer<vtkPolyData> seeds = vtkofbtest::MakeSeeds(40, Centre);
 
   vtkNew<vtkPolyData> none;
   Pipeline distributed(controller, rank < pieces ? mesh.Get() : none.Get(), seeds);
@@ -230,14 +181,20 @@ int main(int argc, char* argv[])
     controller->AllReduce(&timed, &allTimed, 1, vtkCommunicator::MIN_OP);
     const std::vector<double> particles =
       vtkofbtest::GatherOnFirst(controller, Particles(distributed.Advector));
-    const std::vector<double> samples =
-      vtkofbtest::GatherOnFirst(controller, Samples(distributed.Advector));
+    const std::vector<double> samples = vtkofbtest::GatherOnFirst(
+      controller, vtkofbtest::OwnedColorRows(distributed.Advector->GetOutput()));
     if (rank == 0)
     {
       whole->Advector->UpdateTimeStep(t, 0, 1, 0);
       cell = whole->Sampler->GetOutput()->GetCellSize();
       ok = Same("particles", t, particles, Particles(whole->Advector), 4, 1e-6 * cell) && ok;
-      ok = Same("owned samples", t, samples, Samples(whole->Advector), 6, 1.0) && ok;
+      ok = Same("owned samples",
+             t,
+             samples,
+             vtkofbtest::OwnedColorRows(whole->Advector->GetOutput()),
+             6,
+             1.0) &&
+        ok;
       if (!allTimed)
       {
         std::printf("t = %.2f: a process's particles are not at that time FAIL\n", t);

@@ -100,16 +100,8 @@ struct Pipeline
   {
     this->Surface->SetInputData(mesh);
     this->Sampled->SetInputData(mesh);
-    this->Sampler->SetController(controller);
-    this->Sampler->SetResolution(96);
-    this->Sampler->SetInputConnection(this->Sampled->GetOutputPort());
-    this->Advector->SetController(controller);
+    vtkofbtest::SetUpAdvection(controller, this->Sampled, this->Sampler, this->Advector, seeds);
     this->Advector->SetInputConnection(this->Surface->GetOutputPort());
-    this->Advector->SetOFBConnection(this->Sampler->GetOutputPort());
-    this->Advector->SetSeeds(seeds);
-    this->Advector->SetIntegrator(vtkOFBParticleAdvector::RK4);
-    this->Advector->SetStepSize(1.5);
-    this->Advector->SetFootprintRadius(2.0);
     this->Advector->SetTrailLength(8);
   }
 };

@@ -13,6 +13,8 @@
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBPParticleAdvector.h"
+#include "vtkOFBPSampler.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -77,6 +79,25 @@ inline vtkSmartPointer<vtkPolyData> MakeSeeds(int n, const double centre[3] = nu
   auto seeds = vtkSmartPointer<vtkPolyData>::New();
   seeds->SetPoints(points);
   return seeds;
+}
+
+/// The particle tests' set-up: `sampler` (resolution 96) on `sampled` feeds `advector`
+/// (RK4 steps of 1.5 cells, footprints of 2 cells) with the OFB its particles paint.
+inline void SetUpAdvection(vtkMultiProcessController* controller,
+  vtkAlgorithm* sampled,
+  vtkOFBPSampler* sampler,
+  vtkOFBPParticleAdvector* advector,
+  vtkPolyData* seeds)
+{
+  sampler->SetController(controller);
+  sampler->SetResolution(96);
+  sampler->SetInputConnection(sampled->GetOutputPort());
+  advector->SetController(controller);
+  advector->SetOFBConnection(sampler->GetOutputPort());
+  advector->SetSeeds(seeds);
+  advector->SetIntegrator(vtkOFBParticleAdvector::RK4);
+  advector->SetStepSize(1.5);
+  advector->SetFootprintRadius(2.0);
 }
 
 /// The MPI controller of a test's main, initialized and made the global one.

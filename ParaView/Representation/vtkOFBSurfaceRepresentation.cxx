@@ -22,12 +22,14 @@
 #include "vtkOFBPSampler.h"
 #include "vtkOFBParaViewProbe.h"
 #include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBSamplePack.h"
 #include "vtkOFBSampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkPVView.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkProcessModule.h"
 #include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
 
@@ -53,6 +55,7 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
   , LICPyramid(vtkSmartPointer<vtkOFBLICPyramid>::New())
   , OFBSource(nullptr)
   , GhostedCells(0)
+  , DeliveredTime(0)
 {
   std::fill(this->OFBFrame, this->OFBFrame + 7, 0.0);
   // The OFB mapper replaces the superclass's full-resolution mapper; the LOD mapper stays.
@@ -120,7 +123,59 @@ int vtkOFBSurfaceRepresentation::RequestData(vtkInformation* request,
     this->GhostedInput->ShallowCopy(input);
     this->GhostedCells = vtkOFBSurfaceRepresentation::CountCells(input, true);
   }
-  return this->Superclass::RequestData(request, inputVector, outputVector);
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  this->PackInputOFB();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::PackInputOFB()
+{
+  // A server delivers the surface to a client that may render it locally (ParaView
+  // chooses at each render): the input OFB shown goes with it. Not in pvbatch or a
+  // builtin session, where the surface is rendered where the OFB is.
+  const int type = vtkProcessModule::GetProcessType();
+  if (!this->UseInputOFB || !this->InputOFB ||
+    (type != vtkProcessModule::PROCESS_SERVER && type != vtkProcessModule::PROCESS_DATA_SERVER))
+  {
+    return;
+  }
+  vtkMultiProcessController* controller = this->Sampler->GetController();
+  vtkOFBSamplePack::PackIntoBlocks(this->GetRenderedDataObject(0),
+    this->InputOFB,
+    controller ? controller->GetLocalProcessId() : 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::UpdateDeliveredOFB(vtkDataObject* data)
+{
+  // Where the input OFB is not in this process (a client rendering a server's surface
+  // locally), the one packed into the delivered surface (PackInputOFB), merged once per
+  // delivery.
+  if (!this->UseInputOFB || this->InputOFB || !data)
+  {
+    this->DeliveredOFB = nullptr;
+    this->DeliveredData = nullptr;
+    return;
+  }
+  if (this->DeliveredData == data && this->DeliveredTime == data->GetMTime())
+  {
+    return;
+  }
+  this->DeliveredData = data;
+  this->DeliveredTime = data->GetMTime();
+  std::string problem;
+  this->DeliveredOFB = vtkOFBSamplePack::MergeFromBlocks(data, problem);
+  // Once, not at each delivery of the same unusable packs.
+  if (!problem.empty() && problem != this->DeliveryProblem)
+  {
+    vtkErrorMacro("The OFB delivered with the surface cannot be used ("
+      << problem << "): the OFB is built from the surface.");
+  }
+  this->DeliveryProblem = problem;
 }
 
 //------------------------------------------------------------------------------
@@ -128,6 +183,11 @@ int vtkOFBSurfaceRepresentation::ProcessViewRequest(vtkInformationRequestKey* re
   vtkInformation* inInfo,
   vtkInformation* outInfo)
 {
+  if (requestType == vtkPVView::REQUEST_RENDER())
+  {
+    // Before the superclass's colouring parameters, which choose the OFB the mapper reads.
+    this->UpdateDeliveredOFB(vtkPVView::GetDeliveredPiece(inInfo, this));
+  }
   if (!this->Superclass::ProcessViewRequest(requestType, inInfo, outInfo))
   {
     return 0;
@@ -394,7 +454,7 @@ void vtkOFBSurfaceRepresentation::UpdateLICConnection()
   vtkOFB* inputOFB = !this->UseInputOFB ? nullptr
     : this->InputOFB                    ? this->InputOFB.Get()
     : parallel && this->AnyInputOFB     ? this->EmptyOFB.Get()
-                                        : nullptr;
+                                        : this->DeliveredOFB.Get();
   vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
   const bool inputLIC =
     inputOFB && (inputOFB->GetSampleData()->GetArray("LIC") || (parallel && this->AnyInputLIC));
@@ -629,7 +689,8 @@ void vtkOFBSurfaceRepresentation::SetUseInputOFB(bool use)
   if (use != this->UseInputOFB)
   {
     this->UseInputOFB = use;
-    this->Modified();
+    // The delivered surface carries the input OFB where it is used (PackInputOFB).
+    this->MarkModified();
   }
 }
 
@@ -731,6 +792,7 @@ void vtkOFBSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
      << vtkOFBPolyDataMapper::GetLookupModeAsString(this->OFBMapper->GetLookupMode()) << "\n";
   os << indent << "UseInputOFB: " << (this->UseInputOFB ? "On" : "Off") << "\n";
   os << indent << "InputOFB: " << this->InputOFB.Get() << "\n";
+  os << indent << "DeliveredOFB: " << this->DeliveredOFB.Get() << "\n";
   os << indent << "Controller: " << this->Sampler->GetController() << "\n";
   os << indent << "OFBLIC: " << (this->OFBLIC ? "On" : "Off") << "\n";
   os << indent

@@ -76,6 +76,7 @@
 #include "vtkOFBParaViewRepresentationModule.h" // for export macro
 
 #include "vtkSmartPointer.h" // for InputOFB
+#include "vtkWeakPointer.h"  // for DeliveredData
 
 #include <string> // for the vector array name
 
@@ -274,6 +275,21 @@ protected:
    */
   static bool NeedsUpdate(vtkAlgorithm* algorithm);
 
+  /**
+   * On a server (pvserver, not pvbatch), where the input OFB is shown: packs this
+   * process's owned samples of it into the surface delivered to the client
+   * (vtkOFBSamplePack::PackIntoBlocks), so that a client rendering locally shows the same
+   * OFB. Run in RequestData, once per change of the data.
+   */
+  void PackInputOFB();
+  /**
+   * Where the input OFB is not in this process (UseInputOFB on): DeliveredOFB, the OFB
+   * merged from the packs in the delivered surface `data` (vtkOFBSamplePack::
+   * MergeFromBlocks), once per delivery; null without packs, or with an error where they
+   * cannot be merged (the OFB is then built from the surface).
+   */
+  void UpdateDeliveredOFB(vtkDataObject* data);
+
   vtkOFBPolyDataMapper* OFBMapper;
   vtkOFBPSampler* Sampler;
   vtkOFBPLIC* LIC;
@@ -296,6 +312,10 @@ protected:
   vtkAlgorithm* OFBSource; // under MPI, the algorithm whose output the mapper is handed
   vtkIdType GhostedCells;  // the owned cells of GhostedInput
   vtkSmartPointer<vtkOFB> EmptyOFB;
+  vtkSmartPointer<vtkOFB> DeliveredOFB;        // the input OFB packed into the delivered surface
+  vtkWeakPointer<vtkDataObject> DeliveredData; // the delivered surface it was merged from
+  vtkMTimeType DeliveredTime;                  // and that surface's modification time
+  std::string DeliveryProblem; // why the last delivered packs could not be merged, if so
   double OFBFrame[7];
 
 private:

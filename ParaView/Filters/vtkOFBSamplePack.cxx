@@ -7,6 +7,7 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
+#include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
@@ -29,6 +30,7 @@ const char* const FrameSuffix = "Frame";
 const char* const CellSuffix = "Cell";
 const char* const DepthSuffix = "Depth";
 const char* const SampleSuffix = "Sample_"; // + a sample array's name
+const char* const AttributesSuffix = "Attributes";
 
 struct Sample
 {
@@ -124,14 +126,30 @@ vtkIdType vtkOFBSamplePack::Pack(vtkOFB* ofb, vtkFieldData* fields, const char* 
   };
   take(ofb->GetCellIndex(), base + CellSuffix);
   take(ofb->GetDepths(), base + DepthSuffix);
+  // The attributes (active scalars, vectors, normals, ...): the rank of their array among
+  // the packed sample arrays, -1 for none.
+  vtkNew<vtkIntArray> attributes;
+  attributes->SetName((base + AttributesSuffix).c_str());
+  attributes->SetNumberOfValues(vtkDataSetAttributes::NUM_ATTRIBUTES);
+  attributes->Fill(-1);
+  int packed = 0;
   for (int a = 0; a < data->GetNumberOfArrays(); ++a)
   {
     vtkDataArray* array = data->GetArray(a);
     if (array && array->GetName() && std::string(array->GetName()) != GhostName)
     {
       take(array, base + SampleSuffix + array->GetName());
+      for (int t = 0; t < vtkDataSetAttributes::NUM_ATTRIBUTES; ++t)
+      {
+        if (data->GetAttribute(t) == array)
+        {
+          attributes->SetValue(t, packed);
+        }
+      }
+      ++packed;
     }
   }
+  fields->AddArray(attributes);
   return owned->GetNumberOfIds();
 }
 
@@ -361,6 +379,9 @@ vtkSmartPointer<vtkOFB> vtkOFBSamplePack::Merge(const std::vector<PackRef>& pack
   }
   const std::string modelPrefix = packs[first].Prefix + SampleSuffix;
   vtkFieldData* model = packs[first].Fields;
+  auto attributes = vtkIntArray::SafeDownCast(
+    model->GetAbstractArray((packs[first].Prefix + AttributesSuffix).c_str()));
+  int packed = 0; // the rank of the sample array among the packed ones
   for (int a = 0; a < model->GetNumberOfArrays(); ++a)
   {
     vtkDataArray* modelArray = vtkDataArray::SafeDownCast(model->GetAbstractArray(a));
@@ -400,14 +421,19 @@ vtkSmartPointer<vtkOFB> vtkOFBSamplePack::Merge(const std::vector<PackRef>& pack
     }
     vtkPointData* data = ofb->GetSampleData();
     data->AddArray(merged);
-    if (sampleName == vtkOFB::ColorsArrayName())
+    for (int t = 0; t < vtkDataSetAttributes::NUM_ATTRIBUTES; ++t)
     {
-      data->SetActiveScalars(merged->GetName());
+      const bool active = attributes
+        ? attributes->GetNumberOfValues() == vtkDataSetAttributes::NUM_ATTRIBUTES &&
+          attributes->GetValue(t) == packed
+        : (t == vtkDataSetAttributes::SCALARS && sampleName == vtkOFB::ColorsArrayName()) ||
+          (t == vtkDataSetAttributes::NORMALS && sampleName == vtkOFB::NormalsArrayName());
+      if (active)
+      {
+        data->SetActiveAttribute(merged->GetName(), t);
+      }
     }
-    else if (sampleName == vtkOFB::NormalsArrayName())
-    {
-      data->SetActiveNormals(merged->GetName());
-    }
+    ++packed;
   }
   return ofb;
 }

@@ -11,12 +11,15 @@
  * - `<prefix>Frame`: 7 doubles, the origin (x, y, z), the cell size and the dimensions;
  * - `<prefix>Cell`: a sample's global cell index (unsigned 32-bit);
  * - `<prefix>Depth`: a sample's depth (float);
- * - `<prefix>Sample_<name>`: every sample array but "vtkGhostType", as it is.
+ * - `<prefix>Sample_<name>`: every sample array but "vtkGhostType", as it is;
+ * - `<prefix>Attributes`: for each attribute type (vtkDataSetAttributes::AttributeTypes:
+ *   the active scalars, vectors, normals, ...), the rank of its array among the packed
+ *   sample arrays, -1 for none (the active vectors are the mapper's flow field).
  * A packed sample costs 8 bytes plus its arrays' (e.g. 4 for RGBA "Colors", 4 for a float
- * "LIC", 12 for float normals). Merge() rebuilds one OFB from the packs of any number of
- * pieces on one frame, the samples of each grid cell in order of depth (ties in the
- * order of the packs), and refuses packs whose frames differ or whose arrays are
- * inconsistent (a problem string, no OFB), never reading outside an array.
+ * "LIC", 12 for float normals); a pack adds 7 doubles and NUM_ATTRIBUTES ints. Merge() rebuilds one
+ * OFB from the packs of any number of pieces on one frame, the samples of each grid cell in order
+ * of depth (ties in the order of the packs), and refuses packs whose frames differ or whose arrays
+ * are inconsistent (a problem string, no OFB), never reading outside an array.
  *
  * vtkOFBTexturedMeshWriter gathers every process's pack on the first one; the OFB
  * Surface representation (vtkOFBSurfaceRepresentation) packs each server process's

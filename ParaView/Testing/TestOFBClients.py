@@ -40,7 +40,7 @@ hangs (ofbHangingClient.py). Then the results are compared with the pvbatch runs
   registered (the Pipeline Browser's list) and "OFB Surface" among the representations;
 - client-server: OFB Probe's output rendered by the client (local rendering), its OFB
   packed into the delivered surface (vtkOFBSamplePack), equals the server's picture of the
-  same view and differs from the client's own OFB at the mesh's resolution (Use Input OFB
+  same view (its paint and LIC; correlation >= 0.999) and differs from the client's own OFB at the mesh's resolution (Use Input OFB
   off); surfaces delivered with unusable packs (cells outside the frame, arrays of wrong
   lengths, a frame of five values) give the client's error, once per kind, and its own OFB
   built from the surface;
@@ -443,14 +443,17 @@ images = {"ofb-surface.png": os.path.join(args.reference, "ofb-surface.png"),
           os.path.join(args.whole_reference, "ofb-surface-whole.png")}
 
 
-def same_picture(image, baseline):
-    """Whether the LIC-aware comparison passes (run in Debian's Python with vtkofb)."""
+def same_picture(image, baseline, correlation=None):
+    """Whether the LIC-aware comparison passes (run in Debian's Python with vtkofb), and
+    where `correlation` is given, its correlation is at least that."""
     result = subprocess.run([args.compare_python, os.path.abspath(__file__), "compare",
                              image, baseline],
                             env=compare_environment, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True, timeout=120)
     print(result.stdout.strip(), flush=True)
-    return result.returncode == 0
+    measured = re.search(r"correlation (-?[0-9.]+)", result.stdout)
+    return result.returncode == 0 and (
+        correlation is None or (measured is not None and float(measured.group(1)) >= correlation))
 
 
 for image, baseline in images.items():
@@ -463,8 +466,9 @@ if not gui:
     for name in ["ofb-probe-local.png", "ofb-probe-mesh.png", "ofb-bad-mesh.png"] + [
             "ofb-bad-%s.png" % kind for kind in BAD_PACKS]:
         check(values.get(name + ".remote") is False, "%s was rendered by the client" % name)
-    check(same_picture(output("ofb-probe-local.png"), output("ofb-surface.png")),
-          "the client's picture of the probe equals the server's (its input OFB delivered)")
+    check(same_picture(output("ofb-probe-local.png"), output("ofb-surface.png"), 0.999),
+          "the client's picture of the probe equals the server's, correlation >= 0.999 (its "
+          "input OFB, paint and LIC, delivered)")
     check(not same_picture(output("ofb-probe-mesh.png"), output("ofb-surface.png")),
           "the probe's picture at the mesh's resolution differs from the server's")
     for kind in BAD_PACKS:

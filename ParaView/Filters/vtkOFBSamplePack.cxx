@@ -32,6 +32,29 @@ const char* const DepthSuffix = "Depth";
 const char* const SampleSuffix = "Sample_"; // + a sample array's name
 const char* const AttributesSuffix = "Attributes";
 
+/// Calls `visit` with the field data of `data` and of each of its blocks.
+template<typename Visit>
+void ForEachFieldData(vtkDataObject* data, Visit&& visit)
+{
+  if (data && data->GetFieldData())
+  {
+    visit(data->GetFieldData());
+  }
+  if (auto composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      vtkDataObject* block = it->GetCurrentDataObject();
+      if (block && block->GetFieldData())
+      {
+        visit(block->GetFieldData());
+      }
+    }
+  }
+}
+
 struct Sample
 {
   vtkTypeUInt32 Cell;
@@ -442,28 +465,34 @@ vtkSmartPointer<vtkOFB> vtkOFBSamplePack::Merge(const std::vector<PackRef>& pack
 vtkSmartPointer<vtkOFB> vtkOFBSamplePack::MergeFromBlocks(vtkDataObject* data, std::string& problem)
 {
   std::vector<PackRef> packs;
-  auto collect = [&packs](vtkDataObject* object)
-  {
-    std::vector<PackRef> found = object
-      ? vtkOFBSamplePack::FindPacks(object->GetFieldData(), vtkOFBSamplePack::PiecePrefix())
-      : std::vector<PackRef>();
-    packs.insert(packs.end(), found.begin(), found.end());
-  };
-  if (auto composite = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    collect(composite);
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  ForEachFieldData(data,
+    [&packs](vtkFieldData* fields)
     {
-      collect(it->GetCurrentDataObject());
-    }
-  }
-  else
-  {
-    collect(data);
-  }
+      std::vector<PackRef> found = vtkOFBSamplePack::FindPacks(fields, PiecePrefix());
+      packs.insert(packs.end(), found.begin(), found.end());
+    });
   return packs.empty() ? nullptr : vtkOFBSamplePack::Merge(packs, problem);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkOFBSamplePack::GetPacksMTime(vtkDataObject* data)
+{
+  vtkMTimeType sum = 0;
+  const std::string prefix = PiecePrefix();
+  ForEachFieldData(data,
+    [&sum, &prefix](vtkFieldData* fields)
+    {
+      for (int a = 0; a < fields->GetNumberOfArrays(); ++a)
+      {
+        vtkAbstractArray* array = fields->GetAbstractArray(a);
+        if (array && array->GetName() &&
+          std::string(array->GetName()).compare(0, prefix.size(), prefix) == 0)
+        {
+          sum += array->GetMTime();
+        }
+      }
+    });
+  return sum;
 }
 
 //------------------------------------------------------------------------------

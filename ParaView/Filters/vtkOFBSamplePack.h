@@ -87,6 +87,14 @@ public:
    */
   static vtkIdType PackIntoBlocks(vtkDataObject* blocks, vtkOFB* ofb, int rank);
 
+  /**
+   * The sum of the modification times of the arrays of the packs (prefix PiecePrefix())
+   * in the field data of `data` and of its blocks: 0 without packs; changes where a pack
+   * array is added, removed, replaced (a new delivery of other data) or modified, not
+   * where the same arrays come in another data object (a shallow copy).
+   */
+  static vtkMTimeType GetPacksMTime(vtkDataObject* data);
+
 #ifndef __VTK_WRAP__
   /**
    * A pack: the field data holding it, and its prefix.

@@ -55,7 +55,7 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
   , LICPyramid(vtkSmartPointer<vtkOFBLICPyramid>::New())
   , OFBSource(nullptr)
   , GhostedCells(0)
-  , DeliveredTime(0)
+  , DeliveredPacksTime(0)
 {
   std::fill(this->OFBFrame, this->OFBFrame + 7, 0.0);
   // The OFB mapper replaces the superclass's full-resolution mapper; the LOD mapper stays.
@@ -154,21 +154,16 @@ void vtkOFBSurfaceRepresentation::UpdateDeliveredOFB(vtkDataObject* data)
 {
   // Where the input OFB is not in this process (a client rendering a server's surface
   // locally), the one packed into the delivered surface (PackInputOFB), merged once per
-  // delivery.
-  if (!this->UseInputOFB || this->InputOFB || !data)
-  {
-    this->DeliveredOFB = nullptr;
-    this->DeliveredData = nullptr;
-    return;
-  }
-  if (this->DeliveredData == data && this->DeliveredTime == data->GetMTime())
+  // change of the packs (not at a new delivery of the same arrays).
+  const vtkMTimeType packs =
+    this->UseInputOFB && !this->InputOFB ? vtkOFBSamplePack::GetPacksMTime(data) : 0;
+  if (packs == this->DeliveredPacksTime)
   {
     return;
   }
-  this->DeliveredData = data;
-  this->DeliveredTime = data->GetMTime();
+  this->DeliveredPacksTime = packs;
   std::string problem;
-  this->DeliveredOFB = vtkOFBSamplePack::MergeFromBlocks(data, problem);
+  this->DeliveredOFB = packs ? vtkOFBSamplePack::MergeFromBlocks(data, problem) : nullptr;
   // Once, not at each delivery of the same unusable packs.
   if (!problem.empty() && problem != this->DeliveryProblem)
   {

@@ -76,7 +76,6 @@
 #include "vtkOFBParaViewRepresentationModule.h" // for export macro
 
 #include "vtkSmartPointer.h" // for InputOFB
-#include "vtkWeakPointer.h"  // for DeliveredData
 
 #include <string> // for the vector array name
 
@@ -285,7 +284,7 @@ protected:
   /**
    * Where the input OFB is not in this process (UseInputOFB on): DeliveredOFB, the OFB
    * merged from the packs in the delivered surface `data` (vtkOFBSamplePack::
-   * MergeFromBlocks), once per delivery; null without packs, or with an error where they
+   * MergeFromBlocks), once per change of the packs; null without packs, or with an error where they
    * cannot be merged (the OFB is then built from the surface).
    */
   void UpdateDeliveredOFB(vtkDataObject* data);
@@ -312,10 +311,9 @@ protected:
   vtkAlgorithm* OFBSource; // under MPI, the algorithm whose output the mapper is handed
   vtkIdType GhostedCells;  // the owned cells of GhostedInput
   vtkSmartPointer<vtkOFB> EmptyOFB;
-  vtkSmartPointer<vtkOFB> DeliveredOFB;        // the input OFB packed into the delivered surface
-  vtkWeakPointer<vtkDataObject> DeliveredData; // the delivered surface it was merged from
-  vtkMTimeType DeliveredTime;                  // and that surface's modification time
-  std::string DeliveryProblem; // why the last delivered packs could not be merged, if so
+  vtkSmartPointer<vtkOFB> DeliveredOFB; // the input OFB packed into the delivered surface
+  vtkMTimeType DeliveredPacksTime; // vtkOFBSamplePack::GetPacksMTime of what it was merged from
+  std::string DeliveryProblem;     // why the last delivered packs could not be merged, if so
   double OFBFrame[7];
 
 private:

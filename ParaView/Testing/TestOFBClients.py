@@ -471,6 +471,12 @@ if not gui:
           "input OFB, paint and LIC, delivered)")
     check(not same_picture(output("ofb-probe-mesh.png"), output("ofb-surface.png")),
           "the probe's picture at the mesh's resolution differs from the server's")
+    added = (values["probe_delivered_kib"] - values["mesh_delivered_kib"]) * 1024.0
+    check(added >= 8 * values["probe_ofb_samples"],
+          "the delivered surface carries the samples: %d KiB, %d KiB without, %.1f bytes for "
+          "each of %d samples" % (values["probe_delivered_kib"], values["mesh_delivered_kib"],
+                                   added / max(1, values["probe_ofb_samples"]),
+                                   values["probe_ofb_samples"]))
     for kind in BAD_PACKS:
         check(same_picture(output("ofb-bad-%s.png" % kind), output("ofb-bad-mesh.png")),
               "unusable packs (%s): the client's own OFB from the surface" % kind)

@@ -189,8 +189,12 @@ def check_delivered_ofb(view, display, settings):
     (ofb-bad-KIND.png, the mesh-resolution picture of that surface ofb-bad-mesh.png)."""
     settings.RemoteRenderThreshold = 1.0e6
     save_local(view, "ofb-probe-local.png")
+    # The delivered surface's size (KiB) with the packed samples, and without.
+    values["probe_delivered_kib"] = display.GetRepresentedDataInformation().GetMemorySize()
+    values["probe_ofb_samples"] = particles.GetDataInformation(0).GetNumberOfPoints()
     display.UseInputOFB = 0
     save_local(view, "ofb-probe-mesh.png")
+    values["mesh_delivered_kib"] = display.GetRepresentedDataInformation().GetMemorySize()
     display.UseInputOFB = 1
     Hide(probe, view)
     for kind, corruption in sorted(BAD_PACKS.items()):

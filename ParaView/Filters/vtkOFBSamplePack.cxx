@@ -97,7 +97,10 @@ bool ReadFrame(vtkDataArray* frame, double origin[3], double& cellSize, vtkIdTyp
 }
 
 //------------------------------------------------------------------------------
-vtkOFBSamplePack::vtkOFBSamplePack() = default;
+vtkOFBSamplePack::vtkOFBSamplePack()
+  : MergedPacksTime(0)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkOFBSamplePack::~vtkOFBSamplePack() = default;
@@ -496,8 +499,30 @@ vtkMTimeType vtkOFBSamplePack::GetPacksMTime(vtkDataObject* data)
 }
 
 //------------------------------------------------------------------------------
+vtkOFB* vtkOFBSamplePack::UpdateMergedOFB(vtkDataObject* data)
+{
+  const vtkMTimeType packs = vtkOFBSamplePack::GetPacksMTime(data);
+  if (packs == this->MergedPacksTime)
+  {
+    return this->MergedOFB;
+  }
+  this->MergedPacksTime = packs;
+  std::string problem;
+  this->MergedOFB = packs ? vtkOFBSamplePack::MergeFromBlocks(data, problem) : nullptr;
+  if (!problem.empty() && problem != this->MergeProblem)
+  {
+    vtkErrorMacro("The OFB delivered with the surface cannot be used ("
+      << problem << "): the OFB is built from the surface.");
+  }
+  this->MergeProblem = problem;
+  return this->MergedOFB;
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBSamplePack::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "PiecePrefix: " << vtkOFBSamplePack::PiecePrefix() << "\n";
+  os << indent << "MergedOFB: " << this->MergedOFB.Get() << "\n";
+  os << indent << "MergeProblem: " << this->MergeProblem << "\n";
 }

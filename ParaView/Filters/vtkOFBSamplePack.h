@@ -25,7 +25,7 @@
  * Surface representation (vtkOFBSurfaceRepresentation) packs each server process's
  * input OFB into the surface it delivers to a client that renders locally
  * (PackIntoBlocks), and the client merges the packs of the pieces it receives
- * (MergeFromBlocks).
+ * (UpdateMergedOFB, MergeFromBlocks).
  *
  * @sa vtkOFBTexturedMeshWriter vtkOFBParaViewProbe
  */
@@ -95,6 +95,14 @@ public:
    */
   static vtkMTimeType GetPacksMTime(vtkDataObject* data);
 
+  /**
+   * The OFB merged from the packs of `data` (MergeFromBlocks), kept in this object and
+   * merged again only where the packs changed (GetPacksMTime), so that a receiver calls it
+   * at every render. Null without packs (or without `data`), and null with an error,
+   * reported once per problem, where they cannot be merged.
+   */
+  vtkOFB* UpdateMergedOFB(vtkDataObject* data);
+
 #ifndef __VTK_WRAP__
   /**
    * A pack: the field data holding it, and its prefix.
@@ -134,6 +142,12 @@ public:
 protected:
   vtkOFBSamplePack();
   ~vtkOFBSamplePack() override;
+
+#ifndef __VTK_WRAP__
+  vtkSmartPointer<vtkOFB> MergedOFB; // UpdateMergedOFB's result
+  vtkMTimeType MergedPacksTime;      // GetPacksMTime of the packs it was merged from
+  std::string MergeProblem;          // why those packs could not be merged, if so
+#endif
 
 private:
   vtkOFBSamplePack(const vtkOFBSamplePack&) = delete;

@@ -55,7 +55,7 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
   , LICPyramid(vtkSmartPointer<vtkOFBLICPyramid>::New())
   , OFBSource(nullptr)
   , GhostedCells(0)
-  , DeliveredPacksTime(0)
+  , DeliveredPacks(vtkSmartPointer<vtkOFBSamplePack>::New())
 {
   std::fill(this->OFBFrame, this->OFBFrame + 7, 0.0);
   // The OFB mapper replaces the superclass's full-resolution mapper; the LOD mapper stays.
@@ -134,43 +134,16 @@ int vtkOFBSurfaceRepresentation::RequestData(vtkInformation* request,
 //------------------------------------------------------------------------------
 void vtkOFBSurfaceRepresentation::PackInputOFB()
 {
-  // A server delivers the surface to a client that may render it locally (ParaView
-  // chooses at each render): the input OFB shown goes with it. Not in pvbatch or a
-  // builtin session, where the surface is rendered where the OFB is.
+  // On a server, which delivers the surface to a client that may render it locally (not
+  // in pvbatch or a builtin session, which render where the OFB is).
   const int type = vtkProcessModule::GetProcessType();
-  if (!this->UseInputOFB || !this->InputOFB ||
-    (type != vtkProcessModule::PROCESS_SERVER && type != vtkProcessModule::PROCESS_DATA_SERVER))
+  if (this->UseInputOFB && this->InputOFB &&
+    (type == vtkProcessModule::PROCESS_SERVER || type == vtkProcessModule::PROCESS_DATA_SERVER))
   {
-    return;
+    vtkOFBSamplePack::PackIntoBlocks(this->GetRenderedDataObject(0),
+      this->InputOFB,
+      this->Sampler->GetController() ? this->Sampler->GetController()->GetLocalProcessId() : 0);
   }
-  vtkMultiProcessController* controller = this->Sampler->GetController();
-  vtkOFBSamplePack::PackIntoBlocks(this->GetRenderedDataObject(0),
-    this->InputOFB,
-    controller ? controller->GetLocalProcessId() : 0);
-}
-
-//------------------------------------------------------------------------------
-void vtkOFBSurfaceRepresentation::UpdateDeliveredOFB(vtkDataObject* data)
-{
-  // Where the input OFB is not in this process (a client rendering a server's surface
-  // locally), the one packed into the delivered surface (PackInputOFB), merged once per
-  // change of the packs (not at a new delivery of the same arrays).
-  const vtkMTimeType packs =
-    this->UseInputOFB && !this->InputOFB ? vtkOFBSamplePack::GetPacksMTime(data) : 0;
-  if (packs == this->DeliveredPacksTime)
-  {
-    return;
-  }
-  this->DeliveredPacksTime = packs;
-  std::string problem;
-  this->DeliveredOFB = packs ? vtkOFBSamplePack::MergeFromBlocks(data, problem) : nullptr;
-  // Once, not at each delivery of the same unusable packs.
-  if (!problem.empty() && problem != this->DeliveryProblem)
-  {
-    vtkErrorMacro("The OFB delivered with the surface cannot be used ("
-      << problem << "): the OFB is built from the surface.");
-  }
-  this->DeliveryProblem = problem;
 }
 
 //------------------------------------------------------------------------------
@@ -180,8 +153,11 @@ int vtkOFBSurfaceRepresentation::ProcessViewRequest(vtkInformationRequestKey* re
 {
   if (requestType == vtkPVView::REQUEST_RENDER())
   {
-    // Before the superclass's colouring parameters, which choose the OFB the mapper reads.
-    this->UpdateDeliveredOFB(vtkPVView::GetDeliveredPiece(inInfo, this));
+    // Where the input OFB is not in this process (a client rendering a server's surface
+    // locally): the one packed into the delivered surface (PackInputOFB). Before the
+    // superclass's colouring parameters, which choose the OFB the mapper reads.
+    this->DeliveredOFB = this->DeliveredPacks->UpdateMergedOFB(
+      this->UseInputOFB && !this->InputOFB ? vtkPVView::GetDeliveredPiece(inInfo, this) : nullptr);
   }
   if (!this->Superclass::ProcessViewRequest(requestType, inInfo, outInfo))
   {

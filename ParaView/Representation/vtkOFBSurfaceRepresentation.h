@@ -16,7 +16,8 @@
  * remotely) that OFB is used as it is; a pvserver also packs its owned samples into the
  * surface it delivers (PackInputOFB, vtkOFBSamplePack), and a client that renders the
  * surface locally merges the packs of the server processes into the same OFB
- * (UpdateDeliveredOFB), or, where they cannot be merged, reports it and builds its own.
+ * (DeliveredOFB, in ProcessViewRequest), or, where they cannot be merged, reports it and
+ * builds its own.
  * - Colour by Solid Color, or by an array with Map Scalars off (direct colours, such as
  *   OFB Probe's "Colors"): the paint, the "Colors" sample array. It holds the input OFB's
  *   paint, else the surface's RGB(A) byte colours where its active point scalars are such
@@ -89,6 +90,7 @@ class vtkOFBLICPyramid;
 class vtkOFBPLIC;
 class vtkOFBPSampler;
 class vtkOFBPolyDataMapper;
+class vtkOFBSamplePack;
 class vtkOFBSampler;
 class vtkPolyData;
 
@@ -283,13 +285,6 @@ protected:
    * OFB. Run in RequestData, once per change of the data.
    */
   void PackInputOFB();
-  /**
-   * Where the input OFB is not in this process (UseInputOFB on): DeliveredOFB, the OFB
-   * merged from the packs in the delivered surface `data` (vtkOFBSamplePack::
-   * MergeFromBlocks), once per change of the packs; null without packs, or with an error where they
-   * cannot be merged (the OFB is then built from the surface).
-   */
-  void UpdateDeliveredOFB(vtkDataObject* data);
 
   vtkOFBPolyDataMapper* OFBMapper;
   vtkOFBPSampler* Sampler;
@@ -314,8 +309,7 @@ protected:
   vtkIdType GhostedCells;  // the owned cells of GhostedInput
   vtkSmartPointer<vtkOFB> EmptyOFB;
   vtkSmartPointer<vtkOFB> DeliveredOFB; // the input OFB packed into the delivered surface
-  vtkMTimeType DeliveredPacksTime; // vtkOFBSamplePack::GetPacksMTime of what it was merged from
-  std::string DeliveryProblem;     // why the last delivered packs could not be merged, if so
+  vtkSmartPointer<vtkOFBSamplePack> DeliveredPacks; // merges DeliveredOFB from the packs
   double OFBFrame[7];
 
 private:

@@ -31,7 +31,10 @@ client it also renders the view on the client (local rendering: the server deliv
 surface) and writes OUTPUT_DIR/ofb-surface-local.png, with the OFB Surface representation
 building its OFB and LIC from the delivered surface; pvbatch and the GUI write the same
 picture of the whole surface in one process as OUTPUT_DIR/ofb-surface-whole.png (on one
-process only). TestOFBClients.py runs them and compares.
+process only). A client also renders the probe's view locally (check_delivered_ofb): with
+the OFB the servers pack into the delivered surface (ofb-probe-local.png), at the mesh's
+resolution (ofb-probe-mesh.png), and surfaces with unusable packs (ofb-bad-*.png).
+TestOFBClients.py runs them and compares.
 """
 import argparse
 import json

@@ -40,10 +40,11 @@ hangs (ofbHangingClient.py). Then the results are compared with the pvbatch runs
   registered (the Pipeline Browser's list) and "OFB Surface" among the representations;
 - client-server: OFB Probe's output rendered by the client (local rendering), its OFB
   packed into the delivered surface (vtkOFBSamplePack), equals the server's picture of the
-  same view (its paint and LIC; correlation >= 0.999) and differs from the client's own OFB at the mesh's resolution (Use Input OFB
-  off); surfaces delivered with unusable packs (cells outside the frame, arrays of wrong
-  lengths, a frame of five values) give the client's error, once per kind, and its own OFB
-  built from the surface;
+  same view (its paint and LIC; correlation >= 0.999) and differs from the client's own
+  OFB at the mesh's resolution (Use Input OFB off); the delivered surface is larger by at
+  least 8 bytes per sample; surfaces delivered with unusable packs (cells outside the
+  frame, arrays of wrong lengths, a frame of five values) give the client's error, once
+  per kind, and its own OFB built from the surface;
 - the screenshots, by vtkOFBImageComparison (the LIC-aware comparison of
   OFB::TestingImage, run in Debian's Python with vtkofb): the one rendered where the data
   is against pvbatch's of N processes, the whole surface of one process (the client's

@@ -45,6 +45,18 @@ int vtkOFBParaViewWriter::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+vtkTypeBool vtkOFBParaViewWriter::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  if (vtkofbparaview::RequestOwnPiece(this->Controller, request, inputVector))
+  {
+    return 1;
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBParaViewWriter::WriteData()
 {
   vtkMultiProcessController* controller = this->Controller;
@@ -72,7 +84,7 @@ void vtkOFBParaViewWriter::WriteData()
   }
   vtkNew<vtkPolyData> share;
   vtkOFBSamplePack::Pack(ofb, share->GetFieldData(), SharePrefix);
-  std::vector<vtkSmartPointer<vtkDataObject>> shares;
+  std::vector<vtkSmartPointer<vtkPolyData>> shares;
   int result = 1;
   std::string problem;
   if (!vtkofbparaview::GatherShares(controller, share, shares))
@@ -87,6 +99,7 @@ void vtkOFBParaViewWriter::WriteData()
     {
       for (const auto& pack : vtkOFBSamplePack::FindPacks(s->GetFieldData(), SharePrefix))
       {
+
         packs.push_back(pack);
       }
     }

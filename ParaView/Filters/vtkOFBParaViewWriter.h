@@ -42,6 +42,10 @@ protected:
   vtkOFBParaViewWriter();
   ~vtkOFBParaViewWriter() override;
 
+  /// Asks for this process's piece (of the Controller's processes) when there are more.
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   void WriteData() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
 

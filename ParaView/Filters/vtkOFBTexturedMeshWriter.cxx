@@ -15,6 +15,7 @@
 #include "vtkOBJWriter.h"
 #include "vtkOFB.h"
 #include "vtkOFBMergeBlocks.h"
+#include "vtkOFBParaViewGather.h"
 #include "vtkOFBParaViewProbe.h"
 #include "vtkOFBSamplePack.h"
 #include "vtkOFBStagedFiles.h"
@@ -156,7 +157,7 @@ vtkSmartPointer<vtkPolyData> MakeShare(vtkPolyData* input, vtkOFB* ofb)
 /// points of a piece at exactly the coordinates of a point of an earlier piece merged with
 /// it (vtkOFBMergeBlocks; points of one piece are never merged with each other), without
 /// field data.
-vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkDataObject>>& shares)
+vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkPolyData>>& shares)
 {
   vtkNew<vtkMultiBlockDataSet> blocks;
   for (const auto& object : shares)
@@ -187,7 +188,7 @@ vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkDa
 /// Every process's owned samples as one OFB on their common frame (vtkOFBSamplePack::Merge:
 /// the samples of each grid cell in order of depth, ties in the order of the processes);
 /// null without a frame, and null with `problem` set when the processes' frames differ.
-vtkSmartPointer<vtkOFB> MergeSamples(const std::vector<vtkSmartPointer<vtkDataObject>>& shares,
+vtkSmartPointer<vtkOFB> MergeSamples(const std::vector<vtkSmartPointer<vtkPolyData>>& shares,
   std::string& problem)
 {
   std::vector<vtkOFBSamplePack::PackRef> packs;
@@ -246,19 +247,8 @@ vtkTypeBool vtkOFBTexturedMeshWriter::ProcessRequest(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  // A writer has no output to copy a piece request from: under several processes each
-  // asks for its own piece, as ParaView's parallel writers do (else every process would
-  // ask for the whole data, piece 0 of 1).
-  vtkMultiProcessController* controller = this->Controller;
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()) && controller &&
-    controller->GetNumberOfProcesses() > 1 && inputVector[0]->GetNumberOfInformationObjects() > 0)
+  if (vtkofbparaview::RequestOwnPiece(this->Controller, request, inputVector))
   {
-    vtkInformation* in = inputVector[0]->GetInformationObject(0);
-    in->Set(
-      vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), controller->GetLocalProcessId());
-    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
-      controller->GetNumberOfProcesses());
-    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     return 1;
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
@@ -370,14 +360,14 @@ bool vtkOFBTexturedMeshWriter::WriteMesh(vtkPolyData* input, vtkOFB* ofb)
 //------------------------------------------------------------------------------
 void vtkOFBTexturedMeshWriter::WriteDistributed(vtkPolyData* input, vtkOFB* ofb)
 {
-  // One gather of every process's share on the first process, which writes; then one
-  // broadcast of the result. Every process makes both calls, whatever its piece.
+  // Every process's share on the first process (one message each), which writes; then
+  // one broadcast of the result. Every process makes both calls, whatever its piece.
   vtkMultiProcessController* controller = this->Controller;
   const int rank = controller->GetLocalProcessId();
   vtkSmartPointer<vtkPolyData> share = MakeShare(input, ofb);
-  std::vector<vtkSmartPointer<vtkDataObject>> shares;
+  std::vector<vtkSmartPointer<vtkPolyData>> shares;
   int result[3] = { 0, 0, 0 }; // success, written texture size
-  if (!controller->Gather(share.Get(), shares, 0))
+  if (!vtkofbparaview::GatherShares(controller, share, shares))
   {
     vtkErrorMacro("Cannot write '" << this->FileName << "': gathering the pieces failed.");
   }

@@ -48,6 +48,8 @@ import sys
 import threading
 import time
 
+import ofbParaViewTesting
+
 TIMEOUT = 120  # seconds for one mpiexec run
 TRIES = 3  # runs that may miss the write before the test fails
 TARGETS = ["writer.obj", "writer.mtl", "writer.png"]
@@ -68,13 +70,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 out = os.path.join(args.output, args.scenario)
 export = os.path.join(out, "export")
 control = os.path.join(out, "control")
-failures = []
-
-
-def check(condition, what):
-    print(("ok:     " if condition else "FAILED: ") + what, flush=True)
-    if not condition:
-        failures.append(what)
+check, failures = ofbParaViewTesting.collector()
 
 
 def session(sid):

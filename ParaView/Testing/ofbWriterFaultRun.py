@@ -4,16 +4,16 @@ processes whose OFBs differ.
     mpiexec -np N pvbatch --symmetric ofbWriterFaultRun.py PLUGIN MESH DIR CONTROL [options]
 
 Every process runs this script (--symmetric) and first writes its process id to
-CONTROL/pid-<rank>. The mesh file MESH is distributed by RedistributeDataSet, given texture
-coordinates (Texture Map to Plane: the writer bakes a texture of TextureSize a side rather
-than an atlas, so a large TextureSize makes a long write), ghost cells, sampled (OFB
-Sampler), and OFB Probe hands its mesh and OFB to the writer, which writes DIR/writer.obj
+CONTROL/pid-<rank>. The mesh file MESH is given texture coordinates (Texture Map to
+Plane: the writer bakes a texture of TextureSize a side rather than an atlas, so a large
+TextureSize makes a long write), distributed by RedistributeDataSet with ghost cells,
+sampled (OFB Sampler), and OFB Probe hands its mesh and OFB to the writer, which writes DIR/writer.obj
 (+ writer.mtl, writer.png).
 
 Options:
   --existing         first write a complete export at TextureSize 64 and print
                      "complete export written" (the driver reads its bytes then)
-  --texture N        the TextureSize of the write that is to be killed (default 4096)
+  --texture N        the TextureSize of the write that is to be killed (default 2048)
   --kill-other-at-gather
                      the writer's StartEvent on the first process creates
                      CONTROL/writing-0; on the others the StartEvent waits for that file
@@ -27,14 +27,13 @@ Options:
 import argparse
 import os
 import signal
-import sys
 import time
 
 from paraview import servermanager
-from paraview.simple import (GhostCellsGenerator, LoadPlugin, OpenDataFile,
-                             RedistributeDataSet, ExtractSurface, TextureMaptoPlane)
+from paraview.simple import LoadPlugin, OpenDataFile, TextureMaptoPlane
 from vtkmodules.vtkCommonCore import vtkIntArray
-from vtkmodules.vtkParallelCore import vtkMultiProcessController
+
+import ofbParaViewTesting
 
 parser = argparse.ArgumentParser()
 parser.add_argument("plugin")
@@ -42,29 +41,20 @@ parser.add_argument("mesh")
 parser.add_argument("dir")
 parser.add_argument("control")
 parser.add_argument("--existing", action="store_true")
-parser.add_argument("--texture", type=int, default=4096)
+parser.add_argument("--texture", type=int, default=2048)
 parser.add_argument("--kill-other-at-gather", action="store_true")
 parser.add_argument("--frames-differ", action="store_true")
 args = parser.parse_args()
 
 LoadPlugin(args.plugin, ns=globals())
-controller = vtkMultiProcessController.GetGlobalController()
-rank = controller.GetLocalProcessId()
-ranks = controller.GetNumberOfProcesses()
+controller, rank, ranks = ofbParaViewTesting.processes()
+say, _ = ofbParaViewTesting.reporter(rank=rank)
 with open(os.path.join(args.control, "pid-%d" % rank), "w") as stream:
     stream.write("%d\n" % os.getpid())
 
 
-def say(*words):
-    if rank == 0:
-        print(*words, flush=True)
-
-
-source = OpenDataFile(args.mesh)
-pieces = RedistributeDataSet(Input=source)
-surface = ExtractSurface(Input=pieces)
-textured = TextureMaptoPlane(Input=surface)
-ghosted = GhostCellsGenerator(Input=textured, BuildIfRequired=1)
+textured = TextureMaptoPlane(Input=OpenDataFile(args.mesh))
+ghosted = ofbParaViewTesting.distributed_surface(textured)
 resolution = 48 if args.frames_differ and rank > 0 else 64
 sampler = OFBSampler(Input=ghosted, Resolution=resolution)
 probe = OFBProbe(Input=ghosted, OFB=sampler)

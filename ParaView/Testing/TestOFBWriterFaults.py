@@ -12,6 +12,9 @@ writer.obj, .mtl and .png) and acts on it from outside. SCENARIO:
 - first-existing: the same over a complete export written just before (TextureSize 64);
 - other-gather: the other process kills itself once the first has begun its write, before
   it sends its piece: the first is waiting for it in the gather;
+- other-stopped: the other process stops itself (SIGSTOP) there instead: mpiexec sees no
+  failure and waits; this script's timeout (HANG_TIMEOUT seconds) kills every process of
+  mpiexec's session, and nothing is written;
 - other-writing: the other process is killed while the first writes over a complete
   export (the first is stopped in its write meanwhile, then continued: mpiexec ends it
   before or after it renamed its files into place);
@@ -39,6 +42,7 @@ there and the dead process's staging folder is gone. frames-differ: the writer's
 nothing written, and pvbatch ends normally.
 """
 import argparse
+import ctypes
 import os
 import re
 import shutil
@@ -51,13 +55,14 @@ import time
 import ofbParaViewTesting
 
 TIMEOUT = 120  # seconds for one mpiexec run
+HANG_TIMEOUT = 20  # seconds for the run that hangs (other-stopped)
 TRIES = 3  # runs that may miss the write before the test fails
 TARGETS = ["writer.obj", "writer.mtl", "writer.png"]
 STAGE = re.compile(r"^\.writer\.obj\.tmp-(\d+)-(\d+)$")
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("scenario", choices=["first-fresh", "first-existing", "other-gather",
-                                         "other-writing", "frames-differ"])
+                                         "other-stopped", "other-writing", "frames-differ"])
 parser.add_argument("--mpiexec", required=True)
 parser.add_argument("--pvbatch", required=True)
 parser.add_argument("--paraview-python", required=True)
@@ -71,6 +76,13 @@ out = os.path.join(args.output, args.scenario)
 export = os.path.join(out, "export")
 control = os.path.join(out, "control")
 check, failures = ofbParaViewTesting.collector()
+
+# The ranks orphaned when mpiexec is killed become this process's children (Linux's child
+# subreaper), so that they are collected here rather than left as zombies.
+try:
+    ctypes.CDLL(None, use_errno=True).prctl(36, 1, 0, 0, 0)  # PR_SET_CHILD_SUBREAPER
+except (OSError, AttributeError):
+    pass
 
 
 def session(sid):
@@ -92,7 +104,7 @@ def session(sid):
 class Run:
     """mpiexec -np 2 pvbatch --symmetric ofbWriterFaultRun.py, in a session of its own."""
 
-    def __init__(self, *options):
+    def __init__(self, *options, timeout=TIMEOUT):
         os.makedirs(export, exist_ok=True)
         shutil.rmtree(control, ignore_errors=True)
         os.makedirs(control)
@@ -108,7 +120,8 @@ class Run:
         self.popen = subprocess.Popen(command, env=env, stdin=subprocess.DEVNULL,
                                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                       start_new_session=True, text=True, errors="replace")
-        self.deadline = time.monotonic() + TIMEOUT
+        self.timeout = timeout
+        self.deadline = time.monotonic() + timeout
         self.reader = threading.Thread(target=self._read, daemon=True)
         self.reader.start()
 
@@ -131,7 +144,7 @@ class Run:
                 print("mpiexec ended before %s" % what, flush=True)
                 return None
             time.sleep(0.001)
-        print("no %s within %d s" % (what, TIMEOUT), flush=True)
+        print("no %s within %d s" % (what, self.timeout), flush=True)
         return None
 
     def pid(self, rank):
@@ -139,9 +152,11 @@ class Run:
         with open(path) as stream:
             return int(stream.read())
 
-    def end(self):
+    def end(self, hangs=False):
         """mpiexec's exit status once it ended; when it runs past its time, every process
-        of its session is killed and the status is None."""
+        of its session is killed (SIGKILL) and the status is None. Checks that it ended
+        in time and left no process, or with `hangs`, that it ran past its time and that
+        killing its session left no process."""
         try:
             status = self.popen.wait(timeout=max(1.0, self.deadline - time.monotonic()))
         except subprocess.TimeoutExpired:
@@ -154,8 +169,26 @@ class Run:
                 pass
         self.popen.wait()
         self.reader.join(timeout=10)
-        check(status is not None, "mpiexec ended within %d s (status %s)" % (TIMEOUT, status))
-        check(not left, "no process of mpiexec's session left: %s" % left)
+        deadline = time.monotonic() + 10
+        while session(self.popen.pid) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        while True:  # the orphans adopted above
+            try:
+                if os.waitpid(-1, os.WNOHANG)[0] == 0:
+                    break
+            except ChildProcessError:
+                break
+        remaining = session(self.popen.pid)
+        if hangs:
+            check(status is None, "mpiexec still ran after %d s (status %s)"
+                  % (self.timeout, status))
+            check(left and not remaining, "its session's processes %s killed, none left: %s"
+                  % (left, remaining))
+        else:
+            check(status is not None, "mpiexec ended within %d s (status %s)"
+                  % (self.timeout, status))
+            check(not left and not remaining, "no process of mpiexec's session left: %s"
+                  % (left or remaining))
         return status
 
 
@@ -264,11 +297,23 @@ def kill_first(existing):
 def other_gather():
     """The other process killed before it sends its piece."""
     shutil.rmtree(export, ignore_errors=True)
-    run = Run("--texture", "64", "--kill-other-at-gather")
+    run = Run("--texture", "64", "--other-at-gather", "kill")
     status = run.end()
     check(status not in (0, None), "mpiexec reports the failure (status %s)" % status)
     check(run.said("rank 0: the write starts") and run.said("rank 1: killing itself"),
           "the first process began its write, the other killed itself before sending")
+    check(not run.said("the write ended"), "no process ended its write")
+    check(listing() == [], "nothing in the export folder: %s" % listing())
+
+
+def other_stopped():
+    """The other process stopped (not dead) before it sends its piece: mpiexec cannot see
+    it, so the run hangs; after HANG_TIMEOUT seconds this script kills mpiexec's session."""
+    shutil.rmtree(export, ignore_errors=True)
+    run = Run("--texture", "64", "--other-at-gather", "stop", timeout=HANG_TIMEOUT)
+    run.end(hangs=True)
+    check(run.said("rank 0: the write starts") and run.said("rank 1: stopping"),
+          "the first process began its write, the other stopped before sending")
     check(not run.said("the write ended"), "no process ended its write")
     check(listing() == [], "nothing in the export folder: %s" % listing())
 
@@ -339,7 +384,8 @@ def frames_differ():
 
 
 {"first-fresh": lambda: kill_first(False), "first-existing": lambda: kill_first(True),
- "other-gather": other_gather, "other-writing": other_writing,
+ "other-gather": other_gather, "other-stopped": other_stopped,
+ "other-writing": other_writing,
  "frames-differ": frames_differ}[args.scenario]()
 if failures:
     sys.exit("%d check(s) failed in %s" % (len(failures), args.scenario))

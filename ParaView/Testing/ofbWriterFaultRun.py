@@ -14,11 +14,12 @@ Options:
   --existing         first write a complete export at TextureSize 64 and print
                      "complete export written" (the driver reads its bytes then)
   --texture N        the TextureSize of the write that is to be killed (default 2048)
-  --kill-other-at-gather
+  --other-at-gather kill|stop
                      the writer's StartEvent on the first process creates
                      CONTROL/writing-0; on the others the StartEvent waits for that file
-                     and kills its own process (SIGKILL): the first process is then inside
-                     its write, waiting for the others' pieces (the gather)
+                     and kills (SIGKILL) or stops (SIGSTOP) its own process: the first
+                     process is then inside its write, waiting for the others' pieces
+                     (the gather)
   --frames-differ    the first process samples at resolution 64, the others at 48: their
                      OFBs have different frames; the writer must refuse the write on every
                      process with the same error code and write nothing. Prints
@@ -42,7 +43,7 @@ parser.add_argument("dir")
 parser.add_argument("control")
 parser.add_argument("--existing", action="store_true")
 parser.add_argument("--texture", type=int, default=2048)
-parser.add_argument("--kill-other-at-gather", action="store_true")
+parser.add_argument("--other-at-gather", choices=["kill", "stop"])
 parser.add_argument("--frames-differ", action="store_true")
 args = parser.parse_args()
 
@@ -70,7 +71,7 @@ if args.existing:
     controller.Barrier()
     say("complete export written")
 
-if args.kill_other_at_gather:
+if args.other_at_gather:
     marker = os.path.join(args.control, "writing-0")
 
     def started(caller, event):
@@ -83,8 +84,10 @@ if args.kill_other_at_gather:
         deadline = time.monotonic() + 60
         while not os.path.exists(marker) and time.monotonic() < deadline:
             time.sleep(0.01)
-        print("rank %d: killing itself before it sends its piece" % rank, flush=True)
-        os.kill(os.getpid(), signal.SIGKILL)
+        print("rank %d: %s before it sends its piece" % (
+            rank, "killing itself" if args.other_at_gather == "kill" else "stopping"),
+            flush=True)
+        os.kill(os.getpid(), signal.SIGKILL if args.other_at_gather == "kill" else signal.SIGSTOP)
 
     vtk_writer.AddObserver("StartEvent", started)
 

@@ -21,7 +21,7 @@ writer.obj, .mtl and .png) and acts on it from outside. SCENARIO:
 - frames-differ: the first process samples at another resolution than the other: the
   writer refuses the write.
 
-The write is caught in the middle deterministically: the writer stages its files in a
+The write is caught in the middle thus: the writer stages its files in a
 folder `.writer.obj.tmp-<process id>-<n>` beside the targets (vtkOFBStagedFiles) and
 renames them into place at the end, after the texture's PNG (about 0.2 s at TextureSize
 2048); this script polls the folder every millisecond, stops (SIGSTOP) the process named
@@ -35,9 +35,8 @@ export of before byte for byte (existing), and nothing else but the killed proce
 staging folder (`.writer.obj.tmp-<its id>-<n>`, never a visible name); in other-writing,
 where mpiexec ends the first process, either that or, when the first finished its write
 first, the complete new export (the new texture a whole 2048 x 2048 PNG) and no staging
-folder. first-fresh then
-writes again into the same folder (pvbatch on 2 processes, no kill): the complete export is
-there and the dead process's staging folder is gone. frames-differ: the writer's error
+folder. first-fresh then writes again into the same folder (pvbatch on 2 processes, no
+kill): the complete export is there and the dead process's staging folder is gone. frames-differ: the writer's error
 ("the processes' OFBs have different frames"), the same failure code on every process,
 nothing written, and pvbatch ends normally.
 """

@@ -140,15 +140,9 @@ def check(condition, what):
 
 # One connection to the X display for the whole run, so that the display does not reset
 # between the processes' windows (as ofbKeepDisplayOpen.py does for a pvbatch script).
-try:
-    import ctypes
-    import ctypes.util
+import ofbParaViewTesting  # noqa: E402 (beside this script)
 
-    _xlib = ctypes.CDLL(ctypes.util.find_library("X11") or "libX11.so.6")
-    _xlib.XOpenDisplay.restype = ctypes.c_void_p
-    _display = _xlib.XOpenDisplay(None)
-except OSError:
-    _display = None
+ofbParaViewTesting.keep_display_open()
 
 
 # ctest's timeout or ^C: end the processes started here before leaving.

@@ -14,15 +14,13 @@ from paraview import servermanager
 from paraview.simple import *
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
+import ofbParaViewTesting
 
 plugin, out = sys.argv[1], sys.argv[2]
 LoadPlugin(plugin, ns=globals())
 
 
-def check(condition, what):
-    if not condition:
-        raise AssertionError(what)
-    print("ok:", what)
+say, check = ofbParaViewTesting.reporter()
 
 
 def point_array(proxy, name, port=0):

@@ -30,7 +30,9 @@ import numpy as np
 from paraview.simple import *
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkDoubleArray
-from vtkmodules.vtkParallelCore import vtkCommunicator, vtkMultiProcessController
+from vtkmodules.vtkParallelCore import vtkCommunicator
+
+import ofbParaViewTesting
 
 LIC_TOLERANCE = 0.005
 PAINT_TOLERANCE = 0.01
@@ -43,21 +45,9 @@ ENDPOINT_TOLERANCE = 1e-3 / 96
 plugin, reference_dir = sys.argv[1], sys.argv[2]
 partitions = int(sys.argv[3]) if len(sys.argv) > 3 else 0
 LoadPlugin(plugin, ns=globals())
-controller = vtkMultiProcessController.GetGlobalController()
-rank = controller.GetLocalProcessId()
-ranks = controller.GetNumberOfProcesses()
-
-
-def say(*args):
-    if rank == 0:
-        print(*args, flush=True)
-
-
-def check(condition, what):
-    # Every process reaches every check with the same values (they are reduced).
-    if not condition:
-        raise AssertionError("%d ranks: %s" % (ranks, what))
-    say("ok (%d ranks):" % ranks, what)
+controller, rank, ranks = ofbParaViewTesting.processes()
+# Every process reaches every check with the same values (they are reduced).
+say, check = ofbParaViewTesting.reporter("%d ranks" % ranks, rank)
 
 
 def total(values):
@@ -102,11 +92,7 @@ def owned(data):
 sphere = Sphere(ThetaResolution=128, PhiResolution=64, Radius=0.5)
 field = Calculator(Input=sphere, ResultArrayName="Field",
                    Function="(-coordsY+0.3*coordsZ)*iHat+coordsX*jHat-0.3*coordsX*kHat")
-pieces = RedistributeDataSet(Input=field)
-if partitions:
-    pieces.NumberOfPartitions = partitions
-surface = ExtractSurface(Input=pieces)
-ghosted = GhostCellsGenerator(Input=surface, BuildIfRequired=1)
+ghosted = ofbParaViewTesting.distributed_surface(field, partitions)
 
 sampler = OFBSampler(Input=ghosted, Resolution=96)
 sampler.Vectors = ["POINTS", "Field"]
@@ -256,14 +242,7 @@ say("pathline particles %d, at t = 1.0 on %d processes" % (path_count, path_time
 
 # The image: the LIC probed back onto the mesh, composited by ParaView.
 probe = OFBProbe(Input=ghosted, OFB=lic)
-view = CreateView("RenderView")
-view.ViewSize = [SIZE, SIZE]
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.0, 0.0, 0.0]
-view.CameraPosition = [1.2, -2.2, 1.0]
-view.CameraFocalPoint = [0, 0, 0]
-view.CameraViewUp = [0, 0, 1]
+view = ofbParaViewTesting.black_view(SIZE)
 view.CameraParallelScale = 0.6
 display = Show(probe, view)
 ColorBy(display, ("POINTS", "LIC"))

@@ -281,8 +281,7 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::MakeSwirlSphere(true);
   vtkSmartPointer<vtkPolyData> seeds = vtkofbtest::MakeSeeds(40);
   const bool border = vtkofbtest::HasFlag(argc, argv, "--border");
-  const int pieces =
-    vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));
+  const int pieces = vtkofbtest::NumberOfPieces(controller, argc, argv);
   if (vtkofbtest::HasFlag(argc, argv, "--bad-input"))
   {
     return vtkofbtest::FinishAll(controller, RunBadInput(controller, mesh, seeds));

@@ -140,8 +140,7 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkMPIController> controller = vtkofbtest::StartMPI(&argc, &argv);
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
-  const int pieces =
-    vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));
+  const int pieces = vtkofbtest::NumberOfPieces(controller, argc, argv);
   vtkSmartPointer<vtkPolyData> mesh = MakeMesh();
   vtkSmartPointer<vtkPolyData> seeds = vtkofbtest::MakeSeeds(40, Centre);
 

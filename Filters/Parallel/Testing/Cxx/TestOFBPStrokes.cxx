@@ -332,8 +332,7 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkMPIController> controller = vtkofbtest::StartMPI(&argc, &argv);
   const int rank = controller->GetLocalProcessId();
   const int size = controller->GetNumberOfProcesses();
-  const int pieces =
-    vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));
+  const int pieces = vtkofbtest::NumberOfPieces(controller, argc, argv);
   vtkSmartPointer<vtkPolyData> pipe = MakePipe();
   if (vtkofbtest::HasFlag(argc, argv, "--bad-input"))
   {

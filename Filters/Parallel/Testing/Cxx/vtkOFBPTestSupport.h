@@ -177,6 +177,12 @@ inline int NumberOfPieces(vtkMultiProcessController* controller, bool emptyLast)
   return emptyLast && size > 1 ? size - 1 : size;
 }
 
+/// The number of pieces of a test run with `--empty-last` or not (NumberOfPieces above).
+inline int NumberOfPieces(vtkMultiProcessController* controller, int argc, char* argv[])
+{
+  return NumberOfPieces(controller, HasFlag(argc, argv, "--empty-last"));
+}
+
 /// Every process's `local` values, in the order of the processes, on the first process
 /// (empty on the others).
 inline std::vector<double> GatherOnFirst(vtkMultiProcessController* controller,

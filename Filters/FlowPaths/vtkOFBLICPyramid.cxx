@@ -136,6 +136,7 @@ void vtkOFBLICPyramid::RunLevelLICs(int levels)
       lic.TakeReference(this->LIC->NewInstance());
     }
     CopySettings(this->LIC, lic);
+    this->LIC->CopySettingsToLevel(lic);
     lic->SetInputData(level ? level : empty.Get());
     lic->Update();
     if (!level)
@@ -163,6 +164,13 @@ void vtkOFBLICPyramid::RunLevelLICs(int levels)
   }
   ++this->NumberOfLevelLICComputations;
   this->LastLevelLICTime = vtkTimerLog::GetUniversalTime() - start;
+}
+
+//------------------------------------------------------------------------------
+vtkOFBLIC* vtkOFBLICPyramid::GetLevelLIC(int k) const
+{
+  return k >= 1 && k <= static_cast<int>(this->LevelLICs.size()) ? this->LevelLICs[k - 1].Get()
+                                                                  : nullptr;
 }
 
 //------------------------------------------------------------------------------

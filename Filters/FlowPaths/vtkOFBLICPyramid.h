@@ -12,10 +12,11 @@
  * zoom, as an image-space LIC does, and no line where the level changes.
  *
  * The LIC of every level runs a LIC of the class of the one given with SetLIC (a
- * vtkOFBPLIC gives vtkOFBPLIC levels: contrast stretches over every process's samples),
- * with its settings (normally the filter that computed level 0's LIC; it is not run
- * here, its settings are read at every computation; a vtkOFBPLIC level uses its default
- * controller, the global one), on the level's samples, whose field, normals and other
+ * vtkOFBPLIC gives vtkOFBPLIC levels: contrast stretches over every process's samples,
+ * and the samples of other processes that the level's streamlines reach exchanged, see
+ * vtkOFBPLIC::LevelGhostSamples), with its settings (normally the filter that computed
+ * level 0's LIC; it is not run here, its settings are read at every computation, with
+ * vtkOFBLIC::CopySettingsToLevel), on the level's samples, whose field, normals and other
  * arrays are level 0's filtered down (vtkOFBPyramid). Its "LIC" and "LICMask" replace the
  * filtered ones. They are computed when the levels' arrays are: when the levels are
  * rebuilt, and when level 0's "LIC" array changes (a new LIC, another AnimationPhase). Each
@@ -90,6 +91,12 @@ public:
    * LevelLICsPending; the levels' arrays count as recomputed (GetArraysTime()).
    */
   void ComputeLevelLICs(int numberOfLevels = -1);
+
+  /**
+   * The LIC that computed level `k` (1 .. the levels of the last computation - 1), or
+   * null: its timings and, for a vtkOFBPLIC, what it exchanged.
+   */
+  vtkOFBLIC* GetLevelLIC(int k) const;
 
   /**
    * How many times the LICs of the levels were computed since creation (each time all

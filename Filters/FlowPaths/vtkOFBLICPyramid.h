@@ -123,6 +123,20 @@ protected:
   /// The LICs of levels 1 .. levels - 1 (ComputeLevelLICs without the arrays' times).
   void RunLevelLICs(int levels);
 
+  /**
+   * Called by RunLevelLICs before the levels' LICs, with the number of levels they run
+   * on (on every process where the LICs are distributed). The default does nothing.
+   */
+  virtual void BeginLevelLICs(int levels);
+
+  /**
+   * Called by RunLevelLICs before the LIC of level `k` (1..) runs: `level` is the level,
+   * null where this pyramid lacks it (the LIC then runs on an empty OFB). The default
+   * does nothing; vtkOFBPLICPyramid filters the level again from the finer level merged
+   * with the other processes' samples.
+   */
+  virtual void PrepareLevelLIC(int k, vtkOFB* level);
+
   /// Copy the settings of `from` that compute a LIC into `to`.
   static void CopySettings(vtkOFBLIC* from, vtkOFBLIC* to);
 

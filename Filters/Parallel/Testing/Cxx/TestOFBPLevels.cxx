@@ -22,6 +22,7 @@
 #include "vtkOFBLIC.h"
 #include "vtkOFBLICPyramid.h"
 #include "vtkOFBPLIC.h"
+#include "vtkOFBPLICPyramid.h"
 #include "vtkOFBPSampler.h"
 #include "vtkOFBPTestSupport.h"
 #include "vtkOFBSampler.h"
@@ -55,7 +56,7 @@ struct Pyramid
   vtkNew<vtkExtractPolyDataPiece> Extract;
   vtkNew<vtkOFBPSampler> Sampler;
   vtkNew<vtkOFBPLIC> LIC;
-  vtkNew<vtkOFBLICPyramid> Levels;
+  vtkNew<vtkOFBPLICPyramid> Levels;
   double Time = 0.0;
 
   Pyramid(vtkMultiProcessController* controller, int mode, bool cached, int resolution)
@@ -67,6 +68,7 @@ struct Pyramid
     this->LIC->SetLevelGhostSamples(mode);
     this->LIC->SetInputConnection(this->Sampler->GetOutputPort());
     Configure(this->LIC, cached);
+    this->Levels->SetController(controller);
     this->Levels->SetLIC(this->LIC);
     this->Levels->SetMaximumNumberOfLevels(NumberOfLevels);
     this->Levels->SetFilterCacheSize(0);
@@ -267,7 +269,14 @@ bool RunMode(vtkMultiProcessController* controller,
       lic);
     ok = ok && d.Samples == d.Reference && d.Reference > 0 && d.Placement == 0;
     off += d.Off;
-    if (mode != vtkOFBPLIC::GHOST_SAMPLES_INPUT && (d.Off > 0 || d.Max > 1e-4))
+    // The plain LIC: one process's values. The fast LIC: which sample seeds a streamline
+    // depends on the samples of its tile (64 cells a side, the whole of these levels),
+    // which the exchange gives only around the owned samples: the values agree
+    // statistically.
+    const bool plain = !cached || mode == vtkOFBPLIC::GHOST_SAMPLES_GATHER;
+    if (mode != vtkOFBPLIC::GHOST_SAMPLES_INPUT &&
+      (plain ? d.Off > 0 || d.Max > 1e-4
+             : d.Mean > 0.005 || static_cast<double>(d.Off) > 0.05 * d.Reference))
     {
       ok = false;
     }
@@ -331,5 +340,6 @@ int main(int argc, char* argv[])
     ok = RunMode(controller, mesh, pieces, mode, false) && ok;
   }
   ok = RunMode(controller, mesh, pieces, vtkOFBPLIC::GHOST_SAMPLES_EXCHANGE, true) && ok;
+  ok = RunMode(controller, mesh, pieces, vtkOFBPLIC::GHOST_SAMPLES_GATHER, true) && ok;
   return vtkofbtest::FinishAll(controller, ok);
 }

@@ -19,6 +19,7 @@
 #include "vtkOFBLIC.h"
 #include "vtkOFBLICPyramid.h"
 #include "vtkOFBPLIC.h"
+#include "vtkOFBPLICPyramid.h"
 #include "vtkOFBPSampler.h"
 #include "vtkOFBParaViewProbe.h"
 #include "vtkOFBPolyDataMapper.h"
@@ -35,6 +36,23 @@
 #include <cmath>
 
 vtkStandardNewMacro(vtkOFBSurfaceRepresentation);
+
+namespace
+{
+/**
+ * The LIC pyramid under MPI: its levels filtered and their LICs computed from the owned
+ * samples of every process within their reach (vtkOFBPLICPyramid, whatever the input's
+ * ghost depth), by every process together (SynchronizePyramid); each process's levels are
+ * its own: no filter cache, whose hits differ per process.
+ */
+vtkSmartPointer<vtkOFBLICPyramid> vtkOFBSurfaceRepresentationDistributedPyramid()
+{
+  auto pyramid = vtkSmartPointer<vtkOFBPLICPyramid>::New();
+  pyramid->DeferLevelLICsOn();
+  pyramid->SetFilterCacheSize(0);
+  return pyramid;
+}
+}
 
 //------------------------------------------------------------------------------
 vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
@@ -79,12 +97,10 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
     this->OFBMapper->SetOFBConnection(this->Sampler->GetOutputPort());
   }
   this->OFBMapper->GetColoring()->SetLICIntensity(0.8);
-  // Under MPI the levels' LICs are computed by every process together (SynchronizePyramid),
-  // and each process's levels are its own: no filter cache, whose hits differ per process.
+  // Under MPI the levels are computed by every process together (SynchronizePyramid).
   if (this->OFBSource)
   {
-    this->LICPyramid->DeferLevelLICsOn();
-    this->LICPyramid->SetFilterCacheSize(0);
+    this->LICPyramid = vtkOFBSurfaceRepresentationDistributedPyramid();
   }
 
   // Connects the new mapper to the actor, the selection and the backface actor.

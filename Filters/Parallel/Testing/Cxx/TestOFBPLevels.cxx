@@ -5,7 +5,7 @@
 // builds the pyramid of the whole sphere with no controller, gathers the owned samples of
 // every level and compares their LIC.
 //
-//   mpirun -np N TestOFBPLevels [--empty-last] [--bad-input]
+//   mpirun -np N TestOFBPLevels [--empty-last] [--bad-input] [--resolution R]
 //
 // Runs the levels' LICs with the samples exchanged (LevelGhostSamples EXCHANGE, the
 // default), all-gathered (GATHER), and, as the control, with the input's ghost samples
@@ -14,6 +14,7 @@
 // --empty-last: the last process has an empty piece (the others share the sphere).
 // --bad-input: no process has samples (a resolution out of range): the levels' LICs run
 // on empty OFBs on every process, with an exchange, and none waits for another.
+// --resolution R: level 0's resolution (default 96), for measurements.
 // Exit status 0 when every check holds, on every process.
 #include "vtkExtractPolyDataPiece.h"
 #include "vtkMPIController.h"
@@ -32,12 +33,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <cstdio>
 #include <vector>
 
 namespace
 {
-constexpr int Resolution = 96;
+int Resolution = 96; // --resolution N
 constexpr int GhostLevels = 1;
 constexpr int Steps = 10;
 constexpr int NumberOfLevels = 4; // level 0 and three coarser ones (48, 24 and 12 cells)
@@ -227,6 +230,10 @@ bool RunMode(vtkMultiProcessController* controller,
     distributed.Sampler->SetInputData(none);
   }
   distributed.Update(controller, std::min(rank, pieces - 1), pieces);
+  const double filter[2] = { static_cast<double>(distributed.Levels->GetLastFilterSentBytes()),
+    distributed.Levels->GetLastRefilterTime() };
+  const std::vector<double> filters =
+    vtkofbtest::GatherOnFirst(controller, { filter, filter + 2 });
   std::vector<std::vector<double>> gathered(NumberOfLevels);
   std::vector<double> traffic;
   for (int k = 1; k < NumberOfLevels; ++k)
@@ -247,8 +254,16 @@ bool RunMode(vtkMultiProcessController* controller,
   whole.Sampler->SetInputData(mesh);
   whole.Update(nullptr, 0, 1);
   bool ok = true;
-  std::printf("%s, %s LIC, %d processes (%d pieces), levels' LICs %.3f s:\n", ModeName(mode),
-    cached ? "fast" : "plain", size, pieces, distributed.Time);
+  double filterSent = 0.0, filterTime = 0.0;
+  for (int r = 0; r < size; ++r)
+  {
+    filterSent = std::max(filterSent, filters[2 * r]);
+    filterTime = std::max(filterTime, filters[2 * r + 1]);
+  }
+  std::printf("%s, %s LIC, %d processes (%d pieces), resolution %d, levels' LICs %.3f s; "
+              "filtering again: most sent %.0f B, %.4f s:\n",
+    ModeName(mode), cached ? "fast" : "plain", size, pieces, Resolution, distributed.Time,
+    filterSent, filterTime);
   size_t off = 0;
   for (int k = 1; k < NumberOfLevels; ++k)
   {
@@ -332,6 +347,13 @@ int main(int argc, char* argv[])
   if (vtkofbtest::HasFlag(argc, argv, "--bad-input"))
   {
     return vtkofbtest::FinishAll(controller, RunBadInput(controller, mesh, pieces));
+  }
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (!std::strcmp(argv[i], "--resolution"))
+    {
+      Resolution = std::max(16, std::atoi(argv[i + 1]));
+    }
   }
   bool ok = true;
   for (int mode : { vtkOFBPLIC::GHOST_SAMPLES_EXCHANGE, vtkOFBPLIC::GHOST_SAMPLES_GATHER,

@@ -652,7 +652,10 @@ bool vtkOFBPyramid::FilterLevel(int k, vtkOFB* source, const std::set<std::strin
     return false;
   }
   LevelState& state = this->States[k - 1];
-  return ResampleArrays(source, level, this->FilterRadius * level->GetCellSize(), names,
+  return ResampleArrays(source,
+    level,
+    this->FilterRadius * level->GetCellSize(),
+    names,
     state.ReferenceNormals.empty() ? nullptr : state.ReferenceNormals.data(),
     state.FellBack.data());
 }

@@ -178,7 +178,7 @@ void vtkOFBLICPyramid::PrepareLevelLIC(int, vtkOFB*) {}
 vtkOFBLIC* vtkOFBLICPyramid::GetLevelLIC(int k) const
 {
   return k >= 1 && k <= static_cast<int>(this->LevelLICs.size()) ? this->LevelLICs[k - 1].Get()
-                                                                  : nullptr;
+                                                                 : nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -88,89 +88,105 @@ struct Entry
   int Source;
   vtkIdType Index;
 };
-}
 
-//------------------------------------------------------------------------------
-bool vtkOFBPLICExchange::Run(vtkMultiProcessController* controller,
-  vtkOFB* input,
-  const std::vector<std::string>& names,
-  double radius)
+/// What one exchange works on.
+struct Work
 {
-  const int size = controller->GetNumberOfProcesses();
-  const int me = controller->GetLocalProcessId();
-  const vtkIdType n = input ? input->GetNumberOfSamples() : 0;
-  auto* ghostArray = n > 0 ? vtkUnsignedCharArray::SafeDownCast(input->GetSampleData()->GetArray(
-                               vtkDataSetAttributes::GhostArrayName()))
-                           : nullptr;
-  const unsigned char* ghosts =
-    ghostArray && ghostArray->GetNumberOfTuples() >= n ? ghostArray->GetPointer(0) : nullptr;
-  std::vector<vtkIdType> owned;
-  std::vector<double> positions;
-  double row[RowValues];
-  std::fill(row, row + RowValues, 0.0);
+  vtkMultiProcessController* Controller = nullptr;
+  int Size = 1;
+  int Me = 0;
+  vtkOFB* Input = nullptr;
+  vtkIdType N = 0;
+  const unsigned char* Ghosts = nullptr;
+  const vtkTypeUInt32* Cells = nullptr;
+  const float* Depths = nullptr;
+  std::vector<vtkIdType> Owned;
+  std::vector<double> Positions; // of the owned samples
+  double Row[RowValues];
+  std::vector<double> Rows;                     // every process's Row
+  std::vector<std::vector<vtkIdType>> Selected; // the owned samples for each process
+  std::vector<vtkIdType> Counts;                // samples, bytes for each process
+  std::vector<vtkIdType> Table;                 // every process's Counts
+  std::vector<std::vector<unsigned char>> Received;
+  std::vector<Entry> Entries;
+
+  /// What process `from` sends to process `to`: samples (0) or bytes (1).
+  vtkIdType Sent(int from, int to, int what) const
+  {
+    return this->Table[2 * static_cast<size_t>(this->Size) * from + 2 * to + what];
+  }
+};
+
+/// The owned samples, their box and the frame of every process (one all-gather).
+void GatherBoxes(Work& w)
+{
+  std::fill(w.Row, w.Row + RowValues, 0.0);
   for (int a = 0; a < 3; ++a)
   {
-    row[2 * a] = std::numeric_limits<double>::max();
-    row[2 * a + 1] = std::numeric_limits<double>::lowest();
+    w.Row[2 * a] = std::numeric_limits<double>::max();
+    w.Row[2 * a + 1] = std::numeric_limits<double>::lowest();
   }
-  for (vtkIdType i = 0; i < n; ++i)
+  for (vtkIdType i = 0; i < w.N; ++i)
   {
     double x[3];
-    if ((!ghosts || ghosts[i] == 0) && input->GetSamplePosition(i, x))
+    if ((!w.Ghosts || w.Ghosts[i] == 0) && w.Input->GetSamplePosition(i, x))
     {
-      owned.push_back(i);
-      positions.insert(positions.end(), x, x + 3);
+      w.Owned.push_back(i);
+      w.Positions.insert(w.Positions.end(), x, x + 3);
       for (int a = 0; a < 3; ++a)
       {
-        row[2 * a] = std::min(row[2 * a], x[a]);
-        row[2 * a + 1] = std::max(row[2 * a + 1], x[a]);
+        w.Row[2 * a] = std::min(w.Row[2 * a], x[a]);
+        w.Row[2 * a + 1] = std::max(w.Row[2 * a + 1], x[a]);
       }
     }
   }
-  row[6] = owned.empty() ? 0.0 : 1.0;
-  if (input && input->GetCellSize() > 0.0)
+  w.Row[6] = w.Owned.empty() ? 0.0 : 1.0;
+  if (w.Input && w.Input->GetCellSize() > 0.0)
   {
     for (int a = 0; a < 3; ++a)
     {
-      row[7 + a] = input->GetOrigin()[a];
-      row[11 + a] = static_cast<double>(input->GetDimensions()[a]);
+      w.Row[7 + a] = w.Input->GetOrigin()[a];
+      w.Row[11 + a] = static_cast<double>(w.Input->GetDimensions()[a]);
     }
-    row[10] = input->GetCellSize();
+    w.Row[10] = w.Input->GetCellSize();
   }
-  std::vector<double> rows(static_cast<size_t>(RowValues) * size);
-  controller->AllGather(row, rows.data(), RowValues);
+  w.Rows.resize(static_cast<size_t>(RowValues) * w.Size);
+  w.Controller->AllGather(w.Row, w.Rows.data(), RowValues);
+}
 
-  // The common frame: that of every process that has one.
+/// The frame of every process that has one (origin, cell size, dimensions): null where
+/// none has, or (with `problem`) where they differ.
+const double* CommonFrame(const Work& w, std::string& problem)
+{
   const double* frame = nullptr;
-  for (int r = 0; r < size; ++r)
+  for (int r = 0; r < w.Size; ++r)
   {
-    const double* other = rows.data() + RowValues * r + 7;
+    const double* other = w.Rows.data() + RowValues * r + 7;
     if (!(other[3] > 0.0))
     {
       continue;
     }
     if (frame && !std::equal(other, other + 7, frame))
     {
-      this->Problem = "the processes' OFBs have different frames (sample them on one frame: "
-                      "vtkOFBPSampler)";
-      return false;
+      problem = "the processes' OFBs have different frames (sample them on one frame: "
+                "vtkOFBPSampler)";
+      return nullptr;
     }
     frame = frame ? frame : other;
   }
-  this->Merged = vtkSmartPointer<vtkOFB>::New();
-  this->InputToMerged.assign(static_cast<size_t>(n), -1);
-  if (!frame)
-  {
-    return true; // no process has samples
-  }
+  return frame;
+}
 
-  // What goes to each process: the owned samples within `radius` of its owned samples' box.
-  const Arrays arrays(input, names);
-  std::vector<std::vector<vtkIdType>> selected(size);
-  for (int r = 0; r < size && arrays.Valid && !owned.empty(); ++r)
+/// For each other process, the owned samples within `radius` of its owned samples' box
+/// (every owned sample where `radius` is negative); then what every process sends to
+/// every other (one all-gather of 2 P counts).
+void Select(Work& w, const Arrays& arrays, double radius)
+{
+  w.Selected.assign(w.Size, {});
+  for (int r = 0; r < w.Size && arrays.Valid && !w.Owned.empty(); ++r)
   {
-    const double* box = rows.data() + RowValues * r;
-    if (r == me || box[6] == 0.0)
+    const double* box = w.Rows.data() + RowValues * r;
+    if (r == w.Me || box[6] == 0.0)
     {
       continue;
     }
@@ -180,44 +196,46 @@ bool vtkOFBPLICExchange::Run(vtkMultiProcessController* controller,
     {
       lo[a] = radius < 0.0 ? std::numeric_limits<double>::lowest() : box[2 * a] - radius;
       hi[a] = radius < 0.0 ? std::numeric_limits<double>::max() : box[2 * a + 1] + radius;
-      meets = meets && row[2 * a] <= hi[a] && row[2 * a + 1] >= lo[a];
+      meets = meets && w.Row[2 * a] <= hi[a] && w.Row[2 * a + 1] >= lo[a];
     }
-    for (size_t k = 0; meets && k < owned.size(); ++k)
+    for (size_t k = 0; meets && k < w.Owned.size(); ++k)
     {
-      const double* x = positions.data() + 3 * k;
+      const double* x = w.Positions.data() + 3 * k;
       if (x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1] && x[2] >= lo[2] &&
         x[2] <= hi[2])
       {
-        selected[r].push_back(owned[k]);
+        w.Selected[r].push_back(w.Owned[k]);
       }
     }
   }
-  std::vector<vtkIdType> counts(2 * static_cast<size_t>(size), 0);
-  for (int r = 0; r < size; ++r)
+  w.Counts.assign(2 * static_cast<size_t>(w.Size), 0);
+  for (int r = 0; r < w.Size; ++r)
   {
-    counts[2 * r] = static_cast<vtkIdType>(selected[r].size());
-    counts[2 * r + 1] = counts[2 * r] * static_cast<vtkIdType>(arrays.RecordBytes);
+    w.Counts[2 * r] = static_cast<vtkIdType>(w.Selected[r].size());
+    w.Counts[2 * r + 1] = w.Counts[2 * r] * static_cast<vtkIdType>(arrays.RecordBytes);
   }
-  std::vector<vtkIdType> table(2 * static_cast<size_t>(size) * size);
-  controller->AllGather(counts.data(), table.data(), 2 * size);
+  w.Table.resize(2 * static_cast<size_t>(w.Size) * w.Size);
+  w.Controller->AllGather(w.Counts.data(), w.Table.data(), 2 * w.Size);
+}
 
-  // One message each way per pair that has samples for the other.
-  std::vector<std::vector<unsigned char>> received(size);
-  const vtkTypeUInt32* cells = n > 0 ? input->GetCellIndex()->GetPointer(0) : nullptr;
-  const float* depths = n > 0 ? input->GetDepths()->GetPointer(0) : nullptr;
-  for (int round = 0; round < size + (size % 2) - 1; ++round)
+/// One message each way per pair of processes that has samples for the other, in the
+/// rounds of a round-robin tournament (the lower process of a pair sends first).
+void Transfer(Work& w, const Arrays& arrays, vtkOFBPLICExchange& result)
+{
+  w.Received.assign(w.Size, {});
+  for (int round = 0; round < w.Size + (w.Size % 2) - 1; ++round)
   {
-    const int p = Partner(me, round, size);
-    if (p == me)
+    const int p = Partner(w.Me, round, w.Size);
+    if (p == w.Me)
     {
       continue;
     }
-    std::vector<unsigned char> message(static_cast<size_t>(counts[2 * p + 1]));
+    std::vector<unsigned char> message(static_cast<size_t>(w.Counts[2 * p + 1]));
     unsigned char* out = message.data();
-    for (vtkIdType i : selected[p])
+    for (vtkIdType i : w.Selected[p])
     {
-      std::memcpy(out, cells + i, 4);
-      std::memcpy(out + 4, depths + i, 4);
+      std::memcpy(out, w.Cells + i, 4);
+      std::memcpy(out + 4, w.Depths + i, 4);
       out += 8;
       for (size_t a = 0; a < arrays.List.size(); ++a)
       {
@@ -225,105 +243,112 @@ bool vtkOFBPLICExchange::Run(vtkMultiProcessController* controller,
         out += arrays.TupleBytes[a];
       }
     }
-    const vtkIdType expected = table[2 * static_cast<size_t>(size) * p + 2 * me + 1];
-    received[p].resize(static_cast<size_t>(expected));
+    const vtkIdType expected = w.Sent(p, w.Me, 1);
+    w.Received[p].resize(static_cast<size_t>(expected));
     for (int step = 0; step < 2; ++step)
     {
-      if ((step == 0) == (me < p))
+      if ((step == 0) == (w.Me < p))
       {
         if (!message.empty())
         {
-          controller->Send(message.data(), static_cast<vtkIdType>(message.size()), p, ExchangeTag);
+          w.Controller->Send(
+            message.data(), static_cast<vtkIdType>(message.size()), p, ExchangeTag);
         }
       }
       else if (expected > 0)
       {
-        controller->Receive(received[p].data(), expected, p, ExchangeTag);
+        w.Controller->Receive(w.Received[p].data(), expected, p, ExchangeTag);
       }
     }
-    this->SentSamples += counts[2 * p];
-    this->SentBytes += counts[2 * p + 1];
-    this->ReceivedBytes += expected;
+    result.SentSamples += w.Counts[2 * p];
+    result.SentBytes += w.Counts[2 * p + 1];
+    result.ReceivedBytes += expected;
   }
+}
 
-  // Own owned samples and the received ones, in the order of the processes, then sorted
-  // as one process orders them: by cell, then depth.
-  std::vector<Entry> entries;
-  for (int r = 0; r < size; ++r)
+/// Own owned samples and the received ones, in the order of the processes, then sorted
+/// as one process orders them: by cell, then depth.
+void Collect(Work& w, const Arrays& arrays, vtkOFBPLICExchange& result)
+{
+  for (int r = 0; r < w.Size; ++r)
   {
-    if (r == me)
+    if (r == w.Me)
     {
-      for (vtkIdType i : owned)
+      for (vtkIdType i : w.Owned)
       {
-        entries.push_back({ cells[i], depths[i], me, i });
+        w.Entries.push_back({ w.Cells[i], w.Depths[i], w.Me, i });
       }
       continue;
     }
-    const vtkIdType count = table[2 * static_cast<size_t>(size) * r + 2 * me];
+    const vtkIdType count = w.Sent(r, w.Me, 0);
     if (count == 0)
     {
       continue;
     }
     if (count * static_cast<vtkIdType>(arrays.RecordBytes) !=
-      static_cast<vtkIdType>(received[r].size()))
+      static_cast<vtkIdType>(w.Received[r].size()))
     {
-      this->Problem = "process " + std::to_string(r) + "'s samples do not have this process's "
-                      "sample arrays";
+      result.Problem =
+        "process " + std::to_string(r) + "'s samples do not have this process's sample arrays";
       continue;
     }
     for (vtkIdType k = 0; k < count; ++k)
     {
-      const unsigned char* record = received[r].data() + k * arrays.RecordBytes;
+      const unsigned char* record = w.Received[r].data() + k * arrays.RecordBytes;
       Entry e{ 0, 0.0f, r, k };
       std::memcpy(&e.Cell, record, 4);
       std::memcpy(&e.Depth, record + 4, 4);
-      entries.push_back(e);
+      w.Entries.push_back(e);
     }
-    this->ReceivedSamples += count;
+    result.ReceivedSamples += count;
   }
-  std::stable_sort(entries.begin(),
-    entries.end(),
+  std::stable_sort(w.Entries.begin(),
+    w.Entries.end(),
     [](const Entry& a, const Entry& b)
     { return a.Cell != b.Cell ? a.Cell < b.Cell : a.Depth < b.Depth; });
+}
 
-  vtkOFB* merged = this->Merged;
-  const vtkIdType dims[3] = { static_cast<vtkIdType>(frame[4]), static_cast<vtkIdType>(frame[5]),
+/// The merged OFB of the entries on `frame`: cells, depths, the arrays, the ghost flags.
+bool Build(Work& w, const Arrays& arrays, const double* frame, vtkOFBPLICExchange& result)
+{
+  vtkOFB* merged = result.Merged;
+  const vtkIdType dims[3] = { static_cast<vtkIdType>(frame[4]),
+    static_cast<vtkIdType>(frame[5]),
     static_cast<vtkIdType>(frame[6]) };
+  const vtkIdType total = static_cast<vtkIdType>(w.Entries.size());
   if (!merged->SetFrame(frame, frame[3], dims) ||
-    (!entries.empty() && static_cast<vtkIdType>(entries.back().Cell) >= merged->GetNumberOfCells()))
+    (total > 0 && static_cast<vtkIdType>(w.Entries.back().Cell) >= merged->GetNumberOfCells()))
   {
-    this->Problem = "the exchanged samples do not fit the frame";
-    this->Merged = nullptr;
+    result.Problem = "the exchanged samples do not fit the frame";
     return false;
   }
-  const vtkIdType total = static_cast<vtkIdType>(entries.size());
   vtkTypeUInt32* offsets = merged->GetCellOffsets()->GetPointer(0);
-  for (const Entry& e : entries)
+  for (const Entry& e : w.Entries)
   {
     ++offsets[e.Cell + 1];
   }
   std::partial_sum(offsets, offsets + merged->GetNumberOfCells() + 1, offsets);
   if (!merged->AllocateSamples(total))
   {
-    this->Problem = "out of memory";
-    this->Merged = nullptr;
+    result.Problem = "out of memory";
     return false;
   }
-  float* mergedDepths = merged->GetDepths()->GetPointer(0);
-  vtkNew<vtkUnsignedCharArray> mergedGhosts;
-  mergedGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
-  mergedGhosts->SetNumberOfTuples(total);
+  float* depths = merged->GetDepths()->GetPointer(0);
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfTuples(total);
   for (vtkIdType j = 0; j < total; ++j)
   {
-    mergedDepths[j] = entries[j].Depth;
-    mergedGhosts->SetValue(j, entries[j].Source == me ? 0 : 1);
-    if (entries[j].Source == me)
+    depths[j] = w.Entries[j].Depth;
+    ghosts->SetValue(j, w.Entries[j].Source == w.Me ? 0 : 1);
+    if (w.Entries[j].Source == w.Me)
     {
-      this->InputToMerged[entries[j].Index] = j;
+      result.InputToMerged[w.Entries[j].Index] = j;
     }
   }
   merged->BuildCellIndex();
   vtkPointData* pd = merged->GetSampleData();
+  vtkPointData* inputData = w.Input ? w.Input->GetSampleData() : nullptr;
   size_t offset = 8;
   for (size_t a = 0; a < arrays.List.size(); ++a)
   {
@@ -333,18 +358,17 @@ bool vtkOFBPLICExchange::Run(vtkMultiProcessController* controller,
     to->SetName(from->GetName());
     to->SetNumberOfComponents(from->GetNumberOfComponents());
     to->SetNumberOfTuples(total);
-    unsigned char* target = static_cast<unsigned char*>(to->GetVoidPointer(0));
+    auto* target = static_cast<unsigned char*>(to->GetVoidPointer(0));
     const size_t bytes = arrays.TupleBytes[a];
     for (vtkIdType j = 0; j < total; ++j)
     {
-      const Entry& e = entries[j];
-      const unsigned char* source = e.Source == me
+      const Entry& e = w.Entries[j];
+      const unsigned char* source = e.Source == w.Me
         ? arrays.Tuple(a, e.Index)
-        : received[e.Source].data() + e.Index * arrays.RecordBytes + offset;
+        : w.Received[e.Source].data() + e.Index * arrays.RecordBytes + offset;
       std::memcpy(target + j * bytes, source, bytes);
     }
     offset += bytes;
-    vtkPointData* inputData = input->GetSampleData();
     if (inputData->GetNormals() == from)
     {
       pd->SetNormals(to);
@@ -358,26 +382,76 @@ bool vtkOFBPLICExchange::Run(vtkMultiProcessController* controller,
       pd->AddArray(to);
     }
   }
-  pd->AddArray(mergedGhosts);
+  pd->AddArray(ghosts);
+  return true;
+}
 
-  // A ghost sample: the owner's sample of its cell nearest in depth.
-  const double tolerance = 0.5 * frame[3];
-  for (vtkIdType i = 0; ghosts && i < n; ++i)
+/// Each ghost sample of the input: the received sample of its cell nearest in depth,
+/// within half a cell.
+void MapGhosts(const Work& w, vtkOFBPLICExchange& result)
+{
+  vtkOFB* merged = result.Merged;
+  const vtkTypeUInt32* offsets = merged->GetCellOffsets()->GetPointer(0);
+  const float* depths = merged->GetDepths()->GetPointer(0);
+  const double tolerance = 0.5 * merged->GetCellSize();
+  for (vtkIdType i = 0; w.Ghosts && i < w.N; ++i)
   {
-    if (ghosts[i] == 0)
+    if (w.Ghosts[i] == 0)
     {
       continue;
     }
     double best = tolerance;
-    for (vtkIdType j = offsets[cells[i]]; j < static_cast<vtkIdType>(offsets[cells[i] + 1]); ++j)
+    for (vtkIdType j = offsets[w.Cells[i]]; j < static_cast<vtkIdType>(offsets[w.Cells[i] + 1]);
+         ++j)
     {
-      const double d = std::abs(static_cast<double>(mergedDepths[j]) - depths[i]);
-      if (entries[j].Source != me && d <= best)
+      const double d = std::abs(static_cast<double>(depths[j]) - w.Depths[i]);
+      if (w.Entries[j].Source != w.Me && d <= best)
       {
         best = d;
-        this->InputToMerged[i] = j;
+        result.InputToMerged[i] = j;
       }
     }
   }
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPLICExchange::Run(vtkMultiProcessController* controller,
+  vtkOFB* input,
+  const std::vector<std::string>& names,
+  double radius)
+{
+  Work w;
+  w.Controller = controller;
+  w.Size = controller->GetNumberOfProcesses();
+  w.Me = controller->GetLocalProcessId();
+  w.Input = input;
+  w.N = input ? input->GetNumberOfSamples() : 0;
+  auto* ghosts = w.N > 0 ? vtkUnsignedCharArray::SafeDownCast(input->GetSampleData()->GetArray(
+                             vtkDataSetAttributes::GhostArrayName()))
+                         : nullptr;
+  w.Ghosts = ghosts && ghosts->GetNumberOfTuples() >= w.N ? ghosts->GetPointer(0) : nullptr;
+  w.Cells = w.N > 0 ? input->GetCellIndex()->GetPointer(0) : nullptr;
+  w.Depths = w.N > 0 ? input->GetDepths()->GetPointer(0) : nullptr;
+  GatherBoxes(w);
+  const double* frame = CommonFrame(w, this->Problem);
+  this->Merged = vtkSmartPointer<vtkOFB>::New();
+  this->InputToMerged.assign(static_cast<size_t>(w.N), -1);
+  if (!frame)
+  {
+    // No process has samples (nothing to exchange), or the frames differ (every process
+    // sees it and returns here).
+    return this->Problem.empty();
+  }
+  const Arrays arrays(input, names);
+  Select(w, arrays, radius);
+  Transfer(w, arrays, *this);
+  Collect(w, arrays, *this);
+  if (!Build(w, arrays, frame, *this))
+  {
+    this->Merged = nullptr;
+    return false;
+  }
+  MapGhosts(w, *this);
   return this->Problem.empty();
 }

@@ -28,7 +28,7 @@ const unsigned char* GhostFlags(vtkOFB* ofb)
   auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
     ofb->GetSampleData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
   return ghosts && ghosts->GetNumberOfTuples() >= ofb->GetNumberOfSamples() ? ghosts->GetPointer(0)
-                                                                             : nullptr;
+                                                                            : nullptr;
 }
 }
 
@@ -183,8 +183,7 @@ void vtkOFBPLICPyramid::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Controller: " << this->Controller << "\n";
-  os << indent << "ExchangeFilterSources: " << (this->ExchangeFilterSources ? "On" : "Off")
-     << "\n";
+  os << indent << "ExchangeFilterSources: " << (this->ExchangeFilterSources ? "On" : "Off") << "\n";
   os << indent << "LastFilterSentBytes: " << this->LastFilterSentBytes << "\n";
   os << indent << "LastFilterReceivedBytes: " << this->LastFilterReceivedBytes << "\n";
   os << indent << "LastRefilterTime: " << this->LastRefilterTime << " s\n";

@@ -234,6 +234,12 @@ bool RunMode(vtkMultiProcessController* controller,
   const double filter[2] = { static_cast<double>(distributed.Levels->GetLastFilterSentBytes()),
     distributed.Levels->GetLastRefilterTime() };
   const std::vector<double> filters = vtkofbtest::GatherOnFirst(controller, { filter, filter + 2 });
+  // The mean of level 0's LIC over every process's owned samples, as each process has it.
+  double mean = -1.0;
+  const double hasMean = distributed.Levels->GetSharedMean("LIC", mean) ? 1.0 : 0.0;
+  const double meanRow[2] = { hasMean, mean };
+  const std::vector<double> means = vtkofbtest::GatherOnFirst(controller, { meanRow, meanRow + 2 });
+  const std::vector<double> levelZero = vtkofbtest::GatherOnFirst(controller, distributed.Owned(0));
   std::vector<std::vector<double>> gathered(NumberOfLevels);
   std::vector<double> traffic;
   for (int k = 1; k < NumberOfLevels; ++k)
@@ -271,6 +277,26 @@ bool RunMode(vtkMultiProcessController* controller,
     distributed.Time,
     filterSent,
     filterTime);
+  double sum = 0.0;
+  for (size_t i = 2; i < levelZero.size(); i += Fields)
+  {
+    sum += std::min(1.0, std::max(0.0, levelZero[i]));
+  }
+  const double expected = levelZero.empty() ? 0.5 : sum / (levelZero.size() / Fields);
+  // (A process whose piece is empty has no level 0, nor a mean: it draws nothing.)
+  for (int r = 0; r < pieces; ++r)
+  {
+    if (means[2 * r] != 1.0 || std::abs(means[2 * r + 1] - expected) > 1e-9)
+    {
+      std::printf("FAIL process %d's shared mean of level 0's LIC: %s %.9f, the owned samples' "
+                  "%.9f\n",
+        r,
+        means[2 * r] == 1.0 ? "" : "none,",
+        means[2 * r + 1],
+        expected);
+      ok = false;
+    }
+  }
   size_t off = 0;
   for (int k = 1; k < NumberOfLevels; ++k)
   {

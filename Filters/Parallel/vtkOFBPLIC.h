@@ -107,7 +107,9 @@ public:
   ///@{
   /**
    * GhostSamples of the LICs of vtkOFBLICPyramid's coarser levels computed with this
-   * LIC's settings (CopySettingsToLevel; default GHOST_SAMPLES_EXCHANGE).
+   * LIC's settings (CopySettingsToLevel; default GHOST_SAMPLES_EXCHANGE). Under MPI their
+   * updates then always make collective calls: compute the levels' LICs on every process
+   * together (vtkOFBLICPyramid::DeferLevelLICs, vtkOFBPLICPyramid).
    */
   vtkSetClampMacro(LevelGhostSamples, int, GHOST_SAMPLES_INPUT, GHOST_SAMPLES_GATHER);
   vtkGetMacro(LevelGhostSamples, int);

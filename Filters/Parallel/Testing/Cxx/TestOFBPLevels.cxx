@@ -209,111 +209,89 @@ const char* ModeName(int mode)
                                                  : "all-gather";
 }
 
-/// One mode on every process; on the first process the comparison with one process.
-/// False where a check fails.
-bool RunMode(vtkMultiProcessController* controller,
-  vtkPolyData* mesh,
-  int pieces,
-  int mode,
-  bool cached)
+/// What every process has after the levels' LICs, on the first process.
+struct Gathered
 {
-  const int rank = controller->GetLocalProcessId();
-  const int size = controller->GetNumberOfProcesses();
-  vtkNew<vtkPolyData> none;
-  Pyramid distributed(controller, mode, cached, Resolution);
-  if (rank < pieces)
-  {
-    distributed.Extract->SetInputData(mesh);
-    distributed.Sampler->SetInputConnection(distributed.Extract->GetOutputPort());
-  }
-  else
-  {
-    distributed.Sampler->SetInputData(none);
-  }
-  distributed.Update(controller, std::min(rank, pieces - 1), pieces);
-  const double filter[2] = { static_cast<double>(distributed.Levels->GetLastFilterSentBytes()),
-    distributed.Levels->GetLastRefilterTime() };
-  const std::vector<double> filters = vtkofbtest::GatherOnFirst(controller, { filter, filter + 2 });
-  // The mean of level 0's LIC over every process's owned samples, as each process has it.
+  std::vector<double> Filters;   // per process: bytes sent to filter again, seconds, levels
+  std::vector<double> Means;     // per process: whether it has the shared mean, the mean
+  std::vector<double> LevelZero; // the owned samples of level 0
+  std::vector<std::vector<double>> Levels; // the owned samples of each coarser level
+  std::vector<double> Traffic; // per level and process: sent, received, exchange s, LIC s
+};
+
+Gathered Gather(vtkMultiProcessController* controller, const Pyramid& distributed)
+{
+  Gathered g;
+  vtkOFBPLICPyramid* levels = distributed.Levels;
+  const double filter[3] = { static_cast<double>(levels->GetLastFilterSentBytes()),
+    levels->GetLastRefilterTime(),
+    static_cast<double>(levels->GetLastRefilteredLevels()) };
+  g.Filters = vtkofbtest::GatherOnFirst(controller, { filter, filter + 3 });
   double mean = -1.0;
-  const double hasMean = distributed.Levels->GetSharedMean("LIC", mean) ? 1.0 : 0.0;
-  const double meanRow[2] = { hasMean, mean };
-  const std::vector<double> means = vtkofbtest::GatherOnFirst(controller, { meanRow, meanRow + 2 });
-  const std::vector<double> levelZero = vtkofbtest::GatherOnFirst(controller, distributed.Owned(0));
-  std::vector<std::vector<double>> gathered(NumberOfLevels);
-  std::vector<double> traffic;
+  const double row[2] = { levels->GetSharedMean("LIC", mean) ? 1.0 : 0.0, mean };
+  g.Means = vtkofbtest::GatherOnFirst(controller, { row, row + 2 });
+  g.LevelZero = vtkofbtest::GatherOnFirst(controller, distributed.Owned(0));
+  g.Levels.resize(NumberOfLevels);
   for (int k = 1; k < NumberOfLevels; ++k)
   {
-    gathered[k] = vtkofbtest::GatherOnFirst(controller, distributed.Owned(k));
-    auto* lic = vtkOFBPLIC::SafeDownCast(distributed.Levels->GetLevelLIC(k));
-    const double row[4] = { lic ? static_cast<double>(lic->GetLastSentBytes()) : 0.0,
+    g.Levels[k] = vtkofbtest::GatherOnFirst(controller, distributed.Owned(k));
+    auto* lic = vtkOFBPLIC::SafeDownCast(levels->GetLevelLIC(k));
+    const double t[4] = { lic ? static_cast<double>(lic->GetLastSentBytes()) : 0.0,
       lic ? static_cast<double>(lic->GetLastReceivedBytes()) : 0.0,
       lic ? lic->GetLastExchangeTime() : 0.0,
       lic ? lic->GetLastExecutionTime() / 1000.0 : 0.0 };
-    std::vector<double> all = vtkofbtest::GatherOnFirst(controller, { row, row + 4 });
-    traffic.insert(traffic.end(), all.begin(), all.end());
+    std::vector<double> all = vtkofbtest::GatherOnFirst(controller, { t, t + 4 });
+    g.Traffic.insert(g.Traffic.end(), all.begin(), all.end());
   }
-  if (rank != 0)
-  {
-    return true;
-  }
-  Pyramid whole(nullptr, mode, cached, Resolution);
-  whole.Sampler->SetInputData(mesh);
-  whole.Update(nullptr, 0, 1);
-  bool ok = true;
-  double filterSent = 0.0, filterTime = 0.0;
-  for (int r = 0; r < size; ++r)
-  {
-    filterSent = std::max(filterSent, filters[2 * r]);
-    filterTime = std::max(filterTime, filters[2 * r + 1]);
-  }
-  std::printf("%s, %s LIC, %d processes (%d pieces), resolution %d, levels' LICs %.3f s; "
-              "filtering again: most sent %.0f B, %.4f s:\n",
-    ModeName(mode),
-    cached ? "fast" : "plain",
-    size,
-    pieces,
-    Resolution,
-    distributed.Time,
-    filterSent,
-    filterTime);
+  return g;
+}
+
+/// Every process with a piece has the shared mean of level 0's LIC: that of all owned
+/// samples. (A process whose piece is empty has no level 0, nor a mean: it draws nothing.)
+bool CheckMean(const Gathered& g, int pieces)
+{
   double sum = 0.0;
-  for (size_t i = 2; i < levelZero.size(); i += Fields)
+  for (size_t i = 2; i < g.LevelZero.size(); i += Fields)
   {
-    sum += std::min(1.0, std::max(0.0, levelZero[i]));
+    sum += std::min(1.0, std::max(0.0, g.LevelZero[i]));
   }
-  const double expected = levelZero.empty() ? 0.5 : sum / (levelZero.size() / Fields);
-  // (A process whose piece is empty has no level 0, nor a mean: it draws nothing.)
+  const double expected = g.LevelZero.empty() ? 0.5 : sum / (g.LevelZero.size() / Fields);
+  bool ok = true;
   for (int r = 0; r < pieces; ++r)
   {
-    if (means[2 * r] != 1.0 || std::abs(means[2 * r + 1] - expected) > 1e-9)
+    if (g.Means[2 * r] != 1.0 || std::abs(g.Means[2 * r + 1] - expected) > 1e-9)
     {
       std::printf("FAIL process %d's shared mean of level 0's LIC: %s %.9f, the owned samples' "
                   "%.9f\n",
         r,
-        means[2 * r] == 1.0 ? "" : "none,",
-        means[2 * r + 1],
+        g.Means[2 * r] == 1.0 ? "" : "none,",
+        g.Means[2 * r + 1],
         expected);
       ok = false;
     }
   }
+  return ok;
+}
+
+/// The gathered levels against one process's (`whole`), printed; false where one differs.
+bool CheckLevels(const Gathered& g, const Pyramid& whole, int size, int mode, bool cached)
+{
+  bool ok = true;
   size_t off = 0;
   for (int k = 1; k < NumberOfLevels; ++k)
   {
-    const Difference d = Compare(gathered[k], whole.Owned(k));
-    double sent = 0, received = 0, exchange = 0, lic = 0;
+    const Difference d = Compare(g.Levels[k], whole.Owned(k));
+    double t[4] = { 0, 0, 0, 0 }; // the most of any process
     for (int r = 0; r < size; ++r)
     {
-      const double* t = traffic.data() + 4 * (size * (k - 1) + r);
-      sent = std::max(sent, t[0]);
-      received = std::max(received, t[1]);
-      exchange = std::max(exchange, t[2]);
-      lic = std::max(lic, t[3]);
+      for (int c = 0; c < 4; ++c)
+      {
+        t[c] = std::max(t[c], g.Traffic[4 * (size * (k - 1) + r) + c]);
+      }
     }
     std::printf("  level %d: %zu owned samples (one process %zu), placement differs at %zu, "
                 "field %.2g, normals %.2g, LIC max |diff| %.3g, mean %.3g, %zu > 1e-3; most sent "
-                "%.0f B, received %.0f B, "
-                "exchange %.4f s, LIC %.4f s (slowest process)\n",
+                "%.0f B, received %.0f B, exchange %.4f s, LIC %.4f s (slowest process)\n",
       k,
       d.Samples,
       d.Reference,
@@ -323,10 +301,10 @@ bool RunMode(vtkMultiProcessController* controller,
       d.Max,
       d.Mean,
       d.Off,
-      sent,
-      received,
-      exchange,
-      lic);
+      t[0],
+      t[1],
+      t[2],
+      t[3]);
     ok = ok && d.Samples == d.Reference && d.Reference > 0 && d.Placement == 0;
     off += d.Off;
     // The plain LIC, and any LIC all-gathered: one process's values. The fast LIC
@@ -341,13 +319,86 @@ bool RunMode(vtkMultiProcessController* controller,
       ok = false;
     }
   }
-  if (mode == vtkOFBPLIC::GHOST_SAMPLES_INPUT && pieces > 1 && off == 0)
+  if (mode == vtkOFBPLIC::GHOST_SAMPLES_INPUT && g.Levels[1].size() > 0 && off == 0 && size > 1)
   {
     std::printf("FAIL with the input's ghost samples the levels' LICs equal one process's: "
                 "the comparison does not see the piece borders\n");
     ok = false;
   }
-  std::printf("%s\n", ok ? "  ok" : "  FAIL");
+  return ok;
+}
+
+/// One mode on every process; on the first process the comparison with one process. With
+/// the plain LIC exchanged, a second computation with another noise seed: the levels'
+/// LICs again, without filtering the levels again (only the LIC changed).
+bool RunMode(vtkMultiProcessController* controller,
+  vtkPolyData* mesh,
+  int pieces,
+  int mode,
+  bool cached)
+{
+  const int rank = controller->GetLocalProcessId();
+  const int size = controller->GetNumberOfProcesses();
+  vtkNew<vtkPolyData> none;
+  Pyramid distributed(controller, mode, cached, Resolution);
+  Pyramid whole(nullptr, mode, cached, Resolution);
+  whole.Sampler->SetInputData(mesh);
+  if (rank < pieces)
+  {
+    distributed.Extract->SetInputData(mesh);
+    distributed.Sampler->SetInputConnection(distributed.Extract->GetOutputPort());
+  }
+  else
+  {
+    distributed.Sampler->SetInputData(none);
+  }
+  const bool again = mode == vtkOFBPLIC::GHOST_SAMPLES_EXCHANGE && !cached;
+  bool ok = true;
+  for (int pass = 0; pass < (again ? 2 : 1); ++pass)
+  {
+    distributed.LIC->SetNoiseGeneratorSeed(pass == 0 ? 1 : 7);
+    whole.LIC->SetNoiseGeneratorSeed(pass == 0 ? 1 : 7);
+    distributed.Update(controller, std::min(rank, pieces - 1), pieces);
+    const Gathered g = Gather(controller, distributed);
+    if (rank != 0)
+    {
+      continue;
+    }
+    whole.Update(nullptr, 0, 1);
+    double filterSent = 0.0, filterTime = 0.0;
+    for (int r = 0; r < size; ++r)
+    {
+      filterSent = std::max(filterSent, g.Filters[3 * r]);
+      filterTime = std::max(filterTime, g.Filters[3 * r + 1]);
+      // Every level filtered again at the first computation, none at the second.
+      const double expected = r >= pieces ? 0.0 : pass == 0 ? NumberOfLevels - 1.0 : 0.0;
+      if (size > 1 && g.Filters[3 * r + 2] != expected)
+      {
+        std::printf("FAIL process %d filtered %.0f levels again (expected %.0f)\n",
+          r,
+          g.Filters[3 * r + 2],
+          expected);
+        ok = false;
+      }
+    }
+    std::printf("%s, %s LIC%s, %d processes (%d pieces), resolution %d, levels' LICs %.3f s; "
+                "filtering again: most sent %.0f B, %.4f s:\n",
+      ModeName(mode),
+      cached ? "fast" : "plain",
+      pass == 0 ? "" : " (another noise seed)",
+      size,
+      pieces,
+      Resolution,
+      distributed.Time,
+      filterSent,
+      filterTime);
+    ok = CheckMean(g, pieces) && ok;
+    ok = CheckLevels(g, whole, size, mode, cached) && ok;
+  }
+  if (rank == 0)
+  {
+    std::printf("%s\n", ok ? "  ok" : "  FAIL");
+  }
   return ok;
 }
 

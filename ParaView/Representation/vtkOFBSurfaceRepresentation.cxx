@@ -40,13 +40,16 @@ vtkStandardNewMacro(vtkOFBSurfaceRepresentation);
 namespace
 {
 /**
- * The LIC pyramid under MPI: its levels filtered and their LICs computed from the owned
- * samples of every process within their reach (vtkOFBPLICPyramid, whatever the input's
- * ghost depth), by every process together (SynchronizePyramid); each process's levels are
- * its own: no filter cache, whose hits differ per process.
+ * Under MPI: the LIC reads the owned samples of the other processes within its
+ * streamlines' reach instead of the input's ghost samples (vtkOFBPLIC GhostSamples
+ * exchange), and the LIC pyramid's levels are filtered and their LICs computed from the
+ * owned samples of every process within their reach (vtkOFBPLICPyramid), by every process
+ * together (SynchronizePyramid), whatever the input's ghost depth; each process's levels
+ * are its own: no filter cache, whose hits differ per process.
  */
-vtkSmartPointer<vtkOFBLICPyramid> vtkOFBSurfaceRepresentationDistributedPyramid()
+vtkSmartPointer<vtkOFBLICPyramid> vtkOFBSurfaceRepresentationDistributeLIC(vtkOFBPLIC* lic)
 {
+  lic->SetGhostSamples(vtkOFBPLIC::GHOST_SAMPLES_EXCHANGE);
   auto pyramid = vtkSmartPointer<vtkOFBPLICPyramid>::New();
   pyramid->DeferLevelLICsOn();
   pyramid->SetFilterCacheSize(0);
@@ -97,10 +100,10 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
     this->OFBMapper->SetOFBConnection(this->Sampler->GetOutputPort());
   }
   this->OFBMapper->GetColoring()->SetLICIntensity(0.8);
-  // Under MPI the levels are computed by every process together (SynchronizePyramid).
+  // Under MPI the LIC and its levels read the samples of every process within reach.
   if (this->OFBSource)
   {
-    this->LICPyramid = vtkOFBSurfaceRepresentationDistributedPyramid();
+    this->LICPyramid = vtkOFBSurfaceRepresentationDistributeLIC(this->LIC);
   }
 
   // Connects the new mapper to the actor, the selection and the backface actor.

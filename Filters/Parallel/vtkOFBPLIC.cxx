@@ -128,6 +128,10 @@ vtkOFBPLIC::vtkOFBPLIC()
   , LastSentBytes(0)
   , LastReceivedBytes(0)
   , LastExchangeTime(0.0)
+  , Exchange(nullptr)
+  , ExchangedNone(false)
+  , ExchangedRadius(0.0)
+  , ExchangedTime(0)
 {
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
@@ -136,6 +140,7 @@ vtkOFBPLIC::vtkOFBPLIC()
 vtkOFBPLIC::~vtkOFBPLIC()
 {
   this->SetController(nullptr);
+  delete this->Exchange;
 }
 
 //------------------------------------------------------------------------------
@@ -221,6 +226,43 @@ std::vector<std::string> vtkOFBPLIC::ReadArrayNames(vtkOFB* input)
 }
 
 //------------------------------------------------------------------------------
+bool vtkOFBPLIC::CanReuseExchange(vtkOFB* input,
+  const std::vector<std::string>& names,
+  double radius)
+{
+  if (!this->Exchange || !this->Exchange->Merged || !this->Exchange->Problem.empty())
+  {
+    return false;
+  }
+  // A process without samples sends and receives nothing: any such input will do.
+  const bool none = !input || input->GetNumberOfSamples() == 0;
+  if (none || this->ExchangedNone)
+  {
+    return none && this->ExchangedNone;
+  }
+  if (input != this->ExchangedInput.Get() || names != this->ExchangedNames ||
+    radius != this->ExchangedRadius)
+  {
+    return false;
+  }
+  if (input->GetStructureMTime() > this->ExchangedTime)
+  {
+    return false;
+  }
+  std::vector<std::string> read = names;
+  read.emplace_back(vtkDataSetAttributes::GhostArrayName());
+  for (const std::string& name : read)
+  {
+    vtkDataArray* array = input->GetSampleData()->GetArray(name.c_str());
+    if (array && array->GetMTime() > this->ExchangedTime)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkOFBPLIC::RequestExchanged(vtkInformation* request, vtkOFB* input, vtkOFB* output)
 {
   const double start = vtkTimerLog::GetUniversalTime();
@@ -228,17 +270,35 @@ int vtkOFBPLIC::RequestExchanged(vtkInformation* request, vtkOFB* input, vtkOFB*
   const double radius = this->GhostSamples == GHOST_SAMPLES_GATHER
     ? -1.0
     : this->GetRequiredGhostDepth(cell) + this->ExchangeMargin * cell;
-  vtkOFBPLICExchange exchange;
-  const bool exchanged = exchange.Run(this->Controller, input, this->ReadArrayNames(input), radius);
-  if (!exchanged)
+  const std::vector<std::string> names = this->ReadArrayNames(input);
+  const int reuse = this->CanReuseExchange(input, names, radius) ? 1 : 0;
+  int everywhere = 0;
+  this->Controller->AllReduce(&reuse, &everywhere, 1, vtkCommunicator::MIN_OP);
+  bool exchanged = everywhere != 0;
+  if (!everywhere)
   {
-    vtkErrorMacro("Cannot exchange the samples that the LIC reads: " << exchange.Problem << ".");
+    delete this->Exchange;
+    this->Exchange = new vtkOFBPLICExchange;
+    exchanged = this->Exchange->Run(this->Controller, input, names, radius);
+    if (!exchanged)
+    {
+      vtkErrorMacro(
+        "Cannot exchange the samples that the LIC reads: " << this->Exchange->Problem << ".");
+    }
+    this->LastSentSamples = this->Exchange->SentSamples;
+    this->LastReceivedSamples = this->Exchange->ReceivedSamples;
+    this->LastSentBytes = this->Exchange->SentBytes;
+    this->LastReceivedBytes = this->Exchange->ReceivedBytes;
+    this->ExchangedInput = exchanged ? input : nullptr;
+    this->ExchangedNone = !input || input->GetNumberOfSamples() == 0;
+    this->ExchangedNames = names;
+    this->ExchangedRadius = radius;
+    vtkTimeStamp now;
+    now.Modified();
+    this->ExchangedTime = now.GetMTime();
   }
-  this->LastSentSamples = exchange.SentSamples;
-  this->LastReceivedSamples = exchange.ReceivedSamples;
-  this->LastSentBytes = exchange.SentBytes;
-  this->LastReceivedBytes = exchange.ReceivedBytes;
   this->LastExchangeTime = vtkTimerLog::GetUniversalTime() - start;
+  vtkOFBPLICExchange& exchange = *this->Exchange;
 
   // The LIC of the merged samples (on every process: its collective calls), as the input.
   vtkNew<vtkOFB> empty;

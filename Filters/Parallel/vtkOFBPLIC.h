@@ -37,7 +37,10 @@
  *   one process's LIC whatever the input's ghost depth. The input's ghost samples take
  *   the value of the received sample of their cell nearest in depth (0.5 where none was
  *   received: they lie beyond what the owned samples' streamlines reach). GATHER sends
- *   every owned sample to every process. vtkOFBLICPyramid's levels use LevelGhostSamples
+ *   every owned sample to every process. The merged samples are kept while the input's
+ *   structure and the arrays the LIC reads are unchanged on every process (an all-reduce
+ *   of one int decides it): another AnimationPhase, noise or kernel then sends nothing
+ *   and re-convolves the kept streamlines. vtkOFBLICPyramid's levels use LevelGhostSamples
  *   (default EXCHANGE): a coarse level's streamlines are 2^k times longer than level 0's,
  *   deeper than the ghost cells made for level 0.
  *
@@ -54,12 +57,14 @@
 
 #include "vtkOFBLIC.h"
 #include "vtkOFBParallelModule.h" // for export macro
+#include "vtkWeakPointer.h"       // for ExchangedInput
 
 #include <string> // for ReadArrayNames
 #include <vector> // for ReadArrayNames
 
 class vtkMultiProcessController;
 class vtkOFB;
+struct vtkOFBPLICExchange;
 
 class VTKOFBPARALLEL_EXPORT vtkOFBPLIC : public vtkOFBLIC
 {
@@ -163,6 +168,13 @@ protected:
   /// The sample arrays that the LIC of `input` reads: the field, the normals, the noise.
   std::vector<std::string> ReadArrayNames(vtkOFB* input);
 
+  /**
+   * Whether the last exchange holds for `input` (this process): the same input, whose
+   * structure and arrays `names` were not modified since, at the same radius. Every
+   * process must agree to reuse it (the samples of the others may have changed).
+   */
+  bool CanReuseExchange(vtkOFB* input, const std::vector<std::string>& names, double radius);
+
   /// The largest tangential field magnitude of the input's unmasked samples (0 if none).
   double LargestFieldMagnitude(vtkOFB* input);
 
@@ -176,6 +188,16 @@ protected:
   vtkIdType LastSentBytes;
   vtkIdType LastReceivedBytes;
   double LastExchangeTime;
+
+  // The last exchange, kept while its input is unchanged: the LIC of the same merged OFB
+  // then keeps its packed samples, noise and streamlines (another AnimationPhase only
+  // convolves again).
+  vtkOFBPLICExchange* Exchange;
+  vtkWeakPointer<vtkOFB> ExchangedInput;
+  bool ExchangedNone; // the input had no samples
+  std::vector<std::string> ExchangedNames;
+  double ExchangedRadius;
+  vtkMTimeType ExchangedTime;
 
 private:
   vtkOFBPLIC(const vtkOFBPLIC&) = delete;

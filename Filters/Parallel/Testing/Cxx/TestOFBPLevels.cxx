@@ -45,6 +45,7 @@ constexpr int GhostLevels = 1;
 constexpr int Steps = 10;
 constexpr int NumberOfLevels = 4; // level 0 and three coarser ones (48, 24 and 12 cells)
 constexpr int Fields = 9;         // cell, depth, LIC, field (3), normal (3)
+constexpr int Traffic = 5;        // per level and process: see Gathered
 
 /// The LIC settings of every run: `cached` the fast LIC.
 void Configure(vtkOFBLIC* lic, bool cached)
@@ -216,7 +217,8 @@ struct Gathered
   std::vector<double> Means;     // per process: whether it has the shared mean, the mean
   std::vector<double> LevelZero; // the owned samples of level 0
   std::vector<std::vector<double>> Levels; // the owned samples of each coarser level
-  std::vector<double> Traffic; // per level and process: sent, received, exchange s, LIC s
+  // Per level and process (Traffic values): sent, received, exchange s, LIC s, recomputed.
+  std::vector<double> Traffic;
 };
 
 Gathered Gather(vtkMultiProcessController* controller, const Pyramid& distributed)
@@ -236,11 +238,12 @@ Gathered Gather(vtkMultiProcessController* controller, const Pyramid& distribute
   {
     g.Levels[k] = vtkofbtest::GatherOnFirst(controller, distributed.Owned(k));
     auto* lic = vtkOFBPLIC::SafeDownCast(levels->GetLevelLIC(k));
-    const double t[4] = { lic ? static_cast<double>(lic->GetLastSentBytes()) : 0.0,
+    const double t[Traffic] = { lic ? static_cast<double>(lic->GetLastSentBytes()) : 0.0,
       lic ? static_cast<double>(lic->GetLastReceivedBytes()) : 0.0,
       lic ? lic->GetLastExchangeTime() : 0.0,
-      lic ? lic->GetLastExecutionTime() / 1000.0 : 0.0 };
-    std::vector<double> all = vtkofbtest::GatherOnFirst(controller, { t, t + 4 });
+      lic ? lic->GetLastExecutionTime() / 1000.0 : 0.0,
+      lic ? static_cast<double>(lic->GetLastRecomputed()) : 0.0 };
+    std::vector<double> all = vtkofbtest::GatherOnFirst(controller, { t, t + Traffic });
     g.Traffic.insert(g.Traffic.end(), all.begin(), all.end());
   }
   return g;
@@ -281,12 +284,12 @@ bool CheckLevels(const Gathered& g, const Pyramid& whole, int size, int mode, bo
   for (int k = 1; k < NumberOfLevels; ++k)
   {
     const Difference d = Compare(g.Levels[k], whole.Owned(k));
-    double t[4] = { 0, 0, 0, 0 }; // the most of any process
+    double t[Traffic] = { 0, 0, 0, 0, 0 }; // the most of any process
     for (int r = 0; r < size; ++r)
     {
-      for (int c = 0; c < 4; ++c)
+      for (int c = 0; c < Traffic; ++c)
       {
-        t[c] = std::max(t[c], g.Traffic[4 * (size * (k - 1) + r) + c]);
+        t[c] = std::max(t[c], g.Traffic[Traffic * (size * (k - 1) + r) + c]);
       }
     }
     std::printf("  level %d: %zu owned samples (one process %zu), placement differs at %zu, "
@@ -394,6 +397,21 @@ bool RunMode(vtkMultiProcessController* controller,
       filterTime);
     ok = CheckMean(g, pieces) && ok;
     ok = CheckLevels(g, whole, size, mode, cached) && ok;
+    // Only the LIC changed: the levels' LICs keep their exchanged samples (nothing sent)
+    // and what they prepared from them (no structure or samples recomputed).
+    for (size_t i = 0; pass == 1 && size > 1 && i < g.Traffic.size(); i += Traffic)
+    {
+      const int recomputed = static_cast<int>(g.Traffic[i + 4]);
+      if (g.Traffic[i] != 0.0 ||
+        (recomputed & (vtkOFBLIC::RECOMPUTED_STRUCTURE | vtkOFBLIC::RECOMPUTED_SAMPLES)))
+      {
+        std::printf("FAIL a level's LIC exchanged again (%.0f B) or prepared its samples "
+                    "again (%d)\n",
+          g.Traffic[i],
+          recomputed);
+        ok = false;
+      }
+    }
   }
   if (rank == 0)
   {

@@ -85,7 +85,7 @@ ExternalProject_Add(vtkofb-paraview-plugin
 
 # The plugin's tests, run from this project's ctest.
 if (VTKOFB_BUILD_TESTING)
-  set(vtkofb_paraview_tests Filters VersionCheck Example Package
+  set(vtkofb_paraview_tests Filters StateAndTrace VersionCheck Example Package
     SurfaceRepresentation SurfaceRepresentationExample LICBenchmark)
   # pvpython through scripts/paraview-sdk.sh's wrapper, where ParaView is its prefix.
   if (EXISTS "${VTKOFB_PARAVIEW_DIR}/../../../../../bin/pvpython")
@@ -143,8 +143,8 @@ if (VTKOFB_BUILD_TESTING)
   endif ()
   # The tests that render share xvfb-run's display with the other display tests
   # (docs/testing.md, "Tests that open windows"); their scripts keep a connection open.
-  set(vtkofb_paraview_render_tests OFB.ParaView.Filters OFB.ParaView.Example
-    OFB.ParaView.SurfaceRepresentation OFB.ParaView.SurfaceRepresentationExample
+  set(vtkofb_paraview_render_tests OFB.ParaView.Filters OFB.ParaView.StateAndTrace
+    OFB.ParaView.Example OFB.ParaView.SurfaceRepresentation OFB.ParaView.SurfaceRepresentationExample
     OFB.ParaView.LICBenchmark)
   foreach (vtkofb_test IN ITEMS Distributed SurfaceDistributed DistributedStrokes WriterDistributed
       Clients)

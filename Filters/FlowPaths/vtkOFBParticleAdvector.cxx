@@ -475,26 +475,24 @@ bool vtkOFBParticleAdvector::PlanPathlineSteps(vtkInformation* request,
   // Pathlines: from the particles' time to the requested one (time backwards: a
   // restart there); Step() has no effect.
   vtkInternals& in = *this->Internals;
-  double requested = in.TimeNew; // an unsteady input's time, without a request
-  for (int i = 0; i < 3; ++i)
-  {
-    vtkInformation* info = outputVector->GetInformationObject(i);
-    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-    {
-      requested = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-      break;
-    }
-  }
+  // Without a request, the unsteady input's time.
+  const double requested = vtkOFBParticleAdvector::RequestedTime(outputVector, in.TimeNew);
   if (!std::isfinite(requested))
   {
     vtkErrorMacro("The requested time is not finite: no particles.");
     return false;
   }
-  if (!restart && requested < in.ParticleTime && !this->StartParticles(seeds))
+  bool back = !restart && requested < in.ParticleTime;
+  if (this->Exchange)
+  {
+    // Told to a process whose piece is empty (ParticipateWithoutPiece).
+    back = this->Exchange->AllReduceMaximum(back ? 1.0 : 0.0) > 0.0;
+  }
+  if (back && !this->StartParticles(seeds))
   {
     return false;
   }
-  if (restart || requested < in.ParticleTime)
+  if (restart || back)
   {
     // From the seeds at the requested time, with the field of the step just read.
     in.ParticleTime = requested;
@@ -513,6 +511,12 @@ bool vtkOFBParticleAdvector::PlanPathlineSteps(vtkInformation* request,
     std::upper_bound(steps, steps + numSteps, in.TimeNew) != steps + numSteps)
   {
     in.Goal = in.TimeNew;
+  }
+  if (this->Exchange)
+  {
+    // The plan, the same on every process with a piece, told to one without.
+    std::vector<double> plan = { in.Goal, in.TimeNew };
+    this->Exchange->AllReduceMinimum(plan);
   }
   if (in.Goal < requested)
   {
@@ -597,6 +601,20 @@ void vtkOFBParticleAdvector::WriteOutputs(vtkInformationVector* outputVector)
     vtkDataObject* output = vtkDataObject::GetData(outputVector, i);
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
   }
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBParticleAdvector::RequestedTime(vtkInformationVector* outputVector, double otherwise)
+{
+  for (int i = 0; i < outputVector->GetNumberOfInformationObjects(); ++i)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(i);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    {
+      return info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    }
+  }
+  return otherwise;
 }
 
 //------------------------------------------------------------------------------

@@ -515,6 +515,8 @@ protected:
 
   /// The step that the outputs' time request asks for (steady particles), else `otherwise`.
   static vtkIdType RequestedStep(vtkInformationVector* outputVector, vtkIdType otherwise);
+  /// The time that the outputs' time request asks for, else `otherwise`.
+  static double RequestedTime(vtkInformationVector* outputVector, double otherwise);
 
   ///@{
   /**
@@ -551,9 +553,23 @@ protected:
   /**
    * The collective calls of one update, for a process whose piece is empty (it has no
    * particles): the restart agreement, the start (seeds located over every process),
-   * the number of steps and each step's exchange, as the other processes make them.
+   * with an `unsteady` input the pathlines' plan, the number of steps and each step's
+   * exchange, as the other processes make them.
    */
-  void ParticipateWithoutPiece(vtkDataSet* seeds, vtkInformationVector* outputVector);
+  void ParticipateWithoutPiece(vtkInformation* request,
+    vtkDataSet* seeds,
+    vtkInformationVector* outputVector,
+    bool unsteady);
+  /// StartParticles's collective calls, for a process whose piece is empty.
+  bool StartWithoutPiece(vtkDataSet* seeds);
+  /**
+   * PlanPathlineSteps's and PlanUnsteadySteps's collective calls, for a process whose
+   * piece is empty: the plan of the others (the time the particles go to, the input
+   * step read, whether the pipeline executes again) taken from them.
+   */
+  bool PlanPathlineWithoutPiece(vtkInformation* request,
+    vtkDataSet* seeds,
+    vtkInformationVector* outputVector);
   /**
    * Of the triangles through the point `x` (within 1e-9 cells; `cell` is one of them),
    * the one with the smallest centroid (x, then y, then z), among the owned ones when

@@ -657,45 +657,103 @@ void vtkOFBParticleAdvector::HandOff(const std::vector<double>& all,
 }
 
 //------------------------------------------------------------------------------
-void vtkOFBParticleAdvector::ParticipateWithoutPiece(vtkDataSet* seeds,
+bool vtkOFBParticleAdvector::StartWithoutPiece(vtkDataSet* seeds)
+{
+  // StartParticles: its checks agreed on, the largest speed, the seeds located.
+  vtkOFBParticleExchange* exchange = this->Exchange;
+  const bool ok = seeds && this->Lifetime == 0;
+  if (exchange->AllReduceMaximum(ok ? 0.0 : 1.0) > 0.0)
+  {
+    return false;
+  }
+  exchange->AllReduceMaximum(0.0);
+  const vtkIdType n = seeds->GetNumberOfPoints();
+  for (int call = 0; call < 5; ++call)
+  {
+    std::vector<double> none(n, Unclaimed);
+    exchange->AllReduceMinimum(none);
+  }
+  this->Internals->System.CurrentStep = 0;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBParticleAdvector::PlanPathlineWithoutPiece(vtkInformation* request,
+  vtkDataSet* seeds,
   vtkInformationVector* outputVector)
 {
-  // The collective calls of RequestData (steady input), with nothing to contribute.
+  vtkInternals& in = *this->Internals;
+  vtkOFBParticleExchange* exchange = this->Exchange;
+  const double requested = vtkOFBParticleAdvector::RequestedTime(outputVector, in.TimeNew);
+  if (!std::isfinite(requested))
+  {
+    vtkErrorMacro("The requested time is not finite: no particles.");
+    return false;
+  }
+  // The start when time goes backwards, then the others' plan (as no process with a
+  // piece gives infinity, infinity means that no process has one).
+  if (exchange->AllReduceMaximum(0.0) > 0.0 && !this->StartWithoutPiece(seeds))
+  {
+    return false;
+  }
+  std::vector<double> plan = { std::numeric_limits<double>::infinity(),
+    std::numeric_limits<double>::infinity() };
+  exchange->AllReduceMinimum(plan);
+  if (!std::isfinite(plan[0]))
+  {
+    request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+    return false;
+  }
+  // What RequestUpdateExtent reads to ask the input for the same time step as the others.
+  in.Unsteady = true;
+  in.Started = true;
+  in.Goal = plan[0];
+  in.TimeNew = plan[1];
+  if (in.Goal < requested)
+  {
+    request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+  }
+  else
+  {
+    request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+  }
+  exchange->AllReduceMaximum(0.0); // PlanUnsteadySteps: the largest speed
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBParticleAdvector::ParticipateWithoutPiece(vtkInformation* request,
+  vtkDataSet* seeds,
+  vtkInformationVector* outputVector,
+  bool unsteady)
+{
+  // The collective calls of RequestData, with nothing to contribute.
   vtkInternals& in = *this->Internals;
   vtkOFBParticleSystem& system = in.System;
   vtkOFBParticleExchange* exchange = this->Exchange;
-  const vtkIdType n = seeds ? seeds->GetNumberOfPoints() : 0;
-  auto start = [&]()
-  {
-    // StartParticles: its checks agreed on, the largest speed, the seeds located.
-    const bool ok = seeds && this->Lifetime == 0;
-    if (exchange->AllReduceMaximum(ok ? 0.0 : 1.0) > 0.0)
-    {
-      return false;
-    }
-    exchange->AllReduceMaximum(0.0);
-    for (int call = 0; call < 5; ++call)
-    {
-      std::vector<double> none(n, Unclaimed);
-      exchange->AllReduceMinimum(none);
-    }
-    system.CurrentStep = 0;
-    return true;
-  };
-  if (exchange->AllReduceMaximum(0.0) > 0.0 && !start())
+  if (exchange->AllReduceMaximum(0.0) > 0.0 && !this->StartWithoutPiece(seeds))
   {
     in.PendingSteps = 0;
     return;
   }
   vtkIdType target = system.CurrentStep;
-  if (in.PendingSteps > 0)
+  if (unsteady)
+  {
+    if (!this->PlanPathlineWithoutPiece(request, seeds, outputVector))
+    {
+      in.PendingSteps = 0;
+      return;
+    }
+    target = system.CurrentStep; // the others' steps (it may have started again)
+  }
+  else if (in.PendingSteps > 0)
   {
     target += in.PendingSteps;
   }
   else
   {
     target = vtkOFBParticleAdvector::RequestedStep(outputVector, target);
-    if (target < system.CurrentStep && !start())
+    if (target < system.CurrentStep && !this->StartWithoutPiece(seeds))
     {
       return;
     }
@@ -721,4 +779,14 @@ void vtkOFBParticleAdvector::ParticipateWithoutPiece(vtkDataSet* seeds,
     }
   }
   system.CurrentStep += steps;
+  if (unsteady)
+  {
+    in.ParticleTime = in.Goal;
+    for (int i = 0; i < 3; ++i)
+    {
+      vtkDataObject::GetData(outputVector, i)
+        ->GetInformation()
+        ->Set(vtkDataObject::DATA_TIME_STEP(), in.ParticleTime);
+    }
+  }
 }

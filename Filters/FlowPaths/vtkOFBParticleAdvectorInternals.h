@@ -139,6 +139,7 @@ public:
   double SpeedOld = 0.0, SpeedNew = 0.0;
   double ParticleTime = 0.0; // the time the particles are at
   double StepDuration = 0.0; // of the steps of this update
+  double StepSpeed = 0.0;    // the largest speed of the two fields (of all processes)
   double Goal = 0.0;         // the time this execution takes the particles to
   vtkSmartPointer<vtkDataArray> ScalarArray;
 };

@@ -3,6 +3,7 @@
 // in time, as vtkParticleTracer does.
 #include "vtkOFBParticleAdvector.h"
 #include "vtkOFBParticleAdvectorInternals.h"
+#include "vtkOFBParticleExchange.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -106,16 +107,7 @@ int vtkOFBParticleAdvector::RequestUpdateExtent(vtkInformation*,
   {
     return 1;
   }
-  double t = 0.0;
-  for (int i = 0; i < this->GetNumberOfOutputPorts(); ++i)
-  {
-    vtkInformation* info = outputVector->GetInformationObject(i);
-    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-    {
-      t = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-      break;
-    }
-  }
+  const double t = vtkOFBParticleAdvector::RequestedTime(outputVector, 0.0);
   const double* steps = inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   const int n = inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   const double* upper = std::lower_bound(steps, steps + n, std::isfinite(t) ? t : steps[0]);
@@ -136,10 +128,16 @@ int vtkOFBParticleAdvector::RequestUpdateExtent(vtkInformation*,
 //------------------------------------------------------------------------------
 vtkIdType vtkOFBParticleAdvector::PlanUnsteadySteps(double time)
 {
-  // Steps of at most StepSize cells for the fastest point of either field.
+  // Steps of at most StepSize cells for the fastest point of either field: of the whole
+  // surface in a distributed run, so that every process steps the same durations.
   vtkInternals& in = *this->Internals;
   const double span = time - in.ParticleTime;
-  const double speed = std::max(in.SpeedOld, in.SpeedNew);
+  double speed = std::max(in.SpeedOld, in.SpeedNew);
+  if (this->Exchange)
+  {
+    speed = this->Exchange->AllReduceMaximum(speed);
+  }
+  in.StepSpeed = speed;
   if (!(span > 0.0) || !(speed > 0.0))
   {
     in.StepDuration = 0.0;
@@ -178,5 +176,5 @@ void vtkOFBParticleAdvector::PrepareUnsteadyStep(vtkIdType k)
   stepper.Normalize = false;
   stepper.Scale = 1.0;
   stepper.Length = in.StepDuration;
-  stepper.StopSpeed = 1e-12 * std::max(in.SpeedOld, in.SpeedNew);
+  stepper.StopSpeed = 1e-12 * in.StepSpeed;
 }

@@ -121,17 +121,20 @@ int vtkOFBPParticleAdvector::RequestData(vtkInformation* request,
   {
     return this->Superclass::RequestData(request, inputVector, outputVector);
   }
-  // Every process makes the same collective calls. A process with an empty piece makes
-  // them with nothing to contribute (steady input); with an unsteady input, where it
-  // cannot tell when the others start again, every process stops with an error.
+  // Every process makes the same collective calls; a process with an empty piece makes
+  // them with nothing to contribute. Whether the input is unsteady (pathlines), agreed on
+  // by the processes with a piece: one whose piece is empty takes theirs.
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[0], 0);
   const int local = surface && surface->GetNumberOfPolys() + surface->GetNumberOfStrips() > 0;
-  int all = 0;
-  controller->AllReduce(&local, &all, 1, vtkCommunicator::MIN_OP);
-  if (!all && this->IsUnsteady(inputVector))
+  const int unsteady = this->IsUnsteady(inputVector) ? 1 : 0;
+  const int mine[3] = { local ? unsteady : 1, local ? -unsteady : 0, -local };
+  int all[3] = { 0, 0, 0 };
+  controller->AllReduce(mine, all, 3, vtkCommunicator::MIN_OP);
+  const bool anyUnsteady = all[1] < 0;
+  if (all[2] < 0 && all[0] != -all[1])
   {
-    vtkErrorMacro("A process has no triangles in its piece of an unsteady surface: no "
-                  "particles (pathlines need a non-empty piece on every process).");
+    vtkErrorMacro("The processes' pieces disagree on time: some have time steps (pathlines), "
+                  "others not: no particles.");
     for (int i = 0; i < 3; ++i)
     {
       vtkDataObject::GetData(outputVector, i)->Initialize();
@@ -157,7 +160,7 @@ int vtkOFBPParticleAdvector::RequestData(vtkInformation* request,
       : nullptr;
     if (!this->AskForDeeperGhostCells(request, inputVector, false))
     {
-      this->ParticipateWithoutPiece(seeds, outputVector);
+      this->ParticipateWithoutPiece(request, seeds, outputVector, anyUnsteady);
     }
   }
   this->Exchange = nullptr;

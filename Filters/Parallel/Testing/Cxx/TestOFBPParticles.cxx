@@ -51,22 +51,6 @@ constexpr int Steps = 60;
 /// --border: the step (cells), beyond one ring of ghost triangles near the poles.
 constexpr double BorderStep = 4.0;
 
-/// Seeds spread over the sphere (a Fibonacci spiral), the same on every process.
-vtkSmartPointer<vtkPolyData> MakeSeeds(int n)
-{
-  vtkNew<vtkPoints> points;
-  for (int i = 0; i < n; ++i)
-  {
-    const double z = 1.0 - (2.0 * i + 1.0) / n;
-    const double r = std::sqrt(1.0 - z * z);
-    const double a = i * vtkMath::Pi() * (3.0 - std::sqrt(5.0));
-    points->InsertNextPoint(0.5 * r * std::cos(a), 0.5 * r * std::sin(a), 0.5 * z);
-  }
-  auto seeds = vtkSmartPointer<vtkPolyData>::New();
-  seeds->SetPoints(points);
-  return seeds;
-}
-
 /// Particles (id, x, y, z, trail length) and owned samples (cell, depth, r, g, b, a).
 struct Result
 {
@@ -99,37 +83,9 @@ Result Collect(vtkOFBPParticleAdvector* advector)
       static_cast<double>(trailLength.count(id) ? trailLength[id] : 0) };
     result.Particles.insert(result.Particles.end(), row, row + 5);
   }
-  vtkOFB* ofb = vtkOFB::SafeDownCast(advector->GetOutputDataObject(0));
-  if (!ofb || ofb->GetNumberOfSamples() == 0)
-  {
-    return result;
-  }
-  vtkDataArray* colors = ofb->GetSampleData()->GetArray(vtkOFB::ColorsArrayName());
-  if (!colors)
-  {
-    return result;
-  }
-  vtkofbtest::ForEachOwnedSample(ofb,
-    [&](vtkIdType c, vtkIdType i, float depth)
-    {
-      double rgba[4];
-      colors->GetTuple(i, rgba);
-      const double row[6] = { static_cast<double>(c), depth, rgba[0], rgba[1], rgba[2], rgba[3] };
-      result.Samples.insert(result.Samples.end(), row, row + 6);
-    });
+  result.Samples =
+    vtkofbtest::OwnedColorRows(vtkOFB::SafeDownCast(advector->GetOutputDataObject(0)));
   return result;
-}
-
-/// Rows of `width` values sorted.
-std::vector<std::vector<double>> Rows(const std::vector<double>& values, size_t width)
-{
-  std::vector<std::vector<double>> rows;
-  for (size_t i = 0; i + width <= values.size(); i += width)
-  {
-    rows.emplace_back(values.begin() + i, values.begin() + i + width);
-  }
-  std::sort(rows.begin(), rows.end());
-  return rows;
 }
 
 /// A pipeline: the surface piece, its OFB piece and the advector.
@@ -144,16 +100,8 @@ struct Pipeline
   {
     this->Surface->SetInputData(mesh);
     this->Sampled->SetInputData(mesh);
-    this->Sampler->SetController(controller);
-    this->Sampler->SetResolution(96);
-    this->Sampler->SetInputConnection(this->Sampled->GetOutputPort());
-    this->Advector->SetController(controller);
+    vtkofbtest::SetUpAdvection(controller, this->Sampled, this->Sampler, this->Advector, seeds);
     this->Advector->SetInputConnection(this->Surface->GetOutputPort());
-    this->Advector->SetOFBConnection(this->Sampler->GetOutputPort());
-    this->Advector->SetSeeds(seeds);
-    this->Advector->SetIntegrator(vtkOFBParticleAdvector::RK4);
-    this->Advector->SetStepSize(1.5);
-    this->Advector->SetFootprintRadius(2.0);
     this->Advector->SetTrailLength(8);
   }
 };
@@ -263,8 +211,8 @@ int Compare(vtkMultiProcessController* controller,
     whole.Advector->SetStepSize(step);
     whole.Advector->UpdateTimeStep(Steps, 0, 1, 0);
     const Result reference = Collect(whole.Advector);
-    const auto got = Rows(particles, 5);
-    const auto want = Rows(reference.Particles, 5);
+    const auto got = vtkofbtest::SortedRows(particles, 5);
+    const auto want = vtkofbtest::SortedRows(reference.Particles, 5);
     size_t duplicates = 0;
     for (size_t i = 1; i < got.size(); ++i)
     {
@@ -281,8 +229,8 @@ int Compare(vtkMultiProcessController* controller,
         maxPosition = std::max(maxPosition, std::abs(got[i][k] - want[i][k]));
       }
     }
-    const auto gotSamples = Rows(samples, 6);
-    const auto wantSamples = Rows(reference.Samples, 6);
+    const auto gotSamples = vtkofbtest::SortedRows(samples, 6);
+    const auto wantSamples = vtkofbtest::SortedRows(reference.Samples, 6);
     size_t colorsDiffer = 0, painted = 0;
     for (size_t i = 0; i < std::min(gotSamples.size(), wantSamples.size()); ++i)
     {
@@ -331,7 +279,7 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkMPIController> controller = vtkofbtest::StartMPI(&argc, &argv);
   const int rank = controller->GetLocalProcessId();
   vtkSmartPointer<vtkPolyData> mesh = vtkofbtest::MakeSwirlSphere(true);
-  vtkSmartPointer<vtkPolyData> seeds = MakeSeeds(40);
+  vtkSmartPointer<vtkPolyData> seeds = vtkofbtest::MakeSeeds(40);
   const bool border = vtkofbtest::HasFlag(argc, argv, "--border");
   const int pieces =
     vtkofbtest::NumberOfPieces(controller, vtkofbtest::HasFlag(argc, argv, "--empty-last"));

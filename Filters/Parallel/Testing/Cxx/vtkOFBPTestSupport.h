@@ -1,17 +1,22 @@
-// What the distributed tests (TestOFBPDistributed, TestOFBPParticles) share: their
-// sphere with a swirl field, the gather of every process's rows on the first process,
-// and the end of a run whose every process checks something.
+// What the distributed tests share: their sphere with a swirl field and seeds on it, the
+// gather of every process's rows on the first process and their sorting, the owned
+// samples' colours, and the end of a run whose every process checks something.
 #ifndef vtkOFBPTestSupport_h
 #define vtkOFBPTestSupport_h
 
 #include "vtkCommunicator.h"
+#include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkMPIController.h"
+#include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkOFB.h"
+#include "vtkOFBPParticleAdvector.h"
+#include "vtkOFBPSampler.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
@@ -19,6 +24,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -55,6 +61,45 @@ inline vtkSmartPointer<vtkPolyData> MakeSwirlSphere(bool normals)
   return mesh;
 }
 
+/// `n` seeds spread over the sphere of radius 0.5 around `centre` (a Fibonacci spiral),
+/// the same on every process.
+inline vtkSmartPointer<vtkPolyData> MakeSeeds(int n, const double centre[3] = nullptr)
+{
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double* c = centre ? centre : origin;
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < n; ++i)
+  {
+    const double z = 1.0 - (2.0 * i + 1.0) / n;
+    const double r = std::sqrt(1.0 - z * z);
+    const double a = i * vtkMath::Pi() * (3.0 - std::sqrt(5.0));
+    points->InsertNextPoint(
+      c[0] + 0.5 * r * std::cos(a), c[1] + 0.5 * r * std::sin(a), c[2] + 0.5 * z);
+  }
+  auto seeds = vtkSmartPointer<vtkPolyData>::New();
+  seeds->SetPoints(points);
+  return seeds;
+}
+
+/// The particle tests' set-up: `sampler` (resolution 96) on `sampled` feeds `advector`
+/// (RK4 steps of 1.5 cells, footprints of 2 cells) with the OFB its particles paint.
+inline void SetUpAdvection(vtkMultiProcessController* controller,
+  vtkAlgorithm* sampled,
+  vtkOFBPSampler* sampler,
+  vtkOFBPParticleAdvector* advector,
+  vtkPolyData* seeds)
+{
+  sampler->SetController(controller);
+  sampler->SetResolution(96);
+  sampler->SetInputConnection(sampled->GetOutputPort());
+  advector->SetController(controller);
+  advector->SetOFBConnection(sampler->GetOutputPort());
+  advector->SetSeeds(seeds);
+  advector->SetIntegrator(vtkOFBParticleAdvector::RK4);
+  advector->SetStepSize(1.5);
+  advector->SetFootprintRadius(2.0);
+}
+
 /// The MPI controller of a test's main, initialized and made the global one.
 inline vtkSmartPointer<vtkMPIController> StartMPI(int* argc, char*** argv)
 {
@@ -83,6 +128,39 @@ void ForEachOwnedSample(vtkOFB* ofb, Visit&& visit)
       }
     }
   }
+}
+
+/// The owned samples of `ofb` as rows (cell, depth, r, g, b, a of its colours); none
+/// without colours.
+inline std::vector<double> OwnedColorRows(vtkOFB* ofb)
+{
+  std::vector<double> rows;
+  vtkDataArray* colors = ofb ? ofb->GetSampleData()->GetArray(vtkOFB::ColorsArrayName()) : nullptr;
+  if (!colors || ofb->GetNumberOfSamples() == 0)
+  {
+    return rows;
+  }
+  ForEachOwnedSample(ofb,
+    [&](vtkIdType c, vtkIdType i, float depth)
+    {
+      double rgba[4];
+      colors->GetTuple(i, rgba);
+      rows.insert(rows.end(),
+        { static_cast<double>(c), static_cast<double>(depth), rgba[0], rgba[1], rgba[2], rgba[3] });
+    });
+  return rows;
+}
+
+/// Rows of `width` values, sorted.
+inline std::vector<std::vector<double>> SortedRows(const std::vector<double>& values, size_t width)
+{
+  std::vector<std::vector<double>> rows;
+  for (size_t i = 0; i + width <= values.size(); i += width)
+  {
+    rows.emplace_back(values.begin() + i, values.begin() + i + width);
+  }
+  std::sort(rows.begin(), rows.end());
+  return rows;
 }
 
 /// Whether the command line has `flag`.

@@ -124,7 +124,13 @@ if (VTKOFB_BUILD_TESTING)
       NAME    "OFB.ParaView.WriterDistributed"
       COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
         -R "^OFBPlugin\\.WriterDistributed\\." --output-on-failure --no-tests=error)
-    set_tests_properties("OFB.ParaView.DistributedStrokes" "OFB.ParaView.WriterDistributed" PROPERTIES
+    # The writer killed under MPI and given OFBs on different frames (no display).
+    add_test(
+      NAME    "OFB.ParaView.WriterFaults"
+      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
+        -R "^OFBPlugin\\.WriterFaults\\." --output-on-failure --no-tests=error)
+    set_tests_properties("OFB.ParaView.DistributedStrokes" "OFB.ParaView.WriterDistributed"
+      "OFB.ParaView.WriterFaults" PROPERTIES
       LABELS  "ParaView;MPI"
       PROCESSORS 2
       TIMEOUT 900)

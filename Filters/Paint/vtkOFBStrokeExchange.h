@@ -24,6 +24,13 @@ public:
 
   /// The element-wise minimum over every process, in place (the same length everywhere).
   virtual void AllReduceMinimum(std::vector<double>& values) = 0;
+
+  /// Every process's `local` values (the same length everywhere) into `all`, one after
+  /// the other in the order of the processes.
+  virtual void AllGather(const std::vector<double>& local, std::vector<double>& all) = 0;
+
+  /// The number of processes.
+  virtual int GetNumberOfProcesses() const = 0;
 };
 
 #endif

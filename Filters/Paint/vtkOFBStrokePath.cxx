@@ -19,6 +19,11 @@ constexpr double StepCells = 2.0;
 /// The cosine of the largest turn between the normals of two consecutive samples.
 constexpr double LargestTurnCosine = -0.5;
 constexpr double Infinity = std::numeric_limits<double>::infinity();
+/// The values of a candidate that processes exchange: distance, cell, depth, position,
+/// normal.
+constexpr size_t CandidateValues = 9;
+/// The most values one all-gather of candidates receives (beyond: four all-reduces).
+constexpr size_t GatheredValuesLimit = 4096;
 }
 
 /**
@@ -299,7 +304,15 @@ void vtkOFBStrokePath::Reduce(std::vector<Candidate>& c, vtkOFBStrokeExchange* e
   // The smallest distance, then among those the smallest cell, then depth: one winner
   // (owned samples are on one process only), whose position and normal every process
   // then takes (a minimum of their negatives against the others' infinities: exact).
+  // Few candidates (a walk across a large surface, a round after another) go in one
+  // all-gather, whose latency is that of one all-reduce: the same winner.
   const size_t n = c.size();
+  if (n * CandidateValues * static_cast<size_t>(exchange->GetNumberOfProcesses()) <=
+    GatheredValuesLimit)
+  {
+    ReduceGathered(c, exchange);
+    return;
+  }
   std::vector<double> v(n);
   for (size_t i = 0; i < n; ++i)
   {
@@ -346,6 +359,49 @@ void vtkOFBStrokePath::Reduce(std::vector<Candidate>& c, vtkOFBStrokeExchange* e
     {
       c[i].Position[k] = -payload[6 * i + k];
       c[i].Normal[k] = -payload[6 * i + 3 + k];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBStrokePath::ReduceGathered(std::vector<Candidate>& c, vtkOFBStrokeExchange* exchange)
+{
+  const size_t n = c.size();
+  std::vector<double> local(CandidateValues * n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    double* v = local.data() + CandidateValues * i;
+    v[0] = c[i].Distance;
+    v[1] = c[i].Cell;
+    v[2] = c[i].Depth;
+    std::copy(c[i].Position, c[i].Position + 3, v + 3);
+    std::copy(c[i].Normal, c[i].Normal + 3, v + 6);
+  }
+  std::vector<double> all;
+  exchange->AllGather(local, all);
+  const size_t processes = n > 0 ? all.size() / (CandidateValues * n) : 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    // The smallest (distance, cell, depth) of every process's offer, as Reduce keeps it.
+    const double* best = nullptr;
+    for (size_t p = 0; p < processes; ++p)
+    {
+      const double* v = all.data() + CandidateValues * (p * n + i);
+      if (!best || std::lexicographical_compare(v, v + 3, best, best + 3))
+      {
+        best = v;
+      }
+    }
+    Candidate& winner = c[i];
+    winner.Distance = best ? best[0] : Infinity;
+    const bool found = winner.Found();
+    winner.Cell = found ? best[1] : Infinity;
+    winner.Depth = found ? best[2] : Infinity;
+    for (int k = 0; k < 3; ++k)
+    {
+      // None found: what Reduce's minimum of negatives gives.
+      winner.Position[k] = found ? best[3 + k] : -Infinity;
+      winner.Normal[k] = found ? best[6 + k] : -Infinity;
     }
   }
 }

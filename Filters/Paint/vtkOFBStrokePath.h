@@ -114,6 +114,8 @@ private:
     vtkOFBStrokeExchange* exchange) const;
   /// Keep the best candidate of every process, for each of `candidates`.
   static void Reduce(std::vector<Candidate>& candidates, vtkOFBStrokeExchange* exchange);
+  /// Reduce through one all-gather of every process's candidates (few of them).
+  static void ReduceGathered(std::vector<Candidate>& candidates, vtkOFBStrokeExchange* exchange);
 
   vtkOFB* OFB;
   vtkFloatArray* Normals = nullptr;

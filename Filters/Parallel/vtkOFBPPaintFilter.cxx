@@ -38,6 +38,19 @@ public:
     ++this->Calls;
   }
 
+  void AllGather(const std::vector<double>& local, std::vector<double>& all) override
+  {
+    all.resize(local.size() * static_cast<size_t>(this->GetNumberOfProcesses()));
+    if (local.empty())
+    {
+      return; // empty on every process
+    }
+    this->Controller->AllGather(local.data(), all.data(), static_cast<vtkIdType>(local.size()));
+    ++this->Calls;
+  }
+
+  int GetNumberOfProcesses() const override { return this->Controller->GetNumberOfProcesses(); }
+
   vtkIdType Calls = 0;
 
 private:

@@ -2,10 +2,8 @@
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkImageExtractComponents.h"
 #include "vtkImageShiftScale.h"
@@ -17,7 +15,9 @@
 #include "vtkOBJWriter.h"
 #include "vtkOFB.h"
 #include "vtkOFBMergeBlocks.h"
+#include "vtkOFBParaViewGather.h"
 #include "vtkOFBParaViewProbe.h"
+#include "vtkOFBSamplePack.h"
 #include "vtkOFBStagedFiles.h"
 #include "vtkOFBTextureAtlas.h"
 #include "vtkOFBTextureBaker.h"
@@ -27,14 +27,9 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkUnsignedIntArray.h"
 #include "vtksys/SystemTools.hxx"
 
-#include <algorithm>
-#include <array>
 #include <cctype>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -138,11 +133,8 @@ bool WriteGLTF(vtkPolyData* textured,
 
 // A process's share of a distributed write, as one vtkPolyData sent to the first process:
 // its piece without ghost cells, and in its field data the frame of its OFB and its owned
-// samples (their global cell index, depth and sample arrays).
-const char* const FrameName = "vtkOFBWriterFrame";       // origin, cell size, dims
-const char* const SampleCellName = "vtkOFBWriterCell";   // a sample's global cell
-const char* const SampleDepthName = "vtkOFBWriterDepth"; // a sample's depth
-const char* const SamplePrefix = "vtkOFBWriterSample_";  // + a sample array's name
+// samples (vtkOFBSamplePack, prefix SharePrefix).
+const char* const SharePrefix = "vtkOFBWriter";
 const char* const GhostName = "vtkGhostType";
 
 vtkSmartPointer<vtkPolyData> MakeShare(vtkPolyData* input, vtkOFB* ofb)
@@ -157,57 +149,7 @@ vtkSmartPointer<vtkPolyData> MakeShare(vtkPolyData* input, vtkOFB* ofb)
   }
   vtkNew<vtkFieldData> fields;
   share->SetFieldData(fields);
-  if (!ofb || !(ofb->GetCellSize() > 0.0))
-  {
-    return share;
-  }
-  vtkNew<vtkDoubleArray> frame;
-  frame->SetName(FrameName);
-  frame->SetNumberOfValues(7);
-  for (int i = 0; i < 3; ++i)
-  {
-    frame->SetValue(i, ofb->GetOrigin()[i]);
-    frame->SetValue(4 + i, static_cast<double>(ofb->GetDimensions()[i]));
-  }
-  frame->SetValue(3, ofb->GetCellSize());
-  fields->AddArray(frame);
-
-  // The owned samples: a zero (or no) ghost value.
-  vtkPointData* data = ofb->GetSampleData();
-  vtkDataArray* ghosts = data->GetArray(GhostName);
-  auto bytes = vtkUnsignedCharArray::SafeDownCast(ghosts);
-  vtkNew<vtkIdList> owned;
-  for (vtkIdType i = 0, n = ofb->GetNumberOfSamples(); i < n; ++i)
-  {
-    if (!ghosts || (bytes ? bytes->GetValue(i) == 0 : ghosts->GetComponent(i, 0) == 0.0))
-    {
-      owned->InsertNextId(i);
-    }
-  }
-  if (owned->GetNumberOfIds() == 0)
-  {
-    return share;
-  }
-  auto take = [&](vtkAbstractArray* source, const std::string& name)
-  {
-    vtkSmartPointer<vtkAbstractArray> copy;
-    copy.TakeReference(source->NewInstance());
-    copy->SetNumberOfComponents(source->GetNumberOfComponents());
-    copy->SetName(name.c_str());
-    copy->SetNumberOfTuples(owned->GetNumberOfIds());
-    source->GetTuples(owned, copy);
-    fields->AddArray(copy);
-  };
-  take(ofb->GetCellIndex(), SampleCellName);
-  take(ofb->GetDepths(), SampleDepthName);
-  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
-  {
-    vtkDataArray* array = data->GetArray(a);
-    if (array && array->GetName() && std::string(array->GetName()) != GhostName)
-    {
-      take(array, SamplePrefix + std::string(array->GetName()));
-    }
-  }
+  vtkOFBSamplePack::Pack(ofb, fields, SharePrefix);
   return share;
 }
 
@@ -215,7 +157,7 @@ vtkSmartPointer<vtkPolyData> MakeShare(vtkPolyData* input, vtkOFB* ofb)
 /// points of a piece at exactly the coordinates of a point of an earlier piece merged with
 /// it (vtkOFBMergeBlocks; points of one piece are never merged with each other), without
 /// field data.
-vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkDataObject>>& shares)
+vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkPolyData>>& shares)
 {
   vtkNew<vtkMultiBlockDataSet> blocks;
   for (const auto& object : shares)
@@ -243,155 +185,18 @@ vtkSmartPointer<vtkPolyData> MergeMeshes(const std::vector<vtkSmartPointer<vtkDa
   return merged;
 }
 
-/// Every process's owned samples as one OFB on their common frame, the samples of each
-/// grid cell in order of depth (ties in the order of the processes); null without a frame,
-/// and null with `problem` set when the processes' frames differ.
-vtkSmartPointer<vtkOFB> MergeSamples(const std::vector<vtkSmartPointer<vtkDataObject>>& shares,
+/// Every process's owned samples as one OFB on their common frame (vtkOFBSamplePack::Merge:
+/// the samples of each grid cell in order of depth, ties in the order of the processes);
+/// null without a frame, and null with `problem` set when the processes' frames differ.
+vtkSmartPointer<vtkOFB> MergeSamples(const std::vector<vtkSmartPointer<vtkPolyData>>& shares,
   std::string& problem)
 {
-  double origin[3] = { 0, 0, 0 };
-  double cellSize = 0.0;
-  vtkIdType dims[3] = { 0, 0, 0 };
-  struct Sample
+  std::vector<vtkOFBSamplePack::PackRef> packs;
+  for (const auto& share : shares)
   {
-    vtkTypeUInt32 Cell;
-    float Depth;
-    int Share;
-    vtkIdType Index;
-  };
-  std::vector<Sample> samples;
-  vtkFieldData* first = nullptr; // the first share with samples: the arrays to merge
-  for (size_t r = 0; r < shares.size(); ++r)
-  {
-    vtkFieldData* fields = shares[r] ? shares[r]->GetFieldData() : nullptr;
-    vtkDataArray* frame = fields ? fields->GetArray(FrameName) : nullptr;
-    if (!frame || frame->GetNumberOfTuples() != 7)
-    {
-      continue;
-    }
-    if (!(cellSize > 0.0))
-    {
-      for (int i = 0; i < 3; ++i)
-      {
-        origin[i] = frame->GetComponent(i, 0);
-        dims[i] = static_cast<vtkIdType>(frame->GetComponent(4 + i, 0));
-      }
-      cellSize = frame->GetComponent(3, 0);
-    }
-    bool same = frame->GetComponent(3, 0) == cellSize;
-    for (int i = 0; i < 3; ++i)
-    {
-      same = same && frame->GetComponent(i, 0) == origin[i] &&
-        static_cast<vtkIdType>(frame->GetComponent(4 + i, 0)) == dims[i];
-    }
-    if (!same)
-    {
-      problem = "the processes' OFBs have different frames (sample them with one frame: "
-                "vtkOFBPSampler, OFB Sampler)";
-      return nullptr;
-    }
-    // The legacy format the controller sends reads vtkTypeUInt32 back as unsigned int.
-    auto cells = vtkUnsignedIntArray::SafeDownCast(fields->GetAbstractArray(SampleCellName));
-    auto depths = vtkFloatArray::SafeDownCast(fields->GetAbstractArray(SampleDepthName));
-    if (!cells || !depths || cells->GetNumberOfTuples() != depths->GetNumberOfTuples())
-    {
-      continue;
-    }
-    first = first ? first : fields;
-    for (vtkIdType i = 0; i < cells->GetNumberOfTuples(); ++i)
-    {
-      samples.push_back({ cells->GetValue(i), depths->GetValue(i), static_cast<int>(r), i });
-    }
+    packs.push_back({ share ? share->GetFieldData() : nullptr, SharePrefix });
   }
-  auto ofb = vtkSmartPointer<vtkOFB>::New();
-  if (!(cellSize > 0.0) || !ofb->SetFrame(origin, cellSize, dims))
-  {
-    return nullptr;
-  }
-  std::stable_sort(samples.begin(),
-    samples.end(),
-    [](const Sample& a, const Sample& b)
-    { return a.Cell != b.Cell ? a.Cell < b.Cell : a.Depth < b.Depth; });
-  const vtkIdType n = static_cast<vtkIdType>(samples.size());
-  vtkTypeUInt32Array* offsets = ofb->GetCellOffsets();
-  const vtkIdType cells = ofb->GetNumberOfCells();
-  if (!samples.empty() && static_cast<vtkIdType>(samples.back().Cell) >= cells)
-  {
-    return nullptr;
-  }
-  std::vector<vtkTypeUInt32> counts(cells + 1, 0);
-  for (const Sample& sample : samples)
-  {
-    ++counts[sample.Cell + 1];
-  }
-  std::partial_sum(counts.begin(), counts.end(), counts.begin());
-  std::copy(counts.begin(), counts.end(), offsets->GetPointer(0));
-  if (!ofb->AllocateSamples(n))
-  {
-    return nullptr;
-  }
-  float* depths = ofb->GetDepths()->GetPointer(0);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    depths[i] = samples[i].Depth;
-  }
-  if (!ofb->BuildCellIndex())
-  {
-    return nullptr;
-  }
-  if (!first)
-  {
-    return ofb;
-  }
-  // The sample arrays of the first share with samples, filled share by share.
-  std::vector<vtkSmartPointer<vtkIdList>> from(shares.size()), to(shares.size());
-  for (size_t r = 0; r < shares.size(); ++r)
-  {
-    from[r] = vtkSmartPointer<vtkIdList>::New();
-    to[r] = vtkSmartPointer<vtkIdList>::New();
-  }
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    from[samples[i].Share]->InsertNextId(samples[i].Index);
-    to[samples[i].Share]->InsertNextId(i);
-  }
-  const std::string prefix = SamplePrefix;
-  for (int a = 0; a < first->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* model = first->GetAbstractArray(a);
-    const std::string name = model && model->GetName() ? model->GetName() : "";
-    if (name.compare(0, prefix.size(), prefix) != 0 || !vtkDataArray::SafeDownCast(model))
-    {
-      continue;
-    }
-    vtkSmartPointer<vtkDataArray> merged;
-    merged.TakeReference(vtkDataArray::SafeDownCast(model->NewInstance()));
-    merged->SetName(name.substr(prefix.size()).c_str());
-    merged->SetNumberOfComponents(model->GetNumberOfComponents());
-    merged->SetNumberOfTuples(n);
-    merged->Fill(0.0);
-    for (size_t r = 0; r < shares.size(); ++r)
-    {
-      vtkAbstractArray* source = to[r]->GetNumberOfIds()
-        ? shares[r]->GetFieldData()->GetAbstractArray(name.c_str())
-        : nullptr;
-      if (source && source->GetNumberOfComponents() == merged->GetNumberOfComponents())
-      {
-        merged->InsertTuples(to[r], from[r], source);
-      }
-    }
-    vtkPointData* data = ofb->GetSampleData();
-    data->AddArray(merged);
-    if (merged->GetName() == std::string(vtkOFB::ColorsArrayName()))
-    {
-      data->SetActiveScalars(merged->GetName());
-    }
-    else if (merged->GetName() == std::string(vtkOFB::NormalsArrayName()))
-    {
-      data->SetActiveNormals(merged->GetName());
-    }
-  }
-  return ofb;
+  return vtkOFBSamplePack::Merge(packs, problem);
 }
 }
 
@@ -442,19 +247,8 @@ vtkTypeBool vtkOFBTexturedMeshWriter::ProcessRequest(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  // A writer has no output to copy a piece request from: under several processes each
-  // asks for its own piece, as ParaView's parallel writers do (else every process would
-  // ask for the whole data, piece 0 of 1).
-  vtkMultiProcessController* controller = this->Controller;
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()) && controller &&
-    controller->GetNumberOfProcesses() > 1 && inputVector[0]->GetNumberOfInformationObjects() > 0)
+  if (vtkofbparaview::RequestOwnPiece(this->Controller, request, inputVector))
   {
-    vtkInformation* in = inputVector[0]->GetInformationObject(0);
-    in->Set(
-      vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), controller->GetLocalProcessId());
-    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
-      controller->GetNumberOfProcesses());
-    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     return 1;
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
@@ -566,14 +360,14 @@ bool vtkOFBTexturedMeshWriter::WriteMesh(vtkPolyData* input, vtkOFB* ofb)
 //------------------------------------------------------------------------------
 void vtkOFBTexturedMeshWriter::WriteDistributed(vtkPolyData* input, vtkOFB* ofb)
 {
-  // One gather of every process's share on the first process, which writes; then one
-  // broadcast of the result. Every process makes both calls, whatever its piece.
+  // Every process's share on the first process (one message each), which writes; then
+  // one broadcast of the result. Every process makes both calls, whatever its piece.
   vtkMultiProcessController* controller = this->Controller;
   const int rank = controller->GetLocalProcessId();
   vtkSmartPointer<vtkPolyData> share = MakeShare(input, ofb);
-  std::vector<vtkSmartPointer<vtkDataObject>> shares;
+  std::vector<vtkSmartPointer<vtkPolyData>> shares;
   int result[3] = { 0, 0, 0 }; // success, written texture size
-  if (!controller->Gather(share.Get(), shares, 0))
+  if (!vtkofbparaview::GatherShares(controller, share, shares))
   {
     vtkErrorMacro("Cannot write '" << this->FileName << "': gathering the pieces failed.");
   }

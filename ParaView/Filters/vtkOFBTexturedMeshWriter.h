@@ -29,7 +29,8 @@
  * or a pvserver of several ranks, where each process has its piece of the mesh and an
  * OFB with that piece's samples on the frame common to all pieces, vtkOFBPSampler):
  * every process sends its piece without ghost cells, and its OFB's owned samples (those
- * with a zero "vtkGhostType" sample value), to the first process (one gather). There the
+ * with a zero "vtkGhostType" sample value), to the first process (one message each, as
+ * VTK XML in raw binary: bit for bit, of any size; vtkOFBParaViewGather.h). There the
  * pieces are appended and the points of a piece at exactly the coordinates of a point of
  * an earlier piece merged with it (vtkOFBMergeBlocks), the samples put together cell by
  * cell in order of depth (the order one process has them), and the file set is baked and

@@ -23,12 +23,14 @@
 #include "vtkOFBPSampler.h"
 #include "vtkOFBParaViewProbe.h"
 #include "vtkOFBPolyDataMapper.h"
+#include "vtkOFBSamplePack.h"
 #include "vtkOFBSampler.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkPVView.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkProcessModule.h"
 #include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
 
@@ -74,6 +76,7 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
   , LICPyramid(vtkSmartPointer<vtkOFBLICPyramid>::New())
   , OFBSource(nullptr)
   , GhostedCells(0)
+  , DeliveredPacks(vtkSmartPointer<vtkOFBSamplePack>::New())
 {
   std::fill(this->OFBFrame, this->OFBFrame + 7, 0.0);
   // The OFB mapper replaces the superclass's full-resolution mapper; the LOD mapper stays.
@@ -139,7 +142,27 @@ int vtkOFBSurfaceRepresentation::RequestData(vtkInformation* request,
     this->GhostedInput->ShallowCopy(input);
     this->GhostedCells = vtkOFBSurfaceRepresentation::CountCells(input, true);
   }
-  return this->Superclass::RequestData(request, inputVector, outputVector);
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  this->PackInputOFB();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBSurfaceRepresentation::PackInputOFB()
+{
+  // On a server, which delivers the surface to a client that may render it locally (not
+  // in pvbatch or a builtin session, which render where the OFB is).
+  const int type = vtkProcessModule::GetProcessType();
+  if (this->UseInputOFB && this->InputOFB &&
+    (type == vtkProcessModule::PROCESS_SERVER || type == vtkProcessModule::PROCESS_DATA_SERVER))
+  {
+    vtkOFBSamplePack::PackIntoBlocks(this->GetRenderedDataObject(0),
+      this->InputOFB,
+      this->Sampler->GetController() ? this->Sampler->GetController()->GetLocalProcessId() : 0);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -147,6 +170,14 @@ int vtkOFBSurfaceRepresentation::ProcessViewRequest(vtkInformationRequestKey* re
   vtkInformation* inInfo,
   vtkInformation* outInfo)
 {
+  if (requestType == vtkPVView::REQUEST_RENDER())
+  {
+    // Where the input OFB is not in this process (a client rendering a server's surface
+    // locally): the one packed into the delivered surface (PackInputOFB). Before the
+    // superclass's colouring parameters, which choose the OFB the mapper reads.
+    this->DeliveredOFB = this->DeliveredPacks->UpdateMergedOFB(
+      this->UseInputOFB && !this->InputOFB ? vtkPVView::GetDeliveredPiece(inInfo, this) : nullptr);
+  }
   if (!this->Superclass::ProcessViewRequest(requestType, inInfo, outInfo))
   {
     return 0;
@@ -413,7 +444,7 @@ void vtkOFBSurfaceRepresentation::UpdateLICConnection()
   vtkOFB* inputOFB = !this->UseInputOFB ? nullptr
     : this->InputOFB                    ? this->InputOFB.Get()
     : parallel && this->AnyInputOFB     ? this->EmptyOFB.Get()
-                                        : nullptr;
+                                        : this->DeliveredOFB.Get();
   vtkOFBColoring* coloring = this->OFBMapper->GetColoring();
   const bool inputLIC =
     inputOFB && (inputOFB->GetSampleData()->GetArray("LIC") || (parallel && this->AnyInputLIC));
@@ -648,7 +679,8 @@ void vtkOFBSurfaceRepresentation::SetUseInputOFB(bool use)
   if (use != this->UseInputOFB)
   {
     this->UseInputOFB = use;
-    this->Modified();
+    // The delivered surface carries the input OFB where it is used (PackInputOFB).
+    this->MarkModified();
   }
 }
 
@@ -750,6 +782,7 @@ void vtkOFBSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
      << vtkOFBPolyDataMapper::GetLookupModeAsString(this->OFBMapper->GetLookupMode()) << "\n";
   os << indent << "UseInputOFB: " << (this->UseInputOFB ? "On" : "Off") << "\n";
   os << indent << "InputOFB: " << this->InputOFB.Get() << "\n";
+  os << indent << "DeliveredOFB: " << this->DeliveredOFB.Get() << "\n";
   os << indent << "Controller: " << this->Sampler->GetController() << "\n";
   os << indent << "OFBLIC: " << (this->OFBLIC ? "On" : "Off") << "\n";
   os << indent

@@ -11,10 +11,13 @@
  * Where its input carries an OFB (the output of OFB Probe, vtkOFBParaViewProbe, holds the
  * OFB it probed: painted by OFB Paint Strokes, OFB Particles, with an OFB LIC's "LIC"),
  * and UseInputOFB is on (default), that OFB colours the surface instead, at its own
- * resolution: the paint is the OFB's, not the mesh's vertex colours. This holds where the
- * data is rendered in the process that computed it (pvpython, pvbatch, pvserver
- * rendering remotely); a client that renders a remote server's surface
- * locally builds its own OFB from the surface it receives.
+ * resolution: the paint is the OFB's, not the mesh's vertex colours. Where the data is
+ * rendered in the process that computed it (pvpython, pvbatch, pvserver rendering
+ * remotely) that OFB is used as it is; a pvserver also packs its owned samples into the
+ * surface it delivers (PackInputOFB, vtkOFBSamplePack), and a client that renders the
+ * surface locally merges the packs of the server processes into the same OFB
+ * (DeliveredOFB, in ProcessViewRequest), or, where they cannot be merged, reports it and
+ * builds its own.
  * - Colour by Solid Color, or by an array with Map Scalars off (direct colours, such as
  *   OFB Probe's "Colors"): the paint, the "Colors" sample array. It holds the input OFB's
  *   paint, else the surface's RGB(A) byte colours where its active point scalars are such
@@ -88,6 +91,7 @@ class vtkOFBLICPyramid;
 class vtkOFBPLIC;
 class vtkOFBPSampler;
 class vtkOFBPolyDataMapper;
+class vtkOFBSamplePack;
 class vtkOFBSampler;
 class vtkPolyData;
 
@@ -275,6 +279,14 @@ protected:
    */
   static bool NeedsUpdate(vtkAlgorithm* algorithm);
 
+  /**
+   * On a server (pvserver, not pvbatch), where the input OFB is shown: packs this
+   * process's owned samples of it into the surface delivered to the client
+   * (vtkOFBSamplePack::PackIntoBlocks), so that a client rendering locally shows the same
+   * OFB. Run in RequestData, once per change of the data.
+   */
+  void PackInputOFB();
+
   vtkOFBPolyDataMapper* OFBMapper;
   vtkOFBPSampler* Sampler;
   vtkOFBPLIC* LIC;
@@ -297,6 +309,8 @@ protected:
   vtkAlgorithm* OFBSource; // under MPI, the algorithm whose output the mapper is handed
   vtkIdType GhostedCells;  // the owned cells of GhostedInput
   vtkSmartPointer<vtkOFB> EmptyOFB;
+  vtkSmartPointer<vtkOFB> DeliveredOFB; // the input OFB packed into the delivered surface
+  vtkSmartPointer<vtkOFBSamplePack> DeliveredPacks; // merges DeliveredOFB from the packs
   double OFBFrame[7];
 
 private:

@@ -38,6 +38,13 @@ hangs (ofbHangingClient.py). Then the results are compared with the pvbatch runs
 - client-server: the remote rendering was remote, the local one local; the GUI: the plugin
   it loaded, its filters in paraview.simple and under Filters > OFB, the five filters
   registered (the Pipeline Browser's list) and "OFB Surface" among the representations;
+- client-server: OFB Probe's output rendered by the client (local rendering), its OFB
+  packed into the delivered surface (vtkOFBSamplePack), equals the server's picture of the
+  same view (its paint and LIC; correlation >= 0.999) and differs from the client's own
+  OFB at the mesh's resolution (Use Input OFB off); the delivered surface is larger by at
+  least 8 bytes per sample; surfaces delivered with unusable packs (cells outside the
+  frame, arrays of wrong lengths, a frame of five values) give the client's error, once
+  per kind, and its own OFB built from the surface;
 - the screenshots, by vtkOFBImageComparison (the LIC-aware comparison of
   OFB::TestingImage, run in Debian's Python with vtkofb): the one rendered where the data
   is against pvbatch's of N processes, the whole surface of one process (the client's
@@ -133,15 +140,9 @@ def check(condition, what):
 
 # One connection to the X display for the whole run, so that the display does not reset
 # between the processes' windows (as ofbKeepDisplayOpen.py does for a pvbatch script).
-try:
-    import ctypes
-    import ctypes.util
+import ofbParaViewTesting  # noqa: E402 (beside this script)
 
-    _xlib = ctypes.CDLL(ctypes.util.find_library("X11") or "libX11.so.6")
-    _xlib.XOpenDisplay.restype = ctypes.c_void_p
-    _display = _xlib.XOpenDisplay(None)
-except OSError:
-    _display = None
+ofbParaViewTesting.keep_display_open()
 
 
 # ctest's timeout or ^C: end the processes started here before leaving.
@@ -368,9 +369,17 @@ finally:
     check(not left and not stray, "no process of %s left (left: %s, below this script: %s)"
           % (" or ".join(process.name for process in processes), left, stray_names or []))
 
-# No error from the server, the client or the GUI.
+# No error from the server, the client or the GUI, but the client's for the unusable packs
+# of the bad-input case (ofbClientPipeline.BAD_PACKS: one per kind).
+BAD_PACKS = ["cells-outside", "frame-of-five", "short-colors", "short-depths"]
+BAD_PACK_ERROR = "The OFB delivered with the surface cannot be used"
 errors = [line for process in processes for line in process.lines if "ERR|" in line]
-check(not errors, "no error printed: %s" % errors)
+pack_errors = [line for line in errors if BAD_PACK_ERROR in line]
+check(len(errors) == len(pack_errors), "no error printed: %s"
+      % [line for line in errors if BAD_PACK_ERROR not in line])
+if not gui:
+    check(len(pack_errors) == len(BAD_PACKS), "the client reported each unusable pack once: %s"
+          % pack_errors)
 
 # The values: the client's (computed on the server) against pvbatch's.
 with open(os.path.join(args.output, "values.json")) as stream:
@@ -427,13 +436,45 @@ if args.vtkofb_build:
 images = {"ofb-surface.png": os.path.join(args.reference, "ofb-surface.png"),
           "ofb-surface-whole.png" if gui else "ofb-surface-local.png":
           os.path.join(args.whole_reference, "ofb-surface-whole.png")}
-for image, baseline in images.items():
+
+
+def same_picture(image, baseline, correlation=None):
+    """Whether the LIC-aware comparison passes (run in Debian's Python with vtkofb), and
+    where `correlation` is given, its correlation is at least that."""
     result = subprocess.run([args.compare_python, os.path.abspath(__file__), "compare",
-                             os.path.join(args.output, image), baseline],
+                             image, baseline],
                             env=compare_environment, stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True, timeout=120)
     print(result.stdout.strip(), flush=True)
-    check(result.returncode == 0, "%s equals pvbatch's %s" % (image, os.path.basename(baseline)))
+    measured = re.search(r"correlation (-?[0-9.]+)", result.stdout)
+    return result.returncode == 0 and (
+        correlation is None or (measured is not None and float(measured.group(1)) >= correlation))
+
+
+for image, baseline in images.items():
+    check(same_picture(os.path.join(args.output, image), baseline),
+          "%s equals pvbatch's %s" % (image, os.path.basename(baseline)))
+if not gui:
+    # OFB Probe's output rendered by the client: its OFB, packed into the delivered surface,
+    # as the server showed it, not the client's own OFB at the mesh's resolution.
+    output = lambda name: os.path.join(args.output, name)  # noqa: E731
+    for name in ["ofb-probe-local.png", "ofb-probe-mesh.png", "ofb-bad-mesh.png"] + [
+            "ofb-bad-%s.png" % kind for kind in BAD_PACKS]:
+        check(values.get(name + ".remote") is False, "%s was rendered by the client" % name)
+    check(same_picture(output("ofb-probe-local.png"), output("ofb-surface.png"), 0.999),
+          "the client's picture of the probe equals the server's, correlation >= 0.999 (its "
+          "input OFB, paint and LIC, delivered)")
+    check(not same_picture(output("ofb-probe-mesh.png"), output("ofb-surface.png")),
+          "the probe's picture at the mesh's resolution differs from the server's")
+    added = (values["probe_delivered_kib"] - values["mesh_delivered_kib"]) * 1024.0
+    check(added >= 8 * values["probe_ofb_samples"],
+          "the delivered surface carries the samples: %d KiB, %d KiB without, %.1f bytes for "
+          "each of %d samples" % (values["probe_delivered_kib"], values["mesh_delivered_kib"],
+                                   added / max(1, values["probe_ofb_samples"]),
+                                   values["probe_ofb_samples"]))
+    for kind in BAD_PACKS:
+        check(same_picture(output("ofb-bad-%s.png" % kind), output("ofb-bad-mesh.png")),
+              "unusable packs (%s): the client's own OFB from the surface" % kind)
 
 # The files the server wrote.
 staging = [name for name in os.listdir(args.output) if ".partial-" in name]

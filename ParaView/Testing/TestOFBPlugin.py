@@ -14,15 +14,13 @@ from paraview import servermanager
 from paraview.simple import *
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
+import ofbParaViewTesting
 
 plugin, out = sys.argv[1], sys.argv[2]
 LoadPlugin(plugin, ns=globals())
 
 
-def check(condition, what):
-    if not condition:
-        raise AssertionError(what)
-    print("ok:", what)
+say, check = ofbParaViewTesting.reporter()
 
 
 def point_array(proxy, name, port=0):
@@ -166,6 +164,38 @@ if os.path.exists(plain_mesh):
 bad = servermanager.writers.OFBTexturedMeshWriter(Input=sphere, FileName=plain_mesh)
 bad.UpdatePipeline()
 check(not os.path.exists(plain_mesh), "writer: a mesh without an OFB writes no file")
+
+# --- The OFB file (File > Save Data, File > Open): the painted OFB written and read back.
+ofb_path = os.path.join(out, "ofb-plugin-painted.ofb")
+if os.path.exists(ofb_path):
+    os.remove(ofb_path)
+SaveData(ofb_path, proxy=paint)
+check(os.path.isfile(ofb_path) and os.path.getsize(ofb_path) > 96, "OFB file: written")
+reread = OpenDataFile(ofb_path)
+check(reread is not None and reread.GetXMLName() == "OFBReader",
+      "OFB file: File > Open reads it with OFB Reader")
+reread.UpdatePipeline()
+samples_written = paint.GetDataInformation().GetNumberOfPoints()
+check(reread.GetDataInformation().GetNumberOfPoints() == samples_written,
+      "OFB file: %d samples read back" % samples_written)
+check(set(paint.PointData.keys()) <= set(reread.PointData.keys()),
+      "OFB file: every sample array read back: %s" % sorted(reread.PointData.keys()))
+reprobe = OFBProbe(Input=sphere, OFB=reread)
+check(np.array_equal(point_array(reprobe, "Colors"), painted),
+      "OFB file: the file's OFB probes to the same paint")
+# Bad input: a mesh is not an OFB (nothing written); a truncated file gives an empty OFB.
+not_ofb = os.path.join(out, "ofb-plugin-mesh.ofb")
+if os.path.exists(not_ofb):
+    os.remove(not_ofb)
+SaveData(not_ofb, proxy=sphere)
+check(not os.path.exists(not_ofb), "OFB file: a mesh writes no .ofb file")
+truncated = os.path.join(out, "ofb-plugin-truncated.ofb")
+with open(ofb_path, "rb") as source, open(truncated, "wb") as target:
+    target.write(source.read()[:-20])
+broken = OFBReader(FileName=truncated)
+broken.UpdatePipeline()
+check(broken.GetDataInformation().GetNumberOfPoints() == 0,
+      "OFB file: a truncated file reads as an empty OFB")
 
 # --- What ParaView shows: the probed surface, coloured by the LIC.
 view = CreateView("RenderView")

@@ -30,7 +30,9 @@ import numpy as np
 from paraview.simple import *
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkDoubleArray
-from vtkmodules.vtkParallelCore import vtkCommunicator, vtkMultiProcessController
+from vtkmodules.vtkParallelCore import vtkCommunicator
+
+import ofbParaViewTesting
 
 LIC_TOLERANCE = 0.005
 PAINT_TOLERANCE = 0.01
@@ -43,21 +45,9 @@ ENDPOINT_TOLERANCE = 1e-3 / 96
 plugin, reference_dir = sys.argv[1], sys.argv[2]
 partitions = int(sys.argv[3]) if len(sys.argv) > 3 else 0
 LoadPlugin(plugin, ns=globals())
-controller = vtkMultiProcessController.GetGlobalController()
-rank = controller.GetLocalProcessId()
-ranks = controller.GetNumberOfProcesses()
-
-
-def say(*args):
-    if rank == 0:
-        print(*args, flush=True)
-
-
-def check(condition, what):
-    # Every process reaches every check with the same values (they are reduced).
-    if not condition:
-        raise AssertionError("%d ranks: %s" % (ranks, what))
-    say("ok (%d ranks):" % ranks, what)
+controller, rank, ranks = ofbParaViewTesting.processes()
+# Every process reaches every check with the same values (they are reduced).
+say, check = ofbParaViewTesting.reporter("%d ranks" % ranks, rank)
 
 
 def total(values):
@@ -102,11 +92,7 @@ def owned(data):
 sphere = Sphere(ThetaResolution=128, PhiResolution=64, Radius=0.5)
 field = Calculator(Input=sphere, ResultArrayName="Field",
                    Function="(-coordsY+0.3*coordsZ)*iHat+coordsX*jHat-0.3*coordsX*kHat")
-pieces = RedistributeDataSet(Input=field)
-if partitions:
-    pieces.NumberOfPartitions = partitions
-surface = ExtractSurface(Input=pieces)
-ghosted = GhostCellsGenerator(Input=surface, BuildIfRequired=1)
+ghosted = ofbParaViewTesting.distributed_surface(field, partitions)
 
 sampler = OFBSampler(Input=ghosted, Resolution=96)
 sampler.Vectors = ["POINTS", "Field"]
@@ -132,6 +118,40 @@ colors = sample_array(data, "Colors", 4)
 red = (colors[:, 0] > 200) & (colors[:, 1] < 60) & (colors[:, 2] < 60)
 painted = total([(red & owned(data)).sum()])[0]
 say("painted samples %d" % painted)
+
+# The painted OFB saved as an .ofb file (one file from every process's owned samples) and
+# read back by OFB Reader on every process: the first owns every sample, the others
+# hold them as ghosts; probing any piece of the mesh with it gives the paint again.
+ofb_name = "painted.ofb" if ranks == 1 else "painted-%d%s.ofb" % (
+    ranks, "-of-%d" % partitions if partitions else "")
+ofb_path = os.path.join(reference_dir, ofb_name)
+if rank == 0 and os.path.exists(ofb_path):
+    os.remove(ofb_path)
+controller.Barrier()
+SaveData(ofb_path, proxy=paint)
+reread = OFBReader(FileName=ofb_path)
+reread.UpdatePipeline()
+read_data = local_data(reread)
+read_owned, read_all = total([owned(read_data).sum(), read_data.GetNumberOfElements(
+    read_data.POINT)])
+piece_probe = OFBProbe(Input=ghosted, OFB=paint)
+file_probe = OFBProbe(Input=ghosted, OFB=reread)
+
+
+def probed_colors(probe):
+    """The probed colours of the piece's own points (not ghosts)."""
+    mesh = local_data(probe)
+    if mesh.GetNumberOfPoints() == 0:
+        return np.zeros((0, 4))
+    colors = vtk_to_numpy(mesh.GetPointData().GetArray("Colors"))
+    ghosts = mesh.GetPointData().GetArray("vtkGhostType")
+    return colors if ghosts is None else colors[vtk_to_numpy(ghosts) == 0]
+
+
+probes_differ = total([int(not np.array_equal(probed_colors(piece_probe),
+                                              probed_colors(file_probe)))])[0]
+say("OFB file: %d samples owned, %d held, probes differ on %d processes"
+    % (read_owned, read_all, probes_differ))
 
 # 40 seeds on the sphere (a Fibonacci spiral), the same on every process.
 k = np.arange(40) + 0.5
@@ -222,14 +242,7 @@ say("pathline particles %d, at t = 1.0 on %d processes" % (path_count, path_time
 
 # The image: the LIC probed back onto the mesh, composited by ParaView.
 probe = OFBProbe(Input=ghosted, OFB=lic)
-view = CreateView("RenderView")
-view.ViewSize = [SIZE, SIZE]
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.0, 0.0, 0.0]
-view.CameraPosition = [1.2, -2.2, 1.0]
-view.CameraFocalPoint = [0, 0, 0]
-view.CameraViewUp = [0, 0, 1]
+view = ofbParaViewTesting.black_view(SIZE)
 view.CameraParallelScale = 0.6
 display = Show(probe, view)
 ColorBy(display, ("POINTS", "LIC"))
@@ -263,6 +276,17 @@ def compare_with_reference():
           % (lic_mean, lic_std, reference["lic_mean"], reference["lic_std"]))
     check(abs(painted - reference["painted"]) <= PAINT_TOLERANCE * reference["painted"],
           "painted samples %d, one process %d" % (painted, reference["painted"]))
+    check(read_owned == count and read_all == count * ranks,
+          "OFB file: %d samples, each owned once (one process: %d), held by every process"
+          % (read_owned, count))
+    check(probes_differ == 0, "OFB file: every piece probes to the paint of its own OFB")
+    if rank == 0:
+        reference_file = OFBReader(FileName=os.path.join(reference_dir, "painted.ofb"))
+        reference_file.UpdatePipeline()
+        mine_colors = sample_array(read_data, "Colors", 4)
+        one_colors = sample_array(local_data(reference_file), "Colors", 4)
+        check(np.array_equal(mine_colors, one_colors),
+              "OFB file: the paint of every sample equal to one process's file")
     check(particle_count == reference["particles"], "particles %d, one process %d"
           % (particle_count, reference["particles"]))
     check(per_seed[:, 0].max() <= 1, "no particle output by two processes")

@@ -135,6 +135,16 @@ def picture(view, name):
     return vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
 
 
+def check_restored(what):
+    """The settings and the picture of the active view against the first build's."""
+    view = GetActiveViewOrCreate("RenderView")
+    view.ViewSize = [SIZE, SIZE]
+    restored = settings(view)
+    for key, value in recorded.items():
+        check(restored.get(key) == value, "%s: %s restored (%s)" % (what, key, value))
+    compare(picture(view, what.replace(" ", "-")), reference, what)
+
+
 def compare(image, reference, what):
     covered = (reference.sum(axis=1) > 0) | (image.sum(axis=1) > 0)
     difference = np.abs(image - reference).max(axis=1)[covered].mean()
@@ -155,12 +165,7 @@ check(os.path.getsize(state_path) > 0, "state saved to %s" % state_path)
 ResetSession()
 check(FindSource("Sampler") is None, "the session is empty after ResetSession")
 LoadState(state_path)
-view = GetActiveViewOrCreate("RenderView")
-view.ViewSize = [SIZE, SIZE]
-restored = settings(view)
-for key, value in recorded.items():
-    check(restored.get(key) == value, "state: %s restored (%s)" % (key, value))
-compare(picture(view, "state"), reference, "state file")
+check_restored("state file")
 
 # The same pipeline through a Python trace.
 ResetSession()
@@ -173,10 +178,5 @@ check("OFBSampler(" in trace and "OFBSurfaceRepresentation" not in trace and
       "'OFB Surface'" in trace, "the trace creates the OFB proxies and names the representation")
 ResetSession()
 exec(compile(trace, "ofb-trace.py", "exec"), {})
-view = GetActiveViewOrCreate("RenderView")
-view.ViewSize = [SIZE, SIZE]
-traced = settings(view)
-for key, value in recorded.items():
-    check(traced.get(key) == value, "trace: %s restored (%s)" % (key, value))
-compare(picture(view, "trace"), reference, "Python trace")
+check_restored("Python trace")
 print("all state and trace checks passed", flush=True)

@@ -24,25 +24,14 @@ import numpy as np
 from paraview.simple import *
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkDoubleArray
-from vtkmodules.vtkParallelCore import vtkCommunicator, vtkMultiProcessController
+
+import ofbParaViewTesting
 
 plugin, reference_dir = sys.argv[1], sys.argv[2]
 LoadPlugin(plugin, ns=globals())
-controller = vtkMultiProcessController.GetGlobalController()
-rank = controller.GetLocalProcessId()
-ranks = controller.GetNumberOfProcesses()
-
-
-def say(*args):
-    if rank == 0:
-        print(*args, flush=True)
-
-
-def check(condition, what):
-    # Every process reaches every check with the same values (they are gathered).
-    if not condition:
-        raise AssertionError("%d ranks: %s" % (ranks, what))
-    say("ok (%d ranks):" % ranks, what)
+controller, rank, ranks = ofbParaViewTesting.processes()
+# Every process reaches every check with the same values (they are gathered).
+say, check = ofbParaViewTesting.reporter("%d ranks" % ranks, rank)
 
 
 def gather(rows):

@@ -41,6 +41,8 @@ import os
 import subprocess
 import sys
 
+import ofbParaViewTesting
+
 SIZE = 300
 RESOLUTION = 96
 STEPS = 10
@@ -53,7 +55,7 @@ LEVELS_TOLERANCE = 1.0
 
 def render(plugin, out_dir, empty_last):
     """The pvbatch part, on every process."""
-    from paraview.simple import (Calculator, ColorBy, CreateView, ExtractSurface,
+    from paraview.simple import (Calculator, ColorBy, ExtractSurface,
                                  GetColorTransferFunction, GhostCellsGenerator, Hide,
                                  LoadPlugin, ProcessIdScalars, ProgrammableFilter,
                                  RedistributeDataSet,
@@ -93,14 +95,7 @@ else:
     output.GetCellData().CopyAllocate(source.GetCellData(), 0)
 """)
 
-    view = CreateView("RenderView")
-    view.ViewSize = [SIZE, SIZE]
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
-    view.CameraPosition = [1.2, -2.2, 1.0]
-    view.CameraFocalPoint = [0, 0, 0]
-    view.CameraViewUp = [0, 0, 1]
+    view = ofbParaViewTesting.black_view(SIZE)
 
     display = Show(ghosted, view)
     display.SetRepresentationType("OFB Surface")

@@ -40,7 +40,8 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkIntArray
 from vtkmodules.vtkIOGeometry import vtkOBJReader
 from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.vtkParallelCore import vtkMultiProcessController
+
+import ofbParaViewTesting
 
 MAX_DIFFERENCE = 8  # grey levels, a cell's colour against one process's
 MAX_DIFFERING = 0.005  # fraction of the cells whose colour differs at all
@@ -48,9 +49,7 @@ MAX_DIFFERING = 0.005  # fraction of the cells whose colour differs at all
 plugin, mesh_file, output = sys.argv[1], sys.argv[2], sys.argv[3]
 partitions = int(sys.argv[4]) if len(sys.argv) > 4 else 0
 LoadPlugin(plugin, ns=globals())
-controller = vtkMultiProcessController.GetGlobalController()
-rank = controller.GetLocalProcessId()
-ranks = controller.GetNumberOfProcesses()
+controller, rank, ranks = ofbParaViewTesting.processes()
 name = "%d%s" % (ranks, "-%dpieces" % partitions if partitions else "")
 folder = os.path.join(output, name)
 reference = os.path.join(output, "1")
@@ -59,25 +58,10 @@ if rank == 0:
     for old in os.listdir(folder):
         os.remove(os.path.join(folder, old))
 controller.Barrier()
-
-
-def say(*args):
-    if rank == 0:
-        print(*args, flush=True)
-
-
-def check(condition, what):
-    if not condition:
-        raise AssertionError("%s: %s" % (name, what))
-    say("ok (%s):" % name, what)
-
+say, check = ofbParaViewTesting.reporter(name, rank)
 
 source = OpenDataFile(mesh_file)
-pieces = RedistributeDataSet(Input=source)
-if partitions:
-    pieces.NumberOfPartitions = partitions
-surface = ExtractSurface(Input=pieces)
-ghosted = GhostCellsGenerator(Input=surface, BuildIfRequired=1)
+ghosted = ofbParaViewTesting.distributed_surface(source, partitions)
 sampler = OFBSampler(Input=ghosted, Resolution=64)
 bounds = source.GetDataInformation().GetBounds()
 low, high = np.array(bounds[0::2]), np.array(bounds[1::2])

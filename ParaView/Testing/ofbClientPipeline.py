@@ -31,7 +31,10 @@ client it also renders the view on the client (local rendering: the server deliv
 surface) and writes OUTPUT_DIR/ofb-surface-local.png, with the OFB Surface representation
 building its OFB and LIC from the delivered surface; pvbatch and the GUI write the same
 picture of the whole surface in one process as OUTPUT_DIR/ofb-surface-whole.png (on one
-process only). TestOFBClients.py runs them and compares.
+process only). A client also renders the probe's view locally (check_delivered_ofb): with
+the OFB the servers pack into the delivered surface (ofb-probe-local.png), at the mesh's
+resolution (ofb-probe-mesh.png), and surfaces with unusable packs (ofb-bad-*.png).
+TestOFBClients.py runs them and compares.
 """
 import argparse
 import json
@@ -147,6 +150,75 @@ values["particle_ends"] = sorted([round(float(c), 6) for c in p] for p in end_po
 say("values:", json.dumps({key: value for key, value in values.items()
                            if key != "particle_ends"}))
 
+# Packs of the probe's OFB (vtkOFBSamplePack's arrays, rank 0's prefix) made unusable, one
+# way each: the client that renders them locally reports them and builds its own OFB.
+BAD_PACKS = {
+    "cells-outside": "cells[:] = 4000000000",
+    "short-depths": "depths = depths[:-1]",
+    "frame-of-five": "frame = frame[:5]",
+    "short-colors": "colors = colors[:-3]",
+}
+BAD_PACK_SCRIPT = """
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk
+output.ShallowCopy(inputs[0].VTKObject)
+n = 50
+frame = np.array([-0.5, -0.5, -0.5, 0.01, 100, 100, 100], dtype=np.float64)
+cells = np.arange(n, dtype=np.uint32)
+depths = np.linspace(0.0, 0.5, n).astype(np.float32)
+colors = np.full((n, 4), 255, dtype=np.uint8)
+%s
+fields = output.GetFieldData()
+for name, values in (("Frame", frame), ("Cell", cells), ("Depth", depths),
+                     ("Sample_Colors", colors)):
+    array = numpy_to_vtk(values, deep=1)
+    array.SetName("vtkOFBPiece0_" + name)
+    fields.AddArray(array)
+"""
+
+
+def save_local(view, name):
+    """Renders `view` on the client (local rendering) into OUTPUT_DIR/name."""
+    Render(view)
+    values[name + ".remote"] = bool(
+        view.GetClientSideObject().GetUseDistributedRenderingForRender())
+    SaveScreenshot(os.path.join(args.output, name), view, ImageResolution=[SIZE, SIZE])
+
+
+def check_delivered_ofb(view, display, settings):
+    """The probe's OFB rendered on the client: with the OFB packed into the delivered
+    surface (ofb-probe-local.png, as the server's ofb-surface.png), at the mesh's resolution
+    (Use Input OFB off: the client's own OFB, ofb-probe-mesh.png), and from unusable packs
+    (ofb-bad-KIND.png, the mesh-resolution picture of that surface ofb-bad-mesh.png)."""
+    settings.RemoteRenderThreshold = 1.0e6
+    save_local(view, "ofb-probe-local.png")
+    # The delivered surface's size (KiB) with the packed samples, and without.
+    values["probe_delivered_kib"] = display.GetRepresentedDataInformation().GetMemorySize()
+    values["probe_ofb_samples"] = particles.GetDataInformation(0).GetNumberOfPoints()
+    display.UseInputOFB = 0
+    save_local(view, "ofb-probe-mesh.png")
+    values["mesh_delivered_kib"] = display.GetRepresentedDataInformation().GetMemorySize()
+    display.UseInputOFB = 1
+    Hide(probe, view)
+    for kind, corruption in sorted(BAD_PACKS.items()):
+        # The surface without ghost cells: ParaView's geometry filter keeps its field data.
+        bad = ProgrammableFilter(Input=surface, Script=BAD_PACK_SCRIPT % corruption)
+        shown = Show(bad, view)
+        shown.SetRepresentationType("OFB Surface")
+        shown.ColorArrayName = ["POINTS", ""]
+        shown.DiffuseColor = [1.0, 1.0, 1.0]
+        shown.OFBResolution = 128
+        say("bad packs:", kind)
+        save_local(view, "ofb-bad-%s.png" % kind)
+        if kind == sorted(BAD_PACKS)[0]:
+            shown.UseInputOFB = 0
+            save_local(view, "ofb-bad-mesh.png")
+        Hide(bad, view)
+        Delete(bad)
+    Show(probe, view)
+    settings.RemoteRenderThreshold = 0.0
+
+
 # The view: the probed mesh as OFB Surface, its colours from the OFB it carries.
 view = GetActiveViewOrCreate("RenderView") if args.gui else CreateView("RenderView")
 if not args.gui:
@@ -172,6 +244,8 @@ if client:
 Render(view)
 values["remote_render"] = bool(view.GetClientSideObject().GetUseDistributedRenderingForRender())
 SaveScreenshot(os.path.join(args.output, "ofb-surface.png"), view, ImageResolution=[SIZE, SIZE])
+if client:
+    check_delivered_ofb(view, display, settings)
 
 # The surface of one process rendered with the OFB the representation builds: on the client
 # (local rendering: the server delivers the surface) and, as its reference, in a pvbatch of

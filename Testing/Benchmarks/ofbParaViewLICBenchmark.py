@@ -46,10 +46,9 @@ Not a test: run it by hand (docs/benchmarks.md); ctest runs it at tiny sizes
 """
 
 import argparse
-import ctypes
-import ctypes.util
 import os
 import statistics
+import sys
 import tempfile
 import time
 
@@ -62,13 +61,12 @@ from vtkmodules.util import numpy_support
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 # One connection to the X display (under xvfb-run) for the whole run, so that the server
-# does not reset between two views' windows.
-try:
-    _xlib = ctypes.CDLL(ctypes.util.find_library("X11") or "libX11.so.6")
-    _xlib.XOpenDisplay.restype = ctypes.c_void_p
-    _display = _xlib.XOpenDisplay(None)
-except OSError:
-    _display = None
+# does not reset between two views' windows (the plugin tests' support module).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir,
+                                os.pardir, "ParaView", "Testing"))
+import ofbParaViewTesting  # noqa: E402
+
+ofbParaViewTesting.keep_display_open()
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("plugin", help="the plugin (OFB.so)")

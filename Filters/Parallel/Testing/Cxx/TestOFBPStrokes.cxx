@@ -9,9 +9,12 @@
 // paints the whole pipe with no controller, gathers every piece's owned samples and
 // compares their colours, which must be equal.
 //
-//   mpirun -np N TestOFBPStrokes [--empty-last] [--bad-input]
+//   mpirun -np N TestOFBPStrokes [--empty-last] [--bad-input] [--many]
 //
 // --empty-last: the last process has an empty piece (the others share the pipe).
+// --many: also a stroke of 300 points a few cells apart winding around the pipe, so that
+// the first rounds of steps have more walks than one all-gather of candidates takes (the
+// candidates then go through all-reduces), and the last rounds fewer.
 // --bad-input: no process has samples (a resolution out of range), then a stroke point
 // that is not finite: every process reports the error and outputs an empty OFB, and none
 // waits for another.
@@ -91,8 +94,9 @@ std::array<double, 3> Around(double x, double t, double r)
   return { x, r * std::cos(t), r * std::sin(t) };
 }
 
-/// The strokes, with per-point "Color" (unsigned char) and "Radius".
-vtkSmartPointer<vtkPolyData> MakeStrokes()
+/// The strokes, with per-point "Color" (unsigned char) and "Radius"; `many`: also a
+/// stroke of 300 points.
+vtkSmartPointer<vtkPolyData> MakeStrokes(bool many)
 {
   vtkNew<vtkPoints> points;
   vtkNew<vtkUnsignedCharArray> color;
@@ -133,6 +137,17 @@ vtkSmartPointer<vtkPolyData> MakeStrokes()
   lines->InsertCellPoint(add(Around(-0.2, 2.2, 0.45), 0.4));
   lines->InsertCellPoint(add(Around(0.1, 4.0, 0.2), 0.7));
   lines->InsertCellPoint(add(Around(0.7, 4.3, PipeRadius), 1.0));
+  if (many)
+  {
+    // 300 points about 4 cells apart, winding around the pipe along its length.
+    const int m = 300;
+    lines->InsertNextCell(m);
+    for (int i = 0; i < m; ++i)
+    {
+      const double f = double(i) / (m - 1);
+      lines->InsertCellPoint(add(Around(-0.75 + 1.5 * f, 0.21 * i, PipeRadius), f));
+    }
+  }
   // A single dab, off the surface.
   verts->InsertNextCell(1);
   verts->InsertCellPoint(add(Around(-0.4, 5.5, 0.35), 0.5));
@@ -279,7 +294,7 @@ bool RunBadInput(vtkMultiProcessController* controller, int pieces, vtkPolyData*
 {
   const int rank = controller->GetLocalProcessId();
   vtkNew<vtkPolyData> none;
-  vtkSmartPointer<vtkPolyData> strokes = MakeStrokes();
+  vtkSmartPointer<vtkPolyData> strokes = MakeStrokes(false);
   vtkNew<vtkPolyData> notFinite;
   notFinite->DeepCopy(strokes);
   notFinite->GetPoints()->SetPoint(3, std::nan(""), 0.0, 0.0);
@@ -324,7 +339,7 @@ int main(int argc, char* argv[])
   {
     return vtkofbtest::FinishAll(controller, RunBadInput(controller, pieces, pipe));
   }
-  vtkSmartPointer<vtkPolyData> strokes = MakeStrokes();
+  vtkSmartPointer<vtkPolyData> strokes = MakeStrokes(vtkofbtest::HasFlag(argc, argv, "--many"));
   vtkNew<vtkPolyData> none;
 
   // This process's piece, painted with the strokes given on the first process.

@@ -41,14 +41,9 @@ vtkStandardNewMacro(vtkOFBSurfaceRepresentation);
 
 namespace
 {
-/**
- * Under MPI: the LIC reads the owned samples of the other processes within its
- * streamlines' reach instead of the input's ghost samples (vtkOFBPLIC GhostSamples
- * exchange), and the LIC pyramid's levels are filtered and their LICs computed from the
- * owned samples of every process within their reach (vtkOFBPLICPyramid), by every process
- * together (SynchronizePyramid), whatever the input's ghost depth; each process's levels
- * are its own: no filter cache, whose hits differ per process.
- */
+/// Under MPI the LIC and the pyramid's levels read every process's owned samples within
+/// reach, whatever the input's ghost depth (vtkOFBPLIC exchange, vtkOFBPLICPyramid, by
+/// every process together: SynchronizePyramid); no filter cache (hits differ per process).
 vtkSmartPointer<vtkOFBLICPyramid> vtkOFBSurfaceRepresentationDistributeLIC(vtkOFBPLIC* lic)
 {
   lic->SetGhostSamples(vtkOFBPLIC::GHOST_SAMPLES_EXCHANGE);

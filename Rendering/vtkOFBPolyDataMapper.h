@@ -52,7 +52,9 @@
  *   level (vtkOFBPyramid::IsComputedArray), the levels are independent textures, whose
  *   plain mix would lose contrast half-way between levels (a band of weaker streaks); the
  *   blended intensity is then m + (mix - m) / sqrt((1 - t)^2 + t^2), with m the mean of
- *   level 0's intensity and t the blend weight, which keeps the variance of the mix.
+ *   level 0's intensity (over every process's owned samples where the pyramid gives it:
+ *   vtkOFBPyramid::GetSharedMean) and t the blend weight, which keeps the variance of the
+ *   mix.
  * - Automatic (default): Smooth where the colouring modulates by an intensity array that
  *   the OFB has (a LIC: no cell blocks close up), else Nearest (paint: the cheapest, and
  *   crisp brush edges). It builds the pyramid only when it resolves to Smooth. With

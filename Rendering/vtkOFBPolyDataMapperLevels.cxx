@@ -72,6 +72,15 @@ void vtkOFBPolyDataMapper::UpdateLevelIntensity(vtkOFB* ofb)
     return;
   }
   this->LevelIntensity = true;
+  // A distributed surface's mean, over every process's owned samples, where the pyramid
+  // has it (vtkOFBPLICPyramid); else this OFB's.
+  double shared = 0.0;
+  if (this->Storage->GetPyramid()->GetSharedMean(name, shared))
+  {
+    this->IntensityMean = shared;
+    this->MeanArray = nullptr;
+    return;
+  }
   if (array == this->MeanArray && array->GetMTime() <= this->MeanTime)
   {
     return;

@@ -644,6 +644,37 @@ void vtkOFBPyramid::FilterAllLevels(const std::set<std::string>* names)
 }
 
 //------------------------------------------------------------------------------
+bool vtkOFBPyramid::FilterLevel(int k, vtkOFB* source, const std::set<std::string>* names)
+{
+  vtkOFB* level = k >= 1 ? this->GetLevel(k) : nullptr;
+  if (!level || !source || static_cast<size_t>(k) > this->States.size())
+  {
+    return false;
+  }
+  LevelState& state = this->States[k - 1];
+  return ResampleArrays(source,
+    level,
+    this->FilterRadius * level->GetCellSize(),
+    names,
+    state.ReferenceNormals.empty() ? nullptr : state.ReferenceNormals.data(),
+    state.FellBack.data());
+}
+
+//------------------------------------------------------------------------------
+double vtkOFBPyramid::GetFilterReach(int k) const
+{
+  vtkOFB* level = k >= 1 ? this->GetLevel(k) : nullptr;
+  vtkOFB* finer = level ? this->GetLevel(k - 1) : nullptr;
+  return finer ? 2.0 * FilterRadiusOf(finer, this->FilterRadius * level->GetCellSize()) : 0.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPyramid::GetSharedMean(const std::string&, double&)
+{
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkOFBPyramid::ComputeLevelArrays(const std::set<std::string>*) {}
 
 //------------------------------------------------------------------------------

@@ -199,6 +199,15 @@ public:
    */
   virtual bool IsComputedArray(const std::string& name) const;
 
+  /**
+   * The mean of level 0's array `name` (its first component clamped to [0, 1], NaN as 0)
+   * over the owned samples of every process sharing a distributed surface, where a
+   * distributed subclass computed it for the array's current values (true); false
+   * otherwise (the default): the caller computes the mean of the samples it has.
+   * vtkOFBPolyDataMapper keeps this mean when it blends levels computed on their own.
+   */
+  virtual bool GetSharedMean(const std::string& name, double& mean);
+
 protected:
   vtkOFBPyramid();
   ~vtkOFBPyramid() override;
@@ -253,6 +262,22 @@ protected:
    * of filtering them (vtkOFBLICPyramid: a LIC per level). The default does nothing.
    */
   virtual void ComputeLevelArrays(const std::set<std::string>* names);
+
+  /**
+   * Filter the arrays `names` (all where null) of level `k` (1..) from `source` instead of
+   * level k - 1, as UpdateArrays() filters them (the facing test's normals and the
+   * fallback record of the level's sampling): a distributed subclass gives level k - 1
+   * merged with the other processes' samples. False where the level or source is missing
+   * or empty.
+   */
+  bool FilterLevel(int k, vtkOFB* source, const std::set<std::string>* names);
+
+  /**
+   * How far (world units) from a sample of level `k` (1..) its filtering reads the
+   * samples of level k - 1: twice the filter radius (the fallback's reach); 0 where the
+   * levels lack k.
+   */
+  double GetFilterReach(int k) const;
 
   /// UpdateModifiedArrays for values changed in place; false where it must do all.
   bool FilterChangedSamples();

@@ -5,6 +5,7 @@
 #define vtkOFBPyramidResampler_h
 
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkOFB.h"
 #include "vtkPointData.h"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <set>
 #include <string>
 #include <vector>
@@ -68,9 +70,13 @@ public:
     for (int a = 0; a < spd->GetNumberOfArrays(); ++a)
     {
       vtkDataArray* array = spd->GetArray(a);
+      // The ghost flags of a piece's level are its own sampler's (from the ghost cells of
+      // the surface it samples, as level 0's), not filtered: the owned samples of the
+      // pieces' levels then are those of one process's levels.
       if (!array || !array->GetName() ||
         array->GetNumberOfTuples() != this->Source->GetNumberOfSamples() ||
-        (names && !names->count(array->GetName())))
+        (names && !names->count(array->GetName())) ||
+        !strcmp(array->GetName(), vtkDataSetAttributes::GhostArrayName()))
       {
         continue;
       }

@@ -730,6 +730,9 @@ bool vtkOFBLIC::ComputeEnhancedPass(vtkOFB* input,
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBLIC::CopySettingsToLevel(vtkOFBLIC*) {}
+
+//------------------------------------------------------------------------------
 void vtkOFBLIC::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -390,6 +390,14 @@ public:
    */
   vtkGetMacro(LastExecutionTime, double);
 
+  /**
+   * Settings beyond the LIC's own that the LIC of a coarser level of a pyramid takes
+   * from this one (vtkOFBLICPyramid copies the LIC settings, then calls this on the
+   * level's LIC, an instance of this class made with NewInstance()): a subclass's. The
+   * default does nothing; vtkOFBPLIC gives its controller and LevelGhostSamples.
+   */
+  virtual void CopySettingsToLevel(vtkOFBLIC* level);
+
 protected:
   vtkOFBLIC();
   ~vtkOFBLIC() override;

@@ -126,9 +126,11 @@ void vtkOFBLICPyramid::RunLevelLICs(int levels)
   const bool computed = input && input->GetSampleData()->GetArray(LICArrayNames[0]);
   this->LevelLICs.resize(static_cast<size_t>(std::max(levels - 1, 0)));
   vtkNew<vtkOFB> empty;
+  this->BeginLevelLICs(levels);
   for (int k = 1; k < levels; ++k)
   {
     vtkOFB* level = computed && k < own ? this->GetLevel(k) : nullptr;
+    this->PrepareLevelLIC(k, level);
     vtkSmartPointer<vtkOFBLIC>& lic = this->LevelLICs[k - 1];
     if (!lic || strcmp(lic->GetClassName(), this->LIC->GetClassName()) != 0)
     {
@@ -136,6 +138,7 @@ void vtkOFBLICPyramid::RunLevelLICs(int levels)
       lic.TakeReference(this->LIC->NewInstance());
     }
     CopySettings(this->LIC, lic);
+    this->LIC->CopySettingsToLevel(lic);
     lic->SetInputData(level ? level : empty.Get());
     lic->Update();
     if (!level)
@@ -163,6 +166,19 @@ void vtkOFBLICPyramid::RunLevelLICs(int levels)
   }
   ++this->NumberOfLevelLICComputations;
   this->LastLevelLICTime = vtkTimerLog::GetUniversalTime() - start;
+}
+
+//------------------------------------------------------------------------------
+void vtkOFBLICPyramid::BeginLevelLICs(int) {}
+
+//------------------------------------------------------------------------------
+void vtkOFBLICPyramid::PrepareLevelLIC(int, vtkOFB*) {}
+
+//------------------------------------------------------------------------------
+vtkOFBLIC* vtkOFBLICPyramid::GetLevelLIC(int k) const
+{
+  return k >= 1 && k <= static_cast<int>(this->LevelLICs.size()) ? this->LevelLICs[k - 1].Get()
+                                                                 : nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -12,10 +12,11 @@
  * zoom, as an image-space LIC does, and no line where the level changes.
  *
  * The LIC of every level runs a LIC of the class of the one given with SetLIC (a
- * vtkOFBPLIC gives vtkOFBPLIC levels: contrast stretches over every process's samples),
- * with its settings (normally the filter that computed level 0's LIC; it is not run
- * here, its settings are read at every computation; a vtkOFBPLIC level uses its default
- * controller, the global one), on the level's samples, whose field, normals and other
+ * vtkOFBPLIC gives vtkOFBPLIC levels: contrast stretches over every process's samples,
+ * and the samples of other processes that the level's streamlines reach exchanged, see
+ * vtkOFBPLIC::LevelGhostSamples), with its settings (normally the filter that computed
+ * level 0's LIC; it is not run here, its settings are read at every computation, with
+ * vtkOFBLIC::CopySettingsToLevel), on the level's samples, whose field, normals and other
  * arrays are level 0's filtered down (vtkOFBPyramid). Its "LIC" and "LICMask" replace the
  * filtered ones. They are computed when the levels' arrays are: when the levels are
  * rebuilt, and when level 0's "LIC" array changes (a new LIC, another AnimationPhase). Each
@@ -92,6 +93,12 @@ public:
   void ComputeLevelLICs(int numberOfLevels = -1);
 
   /**
+   * The LIC that computed level `k` (1 .. the levels of the last computation - 1), or
+   * null: its timings and, for a vtkOFBPLIC, what it exchanged.
+   */
+  vtkOFBLIC* GetLevelLIC(int k) const;
+
+  /**
    * How many times the LICs of the levels were computed since creation (each time all
    * coarser levels), for tests and benchmarks.
    */
@@ -115,6 +122,20 @@ protected:
 
   /// The LICs of levels 1 .. levels - 1 (ComputeLevelLICs without the arrays' times).
   void RunLevelLICs(int levels);
+
+  /**
+   * Called by RunLevelLICs before the levels' LICs, with the number of levels they run
+   * on (on every process where the LICs are distributed). The default does nothing.
+   */
+  virtual void BeginLevelLICs(int levels);
+
+  /**
+   * Called by RunLevelLICs before the LIC of level `k` (1..) runs: `level` is the level,
+   * null where this pyramid lacks it (the LIC then runs on an empty OFB). The default
+   * does nothing; vtkOFBPLICPyramid filters the level again from the finer level merged
+   * with the other processes' samples.
+   */
+  virtual void PrepareLevelLIC(int k, vtkOFB* level);
 
   /// Copy the settings of `from` that compute a LIC into `to`.
   static void CopySettings(vtkOFBLIC* from, vtkOFBLIC* to);

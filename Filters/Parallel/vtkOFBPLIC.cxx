@@ -6,11 +6,14 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
+#include "vtkNew.h"
 #include "vtkOFB.h"
 #include "vtkOFBLICReduction.h"
+#include "vtkOFBPLICExchange.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -117,6 +120,18 @@ private:
 vtkOFBPLIC::vtkOFBPLIC()
   : Controller(nullptr)
   , NumberOfGhostLevels(8)
+  , GhostSamples(GHOST_SAMPLES_INPUT)
+  , LevelGhostSamples(GHOST_SAMPLES_EXCHANGE)
+  , ExchangeMargin(4.0)
+  , LastSentSamples(0)
+  , LastReceivedSamples(0)
+  , LastSentBytes(0)
+  , LastReceivedBytes(0)
+  , LastExchangeTime(0.0)
+  , Exchange(nullptr)
+  , ExchangedNone(false)
+  , ExchangedRadius(0.0)
+  , ExchangedTime(0)
 {
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
@@ -125,6 +140,7 @@ vtkOFBPLIC::vtkOFBPLIC()
 vtkOFBPLIC::~vtkOFBPLIC()
 {
   this->SetController(nullptr);
+  delete this->Exchange;
 }
 
 //------------------------------------------------------------------------------
@@ -154,15 +170,186 @@ int vtkOFBPLIC::RequestUpdateExtent(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
+void vtkOFBPLIC::CopySettingsToLevel(vtkOFBLIC* level)
+{
+  vtkOFBPLIC* distributed = vtkOFBPLIC::SafeDownCast(level);
+  if (distributed)
+  {
+    distributed->SetController(this->Controller);
+    distributed->SetGhostSamples(this->LevelGhostSamples);
+    distributed->SetLevelGhostSamples(this->LevelGhostSamples);
+    distributed->SetExchangeMargin(this->ExchangeMargin);
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkOFBPLIC::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  this->LastSentSamples = this->LastReceivedSamples = 0;
+  this->LastSentBytes = this->LastReceivedBytes = 0;
+  this->LastExchangeTime = 0.0;
   vtkMultiProcessController* controller = this->Controller;
   if (!controller || controller->GetNumberOfProcesses() <= 1)
   {
     return this->Superclass::RequestData(request, inputVector, outputVector);
   }
+  vtkOFB* output = vtkOFB::GetData(outputVector);
+  if (this->GhostSamples == GHOST_SAMPLES_INPUT || !output)
+  {
+    return this->RequestCollective(request, inputVector, outputVector);
+  }
+  return this->RequestExchanged(request, vtkOFB::GetData(inputVector[0]), output);
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::string> vtkOFBPLIC::ReadArrayNames(vtkOFB* input)
+{
+  std::vector<std::string> names;
+  if (!input || input->GetNumberOfSamples() == 0)
+  {
+    return names;
+  }
+  vtkDataArray* normals = nullptr;
+  vtkDataArray* vectors = this->FindFieldAndNormals(input, normals);
+  // An array without a name is not exchanged (the exchange then fails, with an error).
+  for (vtkDataArray* array : { vectors, normals })
+  {
+    names.emplace_back(array && array->GetName() ? array->GetName() : "");
+  }
+  if (this->NoiseArrayName && *this->NoiseArrayName)
+  {
+    names.emplace_back(this->NoiseArrayName);
+  }
+  return names;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOFBPLIC::CanReuseExchange(vtkOFB* input,
+  const std::vector<std::string>& names,
+  double radius)
+{
+  if (!this->Exchange || !this->Exchange->Merged || !this->Exchange->Problem.empty())
+  {
+    return false;
+  }
+  // A process without samples sends and receives nothing: any such input will do.
+  const bool none = !input || input->GetNumberOfSamples() == 0;
+  if (none || this->ExchangedNone)
+  {
+    return none && this->ExchangedNone;
+  }
+  if (input != this->ExchangedInput.Get() || names != this->ExchangedNames ||
+    radius != this->ExchangedRadius)
+  {
+    return false;
+  }
+  if (input->GetStructureMTime() > this->ExchangedTime)
+  {
+    return false;
+  }
+  std::vector<std::string> read = names;
+  read.emplace_back(vtkDataSetAttributes::GhostArrayName());
+  for (const std::string& name : read)
+  {
+    vtkDataArray* array = input->GetSampleData()->GetArray(name.c_str());
+    if (array && array->GetMTime() > this->ExchangedTime)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBPLIC::RequestExchanged(vtkInformation* request, vtkOFB* input, vtkOFB* output)
+{
+  const double start = vtkTimerLog::GetUniversalTime();
+  const double cell = input ? input->GetCellSize() : 0.0;
+  const double radius = this->GhostSamples == GHOST_SAMPLES_GATHER
+    ? -1.0
+    : this->GetRequiredGhostDepth(cell) + this->ExchangeMargin * cell;
+  const std::vector<std::string> names = this->ReadArrayNames(input);
+  const int reuse = this->CanReuseExchange(input, names, radius) ? 1 : 0;
+  int everywhere = 0;
+  this->Controller->AllReduce(&reuse, &everywhere, 1, vtkCommunicator::MIN_OP);
+  bool exchanged = everywhere != 0;
+  if (!everywhere)
+  {
+    delete this->Exchange;
+    this->Exchange = new vtkOFBPLICExchange;
+    exchanged = this->Exchange->Run(this->Controller, input, names, radius);
+    if (!exchanged)
+    {
+      vtkErrorMacro(
+        "Cannot exchange the samples that the LIC reads: " << this->Exchange->Problem << ".");
+    }
+    this->LastSentSamples = this->Exchange->SentSamples;
+    this->LastReceivedSamples = this->Exchange->ReceivedSamples;
+    this->LastSentBytes = this->Exchange->SentBytes;
+    this->LastReceivedBytes = this->Exchange->ReceivedBytes;
+    this->ExchangedInput = exchanged ? input : nullptr;
+    this->ExchangedNone = !input || input->GetNumberOfSamples() == 0;
+    this->ExchangedNames = names;
+    this->ExchangedRadius = radius;
+    vtkTimeStamp now;
+    now.Modified();
+    this->ExchangedTime = now.GetMTime();
+  }
+  this->LastExchangeTime = vtkTimerLog::GetUniversalTime() - start;
+  vtkOFBPLICExchange& exchange = *this->Exchange;
+
+  // The LIC of the merged samples (on every process: its collective calls), as the input.
+  vtkNew<vtkOFB> empty;
+  vtkOFB* merged = exchanged && exchange.Merged ? exchange.Merged.Get() : empty.Get();
+  vtkNew<vtkInformation> inInfo;
+  inInfo->Set(vtkDataObject::DATA_OBJECT(), merged);
+  vtkNew<vtkInformationVector> inVector;
+  inVector->Append(inInfo);
+  vtkInformationVector* inputs[1] = { inVector };
+  vtkNew<vtkOFB> result;
+  vtkNew<vtkInformation> outInfo;
+  outInfo->Set(vtkDataObject::DATA_OBJECT(), result);
+  vtkNew<vtkInformationVector> outVector;
+  outVector->Append(outInfo);
+  const int status = this->RequestCollective(request, inputs, outVector);
+
+  auto* lic = vtkFloatArray::SafeDownCast(result->GetSampleData()->GetArray("LIC"));
+  auto* mask = vtkUnsignedCharArray::SafeDownCast(result->GetSampleData()->GetArray("LICMask"));
+  if (!exchanged || !input || !lic || !mask ||
+    lic->GetNumberOfTuples() != merged->GetNumberOfSamples() ||
+    mask->GetNumberOfTuples() != merged->GetNumberOfSamples())
+  {
+    output->Initialize();
+    return status;
+  }
+  // Each input sample's value: its own, or (a ghost sample) its owner's.
+  const vtkIdType n = input->GetNumberOfSamples();
+  vtkNew<vtkFloatArray> licOut;
+  licOut->SetName("LIC");
+  licOut->SetNumberOfTuples(n);
+  vtkNew<vtkUnsignedCharArray> maskOut;
+  maskOut->SetName("LICMask");
+  maskOut->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const vtkIdType m = exchange.InputToMerged[i];
+    licOut->SetValue(i, m >= 0 ? lic->GetValue(m) : 0.5f);
+    maskOut->SetValue(i, m >= 0 ? mask->GetValue(m) : 0);
+  }
+  output->ShallowCopy(input);
+  output->GetSampleData()->AddArray(licOut);
+  output->GetSampleData()->AddArray(maskOut);
+  return status;
+}
+
+//------------------------------------------------------------------------------
+int vtkOFBPLIC::RequestCollective(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkMultiProcessController* controller = this->Controller;
   const bool enhanced = this->EnhancedLIC && this->NumberOfSteps > 0;
   const bool contrast =
     this->EnhanceContrast == ENHANCE_CONTRAST_LIC || this->EnhanceContrast == ENHANCE_CONTRAST_BOTH;
@@ -256,4 +443,7 @@ void vtkOFBPLIC::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "NumberOfGhostLevels: " << this->NumberOfGhostLevels << "\n";
+  os << indent << "GhostSamples: " << this->GhostSamples << "\n";
+  os << indent << "LevelGhostSamples: " << this->LevelGhostSamples << "\n";
+  os << indent << "ExchangeMargin: " << this->ExchangeMargin << " cells\n";
 }

@@ -28,6 +28,22 @@
  * sample up to float rounding. With NormalizeVectors off, the field is divided by the
  * largest tangential magnitude of every process's samples (an all-reduce of one double).
  *
+ * - Exchanged samples (GhostSamples EXCHANGE or GATHER). Instead of the input's ghost
+ *   samples, the LIC reads the owned samples of the other processes that its streamlines
+ *   reach: each process sends to each other one the owned samples within
+ *   GetRequiredGhostDepth() (plus ExchangeMargin cells) of the box of that process's
+ *   owned samples, and computes the LIC of its owned samples merged with those it
+ *   received, in one process's order (vtkOFBPLICExchange). The owned samples then get
+ *   one process's LIC whatever the input's ghost depth. The input's ghost samples take
+ *   the value of the received sample of their cell nearest in depth (0.5 where none was
+ *   received: they lie beyond what the owned samples' streamlines reach). GATHER sends
+ *   every owned sample to every process. The merged samples are kept while the input's
+ *   structure and the arrays the LIC reads are unchanged on every process (an all-reduce
+ *   of one int decides it): another AnimationPhase, noise or kernel then sends nothing
+ *   and re-convolves the kept streamlines. vtkOFBLICPyramid's levels use LevelGhostSamples
+ *   (default EXCHANGE): a coarse level's streamlines are 2^k times longer than level 0's,
+ *   deeper than the ghost cells made for level 0.
+ *
  * A process with no samples takes part in the collective calls and outputs its empty
  * input with empty "LIC" and "LICMask" arrays. With no controller, or a single
  * process, it is vtkOFBLIC. Every process must update the filter the same number of
@@ -41,9 +57,14 @@
 
 #include "vtkOFBLIC.h"
 #include "vtkOFBParallelModule.h" // for export macro
+#include "vtkWeakPointer.h"       // for ExchangedInput
+
+#include <string> // for ReadArrayNames
+#include <vector> // for ReadArrayNames
 
 class vtkMultiProcessController;
 class vtkOFB;
+struct vtkOFBPLICExchange;
 
 class VTKOFBPARALLEL_EXPORT vtkOFBPLIC : public vtkOFBLIC
 {
@@ -71,6 +92,58 @@ public:
   vtkGetMacro(NumberOfGhostLevels, int);
   ///@}
 
+  /// Where the samples that the LIC reads beyond the owned ones come from (GhostSamples).
+  enum GhostSampleSources
+  {
+    GHOST_SAMPLES_INPUT = 0,    ///< the input's ghost samples (as deep as its ghost cells)
+    GHOST_SAMPLES_EXCHANGE = 1, ///< the owned samples of other processes the LIC reaches
+    GHOST_SAMPLES_GATHER = 2    ///< the owned samples of every process (an all-gather)
+  };
+
+  ///@{
+  /**
+   * Where the samples that the owned samples' LIC reads beyond the owned ones come from
+   * (GHOST_SAMPLES_INPUT, GHOST_SAMPLES_EXCHANGE or GHOST_SAMPLES_GATHER; default INPUT).
+   */
+  vtkSetClampMacro(GhostSamples, int, GHOST_SAMPLES_INPUT, GHOST_SAMPLES_GATHER);
+  vtkGetMacro(GhostSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * GhostSamples of the LICs of vtkOFBLICPyramid's coarser levels computed with this
+   * LIC's settings (CopySettingsToLevel; default GHOST_SAMPLES_EXCHANGE). Under MPI their
+   * updates then always make collective calls: compute the levels' LICs on every process
+   * together (vtkOFBLICPyramid::DeferLevelLICs, vtkOFBPLICPyramid).
+   */
+  vtkSetClampMacro(LevelGhostSamples, int, GHOST_SAMPLES_INPUT, GHOST_SAMPLES_GATHER);
+  vtkGetMacro(LevelGhostSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * Cells added to GetRequiredGhostDepth() for the exchange radius (default 4: the
+   * tiles of CacheStreamlines, whose streamlines start at another sample of the tile).
+   */
+  vtkSetClampMacro(ExchangeMargin, double, 0.0, 1.0e6);
+  vtkGetMacro(ExchangeMargin, double);
+  ///@}
+
+  ///@{
+  /**
+   * What the last update exchanged (GhostSamples EXCHANGE or GATHER; 0 otherwise): the
+   * samples and bytes this process sent and received, and the seconds the exchange took.
+   */
+  vtkGetMacro(LastSentSamples, vtkIdType);
+  vtkGetMacro(LastReceivedSamples, vtkIdType);
+  vtkGetMacro(LastSentBytes, vtkIdType);
+  vtkGetMacro(LastReceivedBytes, vtkIdType);
+  vtkGetMacro(LastExchangeTime, double);
+  ///@}
+
+  /// The controller and LevelGhostSamples (as GhostSamples) to a level's vtkOFBPLIC.
+  void CopySettingsToLevel(vtkOFBLIC* level) override;
+
   /**
    * The depth of ghost samples (world units) that the owned samples' LIC reads at the
    * current settings on an OFB of cell size `cellSize`: StepSize x cellSize x
@@ -86,11 +159,45 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  /// RequestData with the statistics (and the field's scale) of every process.
+  int RequestCollective(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  /// RequestData on the owned samples merged with those exchanged (GhostSamples).
+  int RequestExchanged(vtkInformation* request, vtkOFB* input, vtkOFB* output);
+
+  /// The sample arrays that the LIC of `input` reads: the field, the normals, the noise.
+  std::vector<std::string> ReadArrayNames(vtkOFB* input);
+
+  /**
+   * Whether the last exchange holds for `input` (this process): the same input, whose
+   * structure and arrays `names` were not modified since, at the same radius. Every
+   * process must agree to reuse it (the samples of the others may have changed).
+   */
+  bool CanReuseExchange(vtkOFB* input, const std::vector<std::string>& names, double radius);
+
   /// The largest tangential field magnitude of the input's unmasked samples (0 if none).
   double LargestFieldMagnitude(vtkOFB* input);
 
   vtkMultiProcessController* Controller;
   int NumberOfGhostLevels;
+  int GhostSamples;
+  int LevelGhostSamples;
+  double ExchangeMargin;
+  vtkIdType LastSentSamples;
+  vtkIdType LastReceivedSamples;
+  vtkIdType LastSentBytes;
+  vtkIdType LastReceivedBytes;
+  double LastExchangeTime;
+
+  // The last exchange, kept while its input is unchanged: the LIC of the same merged OFB
+  // then keeps its packed samples, noise and streamlines (another AnimationPhase only
+  // convolves again).
+  vtkOFBPLICExchange* Exchange;
+  vtkWeakPointer<vtkOFB> ExchangedInput;
+  bool ExchangedNone; // the input had no samples
+  std::vector<std::string> ExchangedNames;
+  double ExchangedRadius;
+  vtkMTimeType ExchangedTime;
 
 private:
   vtkOFBPLIC(const vtkOFBPLIC&) = delete;

@@ -19,6 +19,7 @@
 #include "vtkOFBLIC.h"
 #include "vtkOFBLICPyramid.h"
 #include "vtkOFBPLIC.h"
+#include "vtkOFBPLICPyramid.h"
 #include "vtkOFBPSampler.h"
 #include "vtkOFBParaViewProbe.h"
 #include "vtkOFBPolyDataMapper.h"
@@ -37,6 +38,21 @@
 #include <cmath>
 
 vtkStandardNewMacro(vtkOFBSurfaceRepresentation);
+
+namespace
+{
+/// Under MPI the LIC and the pyramid's levels read every process's owned samples within
+/// reach, whatever the input's ghost depth (vtkOFBPLIC exchange, vtkOFBPLICPyramid, by
+/// every process together: SynchronizePyramid); no filter cache (hits differ per process).
+vtkSmartPointer<vtkOFBLICPyramid> vtkOFBSurfaceRepresentationDistributeLIC(vtkOFBPLIC* lic)
+{
+  lic->SetGhostSamples(vtkOFBPLIC::GHOST_SAMPLES_EXCHANGE);
+  auto pyramid = vtkSmartPointer<vtkOFBPLICPyramid>::New();
+  pyramid->DeferLevelLICsOn();
+  pyramid->SetFilterCacheSize(0);
+  return pyramid;
+}
+}
 
 //------------------------------------------------------------------------------
 vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
@@ -82,12 +98,10 @@ vtkOFBSurfaceRepresentation::vtkOFBSurfaceRepresentation()
     this->OFBMapper->SetOFBConnection(this->Sampler->GetOutputPort());
   }
   this->OFBMapper->GetColoring()->SetLICIntensity(0.8);
-  // Under MPI the levels' LICs are computed by every process together (SynchronizePyramid),
-  // and each process's levels are its own: no filter cache, whose hits differ per process.
+  // Under MPI the LIC and its levels read the samples of every process within reach.
   if (this->OFBSource)
   {
-    this->LICPyramid->DeferLevelLICsOn();
-    this->LICPyramid->SetFilterCacheSize(0);
+    this->LICPyramid = vtkOFBSurfaceRepresentationDistributeLIC(this->LIC);
   }
 
   // Connects the new mapper to the actor, the selection and the backface actor.

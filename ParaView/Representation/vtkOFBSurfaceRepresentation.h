@@ -54,12 +54,13 @@
  * process alone (SynchronizeOFB). ParaView's geometry filter removes ghost cells from the
  * surface it delivers: where the input is polygonal with ghost cells (GhostCellsGenerator
  * upstream) and the delivered surface has the input's owned cells, the input itself is
- * sampled, ghost cells included, so that the LIC reads across the piece borders; the
- * representation does not ask for ghost cells. The coarser levels of the mapper's LIC
- * pyramid (the Automatic lookup's) are sampled from each process's rendered piece on
- * frames derived from level 0's, the same on every process, and their LICs are
- * vtkOFBPLIC runs (global contrast stretches) computed here on every process together
- * (SynchronizePyramid), not by the mapper. GetOFBFrame() (the information
+ * sampled, ghost cells included; the representation does not ask for ghost cells. The
+ * LIC reads the owned samples of the other processes within its streamlines' reach,
+ * whatever the ghost depth (vtkOFBPLIC GhostSamples exchange). The coarser levels of the
+ * mapper's LIC pyramid (the Automatic lookup's, a vtkOFBPLICPyramid) are sampled from
+ * each process's piece on frames derived from level 0's, the same on every process, and
+ * filtered and convolved from every process's owned samples within reach, on every
+ * process together (SynchronizePyramid), not by the mapper. GetOFBFrame() (the information
  * property OFBFrame) gives the frame of the OFB rendered.
  *
  * The level-of-detail mapper (ParaView's decimated surface while interacting with a

@@ -50,7 +50,7 @@ GHOST_LAYERS = 8
 SEAM_BAND = 3
 SEAM_TOLERANCE = 2.0
 FAR_SCALE = 4.0
-LEVELS_TOLERANCE = 9.0
+LEVELS_TOLERANCE = 1.0
 
 
 def render(plugin, out_dir, empty_last):

@@ -94,6 +94,233 @@ bool ReadFrame(vtkDataArray* frame, double origin[3], double& cellSize, vtkIdTyp
   cellSize = values[3];
   return cellSize > 0.0;
 }
+
+/// What Merge collects from the packs.
+struct Collected
+{
+  double Origin[3] = { 0, 0, 0 };
+  double CellSize = 0.0;
+  vtkIdType Dims[3] = { 0, 0, 0 };
+  std::vector<Sample> Samples;
+  std::vector<vtkIdType> Counts; // samples a pack
+  int First = -1;                // the first pack with samples: the arrays to merge
+};
+
+/// The samples of every pack (cell, depth, pack, index) and their common frame: Merge's
+/// first step. False with `problem` set where a pack is inconsistent or the frames differ.
+bool CollectSamples(const std::vector<vtkOFBSamplePack::PackRef>& packs,
+  Collected& c,
+  std::string& problem)
+{
+  c.Counts.assign(packs.size(), 0);
+  double& cellSize = c.CellSize;
+  double* origin = c.Origin;
+  vtkIdType* dims = c.Dims;
+  std::vector<Sample>& samples = c.Samples;
+  std::vector<vtkIdType>& counts = c.Counts;
+  int& first = c.First;
+  for (size_t p = 0; p < packs.size(); ++p)
+  {
+    vtkFieldData* fields = packs[p].Fields;
+    const std::string& prefix = packs[p].Prefix;
+    vtkAbstractArray* frameArray =
+      fields ? fields->GetAbstractArray((prefix + FrameSuffix).c_str()) : nullptr;
+    if (!frameArray)
+    {
+      continue;
+    }
+    double o[3];
+    double size;
+    vtkIdType d[3];
+    if (!ReadFrame(vtkDataArray::SafeDownCast(frameArray), o, size, d))
+    {
+      problem = "the frame '" + prefix + FrameSuffix + "' is not 7 finite values";
+      return false;
+    }
+    if (!(cellSize > 0.0))
+    {
+      std::copy(o, o + 3, origin);
+      std::copy(d, d + 3, dims);
+      cellSize = size;
+    }
+    if (size != cellSize || !std::equal(o, o + 3, origin) || !std::equal(d, d + 3, dims))
+    {
+      problem = "the processes' OFBs have different frames (sample them with one frame: "
+                "vtkOFBPSampler, OFB Sampler)";
+      return false;
+    }
+    // The legacy format the controller sends reads vtkTypeUInt32 back as unsigned int.
+    vtkAbstractArray* cellArray = fields->GetAbstractArray((prefix + CellSuffix).c_str());
+    vtkAbstractArray* depthArray = fields->GetAbstractArray((prefix + DepthSuffix).c_str());
+    if (!cellArray && !depthArray)
+    {
+      continue; // a piece without samples
+    }
+    auto cells = vtkUnsignedIntArray::SafeDownCast(cellArray);
+    auto depths = vtkFloatArray::SafeDownCast(depthArray);
+    if (!cells || !depths || cells->GetNumberOfComponents() != 1 ||
+      depths->GetNumberOfComponents() != 1 ||
+      cells->GetNumberOfTuples() != depths->GetNumberOfTuples())
+    {
+      problem = "the cells and depths of '" + prefix +
+        "' are missing, of other types than unsigned int and float, or of different lengths";
+      return false;
+    }
+    first = first < 0 ? static_cast<int>(p) : first;
+    counts[p] = cells->GetNumberOfTuples();
+    for (vtkIdType i = 0; i < cells->GetNumberOfTuples(); ++i)
+    {
+      if (!std::isfinite(depths->GetValue(i)))
+      {
+        problem = "a depth of '" + prefix + "' is not finite";
+        return false;
+      }
+      samples.push_back({ cells->GetValue(i), depths->GetValue(i), static_cast<int>(p), i });
+    }
+  }
+  return true;
+}
+
+/// The merged OFB's frame, cells and depths from the collected samples, sorted per cell
+/// by depth (ties in pack order): Merge's second step. Null where there is no frame; null
+/// with `problem` set where the frame or the samples do not fit.
+vtkSmartPointer<vtkOFB> BuildStructure(Collected& c, std::string& problem)
+{
+  double& cellSize = c.CellSize;
+  double* origin = c.Origin;
+  vtkIdType* dims = c.Dims;
+  std::vector<Sample>& samples = c.Samples;
+  auto ofb = vtkSmartPointer<vtkOFB>::New();
+  if (!(cellSize > 0.0))
+  {
+    return nullptr;
+  }
+  if (!ofb->SetFrame(origin, cellSize, dims))
+  {
+    problem = "the frame cannot be set (too many cells)";
+    return nullptr;
+  }
+  std::stable_sort(samples.begin(),
+    samples.end(),
+    [](const Sample& a, const Sample& b)
+    { return a.Cell != b.Cell ? a.Cell < b.Cell : a.Depth < b.Depth; });
+  const vtkIdType n = static_cast<vtkIdType>(samples.size());
+  vtkTypeUInt32Array* offsets = ofb->GetCellOffsets();
+  const vtkIdType numberOfCells = ofb->GetNumberOfCells();
+  if (!samples.empty() && static_cast<vtkIdType>(samples.back().Cell) >= numberOfCells)
+  {
+    problem = "a sample's cell is outside the frame";
+    return nullptr;
+  }
+  std::vector<vtkTypeUInt32> cellCounts(numberOfCells + 1, 0);
+  for (const Sample& sample : samples)
+  {
+    ++cellCounts[sample.Cell + 1];
+  }
+  std::partial_sum(cellCounts.begin(), cellCounts.end(), cellCounts.begin());
+  std::copy(cellCounts.begin(), cellCounts.end(), offsets->GetPointer(0));
+  if (!ofb->AllocateSamples(n))
+  {
+    problem = "the samples cannot be allocated";
+    return nullptr;
+  }
+  float* depthValues = ofb->GetDepths()->GetPointer(0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    depthValues[i] = samples[i].Depth;
+  }
+  if (!ofb->BuildCellIndex())
+  {
+    problem = "the cell index cannot be built";
+    return nullptr;
+  }
+  return ofb;
+}
+
+/// Every sample array of the first pack with samples, filled pack by pack in the merged
+/// order, with its attribute role: Merge's last step. False with `problem` set where a
+/// pack's array does not fit its samples.
+bool MergeArrays(const std::vector<vtkOFBSamplePack::PackRef>& packs,
+  const Collected& c,
+  vtkOFB* ofb,
+  std::string& problem)
+{
+  const std::vector<Sample>& samples = c.Samples;
+  const std::vector<vtkIdType>& counts = c.Counts;
+  const int first = c.First;
+  const vtkIdType n = static_cast<vtkIdType>(samples.size());
+  // The sample arrays of the first pack with samples, filled pack by pack.
+  std::vector<vtkSmartPointer<vtkIdList>> from(packs.size()), to(packs.size());
+  for (size_t p = 0; p < packs.size(); ++p)
+  {
+    from[p] = vtkSmartPointer<vtkIdList>::New();
+    to[p] = vtkSmartPointer<vtkIdList>::New();
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    from[samples[i].Pack]->InsertNextId(samples[i].Index);
+    to[samples[i].Pack]->InsertNextId(i);
+  }
+  const std::string modelPrefix = packs[first].Prefix + SampleSuffix;
+  vtkFieldData* model = packs[first].Fields;
+  auto attributes = vtkIntArray::SafeDownCast(
+    model->GetAbstractArray((packs[first].Prefix + AttributesSuffix).c_str()));
+  int packed = 0; // the rank of the sample array among the packed ones
+  for (int a = 0; a < model->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* modelArray = vtkDataArray::SafeDownCast(model->GetAbstractArray(a));
+    const std::string name =
+      modelArray && modelArray->GetName() ? modelArray->GetName() : std::string();
+    if (name.compare(0, modelPrefix.size(), modelPrefix) != 0)
+    {
+      continue;
+    }
+    const std::string sampleName = name.substr(modelPrefix.size());
+    vtkSmartPointer<vtkDataArray> merged;
+    merged.TakeReference(modelArray->NewInstance());
+    merged->SetName(sampleName.c_str());
+    merged->SetNumberOfComponents(modelArray->GetNumberOfComponents());
+    merged->SetNumberOfTuples(n);
+    merged->Fill(0.0);
+    for (size_t p = 0; p < packs.size(); ++p)
+    {
+      if (to[p]->GetNumberOfIds() == 0)
+      {
+        continue;
+      }
+      vtkDataArray* source = vtkDataArray::SafeDownCast(
+        packs[p].Fields->GetAbstractArray((packs[p].Prefix + SampleSuffix + sampleName).c_str()));
+      if (!source)
+      {
+        continue; // this piece's samples keep zeros
+      }
+      if (source->GetNumberOfComponents() != merged->GetNumberOfComponents() ||
+        source->GetNumberOfTuples() != counts[p])
+      {
+        problem = "the sample array '" + sampleName + "' of '" + packs[p].Prefix +
+          "' has other components or another length than its samples";
+        return false;
+      }
+      merged->InsertTuples(to[p], from[p], source);
+    }
+    vtkPointData* data = ofb->GetSampleData();
+    data->AddArray(merged);
+    for (int t = 0; t < vtkDataSetAttributes::NUM_ATTRIBUTES; ++t)
+    {
+      const bool active = attributes
+        ? attributes->GetNumberOfValues() == vtkDataSetAttributes::NUM_ATTRIBUTES &&
+          attributes->GetValue(t) == packed
+        : (t == vtkDataSetAttributes::SCALARS && sampleName == vtkOFB::ColorsArrayName()) ||
+          (t == vtkDataSetAttributes::NORMALS && sampleName == vtkOFB::NormalsArrayName());
+      if (active)
+      {
+        data->SetActiveAttribute(merged->GetName(), t);
+      }
+    }
+    ++packed;
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -278,190 +505,17 @@ std::vector<vtkOFBSamplePack::PackRef> vtkOFBSamplePack::FindPacks(vtkFieldData*
 vtkSmartPointer<vtkOFB> vtkOFBSamplePack::Merge(const std::vector<PackRef>& packs,
   std::string& problem)
 {
-  double origin[3] = { 0, 0, 0 };
-  double cellSize = 0.0;
-  vtkIdType dims[3] = { 0, 0, 0 };
-  std::vector<Sample> samples;
-  std::vector<vtkIdType> counts(packs.size(), 0);
-  int first = -1; // the first pack with samples: the arrays to merge
-  for (size_t p = 0; p < packs.size(); ++p)
-  {
-    vtkFieldData* fields = packs[p].Fields;
-    const std::string& prefix = packs[p].Prefix;
-    vtkAbstractArray* frameArray =
-      fields ? fields->GetAbstractArray((prefix + FrameSuffix).c_str()) : nullptr;
-    if (!frameArray)
-    {
-      continue;
-    }
-    double o[3];
-    double size;
-    vtkIdType d[3];
-    if (!ReadFrame(vtkDataArray::SafeDownCast(frameArray), o, size, d))
-    {
-      problem = "the frame '" + prefix + FrameSuffix + "' is not 7 finite values";
-      return nullptr;
-    }
-    if (!(cellSize > 0.0))
-    {
-      std::copy(o, o + 3, origin);
-      std::copy(d, d + 3, dims);
-      cellSize = size;
-    }
-    if (size != cellSize || !std::equal(o, o + 3, origin) || !std::equal(d, d + 3, dims))
-    {
-      problem = "the processes' OFBs have different frames (sample them with one frame: "
-                "vtkOFBPSampler, OFB Sampler)";
-      return nullptr;
-    }
-    // The legacy format the controller sends reads vtkTypeUInt32 back as unsigned int.
-    vtkAbstractArray* cellArray = fields->GetAbstractArray((prefix + CellSuffix).c_str());
-    vtkAbstractArray* depthArray = fields->GetAbstractArray((prefix + DepthSuffix).c_str());
-    if (!cellArray && !depthArray)
-    {
-      continue; // a piece without samples
-    }
-    auto cells = vtkUnsignedIntArray::SafeDownCast(cellArray);
-    auto depths = vtkFloatArray::SafeDownCast(depthArray);
-    if (!cells || !depths || cells->GetNumberOfComponents() != 1 ||
-      depths->GetNumberOfComponents() != 1 ||
-      cells->GetNumberOfTuples() != depths->GetNumberOfTuples())
-    {
-      problem = "the cells and depths of '" + prefix +
-        "' are missing, of other types than unsigned int and float, or of different lengths";
-      return nullptr;
-    }
-    first = first < 0 ? static_cast<int>(p) : first;
-    counts[p] = cells->GetNumberOfTuples();
-    for (vtkIdType i = 0; i < cells->GetNumberOfTuples(); ++i)
-    {
-      if (!std::isfinite(depths->GetValue(i)))
-      {
-        problem = "a depth of '" + prefix + "' is not finite";
-        return nullptr;
-      }
-      samples.push_back({ cells->GetValue(i), depths->GetValue(i), static_cast<int>(p), i });
-    }
-  }
-  auto ofb = vtkSmartPointer<vtkOFB>::New();
-  if (!(cellSize > 0.0))
+  Collected collected;
+  if (!CollectSamples(packs, collected, problem))
   {
     return nullptr;
   }
-  if (!ofb->SetFrame(origin, cellSize, dims))
-  {
-    problem = "the frame cannot be set (too many cells)";
-    return nullptr;
-  }
-  std::stable_sort(samples.begin(),
-    samples.end(),
-    [](const Sample& a, const Sample& b)
-    { return a.Cell != b.Cell ? a.Cell < b.Cell : a.Depth < b.Depth; });
-  const vtkIdType n = static_cast<vtkIdType>(samples.size());
-  vtkTypeUInt32Array* offsets = ofb->GetCellOffsets();
-  const vtkIdType numberOfCells = ofb->GetNumberOfCells();
-  if (!samples.empty() && static_cast<vtkIdType>(samples.back().Cell) >= numberOfCells)
-  {
-    problem = "a sample's cell is outside the frame";
-    return nullptr;
-  }
-  std::vector<vtkTypeUInt32> cellCounts(numberOfCells + 1, 0);
-  for (const Sample& sample : samples)
-  {
-    ++cellCounts[sample.Cell + 1];
-  }
-  std::partial_sum(cellCounts.begin(), cellCounts.end(), cellCounts.begin());
-  std::copy(cellCounts.begin(), cellCounts.end(), offsets->GetPointer(0));
-  if (!ofb->AllocateSamples(n))
-  {
-    problem = "the samples cannot be allocated";
-    return nullptr;
-  }
-  float* depthValues = ofb->GetDepths()->GetPointer(0);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    depthValues[i] = samples[i].Depth;
-  }
-  if (!ofb->BuildCellIndex())
-  {
-    problem = "the cell index cannot be built";
-    return nullptr;
-  }
-  if (first < 0)
+  vtkSmartPointer<vtkOFB> ofb = BuildStructure(collected, problem);
+  if (!ofb || collected.First < 0)
   {
     return ofb;
   }
-  // The sample arrays of the first pack with samples, filled pack by pack.
-  std::vector<vtkSmartPointer<vtkIdList>> from(packs.size()), to(packs.size());
-  for (size_t p = 0; p < packs.size(); ++p)
-  {
-    from[p] = vtkSmartPointer<vtkIdList>::New();
-    to[p] = vtkSmartPointer<vtkIdList>::New();
-  }
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    from[samples[i].Pack]->InsertNextId(samples[i].Index);
-    to[samples[i].Pack]->InsertNextId(i);
-  }
-  const std::string modelPrefix = packs[first].Prefix + SampleSuffix;
-  vtkFieldData* model = packs[first].Fields;
-  auto attributes = vtkIntArray::SafeDownCast(
-    model->GetAbstractArray((packs[first].Prefix + AttributesSuffix).c_str()));
-  int packed = 0; // the rank of the sample array among the packed ones
-  for (int a = 0; a < model->GetNumberOfArrays(); ++a)
-  {
-    vtkDataArray* modelArray = vtkDataArray::SafeDownCast(model->GetAbstractArray(a));
-    const std::string name =
-      modelArray && modelArray->GetName() ? modelArray->GetName() : std::string();
-    if (name.compare(0, modelPrefix.size(), modelPrefix) != 0)
-    {
-      continue;
-    }
-    const std::string sampleName = name.substr(modelPrefix.size());
-    vtkSmartPointer<vtkDataArray> merged;
-    merged.TakeReference(modelArray->NewInstance());
-    merged->SetName(sampleName.c_str());
-    merged->SetNumberOfComponents(modelArray->GetNumberOfComponents());
-    merged->SetNumberOfTuples(n);
-    merged->Fill(0.0);
-    for (size_t p = 0; p < packs.size(); ++p)
-    {
-      if (to[p]->GetNumberOfIds() == 0)
-      {
-        continue;
-      }
-      vtkDataArray* source = vtkDataArray::SafeDownCast(
-        packs[p].Fields->GetAbstractArray((packs[p].Prefix + SampleSuffix + sampleName).c_str()));
-      if (!source)
-      {
-        continue; // this piece's samples keep zeros
-      }
-      if (source->GetNumberOfComponents() != merged->GetNumberOfComponents() ||
-        source->GetNumberOfTuples() != counts[p])
-      {
-        problem = "the sample array '" + sampleName + "' of '" + packs[p].Prefix +
-          "' has other components or another length than its samples";
-        return nullptr;
-      }
-      merged->InsertTuples(to[p], from[p], source);
-    }
-    vtkPointData* data = ofb->GetSampleData();
-    data->AddArray(merged);
-    for (int t = 0; t < vtkDataSetAttributes::NUM_ATTRIBUTES; ++t)
-    {
-      const bool active = attributes
-        ? attributes->GetNumberOfValues() == vtkDataSetAttributes::NUM_ATTRIBUTES &&
-          attributes->GetValue(t) == packed
-        : (t == vtkDataSetAttributes::SCALARS && sampleName == vtkOFB::ColorsArrayName()) ||
-          (t == vtkDataSetAttributes::NORMALS && sampleName == vtkOFB::NormalsArrayName());
-      if (active)
-      {
-        data->SetActiveAttribute(merged->GetName(), t);
-      }
-    }
-    ++packed;
-  }
-  return ofb;
+  return MergeArrays(packs, collected, ofb, problem) ? ofb : nullptr;
 }
 
 //------------------------------------------------------------------------------

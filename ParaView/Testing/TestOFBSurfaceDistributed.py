@@ -179,15 +179,6 @@ def read_png(path):
     return image
 
 
-def pixels(image):
-    import numpy as np
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-
-    width, height, _ = image.GetDimensions()
-    data = vtk_to_numpy(image.GetPointData().GetScalars())
-    return data.reshape(height, width, -1)[:, :, :3].astype(np.float64)
-
-
 def borders(pieces, mask):
     """The pixels of the surface within SEAM_BAND pixels of a change of piece colour."""
     import numpy as np
@@ -224,7 +215,8 @@ def check_empty_last(count, out_dir, mine, check):
     for rank, frame in enumerate(frames):
         check((frame == frames[0]).all(), "(a) rank %d's OFB frame %s is rank 0's%s"
               % (rank, frame.tolist(), " (its piece is empty)" if rank == count - 1 else ""))
-    lic = pixels(read_png(os.path.join(out_dir, "surface-%d-empty.png" % count))).mean(axis=2)
+    lic = ofbParaViewTesting.png_pixels(
+        os.path.join(out_dir, "surface-%d-empty.png" % count)).mean(axis=2)
     mask = lic > 2
     padded = np.pad(lic, 1, mode="edge")
     local = sum(padded[1 + dy:1 + dy + lic.shape[0], 1 + dx:1 + dx + lic.shape[1]]
@@ -309,20 +301,13 @@ def drive(argv):
 
     compare("surface", "the composited image")
     compare("probe", "the composited image of the input OFB")
-    image = read_png(os.path.join(out_dir, "surface-%d.png" % count))
-    baseline = read_png(os.path.join(out_dir, "surface-1.png"))
-
-    lic, lic_one = pixels(image), pixels(baseline)
+    lic = ofbParaViewTesting.png_pixels(os.path.join(out_dir, "surface-%d.png" % count))
+    lic_one = ofbParaViewTesting.png_pixels(os.path.join(out_dir, "surface-1.png"))
     mask = (lic.max(axis=2) > 2) & (lic_one.max(axis=2) > 2)
     # Off the silhouette (the anti-aliased ring).
-    for _ in range(3):
-        inner = mask.copy()
-        inner[1:, :] &= mask[:-1, :]
-        inner[:-1, :] &= mask[1:, :]
-        inner[:, 1:] &= mask[:, :-1]
-        inner[:, :-1] &= mask[:, 1:]
-        mask = inner
-    band = borders(pixels(read_png(os.path.join(out_dir, "pieces-%d.png" % count))), mask)
+    mask = ofbParaViewTesting.erode(mask, 3)
+    band = borders(
+        ofbParaViewTesting.png_pixels(os.path.join(out_dir, "pieces-%d.png" % count)), mask)
     rest = mask & ~band
     check(band.sum() > 100 and rest.sum() > 1000, "the piece borders cross the view: %d border "
           "pixels, %d others" % (band.sum(), rest.sum()))
@@ -338,8 +323,8 @@ def drive(argv):
     # the silhouette that (c) leaves out, and the far view, where every pixel reads them.
     whole = (lic.max(axis=2) > 2) | (lic_one.max(axis=2) > 2)
     ring = whole & ~mask
-    far = pixels(read_png(os.path.join(out_dir, "far-%d.png" % count))).mean(axis=2)
-    far_one = pixels(read_png(os.path.join(out_dir, "far-1.png"))).mean(axis=2)
+    far = ofbParaViewTesting.png_pixels(os.path.join(out_dir, "far-%d.png" % count)).mean(axis=2)
+    far_one = ofbParaViewTesting.png_pixels(os.path.join(out_dir, "far-1.png")).mean(axis=2)
     far_mask = (far > 2) | (far_one > 2)
     ring_mean = grey[ring].mean() if ring.any() else 0.0
     far_mean = np.abs(far - far_one)[far_mask].mean() if far_mask.any() else 0.0

@@ -36,9 +36,9 @@ staging folder (`.writer.obj.tmp-<its id>-<n>`, never a visible name); in other-
 where mpiexec ends the first process, either that or, when the first finished its write
 first, the complete new export (the new texture a whole 2048 x 2048 PNG) and no staging
 folder. first-fresh then writes again into the same folder (pvbatch on 2 processes, no
-kill): the complete export is there and the dead process's staging folder is gone. frames-differ: the writer's error
-("the processes' OFBs have different frames"), the same failure code on every process,
-nothing written, and pvbatch ends normally.
+kill): the complete export is there and the dead process's staging folder is gone.
+frames-differ: the writer's error ("the processes' OFBs have different frames"), the same
+failure code on every process, nothing written, and pvbatch ends normally.
 """
 import argparse
 import ctypes

@@ -112,3 +112,33 @@ def black_view(size=None, position=(1.2, -2.2, 1.0), focal_point=(0.0, 0.0, 0.0)
     view.CameraFocalPoint = list(focal_point)
     view.CameraViewUp = list(view_up)
     return view
+
+
+def png_pixels(path):
+    """The RGB of the PNG `path` as floats, shape (height, width, 3), the first row at the
+    bottom (VTK's order); SystemExit where it cannot be read."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
+
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    if image.GetNumberOfPoints() == 0:
+        raise SystemExit("cannot read %s" % path)
+    width, height, _ = image.GetDimensions()
+    data = vtk_to_numpy(image.GetPointData().GetScalars())
+    return data.reshape(height, width, -1)[:, :, :3].astype(float)
+
+
+def erode(mask, steps):
+    """The boolean image `mask` less `steps` pixels at its border (a silhouette's
+    anti-aliased ring)."""
+    for _ in range(steps):
+        inner = mask.copy()
+        inner[1:, :] &= mask[:-1, :]
+        inner[:-1, :] &= mask[1:, :]
+        inner[:, 1:] &= mask[:, :-1]
+        inner[:, :-1] &= mask[:, 1:]
+        mask = inner
+    return mask

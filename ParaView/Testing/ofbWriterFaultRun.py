@@ -7,8 +7,8 @@ Every process runs this script (--symmetric) and first writes its process id to
 CONTROL/pid-<rank>. The mesh file MESH is given texture coordinates (Texture Map to
 Plane: the writer bakes a texture of TextureSize a side rather than an atlas, so a large
 TextureSize makes a long write), distributed by RedistributeDataSet with ghost cells,
-sampled (OFB Sampler), and OFB Probe hands its mesh and OFB to the writer, which writes DIR/writer.obj
-(+ writer.mtl, writer.png).
+sampled (OFB Sampler), and OFB Probe hands its mesh and OFB to the writer, which writes
+DIR/writer.obj (+ writer.mtl, writer.png).
 
 Options:
   --existing         first write a complete export at TextureSize 64 and print

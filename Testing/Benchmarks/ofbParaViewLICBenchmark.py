@@ -57,8 +57,6 @@ from paraview import servermanager
 from paraview.simple import (CreateView, Delete, Hide, LoadPlugin,
                              ProgrammableSource, RedistributeDataSet, Render, SaveScreenshot,
                              Show)
-from vtkmodules.util import numpy_support
-from vtkmodules.vtkIOImage import vtkPNGReader
 
 # One connection to the X display (under xvfb-run) for the whole run, so that the server
 # does not reset between two views' windows (the plugin tests' support module).
@@ -175,13 +173,7 @@ def set_camera(view, camera):
 
 def capture(view, path):
     SaveScreenshot(path, view, ImageResolution=[args.size, args.size])
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    width, height, _ = image.GetDimensions()
-    pixels = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars())
-    return pixels.reshape(height, width, -1)[:, :, :3].astype(np.float64)
+    return ofbParaViewTesting.png_pixels(path)
 
 
 def box_blur(image, radius):

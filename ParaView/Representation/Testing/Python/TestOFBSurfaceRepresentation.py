@@ -18,8 +18,11 @@ import numpy as np
 from paraview.simple import (Calculator, ColorBy, CreateView, Elevation, Hide, Line, LoadPlugin,
                              PointDatatoCellData, Render, SaveScreenshot, Show, Sphere,
                              Threshold)
-from paraview.vtk.vtkIOImage import vtkPNGReader
-from vtkmodules.util import numpy_support
+
+# The plugin tests' support module (ParaView/Testing): PNG pixels, eroded masks.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir,
+                                os.pardir, "Testing"))
+from ofbParaViewTesting import erode, png_pixels  # noqa: E402
 
 SIZE = 300
 failures = []
@@ -35,25 +38,7 @@ def screenshot(view, name):
     """The view rendered offscreen, as a float array of shape (height, width, 3)."""
     path = os.path.join(OUTPUT_DIR, name + ".png")
     SaveScreenshot(path, view, ImageResolution=[SIZE, SIZE])
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    width, height, _ = image.GetDimensions()
-    pixels = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars())
-    return pixels.reshape(height, width, -1)[:, :, :3].astype(float)
-
-
-def erode(mask, steps):
-    """The mask less `steps` pixels at its border (the silhouette's anti-aliased ring)."""
-    for _ in range(steps):
-        inner = mask.copy()
-        inner[1:, :] &= mask[:-1, :]
-        inner[:-1, :] &= mask[1:, :]
-        inner[:, 1:] &= mask[:, :-1]
-        inner[:, :-1] &= mask[:, 1:]
-        mask = inner
-    return mask
+    return png_pixels(path)
 
 
 def high_pass_energy(image, mask):
@@ -205,7 +190,9 @@ def stroke_pixels(image):
     """Pixels of the stroke (yellow: green well above blue): the core and the blurred edge."""
     yellow = (image[:, :, 1] - image[:, :, 2])[mask]
     top = yellow.max()
-    return int((yellow > 0.7 * top).sum()), int(((yellow > 0.15 * top) & (yellow <= 0.7 * top)).sum())
+    crisp = int((yellow > 0.7 * top).sum())
+    blurred = int(((yellow > 0.15 * top) & (yellow <= 0.7 * top)).sum())
+    return crisp, blurred
 
 
 core, edge = stroke_pixels(input_paint)

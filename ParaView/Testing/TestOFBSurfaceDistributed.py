@@ -167,18 +167,6 @@ else:
                    ImageResolution=[SIZE, SIZE])
 
 
-def read_png(path):
-    from vtkmodules.vtkIOImage import vtkPNGReader
-
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    if image.GetNumberOfPoints() == 0:
-        raise SystemExit("cannot read %s" % path)
-    return image
-
-
 def borders(pieces, mask):
     """The pixels of the surface within SEAM_BAND pixels of a change of piece colour."""
     import numpy as np
@@ -285,8 +273,9 @@ def drive(argv):
 
     def compare(name, what):
         comparison = vtkofb.vtkOFBImageComparison()
-        comparison.SetImage(read_png(os.path.join(out_dir, "%s-%d.png" % (name, count))))
-        comparison.SetBaseline(read_png(os.path.join(out_dir, "%s-1.png" % name)))
+        png = ofbParaViewTesting.png_image
+        comparison.SetImage(png(os.path.join(out_dir, "%s-%d.png" % (name, count))))
+        comparison.SetBaseline(png(os.path.join(out_dir, "%s-1.png" % name)))
         passed = comparison.Compare()
         if comparison.GetDifferenceImage() is not None:
             writer = vtkPNGWriter()

@@ -114,10 +114,8 @@ def black_view(size=None, position=(1.2, -2.2, 1.0), focal_point=(0.0, 0.0, 0.0)
     return view
 
 
-def png_pixels(path):
-    """The RGB of the PNG `path` as floats, shape (height, width, 3), the first row at the
-    bottom (VTK's order); SystemExit where it cannot be read."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
+def png_image(path):
+    """The PNG `path` as a vtkImageData; SystemExit where it cannot be read."""
     from vtkmodules.vtkIOImage import vtkPNGReader
 
     reader = vtkPNGReader()
@@ -126,6 +124,15 @@ def png_pixels(path):
     image = reader.GetOutput()
     if image.GetNumberOfPoints() == 0:
         raise SystemExit("cannot read %s" % path)
+    return image
+
+
+def png_pixels(path):
+    """The RGB of the PNG `path` as floats, shape (height, width, 3), the first row at the
+    bottom (VTK's order); SystemExit where it cannot be read."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    image = png_image(path)
     width, height, _ = image.GetDimensions()
     data = vtk_to_numpy(image.GetPointData().GetScalars())
     return data.reshape(height, width, -1)[:, :, :3].astype(float)

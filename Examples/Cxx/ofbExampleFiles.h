@@ -5,7 +5,7 @@
  *
  * Every file an application writes (screenshots, exported meshes, their .mtl and texture)
  * goes through vtkOFBStagedFiles (OFB::Core): first written into a private staging
- * directory beside its target, "<directory>/.<target name>.tmp-<pid>-<n>/", every write
+ * directory beside its target, "<directory>/.<target name>.tmp-<host>-<pid>-<n>/", every write
  * checked and the file flushed to the disk, then renamed over its target (one step per
  * file: a reader sees the old file or the new one, never a part). On any failure the
  * staging directory and everything in it are removed and the targets are untouched; a

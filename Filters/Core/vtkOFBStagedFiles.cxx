@@ -1,4 +1,5 @@
 #include "vtkOFBStagedFiles.h"
+#include "vtkOFBTemporaryNames.h"
 
 #include "vtksys/Directory.hxx"
 #include "vtksys/SystemTools.hxx"
@@ -36,8 +37,8 @@ std::string Cause(int error)
   return std::strerror(error);
 }
 
-/// Remove the staging directories ".<name>.tmp-<pid>-<n>" in `directory` whose process is
-/// gone (it was killed before it committed or cleaned up).
+/// Remove the staging directories ".<name>.tmp-<tag>" in `directory` whose process is
+/// gone (it was killed before it committed or cleaned up; vtkOFBTemporaryNames.h).
 void RemoveStaleStages(const std::string& directory)
 {
   vtksys::Directory listing;
@@ -53,11 +54,8 @@ void RemoveStaleStages(const std::string& directory)
     {
       continue;
     }
-    char* end = nullptr;
-    const long pid = std::strtol(name.c_str() + mark + 5, &end, 10);
-    const bool wellFormed =
-      pid > 0 && end && *end == '-' && SystemTools::FileIsDirectory(directory + "/" + name);
-    if (wellFormed && pid != getpid() && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+    if (vtkofbtemporary::IsStale(name.substr(mark + 5)) &&
+      SystemTools::FileIsDirectory(directory + "/" + name))
     {
       SystemTools::RemoveADirectory(directory + "/" + name);
     }
@@ -138,8 +136,8 @@ bool vtkOFBStagedFiles::Begin(const std::vector<std::string>& names, std::string
     }
   }
   RemoveStaleStages(this->Directory);
-  const std::string stage = this->Directory + "/." + NameOf(names.back()) + ".tmp-" +
-    std::to_string(getpid()) + "-" + std::to_string(StageCounter++);
+  const std::string stage =
+    this->Directory + "/." + NameOf(names.back()) + ".tmp-" + vtkofbtemporary::Tag(StageCounter++);
   if (mkdir(stage.c_str(), 0700) != 0)
   {
     message = "cannot write '" + this->Final(names.back()) + "': cannot create the staging " +

@@ -7,8 +7,9 @@
  * leaves a partial file under a target's name:
  *
  * - Begin() checks that every target can be written (WhyNotWritable), removes the
- *   staging directories of processes that died (kill -9) and creates a private staging
- *   directory beside the targets, "<directory>/.<last name>.tmp-<pid>-<n>/";
+ *   staging directories of processes of this machine that died (kill -9; those of other
+ *   machines sharing the directory are kept) and creates a private staging directory
+ *   beside the targets, "<directory>/.<last name>.tmp-<host>-<pid>-<n>/";
  * - the files are written there (Staged() gives a path for a VTK writer; Write() writes
  *   bytes with every write checked and the file flushed to the disk) and checked
  *   (Check(), Incomplete());

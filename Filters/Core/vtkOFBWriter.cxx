@@ -29,6 +29,8 @@
 #include <process.h>
 #include <windows.h>
 #else
+#include "vtkOFBTemporaryNames.h"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -368,9 +370,10 @@ std::string NotARegularFile(const std::string& target)
 }
 
 /**
- * Remove the named temporaries "<target>.tmp-<pid>-<n>" that writers left behind
- * when their process died (killed, or crashed) before renaming them. A temporary of a
- * living process (this one included) is kept.
+ * Remove the named temporaries "<target>.tmp-<tag>" that writers of this machine left
+ * behind when their process died (killed, or crashed) before renaming them
+ * (vtkOFBTemporaryNames.h). A temporary of a living process (this one included), or of
+ * another machine, is kept.
  */
 void RemoveStaleTemporaries(const std::string& target)
 {
@@ -385,16 +388,8 @@ void RemoveStaleTemporaries(const std::string& target)
   for (unsigned long i = 0; i < listing.GetNumberOfFiles(); ++i)
   {
     const std::string name = listing.GetFile(i);
-    if (name.compare(0, prefix.size(), prefix) != 0)
-    {
-      continue;
-    }
-    char* end = nullptr;
-    const long pid = std::strtol(name.c_str() + prefix.size(), &end, 10);
-    char* counterEnd = nullptr;
-    const bool wellFormed = pid > 0 && end && *end == '-' && std::isdigit(end[1]) &&
-      (std::strtoul(end + 1, &counterEnd, 10), *counterEnd == '\0');
-    if (wellFormed && pid != ProcessId() && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+    if (name.compare(0, prefix.size(), prefix) == 0 &&
+      vtkofbtemporary::IsStale(name.substr(prefix.size())))
     {
       unlink((directory + "/" + name).c_str());
     }
@@ -408,7 +403,7 @@ void RemoveStaleTemporaries(const std::string& target)
  * The file that replaces the target: written, flushed to the disk, then renamed over
  * the target in one step, with the target's permissions. Where the system allows it
  * (Linux's O_TMPFILE), the file has no name until it is complete, so a crash leaves
- * nothing behind; otherwise it is "<target>.tmp-<pid>-<n>", which
+ * nothing behind; otherwise it is "<target>.tmp-<host>-<pid>-<n>", which
  * RemoveStaleTemporaries removes after a crash.
  */
 class ReplacementFile
@@ -420,8 +415,12 @@ public:
   bool Create(const std::string& target)
   {
     this->Target = target;
+#if defined(_WIN32)
     this->Name =
       target + ".tmp-" + std::to_string(ProcessId()) + "-" + std::to_string(TemporaryCounter++);
+#else
+    this->Name = target + ".tmp-" + vtkofbtemporary::Tag(TemporaryCounter++);
+#endif
 #if defined(_WIN32)
     this->Stream = std::fopen(this->Name.c_str(), "wb");
     return this->Stream ? true : this->Fail("cannot create the temporary file " + this->Name);

@@ -51,9 +51,10 @@
  * succeeded, and only then renames it over FileName and flushes the directory, so
  * that the replacement survives a power cut. Where the system allows it (Linux's
  * O_TMPFILE), the new file has no name until it is complete, so a writer killed
- * mid-write leaves nothing behind; elsewhere it is FileName + ".tmp-<pid>-<n>", and
- * the next write of FileName removes such temporaries of processes that no longer
- * exist. The replacement keeps the permissions (and, where allowed, the owner) of
+ * mid-write leaves nothing behind; elsewhere it is FileName + ".tmp-<host>-<pid>-<n>",
+ * and the next write of FileName removes such temporaries of processes of the same
+ * machine that no longer exist (a temporary of another machine sharing the folder is
+ * kept). The replacement keeps the permissions (and, where allowed, the owner) of
  * the file it replaces; a FileName that is a symbolic link is followed, so the file
  * it points to is replaced and the link kept. On any failure the writer removes its
  * temporary file, leaves an existing FileName untouched, reports an error and sets

@@ -20,7 +20,8 @@
  * when all are complete (the texture and material first, the `.obj` last), so a failure
  * or a kill leaves the files that were there before and no partial file under the
  * target's name (vtkOFBStagedFiles: the folder a killed write leaves,
- * `.<name>.tmp-<process id>-<n>`, is removed by the next write into that folder).
+ * `.<name>.tmp-<host>-<process id>-<n>`, is removed by the next write into that folder on the
+ * same machine).
  *
  * Bad input (no OFB, an empty mesh, an unknown extension or array, a folder that cannot
  * be written) gives an error and writes nothing.

@@ -22,7 +22,7 @@ writer.obj, .mtl and .png) and acts on it from outside. SCENARIO:
   writer refuses the write.
 
 The write is caught in the middle thus: the writer stages its files in a
-folder `.writer.obj.tmp-<process id>-<n>` beside the targets (vtkOFBStagedFiles) and
+folder `.writer.obj.tmp-<host>-<process id>-<n>` beside the targets (vtkOFBStagedFiles) and
 renames them into place at the end, after the texture's PNG (about 0.2 s at TextureSize
 2048); this script polls the folder every millisecond, stops (SIGSTOP) the process named
 by the staging folder once its staged PNG exists, checks that nothing was renamed into
@@ -32,7 +32,7 @@ The checks after a kill: mpiexec ends (within TIMEOUT seconds; else every proces
 session is killed and the test fails) with a failure status, no process of its session is
 left, and the export folder holds no file under the targets' names (fresh) or the complete
 export of before byte for byte (existing), and nothing else but the killed process's hidden
-staging folder (`.writer.obj.tmp-<its id>-<n>`, never a visible name); in other-writing,
+staging folder (`.writer.obj.tmp-<host>-<its id>-<n>`, never a visible name); in other-writing,
 where mpiexec ends the first process, either that or, when the first finished its write
 first, the complete new export (the new texture a whole 2048 x 2048 PNG) and no staging
 folder. first-fresh then writes again into the same folder (pvbatch on 2 processes, no
@@ -57,7 +57,8 @@ TIMEOUT = 120  # seconds for one mpiexec run
 HANG_TIMEOUT = 20  # seconds for the run that hangs (other-stopped)
 TRIES = 3  # runs that may miss the write before the test fails
 TARGETS = ["writer.obj", "writer.mtl", "writer.png"]
-STAGE = re.compile(r"^\.writer\.obj\.tmp-(\d+)-(\d+)$")
+# .writer.obj.tmp-<host>-<process id>-<n>: group 1 the process id.
+STAGE = re.compile(r"^\.writer\.obj\.tmp-[A-Za-z0-9_.]+-(\d+)-(\d+)$")
 
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("scenario", choices=["first-fresh", "first-existing", "other-gather",

@@ -4,6 +4,7 @@
 #include "vtkOFBIOTestHelpers.h"
 
 #include "vtkOFBStagedFiles.h"
+#include "vtkOFBTemporaryNames.h"
 
 #include <algorithm>
 
@@ -60,14 +61,25 @@ TEST(StagedFiles, WithoutCommitNothingIsLeft)
 TEST(StagedFiles, EmptyFileIsIncompleteAndStaleStagesAreRemoved)
 {
   TempDirectory dir;
-  // The stage a killed process left (no process has this id).
+  // Stages killed processes left (no process has this id): of this machine, in the names
+  // written now and without a host, and of another machine (a shared folder), whose
+  // process cannot be asked from here.
   const std::string stale = dir.File(".c.vtp.tmp-999999999-0");
-  ASSERT_TRUE(vtksys::SystemTools::MakeDirectory(stale));
-  Save(stale + "/c.vtp", Bytes{ 'x' }, 1);
+  const std::string staleHere = dir.File(".d.vtp.tmp-" + vtkofbtemporary::Host() + "-999999999-1");
+  const std::string elsewhere = dir.File(".e.vtp.tmp-other.host-999999999-2");
+  for (const std::string& stage : { stale, staleHere, elsewhere })
+  {
+    ASSERT_TRUE(vtksys::SystemTools::MakeDirectory(stage));
+    Save(stage + "/c.vtp", Bytes{ 'x' }, 1);
+  }
   vtkOFBStagedFiles files(dir.File("c.vtp"));
   std::string message;
   ASSERT_TRUE(files.Begin({ "c.vtp" }, message)) << message;
   EXPECT_FALSE(vtksys::SystemTools::FileExists(stale));
+  EXPECT_FALSE(vtksys::SystemTools::FileExists(staleHere));
+  EXPECT_TRUE(vtksys::SystemTools::FileExists(elsewhere));
+  // This process's own stage carries the machine's name.
+  EXPECT_NE(files.Staged("c.vtp").find(".tmp-" + vtkofbtemporary::Host() + "-"), std::string::npos);
   Save(files.Staged("c.vtp"), Bytes{}, 0);
   EXPECT_FALSE(files.Check("c.vtp", message));
   EXPECT_NE(message.find("empty"), std::string::npos) << message;

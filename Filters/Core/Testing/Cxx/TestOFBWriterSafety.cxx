@@ -3,6 +3,7 @@
 // permissions, a symbolic link is written through, and a target that is not a regular file
 // (a FIFO, a device, a directory) is refused and left as it is.
 #include "vtkOFBIOTestHelpers.h"
+#include "vtkOFBTemporaryNames.h"
 
 #include <algorithm>
 
@@ -132,7 +133,7 @@ TEST(WriterSafety, KilledMidWriteLeavesTheOldFileAndNoTemporary)
   {
     // The dead writer's named temporary is left, until the next write.
     ASSERT_EQ(left.size(), 2u);
-    EXPECT_EQ(left[1], "a.ofb.tmp-" + std::to_string(child) + "-0");
+    EXPECT_EQ(left[1], "a.ofb.tmp-" + vtkofbtemporary::Host() + "-" + std::to_string(child) + "-0");
   }
   // The next write replaces the file and leaves only it.
   ASSERT_EQ(WriteOFB(other, path), "");
@@ -147,19 +148,23 @@ TEST(WriterSafety, RemovesStaleTemporariesOfDeadProcessesOnly)
   const std::string alive = std::to_string(getpid());
   const Bytes junk = { 'p', 'a', 'r', 't' };
   const std::vector<std::string> temporaries = {
-    "a.ofb.tmp-" + dead + "-0",  // a dead writer's: removed
-    "a.ofb.tmp-" + dead + "-12", // removed
-    "a.ofb.tmp-" + alive + "-7", // a living process's: kept
-    "b.ofb.tmp-" + dead + "-0",  // another file's: kept
-    "a.ofb.tmp-" + dead + "-x",  // not a writer's name: kept
+    "a.ofb.tmp-" + dead + "-0",                                  // a dead writer's: removed
+    "a.ofb.tmp-" + dead + "-12",                                 // removed
+    "a.ofb.tmp-" + alive + "-7",                                 // a living process's: kept
+    "b.ofb.tmp-" + dead + "-0",                                  // another file's: kept
+    "a.ofb.tmp-" + dead + "-x",                                  // not a writer's name: kept
+    "a.ofb.tmp-other.host-" + dead + "-0",                       // another machine's: kept
+    "a.ofb.tmp-" + vtkofbtemporary::Host() + "-" + dead + "-3",  // this machine's: removed
+    "a.ofb.tmp-" + vtkofbtemporary::Host() + "-" + alive + "-4", // living: kept
   };
   for (const std::string& name : temporaries)
   {
     Save(dir.File(name), junk, junk.size());
   }
   ASSERT_EQ(WriteOFB(SmallOFB(), dir.File("a.ofb")), "");
-  EXPECT_EQ(
-    Sorted(dir.List()), Sorted({ "a.ofb", temporaries[2], temporaries[3], temporaries[4] }));
+  EXPECT_EQ(Sorted(dir.List()),
+    Sorted(
+      { "a.ofb", temporaries[2], temporaries[3], temporaries[4], temporaries[5], temporaries[7] }));
 }
 
 TEST(WriterSafety, KeepsThePermissionsOfTheFileItReplaces)

@@ -100,57 +100,30 @@ if (VTKOFB_BUILD_TESTING)
       LABELS  "ParaView"
       TIMEOUT 900)
   endforeach ()
-  # The distributed tests (1, 2 and 3 processes under mpiexec): one test here, as the
-  # runs on 2 and 3 processes compare with the one-process run.
+  # The distributed tests (1, 2 and 3 processes under mpiexec; WriterFaults: the writer
+  # killed under MPI and given OFBs on different frames, no display) and the client tests
+  # (a pvserver of 1 and 2 processes with a pvpython client, and the paraview GUI): one
+  # test here each, as their runs compare with the one-process or pvbatch runs.
   find_package(MPI QUIET COMPONENTS C)
   if (MPIEXEC_EXECUTABLE)
-    add_test(
-      NAME    "OFB.ParaView.Distributed"
-      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
-        -R "^OFBPlugin\\.Distributed\\." --output-on-failure --no-tests=error)
-    add_test(
-      NAME    "OFB.ParaView.SurfaceDistributed"
-      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
-        -R "^OFBPlugin\\.SurfaceDistributed\\." --output-on-failure --no-tests=error)
-    set_tests_properties("OFB.ParaView.Distributed" "OFB.ParaView.SurfaceDistributed" PROPERTIES
-      LABELS  "ParaView;MPI"
-      PROCESSORS 2
-      TIMEOUT 900)
-    add_test(
-      NAME    "OFB.ParaView.DistributedStrokes"
-      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
-        -R "^OFBPlugin\\.DistributedStrokes\\." --output-on-failure --no-tests=error)
-    add_test(
-      NAME    "OFB.ParaView.WriterDistributed"
-      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
-        -R "^OFBPlugin\\.WriterDistributed\\." --output-on-failure --no-tests=error)
-    # The writer killed under MPI and given OFBs on different frames (no display).
-    add_test(
-      NAME    "OFB.ParaView.WriterFaults"
-      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
-        -R "^OFBPlugin\\.WriterFaults\\." --output-on-failure --no-tests=error)
-    set_tests_properties("OFB.ParaView.DistributedStrokes" "OFB.ParaView.WriterDistributed"
-      "OFB.ParaView.WriterFaults" PROPERTIES
-      LABELS  "ParaView;MPI"
-      PROCESSORS 2
-      TIMEOUT 900)
-  endif ()
-  # The client tests (a pvserver of 1 and 2 processes with a pvpython client, and the
-  # paraview GUI, against pvbatch runs): one test here, as the clients compare with pvbatch.
-  if (MPIEXEC_EXECUTABLE)
-    add_test(
-      NAME    "OFB.ParaView.Clients"
-      COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
-        -R "^OFBPlugin\\.Clients\\." --output-on-failure --no-tests=error)
-    set_tests_properties("OFB.ParaView.Clients" PROPERTIES
-      LABELS  "ParaView;MPI"
-      PROCESSORS 2
-      TIMEOUT 1200)
+    foreach (vtkofb_test IN ITEMS Distributed SurfaceDistributed DistributedStrokes
+        WriterDistributed WriterFaults Clients)
+      add_test(
+        NAME    "OFB.ParaView.${vtkofb_test}"
+        COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${vtkofb_paraview_build}"
+          -R "^OFBPlugin\\.${vtkofb_test}\\." --output-on-failure --no-tests=error)
+      set_tests_properties("OFB.ParaView.${vtkofb_test}" PROPERTIES
+        LABELS  "ParaView;MPI"
+        PROCESSORS 2
+        TIMEOUT 900)
+    endforeach ()
+    set_tests_properties("OFB.ParaView.Clients" PROPERTIES TIMEOUT 1200)
   endif ()
   # The tests that render share xvfb-run's display with the other display tests
   # (docs/testing.md, "Tests that open windows"); their scripts keep a connection open.
   set(vtkofb_paraview_render_tests OFB.ParaView.Filters OFB.ParaView.StateAndTrace
-    OFB.ParaView.Example OFB.ParaView.SurfaceRepresentation OFB.ParaView.SurfaceRepresentationExample
+    OFB.ParaView.Example OFB.ParaView.SurfaceRepresentation
+    OFB.ParaView.SurfaceRepresentationExample
     OFB.ParaView.LICBenchmark)
   foreach (vtkofb_test IN ITEMS Distributed SurfaceDistributed DistributedStrokes WriterDistributed
       Clients)
